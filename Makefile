@@ -1,0 +1,49 @@
+# The two set-up commands of the README:
+#   make demo   install what is missing, build, run the racer demo
+#   make test   install what is missing, build, run ctest --preset default
+# `make deps` alone installs the Debian packages; it skips apt entirely when they are all present.
+
+SHELL := /bin/bash
+JOBS  ?= $(shell nproc)
+PRESET ?= default
+BUILD_DIR := build
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+# Debian 12 packages: compilers and tools, then the libraries found by find_package,
+# then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests.
+PACKAGES := build-essential cmake pkg-config ccache \
+            libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev \
+            libopenimageio-dev openimageio-tools libtbb-dev \
+            libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
+            libepoxy-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth
+
+.PHONY: all deps configure build test demo bench readme-images clean
+
+all: build
+
+deps:
+	@missing=$$(for p in $(PACKAGES); do \
+	    dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	if [ -z "$$missing" ]; then echo "deps: all $(words $(PACKAGES)) packages present"; \
+	else echo "deps: installing" $$missing; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; fi
+
+configure: deps
+	@[ -f $(BUILD_DIR)/CMakeCache.txt ] || cmake --preset $(PRESET)
+
+build: configure
+	cmake --build --preset $(PRESET) -j $(JOBS)
+
+test: build
+	ctest --preset $(PRESET) -j $(JOBS)
+
+demo: build
+	@if [ -x $(BUILD_DIR)/bin/racer ]; then $(BUILD_DIR)/bin/racer --headless; \
+	else echo "demo: the racer demo is not built yet (see the README's status); build/bin holds what exists:"; ls $(BUILD_DIR)/bin; fi
+
+bench: build
+	$(BUILD_DIR)/bin/bench_ecs
+
+clean:
+	rm -rf $(BUILD_DIR)
