@@ -1,0 +1,80 @@
+#pragma once
+// The render backend interface, chosen at run time (--backend soft|gl). In the spirit of
+// bgfx's RendererContextI and Filament's driver API: typed generation-checked handles,
+// plain descriptor structs whose defaults are the sensible choice, state as data.
+// Every misuse (stale handle, wrong format, bad size) throws engine::Error naming it.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/render/buffer.hpp"
+#include "engine/render/handles.hpp"
+#include "engine/render/pass.hpp"
+#include "engine/render/pipeline.hpp"
+#include "engine/render/texture.hpp"
+
+namespace engine::render {
+
+// What a pipeline became after creation-time simplification, so callers and tests can
+// see which work was skipped (seeds/004 "alpha testing is useless here").
+struct PipelineInfo {
+    bool alphaTestDropped = false;  // the test could not change the result
+    bool blendIsPlainWrite = false; // ONE/ZERO ADD on every target: the no-blend path
+    bool exact = true;              // false where a backend can only approximate the state (GL fail modes)
+    std::string note;               // why, when not exact
+};
+
+// Texels read back, one float per stored channel, row 0 at the top. Normalized formats
+// give stored/255 (sRGB values are NOT decoded), float formats their value, D32F depth.
+struct Readback {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    Format format = Format::RGBA8_UNORM;
+    std::vector<float> values;
+    float at(int x, int y, int c) const { return values[(std::size_t(y) * width + x) * channels + c]; }
+};
+
+struct PassTiming {
+    std::string pass;
+    double milliseconds = 0.0;  // soft: wall time of the pass; GL: GL_TIME_ELAPSED
+};
+
+struct ResolveDesc {
+    TextureHandle source;       // multisampled colour or depth
+    TextureHandle destination;  // single-sampled, same format and size
+    // Depth resolve keeps the sample closest to the observer under this depth function
+    // (seeds/000 §3.5.1); colour resolve averages the samples.
+    CompareFunc depthFunc = CompareFunc::Less;
+};
+
+class Backend {
+public:
+    virtual ~Backend() = default;
+    virtual std::string name() const = 0;
+
+    virtual TextureHandle createTexture(const TextureDesc& desc, const TextureData* data = nullptr) = 0;
+    virtual BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) = 0;
+    virtual void updateBuffer(BufferHandle buffer, std::uint64_t offset, std::span<const std::byte> data) = 0;
+    virtual PipelineHandle createPipeline(const PipelineDesc& desc) = 0;
+    virtual void destroy(TextureHandle texture) = 0;
+    virtual void destroy(BufferHandle buffer) = 0;
+    virtual void destroy(PipelineHandle pipeline) = 0;
+
+    virtual const TextureDesc& describe(TextureHandle texture) const = 0;
+    virtual PipelineInfo pipelineInfo(PipelineHandle pipeline) const = 0;
+
+    virtual void beginPass(const PassDesc& pass) = 0;
+    virtual void draw(const DrawDesc& draw) = 0;
+    virtual void endPass() = 0;
+
+    virtual void resolve(const ResolveDesc& resolve) = 0;
+    virtual Readback readback(TextureHandle texture) = 0;
+
+    // Per-pass timings since the last call, in execution order.
+    virtual std::vector<PassTiming> takeTimings() = 0;
+};
+
+}  // namespace engine::render

@@ -1,0 +1,40 @@
+#pragma once
+// The CPU software backend: the embedded default, what CI runs and what goldens come
+// from. Fixed-point tile rasterizer (8 sub-pixel bits, top-left rule), hierarchical
+// tile -> block -> pixel coverage, oneTBB across tiles with primitives in submission
+// order inside each tile, so images are bit-identical for any thread count.
+#include <cstdint>
+#include <memory>
+
+#include "engine/render/backend.hpp"
+
+namespace engine::render::soft {
+
+struct SoftOptions {
+    int threads = 0;      // 0: all hardware threads
+    int tileSize = 64;    // pixels, a multiple of 8 (llvmpipe's choice by default)
+    bool debugChecks = false;  // count NaN/Inf stored into float targets and log them per pass
+};
+
+// Work counters since creation, for tests and the benchmark (what was skipped is visible).
+struct SoftStats {
+    std::uint64_t passes = 0;
+    std::uint64_t draws = 0;
+    std::uint64_t trianglesIn = 0;       // primitives submitted
+    std::uint64_t trianglesRasterized = 0;  // after clipping, culling, dropping degenerate/NaN ones
+    std::uint64_t trianglesDropped = 0;  // degenerate, NaN or fully clipped
+    std::uint64_t pixelsShaded = 0;      // program invocations
+    std::uint64_t pixelsTouched = 0;     // pixels for which any sample passed coverage + depth
+    std::uint64_t nonFiniteStores = 0;   // NaN/Inf written to float targets (debugChecks only)
+};
+
+class SoftBackend;
+std::unique_ptr<SoftBackend> createSoftBackend(const SoftOptions& options = {});
+
+class SoftBackend : public Backend {
+public:
+    virtual SoftStats stats() const = 0;
+    virtual const SoftOptions& options() const = 0;
+};
+
+}  // namespace engine::render::soft

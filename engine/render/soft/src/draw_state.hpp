@@ -1,0 +1,44 @@
+#pragma once
+// Everything the tile loop needs about one recorded draw, resolved once per pass:
+// targets, effective fixed-function state (after creation-time simplification) and the
+// program instance.
+#include <array>
+#include <variant>
+
+#include "engine/render/pipeline.hpp"
+#include "programs.hpp"
+#include "soft_texture.hpp"
+
+namespace engine::render::soft {
+
+using ProgramInstance =
+    std::variant<FlatProgram, OpaqueLitProgram, FoliageColorProgram, FoliageAlphaProgram, CompositeProgram>;
+
+// Standard sample positions (D3D11 / Vulkan standard locations), in 1/16 pixel from the
+// pixel centre. GL leaves them to the implementation; README "Differential tolerances".
+struct SamplePattern {
+    int count = 1;
+    std::array<int, 8> dx{}, dy{};
+};
+const SamplePattern& samplePattern(int samples);
+
+struct DrawState {
+    ProgramInstance program;
+    std::array<SoftTexture*, kMaxColorTargets> colorTargets{};
+    int colorTargetCount = 0;
+    SoftTexture* depthTarget = nullptr;
+    int samples = 1;
+    const SamplePattern* pattern = nullptr;
+
+    bool depthTest = false;
+    bool depthWrite = false;
+    CompareFunc depthFunc = CompareFunc::Less;
+    AlphaTest alphaTest;  // enabled only when it can change the result
+    bool alphaToCoverage = false;
+    std::array<BlendState, kMaxColorTargets> blend{};
+    std::array<bool, kMaxColorTargets> blendNeeded{};  // false: plain store
+    glm::vec4 blendConstant{0.0f};
+    bool shade = true;  // false: depth-only, the program is never run
+};
+
+}  // namespace engine::render::soft

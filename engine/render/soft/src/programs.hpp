@@ -1,0 +1,100 @@
+#pragma once
+// The soft backend's implementation of each ProgramKind. A program is a small struct
+// whose `shade` runs per pixel; its `needs` flags let the rasterizer skip interpolating
+// what it never reads, which is the seed's dead-code stripping done by hand
+// (seeds/000 §3.5.2: the mask program does no lighting and no colour fetch).
+#include <glm/glm.hpp>
+
+#include "engine/render/program.hpp"
+#include "sampler.hpp"
+#include "soft_texture.hpp"
+
+namespace engine::render::soft {
+
+// What the rasterizer hands a program for one pixel (interpolated at its centre).
+struct Fragment {
+    int x = 0, y = 0;
+    glm::vec2 uv{0.0f};
+    UvDerivatives duv;
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    glm::vec4 color{1.0f};
+    bool frontFacing = true;
+};
+
+struct ProgramNeeds {
+    bool uv = false;
+    bool derivatives = false;
+    bool normal = false;
+    bool color = false;
+};
+
+// Texture alpha mode conversion: programs output straight alpha.
+inline glm::vec4 toStraight(const glm::vec4& texel, AlphaMode mode) {
+    if (mode == AlphaMode::Straight || !(texel.a > 0.0f)) return texel;
+    return {glm::vec3(texel) / texel.a, texel.a};
+}
+
+inline float lambert(const glm::vec3& normal, const DirectionalLight& light) {
+    const float len = glm::length(normal);
+    if (!(len > 0.0f)) return 0.0f;
+    return glm::max(glm::dot(normal / len, glm::normalize(light.towardLight)), 0.0f);
+}
+
+struct FlatProgram {
+    static constexpr ProgramNeeds kNeeds{false, false, false, true};
+    glm::vec4 color;
+    glm::vec4 shade(const Fragment& f) const { return color * f.color; }
+};
+
+template <bool Foliage>
+struct SurfaceProgram {
+    static constexpr ProgramNeeds kNeeds{true, true, true, true};
+    SurfaceParams params;
+    const SoftTexture* texture = nullptr;  // null: white
+
+    glm::vec4 shade(const Fragment& f) const {
+        glm::vec4 base = params.baseColorFactor * f.color;
+        if (texture) base *= toStraight(sampleTexture(*texture, params.baseColor.sampler, f.uv, f.duv), texture->desc.alpha);
+        // Foliage is double-sided: a back face is lit with its flipped normal.
+        const glm::vec3 n = (Foliage && !f.frontFacing) ? -f.normal : f.normal;
+        const glm::vec3 lit = glm::vec3(base) * (params.light.ambient + params.light.color * lambert(n, params.light));
+        return {lit, Foliage ? base.a : 1.0f};
+    }
+};
+using OpaqueLitProgram = SurfaceProgram<false>;
+using FoliageColorProgram = SurfaceProgram<true>;
+
+struct FoliageAlphaProgram {
+    static constexpr ProgramNeeds kNeeds{true, true, false, true};
+    AlphaOnlyParams params;
+    const SoftTexture* texture = nullptr;
+
+    glm::vec4 shade(const Fragment& f) const {
+        float a = params.alphaFactor * f.color.a;
+        if (texture) a *= sampleTexture<SampledChannels::AlphaOnly>(*texture, params.baseColor.sampler, f.uv, f.duv).a;
+        return glm::vec4(a);  // Out.Color.xyzw = Out.Color.www (seeds/000 §3.5.2)
+    }
+};
+
+// seeds/000 Listing 3.2, one texel per screen pixel (§3.5.4); the lerp with the opaque
+// colour is the pipeline's blend (see CompositeParams).
+struct CompositeProgram {
+    static constexpr ProgramNeeds kNeeds{};
+    CompositeParams params;
+    const SoftTexture* foliage = nullptr;
+    const SoftTexture* mask = nullptr;
+    const SoftTexture* maskAdd = nullptr;  // split mask (RG16F precision): ADD mask in r
+
+    glm::vec4 shade(const Fragment& f) const {
+        const glm::vec4 m = fetchTexel(*mask, f.x, f.y);
+        const float addMask = maskAdd ? fetchTexel(*maskAdd, f.x, f.y).r : m.a;
+        float blend = m.r + (addMask - m.r) * params.maskLerp;
+        // A float ADD mask exceeds 1 under depth complexity; a factor outside [0,1] would
+        // extrapolate past the foliage colour, so it is clamped (NaN becomes 0).
+        blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
+        if (params.squareMask) blend *= blend;  // the squared alpha trick (§3.6.2)
+        return {glm::vec3(fetchTexel(*foliage, f.x, f.y)), blend};
+    }
+};
+
+}  // namespace engine::render::soft

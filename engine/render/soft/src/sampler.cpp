@@ -1,0 +1,114 @@
+#include "sampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pixel_codec.hpp"
+
+namespace engine::render::soft {
+namespace {
+
+int applyAddress(AddressMode mode, int i, int size) {
+    switch (mode) {
+        case AddressMode::Wrap: {
+            const int m = i % size;
+            return m < 0 ? m + size : m;
+        }
+        case AddressMode::Clamp: return std::clamp(i, 0, size - 1);
+        case AddressMode::Mirror: {
+            // GL mirrored repeat: period 2*size, second half reflected.
+            int m = i % (2 * size);
+            if (m < 0) m += 2 * size;
+            return m < size ? m : 2 * size - 1 - m;
+        }
+    }
+    return 0;
+}
+
+// Bounds the coordinate so the int conversion is defined; far-away texels wrap to the
+// same place anyway after addressing.
+float safeCoord(float v) {
+    if (!std::isfinite(v)) return 0.0f;
+    return std::clamp(v, -1.0e6f, 1.0e6f);
+}
+
+template <SampledChannels Channels>
+glm::vec4 load(const SoftTexture& t, int level, int x, int y) {
+    const std::byte* p = t.texel(level, x, y);
+    if constexpr (Channels == SampledChannels::AlphaOnly) {
+        // The mask program's dead-code stripping (seeds/000 §3.5.2): only alpha is decoded.
+        const Format f = t.desc.format;
+        if (f == Format::RGBA8_UNORM || f == Format::RGBA8_SRGB)
+            return {0.0f, 0.0f, 0.0f, byteTables().unorm[std::to_integer<std::uint8_t>(p[3])]};
+    }
+    return loadTexel(p, t.desc.format);
+}
+
+template <SampledChannels Channels>
+glm::vec4 nearest(const SoftTexture& t, const SamplerState& s, int level, glm::vec2 uv) {
+    const MipLevel& l = t.levels[level];
+    const int x = applyAddress(s.addressU, static_cast<int>(std::floor(safeCoord(uv.x) * l.width)), l.width);
+    const int y = applyAddress(s.addressV, static_cast<int>(std::floor(safeCoord(uv.y) * l.height)), l.height);
+    return load<Channels>(t, level, x, y);
+}
+
+template <SampledChannels Channels>
+glm::vec4 bilinear(const SoftTexture& t, const SamplerState& s, int level, glm::vec2 uv) {
+    const MipLevel& l = t.levels[level];
+    const float fx = safeCoord(uv.x) * l.width - 0.5f;
+    const float fy = safeCoord(uv.y) * l.height - 0.5f;
+    const float x0f = std::floor(fx), y0f = std::floor(fy);
+    const float ax = fx - x0f, ay = fy - y0f;
+    const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
+    const int xa = applyAddress(s.addressU, x0, l.width), xb = applyAddress(s.addressU, x0 + 1, l.width);
+    const int ya = applyAddress(s.addressV, y0, l.height), yb = applyAddress(s.addressV, y0 + 1, l.height);
+    const glm::vec4 top = glm::mix(load<Channels>(t, level, xa, ya), load<Channels>(t, level, xb, ya), ax);
+    const glm::vec4 bottom = glm::mix(load<Channels>(t, level, xa, yb), load<Channels>(t, level, xb, yb), ax);
+    return glm::mix(top, bottom, ay);
+}
+
+}  // namespace
+
+template <SampledChannels Channels>
+glm::vec4 sampleTexture(const SoftTexture& t, const SamplerState& s, glm::vec2 uv, const UvDerivatives& d) {
+    switch (s.filter) {
+        case Filter::Nearest: return nearest<Channels>(t, s, 0, uv);
+        case Filter::Bilinear: return bilinear<Channels>(t, s, 0, uv);
+        case Filter::Trilinear: break;
+    }
+    const glm::vec2 size(t.levels[0].width, t.levels[0].height);
+    const float rho = std::max(glm::length(d.dx * size), glm::length(d.dy * size));
+    const float lambda = std::log2(rho);  // -inf for rho = 0: magnification
+    const int last = static_cast<int>(t.levels.size()) - 1;
+    if (!(lambda > 0.0f) || last == 0) return bilinear<Channels>(t, s, 0, uv);
+    if (lambda >= static_cast<float>(last)) return bilinear<Channels>(t, s, last, uv);
+    const int lo = static_cast<int>(lambda);
+    return glm::mix(bilinear<Channels>(t, s, lo, uv), bilinear<Channels>(t, s, lo + 1, uv), lambda - lo);
+}
+
+template glm::vec4 sampleTexture<SampledChannels::All>(const SoftTexture&, const SamplerState&, glm::vec2,
+                                                       const UvDerivatives&);
+template glm::vec4 sampleTexture<SampledChannels::AlphaOnly>(const SoftTexture&, const SamplerState&, glm::vec2,
+                                                             const UvDerivatives&);
+
+glm::vec4 fetchTexel(const SoftTexture& t, int x, int y) { return loadTexel(t.texel(0, x, y), t.desc.format); }
+
+void generateMipLevel(SoftTexture& t, int level) {
+    const MipLevel& src = t.levels[level - 1];
+    MipLevel& dst = t.levels[level];
+    for (int y = 0; y < dst.height; ++y) {
+        for (int x = 0; x < dst.width; ++x) {
+            // Odd sizes: the last row/column repeats (clamped), as a 2x2 box needs 4 texels.
+            const int x0 = std::min(2 * x, src.width - 1), x1 = std::min(2 * x + 1, src.width - 1);
+            const int y0 = std::min(2 * y, src.height - 1), y1 = std::min(2 * y + 1, src.height - 1);
+            const glm::vec4 sum = loadTexel(t.texel(level - 1, x0, y0), t.desc.format) +
+                                  loadTexel(t.texel(level - 1, x1, y0), t.desc.format) +
+                                  loadTexel(t.texel(level - 1, x0, y1), t.desc.format) +
+                                  loadTexel(t.texel(level - 1, x1, y1), t.desc.format);
+            storeTexel(dst.texels.data() + (std::size_t(y) * dst.width + x) * t.bytesPerSample, t.desc.format,
+                       sum * 0.25f, 0xF);
+        }
+    }
+}
+
+}  // namespace engine::render::soft

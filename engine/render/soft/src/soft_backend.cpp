@@ -1,0 +1,588 @@
+#include "engine/render/soft/soft_backend.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <optional>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "engine/core/error.hpp"
+#include "engine/core/log.hpp"
+#include "engine/render/resource_pool.hpp"
+#include "engine/render/vertex.hpp"
+#include "draw_state.hpp"
+#include "pixel_codec.hpp"
+#include "sampler.hpp"
+#include "soft_texture.hpp"
+#include "tile_rasterizer.hpp"
+#include "triangle_setup.hpp"
+
+namespace engine::render::soft {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct SoftBuffer {
+    BufferDesc desc;
+    std::vector<std::byte> bytes;
+};
+
+struct SoftPipeline {
+    PipelineDesc desc;
+    PipelineInfo info;
+};
+
+struct RecordedDraw {
+    DrawDesc desc;
+};
+
+std::string quoted(const std::string& name) { return "'" + (name.empty() ? std::string("<unnamed>") : name) + "'"; }
+
+bool validSampleCount(int s) { return s == 1 || s == 2 || s == 4 || s == 8; }
+
+// The alpha test can only matter when a failing fragment writes something different
+// from a passing one (seeds/004 "Looking further").
+bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite, bool anyAlphaWrite) {
+    if (!test.enabled || test.func == CompareFunc::Always) return false;
+    switch (test.failMode) {
+        case AlphaFailMode::Keep: return true;
+        case AlphaFailMode::FbOnly: return depthWrite;
+        case AlphaFailMode::ZbOnly: return anyRgbWrite || anyAlphaWrite;
+        case AlphaFailMode::RgbOnly: return depthWrite || anyAlphaWrite;
+    }
+    return true;
+}
+
+class SoftBackendImpl final : public SoftBackend {
+public:
+    explicit SoftBackendImpl(const SoftOptions& options)
+        : options_(options),
+          arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic),
+          textures_("texture"), buffers_("buffer"), pipelines_("pipeline") {
+        if (options.tileSize < 8 || options.tileSize % 8 != 0 || options.tileSize > 1024)
+            throw Error("soft backend: tileSize " + std::to_string(options.tileSize) +
+                        " must be a multiple of 8 in [8, 1024]");
+    }
+
+    std::string name() const override { return "soft"; }
+    SoftStats stats() const override { return stats_; }
+    const SoftOptions& options() const override { return options_; }
+
+    TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
+        const std::string what = "texture " + quoted(desc.name);
+        if (desc.width <= 0 || desc.height <= 0)
+            throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                        " is empty");
+        if (desc.width > kMaxTextureDimension || desc.height > kMaxTextureDimension)
+            throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                        " exceeds the " + std::to_string(kMaxTextureDimension) + " limit");
+        if (!validSampleCount(desc.samples))
+            throw Error(what + ": " + std::to_string(desc.samples) + " samples (must be 1, 2, 4 or 8)");
+        const FormatInfo& info = formatInfo(desc.format);
+        if (desc.samples > 1 && !(desc.usage & UsageRenderTarget))
+            throw Error(what + ": multisampled textures must be render targets");
+        if (info.isDepth && !(desc.usage & UsageRenderTarget))
+            throw Error(what + ": depth format D32F is only for render targets");
+        const int maxLevels = 1 + static_cast<int>(std::floor(std::log2(std::max(desc.width, desc.height))));
+        if (desc.mipLevels < 1 || desc.mipLevels > maxLevels || (desc.mipLevels > 1 && desc.samples > 1))
+            throw Error(what + ": " + std::to_string(desc.mipLevels) + " mip levels (1.." + std::to_string(maxLevels) +
+                        ", and 1 when multisampled)");
+        const std::uint64_t bytes = std::uint64_t(desc.width) * desc.height * desc.samples * info.bytesPerPixel;
+        if (bytes > kMaxTextureBytes)
+            throw Error(what + ": " + std::to_string(bytes >> 20) + " MiB exceeds the 1 GiB texture limit");
+
+        SoftTexture t;
+        t.desc = desc;
+        t.bytesPerSample = info.bytesPerPixel;
+        for (int level = 0; level < desc.mipLevels; ++level) {
+            MipLevel l;
+            l.width = std::max(1, desc.width >> level);
+            l.height = std::max(1, desc.height >> level);
+            l.texels.assign(std::size_t(l.width) * l.height * desc.samples * info.bytesPerPixel, std::byte{0});
+            t.levels.push_back(std::move(l));
+        }
+        if (data) upload(t, *data, what);
+        return textures_.add(std::move(t));
+    }
+
+    BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
+        const std::string what = "buffer " + quoted(desc.name);
+        const std::uint64_t stride = desc.kind == BufferKind::Vertex   ? sizeof(Vertex)
+                                     : desc.kind == BufferKind::Index ? sizeof(std::uint32_t)
+                                                                      : sizeof(Instance);
+        if (desc.size == 0 || desc.size % stride != 0)
+            throw Error(what + ": size " + std::to_string(desc.size) + " is not a positive multiple of " +
+                        std::to_string(stride));
+        if (!data.empty() && data.size() != desc.size)
+            throw Error(what + ": " + std::to_string(data.size()) + " bytes given for a " + std::to_string(desc.size) +
+                        "-byte buffer");
+        SoftBuffer b{desc, std::vector<std::byte>(desc.size)};
+        if (!data.empty()) std::memcpy(b.bytes.data(), data.data(), data.size());
+        return buffers_.add(std::move(b));
+    }
+
+    void updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) override {
+        SoftBuffer& b = buffers_.get(handle);
+        if (offset > b.bytes.size() || data.size() > b.bytes.size() - offset)
+            throw Error("buffer " + quoted(b.desc.name) + ": update of " + std::to_string(data.size()) +
+                        " bytes at offset " + std::to_string(offset) + " overruns its " +
+                        std::to_string(b.bytes.size()) + " bytes");
+        std::memcpy(b.bytes.data() + offset, data.data(), data.size());
+    }
+
+    PipelineHandle createPipeline(const PipelineDesc& desc) override {
+        const std::string what = "pipeline " + quoted(desc.name);
+        if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
+            throw Error(what + ": alpha reference is not finite");
+        if (isFullscreen(desc.program) && desc.depth.test)
+            throw Error(what + ": full-screen program " + programKindName(desc.program) + " cannot depth-test");
+        SoftPipeline p{desc, {}};
+        const bool depthWrite = desc.depth.test && desc.depth.write;
+        bool anyRgb = false, anyAlpha = false, plain = true;
+        for (const BlendState& b : desc.blend) {
+            anyRgb = anyRgb || (b.writeMask & WriteRGB);
+            anyAlpha = anyAlpha || (b.writeMask & WriteA);
+            plain = plain && b.isPlainWrite();
+        }
+        p.info.alphaTestDropped = desc.alphaTest.enabled && !alphaTestCanMatter(desc.alphaTest, depthWrite, anyRgb, anyAlpha);
+        p.info.blendIsPlainWrite = plain;
+        return pipelines_.add(std::move(p));
+    }
+
+    void destroy(TextureHandle h) override { textures_.remove(h); }
+    void destroy(BufferHandle h) override { buffers_.remove(h); }
+    void destroy(PipelineHandle h) override { pipelines_.remove(h); }
+
+    const TextureDesc& describe(TextureHandle h) const override { return textures_.get(h).desc; }
+    PipelineInfo pipelineInfo(PipelineHandle h) const override { return pipelines_.get(h).info; }
+
+    void beginPass(const PassDesc& pass) override {
+        if (pass_) throw Error("pass " + quoted(pass.name) + " begun while pass " + quoted(pass_->name) + " is open");
+        int width = 0, height = 0, samples = 0;
+        auto checkSize = [&](const SoftTexture& t) {
+            if (width == 0) {
+                width = t.desc.width, height = t.desc.height, samples = t.desc.samples;
+            } else if (t.desc.width != width || t.desc.height != height || t.desc.samples != samples) {
+                throw Error("pass " + quoted(pass.name) + ": attachment " + quoted(t.desc.name) +
+                            " differs in size or sample count from the others");
+            }
+            if (!(t.desc.usage & UsageRenderTarget))
+                throw Error("pass " + quoted(pass.name) + ": " + quoted(t.desc.name) + " is not a render target");
+        };
+        for (const ColorAttachment& c : pass.color) {
+            if (!c.texture) continue;
+            const SoftTexture& t = textures_.get(c.texture);
+            if (formatInfo(t.desc.format).isDepth)
+                throw Error("pass " + quoted(pass.name) + ": depth texture " + quoted(t.desc.name) + " bound as colour");
+            checkSize(t);
+        }
+        if (pass.depth.texture) {
+            const SoftTexture& t = textures_.get(pass.depth.texture);
+            if (!formatInfo(t.desc.format).isDepth)
+                throw Error("pass " + quoted(pass.name) + ": " + quoted(t.desc.name) + " bound as depth is " +
+                            std::string(formatName(t.desc.format)));
+            checkSize(t);
+        }
+        if (width == 0) throw Error("pass " + quoted(pass.name) + " has no attachments");
+        pass_ = pass;
+        passWidth_ = width, passHeight_ = height, passSamples_ = samples;
+        passStart_ = Clock::now();
+        draws_.clear();
+        for (const ColorAttachment& c : pass.color)
+            if (c.texture && c.load == LoadOp::Clear) clear(textures_.get(c.texture), c.clear);
+        if (pass.depth.texture && pass.depth.load == LoadOp::Clear)
+            clear(textures_.get(pass.depth.texture), glm::vec4(pass.depth.clear));
+    }
+
+    void draw(const DrawDesc& d) override {
+        if (!pass_) throw Error("draw outside a pass");
+        validateDraw(d);
+        draws_.push_back({d});
+    }
+
+    void endPass() override {
+        if (!pass_) throw Error("endPass without beginPass");
+        execute();
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - passStart_).count();
+        timings_.push_back({pass_->name, ms});
+        ++stats_.passes;
+        pass_.reset();
+        draws_.clear();
+    }
+
+    void resolve(const ResolveDesc& r) override {
+        SoftTexture& src = textures_.get(r.source);
+        SoftTexture& dst = textures_.get(r.destination);
+        if (src.desc.width != dst.desc.width || src.desc.height != dst.desc.height || src.desc.format != dst.desc.format ||
+            dst.desc.samples != 1)
+            throw Error("resolve " + quoted(src.desc.name) + " -> " + quoted(dst.desc.name) +
+                        ": needs the same size and format and a single-sampled destination");
+        const bool depth = formatInfo(src.desc.format).isDepth;
+        const int n = src.desc.samples;
+        arena_.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<int>(0, src.desc.height), [&](const tbb::blocked_range<int>& rows) {
+                for (int y = rows.begin(); y != rows.end(); ++y) {
+                    for (int x = 0; x < src.desc.width; ++x) {
+                        if (depth) {
+                            // The closest sample, never an average (seeds/000 §3.5.1).
+                            float best = loadTexel(src.sample(x, y, 0), src.desc.format).r;
+                            for (int s = 1; s < n; ++s) {
+                                const float z = loadTexel(src.sample(x, y, s), src.desc.format).r;
+                                if (isCloser(r.depthFunc, z, best)) best = z;
+                            }
+                            std::memcpy(dst.sample(x, y, 0), &best, sizeof best);
+                        } else {
+                            glm::vec4 sum(0.0f);
+                            for (int s = 0; s < n; ++s) sum += loadTexel(src.sample(x, y, s), src.desc.format);
+                            storeTexel(dst.sample(x, y, 0), dst.desc.format, sum / float(n), 0xF);
+                        }
+                    }
+                }
+            });
+        });
+    }
+
+    Readback readback(TextureHandle h) override {
+        const SoftTexture& t = textures_.get(h);
+        if (t.desc.samples != 1)
+            throw Error("readback of " + quoted(t.desc.name) + ": multisampled; resolve it first");
+        const FormatInfo& info = formatInfo(t.desc.format);
+        Readback r;
+        r.width = t.desc.width;
+        r.height = t.desc.height;
+        r.channels = info.channels;
+        r.format = t.desc.format;
+        r.values.resize(std::size_t(r.width) * r.height * r.channels);
+        const ByteTables& tables = byteTables();
+        for (int y = 0; y < r.height; ++y) {
+            for (int x = 0; x < r.width; ++x) {
+                const std::byte* p = t.texel(0, x, y);
+                float* out = &r.values[(std::size_t(y) * r.width + x) * r.channels];
+                if (info.isNormalized()) {  // stored codes, sRGB not decoded
+                    for (int c = 0; c < r.channels; ++c) out[c] = tables.unorm[std::to_integer<std::uint8_t>(p[c])];
+                } else {
+                    const glm::vec4 v = loadTexel(p, t.desc.format);
+                    for (int c = 0; c < r.channels; ++c) out[c] = v[c];
+                }
+            }
+        }
+        return r;
+    }
+
+    std::vector<PassTiming> takeTimings() override { return std::exchange(timings_, {}); }
+
+private:
+    void upload(SoftTexture& t, const TextureData& data, const std::string& what) {
+        if (data.levels.size() > t.levels.size())
+            throw Error(what + ": " + std::to_string(data.levels.size()) + " levels of data for " +
+                        std::to_string(t.levels.size()) + " mip levels");
+        const bool half = t.desc.format == Format::RGBA16F || t.desc.format == Format::RG16F || t.desc.format == Format::R16F;
+        const int channels = formatInfo(t.desc.format).channels;
+        for (std::size_t level = 0; level < data.levels.size(); ++level) {
+            MipLevel& l = t.levels[level];
+            const std::size_t pixels = std::size_t(l.width) * l.height;
+            const std::size_t expected = half ? pixels * channels * sizeof(float) : l.texels.size();
+            if (data.levels[level].size() != expected)
+                throw Error(what + ": level " + std::to_string(level) + " has " + std::to_string(data.levels[level].size()) +
+                            " bytes, expected " + std::to_string(expected));
+            if (!half) {
+                std::memcpy(l.texels.data(), data.levels[level].data(), expected);
+                continue;
+            }
+            const float* src = reinterpret_cast<const float*>(data.levels[level].data());
+            for (std::size_t i = 0; i < pixels * channels; ++i) {
+                const std::uint16_t bits = encodeHalf(src[i]);
+                std::memcpy(l.texels.data() + 2 * i, &bits, 2);
+            }
+        }
+        for (std::size_t level = std::max<std::size_t>(1, data.levels.size()); level < t.levels.size(); ++level)
+            generateMipLevel(t, static_cast<int>(level));
+    }
+
+    void clear(SoftTexture& t, const glm::vec4& value) {
+        std::byte encoded[16] = {};
+        storeTexel(encoded, t.desc.format, value, 0xF);
+        std::vector<std::byte>& texels = t.levels[0].texels;
+        const std::size_t stride = t.bytesPerSample;
+        for (std::size_t i = 0; i < texels.size(); i += stride) std::memcpy(texels.data() + i, encoded, stride);
+    }
+
+    const SoftTexture& sampledTexture(TextureHandle h, const std::string& what) const {
+        const SoftTexture& t = textures_.get(h);
+        if (t.desc.samples != 1) throw Error(what + ": samples multisampled texture " + quoted(t.desc.name));
+        for (const ColorAttachment& c : pass_->color)
+            if (c.texture == h) throw Error(what + ": samples " + quoted(t.desc.name) + " while rendering into it");
+        if (pass_->depth.texture == h) throw Error(what + ": samples depth target " + quoted(t.desc.name));
+        return t;
+    }
+
+    void validateDraw(const DrawDesc& d) {
+        const SoftPipeline& p = pipelines_.get(d.pipeline);
+        const std::string what = "draw with pipeline " + quoted(p.desc.name) + " in pass " + quoted(pass_->name);
+        if (d.params.index() != paramsIndexFor(p.desc.program))
+            throw Error(what + ": parameters do not match program " + programKindName(p.desc.program));
+        if (p.desc.depth.test && !pass_->depth.texture)
+            throw Error(what + ": depth test on but the pass has no depth target");
+        if (isFullscreen(p.desc.program)) {
+            const CompositeParams& c = std::get<CompositeParams>(d.params);
+            for (TextureHandle h : {c.foliage, c.mask}) {
+                const SoftTexture& t = sampledTexture(h, what);
+                if (t.desc.width < passWidth_ || t.desc.height < passHeight_)
+                    throw Error(what + ": input " + quoted(t.desc.name) + " is smaller than the target");
+            }
+            if (c.maskAdd) sampledTexture(c.maskAdd, what);
+            if (!std::isfinite(c.maskLerp)) throw Error(what + ": maskLerp is not finite");
+            return;
+        }
+        if (d.count % 3 != 0) throw Error(what + ": count " + std::to_string(d.count) + " is not a multiple of 3");
+        const SoftBuffer& vb = buffers_.get(d.vertices);
+        if (vb.desc.kind != BufferKind::Vertex) throw Error(what + ": " + quoted(vb.desc.name) + " is not a vertex buffer");
+        const std::uint64_t vertexCount = vb.bytes.size() / sizeof(Vertex);
+        if (d.indices) {
+            const SoftBuffer& ib = buffers_.get(d.indices);
+            if (ib.desc.kind != BufferKind::Index) throw Error(what + ": " + quoted(ib.desc.name) + " is not an index buffer");
+            const std::uint64_t indexCount = ib.bytes.size() / 4;
+            if (std::uint64_t(d.first) + d.count > indexCount)
+                throw Error(what + ": indices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
+                            ") outside " + quoted(ib.desc.name) + " of " + std::to_string(indexCount));
+            const auto* indices = reinterpret_cast<const std::uint32_t*>(ib.bytes.data()) + d.first;
+            for (std::uint32_t i = 0; i < d.count; ++i)
+                if (indices[i] >= vertexCount)
+                    throw Error(what + ": index " + std::to_string(indices[i]) + " at position " +
+                                std::to_string(d.first + i) + " >= vertex count " + std::to_string(vertexCount));
+        } else if (std::uint64_t(d.first) + d.count > vertexCount) {
+            throw Error(what + ": vertices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
+                        ") outside " + quoted(vb.desc.name) + " of " + std::to_string(vertexCount));
+        }
+        if (d.instances) {
+            const SoftBuffer& inst = buffers_.get(d.instances);
+            if (inst.desc.kind != BufferKind::Instance)
+                throw Error(what + ": " + quoted(inst.desc.name) + " is not an instance buffer");
+            if (std::uint64_t(d.instanceCount) * sizeof(Instance) > inst.bytes.size())
+                throw Error(what + ": " + std::to_string(d.instanceCount) + " instances exceed " + quoted(inst.desc.name));
+        } else if (d.instanceCount != 1) {
+            throw Error(what + ": instanceCount " + std::to_string(d.instanceCount) + " without an instance buffer");
+        }
+        std::visit(
+            [&](const auto& params) {
+                using P = std::decay_t<decltype(params)>;
+                if constexpr (std::is_same_v<P, SurfaceParams> || std::is_same_v<P, AlphaOnlyParams>)
+                    if (params.baseColor.texture) sampledTexture(params.baseColor.texture, what);
+            },
+            d.params);
+    }
+
+    Viewport viewportFor(const DrawDesc& d) const {
+        Viewport vp{passWidth_, passHeight_, {0, 0, passWidth_, passHeight_}};
+        if (d.scissor) {
+            const int x0 = std::max(0, d.scissor->x), y0 = std::max(0, d.scissor->y);
+            const int x1 = std::min(passWidth_, d.scissor->x + d.scissor->width);
+            const int y1 = std::min(passHeight_, d.scissor->y + d.scissor->height);
+            vp.scissor = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+        }
+        return vp;
+    }
+
+    DrawState drawStateFor(const DrawDesc& d) {
+        const SoftPipeline& p = pipelines_.get(d.pipeline);
+        DrawState s;
+        for (const ColorAttachment& c : pass_->color)
+            if (c.texture) s.colorTargets[s.colorTargetCount++] = &textures_.get(c.texture);
+        s.depthTarget = pass_->depth.texture ? &textures_.get(pass_->depth.texture) : nullptr;
+        s.samples = passSamples_;
+        s.pattern = &samplePattern(passSamples_);
+        s.depthTest = p.desc.depth.test && s.depthTarget;
+        s.depthWrite = s.depthTest && p.desc.depth.write;
+        s.depthFunc = p.desc.depth.func;
+        s.alphaToCoverage = p.desc.alphaTest.alphaToCoverage;
+        s.blendConstant = p.desc.blendConstant;
+        bool anyRgb = false, anyAlpha = false;
+        for (int i = 0; i < s.colorTargetCount; ++i) {
+            s.blend[i] = p.desc.blend[i];
+            // A fully masked target is not touched; channels the format lacks are not written.
+            const int channels = formatInfo(s.colorTargets[i]->desc.format).channels;
+            const std::uint8_t present = std::uint8_t((1u << channels) - 1u);
+            s.blend[i].writeMask &= present;
+            s.blendNeeded[i] = !s.blend[i].isPlainWrite();
+            anyRgb = anyRgb || (s.blend[i].writeMask & WriteRGB);
+            anyAlpha = anyAlpha || (s.blend[i].writeMask & WriteA);
+        }
+        s.alphaTest = p.desc.alphaTest;
+        s.alphaTest.enabled = alphaTestCanMatter(p.desc.alphaTest, s.depthWrite, anyRgb, anyAlpha);
+        s.shade = anyRgb || anyAlpha || s.alphaTest.enabled || (s.alphaToCoverage && s.samples > 1);
+        s.program = makeProgram(p.desc.program, d.params);
+        return s;
+    }
+
+    ProgramInstance makeProgram(ProgramKind kind, const ProgramParams& params) const {
+        auto texture = [&](TextureHandle h) -> const SoftTexture* { return h ? &textures_.get(h) : nullptr; };
+        switch (kind) {
+            case ProgramKind::Flat: return FlatProgram{std::get<FlatParams>(params).color};
+            case ProgramKind::OpaqueLit: {
+                const auto& p = std::get<SurfaceParams>(params);
+                return OpaqueLitProgram{p, texture(p.baseColor.texture)};
+            }
+            case ProgramKind::FoliageColor: {
+                const auto& p = std::get<SurfaceParams>(params);
+                return FoliageColorProgram{p, texture(p.baseColor.texture)};
+            }
+            case ProgramKind::FoliageAlpha: {
+                const auto& p = std::get<AlphaOnlyParams>(params);
+                return FoliageAlphaProgram{p, texture(p.baseColor.texture)};
+            }
+            case ProgramKind::Composite: {
+                const auto& p = std::get<CompositeParams>(params);
+                return CompositeProgram{p, texture(p.foliage), texture(p.mask), texture(p.maskAdd)};
+            }
+        }
+        throw Error("unknown program kind");
+    }
+
+    // Vertex stage + clipping + setup for one draw, in parallel over fixed chunks whose
+    // outputs are concatenated in order, so the result is independent of the thread count.
+    void processGeometry(const DrawDesc& d, std::uint32_t drawIndex, const Viewport& vp, const RasterState& raster,
+                         std::vector<SetupTriangle>& out) {
+        const SoftPipeline& p = pipelines_.get(d.pipeline);
+        if (isFullscreen(p.desc.program)) {
+            if (!vp.scissor.empty()) out.push_back(fullscreenTriangle(vp, drawIndex));
+            return;
+        }
+        const SoftBuffer& vb = buffers_.get(d.vertices);
+        const auto* vertices = reinterpret_cast<const Vertex*>(vb.bytes.data());
+        const std::uint32_t* indices =
+            d.indices ? reinterpret_cast<const std::uint32_t*>(buffers_.get(d.indices).bytes.data()) + d.first : nullptr;
+        const Instance identity{};
+        const Instance* instances =
+            d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity;
+        const glm::mat4 viewProj = std::visit(
+            [](const auto& params) -> glm::mat4 {
+                using P = std::decay_t<decltype(params)>;
+                if constexpr (std::is_same_v<P, CompositeParams>) return glm::mat4(1.0f);
+                else return params.viewProj;
+            },
+            d.params);
+
+        const std::uint64_t trianglesPerInstance = d.count / 3;
+        const std::uint64_t total = trianglesPerInstance * d.instanceCount;
+        stats_.trianglesIn += total;
+        if (total == 0 || vp.scissor.empty()) return;
+        constexpr std::uint64_t kChunk = 2048;
+        const std::uint64_t chunks = (total + kChunk - 1) / kChunk;
+        std::vector<std::vector<SetupTriangle>> chunkOut(chunks);
+        std::vector<SetupCounters> chunkCounters(chunks);
+        arena_.execute([&] {
+            tbb::parallel_for(std::uint64_t(0), chunks, [&](std::uint64_t chunk) {
+                const std::uint64_t begin = chunk * kChunk, end = std::min(total, begin + kChunk);
+                std::uint64_t cachedInstance = ~0ull;
+                glm::mat4 mvp(1.0f);
+                glm::mat3 normalMatrix(1.0f);
+                for (std::uint64_t t = begin; t < end; ++t) {
+                    const std::uint64_t instance = t / trianglesPerInstance, tri = t % trianglesPerInstance;
+                    const Instance& inst = instances[instance];
+                    if (instance != cachedInstance) {
+                        mvp = viewProj * inst.model;
+                        normalMatrix = glm::mat3(inst.model);
+                        cachedInstance = instance;
+                    }
+                    ClipVertex cv[3];
+                    for (int k = 0; k < 3; ++k) {
+                        const std::uint32_t index = indices ? indices[tri * 3 + k] : d.first + std::uint32_t(tri * 3 + k);
+                        const Vertex& v = vertices[index];
+                        cv[k].position = mvp * glm::vec4(v.position, 1.0f);
+                        const glm::vec3 n = normalMatrix * v.normal;
+                        const glm::vec4 c = v.color * inst.tint;
+                        cv[k].attributes = {v.uv.x, v.uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
+                    }
+                    setupTriangle(cv[0], cv[1], cv[2], vp, raster, drawIndex, chunkOut[chunk], chunkCounters[chunk]);
+                }
+            });
+        });
+        for (std::uint64_t c = 0; c < chunks; ++c) {
+            out.insert(out.end(), chunkOut[c].begin(), chunkOut[c].end());
+            stats_.trianglesDropped += chunkCounters[c].dropped;
+        }
+    }
+
+    void execute() {
+        const int tileSize = options_.tileSize;
+        const int tilesX = (passWidth_ + tileSize - 1) / tileSize, tilesY = (passHeight_ + tileSize - 1) / tileSize;
+        std::vector<DrawState> drawStates;
+        std::vector<SetupTriangle> triangles;
+        drawStates.reserve(draws_.size());
+        for (std::uint32_t i = 0; i < draws_.size(); ++i) {
+            const DrawDesc& d = draws_[i].desc;
+            drawStates.push_back(drawStateFor(d));
+            processGeometry(d, i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, triangles);
+        }
+        stats_.draws += draws_.size();
+        stats_.trianglesRasterized += triangles.size();
+
+        // Binning in submission order keeps each tile's list ordered.
+        std::vector<std::vector<std::uint32_t>> bins(std::size_t(tilesX) * tilesY);
+        for (std::uint32_t i = 0; i < triangles.size(); ++i) {
+            const SetupTriangle& t = triangles[i];
+            for (int ty = t.minY / tileSize; ty <= t.maxY / tileSize; ++ty)
+                for (int tx = t.minX / tileSize; tx <= t.maxX / tileSize; ++tx) bins[std::size_t(ty) * tilesX + tx].push_back(i);
+        }
+
+        std::atomic<std::uint64_t> shaded{0}, touched{0};
+        arena_.execute([&] {
+            tbb::parallel_for(std::size_t(0), bins.size(), [&](std::size_t tileIndex) {
+                if (bins[tileIndex].empty()) return;
+                const int tx = int(tileIndex % tilesX), ty = int(tileIndex / tilesX);
+                const Rect tile{tx * tileSize, ty * tileSize, std::min(tileSize, passWidth_ - tx * tileSize),
+                                std::min(tileSize, passHeight_ - ty * tileSize)};
+                TileCounters counters;
+                rasterizeTile(tile, bins[tileIndex], triangles, drawStates, counters);
+                shaded += counters.pixelsShaded;
+                touched += counters.pixelsTouched;
+            });
+        });
+        stats_.pixelsShaded += shaded;
+        stats_.pixelsTouched += touched;
+        if (options_.debugChecks) checkNonFinite();
+    }
+
+    void checkNonFinite() {
+        std::uint64_t count = 0;
+        for (const ColorAttachment& c : pass_->color) {
+            if (!c.texture) continue;
+            const SoftTexture& t = textures_.get(c.texture);
+            if (!formatInfo(t.desc.format).isFloat) continue;
+            const int channels = formatInfo(t.desc.format).channels;
+            for (int y = 0; y < t.desc.height; ++y)
+                for (int x = 0; x < t.desc.width; ++x)
+                    for (int s = 0; s < t.desc.samples; ++s) {
+                        const glm::vec4 v = loadTexel(const_cast<SoftTexture&>(t).sample(x, y, s), t.desc.format);
+                        for (int ch = 0; ch < channels; ++ch) count += !std::isfinite(v[ch]);
+                    }
+        }
+        if (count) log::warn("pass ", quoted(pass_->name), ": ", count, " non-finite values in float targets");
+        stats_.nonFiniteStores += count;
+    }
+
+    SoftOptions options_;
+    tbb::task_arena arena_;
+    ResourcePool<TextureTag, SoftTexture> textures_;
+    ResourcePool<BufferTag, SoftBuffer> buffers_;
+    ResourcePool<PipelineTag, SoftPipeline> pipelines_;
+    std::optional<PassDesc> pass_;
+    int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
+    Clock::time_point passStart_;
+    std::vector<RecordedDraw> draws_;
+    std::vector<PassTiming> timings_;
+    SoftStats stats_;
+};
+
+}  // namespace
+
+std::unique_ptr<SoftBackend> createSoftBackend(const SoftOptions& options) {
+    return std::make_unique<SoftBackendImpl>(options);
+}
+
+}  // namespace engine::render::soft

@@ -1,0 +1,65 @@
+#pragma once
+// From clip-space vertices to rasterizable triangles: homogeneous clipping against the
+// near/far planes and a guard band, perspective divide, snapping to 24.8 fixed point,
+// edge functions with the top-left rule, and the planes that interpolate depth and the
+// perspective-correct attributes.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/raster_state.hpp"
+
+namespace engine::render::soft {
+
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int kSubpixelScale = 1 << kSubpixelBits;
+
+// Attributes carried per vertex: uv (2), normal (3), colour (4).
+inline constexpr int kAttributeCount = 9;
+enum AttributeSlot { kAttrU = 0, kAttrV = 1, kAttrNormal = 2, kAttrColor = 5 };
+
+struct ClipVertex {
+    glm::vec4 position;  // clip space, depth in [0, w]
+    std::array<float, kAttributeCount> attributes;
+};
+
+// f(x, y) = value + dx * (x - originX) + dy * (y - originY), in pixels.
+struct Plane {
+    float value = 0.0f, dx = 0.0f, dy = 0.0f;
+};
+
+struct SetupTriangle {
+    std::uint32_t drawIndex = 0;
+    bool frontFacing = true;
+    // Pixel bounding box, inclusive, already clipped to the viewport and scissor.
+    int minX = 0, minY = 0, maxX = -1, maxY = -1;
+    // Edge i is E(x, y) = a*x + b*y + c in sub-pixel units; inside when E >= 0 (the
+    // top-left rule is folded into c).
+    std::array<std::int64_t, 3> a{}, b{}, c{};
+    float originX = 0.0f, originY = 0.0f;
+    Plane depth;     // z/w, linear in screen space
+    Plane inverseW;  // 1/w
+    std::array<Plane, kAttributeCount> attributeOverW;  // attribute/w
+};
+
+struct Viewport {
+    int width = 0, height = 0;
+    Rect scissor;  // already intersected with the target
+};
+
+struct SetupCounters {
+    std::uint64_t dropped = 0;  // degenerate, NaN, fully clipped or culled
+};
+
+// Clips, culls and sets up one triangle, appending 0..7 triangles to `out`.
+void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport,
+                   const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                   SetupCounters& counters);
+
+// A triangle whose bounding box is the scissor and whose edges accept everything: for
+// full-screen programs, which need no geometry.
+SetupTriangle fullscreenTriangle(const Viewport& viewport, std::uint32_t drawIndex);
+
+}  // namespace engine::render::soft
