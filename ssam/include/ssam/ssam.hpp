@@ -1,0 +1,86 @@
+#pragma once
+// Screen-Space Alpha Masking (seeds/000, "Alpha Blending as a Post-Process", as shipped in
+// Pure). After the engine's opaque pass:
+//   1. mask pass    rt_mask    <- foliage alpha only; RGB = MAX, A = ADD, all ONE (Table 3.1);
+//                                 depth test against rt_depth, no depth write, no culling,
+//                                 nothing rejected by alpha (§3.5.2)
+//   2. colour pass  rt_foliage <- foliage colour, alpha-tested at the colour reference, depth
+//                                 test and write into rt_depth (foliage depth for later passes),
+//                                 no culling, no blending, cleared to the clear colour (§3.5.3)
+//   3. composite    colour     <- lerp(colour, foliage, mask'), mask' = lerp(max, add, maskLerp)
+//                                 squared (§3.5.4, §3.6.2), scissored to the foliage's bounds.
+// Depends only on engine/render: works with any Backend, in any engine.
+#include <optional>
+#include <vector>
+
+#include "engine/render/backend.hpp"
+#include "ssam/config.hpp"
+#include "ssam/foliage.hpp"
+
+namespace ssam {
+
+struct FrameTargets {
+    engine::render::TextureHandle color;  // the opaque colour; the composite blends onto it
+    engine::render::TextureHandle depth;  // D32F opaque depth; receives the foliage depth
+};
+
+// What one frame decided: which batches are visible and where the composite runs.
+struct FramePlan {
+    int width = 0;
+    int height = 0;
+    std::vector<const FoliageBatch*> visible;  // in submission order (§3.8: only consistency of order is needed)
+    engine::render::Rect compositeRegion;
+    bool empty() const { return visible.empty(); }
+};
+
+struct FrameReport {
+    int batchesVisible = 0;
+    int passesRun = 0;  // 0 when no foliage is in view, else 3
+    engine::render::Rect compositeRegion;
+};
+
+// The intermediate targets, e.g. for captures (the paper's Figures 3.6-3.9).
+struct Intermediates {
+    engine::render::TextureHandle mask;     // r = MAX mask; a = ADD mask unless maskAdd is set
+    engine::render::TextureHandle maskAdd;  // RG16F precision: the ADD mask (r)
+    engine::render::TextureHandle foliage;  // rt_foliage
+};
+
+class ScreenSpaceAlphaMask {
+public:
+    explicit ScreenSpaceAlphaMask(engine::render::Backend& backend, const Config& config = {});
+    ~ScreenSpaceAlphaMask();
+    ScreenSpaceAlphaMask(const ScreenSpaceAlphaMask&) = delete;
+    ScreenSpaceAlphaMask& operator=(const ScreenSpaceAlphaMask&) = delete;
+
+    // Validates (engine::Error on a bad knob) and rebuilds what the change affects.
+    void setConfig(const Config& config);
+    const Config& config() const { return config_; }
+
+    // All three passes; nothing runs when no batch is in view.
+    FrameReport render(const FrameTargets& targets, const FoliageView& view);
+
+    // The same, one step at a time, for frame graphs: plan, then each pass.
+    FramePlan plan(const FrameTargets& targets, const FoliageView& view);
+    void maskPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
+    void colorPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
+    void compositePass(const FramePlan& plan, engine::render::TextureHandle color);
+
+    Intermediates intermediates() const { return {mask_, maskAdd_, foliage_}; }
+
+private:
+    void createPipelines();
+    void destroyPipelines();
+    void ensureTargets(int width, int height, engine::render::Format foliageFormat);
+    void destroyTargets();
+
+    engine::render::Backend& backend_;
+    Config config_;
+    engine::render::PipelineHandle maskPipeline_, colorPipeline_, compositePipeline_;
+    engine::render::TextureHandle mask_, maskAdd_, foliage_;
+    int width_ = 0, height_ = 0;
+    std::optional<engine::render::Format> foliageFormat_;
+    std::optional<MaskPrecision> targetPrecision_;
+};
+
+}  // namespace ssam

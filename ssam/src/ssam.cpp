@@ -1,0 +1,209 @@
+#include "ssam/ssam.hpp"
+
+#include "ssam/screen_region.hpp"
+
+namespace ssam {
+
+using namespace engine::render;
+
+ScreenSpaceAlphaMask::ScreenSpaceAlphaMask(Backend& backend, const Config& config) : backend_(backend) {
+    config.validate();
+    config_ = config;
+    createPipelines();
+}
+
+ScreenSpaceAlphaMask::~ScreenSpaceAlphaMask() {
+    destroyPipelines();
+    destroyTargets();
+}
+
+void ScreenSpaceAlphaMask::setConfig(const Config& config) {
+    config.validate();
+    config_ = config;
+    destroyPipelines();
+    createPipelines();
+}
+
+void ScreenSpaceAlphaMask::createPipelines() {
+    // Mask pass (§3.5.2, Table 3.1): RGB = MAX and A = ADD with ONE/ONE, depth test without
+    // write, both faces, no alpha rejection (the paper's alpha reference of 0).
+    PipelineDesc mask;
+    mask.name = "ssam mask";
+    mask.program = ProgramKind::FoliageAlpha;
+    mask.depth = DepthState::testOnly(config_.depthFunc);
+    mask.raster.cull = CullMode::None;
+    if (config_.maskPrecision == MaskPrecision::RG16F) {
+        // Two R16F targets, one blend equation each.
+        mask.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Max,
+                         BlendFactor::One, BlendFactor::One, BlendOp::Max, WriteAll};
+        mask.blend[1] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
+                         BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
+    } else {
+        mask.blend[0] = BlendState::ssamMask();
+    }
+    maskPipeline_ = backend_.createPipeline(mask);
+
+    // Colour pass (§3.5.3): alpha test at the colour reference, depth test and write, no
+    // culling, no blending.
+    PipelineDesc color;
+    color.name = "ssam colour";
+    color.program = ProgramKind::FoliageColor;
+    color.depth = DepthState::testAndWrite(config_.depthFunc);
+    color.raster.cull = CullMode::None;
+    color.alphaTest = AlphaTest::discardBelow(config_.colorAlphaReference);
+    colorPipeline_ = backend_.createPipeline(color);
+
+    // Composite (§3.5.4): out = (foliage, mask) blended SRC_ALPHA / INV_SRC_ALPHA onto the
+    // opaque colour = lerp(opaque, foliage, mask); the target's alpha is kept.
+    PipelineDesc composite;
+    composite.name = "ssam composite";
+    composite.program = ProgramKind::Composite;
+    composite.blend[0] = {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
+                          BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteAll};
+    compositePipeline_ = backend_.createPipeline(composite);
+}
+
+void ScreenSpaceAlphaMask::destroyPipelines() {
+    for (PipelineHandle* p : {&maskPipeline_, &colorPipeline_, &compositePipeline_}) {
+        if (*p) backend_.destroy(*p);
+        *p = {};
+    }
+}
+
+void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFormat) {
+    if (width == width_ && height == height_ && foliageFormat_ == foliageFormat &&
+        targetPrecision_ == config_.maskPrecision)
+        return;
+    destroyTargets();
+    auto target = [&](const char* name, Format format) {
+        TextureDesc t;
+        t.name = name;
+        t.width = width;
+        t.height = height;
+        t.format = format;
+        t.usage = UsageRenderTarget | UsageSampled;
+        return backend_.createTexture(t);
+    };
+    switch (config_.maskPrecision) {
+        case MaskPrecision::RGBA8: mask_ = target("rt_mask", Format::RGBA8_UNORM); break;
+        case MaskPrecision::RGBA16F: mask_ = target("rt_mask", Format::RGBA16F); break;
+        case MaskPrecision::RG16F:
+            mask_ = target("rt_mask_max", Format::R16F);
+            maskAdd_ = target("rt_mask_add", Format::R16F);
+            break;
+    }
+    foliage_ = target("rt_foliage", foliageFormat);
+    width_ = width, height_ = height;
+    foliageFormat_ = foliageFormat;
+    targetPrecision_ = config_.maskPrecision;
+}
+
+void ScreenSpaceAlphaMask::destroyTargets() {
+    for (TextureHandle* t : {&mask_, &maskAdd_, &foliage_}) {
+        if (*t) backend_.destroy(*t);
+        *t = {};
+    }
+    width_ = height_ = 0;
+    foliageFormat_.reset();
+    targetPrecision_.reset();
+}
+
+FramePlan ScreenSpaceAlphaMask::plan(const FrameTargets& targets, const FoliageView& view) {
+    const TextureDesc& color = backend_.describe(targets.color);
+    FramePlan plan;
+    plan.width = color.width;
+    plan.height = color.height;
+    for (const FoliageBatch& batch : view.batches) {
+        if (batch.count == 0 || batch.instanceCount == 0) continue;
+        const std::optional<Rect> region = screenRegion(batch.worldBounds, view.viewProj, plan.width, plan.height);
+        if (!region) continue;
+        plan.visible.push_back(&batch);
+        plan.compositeRegion = unite(plan.compositeRegion, *region);
+    }
+    // Targets are only needed (and only created) once some foliage is in view.
+    if (!plan.empty()) ensureTargets(plan.width, plan.height, color.format);
+    return plan;
+}
+
+namespace {
+DrawDesc foliageDraw(const FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
+    DrawDesc d;
+    d.pipeline = pipeline;
+    d.params = std::move(params);
+    d.vertices = batch.vertices;
+    d.indices = batch.indices;
+    d.first = batch.first;
+    d.count = batch.count;
+    d.instances = batch.instances;
+    d.instanceCount = batch.instanceCount;
+    return d;
+}
+}  // namespace
+
+void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
+    PassDesc pass;
+    pass.name = "ssam mask";
+    pass.color[0] = {mask_, LoadOp::Clear, glm::vec4(0.0f)};  // black background (§3.5.2)
+    if (maskAdd_) pass.color[1] = {maskAdd_, LoadOp::Clear, glm::vec4(0.0f)};
+    pass.depth = {depth, LoadOp::Load};
+    backend_.beginPass(pass);
+    for (const FoliageBatch* batch : plan.visible) {
+        AlphaOnlyParams params;
+        params.viewProj = view.viewProj;
+        params.alphaFactor = batch->baseColorFactor.a;
+        params.baseColor = batch->baseColor;
+        backend_.draw(foliageDraw(*batch, maskPipeline_, params));
+    }
+    backend_.endPass();
+}
+
+void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
+    PassDesc pass;
+    pass.name = "ssam colour";
+    pass.color[0] = {foliage_, LoadOp::Clear, config_.foliageClearColor};  // the clear-colour fix (§3.6.1)
+    pass.depth = {depth, LoadOp::Load};
+    backend_.beginPass(pass);
+    for (const FoliageBatch* batch : plan.visible) {
+        SurfaceParams params;
+        params.viewProj = view.viewProj;
+        params.baseColorFactor = batch->baseColorFactor;
+        params.baseColor = batch->baseColor;
+        params.light = view.light;
+        backend_.draw(foliageDraw(*batch, colorPipeline_, params));
+    }
+    backend_.endPass();
+}
+
+void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color) {
+    PassDesc pass;
+    pass.name = "ssam composite";
+    pass.color[0] = {color, LoadOp::Load};
+    backend_.beginPass(pass);
+    CompositeParams params;
+    params.foliage = foliage_;
+    params.mask = mask_;
+    params.maskAdd = maskAdd_;
+    params.maskLerp = config_.maskLerp;
+    params.squareMask = config_.squareMask;
+    DrawDesc d;
+    d.pipeline = compositePipeline_;
+    d.params = params;
+    d.scissor = plan.compositeRegion;
+    backend_.draw(d);
+    backend_.endPass();
+}
+
+FrameReport ScreenSpaceAlphaMask::render(const FrameTargets& targets, const FoliageView& view) {
+    const FramePlan p = plan(targets, view);
+    FrameReport report;
+    report.batchesVisible = static_cast<int>(p.visible.size());
+    report.compositeRegion = p.compositeRegion;
+    if (p.empty()) return report;  // no foliage in view: SSAM costs nothing
+    maskPass(p, view, targets.depth);
+    colorPass(p, view, targets.depth);
+    compositePass(p, targets.color);
+    report.passesRun = 3;
+    return report;
+}
+
+}  // namespace ssam
