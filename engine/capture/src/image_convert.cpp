@@ -1,0 +1,69 @@
+#include "engine/capture/image_convert.hpp"
+
+#include "engine/capture/srgb.hpp"
+
+#include <algorithm>
+
+namespace engine::capture {
+namespace {
+
+// Applies `op(pixelIndex, alphaValue)` to the colour channels of every pixel that has an alpha.
+template <typename Op>
+void forEachColourWithAlpha(Image& image, Op op) {
+    const int alphaIndex = image.alphaChannel();
+    if (alphaIndex < 0) return;
+    const auto channels = static_cast<std::size_t>(image.channels);
+    for (std::size_t base = 0; base < image.pixels.size(); base += channels) {
+        const float a = image.pixels[base + static_cast<std::size_t>(alphaIndex)];
+        for (std::size_t c = 0; c < channels; ++c)
+            if (static_cast<int>(c) != alphaIndex) op(image.pixels[base + c], a);
+    }
+}
+
+}  // namespace
+
+Image decodeSrgbImage(const Image8& image) {
+    Image out = Image::make(image.width, image.height, image.channelNames, image.alpha);
+    const int alphaIndex = image.alphaChannel();
+    const auto channels = static_cast<std::size_t>(image.channels);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        const bool isAlpha = static_cast<int>(i % channels) == alphaIndex;
+        out.pixels[i] = isAlpha ? decodeUnorm8(image.pixels[i]) : decodeSrgb8(image.pixels[i]);
+    }
+    return out;
+}
+
+Image8 encodeSrgbImage(const Image& image) {
+    Image straight = image;
+    unpremultiply(straight);
+    Image8 out = Image8::make(image.width, image.height, image.channelNames, AlphaMode::Straight);
+    const int alphaIndex = image.alphaChannel();
+    const auto channels = static_cast<std::size_t>(image.channels);
+    for (std::size_t i = 0; i < straight.pixels.size(); ++i) {
+        const bool isAlpha = static_cast<int>(i % channels) == alphaIndex;
+        out.pixels[i] = isAlpha ? encodeUnorm8(straight.pixels[i]) : encodeSrgb8(straight.pixels[i]);
+    }
+    return out;
+}
+
+Image8 quantizeUnorm8(const Image& image) {
+    Image8 out = Image8::make(image.width, image.height, image.channelNames, image.alpha);
+    std::transform(image.pixels.begin(), image.pixels.end(), out.pixels.begin(), encodeUnorm8);
+    return out;
+}
+
+void premultiply(Image& image) {
+    if (image.alpha == AlphaMode::Premultiplied) return;
+    forEachColourWithAlpha(image, [](float& colour, float a) { colour *= a; });
+    image.alpha = AlphaMode::Premultiplied;
+}
+
+void unpremultiply(Image& image) {
+    if (image.alpha == AlphaMode::Straight) return;
+    forEachColourWithAlpha(image, [](float& colour, float a) {
+        if (a != 0.0f) colour /= a;
+    });
+    image.alpha = AlphaMode::Straight;
+}
+
+}  // namespace engine::capture

@@ -1,0 +1,14 @@
+#pragma once
+// Private: one place that creates, opens, writes and closes an OpenImageIO output and
+// turns each failure into an engine::Error naming the file.
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+
+namespace engine::capture::detail {
+
+// `data` holds spec.width * spec.height * spec.nchannels interleaved values of `dataType`.
+void writeWithOiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType,
+                   const void* data);
+
+}  // namespace engine::capture::detail
