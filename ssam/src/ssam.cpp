@@ -110,9 +110,13 @@ void ScreenSpaceAlphaMask::destroyTargets() {
 
 FramePlan ScreenSpaceAlphaMask::plan(const FrameTargets& targets, const FoliageView& view) {
     const TextureDesc& color = backend_.describe(targets.color);
+    return plan(color.width, color.height, color.format, view);
+}
+
+FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, const FoliageView& view) {
     FramePlan plan;
-    plan.width = color.width;
-    plan.height = color.height;
+    plan.width = width;
+    plan.height = height;
     for (const FoliageBatch& batch : view.batches) {
         if (batch.count == 0 || batch.instanceCount == 0) continue;
         const std::optional<Rect> region = screenRegion(batch.worldBounds, view.viewProj, plan.width, plan.height);
@@ -121,7 +125,7 @@ FramePlan ScreenSpaceAlphaMask::plan(const FrameTargets& targets, const FoliageV
         plan.compositeRegion = unite(plan.compositeRegion, *region);
     }
     // Targets are only needed (and only created) once some foliage is in view.
-    if (!plan.empty()) ensureTargets(plan.width, plan.height, color.format);
+    if (!plan.empty()) ensureTargets(plan.width, plan.height, colorFormat);
     return plan;
 }
 

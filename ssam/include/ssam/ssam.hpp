@@ -62,11 +62,13 @@ public:
 
     // The same, one step at a time, for frame graphs: plan, then each pass.
     FramePlan plan(const FrameTargets& targets, const FoliageView& view);
+    FramePlan plan(int width, int height, engine::render::Format colorFormat, const FoliageView& view);
     void maskPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
     void colorPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
     void compositePass(const FramePlan& plan, engine::render::TextureHandle color);
 
     Intermediates intermediates() const { return {mask_, maskAdd_, foliage_}; }
+    engine::render::Backend& backend() const { return backend_; }
 
 private:
     void createPipelines();
