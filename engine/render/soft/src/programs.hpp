@@ -3,6 +3,8 @@
 // whose `shade` runs per pixel; its `needs` flags let the rasterizer skip interpolating
 // what it never reads, which is the seed's dead-code stripping done by hand
 // (seeds/000 §3.5.2: the mask program does no lighting and no colour fetch).
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "engine/render/program.hpp"
@@ -72,6 +74,7 @@ struct FoliageAlphaProgram {
     glm::vec4 shade(const Fragment& f) const {
         float a = params.alphaFactor * f.color.a;
         if (texture) a *= sampleTexture<SampledChannels::AlphaOnly>(*texture, params.baseColor.sampler, f.uv, f.duv).a;
+        a = a > 0.0f ? (a < 1.0f ? a : 1.0f) : 0.0f;  // saturate; NaN -> 0
         return glm::vec4(a);  // Out.Color.xyzw = Out.Color.www (seeds/000 §3.5.2)
     }
 };
@@ -93,7 +96,12 @@ struct CompositeProgram {
         // extrapolate past the foliage colour, so it is clamped (NaN becomes 0).
         blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
         if (params.squareMask) blend *= blend;  // the squared alpha trick (§3.6.2)
-        return {glm::vec3(fetchTexel(*foliage, f.x, f.y)), blend};
+        // A non-finite foliage colour (NaN/Inf from HDR lighting or hostile data) would make
+        // the blended result non-finite on float targets; it composites as black instead.
+        glm::vec3 color(fetchTexel(*foliage, f.x, f.y));
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(color[c])) color[c] = 0.0f;
+        return {color, blend};
     }
 };
 

@@ -40,7 +40,10 @@ struct SurfaceParams {
     DirectionalLight light;
 };
 
-// FoliageAlpha: out = (a, a, a, a) with a = texture alpha * factor * vertex alpha.
+// FoliageAlpha: out = (a, a, a, a) with a = saturate(texture alpha * factor * vertex alpha).
+// Saturated because an alpha outside [0,1] (HDR sources) has no meaning as coverage and
+// would make float masks negative or unbounded (seeds/003 saturates particle alpha alike);
+// NaN saturates to 0.
 struct AlphaOnlyParams {
     glm::mat4 viewProj{1.0f};
     float alphaFactor = 1.0f;
@@ -49,7 +52,7 @@ struct AlphaOnlyParams {
 
 // Composite (seeds/000 §3.5.4, §3.6.2, Listing 3.2), one texel per pixel:
 //   mask = lerp(mask.r (MAX), mask.a (ADD), maskLerp), squared when squareMask
-//   out  = (foliage.rgb, mask)
+//   out  = (foliage.rgb, mask), non-finite foliage components output as 0
 // The pipeline blends it onto the opaque colour with SRC_ALPHA / INV_SRC_ALPHA, which is
 // Listing 3.2's lerp(opaque, foliage, mask) done by the blend unit, as §3.5 describes the
 // post-process ("resembles frame-buffer blending ... SRCALPHA and INVSRCALPHA"). Composing

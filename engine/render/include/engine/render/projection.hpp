@@ -1,0 +1,36 @@
+#pragma once
+// Perspective projections for the engine's clip convention (depth = z/w in [0, 1]).
+// Reverse-Z maps the near plane to 1 and the far plane to 0: float depth then has its
+// densest values where distances are largest, which keeps the 0.1 m .. 30 km range of
+// Pure's vistas (seeds/000 §3.1) resolvable; use it with CompareFunc::Greater and clear 0.
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+namespace engine::render {
+
+// Conventional: depth 0 at `near`, 1 at `far` (glm::perspectiveRH_ZO).
+inline glm::mat4 perspectiveZeroToOne(float fovY, float aspect, float near, float far) {
+    const float f = 1.0f / std::tan(fovY * 0.5f);
+    glm::mat4 m(0.0f);
+    m[0][0] = f / aspect;
+    m[1][1] = f;
+    m[2][2] = -far / (far - near);
+    m[2][3] = -1.0f;
+    m[3][2] = -far * near / (far - near);
+    return m;
+}
+
+// Reverse-Z: depth 1 at `near`, 0 at `far`; depth = near*(far - d) / (d*(far - near)) at distance d.
+inline glm::mat4 perspectiveReverseZ(float fovY, float aspect, float near, float far) {
+    const float f = 1.0f / std::tan(fovY * 0.5f);
+    glm::mat4 m(0.0f);
+    m[0][0] = f / aspect;
+    m[1][1] = f;
+    m[2][2] = near / (far - near);
+    m[2][3] = -1.0f;
+    m[3][2] = far * near / (far - near);
+    return m;
+}
+
+}  // namespace engine::render
