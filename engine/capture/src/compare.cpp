@@ -17,6 +17,8 @@ std::string describeMismatch(const Image& a, const Image& b) {
     return "images differ in size: " + sizeText(a) + " vs " + sizeText(b) + " (width x height x channels)";
 }
 
+double psnrFromRms(double rms, double peak) { return 20.0 * std::log10(peak / rms); }
+
 const char* verdictName(Verdict verdict) {
     switch (verdict) {
         case Verdict::Pass: return "PASS";
@@ -74,7 +76,7 @@ CompareResult compareImages(const Image& a, const Image& b, const CompareOptions
     const auto values = static_cast<double>(result.pixelCount * channels);
     result.meanError = sumError / values;
     result.rmsError = std::sqrt(sumSquaredError / values);
-    result.psnr = 20.0 * std::log10(peak / result.rmsError);  // +inf when identical, as idiff
+    result.psnr = psnrFromRms(result.rmsError, peak);  // +inf when identical, as idiff
 
     const auto pixels = static_cast<double>(result.pixelCount);
     if (static_cast<double>(result.pixelsOverFail) > options.failPercent / 100.0 * pixels ||

@@ -49,6 +49,10 @@ struct CompareResult {
     std::string mismatch;
 };
 
+// PSNR in dB: 20 log10(peak / rms); +infinity when rms is 0 (identical images).
+// Shared with the benchmark metrics (metrics.hpp), which use peak 1.
+double psnrFromRms(double rms, double peak);
+
 // Why two images cannot be compared value by value (size or channel count), or "" when they can.
 std::string describeMismatch(const Image& a, const Image& b);
 
