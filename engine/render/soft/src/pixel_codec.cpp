@@ -16,4 +16,34 @@ const ByteTables& byteTables() {
     return tables;
 }
 
+SrgbEncodeTables::SrgbEncodeTables() {
+    auto floatOf = [](std::uint32_t bits) {
+        float f;
+        std::memcpy(&f, &bits, sizeof f);
+        return f;
+    };
+    constexpr std::uint32_t kOne = 0x3F800000;  // 1.0f: encodes to 255
+    threshold[0] = 0.0f;
+    for (unsigned k = 1; k < 256; ++k) {  // least bit pattern in [0, 1] encoding to >= k
+        std::uint32_t lo = 0, hi = kOne;
+        while (lo < hi) {
+            const std::uint32_t mid = lo + (hi - lo) / 2;
+            if (encodeSrgb8Exact(floatOf(mid)) >= k) hi = mid;
+            else lo = mid + 1;
+        }
+        threshold[k] = floatOf(lo);
+    }
+    unsigned code = 0;
+    for (std::uint32_t bucket = 0; bucket < 0x3F80; ++bucket) {
+        const float first = floatOf(bucket << 16);
+        while (code < 255 && first >= threshold[code + 1]) ++code;
+        start[bucket] = static_cast<std::uint8_t>(code);
+    }
+}
+
+const SrgbEncodeTables& srgbEncodeTables() {
+    static const SrgbEncodeTables tables;
+    return tables;
+}
+
 }  // namespace engine::render::soft

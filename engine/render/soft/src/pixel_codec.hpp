@@ -37,10 +37,33 @@ inline std::uint8_t encodeUnorm8(float v) {
 }
 
 // sRGB encode of a linear value. The exact curve, then UNORM rounding.
-inline std::uint8_t encodeSrgb8(float linear) {
+inline std::uint8_t encodeSrgb8Exact(float linear) {
     if (!(linear > 0.0f)) return 0;
     if (linear >= 1.0f) return 255;
     return encodeUnorm8(linearToSrgbExact(linear));
+}
+
+// encodeSrgb8Exact without the pow per call. It is a non-decreasing step function of the
+// float, so it is fixed by the 255 floats where it steps: threshold[k] is the least float
+// it encodes to k or more. `start` holds the code at the least float of each bucket of
+// 2^16 consecutive float bit patterns in [0, 1); a bucket holds at most a couple of steps.
+// Equality with encodeSrgb8Exact for every float in (0, 1) was checked exhaustively.
+struct SrgbEncodeTables {
+    float threshold[256];  // [0] unused
+    std::uint8_t start[0x3F80];
+    SrgbEncodeTables();
+};
+const SrgbEncodeTables& srgbEncodeTables();
+
+inline std::uint8_t encodeSrgb8(float linear) {
+    if (!(linear > 0.0f)) return 0;
+    if (linear >= 1.0f) return 255;
+    const SrgbEncodeTables& t = srgbEncodeTables();
+    std::uint32_t bits;
+    std::memcpy(&bits, &linear, sizeof bits);
+    unsigned code = t.start[bits >> 16];
+    while (code < 255 && linear >= t.threshold[code + 1]) ++code;
+    return static_cast<std::uint8_t>(code);
 }
 
 inline float decodeHalf(std::uint16_t bits) {

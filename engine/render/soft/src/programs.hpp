@@ -36,10 +36,15 @@ inline glm::vec4 toStraight(const glm::vec4& texel, AlphaMode mode) {
     return {glm::vec3(texel) / texel.a, texel.a};
 }
 
-inline float lambert(const glm::vec3& normal, const DirectionalLight& light) {
+// `towardLight` already normalised (glm::normalize(light.towardLight), the same bits
+// whether computed per pixel or once per draw).
+inline float lambert(const glm::vec3& normal, const glm::vec3& towardLight) {
     const float len = glm::length(normal);
     if (!(len > 0.0f)) return 0.0f;
-    return glm::max(glm::dot(normal / len, glm::normalize(light.towardLight)), 0.0f);
+    return glm::max(glm::dot(normal / len, towardLight), 0.0f);
+}
+inline float lambert(const glm::vec3& normal, const DirectionalLight& light) {
+    return lambert(normal, glm::normalize(light.towardLight));
 }
 
 struct FlatProgram {
@@ -53,13 +58,14 @@ struct SurfaceProgram {
     static constexpr ProgramNeeds kNeeds{true, true, true, true};
     SurfaceParams params;
     const SoftTexture* texture = nullptr;  // null: white
+    glm::vec3 towardLight = glm::normalize(params.light.towardLight);  // hoisted out of the pixel loop
 
     glm::vec4 shade(const Fragment& f) const {
         glm::vec4 base = params.baseColorFactor * f.color;
         if (texture) base *= toStraight(sampleTexture(*texture, params.baseColor.sampler, f.uv, f.duv), texture->desc.alpha);
         // Foliage is double-sided: a back face is lit with its flipped normal.
         const glm::vec3 n = (Foliage && !f.frontFacing) ? -f.normal : f.normal;
-        const glm::vec3 lit = glm::vec3(base) * (params.light.ambient + params.light.color * lambert(n, params.light));
+        const glm::vec3 lit = glm::vec3(base) * (params.light.ambient + params.light.color * lambert(n, towardLight));
         return {lit, Foliage ? base.a : 1.0f};
     }
 };

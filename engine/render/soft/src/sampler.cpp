@@ -8,17 +8,28 @@
 namespace engine::render::soft {
 namespace {
 
-int applyAddress(AddressMode mode, int i, int size) {
+// The per-texel helpers are forced inline: a glm::vec4 returned from a call comes back in
+// two registers and is reassembled through memory, a store-forwarding stall per texel.
+[[gnu::always_inline]] inline int applyAddress(AddressMode mode, int i, int size) {
+    // Power-of-two sizes (the usual case) take a mask instead of a division: i & (n - 1)
+    // is the non-negative i mod n that the remainder-and-fix-up below computes.
+    const bool powerOfTwo = (size & (size - 1)) == 0;
     switch (mode) {
         case AddressMode::Wrap: {
+            if (powerOfTwo) return i & (size - 1);
             const int m = i % size;
             return m < 0 ? m + size : m;
         }
         case AddressMode::Clamp: return std::clamp(i, 0, size - 1);
         case AddressMode::Mirror: {
             // GL mirrored repeat: period 2*size, second half reflected.
-            int m = i % (2 * size);
-            if (m < 0) m += 2 * size;
+            int m;
+            if (powerOfTwo) {
+                m = i & (2 * size - 1);
+            } else {
+                m = i % (2 * size);
+                if (m < 0) m += 2 * size;
+            }
             return m < size ? m : 2 * size - 1 - m;
         }
     }
@@ -32,16 +43,21 @@ float safeCoord(float v) {
     return std::clamp(v, -1.0e6f, 1.0e6f);
 }
 
+[[gnu::noinline]] glm::vec4 loadOther(const std::byte* p, Format format) { return loadTexel(p, format); }
+
 template <SampledChannels Channels>
-glm::vec4 load(const SoftTexture& t, int level, int x, int y) {
+[[gnu::always_inline]] inline glm::vec4 load(const SoftTexture& t, const ByteTables& tables, int level, int x, int y) {
     const std::byte* p = t.texel(level, x, y);
+    const Format f = t.desc.format;
+    auto u8 = [p](int i) { return std::to_integer<std::uint8_t>(p[i]); };
     if constexpr (Channels == SampledChannels::AlphaOnly) {
         // The mask program's dead-code stripping (seeds/000 §3.5.2): only alpha is decoded.
-        const Format f = t.desc.format;
-        if (f == Format::RGBA8_UNORM || f == Format::RGBA8_SRGB)
-            return {0.0f, 0.0f, 0.0f, byteTables().unorm[std::to_integer<std::uint8_t>(p[3])]};
+        if (f == Format::RGBA8_UNORM || f == Format::RGBA8_SRGB) return {0.0f, 0.0f, 0.0f, tables.unorm[u8(3)]};
     }
-    return loadTexel(p, t.desc.format);
+    // The 8-bit formats inline (as loadTexel decodes them); the rest through loadTexel.
+    if (f == Format::RGBA8_UNORM) return {tables.unorm[u8(0)], tables.unorm[u8(1)], tables.unorm[u8(2)], tables.unorm[u8(3)]};
+    if (f == Format::RGBA8_SRGB) return {tables.srgb[u8(0)], tables.srgb[u8(1)], tables.srgb[u8(2)], tables.unorm[u8(3)]};
+    return loadOther(p, f);
 }
 
 template <SampledChannels Channels>
@@ -49,11 +65,11 @@ glm::vec4 nearest(const SoftTexture& t, const SamplerState& s, int level, glm::v
     const MipLevel& l = t.levels[level];
     const int x = applyAddress(s.addressU, static_cast<int>(std::floor(safeCoord(uv.x) * l.width)), l.width);
     const int y = applyAddress(s.addressV, static_cast<int>(std::floor(safeCoord(uv.y) * l.height)), l.height);
-    return load<Channels>(t, level, x, y);
+    return load<Channels>(t, byteTables(), level, x, y);
 }
 
 template <SampledChannels Channels>
-glm::vec4 bilinear(const SoftTexture& t, const SamplerState& s, int level, glm::vec2 uv) {
+[[gnu::always_inline]] inline glm::vec4 bilinear(const SoftTexture& t, const SamplerState& s, int level, glm::vec2 uv) {
     const MipLevel& l = t.levels[level];
     const float fx = safeCoord(uv.x) * l.width - 0.5f;
     const float fy = safeCoord(uv.y) * l.height - 0.5f;
@@ -62,8 +78,11 @@ glm::vec4 bilinear(const SoftTexture& t, const SamplerState& s, int level, glm::
     const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
     const int xa = applyAddress(s.addressU, x0, l.width), xb = applyAddress(s.addressU, x0 + 1, l.width);
     const int ya = applyAddress(s.addressV, y0, l.height), yb = applyAddress(s.addressV, y0 + 1, l.height);
-    const glm::vec4 top = glm::mix(load<Channels>(t, level, xa, ya), load<Channels>(t, level, xb, ya), ax);
-    const glm::vec4 bottom = glm::mix(load<Channels>(t, level, xa, yb), load<Channels>(t, level, xb, yb), ax);
+    const ByteTables& tables = byteTables();
+    const glm::vec4 top =
+        glm::mix(load<Channels>(t, tables, level, xa, ya), load<Channels>(t, tables, level, xb, ya), ax);
+    const glm::vec4 bottom =
+        glm::mix(load<Channels>(t, tables, level, xa, yb), load<Channels>(t, tables, level, xb, yb), ax);
     return glm::mix(top, bottom, ay);
 }
 

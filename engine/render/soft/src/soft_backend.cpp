@@ -41,6 +41,13 @@ struct RecordedDraw {
     DrawDesc desc;
 };
 
+// One chunk of a draw's triangles after setup, with the tiles each may cover.
+struct GeometryChunk {
+    std::vector<SetupTriangle> triangles;
+    std::vector<BinEntry> bins;  // in submission order
+    SetupCounters counters;
+};
+
 std::string quoted(const std::string& name) { return "'" + (name.empty() ? std::string("<unnamed>") : name) + "'"; }
 
 bool validSampleCount(int s) { return s == 1 || s == 2 || s == 4 || s == 8; }
@@ -132,6 +139,18 @@ public:
             throw Error("buffer " + quoted(b.desc.name) + ": update of " + std::to_string(data.size()) +
                         " bytes at offset " + std::to_string(offset) + " overruns its " +
                         std::to_string(b.bytes.size()) + " bytes");
+        if (data.empty()) return;
+        // Recorded draws read their buffers when the pass executes; one that reads this buffer
+        // must see it as it was when it was drawn (as on GL), so the draws so far run first.
+        if (pass_ && std::any_of(draws_.begin(), draws_.end(), [&](const RecordedDraw& r) {
+                return r.desc.vertices == handle || r.desc.indices == handle || r.desc.instances == handle;
+            })) {
+            struct Clear {
+                std::vector<RecordedDraw>& draws;
+                ~Clear() { draws.clear(); }
+            } clear{draws_};
+            execute();
+        }
         std::memcpy(b.bytes.data() + offset, data.data(), data.size());
     }
 
@@ -207,12 +226,19 @@ public:
 
     void endPass() override {
         if (!pass_) throw Error("endPass without beginPass");
+        // The pass is over even when executing it throws (say a resource it uses was
+        // destroyed after being recorded): the error must not leave the backend stuck in it.
+        struct Close {
+            SoftBackendImpl& self;
+            ~Close() {
+                self.pass_.reset();
+                self.draws_.clear();
+            }
+        } close{*this};
         execute();
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - passStart_).count();
         timings_.push_back({pass_->name, ms});
         ++stats_.passes;
-        pass_.reset();
-        draws_.clear();
     }
 
     void resolve(const ResolveDesc& r) override {
@@ -308,8 +334,32 @@ private:
         std::byte encoded[16] = {};
         storeTexel(encoded, t.desc.format, value, 0xF);
         std::vector<std::byte>& texels = t.levels[0].texels;
-        const std::size_t stride = t.bytesPerSample;
-        for (std::size_t i = 0; i < texels.size(); i += stride) std::memcpy(texels.data() + i, encoded, stride);
+        const std::size_t stride = t.bytesPerSample, size = texels.size();
+        // One texel, then the filled prefix doubled up to 4 KiB, then 4 KiB copies: a fill
+        // at memset speed for every texel size (1, 2, 4, 8 or 16 bytes all divide 4 KiB).
+        std::byte* out = texels.data();
+        std::size_t filled = std::min(stride, size);
+        std::memcpy(out, encoded, filled);
+        constexpr std::size_t kBlock = 4096;
+        while (filled < size && filled < kBlock) {
+            const std::size_t n = std::min({filled, size - filled, kBlock - filled});
+            std::memcpy(out + filled, out, n);
+            filled += n;
+        }
+        const std::size_t blocks = (size - filled) / kBlock;
+        auto copyBlocks = [&](std::size_t begin, std::size_t end) {
+            for (std::size_t b = begin; b < end; ++b) std::memcpy(out + filled + b * kBlock, out, kBlock);
+        };
+        if (blocks >= 256) {  // 1 MiB and more: split over the threads
+            arena_.execute([&] {
+                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 64),
+                                  [&](const tbb::blocked_range<std::size_t>& r) { copyBlocks(r.begin(), r.end()); });
+            });
+        } else {
+            copyBlocks(0, blocks);
+        }
+        filled += blocks * kBlock;
+        if (filled < size) std::memcpy(out + filled, out, size - filled);
     }
 
     const SoftTexture& sampledTexture(TextureHandle h, const std::string& what) const {
@@ -443,13 +493,18 @@ private:
         throw Error("unknown program kind");
     }
 
-    // Vertex stage + clipping + setup for one draw, in parallel over fixed chunks whose
-    // outputs are concatenated in order, so the result is independent of the thread count.
+    // Vertex stage + clipping + setup + binning for one draw, in parallel over fixed chunks
+    // of triangles; each chunk keeps its triangles and their (tile, triangle) bin entries
+    // in submission order, and chunks are merged into the tile bins in order, so the result
+    // is independent of the thread count. Chunk storage is reused from pass to pass.
     void processGeometry(const DrawDesc& d, std::uint32_t drawIndex, const Viewport& vp, const RasterState& raster,
-                         std::vector<SetupTriangle>& out) {
+                         const TileGrid& grid) {
         const SoftPipeline& p = pipelines_.get(d.pipeline);
         if (isFullscreen(p.desc.program)) {
-            if (!vp.scissor.empty()) out.push_back(fullscreenTriangle(vp, drawIndex));
+            if (vp.scissor.empty()) return;
+            GeometryChunk& chunk = nextChunks(1)[0];
+            chunk.triangles.push_back(fullscreenTriangle(vp, drawIndex));
+            binTriangle(chunk.triangles.back(), 0, grid, chunk.bins);
             return;
         }
         const SoftBuffer& vb = buffers_.get(d.vertices);
@@ -473,10 +528,10 @@ private:
         if (total == 0 || vp.scissor.empty()) return;
         constexpr std::uint64_t kChunk = 2048;
         const std::uint64_t chunks = (total + kChunk - 1) / kChunk;
-        std::vector<std::vector<SetupTriangle>> chunkOut(chunks);
-        std::vector<SetupCounters> chunkCounters(chunks);
+        GeometryChunk* const chunkOut = nextChunks(chunks);
         arena_.execute([&] {
             tbb::parallel_for(std::uint64_t(0), chunks, [&](std::uint64_t chunk) {
+                GeometryChunk& out = chunkOut[chunk];
                 const std::uint64_t begin = chunk * kChunk, end = std::min(total, begin + kChunk);
                 std::uint64_t cachedInstance = ~0ull;
                 glm::mat4 mvp(1.0f);
@@ -498,53 +553,68 @@ private:
                         const glm::vec4 c = v.color * inst.tint;
                         cv[k].attributes = {v.uv.x, v.uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
                     }
-                    setupTriangle(cv[0], cv[1], cv[2], vp, raster, drawIndex, chunkOut[chunk], chunkCounters[chunk]);
+                    setupTriangle(cv[0], cv[1], cv[2], vp, raster, drawIndex, out.triangles, out.counters);
                 }
+                for (std::size_t i = 0; i < out.triangles.size(); ++i)
+                    binTriangle(out.triangles[i], std::uint32_t(i), grid, out.bins);
             });
         });
-        for (std::uint64_t c = 0; c < chunks; ++c) {
-            out.insert(out.end(), chunkOut[c].begin(), chunkOut[c].end());
-            stats_.trianglesDropped += chunkCounters[c].dropped;
+    }
+
+    // `count` cleared chunks after those already used in this pass.
+    GeometryChunk* nextChunks(std::uint64_t count) {
+        if (chunks_.size() < chunksUsed_ + count) chunks_.resize(chunksUsed_ + count);
+        GeometryChunk* first = chunks_.data() + chunksUsed_;
+        for (std::uint64_t i = 0; i < count; ++i) {
+            first[i].triangles.clear();
+            first[i].bins.clear();
+            first[i].counters = {};
         }
+        chunksUsed_ += count;
+        return first;
     }
 
     void execute() {
         const int tileSize = options_.tileSize;
         const int tilesX = (passWidth_ + tileSize - 1) / tileSize, tilesY = (passHeight_ + tileSize - 1) / tileSize;
+        const TileGrid grid{tileSize, tilesX, tilesY, &samplePattern(passSamples_)};
         std::vector<DrawState> drawStates;
-        std::vector<SetupTriangle> triangles;
         drawStates.reserve(draws_.size());
+        chunksUsed_ = 0;
         for (std::uint32_t i = 0; i < draws_.size(); ++i) {
             const DrawDesc& d = draws_[i].desc;
             drawStates.push_back(drawStateFor(d));
-            processGeometry(d, i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, triangles);
+            processGeometry(d, i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, grid);
         }
         stats_.draws += draws_.size();
-        stats_.trianglesRasterized += triangles.size();
 
-        // Binning in submission order keeps each tile's list ordered.
-        std::vector<std::vector<std::uint32_t>> bins(std::size_t(tilesX) * tilesY);
-        for (std::uint32_t i = 0; i < triangles.size(); ++i) {
-            const SetupTriangle& t = triangles[i];
-            for (int ty = t.minY / tileSize; ty <= t.maxY / tileSize; ++ty)
-                for (int tx = t.minX / tileSize; tx <= t.maxX / tileSize; ++tx) bins[std::size_t(ty) * tilesX + tx].push_back(i);
+        // Merging the chunks' bins in submission order keeps each tile's list ordered.
+        bins_.resize(std::size_t(tilesX) * tilesY);
+        for (auto& bin : bins_) bin.clear();
+        for (std::size_t c = 0; c < chunksUsed_; ++c) {
+            const GeometryChunk& chunk = chunks_[c];
+            stats_.trianglesRasterized += chunk.triangles.size();
+            stats_.trianglesDropped += chunk.counters.dropped;
+            for (const BinEntry& e : chunk.bins) bins_[e.tile].push_back(&chunk.triangles[e.triangle]);
         }
 
         std::atomic<std::uint64_t> shaded{0}, touched{0};
         arena_.execute([&] {
-            tbb::parallel_for(std::size_t(0), bins.size(), [&](std::size_t tileIndex) {
-                if (bins[tileIndex].empty()) return;
+            tbb::parallel_for(std::size_t(0), bins_.size(), [&](std::size_t tileIndex) {
+                if (bins_[tileIndex].empty()) return;
                 const int tx = int(tileIndex % tilesX), ty = int(tileIndex / tilesX);
                 const Rect tile{tx * tileSize, ty * tileSize, std::min(tileSize, passWidth_ - tx * tileSize),
                                 std::min(tileSize, passHeight_ - ty * tileSize)};
                 TileCounters counters;
-                rasterizeTile(tile, bins[tileIndex], triangles, drawStates, counters);
+                rasterizeTile(tile, bins_[tileIndex], drawStates, counters);
                 shaded += counters.pixelsShaded;
                 touched += counters.pixelsTouched;
             });
         });
         stats_.pixelsShaded += shaded;
         stats_.pixelsTouched += touched;
+        // Storage this pass did not need is given back; what it used is kept for the next.
+        chunks_.resize(chunksUsed_);
         if (options_.debugChecks) checkNonFinite();
     }
 
@@ -575,6 +645,9 @@ private:
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
     Clock::time_point passStart_;
     std::vector<RecordedDraw> draws_;
+    std::vector<GeometryChunk> chunks_;  // setup output of the pass being executed
+    std::size_t chunksUsed_ = 0;
+    std::vector<std::vector<const SetupTriangle*>> bins_;  // per tile, in submission order
     std::vector<PassTiming> timings_;
     SoftStats stats_;
 };

@@ -1,7 +1,13 @@
 #include "tile_rasterizer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
+
+#if defined(__SSE2__) && !defined(SSAM_SOFT_SCALAR)
+#include <emmintrin.h>
+#define SSAM_SOFT_SSE2 1
+#endif
 
 #include "blend.hpp"
 #include "pixel_codec.hpp"
@@ -22,17 +28,182 @@ float loadDepth(const std::byte* p) {
 
 float evaluate(const Plane& plane, float x, float y) { return plane.value + plane.dx * x + plane.dy * y; }
 
+// Set bits of a block row's 8-bit lane mask.
+constexpr std::array<std::uint8_t, 256> kBitCount = [] {
+    std::array<std::uint8_t, 256> n{};
+    for (int i = 1; i < 256; ++i) n[i] = std::uint8_t(n[i >> 1] + (i & 1));
+    return n;
+}();
+
+// Depth test of one block row of a single-sampled target: 8 lanes, pixel px0 + i in lane
+// i, `coverage` the covered lanes (lanes past the row end are never covered). Per lane
+// exactly the scalar path's arithmetic (IEEE mul/add in the same order, so SIMD lanes give
+// the same bits):
+//   fx = (float(px0 + i) + 0.5f) - originX,  z = clamp01(value + dx * fx + dy * fy)
+// Writes z[8] and returns the covered lanes where `z <Func> stored` holds; with Write
+// (depth-only draws) also stores z into those lanes of `stored` (8 floats, any alignment),
+// rewriting the other lanes with the values they had.
+template <CompareFunc Func, bool Write>
+std::uint32_t depthRow(const Plane& plane, float centerX0, float originX, float fy, std::uint32_t coverage,
+                       std::byte* stored, float* z) {
+#if SSAM_SOFT_SSE2
+    const __m128 value = _mm_set1_ps(plane.value), dx = _mm_set1_ps(plane.dx);
+    const __m128 dyFy = _mm_set1_ps(plane.dy * fy);
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), origin = _mm_set1_ps(originX);
+    // Lane i of bits[h] holds bit 4h + i of the coverage, so lane masks come from a compare.
+    const __m128i laneBits = _mm_setr_epi32(1, 2, 4, 8);
+    float* const depth = reinterpret_cast<float*>(stored);  // intrinsic loads/stores may alias
+    std::uint32_t mask = 0;
+    for (int h = 0; h < 2; ++h) {
+        // float(px0) + 0.5f + i is exact, as float(px0 + i) + 0.5f is.
+        const __m128 center = _mm_add_ps(_mm_set1_ps(centerX0), _mm_setr_ps(float(4 * h), float(4 * h + 1),
+                                                                             float(4 * h + 2), float(4 * h + 3)));
+        const __m128 fx = _mm_sub_ps(center, origin);
+        const __m128 v = _mm_add_ps(_mm_add_ps(value, _mm_mul_ps(dx, fx)), dyFy);
+        // clamp01: maxps(v, 0) gives 0 for v <= 0 and NaN, then minps(., 1).
+        const __m128 zv = _mm_min_ps(_mm_max_ps(v, zero), one);
+        _mm_storeu_ps(z + 4 * h, zv);
+        const __m128 d = _mm_loadu_ps(depth + 4 * h);
+        __m128 pass = zero;
+        switch (Func) {
+            case CompareFunc::Never: pass = zero; break;
+            case CompareFunc::Less: pass = _mm_cmplt_ps(zv, d); break;
+            case CompareFunc::Equal: pass = _mm_cmpeq_ps(zv, d); break;
+            case CompareFunc::LessEqual: pass = _mm_cmple_ps(zv, d); break;
+            case CompareFunc::Greater: pass = _mm_cmpgt_ps(zv, d); break;
+            case CompareFunc::NotEqual: pass = _mm_cmpneq_ps(zv, d); break;  // true for NaN, as !=
+            case CompareFunc::GreaterEqual: pass = _mm_cmpge_ps(zv, d); break;
+            case CompareFunc::Always: pass = _mm_cmpeq_ps(zero, zero); break;
+        }
+        const __m128i covered =
+            _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(int(coverage >> (4 * h))), laneBits), laneBits);
+        const __m128 live = _mm_and_ps(pass, _mm_castsi128_ps(covered));
+        mask |= std::uint32_t(_mm_movemask_ps(live)) << (4 * h);
+        if constexpr (Write) _mm_storeu_ps(depth + 4 * h, _mm_or_ps(_mm_and_ps(live, zv), _mm_andnot_ps(live, d)));
+    }
+    return mask;
+#else
+    std::uint32_t mask = 0;
+    for (int i = 0; i < 8; ++i) {
+        const float fx = (centerX0 + float(i)) - originX;
+        z[i] = clamp01(evaluate(plane, fx, fy));
+        float d;
+        std::memcpy(&d, stored + i * sizeof(float), sizeof d);
+        if (!((coverage >> i) & 1u) || !compare(Func, z[i], d)) continue;
+        mask |= 1u << i;
+        if constexpr (Write) std::memcpy(stored + i * sizeof(float), &z[i], sizeof(float));
+    }
+    return mask;
+#endif
+}
+
+using DepthRowFn = std::uint32_t (*)(const Plane&, float, float, float, std::uint32_t, std::byte*, float*);
+template <bool Write>
+DepthRowFn depthRowFunction(CompareFunc func) {
+    switch (func) {
+        case CompareFunc::Never: return depthRow<CompareFunc::Never, Write>;
+        case CompareFunc::Less: return depthRow<CompareFunc::Less, Write>;
+        case CompareFunc::Equal: return depthRow<CompareFunc::Equal, Write>;
+        case CompareFunc::LessEqual: return depthRow<CompareFunc::LessEqual, Write>;
+        case CompareFunc::Greater: return depthRow<CompareFunc::Greater, Write>;
+        case CompareFunc::NotEqual: return depthRow<CompareFunc::NotEqual, Write>;
+        case CompareFunc::GreaterEqual: return depthRow<CompareFunc::GreaterEqual, Write>;
+        case CompareFunc::Always: return depthRow<CompareFunc::Always, Write>;
+    }
+    return depthRow<CompareFunc::Always, Write>;
+}
+
+// Where a single-sampled target's pixels are, and how a draw writes them.
+struct TargetView {
+    std::byte* base = nullptr;
+    std::size_t rowBytes = 0;
+    int pixelBytes = 0;
+    Format format = Format::RGBA8_UNORM;
+    bool blend = false;
+    bool normalized = false;
+    bool rgba8Plain = false;  // RGBA8_UNORM, all four channels, no blending: a 4-byte store
+    bool byteLut = false;     // RGBA8 blend whose every stored byte is a function of that byte alone
+    std::byte* at(int x, int y) const { return base + std::size_t(y) * rowBytes + std::size_t(x) * pixelBytes; }
+};
+
+// Whether a blend onto an RGBA8 (UNORM or sRGB) target makes each result channel a function of
+// the same destination channel alone, given the source and constant: true unless an RGB
+// factor reads destination alpha (DST_ALPHA, INV_DST_ALPHA, SRC_ALPHA_SAT). The alpha
+// result only ever reads destination alpha.
+bool blendIsPerChannel(const BlendState& b) {
+    if (b.opRgb == BlendOp::Min || b.opRgb == BlendOp::Max) return true;  // factors ignored
+    auto readsDstAlpha = [](BlendFactor f) {
+        return f == BlendFactor::DstAlpha || f == BlendFactor::InvDstAlpha || f == BlendFactor::SrcAlphaSat;
+    };
+    return !readsDstAlpha(b.srcRgb) && !readsDstAlpha(b.dstRgb);
+}
+
+// The minimum covered-box area (pixels in one tile) for which a constant-colour blend is
+// done through a 256-entry table per channel rather than per pixel.
+constexpr int kBlendLutMinPixels = 512;
+
+// Per-channel blend tables, one per colour target slot, kept per thread from tile to tile.
+// A table is identified by everything it is computed from, so a stale one is never used.
+struct BlendLut {
+    bool valid = false;
+    BlendState blend;
+    glm::vec4 constant{0.0f};
+    Format format = Format::RGBA8_UNORM;
+    glm::vec4 color{0.0f};
+    std::array<std::array<std::byte, 256>, 4> bytes;  // [channel][stored byte]
+
+    bool matches(const BlendState& b, const glm::vec4& k, Format f, const glm::vec4& c) const {
+        return valid && f == format && std::memcmp(&c, &color, sizeof c) == 0 &&
+               std::memcmp(&k, &constant, sizeof k) == 0 && b.srcRgb == blend.srcRgb && b.dstRgb == blend.dstRgb &&
+               b.opRgb == blend.opRgb && b.srcAlpha == blend.srcAlpha && b.dstAlpha == blend.dstAlpha &&
+               b.opAlpha == blend.opAlpha && b.enabled == blend.enabled;
+    }
+};
+thread_local std::array<BlendLut, kMaxColorTargets> tBlendLuts;
+
+inline void storeRgba8Unorm(std::byte* p, const glm::vec4& v) {
+    p[0] = std::byte{encodeUnorm8(v.x)};
+    p[1] = std::byte{encodeUnorm8(v.y)};
+    p[2] = std::byte{encodeUnorm8(v.z)};
+    p[3] = std::byte{encodeUnorm8(v.w)};
+}
+
 template <typename Program>
 class TriangleRasterizer {
 public:
     TriangleRasterizer(const DrawState& draw, const Program& program, TileCounters& counters)
         : draw_(draw), program_(program), counters_(counters), pattern_(*draw.pattern),
-          allSamples_((1u << draw.samples) - 1u) {}
+          allSamples_((1u << draw.samples) - 1u) {
+        if (draw.samples != 1) return;
+        single_ = true;
+        width_ = draw.depthTarget ? draw.depthTarget->desc.width
+                                  : (draw.colorTargetCount ? draw.colorTargets[0]->desc.width : 0);
+        if (draw.depthTest) {
+            depth_ = view(*draw.depthTarget, false);
+            // Depth-only draws store z as part of the row test.
+            depthRowWrites_ = !draw.shade && draw.depthWrite;
+            depthRow_ = depthRowWrites_ ? depthRowFunction<true>(draw.depthFunc) : depthRowFunction<false>(draw.depthFunc);
+        }
+        for (int i = 0; i < draw.colorTargetCount; ++i) {
+            TargetView& v = color_[i];
+            v = view(*draw.colorTargets[i], draw.blendNeeded[i]);
+            v.rgba8Plain = v.format == Format::RGBA8_UNORM && !v.blend && draw.blend[i].writeMask == WriteAll;
+            v.byteLut = (v.format == Format::RGBA8_UNORM || v.format == Format::RGBA8_SRGB) && v.blend &&
+                        blendIsPerChannel(draw.blend[i]);
+        }
+    }
 
     void rasterize(const SetupTriangle& t, const Rect& tile) {
         const int x0 = std::max(tile.x, t.minX), x1 = std::min(tile.x + tile.width - 1, t.maxX);
         const int y0 = std::max(tile.y, t.minY), y1 = std::min(tile.y + tile.height - 1, t.maxY);
         if (x0 > x1 || y0 > y1) return;
+        if (single_) {
+            // Worked out at the first pixel that passes coverage and depth (shadeRow).
+            constantPending_ = true;
+            boxPixels_ = (x1 - x0 + 1) * (y1 - y0 + 1);
+            rasterizeSingle(t, x0, y0, x1, y1);
+            return;
+        }
         // Blocks are aligned to the 8x8 grid, so a tile's blocks never straddle tiles.
         for (int by = y0 & ~(kBlockSize - 1); by <= y1; by += kBlockSize) {
             for (int bx = x0 & ~(kBlockSize - 1); bx <= x1; bx += kBlockSize) {
@@ -44,6 +215,264 @@ public:
     }
 
 private:
+    static TargetView view(SoftTexture& texture, bool blend) {
+        TargetView v;
+        v.base = texture.levels[0].texels.data();
+        v.pixelBytes = texture.bytesPerSample;
+        v.rowBytes = std::size_t(texture.levels[0].width) * texture.bytesPerSample;
+        v.format = texture.desc.format;
+        v.blend = blend;
+        v.normalized = formatInfo(v.format).isNormalized();
+        return v;
+    }
+
+    // A plane whose slopes are zero evaluates to exactly its value at every pixel centre
+    // (value + (+-0) + (+-0) == value for finite pixel offsets), unless the value is -0.0,
+    // which would come out +0.0.
+    static bool constantPlane(const Plane& p) {
+        return p.dx == 0.0f && p.dy == 0.0f && !(p.value == 0.0f && std::signbit(p.value));
+    }
+
+    // When every plane the program reads is constant, the fragment and so the shaded colour
+    // are the same at every pixel (programs are pure functions of the fragment; Composite
+    // reads textures by pixel position and is excluded): the program runs once per
+    // triangle, and the alpha test and the stored bytes are worked out once.
+    void prepareConstant(const SetupTriangle& t, int boxPixels) {
+        constant_ = false;
+        if constexpr (std::is_same_v<Program, CompositeProgram>) {
+            return;
+        } else {
+            constexpr ProgramNeeds needs = Program::kNeeds;
+            if constexpr (needs.uv || needs.normal || needs.color) {
+                if (!constantPlane(t.inverseW)) return;
+            }
+            if constexpr (needs.uv) {
+                if (!constantPlane(t.attributeOverW[kAttrU]) || !constantPlane(t.attributeOverW[kAttrV])) return;
+            }
+            if constexpr (needs.normal) {
+                for (int k = 0; k < 3; ++k)
+                    if (!constantPlane(t.attributeOverW[kAttrNormal + k])) return;
+            }
+            if constexpr (needs.color) {
+                for (int k = 0; k < 4; ++k)
+                    if (!constantPlane(t.attributeOverW[kAttrColor + k])) return;
+            }
+        }
+        constant_ = true;
+        const glm::vec4 color = program_.shade(interpolate(t, 0, 0, 0.0f, 0.0f));
+        constantColor_ = color;
+        bool writeRgb = true, writeAlpha = true;
+        constantDepthWrite_ = draw_.depthWrite;
+        constantDiscard_ = false;
+        if (!draw_.alphaTest.passes(color.a)) {
+            switch (draw_.alphaTest.failMode) {
+                case AlphaFailMode::Keep: constantDiscard_ = true; break;
+                case AlphaFailMode::FbOnly: constantDepthWrite_ = false; break;
+                case AlphaFailMode::ZbOnly: writeRgb = writeAlpha = false; break;
+                case AlphaFailMode::RgbOnly: writeAlpha = constantDepthWrite_ = false; break;
+            }
+        }
+        const std::uint8_t allowed = std::uint8_t((writeRgb ? WriteRGB : 0) | (writeAlpha ? WriteA : 0));
+        for (int i = 0; i < draw_.colorTargetCount; ++i) {
+            const TargetView& target = color_[i];
+            constantMask_[i] = draw_.blend[i].writeMask & allowed;
+            if (target.rgba8Plain) {
+                std::byte bytes[4];
+                storeRgba8Unorm(bytes, color);
+                std::memcpy(&constantPacked_[i], bytes, 4);
+            }
+            // Blends through a table only for triangles large enough to repay building it.
+            useLut_[i] = target.byteLut && boxPixels >= kBlendLutMinPixels;
+            if (useLut_[i] && !tBlendLuts[i].matches(draw_.blend[i], draw_.blendConstant, target.format, color))
+                buildBlendLut(i, color);
+        }
+    }
+
+    // bytes[c][k]: the byte stored into channel c of target i over a stored byte k, blending
+    // the constant colour: exactly what loadTexel + blend + storeTexel give per pixel, as
+    // (blendIsPerChannel) channel c of the result reads only channel c of the destination.
+    void buildBlendLut(int i, const glm::vec4& color) {
+        const TargetView& target = color_[i];
+        BlendLut& lut = tBlendLuts[i];
+        lut.valid = true;
+        lut.blend = draw_.blend[i];
+        lut.constant = draw_.blendConstant;
+        lut.format = target.format;
+        lut.color = color;
+        for (int k = 0; k < 256; ++k) {
+            std::byte dst[4] = {std::byte(k), std::byte(k), std::byte(k), std::byte(k)};
+            const glm::vec4 out = blend(draw_.blend[i], color, loadTexel(dst, target.format), draw_.blendConstant,
+                                        target.normalized);
+            storeTexel(dst, target.format, out, 0xF);
+            for (int c = 0; c < 4; ++c) lut.bytes[c][k] = dst[c];
+        }
+    }
+
+    // Writes of the constant-colour fragment at the `live` pixels of a block row (bit i:
+    // pixel px0 + i), which passed coverage and depth; target by target, as the per-pixel
+    // path does (each pixel's bytes depend only on that pixel).
+    void writeConstantRow(int px0, int py, std::uint32_t live, const float* z, std::byte* depthAt) {
+        if (constantDepthWrite_)
+            for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+                const int k = __builtin_ctz(bits);
+                std::memcpy(depthAt + k * sizeof(float), &z[k], sizeof(float));
+            }
+        for (int i = 0; i < draw_.colorTargetCount; ++i) {
+            const std::uint8_t mask = constantMask_[i];
+            if (!mask) continue;
+            const TargetView& target = color_[i];
+            std::byte* row = target.at(px0, py);
+            if (target.rgba8Plain && mask == WriteAll) {
+                const std::uint32_t packed = constantPacked_[i];
+                if (live == 0xFFu) {
+                    const std::uint32_t eight[8] = {packed, packed, packed, packed, packed, packed, packed, packed};
+                    std::memcpy(row, eight, sizeof eight);
+                } else {
+                    for (std::uint32_t bits = live; bits; bits &= bits - 1)
+                        std::memcpy(row + 4 * __builtin_ctz(bits), &packed, 4);
+                }
+            } else if (useLut_[i]) {
+                const auto& lut = tBlendLuts[i].bytes;
+                auto at = [](const std::byte* p, int c) { return std::to_integer<std::uint8_t>(p[c]); };
+                if (mask == WriteAll) {
+                    for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+                        std::byte* p = row + 4 * __builtin_ctz(bits);
+                        const std::byte out[4] = {lut[0][at(p, 0)], lut[1][at(p, 1)], lut[2][at(p, 2)], lut[3][at(p, 3)]};
+                        std::memcpy(p, out, 4);
+                    }
+                } else {
+                    for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+                        std::byte* p = row + 4 * __builtin_ctz(bits);
+                        for (int c = 0; c < 4; ++c)
+                            if (mask & (1u << c)) p[c] = lut[c][at(p, c)];
+                    }
+                }
+            } else {
+                for (std::uint32_t bits = live; bits; bits &= bits - 1)
+                    writeColor(i, row + std::size_t(target.pixelBytes) * __builtin_ctz(bits), constantColor_, mask);
+            }
+        }
+    }
+
+    void writeColor(int i, std::byte* p, const glm::vec4& color, std::uint8_t mask) {
+        const TargetView& target = color_[i];
+        if (!target.blend) {
+            if (target.rgba8Plain && mask == WriteAll) storeRgba8Unorm(p, color);
+            else storeTexel(p, target.format, color, mask);
+        } else {
+            storeTexel(p, target.format,
+                       blend(draw_.blend[i], color, loadTexel(p, target.format), draw_.blendConstant, target.normalized),
+                       mask);
+        }
+    }
+
+    // Single-sampled targets: the same block test as rasterizeBlock, then whole block rows
+    // at a time; a partial block's coverage comes from the edge functions stepped exactly
+    // in integers from pixel to pixel (E(x + 1) = E(x) + a * kPixelStep).
+    void rasterizeSingle(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+        for (int by = y0 & ~(kBlockSize - 1); by <= y1; by += kBlockSize) {
+            const int py0 = std::max(by, y0), py1 = std::min(by + kBlockSize - 1, y1);
+            for (int bx = x0 & ~(kBlockSize - 1); bx <= x1; bx += kBlockSize) {
+                const int px0 = std::max(bx, x0), px1 = std::min(bx + kBlockSize - 1, x1);
+                const std::int64_t xs0 = std::int64_t(px0) * kPixelStep, xs1 = std::int64_t(px1 + 1) * kPixelStep;
+                const std::int64_t ys0 = std::int64_t(py0) * kPixelStep, ys1 = std::int64_t(py1 + 1) * kPixelStep;
+                bool full = true, reject = false;
+                for (int i = 0; i < 3; ++i) {
+                    const std::int64_t maxE =
+                        t.c[i] + t.a[i] * (t.a[i] > 0 ? xs1 : xs0) + t.b[i] * (t.b[i] > 0 ? ys1 : ys0);
+                    const std::int64_t minE =
+                        t.c[i] + t.a[i] * (t.a[i] > 0 ? xs0 : xs1) + t.b[i] * (t.b[i] > 0 ? ys0 : ys1);
+                    reject = reject || maxE < 0;
+                    full = full && minE >= 0;
+                }
+                if (reject) continue;
+                const int n = px1 - px0 + 1, shift = px0 - bx;  // mask bit i: pixel bx + i
+                if (full) {
+                    const std::uint32_t rowMask = ((1u << n) - 1u) << shift;
+                    for (int py = py0; py <= py1; ++py) shadeRow(t, bx, py, rowMask);
+                    continue;
+                }
+                std::int64_t e[3], step[3];
+                const std::int64_t x = xs0 + kHalfPixel;
+                for (int i = 0; i < 3; ++i) {
+                    e[i] = t.a[i] * x + t.b[i] * (ys0 + kHalfPixel) + t.c[i];
+                    step[i] = t.a[i] * kPixelStep;
+                }
+                for (int py = py0; py <= py1; ++py) {
+                    std::uint32_t mask = 0;
+                    std::int64_t e0 = e[0], e1 = e[1], e2 = e[2];
+                    for (int i = 0; i < n; ++i) {
+                        mask |= std::uint32_t((e0 | e1 | e2) >= 0) << i;
+                        e0 += step[0], e1 += step[1], e2 += step[2];
+                    }
+                    if (mask) shadeRow(t, bx, py, mask << shift);
+                    for (int i = 0; i < 3; ++i) e[i] += t.b[i] * kPixelStep;
+                }
+            }
+        }
+    }
+
+    // Row py of the block at bx: `mask` the covered pixels (bit i: pixel bx + i).
+    void shadeRow(const SetupTriangle& t, int bx, int py, std::uint32_t mask) {
+        const float fy = float(py) + 0.5f - t.originY;
+        const float centerX0 = float(bx) + 0.5f;
+        alignas(16) float z[kBlockSize];
+        std::uint32_t live = mask;
+        std::byte* depthAt = nullptr;
+        if (draw_.depthTest) {
+            depthAt = depth_.at(bx, py);
+            if (bx + kBlockSize <= width_) {  // all 8 lanes are in the row (and in this tile)
+                live = depthRow_(t.depth, centerX0, t.originX, fy, mask, depthAt, z);
+            } else {  // the block at the right edge of the target: 8 lanes of scratch
+                const int lanes = width_ - bx;
+                alignas(16) std::byte scratch[kBlockSize * sizeof(float)] = {};
+                std::memcpy(scratch, depthAt, std::size_t(lanes) * sizeof(float));
+                live = depthRow_(t.depth, centerX0, t.originX, fy, mask, scratch, z);
+                if (depthRowWrites_ && live) std::memcpy(depthAt, scratch, std::size_t(lanes) * sizeof(float));
+            }
+            if (!live) return;
+        }
+        counters_.pixelsTouched += kBitCount[live];
+        if (!draw_.shade) return;  // depth-only: no colour, no alpha test; depthRow_ stored z
+        if (constantPending_) {
+            constantPending_ = false;
+            prepareConstant(t, boxPixels_);
+        }
+
+        if (constant_) {
+            counters_.pixelsShaded += kBitCount[live];
+            if (!constantDiscard_) writeConstantRow(bx, py, live, z, depthAt);
+            return;
+        }
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            const int px = bx + i;
+            shadeSingle(t, px, py, float(px) + 0.5f - t.originX, fy, z[i], depthAt + i * sizeof(float));
+        }
+    }
+
+    // One covered (and depth-passing) pixel of a single-sampled target.
+    void shadeSingle(const SetupTriangle& t, int px, int py, float fx, float fy, float z, std::byte* depthAt) {
+        const glm::vec4 color = program_.shade(interpolate(t, px, py, fx, fy));
+        ++counters_.pixelsShaded;
+
+        bool writeRgb = true, writeAlpha = true, writeDepth = draw_.depthWrite;
+        if (!draw_.alphaTest.passes(color.a)) {
+            switch (draw_.alphaTest.failMode) {
+                case AlphaFailMode::Keep: return;
+                case AlphaFailMode::FbOnly: writeDepth = false; break;
+                case AlphaFailMode::ZbOnly: writeRgb = writeAlpha = false; break;
+                case AlphaFailMode::RgbOnly: writeAlpha = writeDepth = false; break;
+            }
+        }
+        if (writeDepth) std::memcpy(depthAt, &z, sizeof z);
+        const std::uint8_t allowed = std::uint8_t((writeRgb ? WriteRGB : 0) | (writeAlpha ? WriteA : 0));
+        for (int i = 0; i < draw_.colorTargetCount; ++i) {
+            const std::uint8_t mask = draw_.blend[i].writeMask & allowed;
+            if (mask) writeColor(i, color_[i].at(px, py), color, mask);
+        }
+    }
+
     // Trivial reject when one edge is negative over the whole block, trivial accept when
     // all three are non-negative over it; the block's extent covers every sample position.
     void rasterizeBlock(const SetupTriangle& t, int px0, int py0, int px1, int py1) {
@@ -182,6 +611,22 @@ private:
     TileCounters& counters_;
     const SamplePattern& pattern_;
     const std::uint32_t allSamples_;
+    bool single_ = false;  // one sample per pixel: the row-at-a-time path
+    int width_ = 0;        // of the pass's targets
+    TargetView depth_;
+    DepthRowFn depthRow_ = nullptr;
+    bool depthRowWrites_ = false;
+    std::array<TargetView, kMaxColorTargets> color_{};
+    // The current triangle's constant fragment (prepareConstant), if it has one.
+    bool constant_ = false;
+    bool constantPending_ = false;  // prepareConstant not yet run for the current triangle
+    int boxPixels_ = 0;             // the current triangle's box within the tile
+    glm::vec4 constantColor_{0.0f};
+    bool constantDiscard_ = false;
+    bool constantDepthWrite_ = false;
+    std::array<std::uint8_t, kMaxColorTargets> constantMask_{};
+    std::array<std::uint32_t, kMaxColorTargets> constantPacked_{};
+    std::array<bool, kMaxColorTargets> useLut_{};
 };
 
 }  // namespace
@@ -199,22 +644,59 @@ const SamplePattern& samplePattern(int samples) {
     }
 }
 
-void rasterizeTile(const Rect& tile, std::span<const std::uint32_t> indices, const std::vector<SetupTriangle>& triangles,
+void rasterizeTile(const Rect& tile, std::span<const SetupTriangle* const> triangles,
                    const std::vector<DrawState>& draws, TileCounters& counters) {
     std::size_t i = 0;
-    while (i < indices.size()) {
+    while (i < triangles.size()) {
         // A run of triangles from one draw shares the program instance and its state.
-        const std::uint32_t drawIndex = triangles[indices[i]].drawIndex;
+        const std::uint32_t drawIndex = triangles[i]->drawIndex;
         std::size_t end = i + 1;
-        while (end < indices.size() && triangles[indices[end]].drawIndex == drawIndex) ++end;
+        while (end < triangles.size() && triangles[end]->drawIndex == drawIndex) ++end;
         const DrawState& draw = draws[drawIndex];
         std::visit(
             [&](const auto& program) {
                 TriangleRasterizer rasterizer(draw, program, counters);
-                for (std::size_t k = i; k < end; ++k) rasterizer.rasterize(triangles[indices[k]], tile);
+                for (std::size_t k = i; k < end; ++k) rasterizer.rasterize(*triangles[k], tile);
             },
             draw.program);
         i = end;
+    }
+}
+
+void binTriangle(const SetupTriangle& t, std::uint32_t triangle, const TileGrid& grid, std::vector<BinEntry>& out) {
+    if ((t.maxX - t.minX) < 2 && (t.maxY - t.minY) < 2 && grid.pattern) {
+        // Tiny triangles often cover no sample: found here, while the triangle is in cache,
+        // with the rasterizer's own per-sample edge test (sampleCoverage).
+        const SamplePattern& pattern = *grid.pattern;
+        bool any = false;
+        for (int py = t.minY; py <= t.maxY && !any; ++py)
+            for (int px = t.minX; px <= t.maxX && !any; ++px)
+                for (int s = 0; s < pattern.count && !any; ++s) {
+                    const std::int64_t x = std::int64_t(px) * kPixelStep + kHalfPixel + pattern.dx[s] * kSampleOffsetScale;
+                    const std::int64_t y = std::int64_t(py) * kPixelStep + kHalfPixel + pattern.dy[s] * kSampleOffsetScale;
+                    bool inside = true;
+                    for (int i = 0; i < 3; ++i) inside = inside && (t.a[i] * x + t.b[i] * y + t.c[i] >= 0);
+                    any = inside;
+                }
+        if (!any) return;
+    }
+    const int ts = grid.tileSize;
+    const int tx0 = t.minX / ts, tx1 = t.maxX / ts, ty0 = t.minY / ts, ty1 = t.maxY / ts;
+    if (tx0 == tx1 && ty0 == ty1) {  // the common small triangle: its box is in one tile
+        out.push_back({std::uint32_t(ty0 * grid.tilesX + tx0), triangle});
+        return;
+    }
+    for (int ty = ty0; ty <= ty1; ++ty) {
+        const int py0 = std::max(ty * ts, t.minY), py1 = std::min(ty * ts + ts - 1, t.maxY);
+        const std::int64_t ys0 = std::int64_t(py0) * kPixelStep, ys1 = std::int64_t(py1 + 1) * kPixelStep;
+        for (int tx = tx0; tx <= tx1; ++tx) {
+            const int px0 = std::max(tx * ts, t.minX), px1 = std::min(tx * ts + ts - 1, t.maxX);
+            const std::int64_t xs0 = std::int64_t(px0) * kPixelStep, xs1 = std::int64_t(px1 + 1) * kPixelStep;
+            bool reject = false;
+            for (int i = 0; i < 3; ++i)
+                reject = reject || t.c[i] + t.a[i] * (t.a[i] > 0 ? xs1 : xs0) + t.b[i] * (t.b[i] > 0 ? ys1 : ys0) < 0;
+            if (!reject) out.push_back({std::uint32_t(ty * grid.tilesX + tx), triangle});
+        }
     }
 }
 

@@ -18,8 +18,26 @@ struct TileCounters {
     std::uint64_t pixelsTouched = 0;
 };
 
-void rasterizeTile(const Rect& tile, std::span<const std::uint32_t> triangleIndices,
-                   const std::vector<SetupTriangle>& triangles, const std::vector<DrawState>& draws,
-                   TileCounters& counters);
+void rasterizeTile(const Rect& tile, std::span<const SetupTriangle* const> triangles,
+                   const std::vector<DrawState>& draws, TileCounters& counters);
+
+// Tiles of the pass's grid, and the pass's sample positions.
+struct TileGrid {
+    int tileSize = 64;
+    int tilesX = 0, tilesY = 0;
+    const SamplePattern* pattern = nullptr;
+};
+
+// One binned triangle: tile index (y * tilesX + x) and the triangle's index in its chunk.
+struct BinEntry {
+    std::uint32_t tile;
+    std::uint32_t triangle;
+};
+
+// Appends an entry for each tile that the triangle's bounding box meets and no edge
+// rejects as a whole (the block test of the rasterizer over the tile: a skipped tile is
+// one the rasterizer would find no covered sample in). A triangle whose box is at most
+// 2x2 pixels is tested sample by sample and not binned at all when it covers none.
+void binTriangle(const SetupTriangle& t, std::uint32_t triangle, const TileGrid& grid, std::vector<BinEntry>& out);
 
 }  // namespace engine::render::soft

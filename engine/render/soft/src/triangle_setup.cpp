@@ -11,15 +11,30 @@ namespace {
 constexpr double kGuardBandPixels = double(1 << 20);
 
 // A clip plane as dot(plane, position) >= 0.
-using ClipPlane = glm::vec4;
+using ClipPlane = glm::dvec4;
+
+// Clipping runs in double: a vertex clipped out of an edge between coordinates of +-1e6
+// NDC is interpolated at that magnitude, where float rounding (~0.06 NDC per coordinate)
+// moves the visible edge by pixels.
+struct ClipPoint {
+    glm::dvec4 position;
+    std::array<double, kAttributeCount> attributes;
+};
 
 struct Polygon {
-    std::array<ClipVertex, 12> vertices;
+    std::array<ClipPoint, 12> vertices;
     int count = 0;
 };
 
-ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t) {
-    ClipVertex r;
+ClipPoint toClipPoint(const ClipVertex& v) {
+    ClipPoint p;
+    p.position = glm::dvec4(v.position);
+    for (int i = 0; i < kAttributeCount; ++i) p.attributes[i] = v.attributes[i];
+    return p;
+}
+
+ClipPoint lerp(const ClipPoint& a, const ClipPoint& b, double t) {
+    ClipPoint r;
     r.position = a.position + (b.position - a.position) * t;
     for (int i = 0; i < kAttributeCount; ++i) r.attributes[i] = a.attributes[i] + (b.attributes[i] - a.attributes[i]) * t;
     return r;
@@ -30,12 +45,12 @@ ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t) {
 Polygon clip(const Polygon& in, const ClipPlane& plane) {
     Polygon out;
     for (int i = 0; i < in.count; ++i) {
-        const ClipVertex& cur = in.vertices[i];
-        const ClipVertex& next = in.vertices[(i + 1) % in.count];
-        const float dc = glm::dot(plane, cur.position);
-        const float dn = glm::dot(plane, next.position);
-        if (dc >= 0.0f) out.vertices[out.count++] = cur;
-        if ((dc >= 0.0f) != (dn >= 0.0f)) out.vertices[out.count++] = lerp(cur, next, dc / (dc - dn));
+        const ClipPoint& cur = in.vertices[i];
+        const ClipPoint& next = in.vertices[(i + 1) % in.count];
+        const double dc = glm::dot(plane, cur.position);
+        const double dn = glm::dot(plane, next.position);
+        if (dc >= 0.0) out.vertices[out.count++] = cur;
+        if ((dc >= 0.0) != (dn >= 0.0)) out.vertices[out.count++] = lerp(cur, next, dc / (dc - dn));
     }
     return out;
 }
@@ -46,20 +61,56 @@ struct ScreenVertex {
     std::array<double, kAttributeCount> attributeOverW;
 };
 
+// Vertex 1 and 2 relative to vertex 0 in pixels, shared by all of a triangle's planes.
+struct PlaneBasis {
+    double x1, y1, x2, y2, inverseDenominator;
+    PlaneBasis(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, double inverseDenominator)
+        : x1(double(v1.x - v0.x) / kSubpixelScale), y1(double(v1.y - v0.y) / kSubpixelScale),
+          x2(double(v2.x - v0.x) / kSubpixelScale), y2(double(v2.y - v0.y) / kSubpixelScale),
+          inverseDenominator(inverseDenominator) {}
+};
+
 // Plane through the three values, anchored at vertex 0 so evaluation subtracts small numbers.
-Plane makePlane(const ScreenVertex* v, const double* f, double inverseDenominator) {
-    const double x1 = double(v[1].x - v[0].x) / kSubpixelScale, y1 = double(v[1].y - v[0].y) / kSubpixelScale;
-    const double x2 = double(v[2].x - v[0].x) / kSubpixelScale, y2 = double(v[2].y - v[0].y) / kSubpixelScale;
-    const double f1 = f[1] - f[0], f2 = f[2] - f[0];
-    const double dx = (f1 * y2 - f2 * y1) * inverseDenominator;
-    const double dy = (f2 * x1 - f1 * x2) * inverseDenominator;
-    return {static_cast<float>(f[0]), static_cast<float>(dx), static_cast<float>(dy)};
+Plane makePlane(const PlaneBasis& b, double f0, double fv1, double fv2) {
+    const double f1 = fv1 - f0, f2 = fv2 - f0;
+    const double dx = (f1 * b.y2 - f2 * b.y1) * b.inverseDenominator;
+    const double dy = (f2 * b.x1 - f1 * b.x2) * b.inverseDenominator;
+    return {static_cast<float>(f0), static_cast<float>(dx), static_cast<float>(dy)};
 }
 
-void emit(const ScreenVertex* sv, const Viewport& vp, const RasterState& raster, std::uint32_t drawIndex,
-          std::vector<SetupTriangle>& out, SetupCounters& counters) {
-    ScreenVertex v[3] = {sv[0], sv[1], sv[2]};
-    std::int64_t area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+// std::llround without the libm call: round half away from zero. Exact for |v| < 2^52
+// (the truncation and v - trunc(v) are then exact), std::llround beyond that.
+inline std::int64_t roundHalfAway(double v) {
+    if (!(std::fabs(v) < 4503599627370496.0)) return std::llround(v);
+    std::int64_t i = static_cast<std::int64_t>(v);  // truncates toward zero
+    const double fraction = v - static_cast<double>(i);
+    if (fraction >= 0.5) ++i;
+    else if (fraction <= -0.5) --i;
+    return i;
+}
+
+// Whether emit() would keep the triangle: the area, culling and box tests it starts with,
+// from the snapped positions alone (so dropped triangles skip the rest of the setup).
+bool survivesEmit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Viewport& vp,
+                  const RasterState& raster) {
+    const std::int64_t area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    if (area == 0) return false;
+    const bool frontFacing = (raster.frontFace == Winding::CounterClockwise) == (area < 0);
+    if ((raster.cull == CullMode::Back && !frontFacing) || (raster.cull == CullMode::Front && frontFacing)) return false;
+    const std::int64_t minX = std::max<std::int64_t>(vp.scissor.x, std::min({a.x, b.x, c.x}) >> kSubpixelBits);
+    const std::int64_t minY = std::max<std::int64_t>(vp.scissor.y, std::min({a.y, b.y, c.y}) >> kSubpixelBits);
+    const std::int64_t maxX =
+        std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, std::max({a.x, b.x, c.x}) >> kSubpixelBits);
+    const std::int64_t maxY =
+        std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, std::max({a.y, b.y, c.y}) >> kSubpixelBits);
+    return minX <= maxX && minY <= maxY;
+}
+
+void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
+          const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+          SetupCounters& counters) {
+    const ScreenVertex* v[3] = {&s0, &s1, &s2};  // swapped as pointers, not copied
+    std::int64_t area = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
     if (area == 0) {
         ++counters.dropped;
         return;
@@ -77,24 +128,25 @@ void emit(const ScreenVertex* sv, const Viewport& vp, const RasterState& raster,
         area = -area;
     }
 
-    SetupTriangle t;
-    t.drawIndex = drawIndex;
-    t.frontFacing = frontFacing;
-    const std::int64_t minXf = std::min({v[0].x, v[1].x, v[2].x}), maxXf = std::max({v[0].x, v[1].x, v[2].x});
-    const std::int64_t minYf = std::min({v[0].y, v[1].y, v[2].y}), maxYf = std::max({v[0].y, v[1].y, v[2].y});
+    const std::int64_t minXf = std::min({v[0]->x, v[1]->x, v[2]->x}), maxXf = std::max({v[0]->x, v[1]->x, v[2]->x});
+    const std::int64_t minYf = std::min({v[0]->y, v[1]->y, v[2]->y}), maxYf = std::max({v[0]->y, v[1]->y, v[2]->y});
     // Conservative pixel box: every pixel any sample of which might be covered.
-    t.minX = std::max<std::int64_t>(vp.scissor.x, minXf >> kSubpixelBits);
-    t.minY = std::max<std::int64_t>(vp.scissor.y, minYf >> kSubpixelBits);
-    t.maxX = std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, maxXf >> kSubpixelBits);
-    t.maxY = std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, maxYf >> kSubpixelBits);
-    if (t.minX > t.maxX || t.minY > t.maxY) {
+    const int minX = int(std::max<std::int64_t>(vp.scissor.x, minXf >> kSubpixelBits));
+    const int minY = int(std::max<std::int64_t>(vp.scissor.y, minYf >> kSubpixelBits));
+    const int maxX = int(std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, maxXf >> kSubpixelBits));
+    const int maxY = int(std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, maxYf >> kSubpixelBits));
+    if (minX > maxX || minY > maxY) {
         ++counters.dropped;
         return;
     }
 
+    SetupTriangle& t = out.emplace_back();  // built in place
+    t.drawIndex = drawIndex;
+    t.frontFacing = frontFacing;
+    t.minX = minX, t.minY = minY, t.maxX = maxX, t.maxY = maxY;
     for (int i = 0; i < 3; ++i) {
-        const ScreenVertex& p = v[i];
-        const ScreenVertex& q = v[(i + 1) % 3];
+        const ScreenVertex& p = *v[i];
+        const ScreenVertex& q = *v[(i + 1) % 3];
         const std::int64_t dx = q.x - p.x, dy = q.y - p.y;
         t.a[i] = -dy;
         t.b[i] = dx;
@@ -105,19 +157,14 @@ void emit(const ScreenVertex* sv, const Viewport& vp, const RasterState& raster,
         if (!topLeft) t.c[i] -= 1;
     }
 
-    const double originX = double(v[0].x) / kSubpixelScale, originY = double(v[0].y) / kSubpixelScale;
+    const double originX = double(v[0]->x) / kSubpixelScale, originY = double(v[0]->y) / kSubpixelScale;
     t.originX = static_cast<float>(originX);
     t.originY = static_cast<float>(originY);
-    const double inverseDenominator = double(kSubpixelScale) * kSubpixelScale / double(area);
-    const double z[3] = {v[0].z, v[1].z, v[2].z};
-    const double iw[3] = {v[0].inverseW, v[1].inverseW, v[2].inverseW};
-    t.depth = makePlane(v, z, inverseDenominator);
-    t.inverseW = makePlane(v, iw, inverseDenominator);
-    for (int k = 0; k < kAttributeCount; ++k) {
-        const double f[3] = {v[0].attributeOverW[k], v[1].attributeOverW[k], v[2].attributeOverW[k]};
-        t.attributeOverW[k] = makePlane(v, f, inverseDenominator);
-    }
-    out.push_back(t);
+    const PlaneBasis basis(*v[0], *v[1], *v[2], double(kSubpixelScale) * kSubpixelScale / double(area));
+    t.depth = makePlane(basis, v[0]->z, v[1]->z, v[2]->z);
+    t.inverseW = makePlane(basis, v[0]->inverseW, v[1]->inverseW, v[2]->inverseW);
+    for (int k = 0; k < kAttributeCount; ++k)
+        t.attributeOverW[k] = makePlane(basis, v[0]->attributeOverW[k], v[1]->attributeOverW[k], v[2]->attributeOverW[k]);
 }
 
 bool finite(const ClipVertex& v) {
@@ -135,24 +182,24 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
         return;
     }
     // Guard band in NDC: |x_ndc| <= gx keeps |x_pixels| <= 2^20 for this viewport.
-    const float gx = static_cast<float>(kGuardBandPixels / vp.width - 1.0);
-    const float gy = static_cast<float>(kGuardBandPixels / vp.height - 1.0);
+    const double gx = kGuardBandPixels / vp.width - 1.0;
+    const double gy = kGuardBandPixels / vp.height - 1.0;
     const ClipPlane planes[] = {
-        {0.0f, 0.0f, 1.0f, 0.0f},   // z >= 0 (depth 0: the far plane under reverse-Z)
-        {0.0f, 0.0f, -1.0f, 1.0f},  // z <= w
-        {0.0f, 0.0f, 0.0f, 1.0f},   // w >= 0 (with the two above, only w = 0 edge cases)
-        {-1.0f, 0.0f, 0.0f, gx}, {1.0f, 0.0f, 0.0f, gx}, {0.0f, -1.0f, 0.0f, gy}, {0.0f, 1.0f, 0.0f, gy},
+        {0.0, 0.0, 1.0, 0.0},   // z >= 0 (depth 0: the far plane under reverse-Z)
+        {0.0, 0.0, -1.0, 1.0},  // z <= w
+        {0.0, 0.0, 0.0, 1.0},   // w >= 0 (with the two above, only w = 0 edge cases)
+        {-1.0, 0.0, 0.0, gx}, {1.0, 0.0, 0.0, gx}, {0.0, -1.0, 0.0, gy}, {0.0, 1.0, 0.0, gy},
     };
 
     Polygon poly;
-    poly.vertices[0] = v0;
-    poly.vertices[1] = v1;
-    poly.vertices[2] = v2;
+    poly.vertices[0] = toClipPoint(v0);
+    poly.vertices[1] = toClipPoint(v1);
+    poly.vertices[2] = toClipPoint(v2);
     poly.count = 3;
     for (const ClipPlane& plane : planes) {
-        const float d0 = glm::dot(plane, poly.vertices[0].position), d1 = glm::dot(plane, poly.vertices[1].position),
-                    d2 = glm::dot(plane, poly.vertices[2].position);
-        if (poly.count == 3 && d0 >= 0.0f && d1 >= 0.0f && d2 >= 0.0f) continue;  // trivially inside
+        const double d0 = glm::dot(plane, poly.vertices[0].position), d1 = glm::dot(plane, poly.vertices[1].position),
+                     d2 = glm::dot(plane, poly.vertices[2].position);
+        if (poly.count == 3 && d0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0) continue;  // trivially inside
         poly = clip(poly, plane);
         if (poly.count < 3) {
             ++counters.dropped;
@@ -162,25 +209,35 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
 
     std::array<ScreenVertex, 12> screen;
     for (int i = 0; i < poly.count; ++i) {
-        const ClipVertex& c = poly.vertices[i];
-        if (!(c.position.w > 0.0f)) {  // on the w = 0 plane exactly: nothing visible
+        const ClipPoint& c = poly.vertices[i];
+        if (!(c.position.w > 0.0)) {  // on the w = 0 plane exactly: nothing visible
             ++counters.dropped;
             return;
         }
-        const double inverseW = 1.0 / double(c.position.w);
-        const double x = (double(c.position.x) * inverseW * 0.5 + 0.5) * vp.width;
-        const double y = (0.5 - double(c.position.y) * inverseW * 0.5) * vp.height;  // NDC +y is the top row
+        const double inverseW = 1.0 / c.position.w;
+        const double x = (c.position.x * inverseW * 0.5 + 0.5) * vp.width;
+        const double y = (0.5 - c.position.y * inverseW * 0.5) * vp.height;  // NDC +y is the top row
         ScreenVertex& s = screen[i];
-        s.x = std::llround(x * kSubpixelScale);
-        s.y = std::llround(y * kSubpixelScale);
-        s.z = std::clamp(double(c.position.z) * inverseW, 0.0, 1.0);
+        s.x = roundHalfAway(x * kSubpixelScale);
+        s.y = roundHalfAway(y * kSubpixelScale);
         s.inverseW = inverseW;
-        for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = double(c.attributes[k]) * inverseW;
     }
-    for (int i = 1; i + 1 < poly.count; ++i) {
-        const ScreenVertex fan[3] = {screen[0], screen[i], screen[i + 1]};
-        emit(fan, vp, raster, drawIndex, out, counters);
+    // Most dropped triangles (culled, off-screen, degenerate) are known from the snapped
+    // positions: they skip depth and attribute set-up.
+    bool anySurvives = false;
+    for (int i = 1; i + 1 < poly.count && !anySurvives; ++i)
+        anySurvives = survivesEmit(screen[0], screen[i], screen[i + 1], vp, raster);
+    if (!anySurvives) {
+        counters.dropped += std::uint64_t(poly.count - 2);
+        return;
     }
+    for (int i = 0; i < poly.count; ++i) {
+        const ClipPoint& c = poly.vertices[i];
+        ScreenVertex& s = screen[i];
+        s.z = std::clamp(c.position.z * s.inverseW, 0.0, 1.0);
+        for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = c.attributes[k] * s.inverseW;
+    }
+    for (int i = 1; i + 1 < poly.count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
 }
 
 SetupTriangle fullscreenTriangle(const Viewport& vp, std::uint32_t drawIndex) {

@@ -1,0 +1,193 @@
+#pragma once
+// Backend-agnostic conformance fixture (dEQP style). The suites in tests/conformance/suites
+// are written against engine::render::Backend only; each backend's conformance executable
+// instantiates them with a BackendCase that says how to make that backend (see
+// SSAM_INSTANTIATE_CONFORMANCE_SUITES at the end of this file).
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include "engine/core/error.hpp"
+#include "engine/render/backend.hpp"
+#include "engine/render/vertex.hpp"
+
+namespace ssam::test {
+
+namespace render = engine::render;
+
+struct BackendCase {
+    std::string name;  // a valid gtest name: letters, digits and '_'
+    std::function<std::unique_ptr<render::Backend>()> make;
+    // Triangles the backend dropped since creation (degenerate, NaN, clipped away), where it
+    // counts them; null when it cannot say.
+    std::function<std::optional<std::uint64_t>(const render::Backend&)> trianglesDropped;
+};
+
+inline void PrintTo(const BackendCase& c, std::ostream* os) { *os << c.name; }
+
+struct BackendCaseName {
+    std::string operator()(const ::testing::TestParamInfo<BackendCase>& info) const { return info.param.name; }
+};
+
+// Pixel rectangle [x0,x1) x [y0,y1) (y down, row 0 at the top) of a w x h target as two
+// triangles, counter-clockwise as displayed, at clip depth z (w = 1).
+inline std::vector<render::Vertex> pixelRect(int width, int height, float x0, float y0, float x1, float y1,
+                                             float z = 0.5f, glm::vec4 color = glm::vec4(1.0f)) {
+    auto at = [&](float x, float y) {
+        render::Vertex v;
+        v.position = {2.0f * x / float(width) - 1.0f, 1.0f - 2.0f * y / float(height), z};
+        v.uv = {(x - x0) / (x1 - x0), (y - y0) / (y1 - y0)};  // (0,0) at the top-left corner
+        v.color = color;
+        return v;
+    };
+    const render::Vertex tl = at(x0, y0), tr = at(x1, y0), bl = at(x0, y1), br = at(x1, y1);
+    return {bl, br, tr, bl, tr, tl};
+}
+
+// A vertex at pixel position (x, y) of a w x h target (NDC from pixels), clip depth z.
+inline render::Vertex pixelVertex(int width, int height, double x, double y, float z = 0.5f) {
+    render::Vertex v;
+    v.position = {float(2.0 * x / width - 1.0), float(1.0 - 2.0 * y / height), z};
+    return v;
+}
+
+template <typename T>
+std::span<const std::byte> bytesOf(const std::vector<T>& v) {
+    return std::as_bytes(std::span<const T>(v));
+}
+
+class BackendTest : public ::testing::TestWithParam<BackendCase> {
+protected:
+    void SetUp() override { backend_ = GetParam().make(); }
+    void TearDown() override { backend_.reset(); }
+
+    render::Backend& gfx() { return *backend_; }
+
+    std::optional<std::uint64_t> trianglesDropped() const {
+        if (!GetParam().trianglesDropped) return std::nullopt;
+        return GetParam().trianglesDropped(*backend_);
+    }
+
+    render::TextureHandle renderTarget(int width, int height, render::Format format, int samples = 1,
+                                       const std::string& name = "target") {
+        render::TextureDesc desc;
+        desc.name = name;
+        desc.width = width;
+        desc.height = height;
+        desc.format = format;
+        desc.samples = samples;
+        desc.usage = render::UsageRenderTarget | (samples == 1 ? render::UsageSampled : 0);
+        return gfx().createTexture(desc);
+    }
+
+    render::TextureHandle depthTarget(int width, int height, int samples = 1, const std::string& name = "depth") {
+        return renderTarget(width, height, render::Format::D32F, samples, name);
+    }
+
+    render::BufferHandle vertexBuffer(const std::vector<render::Vertex>& vertices, const std::string& name = "vertices") {
+        render::BufferDesc desc{name, render::BufferKind::Vertex, vertices.size() * sizeof(render::Vertex)};
+        return gfx().createBuffer(desc, bytesOf(vertices));
+    }
+
+    render::BufferHandle indexBuffer(const std::vector<std::uint32_t>& indices, const std::string& name = "indices") {
+        render::BufferDesc desc{name, render::BufferKind::Index, indices.size() * sizeof(std::uint32_t)};
+        return gfx().createBuffer(desc, bytesOf(indices));
+    }
+
+    render::PipelineHandle flatPipeline(render::BlendState blend = {}, render::DepthState depth = {},
+                                        render::AlphaTest alphaTest = {}, glm::vec4 constant = glm::vec4(0.0f)) {
+        render::PipelineDesc desc;
+        desc.name = "flat";
+        desc.program = render::ProgramKind::Flat;
+        desc.blend.fill(blend);
+        desc.blendConstant = constant;
+        desc.depth = depth;
+        desc.alphaTest = alphaTest;
+        return gfx().createPipeline(desc);
+    }
+
+    // Draws `count` vertices from `first` of a non-indexed vertex buffer with the Flat program.
+    void drawFlat(render::PipelineHandle pipeline, render::BufferHandle vertices, std::uint32_t count,
+                  glm::vec4 color = glm::vec4(1.0f), std::uint32_t first = 0, glm::mat4 viewProj = glm::mat4(1.0f)) {
+        render::DrawDesc d;
+        d.pipeline = pipeline;
+        d.params = render::FlatParams{viewProj, color};
+        d.vertices = vertices;
+        d.first = first;
+        d.count = count;
+        gfx().draw(d);
+    }
+
+    // One pass into a single colour target (and optionally a depth target).
+    template <typename Draws>
+    void pass(render::TextureHandle color, glm::vec4 clear, Draws&& draws,
+              render::TextureHandle depth = {}, std::optional<float> depthClear = 1.0f,
+              bool loadColor = false) {
+        render::PassDesc p;
+        p.name = "test";
+        p.color[0] = {color, loadColor ? render::LoadOp::Load : render::LoadOp::Clear, clear};
+        if (depth) p.depth = {depth, depthClear ? render::LoadOp::Clear : render::LoadOp::Load, depthClear.value_or(1.0f)};
+        gfx().beginPass(p);
+        draws();
+        gfx().endPass();
+    }
+
+    render::TextureHandle resolved(render::TextureHandle source, render::CompareFunc depthFunc = render::CompareFunc::Less) {
+        const render::TextureDesc& desc = gfx().describe(source);
+        const render::TextureHandle destination = renderTarget(desc.width, desc.height, desc.format, 1, desc.name + "_resolved");
+        gfx().resolve({source, destination, depthFunc});
+        return destination;
+    }
+
+    std::unique_ptr<render::Backend> backend_;
+};
+
+// Expects `fn` to throw engine::Error whose message contains `substring`.
+template <typename Fn>
+void expectError(Fn&& fn, const std::string& substring) {
+    try {
+        fn();
+        ADD_FAILURE() << "expected engine::Error containing \"" << substring << "\", nothing was thrown";
+    } catch (const engine::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(substring), std::string::npos)
+            << "message \"" << e.what() << "\" lacks \"" << substring << "\"";
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "expected engine::Error, got another exception: " << e.what();
+    }
+}
+
+// The suites, one fixture class each so their names say what they test.
+class BlendConformance : public BackendTest {};
+class AlphaTestConformance : public BackendTest {};
+class AlphaToCoverageConformance : public BackendTest {};
+class DepthConformance : public BackendTest {};
+class FillRuleConformance : public BackendTest {};
+class ClippingConformance : public BackendTest {};
+class MsaaResolveConformance : public BackendTest {};
+class TextureConformance : public BackendTest {};
+class RasterConformance : public BackendTest {};
+
+}  // namespace ssam::test
+
+// Instantiates every suite for the backend cases `generator` yields (a gtest generator such
+// as ::testing::Values(case...)). Use once per conformance executable.
+#define SSAM_INSTANTIATE_CONFORMANCE_SUITES(prefix, generator)                                                  \
+    INSTANTIATE_TEST_SUITE_P(prefix, BlendConformance, generator, ::ssam::test::BackendCaseName());           \
+    INSTANTIATE_TEST_SUITE_P(prefix, AlphaTestConformance, generator, ::ssam::test::BackendCaseName());       \
+    INSTANTIATE_TEST_SUITE_P(prefix, AlphaToCoverageConformance, generator, ::ssam::test::BackendCaseName()); \
+    INSTANTIATE_TEST_SUITE_P(prefix, DepthConformance, generator, ::ssam::test::BackendCaseName());           \
+    INSTANTIATE_TEST_SUITE_P(prefix, FillRuleConformance, generator, ::ssam::test::BackendCaseName());        \
+    INSTANTIATE_TEST_SUITE_P(prefix, ClippingConformance, generator, ::ssam::test::BackendCaseName());        \
+    INSTANTIATE_TEST_SUITE_P(prefix, MsaaResolveConformance, generator, ::ssam::test::BackendCaseName());     \
+    INSTANTIATE_TEST_SUITE_P(prefix, TextureConformance, generator, ::ssam::test::BackendCaseName());       \
+    INSTANTIATE_TEST_SUITE_P(prefix, RasterConformance, generator, ::ssam::test::BackendCaseName())

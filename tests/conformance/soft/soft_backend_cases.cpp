@@ -1,0 +1,23 @@
+// Instantiates the backend-agnostic conformance suites (tests/conformance/suites) for the
+// soft backend: once with the default options and once single-threaded with small tiles,
+// so tile-boundary and threading paths both run the whole suite.
+#include "../backend_fixture.hpp"
+
+#include "engine/render/soft/soft_backend.hpp"
+
+namespace ssam::test {
+namespace {
+
+BackendCase softCase(std::string name, engine::render::soft::SoftOptions options) {
+    return {std::move(name),
+            [options] { return std::unique_ptr<render::Backend>(engine::render::soft::createSoftBackend(options)); },
+            [](const render::Backend& backend) -> std::optional<std::uint64_t> {
+                return dynamic_cast<const engine::render::soft::SoftBackend&>(backend).stats().trianglesDropped;
+            }};
+}
+
+SSAM_INSTANTIATE_CONFORMANCE_SUITES(Soft, ::testing::Values(softCase("default", {}),
+                                                            softCase("oneThreadTile8", {.threads = 1, .tileSize = 8})));
+
+}  // namespace
+}  // namespace ssam::test

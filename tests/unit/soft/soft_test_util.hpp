@@ -1,0 +1,98 @@
+#pragma once
+// Small helpers shared by the soft backend's unit tests.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+#include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/vertex.hpp"
+
+namespace ssam::test::soft {
+
+namespace render = engine::render;
+
+template <typename T>
+std::span<const std::byte> bytesOf(const std::vector<T>& v) {
+    return std::as_bytes(std::span<const T>(v));
+}
+
+inline render::TextureHandle makeTarget(render::Backend& gfx, int width, int height,
+                                        render::Format format = render::Format::RGBA8_UNORM, int samples = 1,
+                                        const std::string& name = "target") {
+    render::TextureDesc desc;
+    desc.name = name;
+    desc.width = width;
+    desc.height = height;
+    desc.format = format;
+    desc.samples = samples;
+    desc.usage = render::UsageRenderTarget | (samples == 1 ? render::UsageSampled : 0);
+    return gfx.createTexture(desc);
+}
+
+inline render::BufferHandle makeVertices(render::Backend& gfx, const std::vector<render::Vertex>& v,
+                                         const std::string& name = "vertices") {
+    return gfx.createBuffer({name, render::BufferKind::Vertex, v.size() * sizeof(render::Vertex)}, bytesOf(v));
+}
+
+inline render::BufferHandle makeIndices(render::Backend& gfx, const std::vector<std::uint32_t>& v,
+                                        const std::string& name = "indices") {
+    return gfx.createBuffer({name, render::BufferKind::Index, v.size() * sizeof(std::uint32_t)}, bytesOf(v));
+}
+
+// The full target as two triangles (NDC), at depth z, colour white.
+inline std::vector<render::Vertex> fullQuad(float z = 0.5f) {
+    auto at = [z](float x, float y) {
+        render::Vertex v;
+        v.position = {x, y, z};
+        v.uv = {(x + 1.0f) * 0.5f, (1.0f - y) * 0.5f};
+        return v;
+    };
+    return {at(-1, -1), at(1, -1), at(1, 1), at(-1, -1), at(1, 1), at(-1, 1)};
+}
+
+inline render::DrawDesc flatDraw(render::PipelineHandle pipeline, render::BufferHandle vertices, std::uint32_t count,
+                                 glm::vec4 color = glm::vec4(1.0f)) {
+    render::DrawDesc d;
+    d.pipeline = pipeline;
+    d.params = render::FlatParams{glm::mat4(1.0f), color};
+    d.vertices = vertices;
+    d.count = count;
+    return d;
+}
+
+inline render::PassDesc onePass(render::TextureHandle color, render::TextureHandle depth = {},
+                                const std::string& name = "pass") {
+    render::PassDesc p;
+    p.name = name;
+    p.color[0] = {color, render::LoadOp::Clear, glm::vec4(0.0f)};
+    if (depth) p.depth = {depth, render::LoadOp::Clear, 1.0f};
+    return p;
+}
+
+inline render::PipelineDesc pipelineDesc(const std::string& name,
+                                         render::ProgramKind program = render::ProgramKind::Flat) {
+    render::PipelineDesc d;
+    d.name = name;
+    d.program = program;
+    return d;
+}
+
+// Expects `fn` to throw engine::Error whose message contains `substring`.
+template <typename Fn>
+void expectError(Fn&& fn, const std::string& substring) {
+    try {
+        fn();
+        ADD_FAILURE() << "expected engine::Error containing \"" << substring << "\", nothing was thrown";
+    } catch (const engine::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(substring), std::string::npos)
+            << "message \"" << e.what() << "\" lacks \"" << substring << "\"";
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "expected engine::Error, got another exception: " << e.what();
+    }
+}
+
+}  // namespace ssam::test::soft
