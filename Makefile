@@ -12,12 +12,12 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # Debian 12 packages: compilers and tools, then the libraries found by find_package,
 # then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests.
 PACKAGES := build-essential cmake pkg-config ccache \
-            libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev \
+            libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libepoxy-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth
 
-.PHONY: all deps configure build test demo bench readme-images clean
+.PHONY: all deps configure build test demo bench readme-images content clean
 
 all: build
 
@@ -38,9 +38,21 @@ build: configure
 test: build
 	ctest --preset $(PRESET) -j $(JOBS)
 
+# The demo: a few seconds of the racing scene at a fixed time step, headless on the soft
+# backend, written to out/racer.png and out/racer.exr (every SSAM layer).
+DEMO_FLAGS ?= --frames 90 --fixed-dt 0.0333333 --size 1280x720
 demo: build
-	@if [ -x $(BUILD_DIR)/bin/racer ]; then $(BUILD_DIR)/bin/racer --headless; \
-	else echo "demo: the racer demo is not built yet (see the README's status); build/bin holds what exists:"; ls $(BUILD_DIR)/bin; fi
+	$(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --capture out/racer.png --capture-layers
+
+# The README's pictures, rendered by the project itself (small PNGs in content/readme/).
+readme-images: build
+	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 30 --camera chase \
+	  --capture out/readme/racer.png --capture-layers --layer-pictures content/readme
+	cp out/readme/racer.png content/readme/racer.png
+
+# Regenerates the committed assets (deterministic: a test checks the bytes match).
+content: build
+	$(BUILD_DIR)/bin/content-generator --out content
 
 bench: build
 	$(BUILD_DIR)/bin/bench_ecs

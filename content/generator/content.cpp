@@ -1,0 +1,214 @@
+#include "content.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include "engine/core/error.hpp"
+#include "geometry.hpp"
+#include "gltf_writer.hpp"
+#include "textures.hpp"
+
+namespace content {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kRepeat = 10497;
+constexpr int kClampToEdge = 33071;
+
+void writeBytes(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
+    fs::create_directories(path.parent_path());
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw engine::Error("cannot write '" + path.string() + "'");
+}
+
+// The glTF material of alpha-tested foliage: MASK at 0.5, both sides drawn, and the
+// extras flag that routes it to SSAM (seeds/000).
+ordered_json foliageMaterial(const std::string& name, int texture) {
+    return {{"name", name},
+            {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}},
+            {"alphaMode", "MASK"},
+            {"alphaCutoff", 0.5},
+            {"doubleSided", true},
+            {"extras", {{"foliage", true}}}};
+}
+
+ordered_json opaqueMaterial(const std::string& name, int texture, double metallic, double roughness) {
+    return {{"name", name},
+            {"pbrMetallicRoughness",
+             {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", metallic}, {"roughnessFactor", roughness}}},
+            {"alphaMode", "OPAQUE"}};
+}
+
+// The images every model embeds, encoded once.
+struct Pngs {
+    std::vector<std::uint8_t> leaves, fronds, bark, ground, track, car;
+};
+
+// A tree or bush: an optional trunk (opaque bark) and the foliage cards (MASK), both
+// KHR_draco_mesh_compression, in one mesh on one node.
+std::vector<std::uint8_t> foliageModel(const std::string& name, const Pngs& pngs, bool fronds, const MeshData* trunkMesh,
+                                       const MeshData& cards) {
+    GlbWriter glb;
+    const int foliageTexture = glb.addTexture(glb.addPngImage(fronds ? pngs.fronds : pngs.leaves, fronds ? "frond" : "leaf_cluster"), kClampToEdge);
+    const int foliage = glb.addMaterial(foliageMaterial(fronds ? "fronds" : "leaves", foliageTexture));
+    std::vector<GlbWriter::Part> parts;
+    if (trunkMesh) {
+        const int barkTexture = glb.addTexture(glb.addPngImage(pngs.bark, "bark"), kRepeat);
+        parts.push_back({trunkMesh, glb.addMaterial(opaqueMaterial("bark", barkTexture, 0.0, 0.9))});
+    }
+    parts.push_back({&cards, foliage});
+    const int mesh = glb.addMesh(name, parts, /*draco=*/true);
+    glb.setSceneNodes({glb.addNode({{"name", name}, {"mesh", mesh}})});
+    return glb.glb();
+}
+
+std::vector<std::uint8_t> broadleafTree(const Pngs& pngs) {
+    Pcg32 rng(0x7EEB0AD1u);
+    const MeshData wood = trunk(0.0f, 3.6f, 0.22f, 0.12f, 9, 2.0f);
+    MeshData cards;
+    addCrownLobe(cards, rng, {{0.0f, 4.2f, 0.0f}, {2.0f, 1.6f, 2.0f}, 30, 1.6f, 2.4f});
+    addCrownLobe(cards, rng, {{0.6f, 5.2f, -0.3f}, {1.3f, 1.1f, 1.3f}, 12, 1.4f, 2.0f});
+    return foliageModel("tree_broadleaf", pngs, false, &wood, cards);
+}
+
+std::vector<std::uint8_t> tallTree(const Pngs& pngs) {
+    Pcg32 rng(0x7A11u);
+    const MeshData wood = trunk(0.0f, 6.0f, 0.20f, 0.09f, 8, 2.0f);
+    MeshData cards;
+    addCrownLobe(cards, rng, {{0.0f, 3.6f, 0.0f}, {1.3f, 1.4f, 1.3f}, 16, 1.2f, 2.0f});
+    addCrownLobe(cards, rng, {{0.0f, 5.2f, 0.0f}, {1.1f, 1.5f, 1.1f}, 16, 1.2f, 1.8f});
+    addCrownLobe(cards, rng, {{0.0f, 6.8f, 0.0f}, {0.8f, 1.0f, 0.8f}, 12, 1.0f, 1.5f});
+    return foliageModel("tree_tall", pngs, false, &wood, cards);
+}
+
+std::vector<std::uint8_t> palmTree(const Pngs& pngs) {
+    Pcg32 rng(0xBA1Bu);
+    const MeshData wood = trunk(0.0f, 4.8f, 0.18f, 0.12f, 8, 1.0f);
+    MeshData cards;
+    addFronds(cards, rng, {0.0f, 4.7f, 0.0f}, 14, 3.0f, -0.45f, 0.25f);
+    addFronds(cards, rng, {0.0f, 4.8f, 0.0f}, 10, 2.2f, 0.2f, 0.8f);
+    return foliageModel("tree_palm", pngs, true, &wood, cards);
+}
+
+std::vector<std::uint8_t> roundBush(const Pngs& pngs) {
+    Pcg32 rng(0xB005Bu);
+    MeshData cards;
+    addCrownLobe(cards, rng, {{0.0f, 1.0f, 0.0f}, {1.1f, 0.6f, 1.1f}, 28, 0.9f, 1.3f});
+    return foliageModel("bush_round", pngs, false, nullptr, cards);
+}
+
+std::vector<std::uint8_t> fernBush(const Pngs& pngs) {
+    Pcg32 rng(0xFE4Bu);
+    MeshData cards;
+    addFronds(cards, rng, {0.0f, 0.2f, 0.0f}, 16, 1.4f, 0.4f, 0.9f);
+    addFronds(cards, rng, {0.0f, 0.2f, 0.0f}, 8, 1.1f, 0.9f, 1.3f);
+    return foliageModel("bush_fern", pngs, true, nullptr, cards);
+}
+
+// Boxes and wheels, +Z forward, one textured atlas material (textures.hpp makeCarAtlas).
+std::vector<std::uint8_t> car(const Pngs& pngs) {
+    const glm::vec4 paint(0.02f, 0.02f, 0.98f, 0.48f), glass(0.02f, 0.52f, 0.98f, 0.73f), tyre(0.02f, 0.77f, 0.98f, 0.98f);
+    MeshData body;
+    addBox(body, {-0.9f, 0.3f, -2.1f}, {0.9f, 0.95f, 2.1f}, paint, paint);
+    addBox(body, {-0.75f, 0.95f, -0.9f}, {0.75f, 1.45f, 0.8f}, paint, glass);
+    addBox(body, {-0.85f, 1.0f, -2.1f}, {0.85f, 1.08f, -1.8f}, paint, paint);  // the rear wing
+    for (int side = -1; side <= 1; side += 2)
+        for (int axle = -1; axle <= 1; axle += 2)
+            addWheel(body, {0.9f * static_cast<float>(side), 0.34f, 1.35f * static_cast<float>(axle)}, 0.34f, 0.3f, 12, tyre);
+    GlbWriter glb;
+    const int texture = glb.addTexture(glb.addPngImage(pngs.car, "car_atlas"), kClampToEdge);
+    const int material = glb.addMaterial(opaqueMaterial("car", texture, 0.2, 0.4));
+    const int mesh = glb.addMesh("car", {{&body, material}}, false);
+    glb.setSceneNodes({glb.addNode({{"name", "car"}, {"mesh", mesh}})});
+    return glb.glb();
+}
+
+// A round pool of radius 1 (placed scaled): a BLEND material, untextured.
+std::vector<std::uint8_t> water() {
+    const MeshData surface = disc(1.0f, 32);
+    GlbWriter glb;
+    const int material = glb.addMaterial({{"name", "water"},
+                                          {"pbrMetallicRoughness",
+                                           {{"baseColorFactor", {0.10, 0.30, 0.40, 0.6}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.05}}},
+                                          {"alphaMode", "BLEND"}});
+    const int mesh = glb.addMesh("water", {{&surface, material}}, false);
+    glb.setSceneNodes({glb.addNode({{"name", "water"}, {"mesh", mesh}})});
+    return glb.glb();
+}
+
+std::vector<std::uint8_t> terrain(const Pngs& pngs) {
+    const MeshData ground = terrainPatch(64.0f, 32, 1.2f, 8.0f, 0x7E44u);
+    GlbWriter glb;
+    const int texture = glb.addTexture(glb.addPngImage(pngs.ground, "ground"), kRepeat);
+    const int material = glb.addMaterial(opaqueMaterial("ground", texture, 0.0, 1.0));
+    const int mesh = glb.addMesh("terrain", {{&ground, material}}, false);
+    glb.setSceneNodes({glb.addNode({{"name", "terrain"}, {"mesh", mesh}})});
+    return glb.glb();
+}
+
+// Millimetre-rounded coordinates keep the centre line's JSON short and exact.
+ordered_json pointsJson(const std::vector<glm::vec3>& points) {
+    ordered_json out = ordered_json::array();
+    for (const glm::vec3& p : points)
+        out.push_back({std::round(static_cast<double>(p.x) * 1000.0) / 1000.0, std::round(static_cast<double>(p.y) * 1000.0) / 1000.0,
+                       std::round(static_cast<double>(p.z) * 1000.0) / 1000.0});
+    return out;
+}
+
+// The closed track: the ribbon mesh, with its centre line in the mesh's extras.
+std::vector<std::uint8_t> track(const Pngs& pngs) {
+    const TrackShape shape = trackShape(0x7AC4u, 10, {130.0f, 85.0f}, 24, 12.0f);
+    const MeshData ribbon = trackRibbon(shape);
+    GlbWriter glb;
+    const int texture = glb.addTexture(glb.addPngImage(pngs.track, "track"), kRepeat);
+    const int material = glb.addMaterial(opaqueMaterial("track", texture, 0.0, 0.9));
+    ordered_json extras = {{"centreLine",
+                            {{"closed", true},
+                             {"spline", "uniform Catmull-Rom through controlPoints; samples are its points, first not repeated"},
+                             {"width", shape.width},
+                             {"controlPoints", pointsJson(shape.control)},
+                             {"samples", pointsJson(shape.centreLine)}}}};
+    const int mesh = glb.addMesh("track", {{&ribbon, material}}, false, std::move(extras));
+    glb.setSceneNodes({glb.addNode({{"name", "track"}, {"mesh", mesh}})});
+    return glb.glb();
+}
+
+}  // namespace
+
+std::vector<fs::path> generateContent(const fs::path& dir) {
+    Pngs pngs;
+    pngs.leaves = encodePng(makeLeafCluster(0x1EAFu));
+    pngs.fronds = encodePng(makeFrond(0xF40Du));
+    pngs.bark = encodePng(makeBark(0xBA4Cu));
+    pngs.ground = encodePng(makeGround(0x6400u));
+    pngs.track = encodePng(makeTrack(0x7AC0u));
+    pngs.car = encodePng(makeCarAtlas(0xCA40u));
+
+    const std::vector<std::pair<fs::path, std::function<std::vector<std::uint8_t>()>>> files = {
+        // Standalone textures the game applies to the terrain and road it builds in code.
+        {"textures/ground.png", [&] { return pngs.ground; }},
+        {"textures/track.png", [&] { return pngs.track; }},
+        {"models/tree_broadleaf.glb", [&] { return broadleafTree(pngs); }},
+        {"models/tree_tall.glb", [&] { return tallTree(pngs); }},
+        {"models/tree_palm.glb", [&] { return palmTree(pngs); }},
+        {"models/bush_round.glb", [&] { return roundBush(pngs); }},
+        {"models/bush_fern.glb", [&] { return fernBush(pngs); }},
+        {"models/car.glb", [&] { return car(pngs); }},
+        {"models/water.glb", [&] { return water(); }},
+        {"models/terrain.glb", [&] { return terrain(pngs); }},
+        {"models/track.glb", [&] { return track(pngs); }},
+    };
+    std::vector<fs::path> written;
+    for (const auto& [relative, make] : files) {
+        writeBytes(dir / relative, make());
+        written.push_back(relative);
+    }
+    return written;
+}
+
+}  // namespace content

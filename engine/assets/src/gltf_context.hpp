@@ -1,0 +1,42 @@
+#pragma once
+// Private: where a glTF load reports problems. Every refusal names the file and the field
+// ("scene.gltf: accessors[3].count: ...") so a user knows what to fix.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/assets/gltf.hpp"
+
+namespace engine::assets::detail {
+
+struct LoadContext {
+    std::filesystem::path file;     // as given by the caller
+    std::filesystem::path baseDir;  // the directory relative URIs resolve against
+    const LoadOptions* options = nullptr;
+    std::vector<std::string>* warnings = nullptr;
+
+    // Throws engine::Error("<file>: <field>: <problem>").
+    [[noreturn]] void fail(const std::string& field, const std::string& problem) const;
+    void warn(const std::string& field, const std::string& problem) const;
+};
+
+// "buffers[3]"
+inline std::string indexed(const char* array, std::size_t index) {
+    return std::string(array) + "[" + std::to_string(index) + "]";
+}
+
+// a + b and a * b on 64-bit unsigned values; false on overflow.
+inline bool checkedAdd(std::uint64_t a, std::uint64_t b, std::uint64_t& out) {
+    return !__builtin_add_overflow(a, b, &out);
+}
+inline bool checkedMul(std::uint64_t a, std::uint64_t b, std::uint64_t& out) {
+    return !__builtin_mul_overflow(a, b, &out);
+}
+
+// Reads a whole file, refusing a missing file, a directory and anything over maxBytes
+// (before allocating). `field` names what referred to the file ("" for the glTF itself).
+std::vector<std::uint8_t> readWholeFile(const LoadContext& ctx, const std::filesystem::path& path,
+                                        const std::string& field);
+
+}  // namespace engine::assets::detail

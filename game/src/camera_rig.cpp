@@ -1,0 +1,49 @@
+#include "camera_rig.hpp"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/render/projection.hpp"
+#include "engine/scene/transform.hpp"
+
+namespace racer {
+
+CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float aspect, const FreeCamera& free) {
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    glm::vec3 eye, target;
+    switch (mode) {
+        case CameraMode::Chase: {
+            const Car& car = scene.registry().get<Car>(scene.car());
+            const glm::vec3 p = scene.track().position(car.distance), f = scene.track().forward(car.distance);
+            eye = p - f * 11.0f + up * 3.8f;
+            target = p + f * 10.0f + up * 1.2f;
+            break;
+        }
+        case CameraMode::Pan: {
+            // Grid-side at the start line, drifting slowly along the track and back.
+            const Track& track = scene.track();
+            const glm::vec3 p = track.position(0.0f), f = track.forward(0.0f);
+            const glm::vec3 side = glm::normalize(glm::cross(f, up));
+            const glm::vec3 drift = f * (9.0f * std::sin(time * 0.25f));
+            eye = p - side * 3.0f + up * 2.5f + drift;
+            target = p + side * 30.0f + up * 5.0f + drift;
+            break;
+        }
+        case CameraMode::Free: {
+            const glm::vec3 dir(std::sin(free.yaw) * std::cos(free.pitch), std::sin(free.pitch),
+                                std::cos(free.yaw) * std::cos(free.pitch));
+            eye = free.position;
+            target = eye + dir;
+            break;
+        }
+    }
+    CameraView v;
+    v.eye = eye;
+    v.view = glm::lookAt(eye, target, up);
+    v.projection = engine::render::perspectiveReverseZ(glm::radians(60.0f), aspect, kNearPlane, kFarPlane);
+    v.viewProj = v.projection * v.view;
+    return v;
+}
+
+}  // namespace racer

@@ -1,0 +1,171 @@
+#include "racing_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "engine/assets/gltf.hpp"
+#include "engine/assets/image.hpp"
+#include "engine/assets/mips.hpp"
+#include "engine/core/error.hpp"
+#include "engine/core/log.hpp"
+#include "engine/scene/components.hpp"
+
+namespace racer {
+
+using namespace engine;
+using namespace engine::render;
+using scene::Transform;
+
+namespace {
+
+std::filesystem::path require(const std::filesystem::path& path) {
+    if (!std::filesystem::exists(path))
+        throw Error("content file '" + path.string() + "' is missing (regenerate with `make content`)");
+    return path;
+}
+
+TextureBinding loadTexture(Backend& backend, const std::filesystem::path& path) {
+    std::ifstream file(require(path), std::ios::binary);
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const assets::RgbaImage image = assets::decodeImage(bytes, path.string());
+    const std::vector<assets::RgbaImage> levels = assets::generateMips(image, {AlphaMode::Premultiplied, -1.0f, 0});
+    TextureDesc desc;
+    desc.name = path.filename().string();
+    desc.width = image.width;
+    desc.height = image.height;
+    desc.format = Format::RGBA8_SRGB;
+    desc.mipLevels = static_cast<int>(levels.size());
+    desc.alpha = levels.front().alpha;
+    const TextureData data = assets::textureData(levels);
+    return {backend.createTexture(desc, &data), {Filter::Trilinear, AddressMode::Wrap, AddressMode::Wrap}};
+}
+
+scene::ModelId loadModel(scene::MeshLibrary& library, const std::filesystem::path& path) {
+    return library.add(assets::loadGltf(require(path)));
+}
+
+glm::quat yaw(float radians) { return glm::angleAxis(radians, glm::vec3(0.0f, 1.0f, 0.0f)); }
+
+void place(ecs::Registry& registry, scene::ModelId model, const glm::vec3& position, float rotation, float scale) {
+    const ecs::Entity e = registry.create();
+    registry.add<Transform>(e, Transform{position, yaw(rotation), glm::vec3(scale)});
+    registry.add<scene::Renderable>(e, scene::Renderable{model});
+}
+
+}  // namespace
+
+RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
+    : library_(backend), track_(options.seed) {
+    const std::filesystem::path& content = options.contentDir;
+    Random random(options.seed);
+
+    // Ground and road, built from the same height field the track follows.
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    buildTerrain(2000.0f, 160, vertices, indices);
+    scene::PartMaterial ground;
+    ground.doubleSided = true;
+    ground.baseColor = loadTexture(backend, content / "textures" / "ground.png");
+    place(registry_, library_.add("terrain", vertices, indices, ground), {}, 0.0f, 1.0f);
+    vertices.clear();
+    indices.clear();
+    track_.buildRoad(vertices, indices);
+    scene::PartMaterial road;
+    road.doubleSided = true;
+    road.baseColor = loadTexture(backend, content / "textures" / "track.png");
+    place(registry_, library_.add("road", vertices, indices, road), {}, 0.0f, 1.0f);
+
+    // Foliage models: every tree_*/bush_* file in content/models, in name order.
+    std::vector<std::filesystem::path> treeFiles, bushFiles;
+    for (const auto& entry : std::filesystem::directory_iterator(require(content / "models"))) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("tree", 0) == 0) treeFiles.push_back(entry.path());
+        if (name.rfind("bush", 0) == 0) bushFiles.push_back(entry.path());
+    }
+    std::sort(treeFiles.begin(), treeFiles.end());
+    std::sort(bushFiles.begin(), bushFiles.end());
+    if (treeFiles.empty() || bushFiles.empty())
+        throw Error("no tree*/bush* models in '" + (content / "models").string() + "'");
+    std::vector<scene::ModelId> trees, bushes;
+    for (const auto& f : treeFiles) trees.push_back(loadModel(library_, f));
+    for (const auto& f : bushFiles) bushes.push_back(loadModel(library_, f));
+
+    // Trees and bushes line the track on both sides, clear of the road.
+    auto besideTrack = [&](float minOffset, float maxOffset) {
+        const float d = random.uniform(0.0f, track_.length());
+        const glm::vec3 p = track_.position(d), f = track_.forward(d);
+        const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+        const float offset = random.uniform(minOffset, maxOffset) * (random.next() & 1 ? 1.0f : -1.0f);
+        glm::vec3 q = p + side * offset;
+        q.y = terrainHeight(q.x, q.z);
+        return q;
+    };
+    for (int i = 0; i < options.trees; ++i) {
+        const scene::ModelId m = trees[random.next() % trees.size()];
+        place(registry_, m, besideTrack(track_.width() * 0.5f + 3.0f, 45.0f), random.uniform(0.0f, 6.2832f),
+              random.uniform(0.8f, 1.3f));
+    }
+    for (int i = 0; i < options.bushes; ++i) {
+        const scene::ModelId m = bushes[random.next() % bushes.size()];
+        place(registry_, m, besideTrack(track_.width() * 0.5f + 1.0f, 25.0f), random.uniform(0.0f, 6.2832f),
+              random.uniform(0.7f, 1.4f));
+    }
+    // A grove across the track from the start line, where the pre-race pan camera looks:
+    // overlapping trees close up, the case where alpha testing sparkles (seeds/000 §3.4).
+    {
+        const glm::vec3 start = track_.position(0.0f), f = track_.forward(0.0f);
+        const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+        for (int i = 0; i < options.groveTrees; ++i) {
+            glm::vec3 p = start + side * random.uniform(track_.width() * 0.5f + 6.0f, 40.0f) +
+                          f * random.uniform(-30.0f, 30.0f);
+            p.y = terrainHeight(p.x, p.z);
+            const bool tree = (random.next() % 3) != 0;
+            const auto& models = tree ? trees : bushes;
+            place(registry_, models[random.next() % models.size()], p, random.uniform(0.0f, 6.2832f),
+                  random.uniform(0.9f, 1.4f));
+        }
+    }
+    // The vista: a ring of forest out to a few kilometres (seeds/000 §3.1).
+    for (int i = 0; i < options.vistaTrees; ++i) {
+        const float angle = random.uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
+        const float radius = random.uniform(450.0f, 1900.0f);
+        glm::vec3 p(radius * std::cos(angle), 0.0f, radius * std::sin(angle));
+        p.y = terrainHeight(p.x, p.z);
+        place(registry_, trees[random.next() % trees.size()], p, random.uniform(0.0f, 6.2832f),
+              random.uniform(1.5f, 2.5f));
+    }
+
+    // Water pools (glTF BLEND material) in the infield.
+    const scene::ModelId water = loadModel(library_, content / "models" / "water.glb");
+    for (int i = 0; i < 4; ++i) {
+        const float angle = float(i) * 1.5708f + 0.4f;
+        glm::vec3 p(95.0f * std::cos(angle), 0.0f, 95.0f * std::sin(angle));
+        p.y = terrainHeight(p.x, p.z) + 0.3f;
+        place(registry_, water, p, random.uniform(0.0f, 6.2832f), random.uniform(2.0f, 3.5f));
+    }
+
+    const scene::ModelId carModel = loadModel(library_, content / "models" / "car.glb");
+    car_ = registry_.create();
+    registry_.add<Transform>(car_);
+    registry_.add<scene::Renderable>(car_, scene::Renderable{carModel});
+    registry_.add<scene::Collider>(car_, scene::Collider{2.5f});
+    registry_.add<Car>(car_);
+    update(0.0f);
+    log::info("racing scene: ", registry_.size(), " entities, ", library_.partCount(), " mesh parts, track ",
+              int(track_.length()), " m");
+}
+
+void RacingScene::update(float dt) {
+    Car& car = registry_.get<Car>(car_);
+    car.distance += car.speed * dt;
+    Transform& t = registry_.get<Transform>(car_);
+    t.position = track_.position(car.distance);
+    const glm::vec3 f = track_.forward(car.distance);
+    t.rotation = yaw(std::atan2(f.x, f.z));
+}
+
+}  // namespace racer

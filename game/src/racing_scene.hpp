@@ -1,0 +1,48 @@
+#pragma once
+// The racing scene on the ECS: terrain and road built in code from the track, models from
+// content/ (trees, bushes, the car, water pools) placed with a seeded PRNG, and the car
+// driving laps. Everything is a function of the seed and the simulated time.
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "engine/core/ecs/registry.hpp"
+#include "engine/scene/mesh_library.hpp"
+#include "track.hpp"
+
+namespace racer {
+
+struct Car {
+    float distance = 60.0f;  // along the track, metres (starts past the grove at the start line)
+    float speed = 28.0f;    // m/s
+};
+
+struct SceneOptions {
+    std::filesystem::path contentDir;
+    std::uint32_t seed = 1;
+    int trees = 260;   // instances along the track
+    int bushes = 160;
+    int vistaTrees = 400;  // far away, towards the horizon
+    int groveTrees = 40;   // across from the start line, framed by the pan camera
+};
+
+class RacingScene {
+public:
+    RacingScene(engine::render::Backend& backend, const SceneOptions& options);
+
+    engine::ecs::Registry& registry() { return registry_; }
+    engine::scene::MeshLibrary& library() { return library_; }
+    const Track& track() const { return track_; }
+    engine::ecs::Entity car() const { return car_; }
+
+    // Advances the simulation by dt seconds (the car drives along the track).
+    void update(float dt);
+
+private:
+    engine::ecs::Registry registry_;
+    engine::scene::MeshLibrary library_;
+    Track track_;
+    engine::ecs::Entity car_;
+};
+
+}  // namespace racer

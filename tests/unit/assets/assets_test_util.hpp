@@ -1,0 +1,68 @@
+#pragma once
+// Shared helpers of unit_assets: fixture paths, a per-test temporary directory, and a
+// matcher-friendly way to capture the engine::Error a load throws.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.hpp"
+
+namespace assets_test {
+
+inline std::filesystem::path fixture(const std::string& name) {
+    return std::filesystem::path(SSAM_SOURCE_DIR) / "tests" / "data" / "gltf" / name;
+}
+
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        std::string name = "ssam_unit_assets_" + std::to_string(::getpid());
+        if (info) name += std::string("_") + info->test_suite_name() + "_" + info->name();
+        for (char& c : name)
+            if (c == '/') c = '_';
+        path_ = std::filesystem::temp_directory_path() / name;
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    std::filesystem::path operator/(const std::string& file) const { return path_ / file; }
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
+inline void writeFile(const std::filesystem::path& path, const void* data, std::size_t size) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+inline void writeFile(const std::filesystem::path& path, const std::string& text) {
+    writeFile(path, text.data(), text.size());
+}
+
+// The message of the engine::Error `load` throws; fails the test if it throws nothing.
+inline std::string errorOf(const std::function<void()>& load) {
+    try {
+        load();
+    } catch (const engine::Error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "threw a non-engine exception: " << e.what();
+        return {};
+    }
+    ADD_FAILURE() << "expected an engine::Error, nothing was thrown";
+    return {};
+}
+
+}  // namespace assets_test
