@@ -44,11 +44,13 @@ DEMO_FLAGS ?= --frames 90 --fixed-dt 0.0333333 --size 1280x720
 demo: build
 	$(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --capture out/racer.png --capture-layers
 
-# The README's pictures, rendered by the project itself (small PNGs in content/readme/).
+# The README's pictures, rendered by the project itself (small PNGs in content/readme/):
+# the pre-race pan with SSAM (and each of its intermediate targets) and with alpha testing.
+README_FLAGS := --headless --size 480x270 --frames 2 --camera pan
 readme-images: build
-	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 30 --camera chase \
-	  --capture out/readme/racer.png --capture-layers --layer-pictures content/readme
-	cp out/readme/racer.png content/readme/racer.png
+	$(BUILD_DIR)/bin/racer $(README_FLAGS) --technique ssam --capture out/readme/ssam.png \
+	  --capture-layers --layer-pictures content/readme
+	$(BUILD_DIR)/bin/racer $(README_FLAGS) --technique alpha-test --capture content/readme/alpha_test.png
 
 # Regenerates the committed assets (deterministic: a test checks the bytes match).
 content: build

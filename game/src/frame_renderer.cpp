@@ -60,6 +60,8 @@ PipelineHandle FrameRenderer::alphaTestPipeline(float cutoff) {
         p.program = ProgramKind::FoliageColor;
         p.depth = DepthState::testAndWrite(kDepthFunc);
         p.alphaTest = AlphaTest::discardBelow(cutoff);
+        // The frame's alpha stays the opaque 1: the texture's alpha only decides coverage.
+        p.blend[0].writeMask = WriteRGB;
         it->second = backend_.createPipeline(p);
     }
     return it->second;
