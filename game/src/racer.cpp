@@ -14,6 +14,7 @@
 #include "engine/capture/readback_image.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
+#include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "frame_renderer.hpp"
@@ -61,12 +62,14 @@ int run(const Options& o) {
     const CameraMode cameraMode = cameras.at(o.camera);
 
     const bool windowed = !o.headless && std::getenv("DISPLAY") != nullptr;
-    if (windowed)
-        engine::log::info("racer: window mode needs the GL backend, which is not built yet; rendering headless");
-    if (o.backend != "soft")
-        throw engine::Error("--backend " + o.backend + ": only the soft backend is built so far");
+    if (windowed) engine::log::info("racer: the window mode is not built yet; rendering headless");
 
-    auto backend = engine::render::soft::createSoftBackend({o.threads, 64, false});
+    // GL renders headless through EGL (Mesa llvmpipe without a GPU); --threads applies to soft.
+    std::unique_ptr<engine::render::Backend> backend;
+    if (o.backend == "gl")
+        backend = engine::render::gl::createGlBackend({});
+    else
+        backend = engine::render::soft::createSoftBackend({o.threads, 64, false});
     RacingScene scene(*backend, {o.contentDir, o.seed});
     FrameRenderer frame(*backend, scene.library(), renderer);
     const float aspect = float(renderer.width) / float(renderer.height);
