@@ -97,9 +97,11 @@ glm::vec4 sampleTexture(const SoftTexture& t, const SamplerState& s, glm::vec2 u
     }
     const glm::vec2 size(t.levels[0].width, t.levels[0].height);
     const float rho = std::max(glm::length(d.dx * size), glm::length(d.dy * size));
-    const float lambda = std::log2(rho);  // -inf for rho = 0: magnification
     const int last = static_cast<int>(t.levels.size()) - 1;
-    if (!(lambda > 0.0f) || last == 0) return bilinear<Channels>(t, s, 0, uv);
+    // Magnification without the log: log2f(rho) > 0 exactly when rho > 1 (checked for
+    // every float), NaN included (both tests false).
+    if (!(rho > 1.0f) || last == 0) return bilinear<Channels>(t, s, 0, uv);
+    const float lambda = std::log2(rho);
     if (lambda >= static_cast<float>(last)) return bilinear<Channels>(t, s, last, uv);
     const int lo = static_cast<int>(lambda);
     return glm::mix(bilinear<Channels>(t, s, lo, uv), bilinear<Channels>(t, s, lo + 1, uv), lambda - lo);

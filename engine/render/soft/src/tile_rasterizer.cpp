@@ -35,14 +35,14 @@ constexpr std::array<std::uint8_t, 256> kBitCount = [] {
     return n;
 }();
 
-// Depth test of one block row of a single-sampled target: 8 lanes, pixel px0 + i in lane
-// i, `coverage` the covered lanes (lanes past the row end are never covered). Per lane
-// exactly the scalar path's arithmetic (IEEE mul/add in the same order, so SIMD lanes give
-// the same bits):
-//   fx = (float(px0 + i) + 0.5f) - originX,  z = clamp01(value + dx * fx + dy * fy)
-// Writes z[8] and returns the covered lanes where `z <Func> stored` holds; with Write
-// (depth-only draws) also stores z into those lanes of `stored` (8 floats, any alignment),
-// rewriting the other lanes with the values they had.
+// Depth test of one block row of a single-sampled target: 8 lanes, pixel bx + i in lane
+// i (centerX0 = float(bx) + 0.5f), `coverage` the covered lanes (never one outside the
+// target). Per lane exactly the per-pixel path's arithmetic (IEEE mul/add in the same
+// order, so SIMD lanes give the same bits):
+//   fx = (float(bx + i) + 0.5f) - originX,  z = clamp01(value + dx * fx + dy * fy)
+// Returns the covered lanes where `z <Func> stored` holds; without Write writes z[8] (for
+// the shading that follows), with Write (depth-only draws) stores z into those lanes of
+// `stored` (8 floats, any alignment), rewriting the other lanes with the values they had.
 template <CompareFunc Func, bool Write>
 std::uint32_t depthRow(const Plane& plane, float centerX0, float originX, float fy, std::uint32_t coverage,
                        std::byte* stored, float* z) {
@@ -50,19 +50,19 @@ std::uint32_t depthRow(const Plane& plane, float centerX0, float originX, float 
     const __m128 value = _mm_set1_ps(plane.value), dx = _mm_set1_ps(plane.dx);
     const __m128 dyFy = _mm_set1_ps(plane.dy * fy);
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), origin = _mm_set1_ps(originX);
-    // Lane i of bits[h] holds bit 4h + i of the coverage, so lane masks come from a compare.
+    // Lane i of the half h covered when bit 4h + i of `coverage` is set.
     const __m128i laneBits = _mm_setr_epi32(1, 2, 4, 8);
     float* const depth = reinterpret_cast<float*>(stored);  // intrinsic loads/stores may alias
     std::uint32_t mask = 0;
     for (int h = 0; h < 2; ++h) {
-        // float(px0) + 0.5f + i is exact, as float(px0 + i) + 0.5f is.
+        // float(bx) + 0.5f + i is exact, as float(bx + i) + 0.5f is.
         const __m128 center = _mm_add_ps(_mm_set1_ps(centerX0), _mm_setr_ps(float(4 * h), float(4 * h + 1),
                                                                              float(4 * h + 2), float(4 * h + 3)));
         const __m128 fx = _mm_sub_ps(center, origin);
         const __m128 v = _mm_add_ps(_mm_add_ps(value, _mm_mul_ps(dx, fx)), dyFy);
         // clamp01: maxps(v, 0) gives 0 for v <= 0 and NaN, then minps(., 1).
         const __m128 zv = _mm_min_ps(_mm_max_ps(v, zero), one);
-        _mm_storeu_ps(z + 4 * h, zv);
+        if constexpr (!Write) _mm_storeu_ps(z + 4 * h, zv);
         const __m128 d = _mm_loadu_ps(depth + 4 * h);
         __m128 pass = zero;
         switch (Func) {
@@ -95,6 +95,37 @@ std::uint32_t depthRow(const Plane& plane, float centerX0, float originX, float 
     }
     return mask;
 #endif
+}
+
+// A fully covered block of a depth-only draw (test and write): rows py0..py1 of the 8
+// pixels at row0 (rowBytes apart), all inside the target. Returns the pixels that passed.
+template <CompareFunc Func>
+std::uint64_t depthOnlyBlock(const SetupTriangle& t, float centerX0, int py0, int py1, std::uint32_t coverage,
+                             std::byte* row0, std::size_t rowBytes) {
+    std::uint64_t passed = 0;
+    float unused[8];
+    for (int py = py0; py <= py1; ++py) {
+        const float fy = float(py) + 0.5f - t.originY;
+        const std::uint32_t live = depthRow<Func, true>(t.depth, centerX0, t.originX, fy, coverage,
+                                                        row0 + std::size_t(py - py0) * rowBytes, unused);
+        passed += kBitCount[live];
+    }
+    return passed;
+}
+
+using DepthOnlyBlockFn = std::uint64_t (*)(const SetupTriangle&, float, int, int, std::uint32_t, std::byte*, std::size_t);
+DepthOnlyBlockFn depthOnlyBlockFunction(CompareFunc func) {
+    switch (func) {
+        case CompareFunc::Never: return depthOnlyBlock<CompareFunc::Never>;
+        case CompareFunc::Less: return depthOnlyBlock<CompareFunc::Less>;
+        case CompareFunc::Equal: return depthOnlyBlock<CompareFunc::Equal>;
+        case CompareFunc::LessEqual: return depthOnlyBlock<CompareFunc::LessEqual>;
+        case CompareFunc::Greater: return depthOnlyBlock<CompareFunc::Greater>;
+        case CompareFunc::NotEqual: return depthOnlyBlock<CompareFunc::NotEqual>;
+        case CompareFunc::GreaterEqual: return depthOnlyBlock<CompareFunc::GreaterEqual>;
+        case CompareFunc::Always: return depthOnlyBlock<CompareFunc::Always>;
+    }
+    return depthOnlyBlock<CompareFunc::Always>;
 }
 
 using DepthRowFn = std::uint32_t (*)(const Plane&, float, float, float, std::uint32_t, std::byte*, float*);
@@ -183,6 +214,7 @@ public:
             // Depth-only draws store z as part of the row test.
             depthRowWrites_ = !draw.shade && draw.depthWrite;
             depthRow_ = depthRowWrites_ ? depthRowFunction<true>(draw.depthFunc) : depthRowFunction<false>(draw.depthFunc);
+            if (depthRowWrites_) depthOnlyBlock_ = depthOnlyBlockFunction(draw.depthFunc);
         }
         for (int i = 0; i < draw.colorTargetCount; ++i) {
             TargetView& v = color_[i];
@@ -309,9 +341,9 @@ private:
     }
 
     // Writes of the constant-colour fragment at the `live` pixels of a block row (bit i:
-    // pixel px0 + i), which passed coverage and depth; target by target, as the per-pixel
+    // pixel bx + i), which passed coverage and depth; target by target, as the per-pixel
     // path does (each pixel's bytes depend only on that pixel).
-    void writeConstantRow(int px0, int py, std::uint32_t live, const float* z, std::byte* depthAt) {
+    void writeConstantRow(int bx, int py, std::uint32_t live, const float* z, std::byte* depthAt) {
         if (constantDepthWrite_)
             for (std::uint32_t bits = live; bits; bits &= bits - 1) {
                 const int k = __builtin_ctz(bits);
@@ -321,7 +353,7 @@ private:
             const std::uint8_t mask = constantMask_[i];
             if (!mask) continue;
             const TargetView& target = color_[i];
-            std::byte* row = target.at(px0, py);
+            std::byte* row = target.at(bx, py);
             if (target.rgba8Plain && mask == WriteAll) {
                 const std::uint32_t packed = constantPacked_[i];
                 if (live == 0xFFu) {
@@ -389,6 +421,25 @@ private:
                 const int n = px1 - px0 + 1, shift = px0 - bx;  // mask bit i: pixel bx + i
                 if (full) {
                     const std::uint32_t rowMask = ((1u << n) - 1u) << shift;
+                    if (depthOnlyBlock_ && bx + kBlockSize <= width_) {
+                        counters_.pixelsTouched += depthOnlyBlock_(t, float(bx) + 0.5f, py0, py1, rowMask,
+                                                                   depth_.at(bx, py0), depth_.rowBytes);
+                        continue;
+                    }
+                    if (!draw_.depthTest && draw_.shade) {  // every pixel of the block is live
+                        if (constantPending_) {
+                            constantPending_ = false;
+                            prepareConstant(t, boxPixels_);
+                        }
+                        if (constant_) {
+                            const std::uint64_t pixels = std::uint64_t(kBitCount[rowMask]) * (py1 - py0 + 1);
+                            counters_.pixelsTouched += pixels;
+                            counters_.pixelsShaded += pixels;
+                            if (!constantDiscard_)
+                                for (int py = py0; py <= py1; ++py) writeConstantRow(bx, py, rowMask, nullptr, nullptr);
+                            continue;
+                        }
+                    }
                     for (int py = py0; py <= py1; ++py) shadeRow(t, bx, py, rowMask);
                     continue;
                 }
@@ -444,16 +495,89 @@ private:
             if (!constantDiscard_) writeConstantRow(bx, py, live, z, depthAt);
             return;
         }
+#if SSAM_SOFT_SSE2
+        if (kBitCount[live] >= 2) {  // the attributes of all 8 lanes at once
+            interpolateRow(t, centerX0, fy);
+            for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+                const int i = __builtin_ctz(bits);
+                shadeSingle(rowFragment(t, bx + i, py, i), bx + i, py, z[i], depthAt + i * sizeof(float));
+            }
+            return;
+        }
+#endif
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
             const int i = __builtin_ctz(bits);
             const int px = bx + i;
-            shadeSingle(t, px, py, float(px) + 0.5f - t.originX, fy, z[i], depthAt + i * sizeof(float));
+            shadeSingle(interpolate(t, px, py, float(px) + 0.5f - t.originX, fy), px, py, z[i],
+                        depthAt + i * sizeof(float));
         }
     }
 
+#if SSAM_SOFT_SSE2
+    // interpolate() for the 8 lanes of a block row (pixel bx + i in lane i), lane by lane
+    // the same IEEE operations in the same order (the division included), into row_.
+    void interpolateRow(const SetupTriangle& t, float centerX0, float fy) {
+        constexpr ProgramNeeds needs = Program::kNeeds;
+        if constexpr (needs.uv || needs.normal || needs.color) {
+            const __m128 origin = _mm_set1_ps(t.originX), one = _mm_set1_ps(1.0f);
+            for (int h = 0; h < 2; ++h) {
+                const __m128 fx = _mm_sub_ps(
+                    _mm_add_ps(_mm_set1_ps(centerX0), _mm_setr_ps(float(4 * h), float(4 * h + 1), float(4 * h + 2),
+                                                                  float(4 * h + 3))),
+                    origin);
+                auto evaluateLanes = [&](const Plane& p) {
+                    return _mm_add_ps(_mm_add_ps(_mm_set1_ps(p.value), _mm_mul_ps(_mm_set1_ps(p.dx), fx)),
+                                      _mm_set1_ps(p.dy * fy));
+                };
+                const __m128 w = _mm_div_ps(one, evaluateLanes(t.inverseW));
+                auto attribute = [&](int k) { return _mm_mul_ps(evaluateLanes(t.attributeOverW[k]), w); };
+                if constexpr (needs.uv) {
+                    const __m128 u = attribute(kAttrU), v = attribute(kAttrV);
+                    _mm_store_ps(row_.uv[0] + 4 * h, u);
+                    _mm_store_ps(row_.uv[1] + 4 * h, v);
+                    if constexpr (needs.derivatives) {
+                        const Plane& pu = t.attributeOverW[kAttrU];
+                        const Plane& pv = t.attributeOverW[kAttrV];
+                        auto derivative = [&](float slope, __m128 value, float inverseWSlope) {
+                            return _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(slope), _mm_mul_ps(value, _mm_set1_ps(inverseWSlope))), w);
+                        };
+                        _mm_store_ps(row_.duv[0] + 4 * h, derivative(pu.dx, u, t.inverseW.dx));
+                        _mm_store_ps(row_.duv[1] + 4 * h, derivative(pv.dx, v, t.inverseW.dx));
+                        _mm_store_ps(row_.duv[2] + 4 * h, derivative(pu.dy, u, t.inverseW.dy));
+                        _mm_store_ps(row_.duv[3] + 4 * h, derivative(pv.dy, v, t.inverseW.dy));
+                    }
+                }
+                if constexpr (needs.normal)
+                    for (int k = 0; k < 3; ++k) _mm_store_ps(row_.normal[k] + 4 * h, attribute(kAttrNormal + k));
+                if constexpr (needs.color)
+                    for (int k = 0; k < 4; ++k) _mm_store_ps(row_.color[k] + 4 * h, attribute(kAttrColor + k));
+            }
+        }
+    }
+
+    // The fragment of lane i from row_ (what interpolate() gives for that pixel).
+    Fragment rowFragment(const SetupTriangle& t, int px, int py, int i) const {
+        constexpr ProgramNeeds needs = Program::kNeeds;
+        Fragment f;
+        f.x = px;
+        f.y = py;
+        f.frontFacing = t.frontFacing;
+        if constexpr (needs.uv) {
+            f.uv = {row_.uv[0][i], row_.uv[1][i]};
+            if constexpr (needs.derivatives) {
+                f.duv.dx = {row_.duv[0][i], row_.duv[1][i]};
+                f.duv.dy = {row_.duv[2][i], row_.duv[3][i]};
+            }
+        }
+        if constexpr (needs.normal) f.normal = {row_.normal[0][i], row_.normal[1][i], row_.normal[2][i]};
+        if constexpr (needs.color) f.color = {row_.color[0][i], row_.color[1][i], row_.color[2][i], row_.color[3][i]};
+        return f;
+    }
+#endif
+
     // One covered (and depth-passing) pixel of a single-sampled target.
-    void shadeSingle(const SetupTriangle& t, int px, int py, float fx, float fy, float z, std::byte* depthAt) {
-        const glm::vec4 color = program_.shade(interpolate(t, px, py, fx, fy));
+    void shadeSingle(const Fragment& fragment, int px, int py, float z, std::byte* depthAt) {
+        const glm::vec4 color = program_.shade(fragment);
         ++counters_.pixelsShaded;
 
         bool writeRgb = true, writeAlpha = true, writeDepth = draw_.depthWrite;
@@ -612,9 +736,16 @@ private:
     const SamplePattern& pattern_;
     const std::uint32_t allSamples_;
     bool single_ = false;  // one sample per pixel: the row-at-a-time path
+    struct RowAttributes {  // interpolateRow's output: [component][lane]
+        alignas(16) float uv[2][kBlockSize];
+        alignas(16) float duv[4][kBlockSize];  // du/dx, dv/dx, du/dy, dv/dy
+        alignas(16) float normal[3][kBlockSize];
+        alignas(16) float color[4][kBlockSize];
+    } row_;
     int width_ = 0;        // of the pass's targets
     TargetView depth_;
     DepthRowFn depthRow_ = nullptr;
+    DepthOnlyBlockFn depthOnlyBlock_ = nullptr;  // depth-only draws (test and write)
     bool depthRowWrites_ = false;
     std::array<TargetView, kMaxColorTargets> color_{};
     // The current triangle's constant fragment (prepareConstant), if it has one.

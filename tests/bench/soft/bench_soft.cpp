@@ -1,0 +1,322 @@
+// Soft backend throughput at 1280x720, each case at 1 and 2 threads (SoftOptions::threads;
+// the argument) so the 2-thread speed-up can be read off directly. Wall-clock time
+// (UseRealTime) throughout: the work runs on TBB workers, not only the timing thread.
+//   DepthOnly     8 full-screen quads at decreasing depth, no colour target, Less + write,
+//                 depth cleared each pass (the clear is part of the measured pass)
+//   FlatFill      8 full-screen opaque Flat quads into RGBA8 (load, no depth)
+//   TexturedAlpha 4 full-screen FoliageColor quads, 256^2 RGBA8 mipmapped texture
+//                 (trilinear), alpha test discarding below 0.5 (about half the texels)
+//   BlendFill     8 full-screen alpha-over quads (alpha 0.5) into RGBA8
+//   SmallTris     100k triangles of ~10 px each, Flat into RGBA8 + depth (LessEqual)
+//   SetupCulled   1M triangles outside the viewport (inside the guard band): vertex
+//                 stage, clipping and setup only, every triangle dropped
+//   SetupTiny     1M sub-pixel triangles on screen: setup, binning and block rejection
+//   Memcpy        256 MiB memcpy split over the threads: the bandwidth bound
+// "Mpix/s" counts pixels that passed coverage (and depth) per second; "Mtri/s" triangles
+// submitted per second; "pix/pass" the pixels of one pass. Memory-bandwidth bound for
+// depth-only fill: a depth test + write moves 4 bytes read + 4 bytes written per pixel, as
+// memcpy reads and writes each byte once, so bound Mpix/s = memcpy bytes/s / 8: Memcpy
+// reports that bound as its "Mpix/s" (every run has the same counters, as the CSV and
+// JSON reporters require).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <span>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/vertex.hpp"
+
+namespace {
+
+namespace render = engine::render;
+namespace soft = engine::render::soft;
+
+constexpr int kWidth = 1280, kHeight = 720;
+constexpr std::uint64_t kScreenPixels = std::uint64_t(kWidth) * kHeight;
+
+template <typename T>
+std::span<const std::byte> bytesOf(const std::vector<T>& v) {
+    return std::as_bytes(std::span<const T>(v));
+}
+
+// A full-screen quad (two counter-clockwise triangles) at clip depth z, uv 0..1.
+void appendQuad(std::vector<render::Vertex>& out, float z) {
+    auto at = [&](float x, float y) {
+        render::Vertex v;
+        v.position = {x, y, z};
+        v.uv = {0.5f * (x + 1.0f), 0.5f * (1.0f - y)};
+        return v;
+    };
+    const render::Vertex bl = at(-1, -1), br = at(1, -1), tr = at(1, 1), tl = at(-1, 1);
+    out.insert(out.end(), {bl, br, tr, bl, tr, tl});
+}
+
+render::TextureHandle renderTarget(render::Backend& b, render::Format format) {
+    render::TextureDesc d;
+    d.name = render::formatName(format);
+    d.width = kWidth;
+    d.height = kHeight;
+    d.format = format;
+    d.usage = render::UsageRenderTarget;
+    return b.createTexture(d);
+}
+
+render::BufferHandle vertexBuffer(render::Backend& b, const std::vector<render::Vertex>& v) {
+    return b.createBuffer({"vertices", render::BufferKind::Vertex, v.size() * sizeof(render::Vertex)}, bytesOf(v));
+}
+
+// 256x256 RGBA8 with a full mip chain: colour gradients, alpha in soft-edged leaf blobs
+// covering about half the texture.
+render::TextureHandle foliageTexture(render::Backend& b) {
+    constexpr int kSize = 256;
+    std::vector<std::uint8_t> texels(kSize * kSize * 4);
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            std::uint8_t* t = &texels[(std::size_t(y) * kSize + x) * 4];
+            const float leaf = std::sin(x * 0.19f) * std::sin(y * 0.23f) + 0.3f * std::sin((x + y) * 0.05f);
+            t[0] = std::uint8_t(40 + x / 4);
+            t[1] = std::uint8_t(120 + y / 3);
+            t[2] = std::uint8_t(30 + (x ^ y) / 8);
+            t[3] = std::uint8_t(std::clamp(128.0f + 400.0f * leaf, 0.0f, 255.0f));
+        }
+    render::TextureDesc d;
+    d.name = "foliage";
+    d.width = d.height = kSize;
+    d.mipLevels = 9;
+    render::TextureData data;
+    data.levels.push_back(std::as_bytes(std::span<const std::uint8_t>(texels)));
+    return b.createTexture(d, &data);
+}
+
+struct Counts {
+    std::uint64_t pixels = 0;
+    std::uint64_t triangles = 0;
+};
+
+// Runs `pass` once untimed (warm-up, and to measure the work per pass from the backend's
+// counters), then once per iteration; reports Mpix/s and Mtri/s.
+template <typename Pass>
+void runPasses(benchmark::State& state, soft::SoftBackend& backend, Pass&& pass) {
+    const soft::SoftStats before = backend.stats();
+    pass();
+    const soft::SoftStats after = backend.stats();
+    const Counts perPass{after.pixelsTouched - before.pixelsTouched, after.trianglesIn - before.trianglesIn};
+    for (auto _ : state) pass();
+    const double n = double(state.iterations());
+    state.SetItemsProcessed(std::int64_t(n * double(perPass.pixels ? perPass.pixels : perPass.triangles)));
+    state.counters["Mpix/s"] = benchmark::Counter(n * double(perPass.pixels) / 1e6, benchmark::Counter::kIsRate);
+    state.counters["Mtri/s"] = benchmark::Counter(n * double(perPass.triangles) / 1e6, benchmark::Counter::kIsRate);
+    state.counters["pix/pass"] = double(perPass.pixels);
+}
+
+std::unique_ptr<soft::SoftBackend> makeBackend(const benchmark::State& state) {
+    return soft::createSoftBackend({int(state.range(0)), 64, false});
+}
+
+void draw(render::Backend& b, render::PipelineHandle p, render::BufferHandle vb, std::uint32_t count,
+          const render::ProgramParams& params) {
+    render::DrawDesc d;
+    d.pipeline = p;
+    d.params = params;
+    d.vertices = vb;
+    d.count = count;
+    b.draw(d);
+}
+
+void BM_DepthOnly(benchmark::State& state) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto depth = renderTarget(b, render::Format::D32F);
+    std::vector<render::Vertex> quads;
+    for (int i = 0; i < 8; ++i) appendQuad(quads, 0.9f - 0.1f * float(i));
+    const auto vb = vertexBuffer(b, quads);
+    render::PipelineDesc pd;
+    pd.name = "depth-only";
+    pd.depth = render::DepthState::testAndWrite(render::CompareFunc::Less);
+    const auto pipeline = b.createPipeline(pd);
+    render::PassDesc pass;
+    pass.name = "depth";
+    pass.depth = {depth, render::LoadOp::Clear, 1.0f};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        draw(b, pipeline, vb, std::uint32_t(quads.size()), render::FlatParams{});
+        b.endPass();
+    });
+}
+
+// Full-screen quads into an RGBA8 target (loaded, no depth) with the given blend.
+void fillColor(benchmark::State& state, const render::BlendState& blend, glm::vec4 color) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_UNORM);
+    std::vector<render::Vertex> quads;
+    for (int i = 0; i < 8; ++i) appendQuad(quads, 0.5f);
+    const auto vb = vertexBuffer(b, quads);
+    render::PipelineDesc pd;
+    pd.blend[0] = blend;
+    const auto pipeline = b.createPipeline(pd);
+    render::PassDesc pass;
+    pass.name = "fill";
+    pass.color[0] = {target, render::LoadOp::Load, glm::vec4(0.0f)};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        draw(b, pipeline, vb, std::uint32_t(quads.size()), render::FlatParams{glm::mat4(1.0f), color});
+        b.endPass();
+    });
+}
+
+void BM_FlatFill(benchmark::State& state) { fillColor(state, render::BlendState::opaque(), {0.8f, 0.4f, 0.2f, 1.0f}); }
+void BM_BlendFill(benchmark::State& state) {
+    fillColor(state, render::BlendState::alphaOver(), {0.8f, 0.4f, 0.2f, 0.5f});
+}
+
+void BM_TexturedAlpha(benchmark::State& state) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_UNORM);
+    const auto texture = foliageTexture(b);
+    std::vector<render::Vertex> quads;
+    for (int i = 0; i < 4; ++i) appendQuad(quads, 0.5f);
+    const auto vb = vertexBuffer(b, quads);
+    render::PipelineDesc pd;
+    pd.program = render::ProgramKind::FoliageColor;
+    pd.alphaTest = render::AlphaTest::discardBelow(0.5f);
+    const auto pipeline = b.createPipeline(pd);
+    render::SurfaceParams params;
+    params.baseColor = {texture, {}};
+    render::PassDesc pass;
+    pass.name = "foliage";
+    pass.color[0] = {target, render::LoadOp::Load, glm::vec4(0.0f)};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        draw(b, pipeline, vb, std::uint32_t(quads.size()), params);
+        b.endPass();
+    });
+}
+
+// 100k right triangles with 4.5 px legs (~10 px each) on a 400 x 250 grid over the screen.
+void BM_SmallTris(benchmark::State& state) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_UNORM);
+    const auto depth = renderTarget(b, render::Format::D32F);
+    std::vector<render::Vertex> tris;
+    constexpr int kCols = 400, kRows = 250;
+    tris.reserve(std::size_t(kCols) * kRows * 3);
+    auto vertex = [](float px, float py, float z) {
+        render::Vertex v;
+        v.position = {2.0f * px / kWidth - 1.0f, 1.0f - 2.0f * py / kHeight, z};
+        return v;
+    };
+    for (int r = 0; r < kRows; ++r)
+        for (int c = 0; c < kCols; ++c) {
+            const float x = (c + 0.37f) * (float(kWidth) / kCols), y = (r + 0.21f) * (float(kHeight) / kRows);
+            const float z = 0.2f + 0.6f * float((r * 7 + c * 13) % 64) / 64.0f;
+            tris.push_back(vertex(x, y + 4.5f, z));
+            tris.push_back(vertex(x + 4.5f, y + 4.5f, z));
+            tris.push_back(vertex(x, y, z));
+        }
+    const auto vb = vertexBuffer(b, tris);
+    render::PipelineDesc pd;
+    pd.depth = render::DepthState::testAndWrite(render::CompareFunc::LessEqual);
+    const auto pipeline = b.createPipeline(pd);
+    render::PassDesc pass;
+    pass.name = "small";
+    pass.color[0] = {target, render::LoadOp::Load, glm::vec4(0.0f)};
+    pass.depth = {depth, render::LoadOp::Clear, 1.0f};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        draw(b, pipeline, vb, std::uint32_t(tris.size()), render::FlatParams{});
+        b.endPass();
+    });
+}
+
+// 1M triangles through the geometry stage; `onScreen`: sub-pixel ones spread over the
+// screen (binned, rejected by the block test), else all left of the viewport (culled).
+void setupThroughput(benchmark::State& state, bool onScreen) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_UNORM);
+    constexpr int kTriangles = 1'000'000;
+    std::vector<render::Vertex> tris;
+    tris.reserve(kTriangles * 3);
+    std::uint32_t seed = 12345;
+    auto rnd = [&] {
+        seed = seed * 1664525u + 1013904223u;
+        return float(seed >> 8) / float(1 << 24);
+    };
+    for (int t = 0; t < kTriangles; ++t) {
+        const float cx = onScreen ? rnd() * 2.0f - 1.0f : -1.5f - rnd(), cy = rnd() * 2.0f - 1.0f;
+        const float s = 0.5f / kWidth;  // half a pixel
+        render::Vertex v;
+        v.position = {cx, cy, 0.5f};
+        tris.push_back(v);
+        v.position = {cx + 2 * s, cy, 0.5f};
+        tris.push_back(v);
+        v.position = {cx, cy + 2 * s, 0.5f};
+        tris.push_back(v);
+    }
+    const auto vb = vertexBuffer(b, tris);
+    const auto pipeline = b.createPipeline({});
+    render::PassDesc pass;
+    pass.name = "setup";
+    pass.color[0] = {target, render::LoadOp::Load, glm::vec4(0.0f)};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        draw(b, pipeline, vb, std::uint32_t(tris.size()), render::FlatParams{});
+        b.endPass();
+    });
+}
+void BM_SetupCulled(benchmark::State& state) { setupThroughput(state, false); }
+void BM_SetupTiny(benchmark::State& state) { setupThroughput(state, true); }
+
+void BM_Memcpy(benchmark::State& state) {
+    constexpr std::size_t kBytes = std::size_t(256) << 20;
+    const int threads = int(state.range(0));
+    std::vector<char> src(kBytes, 1), dst(kBytes, 2);
+    auto copy = [&] {
+        if (threads == 1) {
+            std::memcpy(dst.data(), src.data(), kBytes);
+            return;
+        }
+        std::vector<std::thread> workers;
+        const std::size_t part = kBytes / std::size_t(threads);
+        for (int i = 0; i < threads; ++i)
+            workers.emplace_back([&, i] { std::memcpy(dst.data() + i * part, src.data() + i * part, part); });
+        for (std::thread& w : workers) w.join();
+    };
+    copy();
+    for (auto _ : state) {
+        copy();
+        benchmark::ClobberMemory();
+    }
+    state.SetBytesProcessed(std::int64_t(state.iterations()) * std::int64_t(kBytes));
+    // The depth-only bound (see the header): 8 bytes of traffic per pixel.
+    state.counters["Mpix/s"] =
+        benchmark::Counter(double(state.iterations()) * double(kBytes) / 8.0 / 1e6, benchmark::Counter::kIsRate);
+    state.counters["Mtri/s"] = 0.0;
+    state.counters["pix/pass"] = 0.0;
+}
+
+#define SOFT_BENCH(fn) BENCHMARK(fn)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime()->Unit(benchmark::kMillisecond)
+SOFT_BENCH(BM_DepthOnly);
+SOFT_BENCH(BM_FlatFill);
+SOFT_BENCH(BM_TexturedAlpha);
+SOFT_BENCH(BM_BlendFill);
+SOFT_BENCH(BM_SmallTris);
+SOFT_BENCH(BM_SetupCulled);
+SOFT_BENCH(BM_SetupTiny);
+SOFT_BENCH(BM_Memcpy);
+
+}  // namespace
+
+BENCHMARK_MAIN();
