@@ -1,4 +1,4 @@
-// The soft backend's table-driven sRGB encode (pixel_codec.hpp, an internal header) against
+// The soft backend's table-driven sRGB encode (engine/render/pixel_codec.hpp) against
 // the exact curve it replaces: every stored byte of an sRGB target depends on it.
 #include <algorithm>
 #include <cstdint>
@@ -6,18 +6,18 @@
 
 #include <gtest/gtest.h>
 
-#include "pixel_codec.hpp"  // engine/render/soft/src
+#include "engine/render/pixel_codec.hpp"
 
 namespace {
 
-namespace soft = engine::render::soft;
+namespace codec = engine::render;
 
 // encodeSrgb8 (threshold tables) must give encodeSrgb8Exact's byte for every float. The
 // full check of all 2^30 patterns in [0, 1] was run once (seconds); here every 61st
 // pattern, every pattern within 4096 of each step, both signs, and the special values.
 TEST(SoftSrgbEncode, TableMatchesExactCurve) {
-    using soft::encodeSrgb8;
-    using soft::encodeSrgb8Exact;
+    using codec::encodeSrgb8;
+    using codec::encodeSrgb8Exact;
     auto fromBits = [](std::uint32_t b) {
         float f;
         std::memcpy(&f, &b, sizeof f);
@@ -34,7 +34,7 @@ TEST(SoftSrgbEncode, TableMatchesExactCurve) {
     };
     constexpr std::uint32_t kOne = 0x3F800000;
     for (std::uint32_t b = 0; b <= kOne; b += 61) check(b);
-    const soft::SrgbEncodeTables& tables = soft::srgbEncodeTables();
+    const codec::SrgbEncodeTables& tables = codec::srgbEncodeTables();
     for (int k = 1; k < 256; ++k) {
         std::uint32_t step;
         std::memcpy(&step, &tables.threshold[k], sizeof step);

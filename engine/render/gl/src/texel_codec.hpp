@@ -1,7 +1,7 @@
 #pragma once
 // CPU-side texel work the GL backend does itself so that it matches the soft backend bit for
 // bit: 16-bit float conversion (round to nearest even, Imath) and mip generation. The
-// encode/decode rules mirror engine/render/soft/src/pixel_codec.hpp (GL 4.5 §2.3.5, §17.3.6.3):
+// encode/decode rules are engine/render/pixel_codec.hpp's (GL 4.5 §2.3.5, §17.3.6.3):
 // UNORM clamps and rounds to nearest, NaN stores 0; sRGB decodes with the exact curve (table)
 // and encodes with the exact formula.
 #include <cstddef>

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pixel_codec.hpp"
+#include "engine/render/pixel_codec.hpp"
 
 namespace engine::render::soft {
 namespace {

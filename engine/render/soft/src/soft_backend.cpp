@@ -16,7 +16,7 @@
 #include "engine/render/resource_pool.hpp"
 #include "engine/render/vertex.hpp"
 #include "draw_state.hpp"
-#include "pixel_codec.hpp"
+#include "engine/render/pixel_codec.hpp"
 #include "sampler.hpp"
 #include "soft_texture.hpp"
 #include "tile_rasterizer.hpp"

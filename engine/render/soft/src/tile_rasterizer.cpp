@@ -10,7 +10,7 @@
 #endif
 
 #include "blend.hpp"
-#include "pixel_codec.hpp"
+#include "engine/render/pixel_codec.hpp"
 
 namespace engine::render::soft {
 namespace {

@@ -1,6 +1,6 @@
-#include "pixel_codec.hpp"
+#include "engine/render/pixel_codec.hpp"
 
-namespace engine::render::soft {
+namespace engine::render {
 
 ByteTables::ByteTables() {
     for (int i = 0; i < 256; ++i) {
@@ -46,4 +46,4 @@ const SrgbEncodeTables& srgbEncodeTables() {
     return tables;
 }
 
-}  // namespace engine::render::soft
+}  // namespace engine::render

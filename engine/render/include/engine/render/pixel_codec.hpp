@@ -12,7 +12,7 @@
 
 #include "engine/render/format.hpp"
 
-namespace engine::render::soft {
+namespace engine::render {
 
 // IEC 61966-2-1 curves, exact formulas.
 inline float srgbToLinearExact(float s) {
@@ -136,4 +136,4 @@ inline glm::vec4 quantize(const glm::vec4& v, Format format) {
     return q;
 }
 
-}  // namespace engine::render::soft
+}  // namespace engine::render
