@@ -21,6 +21,7 @@
 #include "engine/render/gl/fail_mode_plan.hpp"
 #include "engine/render/gl/gl_program.hpp"
 #include "engine/render/resource_pool.hpp"
+#include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
 #include "gl_shaders.hpp"
 #include "texel_codec.hpp"
@@ -28,7 +29,6 @@
 namespace engine::render::gl {
 namespace {
 
-std::string quoted(const std::string& name) { return "'" + (name.empty() ? std::string("<unnamed>") : name) + "'"; }
 
 std::string hex(unsigned v) {
     char buf[16];
@@ -194,7 +194,11 @@ class GlBackendImpl final : public GlBackend {
 public:
     GlBackendImpl(const GlOptions& options, std::shared_ptr<GlContext> context)
         : options_(options), context_(std::move(context)), textures_("texture"), buffers_("buffer"),
-          pipelines_("pipeline") {
+          pipelines_("pipeline"),
+          lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
+                  [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
+                  [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).shadow); },
+                  [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; }} {
         makeCurrent();
         const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
         if (!version) throw Error("GL backend: no GL context is current on this thread");
@@ -278,7 +282,7 @@ public:
     // ---- resources ---------------------------------------------------------------------
 
     TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
-        const std::string what = "texture " + quoted(desc.name);
+        const std::string what = "texture " + quotedName(desc.name);
         validateTextureDesc(desc, what);
         const GlFormat f = glFormat(desc.format);
         if (desc.samples > 1) {
@@ -319,7 +323,7 @@ public:
     }
 
     TextureHandle importTexture(unsigned int id, const TextureDesc& desc) override {
-        const std::string what = "imported texture " + quoted(desc.name);
+        const std::string what = "imported texture " + quotedName(desc.name);
         validateTextureDesc(desc, what);
         makeCurrent();
         drainGlErrors();
@@ -356,7 +360,7 @@ public:
     unsigned int glTexture(TextureHandle h) const override { return textures_.get(h).id; }
 
     BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
-        const std::string what = "buffer " + quoted(desc.name);
+        const std::string what = "buffer " + quotedName(desc.name);
         const std::uint64_t stride = desc.kind == BufferKind::Vertex   ? sizeof(Vertex)
                                      : desc.kind == BufferKind::Index ? sizeof(std::uint32_t)
                                                                       : sizeof(Instance);
@@ -394,7 +398,7 @@ public:
     void updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) override {
         GlBuffer& b = buffers_.get(handle);
         if (offset > b.desc.size || data.size() > b.desc.size - offset)
-            throw Error("buffer " + quoted(b.desc.name) + ": update of " + std::to_string(data.size()) +
+            throw Error("buffer " + quotedName(b.desc.name) + ": update of " + std::to_string(data.size()) +
                         " bytes at offset " + std::to_string(offset) + " overruns its " + std::to_string(b.desc.size) +
                         " bytes");
         if (data.empty()) return;
@@ -404,7 +408,7 @@ public:
     }
 
     PipelineHandle createPipeline(const PipelineDesc& desc) override {
-        const std::string what = "pipeline " + quoted(desc.name);
+        const std::string what = "pipeline " + quotedName(desc.name);
         if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
             throw Error(what + ": alpha reference is not finite");
         if (isFullscreen(desc.program) && desc.depth.test)
@@ -461,43 +465,29 @@ public:
     // ---- passes ------------------------------------------------------------------------
 
     void beginPass(const PassDesc& pass) override {
-        if (pass_) throw Error("pass " + quoted(pass.name) + " begun while pass " + quoted(pass_->name) + " is open");
-        int width = 0, height = 0, samples = 0, actual = 1;
-        auto checkSize = [&](const GlTexture& t) {
-            if (width == 0) {
-                width = t.desc.width, height = t.desc.height, samples = t.desc.samples, actual = t.actualSamples;
-            } else if (t.desc.width != width || t.desc.height != height || t.desc.samples != samples) {
-                throw Error("pass " + quoted(pass.name) + ": attachment " + quoted(t.desc.name) +
-                            " differs in size or sample count from the others");
-            }
-            if (!(t.desc.usage & UsageRenderTarget))
-                throw Error("pass " + quoted(pass.name) + ": " + quoted(t.desc.name) + " is not a render target");
-        };
+        if (pass_) throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
+        const PassExtent extent = validatePass(pass, lookup_);
+        const int width = extent.width, height = extent.height, samples = extent.samples;
+        int actual = 1;  // the samples the driver really gave (llvmpipe: 4 for 2)
         std::vector<GLuint> colorIds;
         targets_.clear();
         for (const ColorAttachment& c : pass.color) {
             if (!c.texture) continue;
             const GlTexture& t = textures_.get(c.texture);
-            if (formatInfo(t.desc.format).isDepth)
-                throw Error("pass " + quoted(pass.name) + ": depth texture " + quoted(t.desc.name) + " bound as colour");
-            checkSize(t);
+            actual = t.actualSamples;
             colorIds.push_back(t.id);
             targets_.push_back({c.texture, t.desc.format, c});
         }
         GLuint depthId = 0;
         if (pass.depth.texture) {
             const GlTexture& t = textures_.get(pass.depth.texture);
-            if (!formatInfo(t.desc.format).isDepth)
-                throw Error("pass " + quoted(pass.name) + ": " + quoted(t.desc.name) + " bound as depth is " +
-                            std::string(formatName(t.desc.format)));
-            checkSize(t);
+            actual = t.actualSamples;
             depthId = t.id;
         }
-        if (width == 0) throw Error("pass " + quoted(pass.name) + " has no attachments");
 
         makeCurrent();
         drainGlErrors();
-        const GLuint fbo = framebufferFor(colorIds, depthId, "pass " + quoted(pass.name));
+        const GLuint fbo = framebufferFor(colorIds, depthId, "pass " + quotedName(pass.name));
 
         // The pass's framebuffer is bound, and made known to the driver by a draw that
         // rasterizes nothing, before the query begins: llvmpipe starts the clock of a
@@ -510,7 +500,7 @@ public:
         glCreateQueries(GL_TIME_ELAPSED, 1, &passQuery_);
         glBeginQuery(GL_TIME_ELAPSED, passQuery_);
         try {
-            checkGl("pass " + quoted(pass.name) + ": starting its timer query");
+            checkGl("pass " + quotedName(pass.name) + ": starting its timer query");
         } catch (...) {
             glDeleteQueries(1, &passQuery_);
             passQuery_ = 0;
@@ -527,7 +517,7 @@ public:
         if (pass.depth.texture && pass.depth.load == LoadOp::Clear)
             clearTexture(textures_.get(pass.depth.texture), glm::vec4(pass.depth.clear));
         try {
-            checkGl("pass " + quoted(pass.name) + ": clearing");
+            checkGl("pass " + quotedName(pass.name) + ": clearing");
         } catch (...) {
             glEndQuery(GL_TIME_ELAPSED);
             glDeleteQueries(1, &passQuery_);
@@ -541,7 +531,7 @@ public:
 
     void draw(const DrawDesc& d) override {
         if (!pass_) throw Error("draw outside a pass");
-        validateDraw(d);
+        validateDraw(d, *pass_, {passWidth_, passHeight_, passSamples_}, lookup_);
         makeCurrent();
         execute(d);
     }
@@ -561,9 +551,9 @@ public:
         GlTexture& dst = textures_.get(r.destination);
         if (src.desc.width != dst.desc.width || src.desc.height != dst.desc.height || src.desc.format != dst.desc.format ||
             dst.desc.samples != 1)
-            throw Error("resolve " + quoted(src.desc.name) + " -> " + quoted(dst.desc.name) +
+            throw Error("resolve " + quotedName(src.desc.name) + " -> " + quotedName(dst.desc.name) +
                         ": needs the same size and format and a single-sampled destination");
-        const std::string what = "resolve " + quoted(src.desc.name) + " -> " + quoted(dst.desc.name);
+        const std::string what = "resolve " + quotedName(src.desc.name) + " -> " + quotedName(dst.desc.name);
         makeCurrent();
         drainGlErrors();
         const bool depth = formatInfo(src.desc.format).isDepth;
@@ -623,7 +613,7 @@ public:
 
     Readback readback(TextureHandle h) override {
         const GlTexture& t = textures_.get(h);
-        if (t.desc.samples != 1) throw Error("readback of " + quoted(t.desc.name) + ": multisampled; resolve it first");
+        if (t.desc.samples != 1) throw Error("readback of " + quotedName(t.desc.name) + ": multisampled; resolve it first");
         const FormatInfo& info = formatInfo(t.desc.format);
         const GlFormat f = glFormat(t.desc.format);
         Readback r;
@@ -640,7 +630,7 @@ public:
         glPixelStorei(GL_PACK_SKIP_ROWS, 0);
         glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-        const std::string what = "readback of " + quoted(t.desc.name);
+        const std::string what = "readback of " + quotedName(t.desc.name);
         if (info.isNormalized()) {
             // Stored codes / 255; sRGB is not decoded (a texture view as RGBA8 reads the codes).
             std::vector<std::uint8_t> bytes(values);
@@ -678,9 +668,9 @@ public:
 
     bool present(TextureHandle h) override {
         const GlTexture& t = textures_.get(h);
-        if (t.desc.samples != 1) throw Error("present of " + quoted(t.desc.name) + ": multisampled; resolve it first");
-        if (formatInfo(t.desc.format).isDepth) throw Error("present of " + quoted(t.desc.name) + ": a depth texture");
-        if (pass_) throw Error("present of " + quoted(t.desc.name) + " while pass " + quoted(pass_->name) + " is open");
+        if (t.desc.samples != 1) throw Error("present of " + quotedName(t.desc.name) + ": multisampled; resolve it first");
+        if (formatInfo(t.desc.format).isDepth) throw Error("present of " + quotedName(t.desc.name) + ": a depth texture");
+        if (pass_) throw Error("present of " + quotedName(t.desc.name) + " while pass " + quotedName(pass_->name) + " is open");
         if (!context_ || !context_->hasWindow()) return false;
         const glm::ivec2 size = context_->framebufferSize();
         if (size.x <= 0 || size.y <= 0) return false;  // minimised: nothing to show, nothing to swap
@@ -701,7 +691,7 @@ public:
                                same ? GL_NEAREST : GL_LINEAR);
         glDeleteFramebuffers(1, &fbo);
         glEnable(GL_FRAMEBUFFER_SRGB);
-        checkGl("present of " + quoted(t.desc.name));
+        checkGl("present of " + quotedName(t.desc.name));
         context_->swapBuffers();
         return true;
     }
@@ -868,76 +858,6 @@ private:
         glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         glClampColor(GL_CLAMP_READ_COLOR, GL_FALSE);
-    }
-
-    const GlTexture& sampledTexture(TextureHandle h, const std::string& what) const {
-        const GlTexture& t = textures_.get(h);
-        if (t.desc.samples != 1) throw Error(what + ": samples multisampled texture " + quoted(t.desc.name));
-        for (const ColorAttachment& c : pass_->color)
-            if (c.texture == h) throw Error(what + ": samples " + quoted(t.desc.name) + " while rendering into it");
-        if (pass_->depth.texture == h) throw Error(what + ": samples depth target " + quoted(t.desc.name));
-        return t;
-    }
-
-    void validateDraw(const DrawDesc& d) {
-        const GlPipeline& p = pipelines_.get(d.pipeline);
-        const std::string what = "draw with pipeline " + quoted(p.desc.name) + " in pass " + quoted(pass_->name);
-        if (d.params.index() != paramsIndexFor(p.desc.program))
-            throw Error(what + ": parameters do not match program " + programKindName(p.desc.program));
-        if (p.desc.depth.test && !pass_->depth.texture)
-            throw Error(what + ": depth test on but the pass has no depth target");
-        if (isFullscreen(p.desc.program)) {
-            const CompositeParams& c = std::get<CompositeParams>(d.params);
-            for (TextureHandle h : {c.foliage, c.mask}) {
-                const GlTexture& t = sampledTexture(h, what);
-                if (t.desc.width < passWidth_ || t.desc.height < passHeight_)
-                    throw Error(what + ": input " + quoted(t.desc.name) + " is smaller than the target");
-            }
-            if (c.maskAdd) {
-                // The soft backend reads the ADD mask at every target pixel too.
-                const GlTexture& t = sampledTexture(c.maskAdd, what);
-                if (t.desc.width < passWidth_ || t.desc.height < passHeight_)
-                    throw Error(what + ": input " + quoted(t.desc.name) + " is smaller than the target");
-            }
-            if (!std::isfinite(c.maskLerp)) throw Error(what + ": maskLerp is not finite");
-            return;
-        }
-        if (d.count % 3 != 0) throw Error(what + ": count " + std::to_string(d.count) + " is not a multiple of 3");
-        const GlBuffer& vb = buffers_.get(d.vertices);
-        if (vb.desc.kind != BufferKind::Vertex) throw Error(what + ": " + quoted(vb.desc.name) + " is not a vertex buffer");
-        const std::uint64_t vertexCount = vb.desc.size / sizeof(Vertex);
-        if (d.indices) {
-            const GlBuffer& ib = buffers_.get(d.indices);
-            if (ib.desc.kind != BufferKind::Index) throw Error(what + ": " + quoted(ib.desc.name) + " is not an index buffer");
-            const std::uint64_t indexCount = ib.desc.size / 4;
-            if (std::uint64_t(d.first) + d.count > indexCount)
-                throw Error(what + ": indices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
-                            ") outside " + quoted(ib.desc.name) + " of " + std::to_string(indexCount));
-            const auto* indices = reinterpret_cast<const std::uint32_t*>(ib.shadow.data()) + d.first;
-            for (std::uint32_t i = 0; i < d.count; ++i)
-                if (indices[i] >= vertexCount)
-                    throw Error(what + ": index " + std::to_string(indices[i]) + " at position " +
-                                std::to_string(d.first + i) + " >= vertex count " + std::to_string(vertexCount));
-        } else if (std::uint64_t(d.first) + d.count > vertexCount) {
-            throw Error(what + ": vertices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
-                        ") outside " + quoted(vb.desc.name) + " of " + std::to_string(vertexCount));
-        }
-        if (d.instances) {
-            const GlBuffer& inst = buffers_.get(d.instances);
-            if (inst.desc.kind != BufferKind::Instance)
-                throw Error(what + ": " + quoted(inst.desc.name) + " is not an instance buffer");
-            if (std::uint64_t(d.instanceCount) * sizeof(Instance) > inst.desc.size)
-                throw Error(what + ": " + std::to_string(d.instanceCount) + " instances exceed " + quoted(inst.desc.name));
-        } else if (d.instanceCount != 1) {
-            throw Error(what + ": instanceCount " + std::to_string(d.instanceCount) + " without an instance buffer");
-        }
-        std::visit(
-            [&](const auto& params) {
-                using P = std::decay_t<decltype(params)>;
-                if constexpr (std::is_same_v<P, SurfaceParams> || std::is_same_v<P, AlphaOnlyParams>)
-                    if (params.baseColor.texture) sampledTexture(params.baseColor.texture, what);
-            },
-            d.params);
     }
 
     // ---- programs ------------------------------------------------------------------------
@@ -1174,7 +1094,7 @@ private:
                 for (const PlanStep& step : plan.steps)
                     if (applyStep(step)) drawRange(d, d.first, d.count, 0, d.instanceCount);
         }
-        checkGl("draw with pipeline " + quoted(desc.name) + " in pass " + quoted(pass_->name));
+        checkGl("draw with pipeline " + quotedName(desc.name) + " in pass " + quotedName(pass_->name));
     }
 
     void drawRange(const DrawDesc& d, std::uint32_t first, std::uint32_t count, std::uint32_t baseInstance,
@@ -1204,6 +1124,7 @@ private:
     ResourcePool<TextureTag, GlTexture> textures_;
     ResourcePool<BufferTag, GlBuffer> buffers_;
     ResourcePool<PipelineTag, GlPipeline> pipelines_;
+    ResourceLookup lookup_;  // what the shared validation reads
     std::set<GLuint> ownedTextures_, ownedBuffers_;
     std::map<GLenum, int> maxSamplesByFormat_;
     std::map<std::vector<GLuint>, GLuint> framebuffers_;

@@ -14,6 +14,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/render/resource_pool.hpp"
+#include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
 #include "draw_state.hpp"
 #include "engine/render/pixel_codec.hpp"
@@ -48,8 +49,6 @@ struct GeometryChunk {
     SetupCounters counters;
 };
 
-std::string quoted(const std::string& name) { return "'" + (name.empty() ? std::string("<unnamed>") : name) + "'"; }
-
 bool validSampleCount(int s) { return s == 1 || s == 2 || s == 4 || s == 8; }
 
 // The alpha test can only matter when a failing fragment writes something different
@@ -70,7 +69,11 @@ public:
     explicit SoftBackendImpl(const SoftOptions& options)
         : options_(options),
           arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic),
-          textures_("texture"), buffers_("buffer"), pipelines_("pipeline") {
+          textures_("texture"), buffers_("buffer"), pipelines_("pipeline"),
+          lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
+                  [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
+                  [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).bytes); },
+                  [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; }} {
         if (options.tileSize < 8 || options.tileSize % 8 != 0 || options.tileSize > 1024)
             throw Error("soft backend: tileSize " + std::to_string(options.tileSize) +
                         " must be a multiple of 8 in [8, 1024]");
@@ -81,7 +84,7 @@ public:
     const SoftOptions& options() const override { return options_; }
 
     TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
-        const std::string what = "texture " + quoted(desc.name);
+        const std::string what = "texture " + quotedName(desc.name);
         if (desc.width <= 0 || desc.height <= 0)
             throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
                         " is empty");
@@ -118,7 +121,7 @@ public:
     }
 
     BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
-        const std::string what = "buffer " + quoted(desc.name);
+        const std::string what = "buffer " + quotedName(desc.name);
         const std::uint64_t stride = desc.kind == BufferKind::Vertex   ? sizeof(Vertex)
                                      : desc.kind == BufferKind::Index ? sizeof(std::uint32_t)
                                                                       : sizeof(Instance);
@@ -136,7 +139,7 @@ public:
     void updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) override {
         SoftBuffer& b = buffers_.get(handle);
         if (offset > b.bytes.size() || data.size() > b.bytes.size() - offset)
-            throw Error("buffer " + quoted(b.desc.name) + ": update of " + std::to_string(data.size()) +
+            throw Error("buffer " + quotedName(b.desc.name) + ": update of " + std::to_string(data.size()) +
                         " bytes at offset " + std::to_string(offset) + " overruns its " +
                         std::to_string(b.bytes.size()) + " bytes");
         if (data.empty()) return;
@@ -155,7 +158,7 @@ public:
     }
 
     PipelineHandle createPipeline(const PipelineDesc& desc) override {
-        const std::string what = "pipeline " + quoted(desc.name);
+        const std::string what = "pipeline " + quotedName(desc.name);
         if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
             throw Error(what + ": alpha reference is not finite");
         if (isFullscreen(desc.program) && desc.depth.test)
@@ -181,35 +184,10 @@ public:
     PipelineInfo pipelineInfo(PipelineHandle h) const override { return pipelines_.get(h).info; }
 
     void beginPass(const PassDesc& pass) override {
-        if (pass_) throw Error("pass " + quoted(pass.name) + " begun while pass " + quoted(pass_->name) + " is open");
-        int width = 0, height = 0, samples = 0;
-        auto checkSize = [&](const SoftTexture& t) {
-            if (width == 0) {
-                width = t.desc.width, height = t.desc.height, samples = t.desc.samples;
-            } else if (t.desc.width != width || t.desc.height != height || t.desc.samples != samples) {
-                throw Error("pass " + quoted(pass.name) + ": attachment " + quoted(t.desc.name) +
-                            " differs in size or sample count from the others");
-            }
-            if (!(t.desc.usage & UsageRenderTarget))
-                throw Error("pass " + quoted(pass.name) + ": " + quoted(t.desc.name) + " is not a render target");
-        };
-        for (const ColorAttachment& c : pass.color) {
-            if (!c.texture) continue;
-            const SoftTexture& t = textures_.get(c.texture);
-            if (formatInfo(t.desc.format).isDepth)
-                throw Error("pass " + quoted(pass.name) + ": depth texture " + quoted(t.desc.name) + " bound as colour");
-            checkSize(t);
-        }
-        if (pass.depth.texture) {
-            const SoftTexture& t = textures_.get(pass.depth.texture);
-            if (!formatInfo(t.desc.format).isDepth)
-                throw Error("pass " + quoted(pass.name) + ": " + quoted(t.desc.name) + " bound as depth is " +
-                            std::string(formatName(t.desc.format)));
-            checkSize(t);
-        }
-        if (width == 0) throw Error("pass " + quoted(pass.name) + " has no attachments");
+        if (pass_) throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
+        const PassExtent extent = validatePass(pass, lookup_);
         pass_ = pass;
-        passWidth_ = width, passHeight_ = height, passSamples_ = samples;
+        passWidth_ = extent.width, passHeight_ = extent.height, passSamples_ = extent.samples;
         passStart_ = Clock::now();
         draws_.clear();
         for (const ColorAttachment& c : pass.color)
@@ -220,7 +198,7 @@ public:
 
     void draw(const DrawDesc& d) override {
         if (!pass_) throw Error("draw outside a pass");
-        validateDraw(d);
+        validateDraw(d, *pass_, {passWidth_, passHeight_, passSamples_}, lookup_);
         draws_.push_back({d});
     }
 
@@ -246,7 +224,7 @@ public:
         SoftTexture& dst = textures_.get(r.destination);
         if (src.desc.width != dst.desc.width || src.desc.height != dst.desc.height || src.desc.format != dst.desc.format ||
             dst.desc.samples != 1)
-            throw Error("resolve " + quoted(src.desc.name) + " -> " + quoted(dst.desc.name) +
+            throw Error("resolve " + quotedName(src.desc.name) + " -> " + quotedName(dst.desc.name) +
                         ": needs the same size and format and a single-sampled destination");
         const bool depth = formatInfo(src.desc.format).isDepth;
         const int n = src.desc.samples;
@@ -276,7 +254,7 @@ public:
     Readback readback(TextureHandle h) override {
         const SoftTexture& t = textures_.get(h);
         if (t.desc.samples != 1)
-            throw Error("readback of " + quoted(t.desc.name) + ": multisampled; resolve it first");
+            throw Error("readback of " + quotedName(t.desc.name) + ": multisampled; resolve it first");
         const FormatInfo& info = formatInfo(t.desc.format);
         Readback r;
         r.width = t.desc.width;
@@ -360,71 +338,6 @@ private:
         }
         filled += blocks * kBlock;
         if (filled < size) std::memcpy(out + filled, out, size - filled);
-    }
-
-    const SoftTexture& sampledTexture(TextureHandle h, const std::string& what) const {
-        const SoftTexture& t = textures_.get(h);
-        if (t.desc.samples != 1) throw Error(what + ": samples multisampled texture " + quoted(t.desc.name));
-        for (const ColorAttachment& c : pass_->color)
-            if (c.texture == h) throw Error(what + ": samples " + quoted(t.desc.name) + " while rendering into it");
-        if (pass_->depth.texture == h) throw Error(what + ": samples depth target " + quoted(t.desc.name));
-        return t;
-    }
-
-    void validateDraw(const DrawDesc& d) {
-        const SoftPipeline& p = pipelines_.get(d.pipeline);
-        const std::string what = "draw with pipeline " + quoted(p.desc.name) + " in pass " + quoted(pass_->name);
-        if (d.params.index() != paramsIndexFor(p.desc.program))
-            throw Error(what + ": parameters do not match program " + programKindName(p.desc.program));
-        if (p.desc.depth.test && !pass_->depth.texture)
-            throw Error(what + ": depth test on but the pass has no depth target");
-        if (isFullscreen(p.desc.program)) {
-            const CompositeParams& c = std::get<CompositeParams>(d.params);
-            for (TextureHandle h : {c.foliage, c.mask}) {
-                const SoftTexture& t = sampledTexture(h, what);
-                if (t.desc.width < passWidth_ || t.desc.height < passHeight_)
-                    throw Error(what + ": input " + quoted(t.desc.name) + " is smaller than the target");
-            }
-            if (c.maskAdd) sampledTexture(c.maskAdd, what);
-            if (!std::isfinite(c.maskLerp)) throw Error(what + ": maskLerp is not finite");
-            return;
-        }
-        if (d.count % 3 != 0) throw Error(what + ": count " + std::to_string(d.count) + " is not a multiple of 3");
-        const SoftBuffer& vb = buffers_.get(d.vertices);
-        if (vb.desc.kind != BufferKind::Vertex) throw Error(what + ": " + quoted(vb.desc.name) + " is not a vertex buffer");
-        const std::uint64_t vertexCount = vb.bytes.size() / sizeof(Vertex);
-        if (d.indices) {
-            const SoftBuffer& ib = buffers_.get(d.indices);
-            if (ib.desc.kind != BufferKind::Index) throw Error(what + ": " + quoted(ib.desc.name) + " is not an index buffer");
-            const std::uint64_t indexCount = ib.bytes.size() / 4;
-            if (std::uint64_t(d.first) + d.count > indexCount)
-                throw Error(what + ": indices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
-                            ") outside " + quoted(ib.desc.name) + " of " + std::to_string(indexCount));
-            const auto* indices = reinterpret_cast<const std::uint32_t*>(ib.bytes.data()) + d.first;
-            for (std::uint32_t i = 0; i < d.count; ++i)
-                if (indices[i] >= vertexCount)
-                    throw Error(what + ": index " + std::to_string(indices[i]) + " at position " +
-                                std::to_string(d.first + i) + " >= vertex count " + std::to_string(vertexCount));
-        } else if (std::uint64_t(d.first) + d.count > vertexCount) {
-            throw Error(what + ": vertices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
-                        ") outside " + quoted(vb.desc.name) + " of " + std::to_string(vertexCount));
-        }
-        if (d.instances) {
-            const SoftBuffer& inst = buffers_.get(d.instances);
-            if (inst.desc.kind != BufferKind::Instance)
-                throw Error(what + ": " + quoted(inst.desc.name) + " is not an instance buffer");
-            if (std::uint64_t(d.instanceCount) * sizeof(Instance) > inst.bytes.size())
-                throw Error(what + ": " + std::to_string(d.instanceCount) + " instances exceed " + quoted(inst.desc.name));
-        } else if (d.instanceCount != 1) {
-            throw Error(what + ": instanceCount " + std::to_string(d.instanceCount) + " without an instance buffer");
-        }
-        std::visit(
-            [&](const auto& params) {
-                using P = std::decay_t<decltype(params)>;
-                if constexpr (std::is_same_v<P, SurfaceParams> || std::is_same_v<P, AlphaOnlyParams>)
-                    if (params.baseColor.texture) sampledTexture(params.baseColor.texture, what);
-            },
-            d.params);
     }
 
     Viewport viewportFor(const DrawDesc& d) const {
@@ -632,7 +545,7 @@ private:
                         for (int ch = 0; ch < channels; ++ch) count += !std::isfinite(v[ch]);
                     }
         }
-        if (count) log::warn("pass ", quoted(pass_->name), ": ", count, " non-finite values in float targets");
+        if (count) log::warn("pass ", quotedName(pass_->name), ": ", count, " non-finite values in float targets");
         stats_.nonFiniteStores += count;
     }
 
@@ -641,6 +554,7 @@ private:
     ResourcePool<TextureTag, SoftTexture> textures_;
     ResourcePool<BufferTag, SoftBuffer> buffers_;
     ResourcePool<PipelineTag, SoftPipeline> pipelines_;
+    ResourceLookup lookup_;  // what the shared validation reads
     std::optional<PassDesc> pass_;
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
     Clock::time_point passStart_;

@@ -1,0 +1,41 @@
+#pragma once
+// The misuse checks every backend makes before it renders, in one place so every backend
+// refuses the same things with the same messages (the GL tests compare them with soft's).
+// Resources are reached through lookups that throw engine::Error for stale handles.
+#include <cstddef>
+#include <functional>
+#include <span>
+
+#include "engine/render/buffer.hpp"
+#include "engine/render/pass.hpp"
+#include "engine/render/pipeline.hpp"
+#include "engine/render/texture.hpp"
+
+namespace engine::render {
+
+struct PassExtent {
+    int width = 0;
+    int height = 0;
+    int samples = 0;
+};
+
+struct ResourceLookup {
+    std::function<const TextureDesc&(TextureHandle)> texture;
+    std::function<const BufferDesc&(BufferHandle)> buffer;
+    std::function<std::span<const std::byte>(BufferHandle)> indexData;  // contents of an index buffer
+    std::function<const PipelineDesc&(PipelineHandle)> pipeline;
+};
+
+// Colour attachments are colour render targets, the depth attachment is D32F, all share one
+// size and sample count, and there is at least one. Returns that size.
+PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup);
+
+// The draw's parameters match its program, buffers are of the right kind and hold every
+// index, vertex and instance it reads, sampled textures are single-sampled, large enough
+// for full-screen programs and not bound as a target of the pass.
+void validateDraw(const DrawDesc& draw, const PassDesc& pass, const PassExtent& extent, const ResourceLookup& lookup);
+
+// 'name', or '<unnamed>': how resources are named in error messages.
+std::string quotedName(const std::string& name);
+
+}  // namespace engine::render

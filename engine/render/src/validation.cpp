@@ -1,0 +1,117 @@
+#include "engine/render/validation.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "engine/core/error.hpp"
+#include "engine/render/vertex.hpp"
+
+namespace engine::render {
+
+std::string quotedName(const std::string& name) { return "'" + (name.empty() ? std::string("<unnamed>") : name) + "'"; }
+
+PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup) {
+    const std::string what = "pass " + quotedName(pass.name);
+    PassExtent extent;
+    auto checkSize = [&](const TextureDesc& t) {
+        if (extent.width == 0) {
+            extent = {t.width, t.height, t.samples};
+        } else if (t.width != extent.width || t.height != extent.height || t.samples != extent.samples) {
+            throw Error(what + ": attachment " + quotedName(t.name) + " differs in size or sample count from the others");
+        }
+        if (!(t.usage & UsageRenderTarget)) throw Error(what + ": " + quotedName(t.name) + " is not a render target");
+    };
+    for (const ColorAttachment& c : pass.color) {
+        if (!c.texture) continue;
+        const TextureDesc& t = lookup.texture(c.texture);
+        if (formatInfo(t.format).isDepth) throw Error(what + ": depth texture " + quotedName(t.name) + " bound as colour");
+        checkSize(t);
+    }
+    if (pass.depth.texture) {
+        const TextureDesc& t = lookup.texture(pass.depth.texture);
+        if (!formatInfo(t.format).isDepth)
+            throw Error(what + ": " + quotedName(t.name) + " bound as depth is " + std::string(formatName(t.format)));
+        checkSize(t);
+    }
+    if (extent.width == 0) throw Error(what + " has no attachments");
+    return extent;
+}
+
+namespace {
+
+const TextureDesc& sampledTexture(TextureHandle h, const PassDesc& pass, const ResourceLookup& lookup,
+                                  const std::string& what) {
+    const TextureDesc& t = lookup.texture(h);
+    if (t.samples != 1) throw Error(what + ": samples multisampled texture " + quotedName(t.name));
+    for (const ColorAttachment& c : pass.color)
+        if (c.texture == h) throw Error(what + ": samples " + quotedName(t.name) + " while rendering into it");
+    if (pass.depth.texture == h) throw Error(what + ": samples depth target " + quotedName(t.name));
+    return t;
+}
+
+const BufferDesc& bufferOfKind(BufferHandle h, BufferKind kind, const char* kindName, const ResourceLookup& lookup,
+                               const std::string& what) {
+    const BufferDesc& b = lookup.buffer(h);
+    if (b.kind != kind) throw Error(what + ": " + quotedName(b.name) + " is not " + kindName);
+    return b;
+}
+
+}  // namespace
+
+void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& extent, const ResourceLookup& lookup) {
+    const PipelineDesc& p = lookup.pipeline(d.pipeline);
+    const std::string what = "draw with pipeline " + quotedName(p.name) + " in pass " + quotedName(pass.name);
+    if (d.params.index() != paramsIndexFor(p.program))
+        throw Error(what + ": parameters do not match program " + programKindName(p.program));
+    if (p.depth.test && !pass.depth.texture) throw Error(what + ": depth test on but the pass has no depth target");
+
+    if (isFullscreen(p.program)) {
+        // Full-screen programs read their inputs at every target pixel.
+        const CompositeParams& c = std::get<CompositeParams>(d.params);
+        auto input = [&](TextureHandle h) {
+            const TextureDesc& t = sampledTexture(h, pass, lookup, what);
+            if (t.width < extent.width || t.height < extent.height)
+                throw Error(what + ": input " + quotedName(t.name) + " is smaller than the target");
+        };
+        input(c.foliage);
+        input(c.mask);
+        if (c.maskAdd) input(c.maskAdd);  // the split ADD mask is optional
+        if (!std::isfinite(c.maskLerp)) throw Error(what + ": maskLerp is not finite");
+        return;
+    }
+
+    if (d.count % 3 != 0) throw Error(what + ": count " + std::to_string(d.count) + " is not a multiple of 3");
+    const BufferDesc& vb = bufferOfKind(d.vertices, BufferKind::Vertex, "a vertex buffer", lookup, what);
+    const std::uint64_t vertexCount = vb.size / sizeof(Vertex);
+    if (d.indices) {
+        const BufferDesc& ib = bufferOfKind(d.indices, BufferKind::Index, "an index buffer", lookup, what);
+        const std::uint64_t indexCount = ib.size / 4;
+        if (std::uint64_t(d.first) + d.count > indexCount)
+            throw Error(what + ": indices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
+                        ") outside " + quotedName(ib.name) + " of " + std::to_string(indexCount));
+        const auto* indices = reinterpret_cast<const std::uint32_t*>(lookup.indexData(d.indices).data()) + d.first;
+        for (std::uint32_t i = 0; i < d.count; ++i)
+            if (indices[i] >= vertexCount)
+                throw Error(what + ": index " + std::to_string(indices[i]) + " at position " +
+                            std::to_string(d.first + i) + " >= vertex count " + std::to_string(vertexCount));
+    } else if (std::uint64_t(d.first) + d.count > vertexCount) {
+        throw Error(what + ": vertices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
+                    ") outside " + quotedName(vb.name) + " of " + std::to_string(vertexCount));
+    }
+    if (d.instances) {
+        const BufferDesc& inst = bufferOfKind(d.instances, BufferKind::Instance, "an instance buffer", lookup, what);
+        if (std::uint64_t(d.instanceCount) * sizeof(Instance) > inst.size)
+            throw Error(what + ": " + std::to_string(d.instanceCount) + " instances exceed " + quotedName(inst.name));
+    } else if (d.instanceCount != 1) {
+        throw Error(what + ": instanceCount " + std::to_string(d.instanceCount) + " without an instance buffer");
+    }
+    std::visit(
+        [&](const auto& params) {
+            using P = std::decay_t<decltype(params)>;
+            if constexpr (std::is_same_v<P, SurfaceParams> || std::is_same_v<P, AlphaOnlyParams>)
+                if (params.baseColor.texture) sampledTexture(params.baseColor.texture, pass, lookup, what);
+        },
+        d.params);
+}
+
+}  // namespace engine::render
