@@ -1,5 +1,6 @@
 #include "engine/render/validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -9,6 +10,28 @@
 namespace engine::render {
 
 std::string quotedName(const std::string& name) { return "'" + (name.empty() ? std::string("<unnamed>") : name) + "'"; }
+
+void validateTexture(const TextureDesc& desc, const std::string& what) {
+    if (desc.width <= 0 || desc.height <= 0)
+        throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) + " is empty");
+    if (desc.width > kMaxTextureDimension || desc.height > kMaxTextureDimension)
+        throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                    " exceeds the " + std::to_string(kMaxTextureDimension) + " limit");
+    if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4 && desc.samples != 8)
+        throw Error(what + ": " + std::to_string(desc.samples) + " samples (must be 1, 2, 4 or 8)");
+    const FormatInfo& info = formatInfo(desc.format);
+    if (desc.samples > 1 && !(desc.usage & UsageRenderTarget))
+        throw Error(what + ": multisampled textures must be render targets");
+    if (info.isDepth && !(desc.usage & UsageRenderTarget))
+        throw Error(what + ": depth format D32F is only for render targets");
+    const int maxLevels = 1 + static_cast<int>(std::floor(std::log2(std::max(desc.width, desc.height))));
+    if (desc.mipLevels < 1 || desc.mipLevels > maxLevels || (desc.mipLevels > 1 && desc.samples > 1))
+        throw Error(what + ": " + std::to_string(desc.mipLevels) + " mip levels (1.." + std::to_string(maxLevels) +
+                    ", and 1 when multisampled)");
+    const std::uint64_t bytes = std::uint64_t(desc.width) * desc.height * desc.samples * info.bytesPerPixel;
+    if (bytes > kMaxTextureBytes)
+        throw Error(what + ": " + std::to_string(bytes >> 20) + " MiB exceeds the 1 GiB texture limit");
+}
 
 PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup) {
     const std::string what = "pass " + quotedName(pass.name);

@@ -36,7 +36,6 @@ std::string hex(unsigned v) {
     return buf;
 }
 
-bool validSampleCount(int s) { return s == 1 || s == 2 || s == 4 || s == 8; }
 
 // Drops errors left by a host (or an earlier, already reported failure) before an operation
 // whose own errors are checked.
@@ -283,7 +282,7 @@ public:
 
     TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
         const std::string what = "texture " + quotedName(desc.name);
-        validateTextureDesc(desc, what);
+        validateTexture(desc, what);
         const GlFormat f = glFormat(desc.format);
         if (desc.samples > 1) {
             const int supported = maxSamplesFor(f.internal);
@@ -324,7 +323,7 @@ public:
 
     TextureHandle importTexture(unsigned int id, const TextureDesc& desc) override {
         const std::string what = "imported texture " + quotedName(desc.name);
-        validateTextureDesc(desc, what);
+        validateTexture(desc, what);
         makeCurrent();
         drainGlErrors();
         if (!glIsTexture(id)) throw Error(what + ": GL name " + std::to_string(id) + " is not a texture");
@@ -705,29 +704,6 @@ private:
 
     void makeCurrent() {
         if (context_) context_->makeCurrent();
-    }
-
-    void validateTextureDesc(const TextureDesc& desc, const std::string& what) const {
-        if (desc.width <= 0 || desc.height <= 0)
-            throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
-                        " is empty");
-        if (desc.width > kMaxTextureDimension || desc.height > kMaxTextureDimension)
-            throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
-                        " exceeds the " + std::to_string(kMaxTextureDimension) + " limit");
-        if (!validSampleCount(desc.samples))
-            throw Error(what + ": " + std::to_string(desc.samples) + " samples (must be 1, 2, 4 or 8)");
-        const FormatInfo& info = formatInfo(desc.format);
-        if (desc.samples > 1 && !(desc.usage & UsageRenderTarget))
-            throw Error(what + ": multisampled textures must be render targets");
-        if (info.isDepth && !(desc.usage & UsageRenderTarget))
-            throw Error(what + ": depth format D32F is only for render targets");
-        const int maxLevels = 1 + static_cast<int>(std::floor(std::log2(std::max(desc.width, desc.height))));
-        if (desc.mipLevels < 1 || desc.mipLevels > maxLevels || (desc.mipLevels > 1 && desc.samples > 1))
-            throw Error(what + ": " + std::to_string(desc.mipLevels) + " mip levels (1.." + std::to_string(maxLevels) +
-                        ", and 1 when multisampled)");
-        const std::uint64_t bytes = std::uint64_t(desc.width) * desc.height * desc.samples * info.bytesPerPixel;
-        if (bytes > kMaxTextureBytes)
-            throw Error(what + ": " + std::to_string(bytes >> 20) + " MiB exceeds the 1 GiB texture limit");
     }
 
     int maxSamplesFor(GLenum internal) {

@@ -49,7 +49,6 @@ struct GeometryChunk {
     SetupCounters counters;
 };
 
-bool validSampleCount(int s) { return s == 1 || s == 2 || s == 4 || s == 8; }
 
 // The alpha test can only matter when a failing fragment writes something different
 // from a passing one (seeds/004 "Looking further").
@@ -85,26 +84,8 @@ public:
 
     TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
         const std::string what = "texture " + quotedName(desc.name);
-        if (desc.width <= 0 || desc.height <= 0)
-            throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
-                        " is empty");
-        if (desc.width > kMaxTextureDimension || desc.height > kMaxTextureDimension)
-            throw Error(what + ": size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
-                        " exceeds the " + std::to_string(kMaxTextureDimension) + " limit");
-        if (!validSampleCount(desc.samples))
-            throw Error(what + ": " + std::to_string(desc.samples) + " samples (must be 1, 2, 4 or 8)");
+        validateTexture(desc, what);
         const FormatInfo& info = formatInfo(desc.format);
-        if (desc.samples > 1 && !(desc.usage & UsageRenderTarget))
-            throw Error(what + ": multisampled textures must be render targets");
-        if (info.isDepth && !(desc.usage & UsageRenderTarget))
-            throw Error(what + ": depth format D32F is only for render targets");
-        const int maxLevels = 1 + static_cast<int>(std::floor(std::log2(std::max(desc.width, desc.height))));
-        if (desc.mipLevels < 1 || desc.mipLevels > maxLevels || (desc.mipLevels > 1 && desc.samples > 1))
-            throw Error(what + ": " + std::to_string(desc.mipLevels) + " mip levels (1.." + std::to_string(maxLevels) +
-                        ", and 1 when multisampled)");
-        const std::uint64_t bytes = std::uint64_t(desc.width) * desc.height * desc.samples * info.bytesPerPixel;
-        if (bytes > kMaxTextureBytes)
-            throw Error(what + ": " + std::to_string(bytes >> 20) + " MiB exceeds the 1 GiB texture limit");
 
         SoftTexture t;
         t.desc = desc;

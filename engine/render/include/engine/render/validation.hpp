@@ -26,6 +26,11 @@ struct ResourceLookup {
     std::function<const PipelineDesc&(PipelineHandle)> pipeline;
 };
 
+// A size in 1..16384 per side and at most 1 GiB, 1/2/4/8 samples (multisampled and depth
+// textures are render targets), a mip count that fits the size and 1 when multisampled.
+// Checked before anything is allocated; `what` names the texture in the message.
+void validateTexture(const TextureDesc& desc, const std::string& what);
+
 // Colour attachments are colour render targets, the depth attachment is D32F, all share one
 // size and sample count, and there is at least one. Returns that size.
 PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup);
