@@ -33,6 +33,18 @@ void validateTexture(const TextureDesc& desc, const std::string& what) {
         throw Error(what + ": " + std::to_string(bytes >> 20) + " MiB exceeds the 1 GiB texture limit");
 }
 
+void validateBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) {
+    const std::uint64_t stride = desc.kind == BufferKind::Vertex  ? sizeof(Vertex)
+                                 : desc.kind == BufferKind::Index ? sizeof(std::uint32_t)
+                                                                  : sizeof(Instance);
+    if (desc.size == 0 || desc.size % stride != 0)
+        throw Error(what + ": size " + std::to_string(desc.size) + " is not a positive multiple of " +
+                    std::to_string(stride));
+    if (!data.empty() && data.size() != desc.size)
+        throw Error(what + ": " + std::to_string(data.size()) + " bytes given for a " + std::to_string(desc.size) +
+                    "-byte buffer");
+}
+
 PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup) {
     const std::string what = "pass " + quotedName(pass.name);
     PassExtent extent;

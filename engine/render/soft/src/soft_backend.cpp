@@ -103,15 +103,7 @@ public:
 
     BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
         const std::string what = "buffer " + quotedName(desc.name);
-        const std::uint64_t stride = desc.kind == BufferKind::Vertex   ? sizeof(Vertex)
-                                     : desc.kind == BufferKind::Index ? sizeof(std::uint32_t)
-                                                                      : sizeof(Instance);
-        if (desc.size == 0 || desc.size % stride != 0)
-            throw Error(what + ": size " + std::to_string(desc.size) + " is not a positive multiple of " +
-                        std::to_string(stride));
-        if (!data.empty() && data.size() != desc.size)
-            throw Error(what + ": " + std::to_string(data.size()) + " bytes given for a " + std::to_string(desc.size) +
-                        "-byte buffer");
+        validateBuffer(desc, data, what);
         SoftBuffer b{desc, std::vector<std::byte>(desc.size)};
         if (!data.empty()) std::memcpy(b.bytes.data(), data.data(), data.size());
         return buffers_.add(std::move(b));

@@ -31,6 +31,10 @@ struct ResourceLookup {
 // Checked before anything is allocated; `what` names the texture in the message.
 void validateTexture(const TextureDesc& desc, const std::string& what);
 
+// A positive size that is a whole number of elements of its kind, and initial data (when
+// given) of exactly that size.
+void validateBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what);
+
 // Colour attachments are colour render targets, the depth attachment is D32F, all share one
 // size and sample count, and there is at least one. Returns that size.
 PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup);
