@@ -1,0 +1,87 @@
+#pragma once
+// How the foliage of a frame is drawn: SSAM and the rivals it is judged against
+// (DESIGN.md "Accuracy and the ground truth"). Every technique draws the same foliage over
+// the same opaque frame, so `ssam-bench` and `racer --technique` can swap them freely.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/backend.hpp"
+#include "engine/render/vertex.hpp"
+#include "ssam/config.hpp"
+#include "ssam/foliage.hpp"
+#include "ssam/opaque_targets.hpp"
+
+namespace transparency {
+
+enum class TechniqueKind : std::uint8_t {
+    Ssam,             // seeds/000 with the paper's defaults
+    SsamPlus,         // our improvement on it (README "SSAM+")
+    AlphaTest,        // alpha test at 0.5, depth write: the baseline SSAM replaces
+    AlphaToCoverage,  // 4x MSAA, coverage from alpha
+    BlendUnsorted,    // straight-alpha over, depth write off, submission order
+    BlendSorted,      // straight-alpha over, instances sorted back to front
+    Wboit,            // weighted blended OIT (McGuire & Bavoil 2013)
+    Reference,        // exact: every fragment, sorted per pixel, composited with "over"
+};
+
+// Every kind, in the order tables list them.
+std::span<const TechniqueKind> allTechniques();
+// As `racer --technique` spells it: ssam, ssam-plus, alpha-test, a2c, blend-unsorted,
+// blend-sorted, wboit, reference.
+const char* techniqueName(TechniqueKind kind);
+std::optional<TechniqueKind> parseTechnique(std::string_view name);
+
+// One batch of foliage, both as GPU handles (to draw it) and as the CPU copy of its
+// instances (for techniques that reorder instances, such as sorted blending).
+struct FoliageDraw {
+    ssam::FoliageBatch batch;
+    std::span<const engine::render::Instance> instances;  // the contents of batch.instances
+    ssam::Bounds meshBounds;                              // of one instance, in model space
+};
+
+struct FoliageFrame {
+    glm::mat4 viewProj{1.0f};
+    glm::vec3 eye{0.0f};
+    engine::render::DirectionalLight light;
+    std::span<const FoliageDraw> draws;
+};
+
+struct TechniqueOptions {
+    ssam::Config ssam;  // SSAM's knobs; ssam.depthFunc is the scene's depth function for all
+    float alphaTestReference = 0.5f;          // alpha-test and the rivals' alpha reference
+    std::size_t referenceFragmentsPerPixel = 256;  // the exact reference's cap (reported, never truncated silently)
+};
+
+// A target a technique keeps, for captures (e.g. SSAM's mask and foliage).
+struct NamedTarget {
+    std::string name;
+    engine::render::TextureHandle texture;
+};
+
+class Technique {
+public:
+    virtual ~Technique() = default;
+    virtual TechniqueKind kind() const = 0;
+    // Samples the caller must draw the opaque pass with (alpha-to-coverage needs 4).
+    virtual int opaqueSamples() const { return 1; }
+    // Called after the opaque pass was drawn into `opaque` and BEFORE opaque.resolve():
+    // draws the foliage, resolves, and leaves the final colour in opaque.color() and, in
+    // opaque.depth(), the depth later passes test against (the foliage depth where the
+    // technique writes one). No foliage in view: costs (almost) nothing.
+    virtual void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) = 0;
+    // The intermediate targets of the last frame, for captures; empty when there are none.
+    virtual std::vector<NamedTarget> intermediates() const { return {}; }
+};
+
+// Throws engine::Error when the backend cannot run the technique (the message says why).
+std::unique_ptr<Technique> createTechnique(TechniqueKind kind, engine::render::Backend& backend,
+                                           const TechniqueOptions& options);
+
+}  // namespace transparency
