@@ -44,6 +44,7 @@ struct FoliageDraw {
     ssam::FoliageBatch batch;
     std::span<const engine::render::Instance> instances;  // the contents of batch.instances
     ssam::Bounds meshBounds;                              // of one instance, in model space
+    float alphaCutoff = 0.5f;  // the material's (glTF alphaCutoff): alpha-test techniques use it
 };
 
 struct FoliageFrame {

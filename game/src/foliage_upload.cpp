@@ -1,0 +1,40 @@
+#include "foliage_upload.hpp"
+
+namespace racer {
+
+using namespace engine::render;
+
+FoliageUpload::~FoliageUpload() { release(); }
+
+void FoliageUpload::release() {
+    for (BufferHandle b : buffers_) backend_.destroy(b);
+    buffers_.clear();
+    draws_.clear();
+}
+
+std::span<const transparency::FoliageDraw> FoliageUpload::upload(const engine::scene::DrawLists& lists,
+                                                                 const engine::scene::MeshLibrary& library) {
+    release();
+    for (const engine::scene::DrawBatch& b : lists.mask) {
+        const engine::scene::MeshPart& part = library.part(b.part);
+        const auto bytes = std::as_bytes(std::span(b.instances));
+        buffers_.push_back(backend_.createBuffer({"foliage instances", BufferKind::Instance, bytes.size()}, bytes));
+
+        transparency::FoliageDraw d;
+        d.batch.vertices = part.vertices;
+        d.batch.indices = part.indices;
+        d.batch.count = part.indexCount;
+        d.batch.instances = buffers_.back();
+        d.batch.instanceCount = static_cast<std::uint32_t>(b.instances.size());
+        d.batch.baseColor = part.material.baseColor;
+        d.batch.baseColorFactor = part.material.baseColorFactor;
+        d.batch.worldBounds = {b.worldBounds.min, b.worldBounds.max};
+        d.instances = b.instances;
+        d.meshBounds = {part.bounds.min, part.bounds.max};
+        d.alphaCutoff = part.material.alphaCutoff;
+        draws_.push_back(d);
+    }
+    return draws_;
+}
+
+}  // namespace racer

@@ -1,0 +1,49 @@
+#include "foliage_draws.hpp"
+
+#include "ssam/screen_region.hpp"
+
+namespace transparency::detail {
+
+using namespace engine::render;
+
+std::vector<const FoliageDraw*> visibleDraws(const FoliageFrame& frame, int width, int height) {
+    std::vector<const FoliageDraw*> visible;
+    for (const FoliageDraw& draw : frame.draws) {
+        const ssam::FoliageBatch& b = draw.batch;
+        if (b.count == 0 || b.instanceCount == 0) continue;
+        if (!ssam::screenRegion(b.worldBounds, frame.viewProj, width, height)) continue;
+        visible.push_back(&draw);
+    }
+    return visible;
+}
+
+std::vector<ssam::FoliageBatch> batchesOf(const FoliageFrame& frame) {
+    std::vector<ssam::FoliageBatch> batches;
+    batches.reserve(frame.draws.size());
+    for (const FoliageDraw& draw : frame.draws) batches.push_back(draw.batch);
+    return batches;
+}
+
+SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch& batch) {
+    SurfaceParams params;
+    params.viewProj = frame.viewProj;
+    params.baseColorFactor = batch.baseColorFactor;
+    params.baseColor = batch.baseColor;
+    params.light = frame.light;
+    return params;
+}
+
+DrawDesc batchDraw(const ssam::FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
+    DrawDesc d;
+    d.pipeline = pipeline;
+    d.params = std::move(params);
+    d.vertices = batch.vertices;
+    d.indices = batch.indices;
+    d.first = batch.first;
+    d.count = batch.count;
+    d.instances = batch.instances;
+    d.instanceCount = batch.instanceCount;
+    return d;
+}
+
+}  // namespace transparency::detail

@@ -1,0 +1,24 @@
+#pragma once
+// What every technique does with a FoliageFrame: pick the draws in view, and turn a batch
+// into a DrawDesc with the programs' parameters. Shared so that every technique shades
+// the same fragments the same way and differs only in how it combines them.
+#include <vector>
+
+#include "transparency/technique.hpp"
+
+namespace transparency::detail {
+
+// The draws that can touch a width x height target, in submission order (seeds/000 §3.8).
+std::vector<const FoliageDraw*> visibleDraws(const FoliageFrame& frame, int width, int height);
+
+// The batches of every draw, for ssam::FoliageView.
+std::vector<ssam::FoliageBatch> batchesOf(const FoliageFrame& frame);
+
+// FoliageColor's parameters for one batch under the frame's camera and light.
+engine::render::SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch& batch);
+
+// One draw of a batch (all its instances, or `instances`/`instanceCount` when given).
+engine::render::DrawDesc batchDraw(const ssam::FoliageBatch& batch, engine::render::PipelineHandle pipeline,
+                                   engine::render::ProgramParams params);
+
+}  // namespace transparency::detail

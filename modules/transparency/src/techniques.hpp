@@ -1,0 +1,12 @@
+#pragma once
+// The factories behind createTechnique, one per file (modules/transparency/src/*_technique.cpp).
+#include <memory>
+
+#include "transparency/technique.hpp"
+
+namespace transparency::detail {
+
+std::unique_ptr<Technique> makeSsamTechnique(engine::render::Backend& backend, const TechniqueOptions& options);
+std::unique_ptr<Technique> makeAlphaTestTechnique(engine::render::Backend& backend, const TechniqueOptions& options);
+
+}  // namespace transparency::detail
