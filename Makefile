@@ -10,14 +10,19 @@ BUILD_DIR := build
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Debian 12 packages: compilers and tools, then the libraries found by find_package,
-# then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests.
+# then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests,
+# then Node.js for the Khronos glTF Validator the content test runs.
 PACKAGES := build-essential cmake pkg-config ccache \
             libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
-            libepoxy-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth
+            libepoxy-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
+            $(NODE_PACKAGES)
+# Debian's nodejs + npm, unless an npm is already on the PATH (e.g. a NodeSource nodejs,
+# which bundles npm and which Debian's npm package would try to replace).
+NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test demo bench readme-images content clean
+.PHONY: all deps configure build test demo bench readme-images content clean node-tools
 
 all: build
 
@@ -35,14 +40,23 @@ configure: deps
 build: configure
 	cmake --build --preset $(PRESET) -j $(JOBS)
 
-test: build
+# The Khronos glTF Validator (npm gltf-validator) for ctest Content.GltfValidatorFindsNoErrors,
+# installed once into the git-ignored $(BUILD_DIR)/node.
+GLTF_VALIDATOR := gltf-validator@2.0.0-dev.3.10
+node-tools: deps
+	@[ -d $(BUILD_DIR)/node/node_modules/gltf-validator ] || \
+	  npm install --prefix $(BUILD_DIR)/node --no-audit --no-fund --loglevel=error $(GLTF_VALIDATOR)
+
+test: build node-tools
 	ctest --preset $(PRESET) -j $(JOBS)
 
-# The demo: a few seconds of the racing scene at a fixed time step, headless on the soft
-# backend, written to out/racer.png and out/racer.exr (every SSAM layer).
+# The demo: with a display, the racing scene in a window (GL) until it is closed (keys:
+# 1-8 / T technique, C camera, P pause, Esc quit); without one, a few seconds at a fixed time
+# step, headless on the soft backend, written to out/racer.png and out/racer.exr (every layer).
 DEMO_FLAGS ?= --frames 90 --fixed-dt 0.0333333 --size 1280x720
 demo: build
-	$(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --capture out/racer.png --capture-layers
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then $(BUILD_DIR)/bin/racer --size 1280x720; \
+	else $(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --capture out/racer.png --capture-layers; fi
 
 # The README's pictures, rendered by the project itself (small PNGs in content/readme/):
 # the pre-race pan with SSAM (and each of its intermediate targets) and with alpha testing.
@@ -58,6 +72,7 @@ content: build
 
 bench: build
 	$(BUILD_DIR)/bin/bench_ecs
+	$(BUILD_DIR)/bin/ssam-bench --out out/bench
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -30,6 +30,15 @@ CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float asp
             target = p + side * 30.0f + up * 5.0f + drift;
             break;
         }
+        case CameraMode::Sky: {
+            // 150 m above the start line, looking 70 degrees up: with a 60 degree field of
+            // view the lowest ray still climbs 40 degrees, so no tree, terrain or pool of the
+            // scene (all below the eye) can be in view; only the clear colour remains.
+            const glm::vec3 p = scene.track().position(0.0f), f = scene.track().forward(0.0f);
+            eye = p + up * 150.0f;
+            target = eye + f * std::cos(glm::radians(70.0f)) + up * std::sin(glm::radians(70.0f));
+            break;
+        }
         case CameraMode::Free: {
             const glm::vec3 dir(std::sin(free.yaw) * std::cos(free.pitch), std::sin(free.pitch),
                                 std::cos(free.yaw) * std::cos(free.pitch));

@@ -1,14 +1,15 @@
 #pragma once
 // The demo's cameras: chase (behind the car), pan (the slow side-to-side pre-race move
 // where alpha testing sparkles, seeds/000 §3.4) and free (fly around; a fixed overview
-// when headless). Projection: reverse-Z, 0.1 m to 30 km (seeds/000 §3.1).
+// when headless) and sky (straight up from above the start line: nothing but the sky, the
+// no-foliage case the capture tests need). Projection: reverse-Z, 0.1 m to 30 km (seeds/000 §3.1).
 #include <glm/glm.hpp>
 
 #include "racing_scene.hpp"
 
 namespace racer {
 
-enum class CameraMode { Chase, Pan, Free };
+enum class CameraMode { Chase, Pan, Free, Sky };
 
 struct CameraView {
     glm::vec3 eye{0.0f};

@@ -21,7 +21,7 @@ std::span<const transparency::FoliageDraw> FoliageUpload::upload(const engine::s
         buffers_.push_back(backend_.createBuffer({"foliage instances", BufferKind::Instance, bytes.size()}, bytes));
 
         transparency::FoliageDraw d;
-        d.batch.vertices = part.vertices;
+        d.batch.vertices = engine::scene::vertexBufferOf(b, part);  // deformed copy (modules/wind) or shared
         d.batch.indices = part.indices;
         d.batch.count = part.indexCount;
         d.batch.instances = buffers_.back();

@@ -1,6 +1,9 @@
 #include "frame_renderer.hpp"
 
+#include <algorithm>
+
 #include "engine/capture/image.hpp"
+#include "living_scene.hpp"
 
 namespace racer {
 
@@ -8,25 +11,15 @@ using namespace engine::render;
 using engine::scene::DrawBatch;
 using engine::scene::MeshPart;
 
-const char* techniqueName(Technique technique) {
-    switch (technique) {
-        case Technique::Ssam: return "ssam";
-        case Technique::AlphaTest: return "alpha-test";
-    }
-    return "?";
-}
-
 namespace {
-const glm::vec4 kSky{0.55f, 0.70f, 0.88f, 1.0f};
 const DirectionalLight kSun{{0.45f, 0.80f, 0.35f}, {1.05f, 0.98f, 0.88f}, {0.32f, 0.36f, 0.42f}};
 constexpr CompareFunc kDepthFunc = CompareFunc::Greater;  // reverse-Z
 }  // namespace
 
 FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary& library, const RendererOptions& options)
-    : backend_(backend), library_(library), options_(options),
-      opaque_(backend, {options.width, options.height, options.opaqueSamples, Format::RGBA8_SRGB, kDepthFunc}) {
-    options_.ssam.depthFunc = kDepthFunc;
-    if (options.technique == Technique::Ssam) ssam_ = std::make_unique<ssam::ScreenSpaceAlphaMask>(backend, options_.ssam);
+    : backend_(backend), library_(library), options_(options), foliage_(backend) {
+    options_.techniqueOptions.ssam.depthFunc = kDepthFunc;
+    setTechnique(options.technique);
     opaqueCulled_ = opaquePipeline(false);
     opaqueTwoSided_ = opaquePipeline(true);
     PipelineDesc water;
@@ -35,12 +28,29 @@ FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary&
     water.blend[0] = BlendState::alphaOver();
     water.depth = DepthState::testOnly(kDepthFunc);
     water_ = backend.createPipeline(water);
+    water.name = "blend over (culled)";  // glTF doubleSided false: back faces culled (§3.9.6)
+    water.raster.cull = CullMode::Back;
+    waterCulled_ = backend.createPipeline(water);
 }
 
 FrameRenderer::~FrameRenderer() {
     for (BufferHandle b : frameBuffers_) backend_.destroy(b);
-    for (auto& [cutoff, p] : alphaTested_) backend_.destroy(p);
-    for (PipelineHandle p : {opaqueCulled_, opaqueTwoSided_, water_}) backend_.destroy(p);
+    for (PipelineHandle p : {opaqueCulled_, opaqueTwoSided_, water_, waterCulled_}) backend_.destroy(p);
+}
+
+void FrameRenderer::setTechnique(transparency::TechniqueKind kind) {
+    // Created first: when it throws, the current technique and targets stay as they were.
+    std::unique_ptr<transparency::Technique> next = transparency::createTechnique(kind, backend_, options_.techniqueOptions);
+    technique_ = std::move(next);
+    options_.technique = kind;
+    ensureOpaqueTargets(std::max(options_.msaa, technique_->opaqueSamples()));
+}
+
+void FrameRenderer::ensureOpaqueTargets(int samples) {
+    if (opaque_ && opaque_->desc().samples == samples) return;
+    opaque_.reset();
+    opaque_ = std::make_unique<ssam::OpaqueTargets>(
+        backend_, ssam::OpaqueTargetsDesc{options_.width, options_.height, samples, Format::RGBA8_SRGB, kDepthFunc});
 }
 
 PipelineHandle FrameRenderer::opaquePipeline(bool doubleSided) {
@@ -50,21 +60,6 @@ PipelineHandle FrameRenderer::opaquePipeline(bool doubleSided) {
     p.depth = DepthState::testAndWrite(kDepthFunc);
     p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;
     return backend_.createPipeline(p);
-}
-
-PipelineHandle FrameRenderer::alphaTestPipeline(float cutoff) {
-    auto [it, fresh] = alphaTested_.try_emplace(cutoff);
-    if (fresh) {
-        PipelineDesc p;
-        p.name = "foliage alpha test";
-        p.program = ProgramKind::FoliageColor;
-        p.depth = DepthState::testAndWrite(kDepthFunc);
-        p.alphaTest = AlphaTest::discardBelow(cutoff);
-        // The frame's alpha stays the opaque 1: the texture's alpha only decides coverage.
-        p.blend[0].writeMask = WriteRGB;
-        it->second = backend_.createPipeline(p);
-    }
-    return it->second;
 }
 
 BufferHandle FrameRenderer::uploadInstances(const DrawBatch& batch) {
@@ -78,7 +73,7 @@ DrawDesc FrameRenderer::batchDraw(const DrawBatch& batch, PipelineHandle pipelin
     DrawDesc d;
     d.pipeline = pipeline;
     d.params = std::move(params);
-    d.vertices = part.vertices;
+    d.vertices = engine::scene::vertexBufferOf(batch, part);  // deformed copy (modules/wind) or shared
     d.indices = part.indices;
     d.count = part.indexCount;
     d.instances = uploadInstances(batch);
@@ -90,22 +85,34 @@ void FrameRenderer::capture(TextureHandle target, const char* name) {
     if (options_.captureLayers) layers_.push_back(engine::capture::captureTarget(backend_, target, name));
 }
 
-void FrameRenderer::captureMask() {
-    if (!options_.captureLayers || !ssam_ || !ssam_->intermediates().mask) return;
+// The technique's intermediates as layers. SSAM's mask target packs the MAX mask in r and
+// the ADD mask in a (or in a separate RG16F target, r), §3.5.2-3.5.3: they become the two
+// one-channel layers mask_max and mask_add, as the README's pictures show them.
+void FrameRenderer::captureIntermediates() {
+    if (!options_.captureLayers) return;
     namespace cap = engine::capture;
-    const ssam::Intermediates t = ssam_->intermediates();
-    const cap::CapturedLayer mask = cap::captureTarget(backend_, t.mask, "mask");
-    cap::CapturedLayer maxLayer{"mask_max", cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
-    cap::CapturedLayer addLayer{"mask_add", cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
-    const cap::Image add = t.maskAdd ? cap::captureTarget(backend_, t.maskAdd, "add").image : cap::Image{};
-    for (int y = 0; y < options_.height; ++y)
-        for (int x = 0; x < options_.width; ++x) {
-            maxLayer.image.at(x, y, 0) = mask.image.at(x, y, 0);
-            addLayer.image.at(x, y, 0) = t.maskAdd ? add.at(x, y, 0) : mask.image.at(x, y, 3);
-        }
-    layers_.push_back(std::move(maxLayer));
-    layers_.push_back(std::move(addLayer));
-    capture(t.foliage, "foliage");
+    const std::vector<transparency::NamedTarget> targets = technique_->intermediates();
+    auto find = [&](const char* name) -> TextureHandle {
+        for (const auto& t : targets)
+            if (t.name == name) return t.texture;
+        return {};
+    };
+    const TextureHandle packed = find("mask"), maxMask = find("mask_max"), addMask = find("mask_add");
+    if (packed || maxMask) {
+        const cap::Image mask = cap::captureTarget(backend_, packed ? packed : maxMask, "mask").image;
+        const cap::Image add = addMask ? cap::captureTarget(backend_, addMask, "add").image : cap::Image{};
+        cap::CapturedLayer maxLayer{"mask_max", cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
+        cap::CapturedLayer addLayer{"mask_add", cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
+        for (int y = 0; y < options_.height; ++y)
+            for (int x = 0; x < options_.width; ++x) {
+                maxLayer.image.at(x, y, 0) = mask.at(x, y, 0);
+                addLayer.image.at(x, y, 0) = addMask ? add.at(x, y, 0) : mask.at(x, y, 3);
+            }
+        layers_.push_back(std::move(maxLayer));
+        layers_.push_back(std::move(addLayer));
+    }
+    for (const auto& t : targets)
+        if (t.name != "mask" && t.name != "mask_max" && t.name != "mask_add") capture(t.texture, t.name.c_str());
 }
 
 void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraView& camera) {
@@ -123,54 +130,47 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
         return s;
     };
 
-    // 1. Opaque pass; with plain alpha testing the foliage is drawn here too.
-    backend_.beginPass(opaque_.passDesc(kSky));
+    // 1. Opaque pass (MSAA when the technique or --msaa asks for it).
+    backend_.beginPass(opaque_->passDesc(options_.background));
     for (const DrawBatch& b : lists.opaque) {
         const MeshPart& part = library_.part(b.part);
         backend_.draw(batchDraw(b, part.material.doubleSided ? opaqueTwoSided_ : opaqueCulled_, surface(part)));
     }
-    if (options_.technique == Technique::AlphaTest)
-        for (const DrawBatch& b : lists.mask) {
-            const MeshPart& part = library_.part(b.part);
-            backend_.draw(batchDraw(b, alphaTestPipeline(part.material.alphaCutoff), surface(part)));
-        }
     backend_.endPass();
-    opaque_.resolve();
-    capture(opaque_.color(), "opaque");
-    capture(opaque_.depth(), "depth");
-
-    // 2. SSAM: mask, colour (writes foliage depth), composite.
-    if (ssam_) {
-        std::vector<ssam::FoliageBatch> foliage;
-        for (const DrawBatch& b : lists.mask) {
-            const MeshPart& part = library_.part(b.part);
-            ssam::FoliageBatch f;
-            f.vertices = part.vertices;
-            f.indices = part.indices;
-            f.count = part.indexCount;
-            f.instances = uploadInstances(b);
-            f.instanceCount = static_cast<std::uint32_t>(b.instances.size());
-            f.baseColor = part.material.baseColor;
-            f.baseColorFactor = part.material.baseColorFactor;
-            f.worldBounds = {b.worldBounds.min, b.worldBounds.max};
-            foliage.push_back(f);
-        }
-        ssam_->render({opaque_.color(), opaque_.depth()}, {camera.viewProj, kSun, foliage});
-        captureMask();
-        capture(opaque_.depth(), "foliage_depth");
+    if (options_.captureLayers) {
+        // The technique resolves again after drawing; resolving here too only costs time
+        // when layers are captured.
+        opaque_->resolve();
+        capture(opaque_->color(), "opaque");
+        capture(opaque_->depth(), "depth");
     }
 
-    // 3. BLEND surfaces back to front, tested against the opaque + foliage depth.
-    if (!lists.blend.empty()) {
+    // 2. Foliage by the technique: it draws, resolves the opaque targets and leaves the
+    //    colour and the depth later passes test against in them.
+    const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, kSun, foliage_.upload(lists, library_)};
+    technique_->render(*opaque_, foliage);
+    captureIntermediates();
+    capture(opaque_->depth(), "foliage_depth");
+
+    // 3. The living scene's passes (grass, water, particles, light shafts) onto the colour,
+    //    depth-tested against the opaque + foliage depth; without one, BLEND surfaces here.
+    if (living_) {
+        const int w = backend_.describe(opaque_->color()).width, h = backend_.describe(opaque_->color()).height;
+        living_->render({backend_, library_, lists, opaque_->color(), opaque_->depth(), w, h, camera.view,
+                         camera.projection, camera.viewProj, camera.eye, kSun, 0.0f, kDepthFunc});
+    } else if (!lists.blend.empty()) {
         PassDesc pass;
         pass.name = "water";
-        pass.color[0] = {opaque_.color(), LoadOp::Load};
-        pass.depth = {opaque_.depth(), LoadOp::Load};
+        pass.color[0] = {opaque_->color(), LoadOp::Load};
+        pass.depth = {opaque_->depth(), LoadOp::Load};
         backend_.beginPass(pass);
-        for (const DrawBatch& b : lists.blend) backend_.draw(batchDraw(b, water_, surface(library_.part(b.part))));
+        for (const DrawBatch& b : lists.blend) {
+            const MeshPart& part = library_.part(b.part);
+            backend_.draw(batchDraw(b, part.material.doubleSided ? water_ : waterCulled_, surface(part)));
+        }
         backend_.endPass();
     }
-    capture(opaque_.color(), "result");
+    capture(opaque_->color(), "result");
 }
 
 }  // namespace racer

@@ -1,43 +1,58 @@
 #pragma once
 // One frame of the racing scene on any backend: the opaque pass (terrain, road, trunks,
-// car), the foliage by the chosen technique (SSAM, or plain alpha testing in the opaque
-// pass), then BLEND surfaces (water) back to front, depth-tested against the foliage depth
-// SSAM's colour pass wrote (seeds/000 §3.7).
-#include <map>
+// car), the foliage by the chosen transparency::Technique (SSAM, alpha testing, the rivals
+// and the exact reference), then BLEND surfaces (water) back to front, depth-tested against
+// the depth the technique leaves (SSAM: the foliage depth its colour pass wrote, §3.7).
 #include <memory>
-#include <string>
 #include <vector>
 
 #include "camera_rig.hpp"
 #include "engine/capture/target_capture.hpp"
 #include "engine/render/backend.hpp"
 #include "engine/scene/draw_lists.hpp"
+#include "foliage_upload.hpp"
 #include "ssam/opaque_targets.hpp"
-#include "ssam/ssam.hpp"
+#include "transparency/technique.hpp"
 
 namespace racer {
 
-enum class Technique { Ssam, AlphaTest };
-const char* techniqueName(Technique technique);
+class LivingScene;
 
 struct RendererOptions {
     int width = 1280;
     int height = 720;
-    Technique technique = Technique::Ssam;
-    int opaqueSamples = 1;
-    ssam::Config ssam;
+    transparency::TechniqueKind technique = transparency::TechniqueKind::Ssam;
+    // The opaque pass's samples are max(msaa, technique->opaqueSamples()): --msaa asks for
+    // at least this many (Pure used 2 under SSAM), alpha-to-coverage needs 4 whatever is asked.
+    int msaa = 1;
+    transparency::TechniqueOptions techniqueOptions;  // its ssam.depthFunc is set to the scene's
+    glm::vec4 background{0.55f, 0.70f, 0.88f, 1.0f};  // the opaque pass's clear colour (the racing scene's sky)
     bool captureLayers = false;  // keep every intermediate of the last frame (EXR layers)
 };
 
 class FrameRenderer {
 public:
+    // Throws engine::Error (from transparency::createTechnique) when the backend cannot run
+    // the technique or it is not implemented.
     FrameRenderer(engine::render::Backend& backend, const engine::scene::MeshLibrary& library,
                   const RendererOptions& options);
     ~FrameRenderer();
+    FrameRenderer(const FrameRenderer&) = delete;
+    FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+    // Switches the foliage technique (the window's keys). Throws engine::Error and keeps the
+    // current technique when the new one cannot be created.
+    void setTechnique(transparency::TechniqueKind kind);
+    transparency::TechniqueKind technique() const { return technique_->kind(); }
+    int opaqueSamples() const { return opaque_->desc().samples; }
 
     void render(const engine::scene::DrawLists& lists, const CameraView& camera);
 
-    engine::render::TextureHandle color() const { return opaque_.color(); }
+    // The living scene's features (modules/water, ...) draw after the technique, replacing
+    // the built-in BLEND step; null (the default) keeps that step.
+    void setLivingScene(LivingScene* living) { living_ = living; }
+
+    engine::render::TextureHandle color() const { return opaque_->color(); }
     const std::vector<engine::capture::CapturedLayer>& layers() const { return layers_; }
 
 private:
@@ -45,19 +60,20 @@ private:
     engine::render::DrawDesc batchDraw(const engine::scene::DrawBatch& batch, engine::render::PipelineHandle pipeline,
                                        engine::render::ProgramParams params);
     engine::render::PipelineHandle opaquePipeline(bool doubleSided);
-    engine::render::PipelineHandle alphaTestPipeline(float cutoff);
+    void ensureOpaqueTargets(int samples);
     void capture(engine::render::TextureHandle target, const char* name);
-    void captureMask();
+    void captureIntermediates();
 
     engine::render::Backend& backend_;
     const engine::scene::MeshLibrary& library_;
     RendererOptions options_;
-    ssam::OpaqueTargets opaque_;
-    std::unique_ptr<ssam::ScreenSpaceAlphaMask> ssam_;
-    engine::render::PipelineHandle opaqueCulled_, opaqueTwoSided_, water_;
-    std::map<float, engine::render::PipelineHandle> alphaTested_;
+    std::unique_ptr<ssam::OpaqueTargets> opaque_;
+    std::unique_ptr<transparency::Technique> technique_;
+    FoliageUpload foliage_;
+    engine::render::PipelineHandle opaqueCulled_, opaqueTwoSided_, water_, waterCulled_;  // water_: BLEND, two-sided
     std::vector<engine::render::BufferHandle> frameBuffers_;  // instance data of the frame in flight
     std::vector<engine::capture::CapturedLayer> layers_;
+    LivingScene* living_ = nullptr;
 };
 
 }  // namespace racer

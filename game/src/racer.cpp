@@ -1,109 +1,169 @@
-// racer: the project's main job. Renders the racing scene with a chosen technique, in a
-// window (GL backend) or headless (soft backend by default), and writes captures.
+// racer: the project's main job. Renders the racing scene (or a --scene glTF file) with a
+// chosen foliage technique, in a GLFW window (when there is a display and no --headless) or
+// headless, and writes captures. Flags: racer_options.cpp; the window: window_loop.cpp.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <map>
-#include <regex>
 
 #include "camera_rig.hpp"
 #include "engine/capture/image_write.hpp"
 #include "engine/capture/readback_image.hpp"
 #include "engine/core/error.hpp"
-#include "engine/core/log.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "frame_renderer.hpp"
+#include "frame_source.hpp"
+#include "gltf_scene.hpp"
 #include "layer_pictures.hpp"
+#include "living_scene.hpp"
+#include "racer_options.hpp"
 #include "racing_scene.hpp"
+#include "window_loop.hpp"
 
 namespace {
 
 using namespace racer;
+namespace gl = engine::render::gl;
 
-struct Options {
-    std::string backend = "soft";
-    std::string technique = "ssam";
-    std::string size = "1280x720";
-    int frames = 60;
-    double fixedDt = 1.0 / 30.0;
-    std::string camera = "chase";
-    std::uint32_t seed = 1;
-    int threads = 0;
-    std::string capturePath;
-    bool captureLayers = false;
-    bool headless = false;
-    std::string contentDir = SSAM_CONTENT_DIR;
-    int msaa = 1;
-    std::string layerPictures;
-};
+std::string passTimings(engine::render::Backend& backend) {
+    std::string passes;
+    for (const auto& t : backend.takeTimings()) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, " %s %.1f", t.pass.c_str(), t.milliseconds);
+        passes += buf;
+    }
+    return passes;
+}
 
-int run(const Options& o) {
-    const std::map<std::string, Technique> techniques{{"ssam", Technique::Ssam}, {"alpha-test", Technique::AlphaTest}};
-    const std::map<std::string, CameraMode> cameras{
-        {"chase", CameraMode::Chase}, {"pan", CameraMode::Pan}, {"free", CameraMode::Free}};
-
-    std::smatch m;
-    static const std::regex sizePattern(R"((\d{1,5})x(\d{1,5}))");
-    if (!std::regex_match(o.size, m, sizePattern))
-        throw engine::Error("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 1280x720");
-    RendererOptions renderer;
-    renderer.width = std::stoi(m[1]);
-    renderer.height = std::stoi(m[2]);
-    if (renderer.width < 1 || renderer.height < 1 || renderer.width > 16384 || renderer.height > 16384)
-        throw engine::Error("--size '" + o.size + "': each dimension must be in 1..16384");
-    renderer.technique = techniques.at(o.technique);
-    renderer.opaqueSamples = o.msaa;
-    renderer.captureLayers = o.captureLayers;
-    const CameraMode cameraMode = cameras.at(o.camera);
-
-    const bool windowed = !o.headless && std::getenv("DISPLAY") != nullptr;
-    if (windowed) engine::log::info("racer: the window mode is not built yet; rendering headless");
-
-    // GL renders headless through EGL (Mesa llvmpipe without a GPU); --threads applies to soft.
-    std::unique_ptr<engine::render::Backend> backend;
-    if (o.backend == "gl")
-        backend = engine::render::gl::createGlBackend({});
-    else
-        backend = engine::render::soft::createSoftBackend({o.threads, 64, false});
-    RacingScene scene(*backend, {o.contentDir, o.seed});
-    FrameRenderer frame(*backend, scene.library(), renderer);
-    const float aspect = float(renderer.width) / float(renderer.height);
-    const FreeCamera freeCamera;
-
-    std::printf("racer: %s, %dx%d, %d frames at dt %.4f s, camera %s, backend %s (%d threads)\n",
-                techniqueName(renderer.technique), renderer.width, renderer.height, o.frames, o.fixedDt,
-                o.camera.c_str(), backend->name().c_str(), o.threads);
+// Offscreen: `frames` frames at the fixed step, a progress line with per-pass times every 10.
+void runHeadless(const Options& o, engine::render::Backend& backend, FrameRenderer& frame, const FrameSource& source,
+                 CameraMode camera, float aspect) {
     double totalMs = 0.0;
+    SceneFrame last;
     for (int i = 0; i < o.frames; ++i) {
         const auto start = std::chrono::steady_clock::now();
-        const float time = float(i * o.fixedDt);
-        scene.update(float(o.fixedDt));
-        const CameraView camera = cameraView(cameraMode, scene, time, aspect, freeCamera);
-        const engine::scene::DrawLists lists =
-            engine::scene::extractDrawLists(scene.registry(), scene.library(), camera.viewProj, camera.eye);
-        frame.render(lists, camera);
+        last = source(float(i * o.fixedDt), float(o.fixedDt), camera, aspect);
+        frame.render(last.lists, last.camera);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         totalMs += ms;
-        std::string passes;
-        for (const auto& t : backend->takeTimings()) {
-            char buf[64];
-            std::snprintf(buf, sizeof buf, " %s %.1f", t.pass.c_str(), t.milliseconds);
-            passes += buf;
-        }
+        const std::string passes = passTimings(backend);
         if (i == 0 || (i + 1) % 10 == 0 || i + 1 == o.frames)
             std::printf("frame %d/%d  %.1f ms  (ms:%s)\n", i + 1, o.frames, ms, passes.c_str());
     }
     std::printf("racer: mean frame %.1f ms\n", totalMs / std::max(1, o.frames));
+    std::printf("racer: last frame draws %zu opaque, %zu foliage, %zu blend batches\n", last.lists.opaque.size(),
+                last.lists.mask.size(), last.lists.blend.size());
+}
+
+int run(const Options& o) {
+    const FrameSize size = parseFrameSize(o.size);
+    RendererOptions renderer;
+    renderer.width = size.width;
+    renderer.height = size.height;
+    renderer.technique = parseTechniqueName(o.technique);
+    renderer.msaa = o.msaa;
+    renderer.captureLayers = o.captureLayers;
+    const CameraMode cameraMode = parseCamera(o.camera);
+    const float aspect = float(renderer.width) / float(renderer.height);
+
+    // A window needs a display and no --headless. The window's GL context presents; the
+    // frames are drawn by GL (auto, gl) or by the soft backend and uploaded (soft).
+    // A display that cannot be opened is reported and rendered headless, as without one.
+    auto displaySet = [](const char* name) { return std::getenv(name) && *std::getenv(name); };
+    std::shared_ptr<gl::GlfwWindowContext> window;
+    std::unique_ptr<gl::GlBackend> glBackend;
+    if (!o.headless && (displaySet("DISPLAY") || displaySet("WAYLAND_DISPLAY"))) {
+        gl::GlfwWindowOptions wo;
+        wo.title = "racer";
+        wo.width = renderer.width;
+        wo.height = renderer.height;
+        wo.vsync = false;  // the title's fps and pass times are the renderer's, not the display's
+        try {
+            window = gl::GlfwWindowContext::create(wo);
+        } catch (const engine::Error& e) {
+            std::printf("racer: no window (%s); rendering headless\n", e.what());
+        }
+    }
+    const bool windowed = window != nullptr;
+    const std::string backendName = o.backend != "auto" ? o.backend : windowed ? "gl" : "soft";
+    std::unique_ptr<engine::render::Backend> softBackend;
+    if (windowed) {
+        gl::GlOptions go;
+        go.context = window;
+        glBackend = gl::createGlBackend(go);
+    } else if (backendName == "gl") {
+        glBackend = gl::createGlBackend({});  // headless through EGL (Mesa llvmpipe without a GPU)
+    }
+    if (backendName == "soft") softBackend = engine::render::soft::createSoftBackend({o.threads, 64, false});
+    engine::render::Backend& backend = softBackend ? *softBackend : *glBackend;
+
+    // --scene FILE: the file's scene and camera replace the racing scene (gltf_scene.hpp).
+    std::unique_ptr<RacingScene> racing;
+    std::unique_ptr<GltfScene> gltf;
+    if (!o.scenePath.empty()) {
+        gltf = std::make_unique<GltfScene>(backend, GltfSceneOptions{o.scenePath, o.sceneIndex, o.cameraIndex});
+        renderer.background = kNeutralBackground;
+    } else {
+        racing = std::make_unique<RacingScene>(backend, SceneOptions{o.contentDir, o.seed});
+    }
+    engine::ecs::Registry& registry = gltf ? gltf->registry() : racing->registry();
+    engine::scene::MeshLibrary& library = gltf ? gltf->library() : racing->library();
+    FrameRenderer frame(backend, library, renderer);
+    // The living scene (wind, water, ...; living_scene.hpp) on the racing scene.
+    std::unique_ptr<LivingScene> living;
+    if (racing) {
+        living = std::make_unique<LivingScene>(
+            registry, library,
+            LivingSceneOptions{!o.noWind, !o.noWater, !o.noGrass, !o.noParticles, !o.noLightshafts, o.seed,
+                               &racing->track()});
+        frame.setLivingScene(living.get());
+    }
+    const FreeCamera freeCamera;
+    const FrameSource source = [&](float time, float dt, CameraMode camera, float frameAspect) {
+        if (racing) racing->update(dt);
+        const CameraView view =
+            gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, freeCamera);
+        if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
+        return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
+    };
+
+    std::printf("racer: %s, %dx%d, camera %s, backend %s (%d threads), %s\n",
+                transparency::techniqueName(renderer.technique), renderer.width, renderer.height, o.camera.c_str(),
+                backend.name().c_str(), o.threads, windowed ? "window" : "headless");
+    if (living) {
+        std::string names;
+        for (const std::string& n : living->names()) names += " " + n;
+        for (const std::string& n : living->missing()) names += " (" + n + ": not built)";
+        std::printf("racer: living scene:%s\n", names.empty() ? " off" : names.c_str());
+    }
+    if (gltf)
+        std::printf("racer: scene %s (scene %d), camera %s\n", o.scenePath.c_str(), gltf->model().scene,
+                    gltf->camera(aspect).description.c_str());
+    if (windowed) {
+        WindowLoopSettings ws;
+        ws.frames = o.framesGiven ? o.frames : 0;
+        ws.fixedDt = o.fixedDtGiven ? o.fixedDt : 0.0;
+        ws.camera = cameraMode;
+        ws.aspect = aspect;
+        ws.keyScript = o.keyScript;
+        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, Esc quit\n");
+        const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
+        std::printf("racer: %d frames, mean frame %.1f ms\n", r.frames, r.meanFrameMs);
+    } else {
+        if (!o.keyScript.empty()) throw engine::Error("--script needs a window (a display and no --headless)");
+        std::printf("racer: %d frames at dt %.4f s\n", o.frames, o.fixedDt);
+        runHeadless(o, backend, frame, source, cameraMode, aspect);
+    }
 
     if (!o.capturePath.empty()) {
         const std::filesystem::path path(o.capturePath);
         if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-        engine::capture::writePng(path, engine::capture::imageFromReadback(backend->readback(frame.color())));
+        engine::capture::writePng(path, engine::capture::imageFromReadback(backend.readback(frame.color())));
         std::printf("racer: wrote %s\n", path.string().c_str());
         if (o.captureLayers) {
             std::filesystem::path exr = path;
@@ -114,7 +174,11 @@ int run(const Options& o) {
     }
     if (!o.layerPictures.empty()) {
         if (frame.layers().empty()) throw engine::Error("--layer-pictures needs --capture-layers");
-        const int n = writeLayerPictures(o.layerPictures, "ssam_", frame.layers(), kNearPlane, kFarPlane);
+        const SceneCamera planes = gltf ? gltf->camera(aspect) : SceneCamera{};
+        // <technique>_<layer>.png, e.g. ssam_mask_max.png (the README's), alpha_test_result.png.
+        std::string prefix = std::string(transparency::techniqueName(frame.technique())) + "_";
+        std::replace(prefix.begin(), prefix.end(), '-', '_');
+        const int n = writeLayerPictures(o.layerPictures, prefix, frame.layers(), planes.nearPlane, planes.farPlane);
         std::printf("racer: wrote %d layer pictures to %s\n", n, o.layerPictures.c_str());
     }
     return 0;
@@ -125,26 +189,7 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
     CLI::App app{"racer: the SSAM racing-scene demo (seeds/000, Pure)"};
     Options o;
-    app.add_option("--backend", o.backend, "render backend")->check(CLI::IsMember({"soft", "gl"}))->capture_default_str();
-    app.add_option("--technique", o.technique, "how foliage is drawn")
-        ->check(CLI::IsMember({"ssam", "alpha-test"}))
-        ->capture_default_str();
-    app.add_option("--size", o.size, "frame size WIDTHxHEIGHT")->capture_default_str();
-    app.add_option("--frames", o.frames, "frames to render")->check(CLI::Range(1, 1000000))->capture_default_str();
-    app.add_option("--fixed-dt", o.fixedDt, "simulation time step per frame, seconds")
-        ->check(CLI::Range(0.0, 1.0))
-        ->capture_default_str();
-    app.add_option("--camera", o.camera, "camera")->check(CLI::IsMember({"chase", "pan", "free"}))->capture_default_str();
-    app.add_option("--seed", o.seed, "scene seed (track shape, placement)")->capture_default_str();
-    app.add_option("--threads", o.threads, "soft backend threads (0: all)")->check(CLI::Range(0, 256))->capture_default_str();
-    app.add_option("--capture", o.capturePath, "write the last frame to this PNG");
-    app.add_flag("--capture-layers", o.captureLayers, "also write every SSAM layer to an EXR next to the PNG");
-    app.add_flag("--headless", o.headless, "render offscreen even when a display is available");
-    app.add_option("--content", o.contentDir, "content directory")->check(CLI::ExistingDirectory)->capture_default_str();
-    app.add_option("--msaa", o.msaa, "opaque-pass samples (1, 2, 4; Pure used 2)")
-        ->check(CLI::IsMember({1, 2, 4}))
-        ->capture_default_str();
-    app.add_option("--layer-pictures", o.layerPictures, "write each captured layer as a PNG into this directory");
+    addOptions(app, o);
     CLI11_PARSE(app, argc, argv);
     try {
         return run(o);

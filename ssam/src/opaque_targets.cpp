@@ -44,6 +44,14 @@ PassDesc OpaqueTargets::passDesc(const glm::vec4& clearColor) const {
     return pass;
 }
 
+PassDesc OpaqueTargets::loadPassDesc() const {
+    PassDesc pass;
+    pass.name = "opaque (load)";
+    pass.color[0] = {msaaColor_ ? msaaColor_ : color_, LoadOp::Load};
+    pass.depth = {msaaDepth_ ? msaaDepth_ : depth_, LoadOp::Load};
+    return pass;
+}
+
 void OpaqueTargets::resolve() {
     if (!msaaColor_) return;
     backend_.resolve({msaaColor_, color_, desc_.depthFunc});

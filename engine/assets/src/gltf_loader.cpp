@@ -597,7 +597,9 @@ void selectScene(const LoadContext& ctx, const tinygltf::Model& model, LoadedMod
     if (requested >= 0) {
         if (static_cast<std::size_t>(requested) >= model.scenes.size())
             ctx.fail("scene", "LoadOptions::scene " + std::to_string(requested) + " is out of range: the file has " +
-                                  std::to_string(model.scenes.size()) + " scenes");
+                                  std::to_string(model.scenes.size()) + " scenes" +
+                                  (model.scenes.empty() ? std::string(" (it has none to choose)")
+                                                        : " (valid: 0.." + std::to_string(model.scenes.size() - 1) + ")"));
         out.scene = requested;
     } else if (model.defaultScene >= 0) {
         checkIndex(ctx, model.defaultScene, model.scenes.size(), "scene", "scenes", false);

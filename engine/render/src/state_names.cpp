@@ -31,7 +31,9 @@ const char* alphaFailModeName(AlphaFailMode mode) {
 }
 
 const char* programKindName(ProgramKind kind) {
-    constexpr const char* kNames[] = {"Flat", "OpaqueLit", "FoliageColor", "FoliageAlpha", "Composite"};
+    constexpr const char* kNames[] = {"Flat", "OpaqueLit", "FoliageColor", "FoliageAlpha", "Composite",
+                                         "WboitAccumulate", "WboitResolve", "CoverageComposite",
+                                         "Particle", "LayerComposite"};
     return kNames[static_cast<int>(kind)];
 }
 

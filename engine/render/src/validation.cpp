@@ -102,12 +102,38 @@ void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& ext
 
     if (isFullscreen(p.program)) {
         // Full-screen programs read their inputs at every target pixel.
-        const CompositeParams& c = std::get<CompositeParams>(d.params);
         auto input = [&](TextureHandle h) {
             const TextureDesc& t = sampledTexture(h, pass, lookup, what);
             if (t.width < extent.width || t.height < extent.height)
                 throw Error(what + ": input " + quotedName(t.name) + " is smaller than the target");
         };
+        if (const auto* w = std::get_if<WboitResolveParams>(&d.params)) {
+            input(w->accumulation);
+            input(w->revealage);
+            return;
+        }
+        if (const auto* c = std::get_if<CoverageCompositeParams>(&d.params)) {
+            input(c->foliage);
+            input(c->mask);
+            if (c->maskAdd) input(c->maskAdd);
+            if (c->model != CoverageModel::EqualLayers && c->model != CoverageModel::Exponential)
+                throw Error(what + ": unknown coverage model " + std::to_string(int(c->model)));
+            return;
+        }
+        if (const auto* l = std::get_if<LayerCompositeParams>(&d.params)) {
+            // A layer of 1/layerScale the target's size (rounded up), upsampled by the program.
+            if (l->layerScale != 1 && l->layerScale != 2)
+                throw Error(what + ": layerScale " + std::to_string(l->layerScale) + " is not 1 or 2");
+            const TextureDesc& t = sampledTexture(l->layer, pass, lookup, what);
+            const int s = l->layerScale;
+            if (t.width < (extent.width + s - 1) / s || t.height < (extent.height + s - 1) / s)
+                throw Error(what + ": layer " + quotedName(t.name) + " is smaller than the target / " + std::to_string(s));
+            if (l->sceneDepth) input(l->sceneDepth);
+            if (!std::isfinite(l->depthScale) || !std::isfinite(l->depthOffset))
+                throw Error(what + ": depth-to-distance factors are not finite");
+            return;
+        }
+        const CompositeParams& c = std::get<CompositeParams>(d.params);
         input(c.foliage);
         input(c.mask);
         if (c.maskAdd) input(c.maskAdd);  // the split ADD mask is optional
@@ -116,6 +142,15 @@ void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& ext
     }
 
     if (d.count % 3 != 0) throw Error(what + ": count " + std::to_string(d.count) + " is not a multiple of 3");
+    if (const auto* particle = std::get_if<ParticleParams>(&d.params)) {
+        if (particle->depthStride != 1 && particle->depthStride != 2)
+            throw Error(what + ": depthStride " + std::to_string(particle->depthStride) + " is not 1 or 2");
+        if (!(particle->softness > 0.0f) || !std::isfinite(particle->softness))
+            throw Error(what + ": softness must be finite and > 0");
+        if (!std::isfinite(particle->depthScale) || !std::isfinite(particle->depthOffset))
+            throw Error(what + ": depth-to-distance factors are not finite");
+        if (particle->sceneDepth) sampledTexture(particle->sceneDepth, pass, lookup, what);
+    }
     const BufferDesc& vb = bufferOfKind(d.vertices, BufferKind::Vertex, "a vertex buffer", lookup, what);
     const std::uint64_t vertexCount = vb.size / sizeof(Vertex);
     if (d.indices) {

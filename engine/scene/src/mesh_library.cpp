@@ -25,6 +25,7 @@ std::uint32_t MeshLibrary::addPart(MeshPart part, const std::vector<Vertex>& ver
     part.indexCount = static_cast<std::uint32_t>(indices.size());
     for (const Vertex& v : vertices) part.bounds.add(v.position);
     parts_.push_back(std::move(part));
+    vertices_.push_back(vertices);
     return static_cast<std::uint32_t>(parts_.size() - 1);
 }
 

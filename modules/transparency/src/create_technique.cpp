@@ -9,9 +9,14 @@ std::unique_ptr<Technique> createTechnique(TechniqueKind kind, engine::render::B
     switch (kind) {
         case TechniqueKind::Ssam: return detail::makeSsamTechnique(backend, options);
         case TechniqueKind::AlphaTest: return detail::makeAlphaTestTechnique(backend, options);
-        default: break;
+        case TechniqueKind::AlphaToCoverage: return detail::makeAlphaToCoverageTechnique(backend, options);
+        case TechniqueKind::BlendUnsorted: return detail::makeBlendUnsortedTechnique(backend, options);
+        case TechniqueKind::BlendSorted: return detail::makeBlendSortedTechnique(backend, options);
+        case TechniqueKind::Wboit: return detail::makeWboitTechnique(backend, options);
+        case TechniqueKind::Reference: return detail::makeReferenceTechnique(backend, options);
+        case TechniqueKind::SsamPlus: return detail::makeSsamPlusTechnique(backend, options);
     }
-    throw engine::Error(std::string("technique '") + techniqueName(kind) + "' is not implemented yet");
+    throw engine::Error(std::string("unknown technique kind ") + std::to_string(int(kind)));
 }
 
 }  // namespace transparency

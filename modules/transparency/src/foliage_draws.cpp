@@ -33,6 +33,22 @@ SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch&
     return params;
 }
 
+PipelineDesc foliagePipeline(const char* name) {
+    PipelineDesc p;
+    p.name = name;
+    p.program = ProgramKind::FoliageColor;
+    p.raster.cull = CullMode::None;
+    return p;
+}
+
+PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const char* name) {
+    PassDesc pass;
+    pass.name = name;
+    pass.color[0] = {opaque.color(), LoadOp::Load};
+    pass.depth = {opaque.depth(), LoadOp::Load};
+    return pass;
+}
+
 DrawDesc batchDraw(const ssam::FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
     DrawDesc d;
     d.pipeline = pipeline;

@@ -17,6 +17,14 @@ std::vector<ssam::FoliageBatch> batchesOf(const FoliageFrame& frame);
 // FoliageColor's parameters for one batch under the frame's camera and light.
 engine::render::SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch& batch);
 
+// FoliageColor on both faces (foliage is double-sided), nothing else set: each technique
+// adds its depth, blend and alpha state.
+engine::render::PipelineDesc foliagePipeline(const char* name);
+
+// The opaque targets' resolved colour and depth, loaded: for techniques that draw after
+// the resolve.
+engine::render::PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const char* name);
+
 // One draw of a batch (all its instances, or `instances`/`instanceCount` when given).
 engine::render::DrawDesc batchDraw(const ssam::FoliageBatch& batch, engine::render::PipelineHandle pipeline,
                                    engine::render::ProgramParams params);

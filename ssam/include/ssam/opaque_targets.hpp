@@ -27,6 +27,9 @@ public:
     // The pass to draw the opaque scene in (the MSAA targets when samples > 1), cleared to
     // `clearColor` and to the far depth of the depth function.
     engine::render::PassDesc passDesc(const glm::vec4& clearColor) const;
+    // The same targets loaded, not cleared: for drawing more (e.g. alpha-tested foliage)
+    // into the opaque frame before resolve().
+    engine::render::PassDesc loadPassDesc() const;
     // MSAA only: averages colour into rt_opaque and keeps the closest depth in rt_depth.
     void resolve();
 

@@ -11,3 +11,16 @@ run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} --component Unspe
 run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${CONSUMER_BUILD})
 run(${CONSUMER_BUILD}/ssam_consumer)
+# The raw-OpenGL example, stand-alone against the same prefix (find_package(ssam) + ssam::gl);
+# run headless when a context can be made (77 = none here, which is fine for this test).
+if(EXAMPLE_SOURCE)
+  file(REMOVE_RECURSE ${EXAMPLE_BUILD})
+  run(${CMAKE_COMMAND} -S ${EXAMPLE_SOURCE} -B ${EXAMPLE_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
+  run(${CMAKE_COMMAND} --build ${EXAMPLE_BUILD})
+  execute_process(COMMAND ${EXAMPLE_BUILD}/ssam_gl_embedding --headless --out ${EXAMPLE_BUILD}/frame.png
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}")
+  if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)
+    message(FATAL_ERROR "the installed-package example failed (${rc}):\n${err}")
+  endif()
+endif()

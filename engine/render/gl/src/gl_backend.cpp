@@ -174,7 +174,11 @@ struct ProgramSlot {
     GlProgram program;
     GLint viewProj = -1, color = -1, hasTexture = -1, premultiplied = -1, towardLight = -1, lightColor = -1,
           ambient = -1, alphaFactor = -1, hasMaskAdd = -1, maskLerp = -1, squareMask = -1, alphaSelect = -1,
-          filter = -1, scissor = -1, alphaFunc = -1, alphaRef = -1, a2cSamples = -1, a2cActual = -1;
+          filter = -1, scissor = -1, alphaFunc = -1, alphaRef = -1, a2cSamples = -1, a2cActual = -1,
+          depthScale = -1, coverageModel = -1;
+    // Particle / LayerComposite (modules/particles)
+    GLint hasDepth = -1, depthStride = -1, distanceScale = -1, distanceOffset = -1, softness = -1,
+          greaterIsCloser = -1, layerScale = -1;
 };
 
 struct PendingTiming {
@@ -844,15 +848,25 @@ private:
         s.maskLerp = p.uniform("u_maskLerp");
         s.squareMask = p.uniform("u_squareMask");
         s.alphaSelect = p.uniform("u_alphaSelect");
+        s.hasDepth = p.uniform("u_hasDepth");
+        s.depthStride = p.uniform("u_depthStride");
+        s.distanceScale = p.uniform("u_distanceScale");
+        s.distanceOffset = p.uniform("u_distanceOffset");
+        s.softness = p.uniform("u_softness");
+        s.greaterIsCloser = p.uniform("u_greaterIsCloser");
+        s.layerScale = p.uniform("u_layerScale");
         s.filter = p.uniform("u_filter");
         s.scissor = p.uniform("u_scissor");
         s.alphaFunc = p.uniform("u_alphaFunc");
         s.alphaRef = p.uniform("u_alphaRef");
         s.a2cSamples = p.uniform("u_a2cSamples");
         s.a2cActual = p.uniform("u_a2cActual");
+        s.depthScale = p.uniform("u_depthScale");
+        s.coverageModel = p.uniform("u_coverageModel");
     }
 
     ProgramSlot& program(ProgramKind kind) {
+        if (std::size_t(kind) >= programs_.size()) throw Error("GL backend: program kind " + std::to_string(int(kind)) + " has no slot");
         std::optional<ProgramSlot>& slot = programs_[std::size_t(kind)];
         if (!slot) {
             ProgramSlot s;
@@ -927,6 +941,45 @@ private:
                     glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
                     glProgramUniform1f(p, s.alphaFactor, params.alphaFactor);
                     bindSampled(kUnitBaseColor, params.baseColor, s, false);
+                } else if constexpr (std::is_same_v<P, WboitAccumulateParams>) {
+                    glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
+                    glProgramUniform4fv(p, s.color, 1, &params.baseColorFactor[0]);
+                    const glm::vec3 toward = glm::normalize(params.light.towardLight);
+                    glProgramUniform3fv(p, s.towardLight, 1, &toward[0]);
+                    glProgramUniform3fv(p, s.lightColor, 1, &params.light.color[0]);
+                    glProgramUniform3fv(p, s.ambient, 1, &params.light.ambient[0]);
+                    glProgramUniform1f(p, s.depthScale, params.depthScale);
+                    bindSampled(kUnitBaseColor, params.baseColor, s, true);
+                } else if constexpr (std::is_same_v<P, CoverageCompositeParams>) {
+                    glBindTextureUnit(kUnitFoliage, textures_.get(params.foliage).id);
+                    glBindTextureUnit(kUnitMask, textures_.get(params.mask).id);
+                    glBindTextureUnit(kUnitMaskAdd, params.maskAdd ? textures_.get(params.maskAdd).id : 0);
+                    for (GLuint unit : {0u, 1u, 2u}) glBindSampler(unit, 0);
+                    glProgramUniform1i(p, s.hasMaskAdd, params.maskAdd ? 1 : 0);
+                    glProgramUniform1i(p, s.coverageModel, int(params.model));
+                } else if constexpr (std::is_same_v<P, ParticleParams>) {
+                    glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
+                    glBindTextureUnit(0, params.sceneDepth ? textures_.get(params.sceneDepth).id : 0);
+                    glBindSampler(0, 0);
+                    glProgramUniform1i(p, s.hasDepth, params.sceneDepth ? 1 : 0);
+                    glProgramUniform1i(p, s.depthStride, params.depthStride);
+                    glProgramUniform1f(p, s.distanceScale, params.depthScale);
+                    glProgramUniform1f(p, s.distanceOffset, params.depthOffset);
+                    glProgramUniform1f(p, s.softness, params.softness);
+                    glProgramUniform1i(p, s.greaterIsCloser, params.greaterIsCloser ? 1 : 0);
+                } else if constexpr (std::is_same_v<P, LayerCompositeParams>) {
+                    glBindTextureUnit(0, params.sceneDepth ? textures_.get(params.sceneDepth).id : 0);
+                    glBindTextureUnit(1, textures_.get(params.layer).id);
+                    for (GLuint unit : {0u, 1u}) glBindSampler(unit, 0);
+                    glProgramUniform1i(p, s.layerScale, params.layerScale);
+                    glProgramUniform1i(p, s.hasDepth, params.sceneDepth ? 1 : 0);
+                    glProgramUniform1f(p, s.distanceScale, params.depthScale);
+                    glProgramUniform1f(p, s.distanceOffset, params.depthOffset);
+                    glProgramUniform1i(p, s.greaterIsCloser, params.greaterIsCloser ? 1 : 0);
+                } else if constexpr (std::is_same_v<P, WboitResolveParams>) {
+                    glBindTextureUnit(0, textures_.get(params.accumulation).id);
+                    glBindTextureUnit(1, textures_.get(params.revealage).id);
+                    for (GLuint unit : {0u, 1u}) glBindSampler(unit, 0);
                 } else {
                     glBindTextureUnit(kUnitFoliage, textures_.get(params.foliage).id);
                     glBindTextureUnit(kUnitMask, textures_.get(params.mask).id);
@@ -1096,7 +1149,8 @@ private:
     std::set<GLuint> ownedTextures_, ownedBuffers_;
     std::map<GLenum, int> maxSamplesByFormat_;
     std::map<std::vector<GLuint>, GLuint> framebuffers_;
-    std::array<std::optional<ProgramSlot>, 5> programs_;
+    // Indexed by ProgramKind; room for kinds still to come (program() checks the bound).
+    std::array<std::optional<ProgramSlot>, 16> programs_;
     std::optional<ProgramSlot> resolveColor_, resolveDepth_, nothing_;
     std::array<GLuint, 27> samplers_{};
     GLuint vao_ = 0, emptyVao_ = 0, identityInstance_ = 0;

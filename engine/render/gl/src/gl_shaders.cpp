@@ -188,10 +188,71 @@ void main() {
 #endif
     vec3 lit = base.rgb * (u_ambient + u_lightColor * lambert(n));
 #if FOLIAGE
+#ifdef WBOIT
+    finish(wboitWeighted(vec4(lit, base.a)));
+#else
     finish(vec4(lit, base.a));
+#endif
 #else
     finish(vec4(lit, 1.0));
 #endif
+}
+)";
+
+// WboitAccumulate: defines wboitWeighted() for the surface program (soft: programs.hpp
+// wboitWeight, the same operations in the same order). McGuire & Bavoil 2013, eq. (7), with
+// the view depth |z| = clip w = 1 / gl_FragCoord.w.
+constexpr const char* kWboitWeight = R"(
+#define WBOIT 1
+uniform float u_depthScale;
+vec4 wboitWeighted(vec4 c) {
+    precise float z = abs((1.0 / gl_FragCoord.w) * u_depthScale);
+    precise float near = z / 5.0, far = z / 200.0;
+    precise float far2 = far * far;
+    precise float g = 10.0 / (1e-5 + near * near + far2 * far2 * far2);
+    precise float w = c.a * (g > 1e-2 ? (g < 3e3 ? g : 3e3) : 1e-2);
+    precise float aw = c.a * w;
+    return vec4(c.rgb * aw, aw);
+}
+)";
+
+// The WBOIT composite (McGuire & Bavoil 2013): average colour and revealage; the blend
+// (INV_SRC_ALPHA / SRC_ALPHA) puts it over the opaque colour.
+constexpr const char* kWboitResolveFragment = R"(
+layout(binding = 0) uniform sampler2D u_accumulation;
+layout(binding = 1) uniform sampler2D u_revealage;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 sum = texelFetch(u_accumulation, p, 0);
+    float reveal = clamp01(texelFetch(u_revealage, p, 0).r);
+    float weight = sum.a > 1e-5 ? sum.a : 1e-5;
+    vec3 average = sum.rgb / weight;
+    for (int c = 0; c < 3; ++c)
+        if (isnan(average[c]) || isinf(average[c])) average[c] = 0.0;
+    finish(vec4(average, reveal));
+}
+)";
+
+// SSAM+'s composite (soft: programs.hpp CoverageCompositeProgram, layerCoverage).
+constexpr const char* kCoverageCompositeFragment = R"(
+layout(binding = 0) uniform sampler2D u_foliage;
+layout(binding = 1) uniform sampler2D u_mask;
+layout(binding = 2) uniform sampler2D u_maskAdd;
+uniform bool u_hasMaskAdd;
+uniform int u_coverageModel;  // CoverageModel: 0 equal layers, 1 exponential
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 m = texelFetch(u_mask, p, 0);
+    float addMask = u_hasMaskAdd ? texelFetch(u_maskAdd, p, 0).r : m.a;
+    float coverage = 0.0;
+    if (u_coverageModel == 1) coverage = 1.0 - exp(-addMask);
+    else if (m.r >= 1.0) coverage = 1.0;
+    else if (m.r > 0.0) coverage = 1.0 - pow(1.0 - m.r, addMask / m.r);
+    coverage = clamp01(coverage);
+    vec3 color = texelFetch(u_foliage, p, 0).rgb;
+    for (int c = 0; c < 3; ++c)
+        if (isnan(color[c]) || isinf(color[c])) color[c] = 0.0;
+    finish(vec4(color, coverage));
 }
 )";
 
@@ -260,6 +321,92 @@ void main() {
 }
 )";
 
+// Particle (soft: particle_programs.hpp): premultiplied soft billboard (program.hpp
+// ParticleParams, seeds/003), closest-sample scene depth for half-resolution layers.
+constexpr const char* kParticleDepth = R"(
+layout(binding = 0) uniform sampler2D u_sceneDepth;
+uniform bool u_greaterIsCloser;
+float saturateOrZero(float v) { return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; }
+float closestDepth(ivec2 p, int stride) {
+    stride = clamp(stride, 1, 4);
+    ivec2 last = textureSize(u_sceneDepth, 0) - 1;
+    float best = texelFetch(u_sceneDepth, min(p * stride, last), 0).r;
+    for (int sy = 0; sy < stride; ++sy)
+        for (int sx = 0; sx < stride; ++sx) {
+            float z = texelFetch(u_sceneDepth, min(p * stride + ivec2(sx, sy), last), 0).r;
+            if (u_greaterIsCloser ? z > best : z < best) best = z;
+        }
+    return best;
+}
+)";
+
+constexpr const char* kParticleFragment = R"(
+in vec2 v_uv;
+in vec3 v_normal;
+in vec4 v_color;
+uniform bool u_hasDepth;
+uniform int u_depthStride;
+uniform float u_distanceScale;
+uniform float u_distanceOffset;
+uniform float u_softness;
+void main() {
+    if (llvmpipeGuard()) discard;
+    vec2 q = v_uv * 2.0 - 1.0;
+    float shape = saturateOrZero(1.0 - (q.x * q.x + q.y * q.y));
+    float fade = 1.0;
+    if (u_hasDepth) {
+        float z = closestDepth(ivec2(gl_FragCoord.xy), u_depthStride);
+        float sceneDistance = u_distanceScale / (z + u_distanceOffset);
+        fade = saturateOrZero((sceneDistance - v_normal.x) / u_softness);
+    }
+    float a = saturateOrZero(v_color.a) * shape * fade;
+    float additive = saturateOrZero(v_normal.y);
+    vec4 o = vec4(v_color.rgb * a, a * (1.0 - additive));
+    for (int c = 0; c < 4; ++c)
+        if (isnan(o[c]) || isinf(o[c])) o[c] = 0.0;
+    finish(o);
+}
+)";
+
+// LayerComposite (soft: particle_programs.hpp): the layer texel, nearest-depth upsampled.
+constexpr const char* kLayerCompositeFragment = R"(
+layout(binding = 1) uniform sampler2D u_layer;
+uniform int u_layerScale;
+uniform bool u_hasDepth;
+uniform float u_distanceScale;
+uniform float u_distanceOffset;
+float distanceOf(float z) { return u_distanceScale / (z + u_distanceOffset); }
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    int scale = clamp(u_layerScale, 1, 4);
+    ivec2 last = textureSize(u_layer, 0) - 1;
+    ivec2 l = min(p / scale, last);
+    if (scale > 1 && u_hasDepth) {
+        float here = distanceOf(texelFetch(u_sceneDepth, p, 0).r);
+        ivec2 c0 = clamp((p - 1) / 2, ivec2(0), last), c1 = min(c0 + 1, last);
+        ivec2 n = clamp(p / 2, ivec2(0), last);
+        vec4 c00 = texelFetch(u_layer, c0, 0);
+        bool same = c00 == texelFetch(u_layer, ivec2(c1.x, c0.y), 0) && c00 == texelFetch(u_layer, ivec2(c0.x, c1.y), 0) &&
+                    c00 == texelFetch(u_layer, c1, 0);
+        if (same) l = c0; else {
+        float best = abs(distanceOf(closestDepth(n, scale)) - here);
+        l = n;
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) {
+                ivec2 c = ivec2(i == 0 ? c0.x : c1.x, j == 0 ? c0.y : c1.y);
+                float diff = abs(distanceOf(closestDepth(c, scale)) - here);
+                if (diff < best) { best = diff; l = c; }
+            }
+        }
+    }
+    vec4 c = texelFetch(u_layer, l, 0);
+    for (int i = 0; i < 4; ++i)
+        if (isnan(c[i]) || isinf(c[i])) c[i] = 0.0;
+    c.a = saturateOrZero(c.a);
+    finish(c);
+}
+)";
+
 }  // namespace
 
 std::string vertexSource(ProgramKind kind) { return isFullscreen(kind) ? kFullscreenVertex : kMeshVertex; }
@@ -272,6 +419,12 @@ std::string fragmentSource(ProgramKind kind) {
         case ProgramKind::FoliageColor: return s + kMeshFragmentGuard + kSampling + "#define FOLIAGE 1\n" + kSurfaceFragment;
         case ProgramKind::FoliageAlpha: return s + kMeshFragmentGuard + kSampling + kFoliageAlphaFragment;
         case ProgramKind::Composite: return s + kCompositeFragment;
+        case ProgramKind::WboitAccumulate:
+            return s + kMeshFragmentGuard + kSampling + "#define FOLIAGE 1\n" + kWboitWeight + kSurfaceFragment;
+        case ProgramKind::WboitResolve: return s + kWboitResolveFragment;
+        case ProgramKind::CoverageComposite: return s + kCoverageCompositeFragment;
+        case ProgramKind::Particle: return s + kMeshFragmentGuard + kParticleDepth + kParticleFragment;
+        case ProgramKind::LayerComposite: return s + kParticleDepth + kLayerCompositeFragment;
     }
     return s;
 }

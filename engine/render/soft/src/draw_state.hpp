@@ -6,13 +6,17 @@
 #include <variant>
 
 #include "engine/render/pipeline.hpp"
+#include "engine/render/soft/soft_backend.hpp"
 #include "programs.hpp"
+#include "particle_programs.hpp"
 #include "soft_texture.hpp"
 
 namespace engine::render::soft {
 
 using ProgramInstance =
-    std::variant<FlatProgram, OpaqueLitProgram, FoliageColorProgram, FoliageAlphaProgram, CompositeProgram>;
+    std::variant<FlatProgram, OpaqueLitProgram, FoliageColorProgram, FoliageAlphaProgram, CompositeProgram,
+                 WboitAccumulateProgram, WboitResolveProgram, CoverageCompositeProgram, ParticleProgram,
+                 LayerCompositeProgram>;
 
 // Standard sample positions (D3D11 / Vulkan standard locations), in 1/16 pixel from the
 // pixel centre. GL leaves them to the implementation; README "Differential tolerances".
@@ -39,6 +43,7 @@ struct DrawState {
     std::array<bool, kMaxColorTargets> blendNeeded{};  // false: plain store
     glm::vec4 blendConstant{0.0f};
     bool shade = true;  // false: depth-only, the program is never run
+    FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (SoftBackend::setFragmentSink)
 };
 
 }  // namespace engine::render::soft

@@ -20,6 +20,7 @@ struct Fragment {
     UvDerivatives duv;
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     glm::vec4 color{1.0f};
+    float clipW = 1.0f;  // clip-space w (the view depth under a perspective projection); set with uv/normal/color
     bool frontFacing = true;
 };
 
@@ -108,6 +109,81 @@ struct CompositeProgram {
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(color[c])) color[c] = 0.0f;
         return {color, blend};
+    }
+};
+
+// Weighted blended OIT (McGuire & Bavoil, JCGT 2(2), 2013), eq. (7):
+//   w(z, a) = a * clamp(10 / (1e-5 + (|z|/5)^2 + (|z|/200)^6), 1e-2, 3e3)
+// (program.hpp WboitAccumulateParams). Written out with multiplications only, in the same
+// order as the GLSL (gl_shaders.cpp), so both backends round alike. NaN clamps to 1e-2.
+inline float wboitWeight(float alpha, float viewDepth) {
+    const float z = std::fabs(viewDepth);
+    const float near = z / 5.0f, far = z / 200.0f;
+    const float far2 = far * far;
+    const float g = 10.0f / (1e-5f + near * near + far2 * far2 * far2);
+    return alpha * (g > 1e-2f ? (g < 3e3f ? g : 3e3f) : 1e-2f);
+}
+
+// FoliageColor's fragment, premultiplied and weighted: (C * a * w, a * w).
+struct WboitAccumulateProgram {
+    static constexpr ProgramNeeds kNeeds = FoliageColorProgram::kNeeds;
+    FoliageColorProgram surface;
+    float depthScale = 1.0f;
+
+    glm::vec4 shade(const Fragment& f) const {
+        const glm::vec4 c = surface.shade(f);
+        const float w = wboitWeight(c.a, f.clipW * depthScale);
+        return {glm::vec3(c) * (c.a * w), c.a * w};
+    }
+};
+
+// The WBOIT composite: (average colour, revealage), blended INV_SRC_ALPHA / SRC_ALPHA onto
+// the opaque colour by the pipeline (program.hpp WboitResolveParams).
+struct WboitResolveProgram {
+    static constexpr ProgramNeeds kNeeds{};
+    const SoftTexture* accumulation = nullptr;
+    const SoftTexture* revealage = nullptr;
+
+    glm::vec4 shade(const Fragment& f) const {
+        const glm::vec4 sum = fetchTexel(*accumulation, f.x, f.y);
+        float reveal = fetchTexel(*revealage, f.x, f.y).r;
+        reveal = reveal > 0.0f ? (reveal < 1.0f ? reveal : 1.0f) : 0.0f;  // NaN -> 0
+        const float weight = sum.a > 1e-5f ? sum.a : 1e-5f;                 // the paper's max(accum.a, 1e-5)
+        glm::vec3 average = glm::vec3(sum) / weight;
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(average[c])) average[c] = 0.0f;
+        return {average, reveal};
+    }
+};
+
+// SSAM+'s composite (program.hpp CoverageCompositeParams): the coverage of the layers from
+// the MAX and ADD masks.
+inline float layerCoverage(CoverageModel model, float maxMask, float addMask) {
+    float coverage = 0.0f;
+    if (model == CoverageModel::Exponential) {
+        coverage = 1.0f - std::exp(-addMask);
+    } else if (maxMask >= 1.0f) {
+        coverage = 1.0f;
+    } else if (maxMask > 0.0f) {
+        coverage = 1.0f - std::pow(1.0f - maxMask, addMask / maxMask);
+    }
+    return coverage > 0.0f ? (coverage < 1.0f ? coverage : 1.0f) : 0.0f;  // NaN -> 0
+}
+
+struct CoverageCompositeProgram {
+    static constexpr ProgramNeeds kNeeds{};
+    CoverageModel model = CoverageModel::EqualLayers;
+    const SoftTexture* foliage = nullptr;
+    const SoftTexture* mask = nullptr;
+    const SoftTexture* maskAdd = nullptr;
+
+    glm::vec4 shade(const Fragment& f) const {
+        const glm::vec4 m = fetchTexel(*mask, f.x, f.y);
+        const float addMask = maskAdd ? fetchTexel(*maskAdd, f.x, f.y).r : m.a;
+        glm::vec3 color(fetchTexel(*foliage, f.x, f.y));
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(color[c])) color[c] = 0.0f;
+        return {color, layerCoverage(model, m.r, addMask)};
     }
 };
 

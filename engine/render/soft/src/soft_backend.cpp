@@ -40,6 +40,7 @@ struct SoftPipeline {
 
 struct RecordedDraw {
     DrawDesc desc;
+    FragmentSink* sink = nullptr;  // set: the draw's fragments are captured, not written
 };
 
 // One chunk of a draw's triangles after setup, with the tiles each may cover.
@@ -81,6 +82,7 @@ public:
     std::string name() const override { return "soft"; }
     SoftStats stats() const override { return stats_; }
     const SoftOptions& options() const override { return options_; }
+    void setFragmentSink(FragmentSink* sink) override { sink_ = sink; }
 
     TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
         const std::string what = "texture " + quotedName(desc.name);
@@ -172,7 +174,12 @@ public:
     void draw(const DrawDesc& d) override {
         if (!pass_) throw Error("draw outside a pass");
         validateDraw(d, *pass_, {passWidth_, passHeight_, passSamples_}, lookup_);
-        draws_.push_back({d});
+        if (sink_) {
+            const PipelineDesc& p = pipelines_.get(d.pipeline).desc;
+            if (passSamples_ != 1 || !p.depth.test || !pass_->depth.texture)
+                throw Error("draw with pipeline '" + p.name + "': fragment capture needs a single-sampled pass and a depth test");
+        }
+        draws_.push_back({d, sink_});
     }
 
     void endPass() override {
@@ -375,6 +382,27 @@ private:
                 const auto& p = std::get<CompositeParams>(params);
                 return CompositeProgram{p, texture(p.foliage), texture(p.mask), texture(p.maskAdd)};
             }
+            case ProgramKind::WboitAccumulate: {
+                const auto& p = std::get<WboitAccumulateParams>(params);
+                const SurfaceParams surface{p.viewProj, p.baseColorFactor, p.baseColor, p.light};
+                return WboitAccumulateProgram{FoliageColorProgram{surface, texture(p.baseColor.texture)}, p.depthScale};
+            }
+            case ProgramKind::WboitResolve: {
+                const auto& p = std::get<WboitResolveParams>(params);
+                return WboitResolveProgram{texture(p.accumulation), texture(p.revealage)};
+            }
+            case ProgramKind::Particle: {
+                const auto& p = std::get<ParticleParams>(params);
+                return ParticleProgram{p, texture(p.sceneDepth)};
+            }
+            case ProgramKind::LayerComposite: {
+                const auto& p = std::get<LayerCompositeParams>(params);
+                return LayerCompositeProgram{p, texture(p.layer), texture(p.sceneDepth)};
+            }
+            case ProgramKind::CoverageComposite: {
+                const auto& p = std::get<CoverageCompositeParams>(params);
+                return CoverageCompositeProgram{p.model, texture(p.foliage), texture(p.mask), texture(p.maskAdd)};
+            }
         }
         throw Error("unknown program kind");
     }
@@ -402,9 +430,8 @@ private:
             d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity;
         const glm::mat4 viewProj = std::visit(
             [](const auto& params) -> glm::mat4 {
-                using P = std::decay_t<decltype(params)>;
-                if constexpr (std::is_same_v<P, CompositeParams>) return glm::mat4(1.0f);
-                else return params.viewProj;
+                if constexpr (requires { params.viewProj; }) return params.viewProj;
+                else return glm::mat4(1.0f);  // full-screen programs
             },
             d.params);
 
@@ -470,6 +497,12 @@ private:
         for (std::uint32_t i = 0; i < draws_.size(); ++i) {
             const DrawDesc& d = draws_[i].desc;
             drawStates.push_back(drawStateFor(d));
+            if (FragmentSink* sink = draws_[i].sink) {
+                DrawState& s = drawStates.back();
+                s.capture = sink;
+                s.shade = true;
+                s.depthWrite = false;
+            }
             processGeometry(d, i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, grid);
         }
         stats_.draws += draws_.size();
@@ -532,6 +565,7 @@ private:
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
     Clock::time_point passStart_;
     std::vector<RecordedDraw> draws_;
+    FragmentSink* sink_ = nullptr;
     std::vector<GeometryChunk> chunks_;  // setup output of the pass being executed
     std::size_t chunksUsed_ = 0;
     std::vector<std::vector<const SetupTriangle*>> bins_;  // per tile, in submission order

@@ -271,7 +271,10 @@ private:
     // triangle, and the alpha test and the stored bytes are worked out once.
     void prepareConstant(const SetupTriangle& t, int boxPixels) {
         constant_ = false;
-        if constexpr (std::is_same_v<Program, CompositeProgram>) {
+        if (draw_.capture) return;  // captured fragments each carry their own depth
+        if constexpr (std::is_same_v<Program, CompositeProgram> || std::is_same_v<Program, WboitResolveProgram> ||
+                      std::is_same_v<Program, CoverageCompositeProgram> || std::is_same_v<Program, ParticleProgram> ||
+                      std::is_same_v<Program, LayerCompositeProgram>) {
             return;
         } else {
             constexpr ProgramNeeds needs = Program::kNeeds;
@@ -530,6 +533,7 @@ private:
                                       _mm_set1_ps(p.dy * fy));
                 };
                 const __m128 w = _mm_div_ps(one, evaluateLanes(t.inverseW));
+                _mm_store_ps(row_.w + 4 * h, w);
                 auto attribute = [&](int k) { return _mm_mul_ps(evaluateLanes(t.attributeOverW[k]), w); };
                 if constexpr (needs.uv) {
                     const __m128 u = attribute(kAttrU), v = attribute(kAttrV);
@@ -571,6 +575,7 @@ private:
         }
         if constexpr (needs.normal) f.normal = {row_.normal[0][i], row_.normal[1][i], row_.normal[2][i]};
         if constexpr (needs.color) f.color = {row_.color[0][i], row_.color[1][i], row_.color[2][i], row_.color[3][i]};
+        if constexpr (needs.uv || needs.normal || needs.color) f.clipW = row_.w[i];
         return f;
     }
 #endif
@@ -579,6 +584,10 @@ private:
     void shadeSingle(const Fragment& fragment, int px, int py, float z, std::byte* depthAt) {
         const glm::vec4 color = program_.shade(fragment);
         ++counters_.pixelsShaded;
+        if (draw_.capture) {
+            if (draw_.alphaTest.passes(color.a)) draw_.capture->add(px, py, {z, color});
+            return;
+        }
 
         bool writeRgb = true, writeAlpha = true, writeDepth = draw_.depthWrite;
         if (!draw_.alphaTest.passes(color.a)) {
@@ -711,6 +720,7 @@ private:
         if constexpr (needs.uv || needs.normal || needs.color) {
             const float inverseW = evaluate(t.inverseW, fx, fy);
             const float w = 1.0f / inverseW;
+            f.clipW = w;
             auto attribute = [&](int k) { return evaluate(t.attributeOverW[k], fx, fy) * w; };
             if constexpr (needs.uv) {
                 f.uv = {attribute(kAttrU), attribute(kAttrV)};
@@ -741,6 +751,7 @@ private:
         alignas(16) float duv[4][kBlockSize];  // du/dx, dv/dx, du/dy, dv/dy
         alignas(16) float normal[3][kBlockSize];
         alignas(16) float color[4][kBlockSize];
+        alignas(16) float w[kBlockSize];  // clip w (Fragment::clipW)
     } row_;
     int width_ = 0;        // of the pass's targets
     TargetView depth_;

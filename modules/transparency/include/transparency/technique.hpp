@@ -54,10 +54,33 @@ struct FoliageFrame {
     std::span<const FoliageDraw> draws;
 };
 
+// SSAM+ (README "SSAM+"): SSAM's mask and colour passes, with a float mask and the
+// composite's coverage estimated from the MAX and ADD masks (engine/render program.hpp
+// CoverageModel) instead of lerp(max, add, 0.85) squared.
+struct SsamPlusOptions {
+    engine::render::CoverageModel coverage = engine::render::CoverageModel::EqualLayers;
+    ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::RG16F;  // ADD must not saturate at 1
+    float colorAlphaReference = 64.0f / 255.0f;                        // the colour pass's (seeds/000 §3.5.3)
+};
+
 struct TechniqueOptions {
     ssam::Config ssam;  // SSAM's knobs; ssam.depthFunc is the scene's depth function for all
     float alphaTestReference = 0.5f;          // alpha-test and the rivals' alpha reference
     std::size_t referenceFragmentsPerPixel = 256;  // the exact reference's cap (reported, never truncated silently)
+    // WBOIT's weight (McGuire & Bavoil 2013 eq. 7) is tuned for view depths in metres,
+    // 0.1 to 500: view depth * wboitDepthScale is what it sees.
+    float wboitDepthScale = 1.0f;
+    SsamPlusOptions ssamPlus;
+};
+
+// What the exact reference found in its last frame (Technique::referenceReport).
+struct ReferenceReport {
+    std::uint64_t fragments = 0;          // fragments kept and composited
+    std::size_t maxFragmentsPerPixel = 0; // the deepest pixel's fragment count (before the cap)
+    std::uint64_t pixelsOverCap = 0;      // pixels with more than referenceFragmentsPerPixel fragments:
+                                          // only their nearest cap were composited (logged as a warning)
+    std::uint64_t fragmentsOverCap = 0;   // fragments those pixels lost
+    bool exact() const { return pixelsOverCap == 0; }
 };
 
 // A target a technique keeps, for captures (e.g. SSAM's mask and foliage).
@@ -79,6 +102,8 @@ public:
     virtual void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) = 0;
     // The intermediate targets of the last frame, for captures; empty when there are none.
     virtual std::vector<NamedTarget> intermediates() const { return {}; }
+    // The reference's report on its last frame; nullopt for every other technique.
+    virtual std::optional<ReferenceReport> referenceReport() const { return std::nullopt; }
 };
 
 // Throws engine::Error when the backend cannot run the technique (the message says why).

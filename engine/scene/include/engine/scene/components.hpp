@@ -1,5 +1,7 @@
 #pragma once
 // Components the scene's systems and extraction work on.
+#include <vector>
+
 #include "engine/scene/mesh_library.hpp"
 #include "engine/scene/transform.hpp"
 
@@ -13,6 +15,15 @@ struct Renderable {
 // Pushes foliage away (modules/wind) and marks what the car is.
 struct Collider {
     float radius = 1.0f;
+};
+
+// Per-entity vertex buffers that replace the shared mesh of some of the entity's parts
+// (deformed foliage, modules/wind). Entry i belongs to partsOf(model)[i]; a null buffer keeps
+// the shared mesh. `bounds` (model space, same indexing) covers the deformed vertices, so
+// extraction culls what is really drawn; an empty box falls back to the part's bounds.
+struct VertexOverride {
+    std::vector<render::BufferHandle> buffers;
+    std::vector<Aabb> bounds;
 };
 
 }  // namespace engine::scene

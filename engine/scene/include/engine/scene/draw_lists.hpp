@@ -11,6 +11,9 @@ namespace engine::scene {
 
 struct DrawBatch {
     std::uint32_t part = 0;
+    // The entity's own deformed copy of the part (VertexOverride, modules/wind); null: the
+    // part's shared mesh. A batch with its own vertices holds that one entity's instance.
+    render::BufferHandle vertices;
     std::vector<render::Instance> instances;
     Aabb worldBounds;
     float viewDistance = 0.0f;  // of the bounds' centre, for sorting Blend batches
@@ -22,8 +25,15 @@ struct DrawLists {
     std::vector<DrawBatch> blend;  // back to front
 };
 
+// The vertex buffer a batch draws: its own override, else the part's shared mesh.
+inline render::BufferHandle vertexBufferOf(const DrawBatch& batch, const MeshPart& part) {
+    return batch.vertices ? batch.vertices : part.vertices;
+}
+
 // Every Transform + Renderable entity whose part bounds touch the view volume. Batches
 // follow part order (stable across frames); Blend batches one per instance, sorted far to near.
+// A part overridden by the entity's VertexOverride gets a batch of its own with that buffer
+// and the override's bounds, after the shared batch of the same part.
 DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, const glm::mat4& viewProj,
                            const glm::vec3& cameraPosition);
 

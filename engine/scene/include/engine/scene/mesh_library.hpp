@@ -54,6 +54,8 @@ public:
 
     const std::vector<std::uint32_t>& partsOf(ModelId model) const { return models_.at(model); }
     const MeshPart& part(std::uint32_t index) const { return parts_.at(index); }
+    // The part's vertices as uploaded (model space): the rest pose deformation starts from.
+    const std::vector<render::Vertex>& vertices(std::uint32_t index) const { return vertices_.at(index); }
     std::size_t partCount() const { return parts_.size(); }
     Aabb bounds(ModelId model) const;
     render::Backend& backend() const { return backend_; }
@@ -64,6 +66,7 @@ private:
 
     render::Backend& backend_;
     std::vector<MeshPart> parts_;
+    std::vector<std::vector<render::Vertex>> vertices_;  // CPU copy per part (rest pose)
     std::vector<std::vector<std::uint32_t>> models_;
     std::vector<render::TextureHandle> textures_;
 };

@@ -1,0 +1,88 @@
+#include "bench_frame.hpp"
+
+namespace bench {
+
+using namespace engine::render;
+
+namespace {
+// The racer's sky and sun (game/src/frame_renderer.cpp), so frames look like the demo's.
+const glm::vec4 kSky{0.55f, 0.70f, 0.88f, 1.0f};
+const DirectionalLight kSun{{0.45f, 0.80f, 0.35f}, {1.05f, 0.98f, 0.88f}, {0.32f, 0.36f, 0.42f}};
+}  // namespace
+
+ViewUpload::ViewUpload(Backend& backend, BenchScene& scene, const BenchCamera& camera)
+    : backend_(backend), camera_(camera),
+      lists_(engine::scene::extractDrawLists(scene.registry(), scene.library(), camera.viewProj, camera.eye)),
+      foliage_(backend) {
+    for (const engine::scene::DrawBatch& b : lists_.opaque) {
+        const auto bytes = std::as_bytes(std::span(b.instances));
+        opaqueInstances_.push_back(backend.createBuffer({"opaque instances", BufferKind::Instance, bytes.size()}, bytes));
+    }
+    draws_ = foliage_.upload(lists_, scene.library());
+}
+
+ViewUpload::~ViewUpload() {
+    for (BufferHandle b : opaqueInstances_) backend_.destroy(b);
+}
+
+transparency::FoliageFrame ViewUpload::foliageFrame() const {
+    transparency::FoliageFrame frame;
+    frame.viewProj = camera_.viewProj;
+    frame.eye = camera_.eye;
+    frame.light = kSun;
+    frame.draws = draws_;
+    return frame;
+}
+
+std::size_t ViewUpload::foliageInstances() const {
+    std::size_t n = 0;
+    for (const auto& d : draws_) n += d.batch.instanceCount;
+    return n;
+}
+
+FrameDrawer::FrameDrawer(Backend& backend, const engine::scene::MeshLibrary& library)
+    : backend_(backend), library_(library) {
+    for (bool doubleSided : {false, true}) {
+        PipelineDesc p;
+        p.name = doubleSided ? "opaque (two-sided)" : "opaque";
+        p.program = ProgramKind::OpaqueLit;
+        p.depth = DepthState::testAndWrite(kDepthFunc);
+        p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;
+        (doubleSided ? twoSided_ : culled_) = backend.createPipeline(p);
+    }
+}
+
+FrameDrawer::~FrameDrawer() {
+    backend_.destroy(culled_);
+    backend_.destroy(twoSided_);
+}
+
+void FrameDrawer::draw(ssam::OpaqueTargets& targets, transparency::Technique* technique, const ViewUpload& view) {
+    backend_.beginPass(targets.passDesc(kSky));
+    const auto& opaque = view.lists().opaque;
+    for (std::size_t i = 0; i < opaque.size(); ++i) {
+        const engine::scene::MeshPart& part = library_.part(opaque[i].part);
+        SurfaceParams s;
+        s.viewProj = view.camera().viewProj;
+        s.baseColorFactor = part.material.baseColorFactor;
+        s.baseColor = part.material.baseColor;
+        s.light = kSun;
+        if (part.material.unlit) s.light = {kSun.towardLight, glm::vec3(0.0f), glm::vec3(1.0f)};
+        DrawDesc d;
+        d.pipeline = part.material.doubleSided ? twoSided_ : culled_;
+        d.params = s;
+        d.vertices = part.vertices;
+        d.indices = part.indices;
+        d.count = part.indexCount;
+        d.instances = view.opaqueInstances()[i];
+        d.instanceCount = static_cast<std::uint32_t>(opaque[i].instances.size());
+        backend_.draw(d);
+    }
+    backend_.endPass();
+    if (technique)
+        technique->render(targets, view.foliageFrame());
+    else
+        targets.resolve();
+}
+
+}  // namespace bench

@@ -1,0 +1,63 @@
+#pragma once
+// One benchmark frame: the opaque pass (ground, trunks: OpaqueLit, reverse-Z, depth test
+// Greater, as game/src/frame_renderer.cpp draws it) into ssam::OpaqueTargets, then the
+// technique's foliage (Technique::render, which resolves), or just the resolve for the
+// opaque-only frame. The scene is extracted and its instances uploaded once per view
+// (ViewUpload), outside the timed frame, so every technique gets the same input and the
+// time is the rendering alone.
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "bench_scenes.hpp"
+#include "engine/render/backend.hpp"
+#include "engine/scene/draw_lists.hpp"
+#include "foliage_upload.hpp"
+#include "ssam/opaque_targets.hpp"
+#include "transparency/technique.hpp"
+
+namespace bench {
+
+inline constexpr engine::render::CompareFunc kDepthFunc = engine::render::CompareFunc::Greater;  // reverse-Z
+
+// The scene seen from one camera: draw lists extracted, instance buffers uploaded.
+class ViewUpload {
+public:
+    ViewUpload(engine::render::Backend& backend, BenchScene& scene, const BenchCamera& camera);
+    ~ViewUpload();
+    ViewUpload(const ViewUpload&) = delete;
+    ViewUpload& operator=(const ViewUpload&) = delete;
+
+    const BenchCamera& camera() const { return camera_; }
+    const engine::scene::DrawLists& lists() const { return lists_; }
+    std::span<const engine::render::BufferHandle> opaqueInstances() const { return opaqueInstances_; }
+    transparency::FoliageFrame foliageFrame() const;
+    std::size_t foliageInstances() const;
+
+private:
+    engine::render::Backend& backend_;
+    BenchCamera camera_;
+    engine::scene::DrawLists lists_;
+    std::vector<engine::render::BufferHandle> opaqueInstances_;
+    racer::FoliageUpload foliage_;
+    std::span<const transparency::FoliageDraw> draws_;
+};
+
+// Draws frames of one scene on one backend.
+class FrameDrawer {
+public:
+    FrameDrawer(engine::render::Backend& backend, const engine::scene::MeshLibrary& library);
+    ~FrameDrawer();
+    FrameDrawer(const FrameDrawer&) = delete;
+    FrameDrawer& operator=(const FrameDrawer&) = delete;
+
+    // Opaque pass, then `technique->render` (or the plain resolve when technique is null).
+    void draw(ssam::OpaqueTargets& targets, transparency::Technique* technique, const ViewUpload& view);
+
+private:
+    engine::render::Backend& backend_;
+    const engine::scene::MeshLibrary& library_;
+    engine::render::PipelineHandle culled_, twoSided_;
+};
+
+}  // namespace bench

@@ -1,0 +1,39 @@
+#pragma once
+// One row of `ssam-bench`'s results: a technique (or the opaque-only frame) on one scene and
+// backend. Missing values (no reference yet, no pan, a skipped technique) are NaN and are
+// written as empty CSV cells; `note` says why.
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bench {
+
+inline constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
+inline constexpr const char* kOpaqueOnly = "opaque-only";  // the technique column of the opaque frame
+
+struct PassTime {
+    std::string pass;
+    double medianMs = 0.0;
+};
+
+struct BenchRow {
+    std::string scene, technique, backend;
+    int width = 0, height = 0;
+    bool ran = false;  // false: skipped, `note` says why
+    double timeMedianMs = kMissing, timeMinMs = kMissing, timeMaxMs = kMissing;
+    std::vector<PassTime> passes;  // median per pass name over the timed repetitions, in execution order
+    // Against the exact reference of the same view (soft backend).
+    double rmseLinear = kMissing, psnrLinear = kMissing, rmseSrgb = kMissing, psnrSrgb = kMissing;
+    double ssim = kMissing, flipMean = kMissing;
+    double flickerRaw = kMissing;  // temporalFlicker over the pan
+    double flicker = kMissing;     // flickerRaw minus the reference's over the same pan
+    double peakMemMb = kMissing;   // peak bytes of targets/buffers the technique allocated, MiB
+    double peakRssMb = kMissing;   // growth of the process's peak RSS while it ran, MiB (CPU memory too)
+    std::string note;
+};
+
+inline bool has(double v) { return std::isfinite(v); }
+
+}  // namespace bench

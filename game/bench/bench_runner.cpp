@@ -1,0 +1,265 @@
+#include "bench_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include "bench_frame.hpp"
+#include "counting_backend.hpp"
+#include "rss_peak.hpp"
+#include "engine/capture/image_write.hpp"
+#include "engine/capture/metrics.hpp"
+#include "engine/capture/readback_image.hpp"
+#include "engine/core/error.hpp"
+#include "engine/render/gl/gl_backend.hpp"
+#include "engine/render/soft/soft_backend.hpp"
+
+namespace bench {
+
+using namespace engine::render;
+using engine::capture::Image;
+using transparency::TechniqueKind;
+
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The exact reference of one scene: the still frame and the pan, on the soft backend.
+struct ReferenceFrames {
+    std::optional<Image> still;
+    std::optional<double> panFlicker;  // temporalFlicker of the reference pan
+    std::string note;                  // why there is none
+};
+
+// The scene's views, uploaded once on one backend.
+struct SceneViews {
+    std::unique_ptr<ViewUpload> still;
+    std::vector<std::unique_ptr<ViewUpload>> pan;
+};
+
+SceneViews uploadViews(Backend& backend, BenchScene& scene, float aspect, int panFrames) {
+    SceneViews v;
+    v.still = std::make_unique<ViewUpload>(backend, scene, scene.camera(aspect));
+    if (scene.hasPan())
+        for (int k = 0; k < panFrames; ++k)
+            v.pan.push_back(std::make_unique<ViewUpload>(backend, scene, scene.panCamera(aspect, k)));
+    return v;
+}
+
+transparency::TechniqueOptions techniqueOptions() {
+    transparency::TechniqueOptions o;
+    o.ssam.depthFunc = kDepthFunc;
+    return o;
+}
+
+Image frameImage(Backend& backend, const ssam::OpaqueTargets& targets) {
+    return engine::capture::imageFromReadback(backend.readback(targets.color()));
+}
+
+std::vector<Image> panImages(Backend& backend, FrameDrawer& drawer, ssam::OpaqueTargets& targets,
+                             transparency::Technique* technique, const SceneViews& views) {
+    std::vector<Image> frames;
+    for (const auto& view : views.pan) {
+        drawer.draw(targets, technique, *view);
+        backend.takeTimings();
+        frames.push_back(frameImage(backend, targets));
+    }
+    return frames;
+}
+
+ReferenceFrames computeReference(Backend& soft, BenchScene& scene, const SceneViews& views, const BenchOptions& o) {
+    ReferenceFrames ref;
+    try {
+        auto technique = transparency::createTechnique(TechniqueKind::Reference, soft, techniqueOptions());
+        ssam::OpaqueTargets targets(soft, {o.width, o.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
+        FrameDrawer drawer(soft, scene.library());
+        drawer.draw(targets, technique.get(), *views.still);
+        soft.takeTimings();
+        ref.still = frameImage(soft, targets);
+        if (!o.imagesDir.empty()) {
+            std::filesystem::create_directories(o.imagesDir);
+            engine::capture::writePng(o.imagesDir / (std::string(sceneName(scene.kind())) + "_reference.png"), *ref.still);
+        }
+        if (!views.pan.empty())
+            ref.panFlicker = engine::capture::temporalFlicker(panImages(soft, drawer, targets, technique.get(), views));
+    } catch (const std::exception& e) {
+        ref.note = std::string("no reference: ") + e.what();
+    }
+    return ref;
+}
+
+BenchRow skippedRow(const std::string& scene, const std::string& technique, const std::string& backend,
+                    const BenchOptions& o) {
+    BenchRow row;
+    row.scene = scene;
+    row.technique = technique;
+    row.backend = backend;
+    row.width = o.width;
+    row.height = o.height;
+    return row;
+}
+
+struct Subject {
+    std::optional<TechniqueKind> kind;  // none: the opaque-only frame
+    std::string name() const { return kind ? transparency::techniqueName(*kind) : kOpaqueOnly; }
+};
+
+BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& scene, const SceneViews& views,
+                 const Subject& subject, const ReferenceFrames& ref, const BenchOptions& o) {
+    BenchRow row;
+    row.scene = sceneName(scene.kind());
+    row.technique = subject.name();
+    row.backend = backendName;
+    row.width = o.width;
+    row.height = o.height;
+    std::printf("[ssam-bench] %-6s %-14s %-4s ", row.scene.c_str(), row.technique.c_str(), backendName.c_str());
+    std::fflush(stdout);
+    try {
+        ResourceCount count;
+        const std::unique_ptr<Backend> counting = makeCountingBackend(backend, count);
+        const RssPeak rss;
+        std::unique_ptr<transparency::Technique> technique;
+        if (subject.kind) technique = transparency::createTechnique(*subject.kind, *counting, techniqueOptions());
+        ssam::OpaqueTargets targets(
+            *counting, {o.width, o.height, technique ? technique->opaqueSamples() : 1, Format::RGBA8_SRGB, kDepthFunc});
+        FrameDrawer drawer(backend, scene.library());
+        backend.takeTimings();  // drop whatever earlier work left
+
+        std::vector<double> times;
+        std::vector<std::string> passOrder;
+        std::map<std::string, std::vector<double>> passTimes;
+        for (int i = 0; i < o.warmup + o.reps; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            drawer.draw(targets, technique.get(), *views.still);
+            // GL: waiting for the passes' GL_TIME_ELAPSED results also waits for the frame.
+            const std::vector<PassTiming> timings = backend.takeTimings();
+            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const bool timed = i >= o.warmup;
+            if (timed)
+                std::printf(" rep %d/%d %.1f ms", i - o.warmup + 1, o.reps, ms);
+            else
+                std::printf(" warm-up %.1f ms", ms);
+            std::fflush(stdout);
+            if (!timed) continue;
+            times.push_back(ms);
+            std::map<std::string, double> frame;  // several passes of one name in a frame add up
+            for (const PassTiming& t : timings) {
+                if (!frame.count(t.pass) && !passTimes.count(t.pass)) passOrder.push_back(t.pass);
+                frame[t.pass] += t.milliseconds;
+            }
+            for (const auto& [pass, msPass] : frame) passTimes[pass].push_back(msPass);
+        }
+        // RSS growth of creation and the timed frames only (readbacks and metrics below allocate too).
+        row.peakRssMb = rss.growthMb();
+        row.ran = true;
+        row.timeMedianMs = median(times);
+        row.timeMinMs = *std::min_element(times.begin(), times.end());
+        row.timeMaxMs = *std::max_element(times.begin(), times.end());
+        for (const std::string& pass : passOrder) row.passes.push_back({pass, median(passTimes[pass])});
+
+        const Image image = frameImage(backend, targets);
+        if (!o.imagesDir.empty()) {
+            std::filesystem::create_directories(o.imagesDir);
+            engine::capture::writePng(o.imagesDir / (row.scene + "_" + row.technique + "_" + backendName + ".png"), image);
+        }
+        if (ref.still) {
+            namespace cap = engine::capture;
+            row.rmseLinear = cap::rmseLinear(*ref.still, image);
+            row.psnrLinear = cap::psnrLinear(*ref.still, image);
+            row.rmseSrgb = cap::rmseSrgb(*ref.still, image);
+            row.psnrSrgb = cap::psnrSrgb(*ref.still, image);
+            row.ssim = cap::ssim(*ref.still, image);
+            row.flipMean = cap::flip(*ref.still, image);
+        } else {
+            row.note = ref.note;
+        }
+        if (!views.pan.empty()) {
+            row.flickerRaw = engine::capture::temporalFlicker(panImages(backend, drawer, targets, technique.get(), views));
+            if (ref.panFlicker) row.flicker = row.flickerRaw - *ref.panFlicker;
+        }
+        row.peakMemMb = double(count.peakBytes()) / (1024.0 * 1024.0);
+        std::printf("  -> median %.2f ms", row.timeMedianMs);
+        if (has(row.flipMean)) std::printf(", FLIP %.4f", row.flipMean);
+        std::printf("\n");
+    } catch (const std::exception& e) {
+        row = skippedRow(row.scene, row.technique, row.backend, o);
+        row.note = std::string("skipped: ") + e.what();
+        std::printf(" %s\n", row.note.c_str());
+    }
+    std::fflush(stdout);
+    return row;
+}
+
+}  // namespace
+
+int resolvedThreads(int threads) {
+    return threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+std::vector<BenchRow> runBench(const BenchOptions& o) {
+    const float aspect = float(o.width) / float(o.height);
+    const int threads = resolvedThreads(o.threads);
+    auto soft = soft::createSoftBackend({threads, 64, false});
+    std::unique_ptr<gl::GlBackend> glBackend;
+    std::string glError;
+    if (std::find(o.backends.begin(), o.backends.end(), "gl") != o.backends.end()) {
+        // llvmpipe reads its thread count when the context is created: the same as soft's.
+        setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+        try {
+            glBackend = gl::createGlBackend({});
+            std::printf("[ssam-bench] gl: %s (LP_NUM_THREADS=%d)\n", glBackend->info().renderer.c_str(), threads);
+        } catch (const std::exception& e) {
+            glError = std::string("gl backend unavailable: ") + e.what();
+            std::printf("[ssam-bench] %s\n", glError.c_str());
+        }
+    }
+    std::printf("[ssam-bench] %dx%d, %d rep(s) after %d warm-up, %d pan frames, soft backend %d thread(s)\n", o.width,
+                o.height, o.reps, o.warmup, o.panFrames, threads);
+
+    std::vector<Subject> subjects{{std::nullopt}};
+    for (TechniqueKind k : o.techniques) subjects.push_back({k});
+
+    std::vector<BenchRow> rows;
+    for (SceneKind kind : o.scenes) {
+        BenchScene softScene(*soft, kind, o.contentDir);
+        const SceneViews softViews = uploadViews(*soft, softScene, aspect, o.panFrames);
+        std::printf("[ssam-bench] scene %s: %zu foliage instances in view; computing the reference\n", sceneName(kind),
+                    softViews.still->foliageInstances());
+        std::fflush(stdout);
+        const ReferenceFrames ref = computeReference(*soft, softScene, softViews, o);
+        if (!ref.note.empty()) std::printf("[ssam-bench] %s\n", ref.note.c_str());
+
+        for (const std::string& backendName : o.backends) {
+            if (backendName == "gl" && !glBackend) {
+                for (const Subject& s : subjects) {
+                    BenchRow row = skippedRow(sceneName(kind), s.name(), backendName, o);
+                    row.note = glError;
+                    rows.push_back(row);
+                }
+                continue;
+            }
+            Backend& backend = backendName == "gl" ? static_cast<Backend&>(*glBackend) : *soft;
+            std::unique_ptr<BenchScene> ownScene;
+            SceneViews ownViews;
+            if (&backend != soft.get()) {
+                ownScene = std::make_unique<BenchScene>(backend, kind, o.contentDir);
+                ownViews = uploadViews(backend, *ownScene, aspect, o.panFrames);
+            }
+            BenchScene& scene = ownScene ? *ownScene : softScene;
+            const SceneViews& views = ownScene ? ownViews : softViews;
+            for (const Subject& s : subjects) rows.push_back(measure(backend, backendName, scene, views, s, ref, o));
+        }
+    }
+    return rows;
+}
+
+}  // namespace bench

@@ -1,0 +1,69 @@
+#pragma once
+// The scenes `ssam-bench` measures every transparency technique on, built from content/models
+// with the engine's ECS (Transform + Renderable entities, a MeshLibrary) so extraction and
+// culling are the racer's own:
+//   tree    one tree close up: the paper's "high degree of depth complexity present within a
+//           single foliage model" (seeds/000 §3.3)
+//   forest  a dense stand seen from inside its edge: many overlapping trees and bushes
+//   vista   a distant view over hundreds of trees (seeds/000 §3.1: Pure's vistas)
+//   empty   trees only behind the camera: no foliage in view, the opaque frame alone
+// Projection: reverse-Z, 60° vertical field of view, 0.1 m to 30 km, depth test Greater —
+// the racer's conventions (game/src/camera_rig.cpp, frame_renderer.cpp).
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/core/ecs/registry.hpp"
+#include "engine/render/backend.hpp"
+#include "engine/scene/mesh_library.hpp"
+
+namespace bench {
+
+enum class SceneKind { Tree, Forest, Vista, Empty };
+
+// tree, forest, vista, empty: in the order tables list them.
+const std::vector<SceneKind>& allScenes();
+const char* sceneName(SceneKind kind);
+bool parseScene(std::string_view name, SceneKind& kind);
+
+struct BenchCamera {
+    glm::vec3 eye{0.0f};
+    glm::mat4 viewProj{1.0f};
+};
+
+class BenchScene {
+public:
+    // Throws engine::Error when a content file is missing or bad.
+    BenchScene(engine::render::Backend& backend, SceneKind kind, const std::filesystem::path& contentDir);
+    ~BenchScene();
+    BenchScene(const BenchScene&) = delete;
+    BenchScene& operator=(const BenchScene&) = delete;
+
+    SceneKind kind() const { return kind_; }
+    engine::ecs::Registry& registry() { return registry_; }
+    const engine::scene::MeshLibrary& library() const { return library_; }
+
+    // The still view every technique is timed and judged on.
+    BenchCamera camera(float aspect) const { return view(aspect, 0.0f); }
+    // Whether the scene has a sideways pan for the flicker measure (tree and forest: the
+    // slow side-to-side move where alpha testing sparkles, seeds/000 §3.4).
+    bool hasPan() const { return panStep_ > 0.0f; }
+    // Frame `frame` of the pan: the still view moved `frame` steps sideways (eye and target
+    // together, so the view direction stays the same: a pure translation).
+    BenchCamera panCamera(float aspect, int frame) const { return view(aspect, panStep_ * float(frame)); }
+
+private:
+    BenchCamera view(float aspect, float sideways) const;
+
+    SceneKind kind_;
+    engine::ecs::Registry registry_;
+    engine::scene::MeshLibrary library_;
+    engine::render::TextureHandle groundTexture_;  // not owned by the library: released here
+    glm::vec3 eye_{0.0f}, target_{0.0f, 0.0f, 1.0f};
+    float panStep_ = 0.0f;  // metres per pan frame
+};
+
+}  // namespace bench

@@ -1,0 +1,99 @@
+#include "racer_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <regex>
+#include <vector>
+
+#include "engine/core/error.hpp"
+
+namespace racer {
+
+namespace {
+
+std::vector<std::string> techniqueNames() {
+    std::vector<std::string> names;
+    for (transparency::TechniqueKind kind : transparency::allTechniques())
+        names.emplace_back(transparency::techniqueName(kind));
+    return names;
+}
+
+}  // namespace
+
+void addOptions(CLI::App& app, Options& o) {
+    app.add_option("--backend", o.backend, "render backend (auto: gl in a window, soft headless)")
+        ->check(CLI::IsMember({"auto", "soft", "gl"}))
+        ->capture_default_str();
+    app.add_option("--technique", o.technique, "how foliage is drawn")
+        ->check(CLI::IsMember(techniqueNames()))
+        ->capture_default_str();
+    app.add_option("--size", o.size, "frame size WIDTHxHEIGHT")->capture_default_str();
+    app.add_option_function<int>(
+           "--frames", [&o](int n) { o.frames = n, o.framesGiven = true; },
+           "frames to render (default 60 headless; a window runs until closed)")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option_function<double>(
+           "--fixed-dt", [&o](double dt) { o.fixedDt = dt, o.fixedDtGiven = true; },
+           "simulation time step per frame, seconds (default 1/30 headless; a window follows the clock)")
+        ->check(CLI::Range(0.0, 1.0));
+    app.add_option("--camera", o.camera, "camera")->check(CLI::IsMember({"chase", "pan", "free", "sky"}))->capture_default_str();
+    app.add_option("--seed", o.seed, "scene seed (track shape, placement)")->capture_default_str();
+    app.add_option("--threads", o.threads, "soft backend threads (0: all)")->check(CLI::Range(0, 256))->capture_default_str();
+    app.add_option("--capture", o.capturePath, "write the last frame to this PNG");
+    app.add_flag("--capture-layers", o.captureLayers, "also write every layer of the technique to an EXR next to the PNG");
+    app.add_flag("--headless", o.headless, "render offscreen even when a display is available");
+    app.add_option("--content", o.contentDir, "content directory")->check(CLI::ExistingDirectory)->capture_default_str();
+    app.add_option("--msaa", o.msaa, "opaque-pass samples at least (1, 2, 4; Pure used 2; a2c always uses 4)")
+        ->check(CLI::IsMember({1, 2, 4}))
+        ->capture_default_str();
+    app.add_option("--layer-pictures", o.layerPictures, "write each captured layer as a PNG into this directory");
+    // Hidden (empty group): drives the window's keys from tests, e.g. "2:3,4:C,9:Esc".
+    app.add_option("--script", o.keyScript, "keys pressed at given frames")->group("");
+    app.add_option("--scene", o.scenePath, "render this glTF 2.0 file (.gltf or .glb) instead of the racing scene");
+    app.add_option("--scene-index", o.sceneIndex, "with --scene: which of the file's scenes (default: its default scene)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--camera-index", o.cameraIndex, "with --scene: which of the file's cameras (default: its first)")
+        ->check(CLI::NonNegativeNumber);
+    // Living-scene modules (issue #8): each flag drops one feature (its systems and passes).
+    app.add_flag("--no-wind", o.noWind, "no wind: foliage keeps its rest pose, the car pushes nothing");
+    app.add_flag("--no-water", o.noWater, "no water pools");
+    app.add_flag("--no-grass", o.noGrass, "no grass cards");
+    app.add_flag("--no-particles", o.noParticles, "no dust or spray from the wheels");
+    app.add_flag("--no-lightshafts", o.noLightshafts, "no light shafts");
+}
+
+FrameSize parseFrameSize(const std::string& size) {
+    std::smatch m;
+    static const std::regex sizePattern(R"((\d{1,5})x(\d{1,5}))");
+    if (!std::regex_match(size, m, sizePattern))
+        throw engine::Error("--size '" + size + "': expected WIDTHxHEIGHT, e.g. 1280x720");
+    const FrameSize s{std::stoi(m[1]), std::stoi(m[2])};
+    if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384)
+        throw engine::Error("--size '" + size + "': each dimension must be in 1..16384");
+    return s;
+}
+
+CameraMode parseCamera(const std::string& name) {
+    if (name == "chase") return CameraMode::Chase;
+    if (name == "pan") return CameraMode::Pan;
+    if (name == "free") return CameraMode::Free;
+    if (name == "sky") return CameraMode::Sky;
+    throw engine::Error("--camera '" + name + "': expected chase, pan, free or sky");
+}
+
+const char* cameraName(CameraMode mode) {
+    switch (mode) {
+        case CameraMode::Chase: return "chase";
+        case CameraMode::Pan: return "pan";
+        case CameraMode::Free: return "free";
+        case CameraMode::Sky: return "sky";
+    }
+    return "?";
+}
+
+transparency::TechniqueKind parseTechniqueName(const std::string& name) {
+    if (const auto kind = transparency::parseTechnique(name)) return *kind;
+    throw engine::Error("--technique '" + name + "': unknown");
+}
+
+}  // namespace racer

@@ -1,0 +1,56 @@
+#pragma once
+// racer's command line: every flag, its default and its check, in one place (README
+// "The demo: racer" lists them). main() parses; run() turns them into renderer settings.
+#include <cstdint>
+#include <string>
+
+#include "camera_rig.hpp"
+#include "transparency/technique.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace racer {
+
+struct Options {
+    std::string backend = "auto";  // auto: gl in a window, soft headless
+    std::string technique = "ssam";
+    std::string size = "1280x720";
+    int frames = 60;             // headless; a window runs until closed unless --frames is given
+    bool framesGiven = false;
+    double fixedDt = 1.0 / 30.0; // headless; a window steps by the wall clock unless --fixed-dt is given
+    bool fixedDtGiven = false;
+    std::string camera = "chase";
+    std::uint32_t seed = 1;
+    int threads = 0;
+    std::string capturePath;
+    bool captureLayers = false;
+    bool headless = false;
+    std::string contentDir = SSAM_CONTENT_DIR;
+    int msaa = 1;
+    std::string layerPictures;
+    std::string keyScript;   // --script (hidden): keys pressed at given frames, for tests
+    std::string scenePath;  // --scene: a glTF file instead of the racing scene
+    int sceneIndex = -1;
+    int cameraIndex = -1;
+    // Living-scene modules (issue #8), all on by default: --no-wind, --no-water, ...
+    bool noWind = false, noWater = false, noGrass = false, noParticles = false, noLightshafts = false;
+};
+
+// Registers every flag of `o` on `app` (checks included: a bad technique or camera is
+// refused by CLI11 with "X not in {...}").
+void addOptions(CLI::App& app, Options& o);
+
+struct FrameSize {
+    int width = 0;
+    int height = 0;
+};
+// "WIDTHxHEIGHT", each 1..16384; throws engine::Error quoting the flag otherwise.
+FrameSize parseFrameSize(const std::string& size);
+
+CameraMode parseCamera(const std::string& name);                  // chase, pan, free
+transparency::TechniqueKind parseTechniqueName(const std::string& name);  // allTechniques()' names
+const char* cameraName(CameraMode mode);
+
+}  // namespace racer

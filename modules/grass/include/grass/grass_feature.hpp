@@ -1,0 +1,41 @@
+#pragma once
+// The grass module as a living-scene feature: the "grass" pass draws every visible tuft
+// (GrassOptions::drawDistance) as one instanced draw of an alpha-tested card, depth-tested
+// against and writing into the opaque + foliage depth, so a tree in front hides the grass
+// behind it and the passes after (water, particles) see the grass (seeds/000 §3.7).
+#include <vector>
+
+#include "engine/scene/frame_feature.hpp"
+#include "grass/grass_field.hpp"
+
+namespace grass {
+
+class GrassFeature final : public engine::scene::Feature {
+public:
+    // Throws engine::Error for bad options or more tufts than options.maxTufts.
+    GrassFeature(engine::render::Backend& backend, std::vector<Tuft> tufts, const GrassOptions& options = {});
+    ~GrassFeature() override;
+    GrassFeature(const GrassFeature&) = delete;
+    GrassFeature& operator=(const GrassFeature&) = delete;
+
+    std::string_view name() const override { return "grass"; }
+    void render(const engine::scene::FeatureFrame& frame) override;
+
+    std::size_t tufts() const { return tufts_.size(); }
+    std::size_t drawnLastFrame() const { return drawn_; }
+
+private:
+    engine::render::PipelineHandle pipeline(engine::render::CompareFunc depthFunc);
+
+    engine::render::Backend& backend_;
+    GrassOptions options_;
+    std::vector<Tuft> tufts_;
+    engine::render::BufferHandle vertices_, indices_, instances_;
+    std::uint32_t indexCount_ = 0;
+    engine::render::TextureHandle blades_;
+    engine::render::PipelineHandle pipeline_;
+    engine::render::CompareFunc pipelineDepthFunc_ = engine::render::CompareFunc::Less;
+    std::size_t drawn_ = 0;
+};
+
+}  // namespace grass

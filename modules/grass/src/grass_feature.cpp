@@ -1,0 +1,84 @@
+#include "grass/grass_feature.hpp"
+
+#include <string>
+
+#include "engine/core/error.hpp"
+
+namespace grass {
+
+using namespace engine::render;
+
+GrassFeature::GrassFeature(Backend& backend, std::vector<Tuft> tufts, const GrassOptions& options)
+    : backend_(backend), options_(options), tufts_(std::move(tufts)) {
+    validate(options_);
+    if (tufts_.size() > options_.maxTufts)
+        throw engine::Error("grass: " + std::to_string(tufts_.size()) + " tufts exceed the limit of " +
+                            std::to_string(options_.maxTufts));
+    std::vector<Vertex> v;
+    std::vector<std::uint32_t> i;
+    buildCard(options_, v, i);
+    vertices_ = backend.createBuffer({"grass card", BufferKind::Vertex, v.size() * sizeof(Vertex)}, std::as_bytes(std::span(v)));
+    indices_ = backend.createBuffer({"grass card indices", BufferKind::Index, i.size() * 4}, std::as_bytes(std::span(i)));
+    indexCount_ = std::uint32_t(i.size());
+    constexpr int kW = 64, kH = 32;
+    const std::vector<std::uint8_t> texels = bladeTexels(kW, kH, 17);
+    TextureDesc desc;
+    desc.name = "grass blades";
+    desc.width = kW;
+    desc.height = kH;
+    desc.format = Format::RGBA8_SRGB;
+    const TextureData data{{std::as_bytes(std::span(texels))}};
+    blades_ = backend.createTexture(desc, &data);
+}
+
+GrassFeature::~GrassFeature() {
+    for (BufferHandle b : {vertices_, indices_, instances_})
+        if (b) backend_.destroy(b);
+    backend_.destroy(blades_);
+    if (pipeline_) backend_.destroy(pipeline_);
+}
+
+PipelineHandle GrassFeature::pipeline(CompareFunc depthFunc) {
+    if (pipeline_ && pipelineDepthFunc_ == depthFunc) return pipeline_;
+    if (pipeline_) backend_.destroy(pipeline_);
+    PipelineDesc p;
+    p.name = "grass (alpha tested)";
+    p.program = ProgramKind::FoliageColor;
+    p.depth = DepthState::testAndWrite(depthFunc);
+    p.alphaTest = AlphaTest::discardBelow(options_.alphaReference);
+    p.blend[0].writeMask = WriteRGB;  // the frame's alpha stays; the card's alpha only cuts it out
+    pipeline_ = backend_.createPipeline(p);
+    pipelineDepthFunc_ = depthFunc;
+    return pipeline_;
+}
+
+void GrassFeature::render(const engine::scene::FeatureFrame& frame) {
+    if (instances_) backend_.destroy(instances_), instances_ = {};
+    const std::vector<Instance> visible = visibleTufts(tufts_, options_, frame.eye, frame.viewProj, frame.time);
+    drawn_ = visible.size();
+    if (visible.empty()) return;  // nothing near: no pass
+    const auto bytes = std::as_bytes(std::span(visible));
+    instances_ = backend_.createBuffer({"grass tufts", BufferKind::Instance, bytes.size()}, bytes);
+    const PipelineHandle cards = pipeline(frame.depthFunc);
+    PassDesc pass;
+    pass.name = "grass";
+    pass.color[0] = {frame.color, LoadOp::Load};
+    pass.depth = {frame.depth, LoadOp::Load};
+    backend_.beginPass(pass);
+    SurfaceParams s;
+    s.viewProj = frame.viewProj;
+    s.baseColor = {blades_, {Filter::Bilinear, AddressMode::Wrap, AddressMode::Clamp}};
+    s.light = frame.sun;
+    DrawDesc d;
+    d.pipeline = cards;
+    d.params = s;
+    d.vertices = vertices_;
+    d.indices = indices_;
+    d.count = indexCount_;
+    d.instances = instances_;
+    d.instanceCount = std::uint32_t(visible.size());
+    backend_.draw(d);
+    backend_.endPass();
+}
+
+}  // namespace grass

@@ -1,0 +1,47 @@
+#pragma once
+// The particles module as a living-scene feature.
+//   system "particles" (phase::simulation): ParticleSimulation::update with the frame's dt
+//   pass "particles": camera-facing quads into an RGBA16F layer cleared to 0, full or half
+//       resolution, ProgramKind::Particle with BlendState::premultipliedOver(): alpha-blended
+//       dust and additive spray in one target, a = src.a + dst.a(1 - src.a) (seeds/003);
+//       soft against the opaque + foliage depth (so a tree in front hides them, §3.7)
+//   pass "particles composite": ProgramKind::LayerComposite, the layer over the frame with
+//       the premultiplied blend; a half-resolution layer is upsampled by nearest depth.
+// No live particle in view: neither pass runs.
+#include <memory>
+
+#include "engine/scene/frame_feature.hpp"
+#include "particles/particle_simulation.hpp"
+
+namespace particles {
+
+class ParticleFeature final : public engine::scene::Feature {
+public:
+    ParticleFeature(engine::render::Backend& backend, const ParticleOptions& options = {}, std::uint64_t seed = 1);
+    ~ParticleFeature() override;
+    ParticleFeature(const ParticleFeature&) = delete;
+    ParticleFeature& operator=(const ParticleFeature&) = delete;
+
+    std::string_view name() const override { return "particles"; }
+    void registerSystems(engine::ecs::Scheduler& scheduler) override;
+    void beginFrame(const engine::scene::SimulationFrame& frame) override { dt_ = frame.dt; }
+    void render(const engine::scene::FeatureFrame& frame) override;
+
+    ParticleSimulation& simulation() { return simulation_; }
+    // The layer of the last frame (null before one was drawn), for tests and captures.
+    engine::render::TextureHandle layer() const { return layer_; }
+    std::size_t drawnLastFrame() const { return drawn_; }
+
+private:
+    void ensureLayer(int width, int height);
+
+    engine::render::Backend& backend_;
+    ParticleSimulation simulation_;
+    float dt_ = 0.0f;
+    engine::render::PipelineHandle particlePipeline_, compositePipeline_;
+    engine::render::TextureHandle layer_;
+    engine::render::BufferHandle vertices_, indices_;
+    std::size_t drawn_ = 0;
+};
+
+}  // namespace particles

@@ -1,0 +1,131 @@
+#include "particles/particle_feature.hpp"
+
+#include <cmath>
+
+#include "engine/scene/bounds.hpp"
+#include "ssam/screen_region.hpp"
+
+namespace particles {
+
+using namespace engine::render;
+
+ParticleFeature::ParticleFeature(Backend& backend, const ParticleOptions& options, std::uint64_t seed)
+    : backend_(backend), simulation_(options, seed) {
+    PipelineDesc p;
+    p.name = "particles (premultiplied)";
+    p.program = ProgramKind::Particle;
+    p.blend[0] = BlendState::premultipliedOver();  // seeds/003: one layer for alpha and additive
+    particlePipeline_ = backend.createPipeline(p);
+    p.name = "particles composite";
+    p.program = ProgramKind::LayerComposite;
+    compositePipeline_ = backend.createPipeline(p);
+}
+
+ParticleFeature::~ParticleFeature() {
+    for (BufferHandle b : {vertices_, indices_})
+        if (b) backend_.destroy(b);
+    if (layer_) backend_.destroy(layer_);
+    backend_.destroy(particlePipeline_);
+    backend_.destroy(compositePipeline_);
+}
+
+void ParticleFeature::registerSystems(engine::ecs::Scheduler& scheduler) {
+    scheduler.add(engine::ecs::phase::simulation, "particles",
+                  [this](engine::ecs::Registry& registry, engine::ecs::CommandBuffer&) { simulation_.update(registry, dt_); });
+}
+
+void ParticleFeature::ensureLayer(int width, int height) {
+    if (layer_) {
+        const TextureDesc& d = backend_.describe(layer_);
+        if (d.width == width && d.height == height) return;
+        backend_.destroy(layer_);
+    }
+    TextureDesc desc;
+    desc.name = "particle layer";
+    desc.width = width;
+    desc.height = height;
+    desc.format = Format::RGBA16F;  // HDR: additive spray may exceed 1 (seeds/003)
+    desc.usage = UsageRenderTarget | UsageSampled;
+    desc.alpha = AlphaMode::Premultiplied;
+    layer_ = backend_.createTexture(desc);
+}
+
+void ParticleFeature::render(const engine::scene::FeatureFrame& frame) {
+    for (BufferHandle* b : {&vertices_, &indices_})
+        if (*b) backend_.destroy(*b), *b = {};
+    drawn_ = 0;
+    const std::vector<Particle>& live = simulation_.particles();
+    if (live.empty()) return;
+
+    // Camera-facing quads; the view distance rides in normal.x, "additive" in normal.y
+    // (program.hpp ParticleParams). Particles behind the eye are skipped.
+    const glm::vec3 right(frame.view[0][0], frame.view[1][0], frame.view[2][0]);
+    const glm::vec3 up(frame.view[0][1], frame.view[1][1], frame.view[2][1]);
+    const ParticleOptions& o = simulation_.options();
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    engine::scene::Aabb bounds;  // of every quad: both passes are scissored to its screen region
+    vertices.reserve(live.size() * 4);
+    indices.reserve(live.size() * 6);
+    for (const Particle& p : live) {
+        const float distance = -(frame.view * glm::vec4(p.position, 1.0f)).z;
+        const float size = simulation_.sizeOf(p);
+        if (!(distance > 0.0f) || !std::isfinite(distance)) continue;
+        const float fadeOut = 1.0f - std::clamp(p.age / o.lifetime, 0.0f, 1.0f);
+        const std::uint32_t base = std::uint32_t(vertices.size());
+        const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (const glm::vec2& c : corners) {
+            Vertex v;
+            v.position = p.position + (right * c.x + up * c.y) * size;
+            v.normal = {distance, p.additive, 0.0f};
+            v.uv = c * 0.5f + 0.5f;
+            v.color = glm::vec4(glm::vec3(p.color), p.color.a * fadeOut);
+            vertices.push_back(v);
+            bounds.add(v.position);
+        }
+        for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(base + i);
+    }
+    const std::optional<Rect> region =
+        ssam::screenRegion({bounds.min, bounds.max}, frame.viewProj, frame.width, frame.height);
+    if (vertices.empty() || !region) return;
+    drawn_ = vertices.size() / 4;
+
+    const int stride = o.halfResolution ? 2 : 1;
+    ensureLayer(std::max(1, (frame.width + stride - 1) / stride), std::max(1, (frame.height + stride - 1) / stride));
+    vertices_ = backend_.createBuffer({"particles", BufferKind::Vertex, vertices.size() * sizeof(Vertex)},
+                                      std::as_bytes(std::span(vertices)));
+    indices_ = backend_.createBuffer({"particle indices", BufferKind::Index, indices.size() * 4},
+                                     std::as_bytes(std::span(indices)));
+    const bool greater = frame.depthFunc == CompareFunc::Greater || frame.depthFunc == CompareFunc::GreaterEqual;
+    // distance = P[3][2] / (depth + P[2][2]) for the engine's perspective projections.
+    const float depthScale = frame.projection[3][2], depthOffset = frame.projection[2][2];
+
+    PassDesc pass;
+    pass.name = "particles";
+    pass.color[0] = {layer_, LoadOp::Clear, glm::vec4(0.0f)};
+    backend_.beginPass(pass);
+    DrawDesc d;
+    d.pipeline = particlePipeline_;
+    d.params = ParticleParams{frame.viewProj, frame.depth, stride, depthScale, depthOffset, o.softness, greater};
+    d.vertices = vertices_;
+    d.indices = indices_;
+    d.count = std::uint32_t(indices.size());
+    const int x0 = region->x / stride, y0 = region->y / stride;
+    d.scissor = Rect{x0, y0, (region->x + region->width + stride - 1) / stride - x0 + 1,
+                     (region->y + region->height + stride - 1) / stride - y0 + 1};
+    backend_.draw(d);
+    backend_.endPass();
+
+    PassDesc composite;
+    composite.name = "particles composite";
+    composite.color[0] = {frame.color, LoadOp::Load};
+    backend_.beginPass(composite);
+    DrawDesc c;
+    c.pipeline = compositePipeline_;
+    c.params = LayerCompositeParams{layer_, frame.depth, stride, depthScale, depthOffset, greater};
+    c.scissor = region;
+    backend_.draw(c);
+    backend_.endPass();
+}
+
+}  // namespace particles

@@ -1,0 +1,49 @@
+// Straight-alpha blending in submission order (seeds/002 "conventional" over, seeds/001
+// "order dependence"): after the opaque resolve, every foliage fragment is blended
+// SRC_ALPHA / INV_SRC_ALPHA onto the frame, depth-tested against the opaque depth and
+// writing none, so nothing is discarded and the result is exact only where the draws
+// happen to arrive back to front. The frame's alpha is not written (it stays 1).
+#include "foliage_draws.hpp"
+#include "techniques.hpp"
+
+namespace transparency::detail {
+
+namespace {
+
+using namespace engine::render;
+
+class BlendUnsortedTechnique final : public Technique {
+public:
+    BlendUnsortedTechnique(Backend& backend, const TechniqueOptions& options) : backend_(backend) {
+        PipelineDesc p = foliagePipeline("foliage blend (unsorted)");
+        p.depth = DepthState::testOnly(options.ssam.depthFunc);
+        p.blend[0] = BlendState::alphaOver();
+        p.blend[0].writeMask = WriteRGB;
+        pipeline_ = backend_.createPipeline(p);
+    }
+    ~BlendUnsortedTechnique() override { backend_.destroy(pipeline_); }
+
+    TechniqueKind kind() const override { return TechniqueKind::BlendUnsorted; }
+
+    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+        opaque.resolve();
+        const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
+        if (visible.empty()) return;
+        backend_.beginPass(resolvedPass(opaque, "foliage blend (unsorted)"));
+        for (const FoliageDraw* draw : visible)
+            backend_.draw(batchDraw(draw->batch, pipeline_, surfaceParams(frame, draw->batch)));
+        backend_.endPass();
+    }
+
+private:
+    Backend& backend_;
+    PipelineHandle pipeline_;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makeBlendUnsortedTechnique(Backend& backend, const TechniqueOptions& options) {
+    return std::make_unique<BlendUnsortedTechnique>(backend, options);
+}
+
+}  // namespace transparency::detail

@@ -1,0 +1,95 @@
+// SSAM+ (README "SSAM+"): SSAM's mask pass and colour pass unchanged (seeds/000 §3.5.2,
+// §3.5.3, run by ssam::ScreenSpaceAlphaMask), with two changes measured against the exact
+// reference (modules/transparency README / report):
+//   - the mask is stored in floats (two R16F targets by default: the memory of one RGBA8
+//     mask plus one, and the same error as RGBA16F), so the ADD mask keeps counting past 1
+//     instead of saturating;
+//   - the composite estimates the pixel's covered fraction 1 - prod(1 - a_i) from the two
+//     masks (program.hpp CoverageModel; by default n = ADD / MAX layers of alpha MAX:
+//     1 - (1 - MAX)^(ADD / MAX)) where the paper uses lerp(MAX, ADD, 0.85) squared, a
+//     hand-tuned stand-in for the same quantity (§3.5.4, §3.6.2).
+// Same passes, same geometry work; the composite does a pow() per pixel more.
+#include <string>
+
+#include "engine/core/error.hpp"
+#include "foliage_draws.hpp"
+#include "ssam/ssam.hpp"
+#include "techniques.hpp"
+
+namespace transparency::detail {
+
+namespace {
+
+using namespace engine::render;
+
+ssam::Config plusConfig(const TechniqueOptions& options) {
+    ssam::Config config = options.ssam;
+    config.maskPrecision = options.ssamPlus.maskPrecision;
+    config.colorAlphaReference = options.ssamPlus.colorAlphaReference;
+    config.squareMask = false;  // not used by the coverage composite
+    return config;
+}
+
+class SsamPlusTechnique final : public Technique {
+public:
+    SsamPlusTechnique(Backend& backend, const TechniqueOptions& options)
+        : backend_(backend), ssam_(backend, plusConfig(options)), model_(options.ssamPlus.coverage) {
+        if (model_ != CoverageModel::EqualLayers && model_ != CoverageModel::Exponential)
+            throw engine::Error("ssam-plus: unknown coverage model " + std::to_string(int(model_)));
+        PipelineDesc composite;
+        composite.name = "ssam+ composite";
+        composite.program = ProgramKind::CoverageComposite;
+        composite.blend[0] = {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
+                              BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteAll};
+        composite_ = backend_.createPipeline(composite);
+    }
+    ~SsamPlusTechnique() override { backend_.destroy(composite_); }
+
+    TechniqueKind kind() const override { return TechniqueKind::SsamPlus; }
+
+    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+        opaque.resolve();
+        batches_ = batchesOf(frame);
+        const ssam::FoliageView view{frame.viewProj, frame.light, batches_};
+        const ssam::FramePlan plan = ssam_.plan({opaque.color(), opaque.depth()}, view);
+        if (plan.empty()) return;
+        ssam_.maskPass(plan, view, opaque.depth());
+        ssam_.colorPass(plan, view, opaque.depth());
+
+        const ssam::Intermediates t = ssam_.intermediates();
+        PassDesc pass;
+        pass.name = "ssam+ composite";
+        pass.color[0] = {opaque.color(), LoadOp::Load};
+        backend_.beginPass(pass);
+        DrawDesc d;
+        d.pipeline = composite_;
+        d.params = CoverageCompositeParams{t.foliage, t.mask, t.maskAdd, model_};
+        d.scissor = plan.compositeRegion;
+        backend_.draw(d);
+        backend_.endPass();
+    }
+
+    std::vector<NamedTarget> intermediates() const override {
+        const ssam::Intermediates t = ssam_.intermediates();
+        std::vector<NamedTarget> out;
+        if (t.mask) out.push_back({t.maskAdd ? "mask_max" : "mask", t.mask});
+        if (t.maskAdd) out.push_back({"mask_add", t.maskAdd});
+        if (t.foliage) out.push_back({"foliage", t.foliage});
+        return out;
+    }
+
+private:
+    Backend& backend_;
+    ssam::ScreenSpaceAlphaMask ssam_;
+    CoverageModel model_;
+    PipelineHandle composite_;
+    std::vector<ssam::FoliageBatch> batches_;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makeSsamPlusTechnique(Backend& backend, const TechniqueOptions& options) {
+    return std::make_unique<SsamPlusTechnique>(backend, options);
+}
+
+}  // namespace transparency::detail

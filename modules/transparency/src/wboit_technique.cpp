@@ -1,0 +1,154 @@
+// Weighted blended order-independent transparency (McGuire & Bavoil, "Weighted Blended
+// Order-Independent Transparency", JCGT vol. 2 no. 2, 2013), after the opaque resolve:
+//   accumulate  rt_accum (RGBA16F, cleared 0)  += (C * a * w, a * w), ONE/ONE; w is the
+//               paper's eq. (7) at the fragment's view depth (program.hpp WboitAccumulate)
+//   revealage   rt_reveal (R16F, cleared 1)    *= (1 - a): ZERO / ONE_MINUS_SRC_ALPHA
+//   resolve     colour = average * (1 - reveal) + opaque * reveal, with
+//               average = accum.rgb / max(accum.a, 1e-5)            (program.hpp WboitResolve)
+// Both geometry passes depth-test against the opaque depth and write none. The paper
+// writes accumulation and revealage from one pass into two targets (MRT); here every
+// program writes one colour to all its targets, so revealage is a second pass with the
+// alpha-only program (FoliageAlpha, the same alpha FoliageColor computes). The result is
+// the same; the cost is a second geometry pass.
+#include <cmath>
+#include <string>
+
+#include "engine/core/error.hpp"
+#include "foliage_draws.hpp"
+#include "ssam/screen_region.hpp"
+#include "techniques.hpp"
+
+namespace transparency::detail {
+
+namespace {
+
+using namespace engine::render;
+
+class WboitTechnique final : public Technique {
+public:
+    WboitTechnique(Backend& backend, const TechniqueOptions& options)
+        : backend_(backend), depthScale_(options.wboitDepthScale) {
+        if (!(std::isfinite(depthScale_) && depthScale_ > 0.0f))
+            throw engine::Error("wboit: wboitDepthScale " + std::to_string(depthScale_) + " must be finite and > 0");
+        PipelineDesc accumulate = foliagePipeline("wboit accumulate");
+        accumulate.program = ProgramKind::WboitAccumulate;
+        accumulate.depth = DepthState::testOnly(options.ssam.depthFunc);
+        accumulate.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
+                               BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
+        accumulatePipeline_ = backend_.createPipeline(accumulate);
+
+        PipelineDesc revealage = foliagePipeline("wboit revealage");
+        revealage.program = ProgramKind::FoliageAlpha;
+        revealage.depth = DepthState::testOnly(options.ssam.depthFunc);
+        revealage.blend[0] = {true, BlendFactor::Zero, BlendFactor::InvSrcAlpha, BlendOp::Add,
+                              BlendFactor::Zero, BlendFactor::InvSrcAlpha, BlendOp::Add, WriteAll};
+        revealagePipeline_ = backend_.createPipeline(revealage);
+
+        PipelineDesc resolve;
+        resolve.name = "wboit resolve";
+        resolve.program = ProgramKind::WboitResolve;
+        resolve.blend[0] = {true, BlendFactor::InvSrcAlpha, BlendFactor::SrcAlpha, BlendOp::Add,
+                            BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+        resolvePipeline_ = backend_.createPipeline(resolve);
+    }
+    ~WboitTechnique() override {
+        destroyTargets();
+        for (PipelineHandle p : {accumulatePipeline_, revealagePipeline_, resolvePipeline_}) backend_.destroy(p);
+    }
+
+    TechniqueKind kind() const override { return TechniqueKind::Wboit; }
+
+    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+        opaque.resolve();
+        const int width = opaque.desc().width, height = opaque.desc().height;
+        const auto visible = visibleDraws(frame, width, height);
+        if (visible.empty()) return;
+        ensureTargets(width, height);
+        Rect region;
+        for (const FoliageDraw* draw : visible)
+            if (auto r = ssam::screenRegion(draw->batch.worldBounds, frame.viewProj, width, height))
+                region = ssam::unite(region, *r);
+
+        PassDesc accumulate;
+        accumulate.name = "wboit accumulate";
+        accumulate.color[0] = {accumulation_, LoadOp::Clear, glm::vec4(0.0f)};
+        accumulate.depth = {opaque.depth(), LoadOp::Load};
+        backend_.beginPass(accumulate);
+        for (const FoliageDraw* draw : visible) {
+            const ssam::FoliageBatch& b = draw->batch;
+            WboitAccumulateParams params{frame.viewProj, b.baseColorFactor, b.baseColor, frame.light, depthScale_};
+            backend_.draw(batchDraw(b, accumulatePipeline_, params));
+        }
+        backend_.endPass();
+
+        PassDesc reveal;
+        reveal.name = "wboit revealage";
+        reveal.color[0] = {revealageTarget_, LoadOp::Clear, glm::vec4(1.0f)};
+        reveal.depth = {opaque.depth(), LoadOp::Load};
+        backend_.beginPass(reveal);
+        for (const FoliageDraw* draw : visible) {
+            const ssam::FoliageBatch& b = draw->batch;
+            AlphaOnlyParams params;
+            params.viewProj = frame.viewProj;
+            params.alphaFactor = b.baseColorFactor.a;
+            params.baseColor = b.baseColor;
+            backend_.draw(batchDraw(b, revealagePipeline_, params));
+        }
+        backend_.endPass();
+
+        PassDesc composite;
+        composite.name = "wboit resolve";
+        composite.color[0] = {opaque.color(), LoadOp::Load};
+        backend_.beginPass(composite);
+        DrawDesc d;
+        d.pipeline = resolvePipeline_;
+        d.params = WboitResolveParams{accumulation_, revealageTarget_};
+        d.scissor = region;
+        backend_.draw(d);
+        backend_.endPass();
+    }
+
+    std::vector<NamedTarget> intermediates() const override {
+        if (!accumulation_) return {};
+        return {{"wboit_accumulation", accumulation_}, {"wboit_revealage", revealageTarget_}};
+    }
+
+private:
+    void ensureTargets(int width, int height) {
+        if (width == width_ && height == height_) return;
+        destroyTargets();
+        auto target = [&](const char* name, Format format) {
+            TextureDesc t;
+            t.name = name;
+            t.width = width;
+            t.height = height;
+            t.format = format;
+            t.usage = UsageRenderTarget | UsageSampled;
+            return backend_.createTexture(t);
+        };
+        accumulation_ = target("rt_wboit_accumulation", Format::RGBA16F);
+        revealageTarget_ = target("rt_wboit_revealage", Format::R16F);
+        width_ = width, height_ = height;
+    }
+    void destroyTargets() {
+        for (TextureHandle* t : {&accumulation_, &revealageTarget_}) {
+            if (*t) backend_.destroy(*t);
+            *t = {};
+        }
+        width_ = height_ = 0;
+    }
+
+    Backend& backend_;
+    float depthScale_;
+    PipelineHandle accumulatePipeline_, revealagePipeline_, resolvePipeline_;
+    TextureHandle accumulation_, revealageTarget_;
+    int width_ = 0, height_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makeWboitTechnique(Backend& backend, const TechniqueOptions& options) {
+    return std::make_unique<WboitTechnique>(backend, options);
+}
+
+}  // namespace transparency::detail

@@ -1,0 +1,138 @@
+#include "water/water_feature.hpp"
+
+#include <algorithm>
+
+#include "engine/scene/components.hpp"
+
+namespace water {
+
+using namespace engine;
+using namespace engine::render;
+
+WaterFeature::WaterFeature(const scene::MeshLibrary& library, const Ripples& ripples) : library_(library) {
+    setRipples(ripples);
+}
+
+WaterFeature::~WaterFeature() {
+    Backend& backend = library_.backend();
+    for (BufferHandle b : frameBuffers_) backend.destroy(b);
+    for (auto& [e, s] : surfaces_)
+        for (BufferHandle b : s.buffers)
+            if (b) backend.destroy(b);
+    for (auto& [f, p] : pipelines_) backend.destroy(p);
+}
+
+void WaterFeature::setRipples(const Ripples& ripples) {
+    validate(ripples);
+    ripples_ = ripples;
+}
+
+void WaterFeature::registerSystems(ecs::Scheduler& scheduler) {
+    scheduler.add(ecs::phase::deformation, "water ripples",
+                  [this](ecs::Registry& registry, ecs::CommandBuffer&) { updateRipples(registry); });
+}
+
+void WaterFeature::releaseSurface(ecs::Registry& registry, ecs::Entity e, Surface& s) {
+    for (BufferHandle b : s.buffers)
+        if (b) library_.backend().destroy(b);
+    s.buffers.clear();
+    if (registry.alive(e) && registry.has<scene::VertexOverride>(e)) registry.remove<scene::VertexOverride>(e);
+}
+
+void WaterFeature::updateRipples(ecs::Registry& registry) {
+    // Pools in view get rippling normals; the rest keep the shared flat mesh.
+    std::vector<std::pair<ecs::Entity, scene::ModelId>> visible;
+    registry.view<const scene::Transform, const scene::Renderable>().each(
+        [&](ecs::Entity e, const scene::Transform& t, const scene::Renderable& r) {
+            bool water = false;
+            for (std::uint32_t p : library_.partsOf(r.model))
+                water = water || library_.part(p).material.surface == scene::SurfaceClass::Blend;
+            if (!water || (registry.has<scene::VertexOverride>(e) && !surfaces_.contains(e))) return;
+            if (scene::intersectsViewVolume(library_.bounds(r.model).transformed(t.matrix()), frame_.viewProj))
+                visible.emplace_back(e, r.model);
+        });
+    for (auto it = surfaces_.begin(); it != surfaces_.end();) {
+        const bool keep = std::any_of(visible.begin(), visible.end(), [&](const auto& v) { return v.first == it->first; });
+        if (keep) {
+            ++it;
+        } else {
+            releaseSurface(registry, it->first, it->second);
+            it = surfaces_.erase(it);
+        }
+    }
+    for (const auto& [e, model] : visible) {
+        const std::vector<std::uint32_t>& parts = library_.partsOf(model);
+        auto [it, fresh] = surfaces_.try_emplace(e);
+        Surface& s = it->second;
+        if (fresh) {
+            s.buffers.assign(parts.size(), BufferHandle{});
+            s.vertices.assign(parts.size(), {});
+            for (std::size_t i = 0; i < parts.size(); ++i) {
+                const scene::MeshPart& part = library_.part(parts[i]);
+                if (part.material.surface != scene::SurfaceClass::Blend) continue;
+                s.vertices[i] = library_.vertices(parts[i]);
+                const auto bytes = std::as_bytes(std::span(s.vertices[i]));
+                s.buffers[i] = library_.backend().createBuffer({part.name + " (ripples)", BufferKind::Vertex, bytes.size()}, bytes);
+            }
+        }
+        scene::VertexOverride override;
+        override.buffers = s.buffers;
+        override.bounds.assign(parts.size(), scene::Aabb{});
+        for (std::size_t i = 0; i < parts.size(); ++i) {
+            if (!s.buffers[i]) continue;
+            rippleNormals(library_.vertices(parts[i]), s.vertices[i], ripples_, frame_.time);
+            library_.backend().updateBuffer(s.buffers[i], 0, std::as_bytes(std::span(s.vertices[i])));
+        }
+        if (scene::VertexOverride* existing = registry.tryGet<scene::VertexOverride>(e)) *existing = std::move(override);
+        else registry.add<scene::VertexOverride>(e, std::move(override));
+    }
+}
+
+PipelineHandle WaterFeature::pipeline(CompareFunc depthFunc, bool doubleSided) {
+    auto [it, fresh] = pipelines_.try_emplace({depthFunc, doubleSided});
+    if (fresh) {
+        PipelineDesc p;
+        p.name = doubleSided ? "water (blend over)" : "water (blend over, culled)";
+        p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;  // glTF doubleSided (§3.9.6)
+        p.program = ProgramKind::FoliageColor;  // double-sided lit, straight alpha out
+        p.blend[0] = BlendState::alphaOver();
+        p.depth = DepthState::testOnly(depthFunc);
+        it->second = library_.backend().createPipeline(p);
+    }
+    return it->second;
+}
+
+void WaterFeature::render(const scene::FeatureFrame& frame) {
+    Backend& backend = frame.backend;
+    for (BufferHandle b : frameBuffers_) backend.destroy(b);
+    frameBuffers_.clear();
+    if (frame.lists.blend.empty()) return;  // no pool in view: no pass
+    PassDesc pass;
+    pass.name = "water";
+    pass.color[0] = {frame.color, LoadOp::Load};
+    pass.depth = {frame.depth, LoadOp::Load};
+    backend.beginPass(pass);
+    for (const scene::DrawBatch& b : frame.lists.blend) {  // already back to front
+        const scene::MeshPart& part = frame.library.part(b.part);
+        const auto bytes = std::as_bytes(std::span(b.instances));
+        frameBuffers_.push_back(backend.createBuffer({"water instances", BufferKind::Instance, bytes.size()}, bytes));
+        SurfaceParams s;
+        s.viewProj = frame.viewProj;
+        s.baseColorFactor = part.material.baseColorFactor;
+        s.baseColor = part.material.baseColor;
+        s.light = frame.sun;
+        if (part.material.unlit) s.light = {frame.sun.towardLight, glm::vec3(0.0f), glm::vec3(1.0f)};
+        DrawDesc d;
+        d.pipeline = pipeline(frame.depthFunc, part.material.doubleSided);
+        d.params = s;
+        d.vertices = scene::vertexBufferOf(b, part);
+        d.indices = part.indices;
+        d.count = part.indexCount;
+        d.instances = frameBuffers_.back();
+        d.instanceCount = std::uint32_t(b.instances.size());
+        backend.draw(d);
+    }
+    backend.endPass();
+}
+
+}  // namespace water

@@ -1,0 +1,88 @@
+#pragma once
+// WindSystem: the ECS system (phase::deformation) that bends foliage in the wind and pushes
+// it out of colliders (the car), every frame.
+//
+// Work scales with the vertices actually deformed: only a plant (an entity with Sway) that
+// is in view and within Wind::activeRadius of the camera or near a Collider gets its own
+// copy of its mesh (a VertexOverride, which extraction draws instead of the shared mesh);
+// every other plant keeps the shared static mesh and costs nothing. A plant that stops
+// being active gives its buffers back and is drawn from the shared mesh again.
+//
+// Deterministic: the result is a function of the registry, the frame's time and dt, and
+// does not depend on the number of threads (plants are deformed independently, oneTBB).
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/core/ecs/registry.hpp"
+#include "engine/scene/mesh_library.hpp"
+#include "wind/sway.hpp"
+
+namespace wind {
+
+// Where the frame is seen from, and the simulated clock.
+struct WindFrame {
+    float time = 0.0f;
+    float dt = 0.0f;
+    glm::vec3 eye{0.0f};
+    glm::mat4 viewProj{1.0f};
+    bool hasView = false;  // false: no view-volume culling (everything near counts as visible)
+};
+
+struct WindStats {
+    std::size_t plantsDeformed = 0;    // this update
+    std::size_t verticesDeformed = 0;  // this update
+    std::size_t buffersCreated = 0;    // since construction
+    std::size_t buffersReleased = 0;   // since construction
+};
+
+class WindSystem {
+public:
+    explicit WindSystem(const engine::scene::MeshLibrary& library);
+    ~WindSystem();
+    WindSystem(const WindSystem&) = delete;
+    WindSystem& operator=(const WindSystem&) = delete;
+
+    // Gives every Renderable whose model has alpha-tested (foliage) parts a Sway, with a
+    // phase and flexibility drawn from the entity's index and `seed` (deterministic).
+    // Returns how many were added.
+    std::size_t attach(engine::ecs::Registry& registry, std::uint32_t seed = 1) const;
+
+    void setFrame(const WindFrame& frame) { frame_ = frame; }
+    // One frame of deformation. Needs exactly one Wind entity (none: every plant goes back
+    // to its rest mesh); a bad Wind throws engine::Error naming the field.
+    void update(engine::ecs::Registry& registry);
+    // Drops every deformed copy (plants are drawn from the shared meshes again).
+    void release(engine::ecs::Registry& registry);
+
+    const WindStats& stats() const { return stats_; }
+    // The deformed vertices of `e`'s part `i` (index into partsOf(model)), empty when the
+    // plant is not deformed; for tests.
+    std::span<const engine::render::Vertex> deformed(engine::ecs::Entity e, std::size_t i) const;
+
+private:
+    struct DeformedPart {
+        std::size_t slot = 0;   // index into partsOf(model)
+        std::uint32_t part = 0; // library part
+        bool flutter = false;   // leaf cards (alpha-tested parts) flutter; trunks only bend
+        std::vector<engine::render::Vertex> vertices;
+        std::vector<glm::vec3> push;
+        engine::render::BufferHandle buffer;
+        engine::scene::Aabb bounds;
+    };
+    struct DeformedPlant {
+        std::vector<DeformedPart> parts;
+        std::size_t slots = 0;  // partsOf(model).size()
+    };
+
+    void releasePlant(engine::ecs::Registry& registry, engine::ecs::Entity e, DeformedPlant& plant);
+
+    const engine::scene::MeshLibrary& library_;
+    WindFrame frame_;
+    WindStats stats_;
+    std::map<engine::ecs::Entity, DeformedPlant> plants_;  // ordered: deterministic walks
+};
+
+}  // namespace wind

@@ -1,0 +1,218 @@
+#include "wind/wind_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <tbb/parallel_for.h>
+
+#include "engine/core/error.hpp"
+#include "engine/scene/components.hpp"
+
+namespace wind {
+
+using namespace engine;
+using engine::render::Vertex;
+using engine::scene::Aabb;
+
+namespace {
+
+bool hasFoliage(const scene::MeshLibrary& library, scene::ModelId model) {
+    for (std::uint32_t p : library.partsOf(model))
+        if (library.part(p).material.surface == scene::SurfaceClass::Mask) return true;
+    return false;
+}
+
+float distanceToBox(const glm::vec3& p, const Aabb& box) {
+    const glm::vec3 d = glm::max(glm::max(box.min - p, p - box.max), glm::vec3(0.0f));
+    return glm::length(d);
+}
+
+// A well-mixed 32-bit hash (splitmix-style finaliser) for per-plant variety.
+std::uint32_t mix(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+}  // namespace
+
+WindSystem::WindSystem(const scene::MeshLibrary& library) : library_(library) {}
+
+WindSystem::~WindSystem() {
+    for (auto& [e, plant] : plants_)
+        for (DeformedPart& p : plant.parts) library_.backend().destroy(p.buffer);
+}
+
+std::size_t WindSystem::attach(ecs::Registry& registry, std::uint32_t seed) const {
+    std::vector<ecs::Entity> foliage;
+    registry.view<const scene::Renderable>().each([&](ecs::Entity e, const scene::Renderable& r) {
+        if (!registry.has<Sway>(e) && hasFoliage(library_, r.model)) foliage.push_back(e);
+    });
+    for (ecs::Entity e : foliage) {
+        const std::uint32_t h = mix(e.index() * 0x9E3779B9u ^ seed);
+        const float phase = float(h & 0xFFFF) / 65536.0f * 2.0f * std::numbers::pi_v<float>;
+        const float flexibility = 0.6f + 0.4f * float(h >> 16) / 65536.0f;
+        registry.add<Sway>(e, Sway{flexibility, phase});
+    }
+    return foliage.size();
+}
+
+std::span<const Vertex> WindSystem::deformed(ecs::Entity e, std::size_t i) const {
+    const auto it = plants_.find(e);
+    if (it == plants_.end()) return {};
+    for (const DeformedPart& p : it->second.parts)
+        if (p.slot == i) return p.vertices;
+    return {};
+}
+
+void WindSystem::releasePlant(ecs::Registry& registry, ecs::Entity e, DeformedPlant& plant) {
+    for (DeformedPart& p : plant.parts) {
+        library_.backend().destroy(p.buffer);
+        ++stats_.buffersReleased;
+    }
+    plant.parts.clear();
+    if (registry.alive(e) && registry.has<scene::VertexOverride>(e)) registry.remove<scene::VertexOverride>(e);
+}
+
+void WindSystem::release(ecs::Registry& registry) {
+    for (auto& [e, plant] : plants_) releasePlant(registry, e, plant);
+    plants_.clear();
+}
+
+void WindSystem::update(ecs::Registry& registry) {
+    stats_.plantsDeformed = stats_.verticesDeformed = 0;
+    const Wind* wind = nullptr;
+    std::size_t winds = 0;
+    registry.view<const Wind>().each([&](const Wind& w) {
+        wind = &w;
+        ++winds;
+    });
+    if (winds > 1) throw Error("wind: " + std::to_string(winds) + " entities have a Wind; exactly one may");
+    if (!wind) {
+        release(registry);
+        return;
+    }
+    validate(*wind);
+    if (!std::isfinite(frame_.time) || !std::isfinite(frame_.dt) || frame_.dt < 0.0f)
+        throw Error("wind: frame time " + std::to_string(frame_.time) + " / dt " + std::to_string(frame_.dt) +
+                    " must be finite with dt >= 0");
+
+    std::vector<SphereCollider> colliders;
+    registry.view<const scene::Transform, const scene::Collider>().each(
+        [&](const scene::Transform& t, const scene::Collider& c) {
+            if (std::isfinite(c.radius) && c.radius > 0.0f) colliders.push_back({t.position, c.radius});
+        });
+
+    // Which plants deform this frame: in view, and near the camera or a collider. The box
+    // is widened by how far the wind can move a vertex, so nothing pops at the edges.
+    struct Active {
+        ecs::Entity entity;
+        scene::ModelId model;
+        PlantPose pose;
+    };
+    std::vector<Active> active;
+    const float reach = wind->strength * (1.0f + wind->gustStrength + 0.25f) + wind->flutterAmplitude;
+    registry.view<const scene::Transform, const scene::Renderable, const Sway>().each(
+        [&](ecs::Entity e, const scene::Transform& t, const scene::Renderable& r, const Sway& s) {
+            if (registry.has<scene::Collider>(e)) return;
+            const Aabb local = library_.bounds(r.model);
+            if (local.empty()) return;
+            const glm::mat4 model = t.matrix();
+            Aabb box = local.transformed(model);
+            box.min -= glm::vec3(reach);
+            box.max += glm::vec3(reach);
+            if (frame_.hasView && !scene::intersectsViewVolume(box, frame_.viewProj)) return;
+            bool near = distanceToBox(frame_.eye, box) <= wind->activeRadius;
+            for (const SphereCollider& c : colliders)
+                near = near || distanceToBox(c.center, box) <= c.radius + wind->colliderMargin;
+            if (!near) return;
+            PlantPose pose;
+            pose.model = model;
+            pose.inverseModel = glm::inverse(model);
+            pose.baseY = local.min.y;
+            pose.height = local.max.y - local.min.y;
+            pose.sway = {std::clamp(std::isfinite(s.flexibility) ? s.flexibility : 0.0f, 0.0f, 1.0f),
+                         std::isfinite(s.phase) ? s.phase : 0.0f};
+            active.push_back({e, r.model, pose});
+        });
+    std::sort(active.begin(), active.end(), [](const Active& a, const Active& b) { return a.entity < b.entity; });
+
+    // Plants no longer active (or destroyed) go back to the shared mesh.
+    for (auto it = plants_.begin(); it != plants_.end();) {
+        const bool keep = std::binary_search(active.begin(), active.end(), Active{it->first, 0, {}},
+                                             [](const Active& a, const Active& b) { return a.entity < b.entity; });
+        if (keep) {
+            ++it;
+        } else {
+            releasePlant(registry, it->first, it->second);
+            it = plants_.erase(it);
+        }
+    }
+
+    // Newly active plants get their own copy of every deformable part.
+    struct Job {
+        DeformedPart* part;
+        const PlantPose* pose;
+    };
+    std::vector<Job> jobs;
+    for (const Active& a : active) {
+        auto [it, fresh] = plants_.try_emplace(a.entity);
+        DeformedPlant& plant = it->second;
+        const std::vector<std::uint32_t>& parts = library_.partsOf(a.model);
+        if (fresh || plant.slots != parts.size()) {
+            releasePlant(registry, a.entity, plant);
+            plant.slots = parts.size();
+            for (std::size_t i = 0; i < parts.size(); ++i) {
+                const scene::MeshPart& mesh = library_.part(parts[i]);
+                if (mesh.material.surface == scene::SurfaceClass::Blend) continue;
+                DeformedPart p;
+                p.slot = i;
+                p.part = parts[i];
+                p.flutter = mesh.material.surface == scene::SurfaceClass::Mask;
+                p.vertices = library_.vertices(parts[i]);
+                p.push.assign(p.vertices.size(), glm::vec3(0.0f));
+                const auto bytes = std::as_bytes(std::span(p.vertices));
+                p.buffer = library_.backend().createBuffer(
+                    {mesh.name + " (deformed)", render::BufferKind::Vertex, bytes.size()}, bytes);
+                ++stats_.buffersCreated;
+                plant.parts.push_back(std::move(p));
+            }
+        }
+        for (DeformedPart& p : plant.parts) jobs.push_back({&p, &a.pose});
+    }
+
+    // The deformation itself: independent per part, so any thread count gives the same bits.
+    const float decay = std::exp(-wind->springRate * frame_.dt);
+    const float time = frame_.time;
+    const Wind& w = *wind;
+    tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t j) {
+        DeformedPart& p = *jobs[j].part;
+        p.bounds = deformVertices(library_.vertices(p.part), p.vertices, p.push, w, *jobs[j].pose, time, p.flutter,
+                                  decay, colliders);
+    });
+
+    // Upload and point extraction at the deformed copies.
+    for (const Active& a : active) {
+        DeformedPlant& plant = plants_.at(a.entity);
+        scene::VertexOverride override;
+        override.buffers.assign(plant.slots, render::BufferHandle{});
+        override.bounds.assign(plant.slots, Aabb{});
+        for (const DeformedPart& p : plant.parts) {
+            library_.backend().updateBuffer(p.buffer, 0, std::as_bytes(std::span(p.vertices)));
+            override.buffers[p.slot] = p.buffer;
+            override.bounds[p.slot] = p.bounds;
+            stats_.verticesDeformed += p.vertices.size();
+        }
+        ++stats_.plantsDeformed;
+        if (scene::VertexOverride* existing = registry.tryGet<scene::VertexOverride>(a.entity))
+            *existing = std::move(override);
+        else
+            registry.add<scene::VertexOverride>(a.entity, std::move(override));
+    }
+}
+
+}  // namespace wind

@@ -1,0 +1,14 @@
+#pragma once
+// A minimal PNG writer (RGBA8, stored deflate blocks: no compression library needed), so the
+// example depends on nothing but GL, EGL/GLFW and ssam::gl.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gl_embedding {
+
+// `rgba` holds height rows of width * 4 bytes, the first row the top of the image.
+// Returns false when the file cannot be written.
+bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba);
+
+}  // namespace gl_embedding

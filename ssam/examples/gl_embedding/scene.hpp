@@ -1,0 +1,53 @@
+#pragma once
+// The example's scene, as data, so the test that checks its image (tests/capture/gl) computes
+// the expected pixels from the same numbers. Orthographic front view: world x, y in [-1, 1] are
+// the screen (y up), z in [0, 1] is depth (0 nearest), mapped to OpenGL's default clip space.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace gl_embedding {
+
+constexpr int kWidth = 512, kHeight = 512;
+constexpr std::array<float, 3> kSky{0.55f, 0.70f, 0.90f};
+
+struct Rect3 {
+    float x0, y0, x1, y1;
+    float zLeft, zRight;  // depth at x0 and at x1 (crossing cards lean in depth)
+    std::array<float, 4> color;  // opaque: colour; foliage: tint rgb and alpha factor
+};
+
+constexpr Rect3 kGround{-1.0f, -1.0f, 1.0f, -0.3f, 0.9f, 0.9f, {0.35f, 0.28f, 0.18f, 1.0f}};
+constexpr Rect3 kBox{0.35f, -0.6f, 0.85f, 0.2f, 0.5f, 0.5f, {0.60f, 0.25f, 0.20f, 1.0f}};
+constexpr Rect3 kBoxTop{0.35f, 0.2f, 0.85f, 0.3f, 0.5f, 0.5f, {0.75f, 0.40f, 0.30f, 1.0f}};
+
+// Foliage cards (leaf texture * tint, alpha * texture alpha). A and B cross in depth at x = -0.15
+// (A nearer on the left); C is alone over the sky; D is behind the box.
+constexpr Rect3 kCardA{-0.8f, -0.5f, 0.2f, 0.7f, 0.3f, 0.7f, {1.0f, 1.0f, 1.0f, 0.6f}};
+constexpr Rect3 kCardB{-0.5f, -0.4f, 0.5f, 0.8f, 0.7f, 0.3f, {0.55f, 0.85f, 1.0f, 0.35f}};
+constexpr Rect3 kCardC{0.3f, 0.4f, 0.9f, 0.9f, 0.4f, 0.4f, {1.0f, 0.9f, 0.5f, 0.35f}};
+constexpr Rect3 kCardD{0.45f, -0.9f, 1.0f, -0.1f, 0.8f, 0.8f, {0.8f, 1.0f, 0.8f, 0.8f}};
+constexpr std::array<Rect3, 4> kCards{kCardA, kCardB, kCardC, kCardD};
+
+// The procedural leaf: a disc with a uniform core (r < 0.6), darkening towards the rim, alpha 1
+// inside r < 0.75 falling linearly to 0 at r = 1 (the soft edge SSAM blends), thin darker veins.
+constexpr int kLeafSize = 64;
+inline std::array<std::uint8_t, 4> leafTexel(int x, int y) {
+    const float u = (x + 0.5f) / kLeafSize, v = (y + 0.5f) / kLeafSize;
+    const float du = (u - 0.5f) * 2.0f, dv = (v - 0.5f) * 2.0f;
+    const float r = std::sqrt(du * du + dv * dv);
+    float shade = r < 0.6f ? 1.0f : 1.0f - 0.6f * (r - 0.6f) / 0.4f;
+    const bool vein = r >= 0.6f && (std::fabs(du) < 0.03f || std::fabs(std::fabs(du) - std::fabs(dv)) < 0.04f);
+    if (vein) shade *= 0.75f;
+    const float alpha = std::clamp(r < 0.75f ? 1.0f : 1.0f - (r - 0.75f) / 0.25f, 0.0f, 1.0f);
+    auto code = [](float f) { return static_cast<std::uint8_t>(std::lround(std::clamp(f, 0.0f, 1.0f) * 255.0f)); };
+    return {code(0.30f * shade), code(0.62f * shade), code(0.20f * shade), code(alpha)};
+}
+
+// The window pixel (column, row from the top) whose centre is nearest to world (x, y).
+inline std::array<int, 2> pixelAt(float x, float y) {
+    return {static_cast<int>((x * 0.5f + 0.5f) * kWidth), static_cast<int>((0.5f - y * 0.5f) * kHeight)};
+}
+
+}  // namespace gl_embedding

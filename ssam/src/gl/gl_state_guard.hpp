@@ -1,0 +1,39 @@
+#pragma once
+// Saves every piece of GL state ssam_gl changes and restores it on destruction (also when the
+// engine's callback throws), so SSAM can run in the middle of an engine's frame. The list is
+// the README's "Embedding with raw OpenGL": framebuffer bindings, viewport, scissor box and
+// test, blend enable / equations / factors (draw buffers 0 and 1), colour write masks (0 and 1),
+// depth test / write mask / function, face culling, stencil test, polygon offset fill,
+// alpha-to-coverage, GL_FRAMEBUFFER_SRGB, colour logic op, rasterizer discard, program, vertex array, GL_ARRAY_BUFFER, active texture
+// unit, the GL_TEXTURE_2D bindings of units 0-2 and generic vertex attributes 1-7.
+#include <array>
+
+namespace ssam::gl {
+
+class GlStateGuard {
+public:
+    explicit GlStateGuard(bool perBufferBlend);
+    ~GlStateGuard();
+    GlStateGuard(const GlStateGuard&) = delete;
+    GlStateGuard& operator=(const GlStateGuard&) = delete;
+
+private:
+    struct BlendTarget {
+        unsigned char enabled = 0;
+        int equationRgb = 0, equationAlpha = 0, srcRgb = 0, dstRgb = 0, srcAlpha = 0, dstAlpha = 0;
+        std::array<unsigned char, 4> colorMask{};
+    };
+    bool perBufferBlend_;
+    int drawFramebuffer_ = 0, readFramebuffer_ = 0;
+    std::array<int, 4> viewport_{}, scissorBox_{};
+    unsigned char scissorTest_ = 0, depthTest_ = 0, depthMask_ = 0, cullFace_ = 0, stencilTest_ = 0,
+                  polygonOffsetFill_ = 0, alphaToCoverage_ = 0, framebufferSrgb_ = 0, logicOp_ = 0,
+                  rasterizerDiscard_ = 0;
+    int depthFunc_ = 0;
+    std::array<BlendTarget, 2> blend_{};
+    int program_ = 0, vertexArray_ = 0, arrayBuffer_ = 0, activeTexture_ = 0;
+    std::array<int, 3> textures_{};
+    std::array<std::array<float, 4>, 8> attributes_{};
+};
+
+}  // namespace ssam::gl

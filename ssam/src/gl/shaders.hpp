@@ -1,0 +1,11 @@
+#pragma once
+// GLSL 3.30 core sources of ssam_gl's three programs (seeds/000 Listings 3.1 and 3.2).
+namespace ssam::gl::shaders {
+
+extern const char* const kFoliageVertex;     // shared by the mask and colour programs
+extern const char* const kMaskFragment;      // Listing 3.1: alpha only, replicated
+extern const char* const kColorFragment;     // alpha-tested, double-sided lit colour
+extern const char* const kFullscreenVertex;  // one triangle over the viewport
+extern const char* const kCompositeFragment; // Listing 3.2 as (foliage, mask) for SRC_ALPHA blending
+
+}  // namespace ssam::gl::shaders

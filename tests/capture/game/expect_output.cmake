@@ -1,0 +1,32 @@
+# Runs COMMAND (a space-separated command line) and fails unless it exits 0 and its output
+# matches every regular expression of EXPECT ("@@"-separated), in that order; with OUT, the
+# file must exist afterwards too.
+separate_arguments(command UNIX_COMMAND "${COMMAND}")
+string(REPLACE "@@" ";" patterns "${EXPECT}")
+if(DEFINED OUT)
+  file(REMOVE ${OUT})
+endif()
+# xvfb-run -a can lose the race for a display number to another xvfb-run starting at the
+# same moment (parallel ctest, other tests): that is retried, nothing else is.
+foreach(attempt 1 2 3)
+  execute_process(COMMAND ${command} RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+  if(NOT log MATCHES "xvfb-run: error|Xvfb failed to start|Server is already active")
+    break()
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 1)
+endforeach()
+message(STATUS "${log}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${COMMAND} exited with ${rc}")
+endif()
+set(rest "${log}")
+foreach(pattern IN LISTS patterns)
+  string(REGEX MATCH "${pattern}.*" found "${rest}")
+  if(NOT found)
+    message(FATAL_ERROR "output lacks (in this order) '${pattern}'")
+  endif()
+  string(REGEX REPLACE "^${pattern}" "" rest "${found}")
+endforeach()
+if(DEFINED OUT AND NOT EXISTS ${OUT})
+  message(FATAL_ERROR "did not write ${OUT}")
+endif()

@@ -1,0 +1,136 @@
+// The program kinds and soft-backend hooks the transparency techniques added
+// (WboitAccumulate, WboitResolve, CoverageComposite, SoftBackend::setFragmentSink): bad
+// input is refused with engine::Error, and every technique is deterministic for any thread
+// count (the soft backend's promise, seeds of the goldens).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "engine/core/error.hpp"
+#include "technique_fixture.hpp"
+
+namespace {
+
+using namespace transparency;
+using namespace transparency::testing;
+
+TextureHandle texture(Backend& b, int size, Format format, std::uint8_t usage = UsageSampled | UsageRenderTarget) {
+    TextureDesc t;
+    t.name = "t";
+    t.width = t.height = size;
+    t.format = format;
+    t.usage = usage;
+    return b.createTexture(t);
+}
+
+void drawFullscreen(Backend& b, ProgramKind kind, ProgramParams params, TextureHandle target) {
+    PipelineDesc p;
+    p.name = "fullscreen";
+    p.program = kind;
+    const PipelineHandle pipeline = b.createPipeline(p);
+    PassDesc pass;
+    pass.name = "pass";
+    pass.color[0] = {target, LoadOp::Clear};
+    b.beginPass(pass);
+    DrawDesc d;
+    d.pipeline = pipeline;
+    d.params = std::move(params);
+    try {
+        b.draw(d);
+    } catch (...) {
+        b.endPass();
+        b.destroy(pipeline);
+        throw;
+    }
+    b.endPass();
+    b.destroy(pipeline);
+}
+
+TEST(TransparencyPrograms, FullscreenKindsRefuseMissingOrSmallInputs) {
+    auto b = soft::createSoftBackend({});
+    const TextureHandle target = texture(*b, 8, Format::RGBA32F);
+    const TextureHandle small = texture(*b, 4, Format::RGBA16F);
+    const TextureHandle good = texture(*b, 8, Format::RGBA16F);
+    EXPECT_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{{}, good}, target), engine::Error);
+    EXPECT_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{good, small}, target), engine::Error);
+    EXPECT_THROW(drawFullscreen(*b, ProgramKind::CoverageComposite, CoverageCompositeParams{good, {}, {}, CoverageModel::EqualLayers}, target),
+                 engine::Error);
+    EXPECT_THROW(drawFullscreen(*b, ProgramKind::CoverageComposite,
+                                CoverageCompositeParams{good, good, {}, CoverageModel(7)}, target),
+                 engine::Error);
+    // Parameters of another kind.
+    EXPECT_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, CompositeParams{good, good, {}, 0.85f, true}, target), engine::Error);
+    EXPECT_NO_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{good, good}, target));
+}
+
+// Non-finite accumulation (hostile HDR data) composites as black, never NaN.
+TEST(TransparencyPrograms, WboitResolveNeverOutputsNaN) {
+    auto b = soft::createSoftBackend({});
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const std::vector<float> accumulation = {nan, inf, 1.0f, 0.0f};  // one texel: rgb = (NaN, Inf, 1), weight 0
+    const std::vector<float> revealage = {nan};
+    TextureDesc t;
+    t.name = "acc";
+    t.width = t.height = 1;
+    t.format = Format::RGBA32F;
+    TextureData data;
+    data.levels.push_back(std::as_bytes(std::span(accumulation)));
+    const TextureHandle acc = b->createTexture(t, &data);
+    t.format = Format::R32F;
+    data.levels[0] = std::as_bytes(std::span(revealage));
+    const TextureHandle rev = b->createTexture(t, &data);
+    const TextureHandle target = texture(*b, 1, Format::RGBA32F);
+    drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{acc, rev}, target);
+    const Readback r = b->readback(target);
+    for (float v : r.values) EXPECT_TRUE(std::isfinite(v));
+}
+
+struct NullSink final : soft::FragmentSink {
+    void add(int, int, const soft::CapturedFragment&) override {}
+};
+
+TEST(TransparencyPrograms, FragmentCaptureNeedsASingleSampledDepthTestedPass) {
+    auto b = soft::createSoftBackend({});
+    ssam::testing::QuadBatches quad(*b, {{-1, -1, 1, 1, 0.5f, glm::vec4(1.0f)}});
+    NullSink sink;
+    for (int samples : {1, 4})
+        for (bool depthTest : {false, true}) {
+            ssam::OpaqueTargets opaque(*b, {8, 8, samples, Format::RGBA8_UNORM, CompareFunc::Less});
+            PipelineDesc p;
+            p.name = "capture";
+            p.program = ProgramKind::FoliageColor;
+            if (depthTest) p.depth = DepthState::testOnly();
+            const PipelineHandle pipeline = b->createPipeline(p);
+            b->setFragmentSink(&sink);
+            b->beginPass(opaque.passDesc(glm::vec4(0.0f)));
+            DrawDesc d;
+            d.pipeline = pipeline;
+            d.params = SurfaceParams{};
+            d.vertices = quad.batches[0].vertices;
+            d.count = 6;
+            if (samples == 1 && depthTest) EXPECT_NO_THROW(b->draw(d));
+            else EXPECT_THROW(b->draw(d), engine::Error) << samples << " samples, depth test " << depthTest;
+            b->endPass();
+            b->setFragmentSink(nullptr);
+            b->destroy(pipeline);
+        }
+}
+
+TEST(TransparencyPrograms, EveryTechniqueIsTheSameForAnyThreadCount) {
+    const std::vector<Quad> foliage = {{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.2f, 0.0f, 0.4f}},
+                                       {-0.25f, -1.0f, 1.0f, 0.5f, 0.6f, {0.0f, 1.0f, 0.5f, 0.6f}},
+                                       {-0.5f, -0.5f, 0.5f, 1.0f, 0.45f, {0.2f, 0.3f, 1.0f, 0.75f}}};
+    for (TechniqueKind kind : allTechniques()) {
+        std::vector<std::vector<float>> images;
+        for (int threads : {1, 2}) {
+            auto b = soft::createSoftBackend({.threads = threads, .tileSize = 8});
+            auto technique = createTechnique(kind, *b, {});
+            TechniqueFrame f(*b, technique->opaqueSamples(), foliage);
+            images.push_back(f.run(*technique).values);
+        }
+        EXPECT_EQ(images[0], images[1]) << techniqueName(kind);
+    }
+}
+
+}  // namespace

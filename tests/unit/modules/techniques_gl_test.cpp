@@ -1,0 +1,97 @@
+// The transparency techniques on the GL backend against the soft backend, pixel by pixel
+// (soft-vs-GL check of the WboitAccumulate / WboitResolve program kinds included).
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/core/error.hpp"
+#include "engine/render/gl/gl_backend.hpp"
+#include "technique_fixture.hpp"
+
+namespace {
+
+using namespace transparency;
+using namespace transparency::testing;
+
+const Quad kQuadA{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.2f, 0.0f, 0.4f}};
+const Quad kQuadB{-0.25f, -1.0f, 1.0f, 0.5f, 0.6f, {0.0f, 1.0f, 0.5f, 0.6f}};
+const Quad kQuadC{-0.5f, -0.5f, 0.5f, 1.0f, 0.45f, {0.2f, 0.3f, 1.0f, 0.75f}};
+const Quad kWall{0.5f, -1.0f, 1.0f, 1.0f, 0.4f, {1.0f, 1.0f, 1.0f, 1.0f}};
+
+Readback runOn(Backend& backend, TechniqueKind kind) {
+    auto technique = createTechnique(kind, backend, {});
+    TechniqueFrame f(backend, technique->opaqueSamples(), {kQuadA, kQuadB, kQuadC});
+    return f.run(*technique, {kWall});
+}
+
+TEST(TechniquesGl, EachTechniqueMatchesTheSoftBackend) {
+    for (TechniqueKind kind : {TechniqueKind::Ssam, TechniqueKind::SsamPlus, TechniqueKind::AlphaTest, TechniqueKind::AlphaToCoverage,
+                               TechniqueKind::BlendUnsorted, TechniqueKind::BlendSorted, TechniqueKind::Wboit}) {
+        auto soft = soft::createSoftBackend({.threads = 1});
+        auto gl = gl::createGlBackend();
+        const Readback s = runOn(*soft, kind), g = runOn(*gl, kind);
+        ASSERT_EQ(s.values.size(), g.values.size());
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+        // Half-float WBOIT targets round alike on both (same operations); 1e-3 leaves room
+        // for the GPU's own float evaluation order.
+        EXPECT_LE(worst, 1e-3f) << techniqueName(kind);
+    }
+}
+
+// WBOIT's depth weight under a perspective projection: GL's 1 / gl_FragCoord.w against the
+// soft backend's interpolated clip w.
+TEST(TechniquesGl, WboitDepthWeightMatchesTheSoftBackend) {
+    auto run = [](Backend& backend) {
+        auto technique = createTechnique(TechniqueKind::Wboit, backend, {});
+        std::vector<Vertex> vertices;
+        auto quad = [&](float distance, float tilt, glm::vec4 color) {
+            const glm::vec2 c[6] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+            for (const glm::vec2& p : c) {
+                Vertex v;
+                v.position = {p * distance, -distance + tilt * p.x * distance};
+                v.color = color;
+                vertices.push_back(v);
+            }
+        };
+        quad(3.0f, 0.5f, {1, 0, 0, 0.5f});
+        quad(8.0f, -0.3f, {0, 1, 0, 0.6f});
+        quad(40.0f, 0.2f, {0, 0, 1, 0.7f});
+        const auto bytes = std::as_bytes(std::span(vertices));
+        const BufferHandle buffer = backend.createBuffer({"quads", BufferKind::Vertex, bytes.size()}, bytes);
+        ssam::OpaqueTargets opaque(backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
+        FoliageDraw draw;
+        draw.batch.vertices = buffer;
+        draw.batch.count = std::uint32_t(vertices.size());
+        draw.batch.worldBounds = {{-60, -60, -60}, {60, 60, -1}};
+        draw.meshBounds = draw.batch.worldBounds;
+        backend.beginPass(opaque.passDesc(kOpaqueColor));
+        backend.endPass();
+        FoliageFrame frame;
+        frame.viewProj = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f);
+        frame.light = unlit();
+        frame.draws = std::span(&draw, 1);
+        technique->render(opaque, frame);
+        Readback r = backend.readback(opaque.color());
+        backend.destroy(buffer);
+        return r;
+    };
+    auto soft = soft::createSoftBackend({.threads = 1});
+    auto gl = gl::createGlBackend();
+    const Readback s = run(*soft), g = run(*gl);
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+    EXPECT_LE(worst, 2e-3f);
+}
+
+TEST(TechniquesGl, ReferenceRefusesGlWithAClearMessage) {
+    auto gl = gl::createGlBackend();
+    try {
+        createTechnique(TechniqueKind::Reference, *gl, {});
+        FAIL() << "the reference accepted the GL backend";
+    } catch (const engine::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("soft backend"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
