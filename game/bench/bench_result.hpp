@@ -23,6 +23,9 @@ struct BenchRow {
     int width = 0, height = 0;
     bool ran = false;  // false: skipped, `note` says why
     double timeMedianMs = kMissing, timeMinMs = kMissing, timeMaxMs = kMissing;
+    // Median CPU time of the process (all threads, llvmpipe's included) per frame: unlike wall
+    // time it barely moves when other processes compete for the cores.
+    double cpuMedianMs = kMissing;
     std::vector<PassTime> passes;  // median per pass name over the timed repetitions, in execution order
     // Against the exact reference of the same view (soft backend).
     double rmseLinear = kMissing, psnrLinear = kMissing, rmseSrgb = kMissing, psnrSrgb = kMissing;

@@ -9,6 +9,8 @@
 #include <optional>
 #include <thread>
 
+#include <time.h>
+
 #include "bench_frame.hpp"
 #include "counting_backend.hpp"
 #include "rss_peak.hpp"
@@ -26,6 +28,12 @@ using engine::capture::Image;
 using transparency::TechniqueKind;
 
 namespace {
+
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -134,15 +142,17 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         FrameDrawer drawer(backend, scene.library());
         backend.takeTimings();  // drop whatever earlier work left
 
-        std::vector<double> times;
+        std::vector<double> times, cpuTimes;
         std::vector<std::string> passOrder;
         std::map<std::string, std::vector<double>> passTimes;
         for (int i = 0; i < o.warmup + o.reps; ++i) {
             const auto start = std::chrono::steady_clock::now();
+            const double cpuStart = processCpuMs();
             drawer.draw(targets, technique.get(), *views.still);
             // GL: waiting for the passes' GL_TIME_ELAPSED results also waits for the frame.
             const std::vector<PassTiming> timings = backend.takeTimings();
             const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const double cpuMs = processCpuMs() - cpuStart;
             const bool timed = i >= o.warmup;
             if (timed)
                 std::printf(" rep %d/%d %.1f ms", i - o.warmup + 1, o.reps, ms);
@@ -151,6 +161,7 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
             std::fflush(stdout);
             if (!timed) continue;
             times.push_back(ms);
+            cpuTimes.push_back(cpuMs);
             std::map<std::string, double> frame;  // several passes of one name in a frame add up
             for (const PassTiming& t : timings) {
                 if (!frame.count(t.pass) && !passTimes.count(t.pass)) passOrder.push_back(t.pass);
@@ -162,6 +173,7 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         row.peakRssMb = rss.growthMb();
         row.ran = true;
         row.timeMedianMs = median(times);
+        row.cpuMedianMs = median(cpuTimes);
         row.timeMinMs = *std::min_element(times.begin(), times.end());
         row.timeMaxMs = *std::max_element(times.begin(), times.end());
         for (const std::string& pass : passOrder) row.passes.push_back({pass, median(passTimes[pass])});

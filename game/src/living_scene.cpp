@@ -11,6 +11,9 @@
 #if SSAM_HAS_WATER
 #include "water/water_feature.hpp"
 #endif
+#if SSAM_HAS_LIGHTSHAFTS
+#include "lightshafts/light_shaft_feature.hpp"
+#endif
 #if SSAM_HAS_PARTICLES
 #include "engine/scene/components.hpp"
 #include "particles/particle_feature.hpp"
@@ -80,7 +83,13 @@ LivingScene::LivingScene(engine::ecs::Registry& registry, const engine::scene::M
         missing_.push_back("particles");
 #endif
     }
-    if (options.lightshafts) missing_.push_back("lightshafts");
+    if (options.lightshafts) {
+#if SSAM_HAS_LIGHTSHAFTS
+        features_.push_back(std::make_unique<lightshafts::LightShaftFeature>(library.backend()));
+#else
+        missing_.push_back("lightshafts");
+#endif
+    }
     (void)library;
     for (const auto& f : features_) f->registerSystems(scheduler_);
 }

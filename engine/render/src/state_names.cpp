@@ -33,7 +33,7 @@ const char* alphaFailModeName(AlphaFailMode mode) {
 const char* programKindName(ProgramKind kind) {
     constexpr const char* kNames[] = {"Flat", "OpaqueLit", "FoliageColor", "FoliageAlpha", "Composite",
                                          "WboitAccumulate", "WboitResolve", "CoverageComposite",
-                                         "Particle", "LayerComposite"};
+                                         "Particle", "LayerComposite", "LightShafts"};
     return kNames[static_cast<int>(kind)];
 }
 

@@ -120,6 +120,15 @@ void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& ext
                 throw Error(what + ": unknown coverage model " + std::to_string(int(c->model)));
             return;
         }
+        if (const auto* shafts = std::get_if<LightShaftParams>(&d.params)) {
+            input(shafts->depth);
+            if (shafts->samples < 1 || shafts->samples > 128)
+                throw Error(what + ": light-shaft samples " + std::to_string(shafts->samples) + " not in 1..128");
+            for (float v : {shafts->sunPixel.x, shafts->sunPixel.y, shafts->farDepth, shafts->intensity, shafts->decay,
+                            shafts->density, shafts->color.r, shafts->color.g, shafts->color.b})
+                if (!std::isfinite(v)) throw Error(what + ": light-shaft parameters are not finite");
+            return;
+        }
         if (const auto* l = std::get_if<LayerCompositeParams>(&d.params)) {
             // A layer of 1/layerScale the target's size (rounded up), upsampled by the program.
             if (l->layerScale != 1 && l->layerScale != 2)

@@ -1,7 +1,9 @@
 // Plain alpha testing, the baseline SSAM replaces (seeds/000 §3.2, seeds/001): foliage drawn
-// into the opaque targets before their resolve, discarding fragments below the reference,
+// into the opaque targets before their resolve, discarding fragments below the material's
+// alphaCutoff (glTF 2.0 alphaMode MASK) or one reference for all,
 // with depth test and write and no culling. Only RGB is written: the texture's alpha decides
 // coverage, the frame's alpha stays the opaque 1.
+#include <map>
 #include <string>
 
 #include "engine/core/error.hpp"
@@ -16,20 +18,13 @@ using namespace engine::render;
 
 class AlphaTestTechnique final : public Technique {
 public:
-    AlphaTestTechnique(Backend& backend, const TechniqueOptions& options) : backend_(backend) {
-        if (!(options.alphaTestReference >= 0.0f && options.alphaTestReference <= 1.0f))
-            throw engine::Error("alpha-test: alphaTestReference " + std::to_string(options.alphaTestReference) +
-                                " is outside [0, 1]");
-        PipelineDesc p;
-        p.name = "foliage alpha test";
-        p.program = ProgramKind::FoliageColor;
-        p.depth = DepthState::testAndWrite(options.ssam.depthFunc);
-        p.raster.cull = CullMode::None;
-        p.alphaTest = AlphaTest::discardBelow(options.alphaTestReference);
-        p.blend[0].writeMask = WriteRGB;
-        pipeline_ = backend_.createPipeline(p);
+    AlphaTestTechnique(Backend& backend, const TechniqueOptions& options)
+        : backend_(backend), reference_(options.alphaTestReference), depthFunc_(options.ssam.depthFunc) {
+        if (reference_) checkReference(*reference_, "alphaTestReference");
     }
-    ~AlphaTestTechnique() override { backend_.destroy(pipeline_); }
+    ~AlphaTestTechnique() override {
+        for (auto& [reference, pipeline] : pipelines_) backend_.destroy(pipeline);
+    }
 
     TechniqueKind kind() const override { return TechniqueKind::AlphaTest; }
 
@@ -40,15 +35,41 @@ public:
             pass.name = "foliage alpha test";
             backend_.beginPass(pass);
             for (const FoliageDraw* draw : visible)
-                backend_.draw(batchDraw(draw->batch, pipeline_, surfaceParams(frame, draw->batch)));
+                backend_.draw(batchDraw(draw->batch, pipelineFor(reference_.value_or(draw->alphaCutoff)),
+                                        surfaceParams(frame, draw->batch)));
             backend_.endPass();
         }
         opaque.resolve();
     }
 
 private:
+    static void checkReference(float reference, const char* what) {
+        if (!(reference >= 0.0f && reference <= 1.0f))
+            throw engine::Error(std::string("alpha-test: ") + what + " " + std::to_string(reference) +
+                                " is outside [0, 1]");
+    }
+
+    // One pipeline per distinct reference (materials rarely differ).
+    PipelineHandle pipelineFor(float reference) {
+        auto [it, fresh] = pipelines_.try_emplace(reference);
+        if (fresh) {
+            checkReference(reference, "alphaCutoff");
+            PipelineDesc p;
+            p.name = "foliage alpha test";
+            p.program = ProgramKind::FoliageColor;
+            p.depth = DepthState::testAndWrite(depthFunc_);
+            p.raster.cull = CullMode::None;
+            p.alphaTest = AlphaTest::discardBelow(reference);
+            p.blend[0].writeMask = WriteRGB;
+            it->second = backend_.createPipeline(p);
+        }
+        return it->second;
+    }
+
     Backend& backend_;
-    PipelineHandle pipeline_;
+    std::optional<float> reference_;
+    CompareFunc depthFunc_;
+    std::map<float, PipelineHandle> pipelines_;
 };
 
 }  // namespace

@@ -142,10 +142,8 @@ TEST(RacerScene, MaskDiscardsBelowTheCutoffWithAlphaTest) {
     expectMaskCoverage(racer(sceneFile("mask_cutoff.gltf"), "--technique alpha-test"));
 }
 
-// Disabled: the alpha-test technique (modules/transparency) tests every draw against one
-// reference, TechniqueOptions::alphaTestReference = 0.5, not FoliageDraw::alphaCutoff, so
-// the 0.55 texel is drawn although the material's alphaCutoff is 0.6. Enable when it does.
-TEST(RacerScene, DISABLED_MaskUsesTheMaterialsAlphaCutoff) {
+// The 0.55 texel is below the material's alphaCutoff 0.6 (not below glTF's default 0.5).
+TEST(RacerScene, MaskUsesTheMaterialsAlphaCutoff) {
     const RacerRun run = racer(sceneFile("mask_cutoff.gltf"), "--technique alpha-test");
     ASSERT_EQ(run.exitCode, 0) << run.output;
     EXPECT_PIXEL(run, kAlpha055, kMid, srgb(kBackground));

@@ -1,5 +1,6 @@
-// Soft vs GL for the Particle and LayerComposite program kinds (program.hpp): the same
-// depth, particles and composite on both backends, compared texel by texel.
+// Soft vs GL for the living-scene program kinds (program.hpp): Particle and
+// LayerComposite (modules/particles) and LightShafts (modules/lightshafts) — the same depth
+// and draws on both backends, compared texel by texel.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -130,6 +131,67 @@ TEST(ParticlesGl, SoftAndGlAgree) {
         for (float v : s.layer.values) layerSum += v;
         EXPECT_GT(layerSum, 10.0f);  // the particles are really there
     }
+}
+
+Readback shafts(Backend& b) {
+    const glm::mat4 proj = perspectiveReverseZ(1.0f, float(kW) / kH, 0.1f, 30000.0f);
+    const glm::mat4 viewProj = proj * glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0));
+    TextureDesc t;
+    t.width = kW, t.height = kH, t.usage = UsageRenderTarget | UsageSampled, t.name = "colour";
+    const TextureHandle color = b.createTexture(t);
+    t.name = "depth", t.format = Format::D32F;
+    const TextureHandle depth = b.createTexture(t);
+    std::vector<Vertex> wall = quad(-0.8f, -0.6f, 0.37f, 0.9f, 5.0f, glm::vec4(0.2f, 0.5f, 0.1f, 1.0f), {0, 0, -1});
+    const BufferHandle wallBuffer = b.createBuffer({"wall", BufferKind::Vertex, wall.size() * sizeof(Vertex)},
+                                                   std::as_bytes(std::span(wall)));
+    PipelineDesc p;
+    p.name = "wall";
+    p.depth = DepthState::testAndWrite(CompareFunc::Greater);
+    const PipelineHandle wallPipeline = b.createPipeline(p);
+    p = {};
+    p.name = "shafts";
+    p.program = ProgramKind::LightShafts;
+    p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
+                  BlendOp::Add, WriteRGB};
+    const PipelineHandle shaftPipeline = b.createPipeline(p);
+    PassDesc pass;
+    pass.name = "scene";
+    pass.color[0] = {color, LoadOp::Clear, {0.3f, 0.4f, 0.6f, 1.0f}};
+    pass.depth = {depth, LoadOp::Clear, 0.0f};
+    b.beginPass(pass);
+    DrawDesc d;
+    d.pipeline = wallPipeline;
+    d.params = FlatParams{viewProj, glm::vec4(1.0f)};
+    d.vertices = wallBuffer;
+    d.count = 6;
+    b.draw(d);
+    b.endPass();
+    PassDesc shaftPass;
+    shaftPass.name = "light shafts";
+    shaftPass.color[0] = {color, LoadOp::Load};
+    b.beginPass(shaftPass);
+    LightShaftParams params;
+    params.depth = depth;
+    params.sunPixel = {27.3f, 11.6f};  // behind the wall
+    params.farDepth = 0.0f;
+    params.greaterIsCloser = true;
+    params.intensity = 0.8f;
+    DrawDesc s;
+    s.pipeline = shaftPipeline;
+    s.params = params;
+    b.draw(s);
+    b.endPass();
+    return b.readback(color);
+}
+
+TEST(LightShaftsGl, SoftAndGlAgree) {
+    auto soft = soft::createSoftBackend({1, 64, false});
+    auto gl = gl::createGlBackend();
+    const Readback s = shafts(*soft), g = shafts(*gl);
+    EXPECT_LE(maxDifference(s, g), 2.0f / 255.0f + 1e-6f);  // RGBA8: 2 codes (README)
+    float lit = 0.0f;
+    for (int y = 0; y < kH; ++y) lit += s.at(2, y, 0) - 0.3f;  // the shafts really add light
+    EXPECT_GT(lit, 0.5f);
 }
 
 }  // namespace

@@ -179,6 +179,9 @@ struct ProgramSlot {
     // Particle / LayerComposite (modules/particles)
     GLint hasDepth = -1, depthStride = -1, distanceScale = -1, distanceOffset = -1, softness = -1,
           greaterIsCloser = -1, layerScale = -1;
+    // LightShafts (modules/lightshafts)
+    GLint sunPixel = -1, farDepth = -1, shaftGreater = -1, shaftColor = -1, intensity = -1, decay = -1, density = -1,
+          samples = -1;
 };
 
 struct PendingTiming {
@@ -855,6 +858,14 @@ private:
         s.softness = p.uniform("u_softness");
         s.greaterIsCloser = p.uniform("u_greaterIsCloser");
         s.layerScale = p.uniform("u_layerScale");
+        s.sunPixel = p.uniform("u_sunPixel");
+        s.farDepth = p.uniform("u_farDepth");
+        s.shaftGreater = p.uniform("u_shaftGreater");
+        s.shaftColor = p.uniform("u_shaftColor");
+        s.intensity = p.uniform("u_intensity");
+        s.decay = p.uniform("u_decay");
+        s.density = p.uniform("u_density");
+        s.samples = p.uniform("u_samples");
         s.filter = p.uniform("u_filter");
         s.scissor = p.uniform("u_scissor");
         s.alphaFunc = p.uniform("u_alphaFunc");
@@ -967,6 +978,17 @@ private:
                     glProgramUniform1f(p, s.distanceOffset, params.depthOffset);
                     glProgramUniform1f(p, s.softness, params.softness);
                     glProgramUniform1i(p, s.greaterIsCloser, params.greaterIsCloser ? 1 : 0);
+                } else if constexpr (std::is_same_v<P, LightShaftParams>) {
+                    glBindTextureUnit(0, textures_.get(params.depth).id);
+                    glBindSampler(0, 0);
+                    glProgramUniform2fv(p, s.sunPixel, 1, &params.sunPixel[0]);
+                    glProgramUniform1f(p, s.farDepth, params.farDepth);
+                    glProgramUniform1i(p, s.shaftGreater, params.greaterIsCloser ? 1 : 0);
+                    glProgramUniform3fv(p, s.shaftColor, 1, &params.color[0]);
+                    glProgramUniform1f(p, s.intensity, params.intensity);
+                    glProgramUniform1f(p, s.decay, params.decay);
+                    glProgramUniform1f(p, s.density, params.density);
+                    glProgramUniform1i(p, s.samples, params.samples);
                 } else if constexpr (std::is_same_v<P, LayerCompositeParams>) {
                     glBindTextureUnit(0, params.sceneDepth ? textures_.get(params.sceneDepth).id : 0);
                     glBindTextureUnit(1, textures_.get(params.layer).id);

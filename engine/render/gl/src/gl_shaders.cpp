@@ -407,6 +407,38 @@ void main() {
 }
 )";
 
+// LightShafts (soft: particle_programs.hpp LightShaftsProgram), the same march.
+constexpr const char* kLightShaftsFragment = R"(
+layout(binding = 0) uniform sampler2D u_shaftDepth;
+uniform vec2 u_sunPixel;
+uniform float u_farDepth;
+uniform bool u_shaftGreater;
+uniform vec3 u_shaftColor;
+uniform float u_intensity;
+uniform float u_decay;
+uniform float u_density;
+uniform int u_samples;
+void main() {
+    ivec2 size = textureSize(u_shaftDepth, 0);
+    int samples = clamp(u_samples, 1, 128);
+    precise vec2 p = floor(gl_FragCoord.xy) + 0.5;
+    precise vec2 step = (u_sunPixel - p) * (u_density / float(samples));
+    float sum = 0.0, weight = 1.0;
+    for (int i = 0; i < samples; ++i) {
+        precise vec2 q = p + step * float(i);
+        if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < float(size.x) && q.y < float(size.y))) break;
+        float z = texelFetch(u_shaftDepth, ivec2(q), 0).r;
+        bool sky = u_shaftGreater ? !(z > u_farDepth) : !(z < u_farDepth);
+        if (sky) sum += weight;
+        weight *= u_decay;
+    }
+    vec3 c = u_shaftColor * (u_intensity * sum / float(samples));
+    for (int i = 0; i < 3; ++i)
+        if (isnan(c[i]) || isinf(c[i])) c[i] = 0.0;
+    finish(vec4(c, 0.0));
+}
+)";
+
 }  // namespace
 
 std::string vertexSource(ProgramKind kind) { return isFullscreen(kind) ? kFullscreenVertex : kMeshVertex; }
@@ -425,6 +457,7 @@ std::string fragmentSource(ProgramKind kind) {
         case ProgramKind::CoverageComposite: return s + kCoverageCompositeFragment;
         case ProgramKind::Particle: return s + kMeshFragmentGuard + kParticleDepth + kParticleFragment;
         case ProgramKind::LayerComposite: return s + kParticleDepth + kLayerCompositeFragment;
+        case ProgramKind::LightShafts: return s + kLightShaftsFragment;
     }
     return s;
 }

@@ -16,7 +16,7 @@ namespace engine::render::soft {
 using ProgramInstance =
     std::variant<FlatProgram, OpaqueLitProgram, FoliageColorProgram, FoliageAlphaProgram, CompositeProgram,
                  WboitAccumulateProgram, WboitResolveProgram, CoverageCompositeProgram, ParticleProgram,
-                 LayerCompositeProgram>;
+                 LayerCompositeProgram, LightShaftsProgram>;
 
 // Standard sample positions (D3D11 / Vulkan standard locations), in 1/16 pixel from the
 // pixel centre. GL leaves them to the implementation; README "Differential tolerances".

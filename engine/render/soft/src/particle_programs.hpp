@@ -102,4 +102,32 @@ struct LayerCompositeProgram {
     }
 };
 
+// seeds/000 §3.7 lists light shafts among the passes after the foliage; program.hpp
+// LightShaftParams. The march is written so GL computes the same sample points.
+struct LightShaftsProgram {
+    static constexpr ProgramNeeds kNeeds{};
+    LightShaftParams params;
+    const SoftTexture* depth = nullptr;
+
+    glm::vec4 shade(const Fragment& f) const {
+        const int w = depth->desc.width, h = depth->desc.height;
+        const int samples = std::clamp(params.samples, 1, 128);
+        const glm::vec2 p(float(f.x) + 0.5f, float(f.y) + 0.5f);
+        const glm::vec2 step = (params.sunPixel - p) * (params.density / float(samples));
+        float sum = 0.0f, weight = 1.0f;
+        for (int i = 0; i < samples; ++i) {
+            const glm::vec2 q = p + step * float(i);
+            if (!(q.x >= 0.0f && q.y >= 0.0f && q.x < float(w) && q.y < float(h))) break;  // left the screen
+            const float z = fetchTexel(*depth, int(q.x), int(q.y)).r;
+            const bool sky = params.greaterIsCloser ? !(z > params.farDepth) : !(z < params.farDepth);
+            if (sky) sum += weight;
+            weight *= params.decay;
+        }
+        glm::vec3 c = params.color * (params.intensity * sum / float(samples));
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(c[i])) c[i] = 0.0f;
+        return {c, 0.0f};
+    }
+};
+
 }  // namespace engine::render::soft

@@ -395,6 +395,10 @@ private:
                 const auto& p = std::get<ParticleParams>(params);
                 return ParticleProgram{p, texture(p.sceneDepth)};
             }
+            case ProgramKind::LightShafts: {
+                const auto& p = std::get<LightShaftParams>(params);
+                return LightShaftsProgram{p, texture(p.depth)};
+            }
             case ProgramKind::LayerComposite: {
                 const auto& p = std::get<LayerCompositeParams>(params);
                 return LayerCompositeProgram{p, texture(p.layer), texture(p.sceneDepth)};

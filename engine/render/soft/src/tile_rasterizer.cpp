@@ -274,7 +274,7 @@ private:
         if (draw_.capture) return;  // captured fragments each carry their own depth
         if constexpr (std::is_same_v<Program, CompositeProgram> || std::is_same_v<Program, WboitResolveProgram> ||
                       std::is_same_v<Program, CoverageCompositeProgram> || std::is_same_v<Program, ParticleProgram> ||
-                      std::is_same_v<Program, LayerCompositeProgram>) {
+                      std::is_same_v<Program, LayerCompositeProgram> || std::is_same_v<Program, LightShaftsProgram>) {
             return;
         } else {
             constexpr ProgramNeeds needs = Program::kNeeds;

@@ -65,7 +65,9 @@ struct SsamPlusOptions {
 
 struct TechniqueOptions {
     ssam::Config ssam;  // SSAM's knobs; ssam.depthFunc is the scene's depth function for all
-    float alphaTestReference = 0.5f;          // alpha-test and the rivals' alpha reference
+    // alpha-test's reference: unset, each material's own (FoliageDraw::alphaCutoff, glTF's
+    // alphaCutoff, 0.5 by default); set, one reference for every draw.
+    std::optional<float> alphaTestReference;
     std::size_t referenceFragmentsPerPixel = 256;  // the exact reference's cap (reported, never truncated silently)
     // WBOIT's weight (McGuire & Bavoil 2013 eq. 7) is tuned for view depths in metres,
     // 0.1 to 500: view depth * wboitDepthScale is what it sees.

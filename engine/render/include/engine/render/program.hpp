@@ -22,6 +22,7 @@ enum class ProgramKind : std::uint8_t {
     CoverageComposite,  // full-screen SSAM+ combination: coverage estimated from the MAX and ADD masks
     Particle,        // soft billboard into a premultiplied layer (modules/particles, seeds/003)
     LayerComposite,  // full-screen: a premultiplied layer over the colour, depth-aware upsampling
+    LightShafts,     // full-screen: radial blur towards the sun of the sky seen in the depth (modules/lightshafts)
 };
 
 const char* programKindName(ProgramKind kind);
@@ -152,8 +153,27 @@ struct LayerCompositeParams {
     bool greaterIsCloser = false;
 };
 
+// LightShafts (modules/lightshafts): screen-space light scattering. The occlusion image is
+// the depth itself: a texel is lit sky where it still holds the clear value `farDepth`
+// (nothing opaque or foliage drawn there). For each pixel p, `samples` points march from p
+// towards the sun's pixel `sunPixel` (a fraction `density` of the way), weighted by decay^i:
+//   out = (color * intensity * sum(decay^i * sky(q_i)) / samples, 0)
+// to be added over the frame (ONE/ONE on RGB). Non-finite results output 0.
+struct LightShaftParams {
+    TextureHandle depth;       // D32F or R32F, the target's size
+    glm::vec2 sunPixel{0.0f};  // the sun's position in pixels (may be off screen)
+    float farDepth = 1.0f;     // the depth clear value (0 for reverse-Z)
+    bool greaterIsCloser = false;
+    glm::vec3 color{1.0f, 0.95f, 0.8f};
+    float intensity = 0.35f;
+    float decay = 0.96f;
+    float density = 0.8f;
+    int samples = 32;          // 1..128
+};
+
 using ProgramParams = std::variant<FlatParams, SurfaceParams, AlphaOnlyParams, CompositeParams, WboitAccumulateParams,
-                                   WboitResolveParams, CoverageCompositeParams, ParticleParams, LayerCompositeParams>;
+                                   WboitResolveParams, CoverageCompositeParams, ParticleParams, LayerCompositeParams,
+                                   LightShaftParams>;
 
 // Which ProgramParams alternative a kind takes.
 constexpr std::size_t paramsIndexFor(ProgramKind kind) {
@@ -168,6 +188,7 @@ constexpr std::size_t paramsIndexFor(ProgramKind kind) {
         case ProgramKind::CoverageComposite: return 6;
         case ProgramKind::Particle: return 7;
         case ProgramKind::LayerComposite: return 8;
+        case ProgramKind::LightShafts: return 9;
     }
     return 0;
 }
@@ -175,7 +196,7 @@ constexpr std::size_t paramsIndexFor(ProgramKind kind) {
 // Composite reads its textures itself and needs no vertex input.
 constexpr bool isFullscreen(ProgramKind kind) {
     return kind == ProgramKind::Composite || kind == ProgramKind::WboitResolve || kind == ProgramKind::CoverageComposite ||
-           kind == ProgramKind::LayerComposite;
+           kind == ProgramKind::LayerComposite || kind == ProgramKind::LightShafts;
 }
 
 }  // namespace engine::render

@@ -1,0 +1,44 @@
+#pragma once
+// The light-shafts module as a living-scene feature: one pass, "light shafts", running
+// ProgramKind::LightShafts over the whole frame with additive blending (RGB ONE/ONE, alpha
+// kept). The occlusion image is the opaque + foliage depth: foliage in front of the sun
+// blocks the shafts exactly where its colour pass wrote depth. Off (no pass) when the sun
+// is behind the camera.
+#include "engine/scene/frame_feature.hpp"
+
+namespace lightshafts {
+
+struct LightShaftOptions {
+    glm::vec3 color{1.0f, 0.92f, 0.75f};
+    float intensity = 0.35f;  // >= 0
+    float decay = 0.96f;      // (0, 1]
+    float density = 0.8f;     // (0, 1]: how far towards the sun each pixel looks
+    int samples = 32;         // 1..128
+};
+
+// Throws engine::Error naming the field for NaN/inf or out-of-range values.
+void validate(const LightShaftOptions& options);
+
+class LightShaftFeature final : public engine::scene::Feature {
+public:
+    LightShaftFeature(engine::render::Backend& backend, const LightShaftOptions& options = {});
+    ~LightShaftFeature() override;
+    LightShaftFeature(const LightShaftFeature&) = delete;
+    LightShaftFeature& operator=(const LightShaftFeature&) = delete;
+
+    std::string_view name() const override { return "light shafts"; }
+    void render(const engine::scene::FeatureFrame& frame) override;
+
+    // Whether the last frame ran the pass, and where the sun was (pixels).
+    bool ranLastFrame() const { return ran_; }
+    glm::vec2 sunPixel() const { return sunPixel_; }
+
+private:
+    engine::render::Backend& backend_;
+    LightShaftOptions options_;
+    engine::render::PipelineHandle pipeline_;
+    bool ran_ = false;
+    glm::vec2 sunPixel_{0.0f};
+};
+
+}  // namespace lightshafts

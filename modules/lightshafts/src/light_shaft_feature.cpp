@@ -1,0 +1,67 @@
+#include "lightshafts/light_shaft_feature.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "engine/core/error.hpp"
+
+namespace lightshafts {
+
+using namespace engine::render;
+
+void validate(const LightShaftOptions& o) {
+    for (float v : {o.color.r, o.color.g, o.color.b, o.intensity, o.decay, o.density})
+        if (!std::isfinite(v)) throw engine::Error("LightShaftOptions: a value is not finite");
+    if (o.color.r < 0.0f || o.color.g < 0.0f || o.color.b < 0.0f) throw engine::Error("LightShaftOptions.color is negative");
+    if (o.intensity < 0.0f) throw engine::Error("LightShaftOptions.intensity must be >= 0");
+    if (!(o.decay > 0.0f && o.decay <= 1.0f)) throw engine::Error("LightShaftOptions.decay must be in (0, 1]");
+    if (!(o.density > 0.0f && o.density <= 1.0f)) throw engine::Error("LightShaftOptions.density must be in (0, 1]");
+    if (o.samples < 1 || o.samples > 128)
+        throw engine::Error("LightShaftOptions.samples = " + std::to_string(o.samples) + " not in 1..128");
+}
+
+LightShaftFeature::LightShaftFeature(Backend& backend, const LightShaftOptions& options)
+    : backend_(backend), options_(options) {
+    validate(options_);
+    PipelineDesc p;
+    p.name = "light shafts (additive)";
+    p.program = ProgramKind::LightShafts;
+    p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
+                  BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+    pipeline_ = backend.createPipeline(p);
+}
+
+LightShaftFeature::~LightShaftFeature() { backend_.destroy(pipeline_); }
+
+void LightShaftFeature::render(const engine::scene::FeatureFrame& frame) {
+    ran_ = false;
+    // The sun is a direction: a point at infinity (w = 0). Behind the camera: no shafts.
+    const glm::vec3 toward = glm::normalize(frame.sun.towardLight);
+    const glm::vec4 clip = frame.viewProj * glm::vec4(toward, 0.0f);
+    if (!(clip.w > 1e-6f) || !std::isfinite(clip.x) || !std::isfinite(clip.y)) return;
+    sunPixel_ = {(clip.x / clip.w * 0.5f + 0.5f) * float(frame.width), (0.5f - clip.y / clip.w * 0.5f) * float(frame.height)};
+    if (!std::isfinite(sunPixel_.x) || !std::isfinite(sunPixel_.y)) return;
+    const bool greater = frame.depthFunc == CompareFunc::Greater || frame.depthFunc == CompareFunc::GreaterEqual;
+    LightShaftParams params;
+    params.depth = frame.depth;
+    params.sunPixel = sunPixel_;
+    params.farDepth = greater ? 0.0f : 1.0f;  // the depth clear value
+    params.greaterIsCloser = greater;
+    params.color = options_.color * frame.sun.color;
+    params.intensity = options_.intensity;
+    params.decay = options_.decay;
+    params.density = options_.density;
+    params.samples = options_.samples;
+    PassDesc pass;
+    pass.name = "light shafts";
+    pass.color[0] = {frame.color, LoadOp::Load};
+    backend_.beginPass(pass);
+    DrawDesc d;
+    d.pipeline = pipeline_;
+    d.params = params;
+    backend_.draw(d);
+    backend_.endPass();
+    ran_ = true;
+}
+
+}  // namespace lightshafts
