@@ -72,6 +72,7 @@ content: build
 
 bench: build
 	$(BUILD_DIR)/bin/bench_ecs
+	$(BUILD_DIR)/bin/ssam_bench
 	$(BUILD_DIR)/bin/ssam-bench --out out/bench
 
 clean:
