@@ -126,7 +126,7 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
         s.baseColorFactor = part.material.baseColorFactor;
         s.baseColor = part.material.baseColor;
         s.light = kSun;
-        if (part.material.unlit) s.light = {kSun.towardLight, glm::vec3(0.0f), glm::vec3(1.0f)};
+        if (part.material.unlit) s.light = unlitLight();
         return s;
     };
 

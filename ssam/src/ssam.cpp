@@ -172,7 +172,7 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
         params.viewProj = view.viewProj;
         params.baseColorFactor = batch->baseColorFactor;
         params.baseColor = batch->baseColor;
-        params.light = view.light;
+        params.light = batch->unlit ? engine::render::unlitLight() : view.light;
         backend_.draw(foliageDraw(*batch, colorPipeline_, params));
     }
     backend_.endPass();

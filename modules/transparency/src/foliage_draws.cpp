@@ -29,7 +29,7 @@ SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch&
     params.viewProj = frame.viewProj;
     params.baseColorFactor = batch.baseColorFactor;
     params.baseColor = batch.baseColor;
-    params.light = frame.light;
+    params.light = batch.unlit ? unlitLight() : frame.light;
     return params;
 }
 

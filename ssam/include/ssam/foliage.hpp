@@ -27,6 +27,7 @@ struct FoliageBatch {
     engine::render::TextureBinding baseColor;
     glm::vec4 baseColorFactor{1.0f};
     Bounds worldBounds;  // of all instances: decides visibility and the composite region
+    bool unlit = false;  // KHR_materials_unlit: the colour pass ignores the view's light
 };
 
 struct FoliageView {

@@ -18,7 +18,6 @@ using ssam::testing::Quad;
 inline constexpr int kSize = 16;
 inline const glm::vec4 kOpaqueColor{0.2f, 0.4f, 0.6f, 1.0f};
 
-inline DirectionalLight unlit() { return {{0.0f, 0.0f, 1.0f}, glm::vec3(0.0f), glm::vec3(1.0f)}; }
 
 struct TechniqueFrame {
     Backend& backend;
@@ -59,7 +58,7 @@ struct TechniqueFrame {
 
     FoliageFrame frame() const {
         FoliageFrame f;
-        f.light = unlit();
+        f.light = unlitLight();
         f.draws = draws;
         return f;
     }

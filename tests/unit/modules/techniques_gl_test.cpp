@@ -69,7 +69,7 @@ TEST(TechniquesGl, WboitDepthWeightMatchesTheSoftBackend) {
         backend.endPass();
         FoliageFrame frame;
         frame.viewProj = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f);
-        frame.light = unlit();
+        frame.light = unlitLight();
         frame.draws = std::span(&draw, 1);
         technique->render(opaque, frame);
         Readback r = backend.readback(opaque.color());

@@ -164,7 +164,7 @@ TEST(Techniques, SortedBlendingSortsTheInstancesOfOneBatch) {
         backend->beginPass(opaque.passDesc(kOpaqueColor));
         backend->endPass();
         FoliageFrame frame;
-        frame.light = unlit();
+        frame.light = unlitLight();
         frame.draws = std::span(&draw, 1);
         technique->render(opaque, frame);
         const Readback r = backend->readback(opaque.color());
@@ -267,7 +267,7 @@ TEST(Techniques, WboitWeightsNearerLayersMore) {
     backend->endPass();
     FoliageFrame frame;
     frame.viewProj = perspective;
-    frame.light = unlit();
+    frame.light = unlitLight();
     frame.draws = std::span(&draw, 1);
     technique->render(opaque, frame);
     const glm::vec3 got = rgbAt(backend->readback(opaque.color()), 8, 8);
@@ -329,6 +329,33 @@ TEST(Techniques, SsamPlusExponentialModel) {
                   "overlap");
     expectRgbNear(rgbAt(r, kOnlyB, kRow), glm::mix(opaque, glm::vec3(0, 1, 0), 1.0f - std::exp(-0.6f)), 1e-3f,
                   "only B");
+}
+
+}  // namespace
+
+namespace {
+
+// KHR_materials_unlit: a batch marked unlit shows its base colour whatever the light; the
+// same batch lit by a black light is black. Checked where the foliage is opaque in the result.
+TEST(Techniques, UnlitBatchesIgnoreTheLight) {
+    for (TechniqueKind kind : {TechniqueKind::AlphaTest, TechniqueKind::Ssam, TechniqueKind::BlendSorted,
+                               TechniqueKind::Reference}) {
+        const Quad opaqueGreen{-0.25f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 1.0f}};
+        glm::vec3 colour[2];
+        for (bool unlit : {false, true}) {
+            auto backend = softBackend();
+            auto technique = createTechnique(kind, *backend, {});
+            TechniqueFrame f(*backend, technique->opaqueSamples(), {opaqueGreen});
+            f.draws[0].batch.unlit = unlit;
+            f.opaquePass();
+            FoliageFrame frame = f.frame();
+            frame.light = {{0.0f, 0.0f, 1.0f}, glm::vec3(0.0f), glm::vec3(0.0f)};  // black
+            technique->render(f.opaque, frame);
+            colour[unlit] = rgbAt(backend->readback(f.opaque.color()), kOnlyB, kRow);
+        }
+        expectRgbNear(colour[false], {0.0f, 0.0f, 0.0f}, 1e-6f, techniqueName(kind));
+        expectRgbNear(colour[true], {0.0f, 1.0f, 0.0f}, 1e-6f, techniqueName(kind));
+    }
 }
 
 }  // namespace

@@ -33,6 +33,10 @@ struct DirectionalLight {
     glm::vec3 ambient{0.25f};
 };
 
+// KHR_materials_unlit: no direct light and an ambient of 1, so the lit programs output the
+// base colour as it is.
+inline DirectionalLight unlitLight() { return {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), glm::vec3(1.0f)}; }
+
 struct FlatParams {
     glm::mat4 viewProj{1.0f};
     glm::vec4 color{1.0f};
