@@ -1,13 +1,42 @@
 #include "camera_rig.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/render/projection.hpp"
 #include "engine/scene/transform.hpp"
 
 namespace racer {
+
+glm::vec3 viewDirection(const FreeCamera& camera) {
+    return {std::sin(camera.yaw) * std::cos(camera.pitch), std::sin(camera.pitch),
+            std::cos(camera.yaw) * std::cos(camera.pitch)};
+}
+
+FreeCamera flyStep(const FreeCamera& camera, const FlyControls& controls, float dt, float speed) {
+    constexpr float kPi = glm::pi<float>();
+    FreeCamera next = camera;
+    next.yaw += controls.turn.x * kFlyTurnRate * dt - controls.look.x * kFlyLookPerPixel;
+    next.yaw -= 2.0f * kPi * std::floor((next.yaw + kPi) / (2.0f * kPi));  // into [-pi, pi)
+    next.pitch += controls.turn.y * kFlyTurnRate * dt - controls.look.y * kFlyLookPerPixel;
+    next.pitch = std::clamp(next.pitch, -kFlyMaxPitch, kFlyMaxPitch);
+
+    // Along the turned view: forward is the full view direction (pitch included), right is
+    // horizontal (as glm::lookAt's side vector), up is the world's.
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    const glm::vec3 forward = viewDirection(next);
+    const glm::vec3 right(-std::cos(next.yaw), 0.0f, std::sin(next.yaw));
+    const glm::vec3 direction = controls.move.x * right + controls.move.y * up + controls.move.z * forward;
+    const float length = glm::length(direction);
+    if (length > 0.0f) {
+        const float metres = speed * (controls.fast ? kFlyFastFactor : 1.0f) * dt;
+        next.position += direction / length * metres;
+    }
+    return next;
+}
 
 CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float aspect, const FreeCamera& free) {
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
@@ -40,10 +69,8 @@ CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float asp
             break;
         }
         case CameraMode::Free: {
-            const glm::vec3 dir(std::sin(free.yaw) * std::cos(free.pitch), std::sin(free.pitch),
-                                std::cos(free.yaw) * std::cos(free.pitch));
             eye = free.position;
-            target = eye + dir;
+            target = eye + viewDirection(free);
             break;
         }
     }

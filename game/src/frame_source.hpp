@@ -14,7 +14,10 @@ struct SceneFrame {
     engine::scene::DrawLists lists;
 };
 
-// time: simulated seconds at this frame; dt: the step just taken (0 while paused).
-using FrameSource = std::function<SceneFrame(float time, float dt, CameraMode camera, float aspect)>;
+// time: simulated seconds at this frame; dt: the step just taken (0 while paused); free: the
+// free camera's pose, used when `camera` is CameraMode::Free (the window flies it; headless
+// runs pass the default, the overview).
+using FrameSource =
+    std::function<SceneFrame(float time, float dt, CameraMode camera, const FreeCamera& free, float aspect)>;
 
 }  // namespace racer

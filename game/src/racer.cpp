@@ -47,7 +47,7 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
     SceneFrame last;
     for (int i = 0; i < o.frames; ++i) {
         const auto start = std::chrono::steady_clock::now();
-        last = source(float(i * o.fixedDt), float(o.fixedDt), camera, aspect);
+        last = source(float(i * o.fixedDt), float(o.fixedDt), camera, FreeCamera{}, aspect);
         frame.render(last.lists, last.camera);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         totalMs += ms;
@@ -123,11 +123,10 @@ int run(const Options& o) {
                                &racing->track()});
         frame.setLivingScene(living.get());
     }
-    const FreeCamera freeCamera;
-    const FrameSource source = [&](float time, float dt, CameraMode camera, float frameAspect) {
+    const FrameSource source = [&](float time, float dt, CameraMode camera, const FreeCamera& free, float frameAspect) {
         if (racing) racing->update(dt);
         const CameraView view =
-            gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, freeCamera);
+            gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, free);
         if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };

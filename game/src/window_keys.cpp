@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <utility>
 
 #include "engine/core/error.hpp"
 
@@ -34,6 +35,33 @@ const std::vector<int>& watchedKeys() {
     return keys;
 }
 
+FlyControls flyControls(const std::function<bool(int key)>& held) {
+    auto axis = [&](int negative, int positive) { return float(held(positive)) - float(held(negative)); };
+    auto either = [&](int a, int b) { return held(a) || held(b); };
+    FlyControls c;
+    c.move.x = axis(GLFW_KEY_A, GLFW_KEY_D);
+    const bool down = held(GLFW_KEY_Q) || held(GLFW_KEY_LEFT_CONTROL) || held(GLFW_KEY_RIGHT_CONTROL);
+    const bool up = held(GLFW_KEY_E) || held(GLFW_KEY_SPACE);
+    c.move.y = float(up) - float(down);
+    c.move.z = axis(GLFW_KEY_S, GLFW_KEY_W);
+    c.turn.x = axis(GLFW_KEY_RIGHT, GLFW_KEY_LEFT);  // positive yaw turns left
+    c.turn.y = axis(GLFW_KEY_DOWN, GLFW_KEY_UP);
+    c.fast = either(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
+    return c;
+}
+
+const std::vector<int>& flyKeys() {
+    static const std::vector<int> keys{
+        GLFW_KEY_W,     GLFW_KEY_S,     GLFW_KEY_A,    GLFW_KEY_D,  GLFW_KEY_Q,          GLFW_KEY_E,
+        GLFW_KEY_SPACE, GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL, GLFW_KEY_LEFT, GLFW_KEY_RIGHT,
+        GLFW_KEY_UP,    GLFW_KEY_DOWN,  GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT};
+    return keys;
+}
+
+const char* flyKeysHelp() {
+    return "W/S forward/back, A/D strafe, Q/E or Ctrl/Space down/up, arrows or right mouse drag look, Shift fast";
+}
+
 namespace {
 
 std::string lower(std::string s) {
@@ -47,6 +75,12 @@ int keyNamed(const std::string& name) {
     if (name == "c") return GLFW_KEY_C;
     if (name == "p") return GLFW_KEY_P;
     if (name == "esc") return GLFW_KEY_ESCAPE;
+    static const std::pair<const char*, int> fly[] = {
+        {"w", GLFW_KEY_W},         {"a", GLFW_KEY_A},     {"s", GLFW_KEY_S},          {"d", GLFW_KEY_D},
+        {"q", GLFW_KEY_Q},         {"e", GLFW_KEY_E},     {"space", GLFW_KEY_SPACE},  {"ctrl", GLFW_KEY_LEFT_CONTROL},
+        {"left", GLFW_KEY_LEFT},   {"right", GLFW_KEY_RIGHT}, {"up", GLFW_KEY_UP},    {"down", GLFW_KEY_DOWN}};
+    for (const auto& [n, key] : fly)
+        if (name == n) return key;
     return -1;
 }
 
@@ -60,14 +94,23 @@ std::vector<ScriptedKey> parseKeyScript(const std::string& script) {
         const std::string entry = script.substr(start, end - start);
         const std::size_t colon = entry.find(':');
         auto bad = [&](const char* why) {
-            return engine::Error("--script entry '" + entry + "': " + why + " (expected FRAME:KEY, KEY one of 1-8 T C P Esc, "
-                                 "optionally shift+)");
+            return engine::Error("--script entry '" + entry + "': " + why +
+                                 " (expected FRAME:KEY or FIRST-LAST:KEY, KEY one of 1-8 T C P Esc W A S D Q E Space "
+                                 "Ctrl Left Right Up Down, optionally shift+)");
         };
         if (colon == std::string::npos) throw bad("no ':'");
         ScriptedKey k;
         const char* first = entry.data();
-        const auto [ptr, ec] = std::from_chars(first, first + colon, k.frame);
-        if (ec != std::errc() || ptr != first + colon || k.frame < 0) throw bad("the frame is not a number >= 0");
+        const char* const colonAt = first + colon;
+        const auto [ptr, ec] = std::from_chars(first, colonAt, k.frame);
+        if (ec != std::errc() || k.frame < 0) throw bad("the frame is not a number >= 0");
+        k.lastFrame = k.frame;
+        if (ptr != colonAt) {  // FIRST-LAST
+            if (*ptr != '-') throw bad("the frame is not a number >= 0");
+            const auto [end2, ec2] = std::from_chars(ptr + 1, colonAt, k.lastFrame);
+            if (ec2 != std::errc() || end2 != colonAt) throw bad("the last frame is not a number");
+            if (k.lastFrame < k.frame) throw bad("the last frame is before the first");
+        }
         std::string name = lower(entry.substr(colon + 1));
         if (name.rfind("shift+", 0) == 0) {
             k.shift = true;
@@ -80,6 +123,13 @@ std::vector<ScriptedKey> parseKeyScript(const std::string& script) {
     }
     std::stable_sort(keys.begin(), keys.end(), [](const ScriptedKey& a, const ScriptedKey& b) { return a.frame < b.frame; });
     return keys;
+}
+
+bool scriptHolds(const std::vector<ScriptedKey>& script, int frame, int key) {
+    const bool shiftKey = key == GLFW_KEY_LEFT_SHIFT;
+    return std::any_of(script.begin(), script.end(), [&](const ScriptedKey& k) {
+        return frame >= k.frame && frame <= k.lastFrame && (k.key == key || (shiftKey && k.shift));
+    });
 }
 
 }  // namespace racer

@@ -2,9 +2,15 @@
 // The window's keys, as pure functions of GLFW key codes so they are unit-tested without a
 // window: 1-8 pick a technique (transparency::allTechniques() order), T / Shift+T step to
 // the next / previous one, C cycles the camera (chase, pan, free), P pauses the simulation,
-// Esc quits. A key script (`racer --script`, hidden: for tests) presses keys at given frames.
+// Esc quits. With the free camera, held keys fly it (flyControls): W/S forward/back, A/D
+// strafe, Q/E or Ctrl/Space down/up, the arrows turn, Shift is faster; the window adds mouse
+// look while the right button is held. A key script (`racer --script`, hidden: for tests)
+// presses or holds keys at given frames.
+#include <functional>
 #include <string>
 #include <vector>
+
+#include "camera_rig.hpp"
 
 namespace racer {
 
@@ -21,14 +27,31 @@ KeyAction actionForKey(int key, bool shift);
 // The GLFW keys the window polls for presses (every key actionForKey maps to an action).
 const std::vector<int>& watchedKeys();
 
+// The free camera's controls from the keys held now (`held(GLFW_KEY_*)`); opposite keys
+// cancel. None of these keys has an action, so flying never switches technique or camera.
+FlyControls flyControls(const std::function<bool(int key)>& held);
+
+// The GLFW keys flyControls reads (the window polls them every frame with the free camera).
+const std::vector<int>& flyKeys();
+
+// The fly keys in one line, for the title bar and the console.
+const char* flyKeysHelp();
+
 struct ScriptedKey {
-    int frame = 0;  // pressed before this frame is rendered (0 = the first frame)
-    int key = 0;    // GLFW_KEY_*
+    int frame = 0;      // pressed before this frame is rendered (0 = the first frame)
+    int lastFrame = 0;  // held down to this frame (inclusive); == frame for a plain press
+    int key = 0;        // GLFW_KEY_*
     bool shift = false;
 };
 
-// "FRAME:KEY,FRAME:KEY..." with KEY one of 1-8, T, C, P, Esc, each optionally "shift+"-
-// prefixed, e.g. "2:3,4:C,6:shift+T,9:Esc". Throws engine::Error naming the bad entry.
+// "FRAME:KEY,FIRST-LAST:KEY..." with KEY one of 1-8, T, C, P, Esc, W, A, S, D, Q, E, Space,
+// Ctrl, Left, Right, Up, Down, each optionally "shift+"-prefixed; FIRST-LAST holds the key
+// for those frames (inclusive), e.g. "2:3,4:C,0-9:W,10-14:shift+D,20:Esc". Sorted by first
+// frame. Throws engine::Error naming the bad entry.
 std::vector<ScriptedKey> parseKeyScript(const std::string& script);
+
+// Whether the script holds `key` at `frame`; GLFW_KEY_LEFT_SHIFT is held by every held
+// "shift+" entry (so "0-9:shift+W" flies fast).
+bool scriptHolds(const std::vector<ScriptedKey>& script, int frame, int key);
 
 }  // namespace racer

@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "engine/core/error.hpp"
 #include "racer_options.hpp"
 #include "window_keys.hpp"
@@ -51,6 +53,7 @@ struct TitleStats {
             std::snprintf(buf, sizeof buf, " %s %.1f", name.c_str(), ms / std::max(1, frames));
             text += buf;
         }
+        if (camera == CameraMode::Free) text += std::string(" | ") + flyKeysHelp();
         return text;
     }
 };
@@ -84,6 +87,41 @@ CameraMode nextCamera(CameraMode mode) {
     }
 }
 
+void printPose(const FreeCamera& c) {
+    std::printf("racer: free camera at (%.2f, %.2f, %.2f), yaw %.1f deg, pitch %.1f deg\n", c.position.x, c.position.y,
+                c.position.z, glm::degrees(c.yaw), glm::degrees(c.pitch));
+}
+
+// Mouse look: while the right button is held the cursor is hidden and captured (disabled,
+// so it never leaves the window) and its motion turns the free camera.
+class MouseLook {
+public:
+    explicit MouseLook(GLFWwindow* window) : window_(window) {}
+    // Pixels moved since the last frame while the button is held; releases the cursor otherwise.
+    glm::vec2 motion(bool active) {
+        active = active && glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+        if (active != captured_) {
+            glfwSetInputMode(window_, GLFW_CURSOR, active ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
+            if (glfwRawMouseMotionSupported())
+                glfwSetInputMode(window_, GLFW_RAW_MOUSE_MOTION, active ? GLFW_TRUE : GLFW_FALSE);
+            captured_ = active;
+            if (active) glfwGetCursorPos(window_, &x_, &y_);  // the first held frame does not jump
+        }
+        if (!active) return glm::vec2(0.0f);
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(window_, &x, &y);
+        const glm::vec2 moved(float(x - x_), float(y - y_));
+        x_ = x;
+        y_ = y;
+        return moved;
+    }
+
+private:
+    GLFWwindow* window_;
+    bool captured_ = false;
+    double x_ = 0.0, y_ = 0.0;
+};
+
 // The soft backend's frame as a GL texture: the stored sRGB codes (readback gives code/255)
 // uploaded unchanged, so the window shows exactly the bytes a capture would hold.
 TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine::render::Readback& r) {
@@ -111,11 +149,14 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
     std::map<int, bool> wasDown;
     const bool uploads = static_cast<engine::render::Backend*>(&presenter) != &renderer;
     CameraMode camera = settings.camera;
+    FreeCamera flyer;  // starts at the overview a headless --camera free run renders
+    MouseLook mouse(window.window());
     bool paused = false;
     double time = 0.0, totalMs = 0.0;
     TitleStats stats;
     Clock::time_point last = Clock::now(), titleShown = last;
     WindowLoopResult result;
+    if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
 
     while (settings.frames == 0 || result.frames < settings.frames) {
         window.pollEvents();
@@ -149,6 +190,7 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
                 case WindowAction::NextCamera:
                     camera = nextCamera(camera);
                     std::printf("racer: camera %s\n", cameraName(camera));
+                    if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
                     break;
                 case WindowAction::TogglePause:
                     paused = !paused;
@@ -165,10 +207,21 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
         const Clock::time_point start = Clock::now();
         const double wall = std::chrono::duration<double>(start - last).count();
         last = start;
-        const double dt = paused ? 0.0 : settings.fixedDt > 0.0 ? settings.fixedDt : std::min(wall, kMaxWallStep);
+        const double step = settings.fixedDt > 0.0 ? settings.fixedDt : std::min(wall, kMaxWallStep);
+        const double dt = paused ? 0.0 : step;
+        // The free camera flies by the frame's step, paused or not (a paused frame can be
+        // looked around); its keys do nothing with the other cameras.
+        const glm::vec2 look = mouse.motion(camera == CameraMode::Free);
+        if (camera == CameraMode::Free) {
+            FlyControls controls = flyControls([&](int key) {
+                return glfwGetKey(window.window(), key) == GLFW_PRESS || scriptHolds(script, result.frames, key);
+            });
+            controls.look = look;
+            flyer = flyStep(flyer, controls, float(step));
+        }
         // As the headless loop: frame i steps the world by dt and sees the camera at i * dt,
         // so a window with --fixed-dt shows the frames a headless run captures.
-        const SceneFrame scene = source(float(time), float(dt), camera, settings.aspect);
+        const SceneFrame scene = source(float(time), float(dt), camera, flyer, settings.aspect);
         time += dt;
         frame.render(scene.lists, scene.camera);
         if (uploads) {
@@ -189,6 +242,7 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
             titleShown = Clock::now();
         }
     }
+    if (camera == CameraMode::Free) printPose(flyer);
     result.meanFrameMs = totalMs / std::max(1, result.frames);
     return result;
 }

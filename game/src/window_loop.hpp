@@ -1,8 +1,10 @@
 #pragma once
 // racer's window: frames rendered by a FrameRenderer (on the GL backend of the window, or on
 // the soft backend and uploaded to a GL texture to be shown), presented until the window
-// closes, Esc is pressed or `frames` have been shown. Keys: window_keys.hpp. The title bar
-// shows technique, camera, fps and per-pass milliseconds, refreshed four times a second.
+// closes, Esc is pressed or `frames` have been shown. Keys: window_keys.hpp; with the free
+// camera they (and the mouse, right button held) fly it from the headless overview pose, and
+// its final pose is printed ("racer: free camera at (x, y, z), ..."). The title bar shows
+// technique, camera (and the fly keys), fps and per-pass milliseconds, four times a second.
 #include <string>
 
 #include "engine/render/gl/gl_backend.hpp"

@@ -3,6 +3,9 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <initializer_list>
+#include <string>
+#include <vector>
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
@@ -52,12 +55,73 @@ TEST(WindowKeys, ScriptParsesAndSortsByFrame) {
 }
 
 TEST(WindowKeys, BadScriptEntriesAreNamed) {
-    for (const char* bad : {"3", "x:T", "-1:T", "2:Q", "2:9", "1:T,"}) {
+    for (const char* bad : {"3", "x:T", "-1:T", "2:Z", "2:9", "1:T,", "5-3:W", "1-:W", "1-x:W", "1+2:W"}) {
         try {
             parseKeyScript(bad);
             ADD_FAILURE() << "accepted '" << bad << "'";
         } catch (const engine::Error& e) {
             EXPECT_NE(std::string(e.what()).find("--script entry"), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(WindowKeys, ScriptHoldsKeysForFrameRanges) {
+    const auto keys = parseKeyScript("2-4:W,0:c,6-6:shift+Left,9:Esc");
+    ASSERT_EQ(keys.size(), 4u);
+    EXPECT_EQ(keys[0].key, GLFW_KEY_C);
+    EXPECT_EQ(keys[0].lastFrame, 0);
+    EXPECT_EQ(keys[1].key, GLFW_KEY_W);
+    EXPECT_EQ(keys[1].frame, 2);
+    EXPECT_EQ(keys[1].lastFrame, 4);
+    EXPECT_EQ(keys[2].key, GLFW_KEY_LEFT);
+    EXPECT_TRUE(keys[2].shift);
+    for (int frame = 0; frame < 8; ++frame) {
+        EXPECT_EQ(scriptHolds(keys, frame, GLFW_KEY_W), frame >= 2 && frame <= 4) << frame;
+        EXPECT_EQ(scriptHolds(keys, frame, GLFW_KEY_LEFT_SHIFT), frame == 6) << frame;
+    }
+    EXPECT_TRUE(scriptHolds(keys, 0, GLFW_KEY_C));  // a press is held for its own frame
+    EXPECT_FALSE(scriptHolds(keys, 1, GLFW_KEY_C));
+    for (const char* name : {"W", "a", "S", "d", "Q", "e", "Space", "Ctrl", "Left", "Right", "Up", "Down"})
+        EXPECT_NO_THROW(parseKeyScript(std::string("0:") + name)) << name;
+}
+
+// A held-key set for flyControls.
+auto holding(std::initializer_list<int> keys) {
+    return [held = std::vector<int>(keys)](int key) { return std::find(held.begin(), held.end(), key) != held.end(); };
+}
+
+TEST(WindowKeys, FlyKeysMapToFreeCameraControls) {
+    const FlyControls none = flyControls(holding({}));
+    EXPECT_EQ(none.move, glm::vec3(0.0f));
+    EXPECT_EQ(none.turn, glm::vec2(0.0f));
+    EXPECT_FALSE(none.fast);
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_W})).move, glm::vec3(0, 0, 1));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_S})).move, glm::vec3(0, 0, -1));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_D})).move, glm::vec3(1, 0, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_A})).move, glm::vec3(-1, 0, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_E})).move, glm::vec3(0, 1, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_SPACE})).move, glm::vec3(0, 1, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_Q})).move, glm::vec3(0, -1, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_LEFT_CONTROL})).move, glm::vec3(0, -1, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_RIGHT_CONTROL})).move, glm::vec3(0, -1, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_W, GLFW_KEY_S, GLFW_KEY_A})).move, glm::vec3(-1, 0, 0));  // W, S cancel
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_LEFT})).turn, glm::vec2(1, 0));  // positive yaw turns left
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_RIGHT})).turn, glm::vec2(-1, 0));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_UP})).turn, glm::vec2(0, 1));
+    EXPECT_EQ(flyControls(holding({GLFW_KEY_DOWN})).turn, glm::vec2(0, -1));
+    EXPECT_TRUE(flyControls(holding({GLFW_KEY_LEFT_SHIFT})).fast);
+    EXPECT_TRUE(flyControls(holding({GLFW_KEY_RIGHT_SHIFT})).fast);
+}
+
+TEST(WindowKeys, FlyKeysAreExactlyTheKeysReadAndClashWithNoAction) {
+    for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
+        const FlyControls c = flyControls([&](int k) { return k == key; });
+        const bool read = c.move != glm::vec3(0.0f) || c.turn != glm::vec2(0.0f) || c.fast;
+        const bool listed = std::find(flyKeys().begin(), flyKeys().end(), key) != flyKeys().end();
+        EXPECT_EQ(read, listed) << "GLFW key " << key;
+        if (listed) {
+            EXPECT_EQ(actionForKey(key, false).action, WindowAction::None) << "GLFW key " << key;
+            EXPECT_EQ(actionForKey(key, true).action, WindowAction::None) << "GLFW key " << key;
         }
     }
 }
