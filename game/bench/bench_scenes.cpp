@@ -15,6 +15,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/projection.hpp"
 #include "engine/scene/components.hpp"
+#include "content_files.hpp"
 #include "track.hpp"  // terrainHeight, buildTerrain, Random: the racer's ground and placement PRNG
 
 namespace bench {
@@ -34,35 +35,6 @@ struct SceneEntry {
 };
 constexpr SceneEntry kScenes[] = {
     {SceneKind::Tree, "tree"}, {SceneKind::Forest, "forest"}, {SceneKind::Vista, "vista"}, {SceneKind::Empty, "empty"}};
-
-std::filesystem::path require(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path))
-        throw Error("ssam-bench: content file '" + path.string() + "' is missing (regenerate with `make content`)");
-    return path;
-}
-
-TextureHandle loadGroundTexture(Backend& backend, const std::filesystem::path& path) {
-    std::ifstream file(require(path), std::ios::binary);
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    const assets::RgbaImage image = assets::decodeImage(bytes, path.string());
-    const std::vector<assets::RgbaImage> levels = assets::generateMips(image, {AlphaMode::Premultiplied, -1.0f, 0});
-    TextureDesc desc;
-    desc.name = path.filename().string();
-    desc.width = image.width;
-    desc.height = image.height;
-    desc.format = Format::RGBA8_SRGB;
-    desc.mipLevels = static_cast<int>(levels.size());
-    desc.alpha = levels.front().alpha;
-    const TextureData data = assets::textureData(levels);
-    return backend.createTexture(desc, &data);
-}
-
-void place(ecs::Registry& registry, scene::ModelId model, glm::vec3 position, float rotation, float scale) {
-    const ecs::Entity e = registry.create();
-    registry.add<scene::Transform>(
-        e, scene::Transform{position, glm::angleAxis(rotation, glm::vec3(0.0f, 1.0f, 0.0f)), glm::vec3(scale)});
-    registry.add<scene::Renderable>(e, scene::Renderable{model});
-}
 
 glm::vec3 onGround(float x, float z) { return {x, racer::terrainHeight(x, z), z}; }
 
@@ -91,7 +63,7 @@ bool parseScene(std::string_view name, SceneKind& kind) {
 BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::path& contentDir)
     : kind_(kind), library_(backend) {
     const std::filesystem::path models = contentDir / "models";
-    auto model = [&](const char* file) { return library_.add(assets::loadGltf(require(models / file))); };
+    auto model = [&](const char* file) { return racer::loadContentModel(library_, models / file); };
     const scene::ModelId broadleaf = model("tree_broadleaf.glb");
     const scene::ModelId tall = model("tree_tall.glb");
     const scene::ModelId palm = model("tree_palm.glb");
@@ -108,17 +80,16 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
     racer::buildTerrain(groundHalf, kind == SceneKind::Vista ? 160 : 60, vertices, indices);
     scene::PartMaterial ground;
     ground.doubleSided = true;
-    ground.baseColor = {loadGroundTexture(backend, require(contentDir / "textures" / "ground.png")),
-                        {Filter::Trilinear, AddressMode::Wrap, AddressMode::Wrap}};
+    ground.baseColor = racer::loadContentTexture(backend, contentDir / "textures" / "ground.png");
     groundTexture_ = ground.baseColor.texture;
-    place(registry_, library_.add("terrain", vertices, indices, ground), {}, 0.0f, 1.0f);
+    racer::placeModel(registry_, library_.add("terrain", vertices, indices, ground), {}, 0.0f, 1.0f);
 
     auto randomYaw = [&] { return random.uniform(0.0f, 2.0f * std::numbers::pi_v<float>); };
     switch (kind) {
         case SceneKind::Tree: {
             // The crown (upper 60% of the bounds) fills the frame's height, seen level.
             const glm::vec3 base = onGround(0.0f, 0.0f);
-            place(registry_, broadleaf, base, 0.6f, 1.0f);
+            racer::placeModel(registry_, broadleaf, base, 0.6f, 1.0f);
             const scene::Aabb b = library_.bounds(broadleaf);
             const float height = 0.6f * (b.max.y - b.min.y);
             const glm::vec3 centre = base + glm::vec3(0.5f * (b.min.x + b.max.x), b.max.y - 0.5f * height,
@@ -138,11 +109,11 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
                 for (int j = 0; j < 22; ++j) {
                     const float x = -42.0f + 4.0f * float(i) + random.uniform(-1.5f, 1.5f);
                     const float z = 5.0f + 4.0f * float(j) + random.uniform(-1.5f, 1.5f);
-                    place(registry_, trees[random.next() % 3], onGround(x, z), randomYaw(), random.uniform(0.9f, 1.4f));
+                    racer::placeModel(registry_, trees[random.next() % 3], onGround(x, z), randomYaw(), random.uniform(0.9f, 1.4f));
                 }
             for (int i = 0; i < 160; ++i) {
                 const float x = random.uniform(-45.0f, 45.0f), z = random.uniform(3.0f, 95.0f);
-                place(registry_, bushes[random.next() % 2], onGround(x, z), randomYaw(), random.uniform(0.8f, 1.4f));
+                racer::placeModel(registry_, bushes[random.next() % 2], onGround(x, z), randomYaw(), random.uniform(0.8f, 1.4f));
             }
             eye_ = onGround(0.0f, -4.0f) + glm::vec3(0.0f, 1.8f, 0.0f);
             target_ = onGround(0.0f, 30.0f) + glm::vec3(0.0f, 8.0f, 0.0f);  // into the canopies
@@ -154,7 +125,7 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             for (int i = 0; i < 700; ++i) {
                 const float angle = random.uniform(-0.75f, 0.75f);
                 const float radius = random.uniform(120.0f, 1500.0f);
-                place(registry_, trees[random.next() % 3], onGround(radius * std::sin(angle), radius * std::cos(angle)),
+                racer::placeModel(registry_, trees[random.next() % 3], onGround(radius * std::sin(angle), radius * std::cos(angle)),
                       randomYaw(), random.uniform(1.5f, 2.5f));
             }
             eye_ = onGround(0.0f, 0.0f) + glm::vec3(0.0f, 45.0f, 0.0f);
@@ -166,7 +137,7 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             // technique should cost what the opaque frame costs (DESIGN.md data flow, step 3).
             for (int i = 0; i < 40; ++i) {
                 const float x = random.uniform(-60.0f, 60.0f), z = random.uniform(-90.0f, -25.0f);
-                place(registry_, trees[random.next() % 3], onGround(x, z), randomYaw(), random.uniform(0.9f, 1.4f));
+                racer::placeModel(registry_, trees[random.next() % 3], onGround(x, z), randomYaw(), random.uniform(0.9f, 1.4f));
             }
             eye_ = onGround(0.0f, 0.0f) + glm::vec3(0.0f, 2.0f, 0.0f);
             target_ = onGround(0.0f, 80.0f) + glm::vec3(0.0f, 2.0f, 0.0f);

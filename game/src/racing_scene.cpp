@@ -13,6 +13,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/scene/components.hpp"
+#include "content_files.hpp"
 
 namespace racer {
 
@@ -22,39 +23,7 @@ using scene::Transform;
 
 namespace {
 
-std::filesystem::path require(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path))
-        throw Error("content file '" + path.string() + "' is missing (regenerate with `make content`)");
-    return path;
-}
-
-TextureBinding loadTexture(Backend& backend, const std::filesystem::path& path) {
-    std::ifstream file(require(path), std::ios::binary);
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    const assets::RgbaImage image = assets::decodeImage(bytes, path.string());
-    const std::vector<assets::RgbaImage> levels = assets::generateMips(image, {AlphaMode::Premultiplied, -1.0f, 0});
-    TextureDesc desc;
-    desc.name = path.filename().string();
-    desc.width = image.width;
-    desc.height = image.height;
-    desc.format = Format::RGBA8_SRGB;
-    desc.mipLevels = static_cast<int>(levels.size());
-    desc.alpha = levels.front().alpha;
-    const TextureData data = assets::textureData(levels);
-    return {backend.createTexture(desc, &data), {Filter::Trilinear, AddressMode::Wrap, AddressMode::Wrap}};
-}
-
-scene::ModelId loadModel(scene::MeshLibrary& library, const std::filesystem::path& path) {
-    return library.add(assets::loadGltf(require(path)));
-}
-
 glm::quat yaw(float radians) { return glm::angleAxis(radians, glm::vec3(0.0f, 1.0f, 0.0f)); }
-
-void place(ecs::Registry& registry, scene::ModelId model, const glm::vec3& position, float rotation, float scale) {
-    const ecs::Entity e = registry.create();
-    registry.add<Transform>(e, Transform{position, yaw(rotation), glm::vec3(scale)});
-    registry.add<scene::Renderable>(e, scene::Renderable{model});
-}
 
 }  // namespace
 
@@ -69,19 +38,19 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     buildTerrain(2000.0f, 160, vertices, indices);
     scene::PartMaterial ground;
     ground.doubleSided = true;
-    ground.baseColor = loadTexture(backend, content / "textures" / "ground.png");
-    place(registry_, library_.add("terrain", vertices, indices, ground), {}, 0.0f, 1.0f);
+    ground.baseColor = loadContentTexture(backend, content / "textures" / "ground.png");
+    placeModel(registry_, library_.add("terrain", vertices, indices, ground), {}, 0.0f, 1.0f);
     vertices.clear();
     indices.clear();
     track_.buildRoad(vertices, indices);
     scene::PartMaterial road;
     road.doubleSided = true;
-    road.baseColor = loadTexture(backend, content / "textures" / "track.png");
-    place(registry_, library_.add("road", vertices, indices, road), {}, 0.0f, 1.0f);
+    road.baseColor = loadContentTexture(backend, content / "textures" / "track.png");
+    placeModel(registry_, library_.add("road", vertices, indices, road), {}, 0.0f, 1.0f);
 
     // Foliage models: every tree_*/bush_* file in content/models, in name order.
     std::vector<std::filesystem::path> treeFiles, bushFiles;
-    for (const auto& entry : std::filesystem::directory_iterator(require(content / "models"))) {
+    for (const auto& entry : std::filesystem::directory_iterator(requireContent(content / "models"))) {
         const std::string name = entry.path().filename().string();
         if (name.rfind("tree", 0) == 0) treeFiles.push_back(entry.path());
         if (name.rfind("bush", 0) == 0) bushFiles.push_back(entry.path());
@@ -91,8 +60,8 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     if (treeFiles.empty() || bushFiles.empty())
         throw Error("no tree*/bush* models in '" + (content / "models").string() + "'");
     std::vector<scene::ModelId> trees, bushes;
-    for (const auto& f : treeFiles) trees.push_back(loadModel(library_, f));
-    for (const auto& f : bushFiles) bushes.push_back(loadModel(library_, f));
+    for (const auto& f : treeFiles) trees.push_back(loadContentModel(library_, f));
+    for (const auto& f : bushFiles) bushes.push_back(loadContentModel(library_, f));
 
     // Trees and bushes line the track on both sides, clear of the road.
     auto besideTrack = [&](float minOffset, float maxOffset) {
@@ -106,12 +75,12 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     };
     for (int i = 0; i < options.trees; ++i) {
         const scene::ModelId m = trees[random.next() % trees.size()];
-        place(registry_, m, besideTrack(track_.width() * 0.5f + 3.0f, 45.0f), random.uniform(0.0f, 6.2832f),
+        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 3.0f, 45.0f), random.uniform(0.0f, 6.2832f),
               random.uniform(0.8f, 1.3f));
     }
     for (int i = 0; i < options.bushes; ++i) {
         const scene::ModelId m = bushes[random.next() % bushes.size()];
-        place(registry_, m, besideTrack(track_.width() * 0.5f + 1.0f, 25.0f), random.uniform(0.0f, 6.2832f),
+        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 1.0f, 25.0f), random.uniform(0.0f, 6.2832f),
               random.uniform(0.7f, 1.4f));
     }
     // A grove across the track from the start line, where the pre-race pan camera looks:
@@ -125,7 +94,7 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
             p.y = terrainHeight(p.x, p.z);
             const bool tree = (random.next() % 3) != 0;
             const auto& models = tree ? trees : bushes;
-            place(registry_, models[random.next() % models.size()], p, random.uniform(0.0f, 6.2832f),
+            placeModel(registry_, models[random.next() % models.size()], p, random.uniform(0.0f, 6.2832f),
                   random.uniform(0.9f, 1.4f));
         }
     }
@@ -135,20 +104,20 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
         const float radius = random.uniform(450.0f, 1900.0f);
         glm::vec3 p(radius * std::cos(angle), 0.0f, radius * std::sin(angle));
         p.y = terrainHeight(p.x, p.z);
-        place(registry_, trees[random.next() % trees.size()], p, random.uniform(0.0f, 6.2832f),
+        placeModel(registry_, trees[random.next() % trees.size()], p, random.uniform(0.0f, 6.2832f),
               random.uniform(1.5f, 2.5f));
     }
 
     // Water pools (glTF BLEND material) in the infield.
-    const scene::ModelId water = loadModel(library_, content / "models" / "water.glb");
+    const scene::ModelId water = loadContentModel(library_, content / "models" / "water.glb");
     for (int i = 0; i < 4; ++i) {
         const float angle = float(i) * 1.5708f + 0.4f;
         glm::vec3 p(95.0f * std::cos(angle), 0.0f, 95.0f * std::sin(angle));
         p.y = terrainHeight(p.x, p.z) + 0.3f;
-        place(registry_, water, p, random.uniform(0.0f, 6.2832f), random.uniform(2.0f, 3.5f));
+        placeModel(registry_, water, p, random.uniform(0.0f, 6.2832f), random.uniform(2.0f, 3.5f));
     }
 
-    const scene::ModelId carModel = loadModel(library_, content / "models" / "car.glb");
+    const scene::ModelId carModel = loadContentModel(library_, content / "models" / "car.glb");
     car_ = registry_.create();
     registry_.add<Transform>(car_);
     registry_.add<scene::Renderable>(car_, scene::Renderable{carModel});
