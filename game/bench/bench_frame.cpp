@@ -67,7 +67,7 @@ void FrameDrawer::draw(ssam::OpaqueTargets& targets, transparency::Technique* te
         s.baseColorFactor = part.material.baseColorFactor;
         s.baseColor = part.material.baseColor;
         s.light = kSun;
-        if (part.material.unlit) s.light = {kSun.towardLight, glm::vec3(0.0f), glm::vec3(1.0f)};
+        if (part.material.unlit) s.light = unlitLight();
         DrawDesc d;
         d.pipeline = part.material.doubleSided ? twoSided_ : culled_;
         d.params = s;

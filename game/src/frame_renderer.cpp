@@ -12,7 +12,6 @@ using engine::scene::DrawBatch;
 using engine::scene::MeshPart;
 
 namespace {
-const DirectionalLight kSun{{0.45f, 0.80f, 0.35f}, {1.05f, 0.98f, 0.88f}, {0.32f, 0.36f, 0.42f}};
 constexpr CompareFunc kDepthFunc = CompareFunc::Greater;  // reverse-Z
 }  // namespace
 
@@ -125,7 +124,7 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
         s.viewProj = camera.viewProj;
         s.baseColorFactor = part.material.baseColorFactor;
         s.baseColor = part.material.baseColor;
-        s.light = kSun;
+        s.light = options_.sun;
         if (part.material.unlit) s.light = unlitLight();
         return s;
     };
@@ -147,7 +146,7 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
 
     // 2. Foliage by the technique: it draws, resolves the opaque targets and leaves the
     //    colour and the depth later passes test against in them.
-    const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, kSun, foliage_.upload(lists, library_)};
+    const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, options_.sun, foliage_.upload(lists, library_)};
     technique_->render(*opaque_, foliage);
     captureIntermediates();
     capture(opaque_->depth(), "foliage_depth");
@@ -157,7 +156,7 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
     if (living_) {
         const int w = backend_.describe(opaque_->color()).width, h = backend_.describe(opaque_->color()).height;
         living_->render({backend_, library_, lists, opaque_->color(), opaque_->depth(), w, h, camera.view,
-                         camera.projection, camera.viewProj, camera.eye, kSun, 0.0f, kDepthFunc});
+                         camera.projection, camera.viewProj, camera.eye, options_.sun, 0.0f, kDepthFunc});
     } else if (!lists.blend.empty()) {
         PassDesc pass;
         pass.name = "water";

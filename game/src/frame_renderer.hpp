@@ -27,6 +27,8 @@ struct RendererOptions {
     int msaa = 1;
     transparency::TechniqueOptions techniqueOptions;  // its ssam.depthFunc is set to the scene's
     glm::vec4 background{0.55f, 0.70f, 0.88f, 1.0f};  // the opaque pass's clear colour (the racing scene's sky)
+    // The scene's sun; this default is the one a glTF file without lights gets.
+    engine::render::DirectionalLight sun{{0.45f, 0.80f, 0.35f}, {1.05f, 0.98f, 0.88f}, {0.32f, 0.36f, 0.42f}};
     bool captureLayers = false;  // keep every intermediate of the last frame (EXR layers)
 };
 

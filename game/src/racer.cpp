@@ -110,6 +110,7 @@ int run(const Options& o) {
         renderer.background = kNeutralBackground;
     } else {
         racing = std::make_unique<RacingScene>(backend, SceneOptions{o.contentDir, o.seed});
+        renderer.sun = racing->sun();
     }
     engine::ecs::Registry& registry = gltf ? gltf->registry() : racing->registry();
     engine::scene::MeshLibrary& library = gltf ? gltf->library() : racing->library();

@@ -108,8 +108,21 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
               random.uniform(1.5f, 2.5f));
     }
 
-    // Water pools (glTF BLEND material) in the infield.
+    // Water pools (glTF BLEND material): one among the grove's trees, the rest in the infield.
     const scene::ModelId water = loadContentModel(library_, content / "models" / "water.glb");
+    {
+        const glm::vec3 start = track_.position(0.0f), f = track_.forward(0.0f);
+        const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+        glm::vec3 p = start + side * (track_.width() * 0.5f + 9.0f) - f * 4.0f;
+        p.y = terrainHeight(p.x, p.z) + 0.3f;
+        placeModel(registry_, water, p, 0.0f, 2.2f);
+
+        // The sun 17 degrees above the horizon, straight behind the grove from the start line.
+        const float elevation = glm::radians(17.0f);
+        sun_.towardLight = side * std::cos(elevation) + glm::vec3(0.0f, std::sin(elevation), 0.0f);
+        sun_.color = {1.15f, 0.98f, 0.80f};
+        sun_.ambient = {0.34f, 0.37f, 0.45f};
+    }
     for (int i = 0; i < 4; ++i) {
         const float angle = float(i) * 1.5708f + 0.4f;
         glm::vec3 p(95.0f * std::cos(angle), 0.0f, 95.0f * std::sin(angle));

@@ -34,11 +34,15 @@ public:
     engine::scene::MeshLibrary& library() { return library_; }
     const Track& track() const { return track_; }
     engine::ecs::Entity car() const { return car_; }
+    // A low late-afternoon sun behind the start-line grove as the pre-race pan sees it, so
+    // its leaves are backlit and the light shafts fall through them towards the camera.
+    const engine::render::DirectionalLight& sun() const { return sun_; }
 
     // Advances the simulation by dt seconds (the car drives along the track).
     void update(float dt);
 
 private:
+    engine::render::DirectionalLight sun_;
     engine::ecs::Registry registry_;
     engine::scene::MeshLibrary library_;
     Track track_;

@@ -125,7 +125,7 @@ void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& ext
             if (shafts->samples < 1 || shafts->samples > 128)
                 throw Error(what + ": light-shaft samples " + std::to_string(shafts->samples) + " not in 1..128");
             for (float v : {shafts->sunPixel.x, shafts->sunPixel.y, shafts->farDepth, shafts->intensity, shafts->decay,
-                            shafts->density, shafts->color.r, shafts->color.g, shafts->color.b})
+                            shafts->density, shafts->color.r, shafts->color.g, shafts->color.b, shafts->glowRadius})
                 if (!std::isfinite(v)) throw Error(what + ": light-shaft parameters are not finite");
             return;
         }

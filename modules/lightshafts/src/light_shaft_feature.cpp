@@ -10,10 +10,11 @@ namespace lightshafts {
 using namespace engine::render;
 
 void validate(const LightShaftOptions& o) {
-    for (float v : {o.color.r, o.color.g, o.color.b, o.intensity, o.decay, o.density})
+    for (float v : {o.color.r, o.color.g, o.color.b, o.intensity, o.decay, o.density, o.glowRadius})
         if (!std::isfinite(v)) throw engine::Error("LightShaftOptions: a value is not finite");
     if (o.color.r < 0.0f || o.color.g < 0.0f || o.color.b < 0.0f) throw engine::Error("LightShaftOptions.color is negative");
     if (o.intensity < 0.0f) throw engine::Error("LightShaftOptions.intensity must be >= 0");
+    if (!(o.glowRadius > 0.0f)) throw engine::Error("LightShaftOptions.glowRadius must be > 0");
     if (!(o.decay > 0.0f && o.decay <= 1.0f)) throw engine::Error("LightShaftOptions.decay must be in (0, 1]");
     if (!(o.density > 0.0f && o.density <= 1.0f)) throw engine::Error("LightShaftOptions.density must be in (0, 1]");
     if (o.samples < 1 || o.samples > 128)
@@ -52,6 +53,7 @@ void LightShaftFeature::render(const engine::scene::FeatureFrame& frame) {
     params.decay = options_.decay;
     params.density = options_.density;
     params.samples = options_.samples;
+    params.glowRadius = options_.glowRadius * float(frame.height);
     PassDesc pass;
     pass.name = "light shafts";
     pass.color[0] = {frame.color, LoadOp::Load};

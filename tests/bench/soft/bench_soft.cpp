@@ -7,6 +7,12 @@
 //   TexturedAlpha 4 full-screen FoliageColor quads, 256^2 RGBA8 mipmapped texture
 //                 (trilinear), alpha test discarding below 0.5 (about half the texels)
 //   BlendFill     8 full-screen alpha-over quads (alpha 0.5) into RGBA8
+//   SsamMask      SSAM's mask pass (seeds/000 §3.5.2): 8 receding foliage layers under a
+//                 perspective camera, FoliageAlpha with the 256^2 texture (trilinear,
+//                 repeated 4x), MAX/ADD ONE/ONE blend into RGBA8, depth test without write
+//                 (every layer is shaded: the pass's cost scales with depth complexity)
+//   SsamColor     the same layers through SSAM's colour pass (§3.5.3): FoliageColor, alpha
+//                 test at 64/255, depth test and write, into RGBA8
 //   SmallTris     100k triangles of ~10 px each, Flat into RGBA8 + depth (LessEqual)
 //   SetupCulled   1M triangles outside the viewport (inside the guard band): vertex
 //                 stage, clipping and setup only, every triangle dropped
@@ -31,6 +37,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
@@ -203,6 +210,71 @@ void BM_TexturedAlpha(benchmark::State& state) {
     });
 }
 
+// 8 vertical 24 x 14 m foliage layers 1 m apart, 6 to 13 m in front of a 60° camera
+// looking slightly down the row, so w and the texture LOD vary over every layer; uv 0..4.
+struct FoliageLayers {
+    std::vector<render::Vertex> vertices;
+    glm::mat4 viewProj{1.0f};
+    FoliageLayers() {
+        for (int i = 0; i < 8; ++i) {
+            const float z = -6.0f - float(i), x0 = -12.0f + 0.7f * float(i), y0 = -7.0f;
+            auto at = [&](float u, float v) {
+                render::Vertex vertex;
+                vertex.position = {x0 + 24.0f * u, y0 + 14.0f * v, z - 2.0f * u};
+                vertex.uv = {4.0f * u, 4.0f * (1.0f - v)};
+                return vertex;
+            };
+            const render::Vertex bl = at(0, 0), br = at(1, 0), tr = at(1, 1), tl = at(0, 1);
+            vertices.insert(vertices.end(), {bl, br, tr, bl, tr, tl});
+        }
+        viewProj = glm::perspective(1.04719755f, float(kWidth) / float(kHeight), 0.1f, 100.0f) *
+                   glm::lookAt(glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0.5f, 0.0f, -8.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    }
+};
+
+// One SSAM foliage pass over FoliageLayers: `mask` the mask pass, else the colour pass.
+void ssamPass(benchmark::State& state, bool mask) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_UNORM);
+    const auto depth = renderTarget(b, render::Format::D32F);
+    const auto texture = foliageTexture(b);
+    const FoliageLayers layers;
+    const auto vb = vertexBuffer(b, layers.vertices);
+    render::PipelineDesc pd;
+    pd.raster.cull = render::CullMode::None;
+    render::ProgramParams params;
+    if (mask) {
+        pd.program = render::ProgramKind::FoliageAlpha;
+        pd.depth = render::DepthState::testOnly(render::CompareFunc::Less);
+        pd.blend[0] = render::BlendState::ssamMask();
+        render::AlphaOnlyParams p;
+        p.viewProj = layers.viewProj;
+        p.baseColor = {texture, {}};
+        params = p;
+    } else {
+        pd.program = render::ProgramKind::FoliageColor;
+        pd.depth = render::DepthState::testAndWrite(render::CompareFunc::Less);
+        pd.alphaTest = render::AlphaTest::discardBelow(64.0f / 255.0f);
+        render::SurfaceParams p;
+        p.viewProj = layers.viewProj;
+        p.baseColor = {texture, {}};
+        params = p;
+    }
+    const auto pipeline = b.createPipeline(pd);
+    render::PassDesc pass;
+    pass.name = mask ? "ssam mask" : "ssam colour";
+    pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(0.0f)};
+    pass.depth = {depth, render::LoadOp::Clear, 1.0f};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        draw(b, pipeline, vb, std::uint32_t(layers.vertices.size()), params);
+        b.endPass();
+    });
+}
+void BM_SsamMask(benchmark::State& state) { ssamPass(state, true); }
+void BM_SsamColor(benchmark::State& state) { ssamPass(state, false); }
+
 // 100k right triangles with 4.5 px legs (~10 px each) on a 400 x 250 grid over the screen.
 void BM_SmallTris(benchmark::State& state) {
     auto backend = makeBackend(state);
@@ -312,6 +384,8 @@ SOFT_BENCH(BM_DepthOnly);
 SOFT_BENCH(BM_FlatFill);
 SOFT_BENCH(BM_TexturedAlpha);
 SOFT_BENCH(BM_BlendFill);
+SOFT_BENCH(BM_SsamMask);
+SOFT_BENCH(BM_SsamColor);
 SOFT_BENCH(BM_SmallTris);
 SOFT_BENCH(BM_SetupCulled);
 SOFT_BENCH(BM_SetupTiny);

@@ -181,7 +181,7 @@ struct ProgramSlot {
           greaterIsCloser = -1, layerScale = -1;
     // LightShafts (modules/lightshafts)
     GLint sunPixel = -1, farDepth = -1, shaftGreater = -1, shaftColor = -1, intensity = -1, decay = -1, density = -1,
-          samples = -1;
+          samples = -1, glowRadius = -1;
 };
 
 struct PendingTiming {
@@ -866,6 +866,7 @@ private:
         s.decay = p.uniform("u_decay");
         s.density = p.uniform("u_density");
         s.samples = p.uniform("u_samples");
+        s.glowRadius = p.uniform("u_glowRadius");
         s.filter = p.uniform("u_filter");
         s.scissor = p.uniform("u_scissor");
         s.alphaFunc = p.uniform("u_alphaFunc");
@@ -989,6 +990,7 @@ private:
                     glProgramUniform1f(p, s.decay, params.decay);
                     glProgramUniform1f(p, s.density, params.density);
                     glProgramUniform1i(p, s.samples, params.samples);
+                    glProgramUniform1f(p, s.glowRadius, params.glowRadius);
                 } else if constexpr (std::is_same_v<P, LayerCompositeParams>) {
                     glBindTextureUnit(0, params.sceneDepth ? textures_.get(params.sceneDepth).id : 0);
                     glBindTextureUnit(1, textures_.get(params.layer).id);

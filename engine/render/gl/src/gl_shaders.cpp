@@ -418,6 +418,12 @@ uniform float u_intensity;
 uniform float u_decay;
 uniform float u_density;
 uniform int u_samples;
+uniform float u_glowRadius;
+float sunGlow(vec2 q) {
+    if (!(u_glowRadius > 0.0)) return 1.0;
+    float t = max(0.0, 1.0 - length(q - u_sunPixel) / u_glowRadius);
+    return t * t;
+}
 void main() {
     ivec2 size = textureSize(u_shaftDepth, 0);
     int samples = clamp(u_samples, 1, 128);
@@ -429,7 +435,7 @@ void main() {
         if (!(q.x >= 0.0 && q.y >= 0.0 && q.x < float(size.x) && q.y < float(size.y))) break;
         float z = texelFetch(u_shaftDepth, ivec2(q), 0).r;
         bool sky = u_shaftGreater ? !(z > u_farDepth) : !(z < u_farDepth);
-        if (sky) sum += weight;
+        if (sky) sum += weight * sunGlow(q);
         weight *= u_decay;
     }
     vec3 c = u_shaftColor * (u_intensity * sum / float(samples));

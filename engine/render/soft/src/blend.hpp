@@ -3,10 +3,13 @@
 // Normalized targets clamp source, destination and constant to [0,1] first, so factors
 // and products stay in [0,1]; float targets clamp nothing and let NaN/Inf propagate.
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
 
 #include <glm/glm.hpp>
 
 #include "engine/render/blend_state.hpp"
+#include "engine/render/pixel_codec.hpp"
 
 namespace engine::render::soft {
 
@@ -84,6 +87,30 @@ inline glm::vec4 blend(const BlendState& b, glm::vec4 src, glm::vec4 dst, glm::v
     const glm::vec3 rgb = applyOp(b.opRgb, glm::vec3(src), sf, glm::vec3(dst), df);
     const float a = applyOp(b.opAlpha, src.a, saf, dst.a, daf);
     return {rgb, a};
+}
+
+// Blends whose factors are all ONE and whose operations are ADD or MAX (the SSAM mask,
+// seeds/000 Table 3.1).
+inline bool isOneOneAddMax(const BlendState& b) {
+    auto addOrMax = [](BlendOp op) { return op == BlendOp::Add || op == BlendOp::Max; };
+    return b.srcRgb == BlendFactor::One && b.dstRgb == BlendFactor::One && b.srcAlpha == BlendFactor::One &&
+           b.dstAlpha == BlendFactor::One && addOrMax(b.opRgb) && addOrMax(b.opAlpha);
+}
+
+// blend() + storeTexel() of the colour (a, a, a, a), a in [0, 1], onto the RGBA8_UNORM pixel
+// p under such a blend, with the same bits. The UNORM clamps leave a and d / 255 as they
+// are. ADD: a * 1 + d * 1 = a + d / 255 exactly, then the UNORM encode. MAX:
+// encode(max(a, d / 255)) = max(encode(a), d), as encodeUnorm8 is non-decreasing and
+// encodeUnorm8(d / 255) = d (both checked for every float in [0, 1] and every byte).
+inline void blendOneOneRgba8(const BlendState& b, std::byte* p, float a, std::uint8_t writeMask) {
+    const float* unorm = byteTables().unorm;
+    const std::uint8_t encoded = encodeUnorm8(a);
+    for (int c = 0; c < 4; ++c) {
+        if (!(writeMask & (1u << c))) continue;
+        const std::uint8_t d = std::to_integer<std::uint8_t>(p[c]);
+        const BlendOp op = c < 3 ? b.opRgb : b.opAlpha;
+        p[c] = std::byte{op == BlendOp::Max ? std::max(encoded, d) : encodeUnorm8(a + unorm[d])};
+    }
 }
 
 }  // namespace engine::render::soft

@@ -109,6 +109,12 @@ struct LightShaftsProgram {
     LightShaftParams params;
     const SoftTexture* depth = nullptr;
 
+    float sunGlow(const glm::vec2& q) const {
+        if (!(params.glowRadius > 0.0f)) return 1.0f;
+        const float t = std::max(0.0f, 1.0f - glm::length(q - params.sunPixel) / params.glowRadius);
+        return t * t;
+    }
+
     glm::vec4 shade(const Fragment& f) const {
         const int w = depth->desc.width, h = depth->desc.height;
         const int samples = std::clamp(params.samples, 1, 128);
@@ -120,7 +126,7 @@ struct LightShaftsProgram {
             if (!(q.x >= 0.0f && q.y >= 0.0f && q.x < float(w) && q.y < float(h))) break;  // left the screen
             const float z = fetchTexel(*depth, int(q.x), int(q.y)).r;
             const bool sky = params.greaterIsCloser ? !(z > params.farDepth) : !(z < params.farDepth);
-            if (sky) sum += weight;
+            if (sky) sum += weight * sunGlow(q);
             weight *= params.decay;
         }
         glm::vec3 c = params.color * (params.intensity * sum / float(samples));

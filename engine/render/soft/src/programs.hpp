@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "alpha_sampler.hpp"
 #include "engine/render/program.hpp"
 #include "sampler.hpp"
 #include "soft_texture.hpp"
@@ -54,16 +55,62 @@ struct FlatProgram {
     glm::vec4 shade(const Fragment& f) const { return color * f.color; }
 };
 
+#if SSAM_ALPHA_SAMPLER_SSE2
+// Texture alpha times `factor` times vertex alpha, unclamped, for 4 fragments whose
+// interpolated inputs are lanes 0..3 of the arrays (vertex alpha, u, v, and du/dx, dv/dx,
+// du/dy, dv/dy in duv[0..3]), for the lanes set in `lanes`: factor * colorA * sampled, in
+// the order the programs multiply them.
+inline void alphaTimes4(const AlphaSampler& sampler, bool textured, float factor, const float* colorA, const float* u,
+                        const float* v, const float* const* duv, std::uint32_t lanes, float* out) {
+    alignas(16) float sampled[4];
+    if (textured) sampler.sample4(u, v, duv[0], duv[1], duv[2], duv[3], lanes, sampled);
+    for (int i = 0; i < 4; ++i) {
+        out[i] = factor * colorA[i];
+        if (textured) out[i] *= sampled[i];
+    }
+}
+#endif
+
 template <bool Foliage>
 struct SurfaceProgram {
     static constexpr ProgramNeeds kNeeds{true, true, true, true};
     SurfaceParams params;
     const SoftTexture* texture = nullptr;  // null: white
-    glm::vec3 towardLight = glm::normalize(params.light.towardLight);  // hoisted out of the pixel loop
+    glm::vec3 towardLight;                 // hoisted out of the pixel loop
+    AlphaSampler alphaSampler;             // Foliage, RGBA8 texture: the alpha alone (alpha4)
+
+    SurfaceProgram(const SurfaceParams& p, const SoftTexture* t)
+        : params(p), texture(t), towardLight(glm::normalize(params.light.towardLight)) {
+        if constexpr (Foliage)
+            if (texture) alphaSampler = AlphaSampler(*texture, params.baseColor.sampler);
+    }
+
+#if SSAM_ALPHA_SAMPLER_SSE2
+    // The alpha shade() outputs for 4 fragments (see alphaTimes4), with the same bits: the
+    // rasterizer alpha-tests with it before shading the colour.
+    bool hasAlpha4() const { return Foliage && (!texture || alphaSampler.simd4()); }
+    void rgba4(const float* u, const float* v, const float* const* duv, std::uint32_t lanes, float (*out)[4]) const {
+        alphaSampler.sampleRgba4(u, v, duv[0], duv[1], duv[2], duv[3], lanes, out);
+    }
+    void alpha4(const float* colorA, const float* u, const float* v, const float* const* duv, std::uint32_t lanes,
+                float* out) const {
+        // base.a = (baseColorFactor.a * vertex alpha) * texel alpha; toStraight keeps alpha.
+        alphaTimes4(alphaSampler, texture != nullptr, params.baseColorFactor.a, colorA, u, v, duv, lanes, out);
+    }
+#endif
 
     glm::vec4 shade(const Fragment& f) const {
         glm::vec4 base = params.baseColorFactor * f.color;
         if (texture) base *= toStraight(sampleTexture(*texture, params.baseColor.sampler, f.uv, f.duv), texture->desc.alpha);
+        return light(f, base);
+    }
+    // shade() with the texture's sample at f given (a texture is bound).
+    glm::vec4 shadeSampled(const Fragment& f, const glm::vec4& texel) const {
+        glm::vec4 base = params.baseColorFactor * f.color;
+        base *= toStraight(texel, texture->desc.alpha);
+        return light(f, base);
+    }
+    glm::vec4 light(const Fragment& f, const glm::vec4& base) const {
         // Foliage is double-sided: a back face is lit with its flipped normal.
         const glm::vec3 n = (Foliage && !f.frontFacing) ? -f.normal : f.normal;
         const glm::vec3 lit = glm::vec3(base) * (params.light.ambient + params.light.color * lambert(n, towardLight));
@@ -77,13 +124,36 @@ struct FoliageAlphaProgram {
     static constexpr ProgramNeeds kNeeds{true, true, false, true};
     AlphaOnlyParams params;
     const SoftTexture* texture = nullptr;
+    AlphaSampler alphaSampler;  // valid for RGBA8 textures: the same alpha, one byte per tap
 
-    glm::vec4 shade(const Fragment& f) const {
-        float a = params.alphaFactor * f.color.a;
-        if (texture) a *= sampleTexture<SampledChannels::AlphaOnly>(*texture, params.baseColor.sampler, f.uv, f.duv).a;
-        a = a > 0.0f ? (a < 1.0f ? a : 1.0f) : 0.0f;  // saturate; NaN -> 0
-        return glm::vec4(a);  // Out.Color.xyzw = Out.Color.www (seeds/000 §3.5.2)
+    FoliageAlphaProgram(const AlphaOnlyParams& p, const SoftTexture* t) : params(p), texture(t) {
+        if (texture) alphaSampler = AlphaSampler(*texture, params.baseColor.sampler);
     }
+
+    // The replicated value, saturated: the rasterizer's mask path uses it directly.
+    [[gnu::always_inline]] float alpha(const Fragment& f) const {
+        float a = params.alphaFactor * f.color.a;
+        if (texture)
+            a *= alphaSampler.valid()
+                     ? alphaSampler.sample(f.uv, f.duv)
+                     : sampleTexture<SampledChannels::AlphaOnly>(*texture, params.baseColor.sampler, f.uv, f.duv).a;
+        return a > 0.0f ? (a < 1.0f ? a : 1.0f) : 0.0f;  // saturate; NaN -> 0
+    }
+    glm::vec4 shade(const Fragment& f) const {
+        return glm::vec4(alpha(f));  // Out.Color.xyzw = Out.Color.www (seeds/000 §3.5.2)
+    }
+
+#if SSAM_ALPHA_SAMPLER_SSE2
+    // alpha4 may be used.
+    bool hasAlpha4() const { return !texture || alphaSampler.simd4(); }
+    // alpha() of 4 fragments whose interpolated inputs are lanes 0..3 of the arrays (vertex
+    // alpha, u, v, and du/dx, dv/dx, du/dy, dv/dy in duv[0..3]), for the lanes set in `lanes`.
+    void alpha4(const float* colorA, const float* u, const float* v, const float* const* duv, std::uint32_t lanes,
+                float* out) const {
+        alphaTimes4(alphaSampler, texture != nullptr, params.alphaFactor, colorA, u, v, duv, lanes, out);
+        for (int i = 0; i < 4; ++i) out[i] = out[i] > 0.0f ? (out[i] < 1.0f ? out[i] : 1.0f) : 0.0f;  // as alpha()
+    }
+#endif
 };
 
 // seeds/000 Listing 3.2, one texel per screen pixel (§3.5.4); the lerp with the opaque

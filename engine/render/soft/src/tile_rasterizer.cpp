@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <type_traits>
 
 #if defined(__SSE2__) && !defined(SSAM_SOFT_SCALAR)
 #include <emmintrin.h>
@@ -223,6 +224,24 @@ public:
             v.byteLut = (v.format == Format::RGBA8_UNORM || v.format == Format::RGBA8_SRGB) && v.blend &&
                         blendIsPerChannel(draw.blend[i]);
         }
+#if SSAM_SOFT_SSE2
+        if constexpr (std::is_same_v<Program, FoliageColorProgram>)
+            alphaFirst_ = !draw.capture && draw.shade && draw.alphaTest.enabled &&
+                          draw.alphaTest.failMode == AlphaFailMode::Keep && program.hasAlpha4();
+        if constexpr (std::is_same_v<Program, FoliageAlphaProgram>) {
+            // The mask path (shadeAlphaRow) covers what the mask pass is: no capture, no alpha
+            // test, no depth write. Anything else takes the general path.
+            alphaRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite;
+            alphaZeroSkips_ = draw.colorTargetCount > 0;
+            for (int i = 0; i < draw.colorTargetCount; ++i) {
+                oneOneBytes_[i] =
+                    color_[i].format == Format::RGBA8_UNORM && color_[i].blend && isOneOneAddMax(draw.blend[i]);
+                alphaZeroSkips_ = alphaZeroSkips_ && oneOneBytes_[i];
+                for (int c = 0; c < 4; ++c)
+                    if (!(draw.blend[i].writeMask & (1u << c))) unwrittenBytes_[i] |= 0xFFu << (8 * c);
+            }
+        }
+#endif
     }
 
     void rasterize(const SetupTriangle& t, const Rect& tile) {
@@ -499,6 +518,18 @@ private:
             return;
         }
 #if SSAM_SOFT_SSE2
+        if constexpr (std::is_same_v<Program, FoliageAlphaProgram>) {
+            if (alphaRow_) {
+                shadeAlphaRow(t, bx, py, live, centerX0, fy);
+                return;
+            }
+        }
+        if constexpr (std::is_same_v<Program, FoliageColorProgram>) {
+            if (alphaFirst_) {
+                shadeAlphaTestedRow(t, bx, py, live, centerX0, fy, z, depthAt);
+                return;
+            }
+        }
         if (kBitCount[live] >= 2) {  // the attributes of all 8 lanes at once
             interpolateRow(t, centerX0, fy);
             for (std::uint32_t bits = live; bits; bits &= bits - 1) {
@@ -517,6 +548,110 @@ private:
     }
 
 #if SSAM_SOFT_SSE2
+    // FoliageAlpha's row (alphaRow_): what shadeSingle does for each live lane, with the
+    // program's replicated alpha kept as one float and ONE/ONE ADD/MAX RGBA8 blends done on
+    // the stored bytes (blendOneOneRgba8).
+    void shadeAlphaRow(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy) {
+        counters_.pixelsShaded += kBitCount[live];
+        if (alphaZeroSkips_) {
+            // A pixel whose written bytes are all 255 can no longer change: MAX gives
+            // max(encode(a), 255) = 255 and ADD encode(a + 1) = 255 for any a in [0, 1], so the
+            // layers drawn after the mask saturated there skip the sampling. (Still counted as
+            // shaded: the program's result is known without running it.)
+            std::uint32_t open = 0;
+            for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+                const int i = __builtin_ctz(bits);
+                for (int k = 0; k < draw_.colorTargetCount; ++k) {
+                    std::uint32_t stored;
+                    std::memcpy(&stored, color_[k].at(bx + i, py), sizeof stored);
+                    if ((stored | unwrittenBytes_[k]) != 0xFFFFFFFFu) {
+                        open |= 1u << i;
+                        break;
+                    }
+                }
+            }
+            live = open;
+            if (!live) return;
+        }
+        interpolateRow(t, centerX0, fy);
+        alignas(16) float alpha[kBlockSize];
+        const bool four = program_.hasAlpha4();
+        if (four) {
+            for (int h = 0; h < 2; ++h) {
+                const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
+                if (!lanes) continue;
+                const float* duv[4] = {row_.duv[0] + 4 * h, row_.duv[1] + 4 * h, row_.duv[2] + 4 * h,
+                                       row_.duv[3] + 4 * h};
+                program_.alpha4(row_.color[3] + 4 * h, row_.uv[0] + 4 * h, row_.uv[1] + 4 * h, duv, lanes,
+                                alpha + 4 * h);
+            }
+        }
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits), px = bx + i;
+            const float a = four ? alpha[i] : program_.alpha(rowFragment(t, px, py, i));
+            // MAX with 0 and ADD of 0 store back the byte that was there (blendOneOneRgba8:
+            // max(0, d) = d, encode(0 + d / 255) = d), so a zero alpha changes nothing.
+            if (alphaZeroSkips_ && a == 0.0f) continue;
+            for (int k = 0; k < draw_.colorTargetCount; ++k) {
+                const std::uint8_t mask = draw_.blend[k].writeMask;
+                if (!mask) continue;
+                std::byte* p = color_[k].at(px, py);
+                if (oneOneBytes_[k]) blendOneOneRgba8(draw_.blend[k], p, a, mask);
+                else writeColor(k, p, glm::vec4(a), mask);
+            }
+        }
+    }
+
+    // FoliageColor's row under a Keep alpha test (alphaFirst_): the texels four lanes at a
+    // time (rgba4: the general sampler's bits), then the alpha test on the alpha shade()
+    // would output, (baseColorFactor.a * vertex alpha) * texel alpha (toStraight keeps
+    // alpha), and shade() from the texel on only for the fragments that pass: a discarded
+    // fragment writes nothing, so its lighting is never needed.
+    void shadeAlphaTestedRow(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy,
+                             const float* z, std::byte* depthAt) {
+        interpolateRow(t, centerX0, fy);
+        if (!program_.texture) {  // alpha4 without a texture: factor * vertex alpha
+            alignas(16) float alpha[kBlockSize];
+            std::uint32_t passing = 0;
+            for (int h = 0; h < 2; ++h) {
+                const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
+                if (!lanes) continue;
+                const float* duv[4] = {row_.duv[0] + 4 * h, row_.duv[1] + 4 * h, row_.duv[2] + 4 * h,
+                                       row_.duv[3] + 4 * h};
+                program_.alpha4(row_.color[3] + 4 * h, row_.uv[0] + 4 * h, row_.uv[1] + 4 * h, duv, lanes,
+                                alpha + 4 * h);
+            }
+            for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+                const int i = __builtin_ctz(bits);
+                if (draw_.alphaTest.passes(alpha[i])) passing |= 1u << i;
+            }
+            counters_.pixelsShaded += kBitCount[live & ~passing];  // shaded as far as their alpha
+            for (std::uint32_t bits = passing; bits; bits &= bits - 1) {
+                const int i = __builtin_ctz(bits);
+                shadeSingle(rowFragment(t, bx + i, py, i), bx + i, py, z[i], depthAt + i * sizeof(float));
+            }
+            return;
+        }
+        const float factorAlpha = program_.params.baseColorFactor.a;
+        for (int h = 0; h < 2; ++h) {
+            const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
+            if (!lanes) continue;
+            const float* duv[4] = {row_.duv[0] + 4 * h, row_.duv[1] + 4 * h, row_.duv[2] + 4 * h, row_.duv[3] + 4 * h};
+            alignas(16) float texels[4][4];
+            program_.rgba4(row_.uv[0] + 4 * h, row_.uv[1] + 4 * h, duv, lanes, texels);
+            for (std::uint32_t bits = lanes; bits; bits &= bits - 1) {
+                const int k = __builtin_ctz(bits), i = 4 * h + k;
+                if (!draw_.alphaTest.passes(factorAlpha * row_.color[3][i] * texels[k][3])) {
+                    ++counters_.pixelsShaded;  // shaded as far as its alpha
+                    continue;
+                }
+                const glm::vec4 texel(texels[k][0], texels[k][1], texels[k][2], texels[k][3]);
+                writeShaded(program_.shadeSampled(rowFragment(t, bx + i, py, i), texel), bx + i, py, z[i],
+                            depthAt + i * sizeof(float));
+            }
+        }
+    }
+
     // interpolate() for the 8 lanes of a block row (pixel bx + i in lane i), lane by lane
     // the same IEEE operations in the same order (the division included), into row_.
     void interpolateRow(const SetupTriangle& t, float centerX0, float fy) {
@@ -582,7 +717,10 @@ private:
 
     // One covered (and depth-passing) pixel of a single-sampled target.
     void shadeSingle(const Fragment& fragment, int px, int py, float z, std::byte* depthAt) {
-        const glm::vec4 color = program_.shade(fragment);
+        writeShaded(program_.shade(fragment), px, py, z, depthAt);
+    }
+    // What shadeSingle does with the shaded colour.
+    void writeShaded(const glm::vec4& color, int px, int py, float z, std::byte* depthAt) {
         ++counters_.pixelsShaded;
         if (draw_.capture) {
             if (draw_.alphaTest.passes(color.a)) draw_.capture->add(px, py, {z, color});
@@ -769,6 +907,12 @@ private:
     std::array<std::uint8_t, kMaxColorTargets> constantMask_{};
     std::array<std::uint32_t, kMaxColorTargets> constantPacked_{};
     std::array<bool, kMaxColorTargets> useLut_{};
+    bool alphaFirst_ = false;  // FoliageColor: alpha-test (Keep) on the alpha alone before shading
+    // FoliageAlpha's row path (shadeAlphaRow).
+    bool alphaRow_ = false;
+    bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha
+    std::array<bool, kMaxColorTargets> oneOneBytes_{};  // blendOneOneRgba8 applies
+    std::array<std::uint32_t, kMaxColorTargets> unwrittenBytes_{};  // 0xFF in each byte the write mask leaves
 };
 
 }  // namespace

@@ -173,6 +173,10 @@ struct LightShaftParams {
     float decay = 0.96f;
     float density = 0.8f;
     int samples = 32;          // 1..128
+    // The occlusion image is the sun's glow where sky shows (GPU Gems 3 ch. 13 draws the sun
+    // as a bright disc): a sky sample at distance d from the sun weighs (1 - d/glowRadius)^2.
+    // 0: every sky pixel glows alike.
+    float glowRadius = 0.0f;   // pixels
 };
 
 using ProgramParams = std::variant<FlatParams, SurfaceParams, AlphaOnlyParams, CompositeParams, WboitAccumulateParams,
