@@ -12,14 +12,7 @@ OpaqueTargets::OpaqueTargets(Backend& backend, const OpaqueTargetsDesc& desc) : 
     if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4)
         throw engine::Error("opaque targets: " + std::to_string(desc.samples) + " samples (use 1, 2 or 4)");
     auto target = [&](const char* name, Format format, int samples) {
-        TextureDesc t;
-        t.name = name;
-        t.width = desc.width;
-        t.height = desc.height;
-        t.format = format;
-        t.samples = samples;
-        t.usage = UsageRenderTarget | UsageSampled;
-        return backend_.createTexture(t);
+        return backend_.createTexture(renderTargetDesc(name, desc.width, desc.height, format, samples));
     };
     color_ = target("rt_opaque", desc.colorFormat, 1);
     depth_ = target("rt_depth", Format::D32F, 1);

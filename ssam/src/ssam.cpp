@@ -76,13 +76,7 @@ void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFo
         return;
     destroyTargets();
     auto target = [&](const char* name, Format format) {
-        TextureDesc t;
-        t.name = name;
-        t.width = width;
-        t.height = height;
-        t.format = format;
-        t.usage = UsageRenderTarget | UsageSampled;
-        return backend_.createTexture(t);
+        return backend_.createTexture(renderTargetDesc(name, width, height, format));
     };
     switch (config_.maskPrecision) {
         case MaskPrecision::RGBA8: mask_ = target("rt_mask", Format::RGBA8_UNORM); break;
@@ -129,20 +123,6 @@ FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, 
     return plan;
 }
 
-namespace {
-DrawDesc foliageDraw(const FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
-    DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = std::move(params);
-    d.vertices = batch.vertices;
-    d.indices = batch.indices;
-    d.first = batch.first;
-    d.count = batch.count;
-    d.instances = batch.instances;
-    d.instanceCount = batch.instanceCount;
-    return d;
-}
-}  // namespace
 
 void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
     PassDesc pass;

@@ -50,16 +50,7 @@ PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const char* name) {
 }
 
 DrawDesc batchDraw(const ssam::FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
-    DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = std::move(params);
-    d.vertices = batch.vertices;
-    d.indices = batch.indices;
-    d.first = batch.first;
-    d.count = batch.count;
-    d.instances = batch.instances;
-    d.instanceCount = batch.instanceCount;
-    return d;
+    return ssam::foliageDraw(batch, pipeline, std::move(params));
 }
 
 }  // namespace transparency::detail

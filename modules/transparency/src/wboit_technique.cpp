@@ -118,13 +118,7 @@ private:
         if (width == width_ && height == height_) return;
         destroyTargets();
         auto target = [&](const char* name, Format format) {
-            TextureDesc t;
-            t.name = name;
-            t.width = width;
-            t.height = height;
-            t.format = format;
-            t.usage = UsageRenderTarget | UsageSampled;
-            return backend_.createTexture(t);
+            return backend_.createTexture(renderTargetDesc(name, width, height, format));
         };
         accumulation_ = target("rt_wboit_accumulation", Format::RGBA16F);
         revealageTarget_ = target("rt_wboit_revealage", Format::R16F);

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/handles.hpp"
+#include "engine/render/pass.hpp"
 #include "engine/render/program.hpp"
 #include "engine/render/texture.hpp"
 
@@ -29,6 +30,11 @@ struct FoliageBatch {
     Bounds worldBounds;  // of all instances: decides visibility and the composite region
     bool unlit = false;  // KHR_materials_unlit: the colour pass ignores the view's light
 };
+
+// The draw of one batch with a pipeline and its parameters (SSAM's passes and the other
+// foliage techniques draw batches the same way).
+engine::render::DrawDesc foliageDraw(const FoliageBatch& batch, engine::render::PipelineHandle pipeline,
+                                     engine::render::ProgramParams params);
 
 struct FoliageView {
     glm::mat4 viewProj{1.0f};

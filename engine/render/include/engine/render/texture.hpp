@@ -27,6 +27,18 @@ struct TextureDesc {
     AlphaMode alpha = AlphaMode::Straight;
 };
 
+// A render target that later passes also sample: how every intermediate target is made.
+inline TextureDesc renderTargetDesc(std::string name, int width, int height, Format format, int samples = 1) {
+    TextureDesc t;
+    t.name = std::move(name);
+    t.width = width;
+    t.height = height;
+    t.format = format;
+    t.samples = samples;
+    t.usage = UsageRenderTarget | UsageSampled;
+    return t;
+}
+
 // Largest accepted dimension and total size of one texture: refused before allocation.
 inline constexpr int kMaxTextureDimension = 16384;
 inline constexpr std::uint64_t kMaxTextureBytes = 1ull << 30;

@@ -20,14 +20,10 @@ inline FrameGraphTextureDesc graphDescOf(const TextureDesc& d) {
 // Transient textures become sampled render targets of the backend, destroyed on release.
 inline TextureAllocator backendTextureAllocator(Backend& backend) {
     return {[&backend](std::string_view name, const FrameGraphTextureDesc& d) {
-                TextureDesc t;
-                t.name = std::string(name);
-                t.width = static_cast<int>(d.width);
-                t.height = static_cast<int>(d.height);
-                t.format = static_cast<Format>(d.format);
-                t.samples = static_cast<int>(d.samples);
-                t.usage = UsageRenderTarget | UsageSampled;
-                return toConcrete(backend.createTexture(t));
+                return toConcrete(backend.createTexture(renderTargetDesc(std::string(name), static_cast<int>(d.width),
+                                                                         static_cast<int>(d.height),
+                                                                         static_cast<Format>(d.format),
+                                                                         static_cast<int>(d.samples))));
             },
             [&backend](ConcreteTexture c, const FrameGraphTextureDesc&) { backend.destroy(toTextureHandle(c)); }};
 }

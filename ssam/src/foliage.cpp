@@ -1,0 +1,20 @@
+#include "ssam/foliage.hpp"
+
+namespace ssam {
+
+using namespace engine::render;
+
+DrawDesc foliageDraw(const FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
+    DrawDesc d;
+    d.pipeline = pipeline;
+    d.params = std::move(params);
+    d.vertices = batch.vertices;
+    d.indices = batch.indices;
+    d.first = batch.first;
+    d.count = batch.count;
+    d.instances = batch.instances;
+    d.instanceCount = batch.instanceCount;
+    return d;
+}
+
+}  // namespace ssam
