@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "expect_error.hpp"  // tests/support
 #include "engine/core/error.hpp"
 #include "engine/render/backend.hpp"
 #include "engine/render/vertex.hpp"
@@ -152,19 +153,7 @@ protected:
     std::unique_ptr<render::Backend> backend_;
 };
 
-// Expects `fn` to throw engine::Error whose message contains `substring`.
-template <typename Fn>
-void expectError(Fn&& fn, const std::string& substring) {
-    try {
-        fn();
-        ADD_FAILURE() << "expected engine::Error containing \"" << substring << "\", nothing was thrown";
-    } catch (const engine::Error& e) {
-        EXPECT_NE(std::string(e.what()).find(substring), std::string::npos)
-            << "message \"" << e.what() << "\" lacks \"" << substring << "\"";
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "expected engine::Error, got another exception: " << e.what();
-    }
-}
+using ssam::testing::expectError;
 
 // The suites, one fixture class each so their names say what they test.
 class BlendConformance : public BackendTest {};

@@ -2,7 +2,6 @@
 // Shared helpers of unit_assets: fixture paths, a per-test temporary directory, and a
 // matcher-friendly way to capture the engine::Error a load throws.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,37 +10,16 @@
 #include <vector>
 
 #include "engine/core/error.hpp"
+#include "temp_dir.hpp"  // tests/support
 
 namespace assets_test {
+
+using ssam::testing::TempDir;
 
 inline std::filesystem::path fixture(const std::string& name) {
     return std::filesystem::path(SSAM_SOURCE_DIR) / "tests" / "data" / "gltf" / name;
 }
 
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = "ssam_unit_assets_" + std::to_string(::getpid());
-        if (info) name += std::string("_") + info->test_suite_name() + "_" + info->name();
-        for (char& c : name)
-            if (c == '/') c = '_';
-        path_ = std::filesystem::temp_directory_path() / name;
-        std::filesystem::remove_all(path_);
-        std::filesystem::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    std::filesystem::path operator/(const std::string& file) const { return path_ / file; }
-    const std::filesystem::path& path() const { return path_; }
-
-private:
-    std::filesystem::path path_;
-};
 
 inline void writeFile(const std::filesystem::path& path, const void* data, std::size_t size) {
     std::ofstream out(path, std::ios::binary);

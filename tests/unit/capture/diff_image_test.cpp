@@ -18,7 +18,7 @@ TEST(CaptureDiffImage, IsTheScaledAbsoluteDifference) {
 }
 
 TEST(CaptureDiffImage, IsWrittenAsPngWithoutTheSrgbCurveAndAsExr) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     Image a = Image::make(3, 2, 3);
     Image b = a;
     b.at(1, 1, 0) = 1.0f / 255.0f;

@@ -17,7 +17,7 @@ Image patterned(std::vector<std::string> names, float seed) {
 }  // namespace
 
 TEST(CaptureExrLayers, WritesNamedLayersAndReadsEachBack) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const Image opaque = patterned({"R", "G", "B", "A"}, 0.1f);
     const Image mask = patterned({"Y"}, 0.2f);
     const Image foliage = patterned({"R", "G", "B", "A"}, 0.3f);
@@ -47,7 +47,7 @@ TEST(CaptureExrLayers, WritesNamedLayersAndReadsEachBack) {
 }
 
 TEST(CaptureExrLayers, HalfLayersAreRoundedAndFloatLayersExact) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const Image colour = patterned({"R", "G", "B"}, 0.3f);
     const Image depth = patterned({"Z"}, 1000.0f);
     const auto path = dir / "mixed.exr";
@@ -58,7 +58,7 @@ TEST(CaptureExrLayers, HalfLayersAreRoundedAndFloatLayersExact) {
 }
 
 TEST(CaptureExrLayers, StraightLayersArePremultipliedOnWrite) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     Image straight = Image::make(1, 1, 4, AlphaMode::Straight);
     straight.fill({0.5f, 1.0f, 0.25f, 0.5f});
     writeExrLayers(dir / "straight.exr", {{"foliage", straight}});
@@ -67,7 +67,7 @@ TEST(CaptureExrLayers, StraightLayersArePremultipliedOnWrite) {
 }
 
 TEST(CaptureExrLayers, MissingLayerNamesTheFileAndTheLayersItHas) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const auto path = dir / "one.exr";
     writeExrLayers(path, {{"opaque", patterned({"R", "G", "B", "A"}, 0.0f)}});
     try {
@@ -82,7 +82,7 @@ TEST(CaptureExrLayers, MissingLayerNamesTheFileAndTheLayersItHas) {
 }
 
 TEST(CaptureExrLayers, InconsistentLayersAreRefused) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const Image small = Image::make(2, 2, 1);
     const Image large = Image::make(3, 2, 1);
     EXPECT_THROW(writeExrLayers(dir / "sizes.exr", {{"a", small}, {"b", large}}), engine::Error);

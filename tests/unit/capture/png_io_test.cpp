@@ -24,7 +24,7 @@ Image8 allCodesImage(int channels) {
 }  // namespace
 
 TEST(CapturePng, EightBitRoundTripIsExactForEveryChannelCount) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     for (int channels = 1; channels <= 4; ++channels) {
         const Image8 written = allCodesImage(channels);
         const auto path = dir / ("codes" + std::to_string(channels) + ".png");
@@ -39,7 +39,7 @@ TEST(CapturePng, EightBitRoundTripIsExactForEveryChannelCount) {
 }
 
 TEST(CapturePng, StraightAlphaKeepsColourWhereAlphaIsZero) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     Image8 written = Image8::make(2, 1, 4);
     written.fill({200, 100, 50, 0});  // invisible, but its colour matters (e.g. for filtering)
     written.at(1, 0, 3) = 128;
@@ -58,7 +58,7 @@ TEST(CapturePng, StraightAlphaKeepsColourWhereAlphaIsZero) {
 }
 
 TEST(CapturePng, FloatImageIsWrittenAsExactSrgbCodesAndReadBackLinear) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     Image image = Image::make(256, 1, 3, AlphaMode::Straight);
     for (int x = 0; x < 256; ++x) image.at(x, 0, 0) = decodeSrgb8(static_cast<std::uint8_t>(x));
     image.at(0, 0, 1) = std::numeric_limits<float>::quiet_NaN();
@@ -78,7 +78,7 @@ TEST(CapturePng, FloatImageIsWrittenAsExactSrgbCodesAndReadBackLinear) {
 }
 
 TEST(CapturePng, PremultipliedImageIsStoredStraight) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     Image image = Image::make(1, 1, 4, AlphaMode::Premultiplied);
     image.fill({0.25f, 0.1f, 0.0f, 0.5f});
     const auto path = dir / "premultiplied.png";
@@ -90,7 +90,7 @@ TEST(CapturePng, PremultipliedImageIsStoredStraight) {
 }
 
 TEST(CapturePng, StoredValuesCanBeReadWithoutLinearising) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     Image8 written = Image8::make(1, 1, 3);
     written.fill({51, 102, 255});
     const auto path = dir / "stored.png";
@@ -103,7 +103,7 @@ TEST(CapturePng, StoredValuesCanBeReadWithoutLinearising) {
 }
 
 TEST(CapturePng, LayoutsPngCannotHoldAreRefused) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     EXPECT_THROW(writePng(dir / "five.png", Image::make(2, 2, 5)), engine::Error);
     EXPECT_THROW(writePng(dir / "rgbz.png", Image::make(2, 2, {"R", "G", "B", "Z"})), engine::Error);
     Image8 premultiplied = Image8::make(2, 2, 4, AlphaMode::Premultiplied);

@@ -40,7 +40,7 @@ void expectContains(const std::string& text, const std::string& part) {
     EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in: " << text;
 }
 
-std::filesystem::path writeValidPng(const capture_test::TempDir& dir, const std::string& name, int size) {
+std::filesystem::path writeValidPng(const ssam::testing::TempDir& dir, const std::string& name, int size) {
     Image8 image = Image8::make(size, size, 3);
     for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = static_cast<std::uint8_t>(i * 7919 % 251);
     const auto path = dir / name;
@@ -51,7 +51,7 @@ std::filesystem::path writeValidPng(const capture_test::TempDir& dir, const std:
 }  // namespace
 
 TEST(CaptureReadErrors, MissingFile) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const auto path = dir / "nowhere.png";
     const std::string what = errorOf([&] { readImage(path); });
     expectContains(what, path.string());
@@ -60,7 +60,7 @@ TEST(CaptureReadErrors, MissingFile) {
 }
 
 TEST(CaptureReadErrors, TruncatedPng) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const auto path = writeValidPng(dir, "truncated.png", 64);
     std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);  // header intact, data cut
     const std::string what = errorOf([&] { readImage(path); });
@@ -69,7 +69,7 @@ TEST(CaptureReadErrors, TruncatedPng) {
 }
 
 TEST(CaptureReadErrors, GarbageBytesNamedPng) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const auto path = dir / "garbage.png";
     std::ofstream(path, std::ios::binary) << std::string(300, '\x5a') << "definitely not an image";
     const std::string what = errorOf([&] { readImage(path); });
@@ -78,14 +78,14 @@ TEST(CaptureReadErrors, GarbageBytesNamedPng) {
 }
 
 TEST(CaptureReadErrors, EmptyFile) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const auto path = dir / "empty.png";
     std::ofstream{path};
     expectContains(errorOf([&] { readImage(path); }), path.string());
 }
 
 TEST(CaptureReadErrors, OverTheSizeCapIsRefusedBeforeReading) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const auto path = writeValidPng(dir, "large.png", 64);
 
     ReadOptions narrow;
@@ -104,12 +104,12 @@ TEST(CaptureReadErrors, OverTheSizeCapIsRefusedBeforeReading) {
 }
 
 TEST(CaptureReadErrors, DefaultCapAllowsOrdinaryImages) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const auto path = writeValidPng(dir, "ordinary.png", 64);
     EXPECT_NO_THROW(readImage(path));
 }
 
 TEST(CaptureReadErrors, DirectoryIsNotAnImage) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     expectContains(errorOf([&] { readImage(dir.path()); }), dir.path().string());
 }

@@ -34,7 +34,7 @@ void writeRaw(const std::filesystem::path& path, int width, int height, int chan
 }  // namespace
 
 TEST(CaptureTextureRead, TgaAlphaStaysStraight) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const std::vector<std::uint8_t> rgba = {200, 100, 50, 0, 10, 20, 30, 255};
     writeRaw(dir / "straight.tga", 2, 1, 4, OIIO::TypeDesc::UINT8, rgba);
     const Image8 codes = readImage8(dir / "straight.tga");
@@ -45,7 +45,7 @@ TEST(CaptureTextureRead, TgaAlphaStaysStraight) {
 }
 
 TEST(CaptureTextureRead, JpegIsStraightSrgbColour) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const std::vector<std::uint8_t> grey(8 * 8 * 3, 128);
     writeRaw(dir / "grey.jpg", 8, 8, 3, OIIO::TypeDesc::UINT8, grey);
     const Image image = readImage(dir / "grey.jpg");
@@ -55,7 +55,7 @@ TEST(CaptureTextureRead, JpegIsStraightSrgbColour) {
 }
 
 TEST(CaptureTextureRead, SixteenBitPngIsDecodedWithTheFloatCurve) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const std::vector<std::uint16_t> values = {0, 32768, 65535};
     writeRaw(dir / "sixteen.png", 1, 1, 3, OIIO::TypeDesc::UINT16, values);
     const Image image = readImage(dir / "sixteen.png");
@@ -66,7 +66,7 @@ TEST(CaptureTextureRead, SixteenBitPngIsDecodedWithTheFloatCurve) {
 }
 
 TEST(CaptureTextureRead, PngMarkedLinearIsNotDecoded) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     const std::vector<std::uint8_t> values = {51, 102, 204};
     writeRaw(dir / "linear.png", 1, 1, 3, OIIO::TypeDesc::UINT8, values, "linear");
     const Image image = readImage(dir / "linear.png");
@@ -75,7 +75,7 @@ TEST(CaptureTextureRead, PngMarkedLinearIsNotDecoded) {
 }
 
 TEST(CaptureTextureRead, ExrIsLinearAndPremultiplied) {
-    capture_test::TempDir dir;
+    ssam::testing::TempDir dir;
     Image image = Image::make(3, 2, 4);
     image.fill({0.25f, 2.5f, -0.125f, 0.5f});
     writeExr(dir / "plain.exr", image, ExrPixelType::Half);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_error.hpp"  // tests/support
 #include "engine/core/error.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
@@ -81,18 +82,6 @@ inline render::PipelineDesc pipelineDesc(const std::string& name,
     return d;
 }
 
-// Expects `fn` to throw engine::Error whose message contains `substring`.
-template <typename Fn>
-void expectError(Fn&& fn, const std::string& substring) {
-    try {
-        fn();
-        ADD_FAILURE() << "expected engine::Error containing \"" << substring << "\", nothing was thrown";
-    } catch (const engine::Error& e) {
-        EXPECT_NE(std::string(e.what()).find(substring), std::string::npos)
-            << "message \"" << e.what() << "\" lacks \"" << substring << "\"";
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "expected engine::Error, got another exception: " << e.what();
-    }
-}
+using ssam::testing::expectError;
 
 }  // namespace ssam::test::soft

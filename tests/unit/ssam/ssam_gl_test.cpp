@@ -15,6 +15,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "expect_error.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "quad_scene.hpp"
@@ -382,14 +383,7 @@ TEST(SsamGl, RestoresTheHostsGlState) {
     glDeleteTextures(1, &hostTexture);
 }
 
-void expectError(const std::function<void()>& f, const std::string& fragment) {
-    try {
-        f();
-        ADD_FAILURE() << "accepted; expected an error mentioning '" << fragment << "'";
-    } catch (const engine::Error& e) {
-        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-}
+using ssam::testing::expectError;
 
 TEST(SsamGl, BadInputIsRejectedWithClearErrors) {
     Host host;

@@ -7,14 +7,17 @@
 #include <filesystem>
 #include <string>
 
-namespace capture_test {
+namespace ssam::testing {
 
 class TempDir {
 public:
-    TempDir() {
+    // `prefix` names the test binary's area, e.g. "ssam_unit_capture".
+    explicit TempDir(const std::string& prefix = "ssam_test") {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = "ssam_unit_capture_" + std::to_string(::getpid());
+        std::string name = prefix + "_" + std::to_string(::getpid());
         if (info) name += std::string("_") + info->test_suite_name() + "_" + info->name();
+        for (char& c : name)
+            if (c == '/') c = '_';  // parameterised test names contain '/'
         path_ = std::filesystem::temp_directory_path() / name;
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
@@ -33,4 +36,4 @@ private:
     std::filesystem::path path_;
 };
 
-}  // namespace capture_test
+}  // namespace ssam::testing
