@@ -29,6 +29,20 @@ bool isAlphaName(std::string_view name) {
     return last == "A" || last == "a" || last == "alpha" || last == "Alpha";
 }
 
+// Image and Image8 differ only in their sample type.
+template <typename ImageT>
+ImageT makeZeroed(int width, int height, std::vector<std::string> channelNames, AlphaMode alpha) {
+    requireSize(width, height, channelNames.size());
+    ImageT image;
+    image.width = width;
+    image.height = height;
+    image.channels = static_cast<int>(channelNames.size());
+    image.channelNames = std::move(channelNames);
+    image.pixels.assign(image.pixelCount() * static_cast<std::size_t>(image.channels), 0);
+    image.alpha = alpha;
+    return image;
+}
+
 }  // namespace
 
 const char* alphaModeName(AlphaMode mode) {
@@ -55,15 +69,7 @@ int findAlphaChannel(std::span<const std::string> channelNames) {
 }
 
 Image Image::make(int width, int height, std::vector<std::string> channelNames, AlphaMode alpha) {
-    requireSize(width, height, channelNames.size());
-    Image image;
-    image.width = width;
-    image.height = height;
-    image.channels = static_cast<int>(channelNames.size());
-    image.channelNames = std::move(channelNames);
-    image.pixels.assign(image.pixelCount() * static_cast<std::size_t>(image.channels), 0.0f);
-    image.alpha = alpha;
-    return image;
+    return makeZeroed<Image>(width, height, std::move(channelNames), alpha);
 }
 
 Image Image::make(int width, int height, int channels, AlphaMode alpha) {
@@ -80,15 +86,7 @@ int Image::channelIndex(std::string_view name) const {
 }
 
 Image8 Image8::make(int width, int height, std::vector<std::string> channelNames, AlphaMode alpha) {
-    requireSize(width, height, channelNames.size());
-    Image8 image;
-    image.width = width;
-    image.height = height;
-    image.channels = static_cast<int>(channelNames.size());
-    image.channelNames = std::move(channelNames);
-    image.pixels.assign(image.pixelCount() * static_cast<std::size_t>(image.channels), 0);
-    image.alpha = alpha;
-    return image;
+    return makeZeroed<Image8>(width, height, std::move(channelNames), alpha);
 }
 
 Image8 Image8::make(int width, int height, int channels, AlphaMode alpha) {
