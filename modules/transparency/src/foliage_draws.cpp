@@ -53,4 +53,12 @@ DrawDesc batchDraw(const ssam::FoliageBatch& batch, PipelineHandle pipeline, Pro
     return ssam::foliageDraw(batch, pipeline, std::move(params));
 }
 
+std::vector<NamedTarget> ssamTargets(const ssam::Intermediates& t) {
+    std::vector<NamedTarget> out;
+    if (t.mask) out.push_back({t.maskAdd ? "mask_max" : "mask", t.mask});
+    if (t.maskAdd) out.push_back({"mask_add", t.maskAdd});
+    if (t.foliage) out.push_back({"foliage", t.foliage});
+    return out;
+}
+
 }  // namespace transparency::detail

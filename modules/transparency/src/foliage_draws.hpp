@@ -4,6 +4,7 @@
 // the same fragments the same way and differs only in how it combines them.
 #include <vector>
 
+#include "ssam/ssam.hpp"
 #include "transparency/technique.hpp"
 
 namespace transparency::detail {
@@ -28,5 +29,8 @@ engine::render::PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const c
 // One draw of a batch (all its instances, or `instances`/`instanceCount` when given).
 engine::render::DrawDesc batchDraw(const ssam::FoliageBatch& batch, engine::render::PipelineHandle pipeline,
                                    engine::render::ProgramParams params);
+
+// SSAM's targets for captures, named as the racer's layers: mask (or mask_max + mask_add), foliage.
+std::vector<NamedTarget> ssamTargets(const ssam::Intermediates& targets);
 
 }  // namespace transparency::detail

@@ -69,14 +69,7 @@ public:
         backend_.endPass();
     }
 
-    std::vector<NamedTarget> intermediates() const override {
-        const ssam::Intermediates t = ssam_.intermediates();
-        std::vector<NamedTarget> out;
-        if (t.mask) out.push_back({t.maskAdd ? "mask_max" : "mask", t.mask});
-        if (t.maskAdd) out.push_back({"mask_add", t.maskAdd});
-        if (t.foliage) out.push_back({"foliage", t.foliage});
-        return out;
-    }
+    std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
 
 private:
     Backend& backend_;

@@ -22,14 +22,7 @@ public:
         ssam_.render({opaque.color(), opaque.depth()}, {frame.viewProj, frame.light, batches_});
     }
 
-    std::vector<NamedTarget> intermediates() const override {
-        const ssam::Intermediates t = ssam_.intermediates();
-        std::vector<NamedTarget> out;
-        if (t.mask) out.push_back({t.maskAdd ? "mask_max" : "mask", t.mask});
-        if (t.maskAdd) out.push_back({"mask_add", t.maskAdd});
-        if (t.foliage) out.push_back({"foliage", t.foliage});
-        return out;
-    }
+    std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
 
 private:
     ssam::ScreenSpaceAlphaMask ssam_;
