@@ -103,49 +103,13 @@ SceneCamera framingCamera(const assets::Bounds& sceneBounds, float aspect) {
     return finish(c, world, render::perspectiveReverseZ(kAutoCameraFovY, aspect, c.nearPlane, c.farPlane));
 }
 
-int opaqueTexturesIgnoreAlpha(assets::LoadedModel& model) {
-    std::map<int, int> opaqueTextureOf;  // texture -> its copy with an alpha-255 image
-    for (assets::Material& material : model.materials) {
-        if (material.alphaMode != assets::AlphaMode::Opaque || material.baseColorTexture.texture < 0) continue;
-        const int textureIndex = material.baseColorTexture.texture;
-        const auto known = opaqueTextureOf.find(textureIndex);
-        if (known != opaqueTextureOf.end()) {
-            material.baseColorTexture.texture = known->second;
-            continue;
-        }
-        const assets::Texture& texture = model.textures.at(static_cast<std::size_t>(textureIndex));
-        if (texture.image < 0) continue;
-        const assets::Image& image = model.images.at(static_cast<std::size_t>(texture.image));
-        bool hasAlpha = false;
-        for (std::size_t i = 3; i < image.pixels.pixels.size() && !hasAlpha; i += 4) hasAlpha = image.pixels.pixels[i] != 255;
-        if (!hasAlpha) {
-            opaqueTextureOf[textureIndex] = textureIndex;
-            continue;
-        }
-        assets::Image copy = image;
-        copy.name += " (alpha ignored: OPAQUE)";
-        for (std::size_t i = 3; i < copy.pixels.pixels.size(); i += 4) copy.pixels.pixels[i] = 255;
-        assets::Texture textureCopy = texture;
-        textureCopy.image = static_cast<int>(model.images.size());
-        model.images.push_back(std::move(copy));
-        model.textures.push_back(textureCopy);
-        const int copyIndex = static_cast<int>(model.textures.size() - 1);
-        opaqueTextureOf[textureIndex] = copyIndex;
-        material.baseColorTexture.texture = copyIndex;
-    }
-    int made = 0;
-    for (const auto& [original, copy] : opaqueTextureOf) made += original != copy;
-    return made;
-}
 
 namespace {
 
 assets::LoadedModel load(const GltfSceneOptions& options) {
     assets::LoadOptions load;
     load.scene = options.sceneIndex;
-    assets::LoadedModel model = assets::loadGltf(options.file, load);
-    opaqueTexturesIgnoreAlpha(model);
-    return model;
+    return assets::loadGltf(options.file, load);
 }
 
 }  // namespace

@@ -4,8 +4,8 @@
 // parts by the MeshLibrary), seen through the file's camera or, when it has none, through
 // an automatic camera that frames the scene's bounds from the front.
 //
-// Alpha follows glTF 2.0 §3.9.4: OPAQUE ignores alpha entirely (its textures are uploaded
-// with alpha forced to 1, see opaqueTexturesIgnoreAlpha), MASK is the foliage the chosen
+// Alpha follows glTF 2.0 §3.9.4: OPAQUE ignores alpha entirely (the MeshLibrary uploads
+// their textures with alpha 1), MASK is the foliage the chosen
 // technique draws, BLEND is straight-alpha "over" drawn after both, back to front per
 // primitive (extractDrawLists).
 #include <filesystem>
@@ -52,12 +52,6 @@ SceneCamera fileCamera(const engine::assets::Camera& camera, const glm::mat4& no
 // The automatic camera for world-space bounds (an empty scene: a unit box at the origin).
 SceneCamera framingCamera(const engine::assets::Bounds& bounds, float aspect);
 
-// glTF 2.0 §3.9.4: "OPAQUE: the rendered output is fully opaque and any alpha value is
-// ignored". The MeshLibrary filters textures premultiplied (seeds/002), which would darken
-// an OPAQUE texel by its alpha (to black at alpha 0); so every OPAQUE material whose texture
-// has alpha below 1 gets a copy of the image with alpha 255 (shared textures are copied,
-// not changed, so MASK and BLEND users keep their alpha). Returns how many images were made.
-int opaqueTexturesIgnoreAlpha(engine::assets::LoadedModel& model);
 
 class GltfScene {
 public:

@@ -39,20 +39,25 @@ ModelId MeshLibrary::add(const std::string& name, const std::vector<Vertex>& ver
 }
 
 ModelId MeshLibrary::add(const assets::LoadedModel& model) {
-    std::map<std::pair<int, bool>, TextureHandle> uploaded;  // (image, coverage mips) -> texture
+    // (image, alpha mode) -> texture: one image can be uploaded once per way it is used.
+    std::map<std::pair<int, assets::AlphaMode>, TextureHandle> uploaded;
     auto textureFor = [&](const assets::Material& m) -> TextureBinding {
         if (m.baseColorTexture.texture < 0) return {};
         const assets::Texture& t = model.textures.at(m.baseColorTexture.texture);
         if (t.image < 0 || model.images.at(t.image).pixels.pixels.empty()) return {};
-        const bool masked = m.alphaMode == assets::AlphaMode::Mask;
-        auto [it, fresh] = uploaded.try_emplace({t.image, masked});
+        auto [it, fresh] = uploaded.try_emplace({t.image, m.alphaMode});
         if (fresh) {
-            const assets::RgbaImage& pixels = model.images[t.image].pixels;
+            assets::RgbaImage pixels = model.images[t.image].pixels;
+            // glTF 2.0 §3.9.4: OPAQUE ignores alpha entirely. Premultiplied filtering would
+            // darken such a texel by its alpha (to black at 0), so its alpha becomes 1 here.
+            if (m.alphaMode == assets::AlphaMode::Opaque)
+                for (std::size_t i = 3; i < pixels.pixels.size(); i += 4) pixels.pixels[i] = 255;
             // Premultiplied mips filter correctly (seeds/002); masked ones also keep their
             // alpha-test coverage per level.
             const std::vector<assets::RgbaImage> levels =
-                masked ? assets::generateCoveragePreservingMips(pixels, m.alphaCutoff)
-                       : assets::generateMips(pixels, {AlphaMode::Premultiplied, -1.0f, 0});
+                m.alphaMode == assets::AlphaMode::Mask
+                    ? assets::generateCoveragePreservingMips(pixels, m.alphaCutoff)
+                    : assets::generateMips(pixels, {AlphaMode::Premultiplied, -1.0f, 0});
             TextureDesc desc;
             desc.name = model.source.filename().string() + ":" + model.images[t.image].name;
             desc.width = pixels.width;
