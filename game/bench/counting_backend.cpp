@@ -70,6 +70,9 @@ public:
         count_.destroyed(key(buffer), false);
     }
     void destroy(PipelineHandle pipeline) override { inner_.destroy(pipeline); }
+    QueryHandle createQuery(const std::string& name) override { return inner_.createQuery(name); }
+    void destroy(QueryHandle query) override { inner_.destroy(query); }
+    bool anySamplesPassed(QueryHandle query) override { return inner_.anySamplesPassed(query); }
     const TextureDesc& describe(TextureHandle texture) const override { return inner_.describe(texture); }
     PipelineInfo pipelineInfo(PipelineHandle pipeline) const override { return inner_.pipelineInfo(pipeline); }
     void beginPass(const PassDesc& pass) override { inner_.beginPass(pass); }

@@ -34,7 +34,8 @@ std::string passTimings(engine::render::Backend& backend) {
     std::string passes;
     for (const auto& t : backend.takeTimings()) {
         char buf[96];
-        std::snprintf(buf, sizeof buf, " %s %.1f", t.pass.c_str(), t.milliseconds);
+        if (t.skipped) std::snprintf(buf, sizeof buf, " %s skipped", t.pass.c_str());
+        else std::snprintf(buf, sizeof buf, " %s %.1f", t.pass.c_str(), t.milliseconds);
         passes += buf;
     }
     return passes;

@@ -165,6 +165,7 @@ class ClippingConformance : public BackendTest {};
 class MsaaResolveConformance : public BackendTest {};
 class TextureConformance : public BackendTest {};
 class RasterConformance : public BackendTest {};
+class OcclusionQueryConformance : public BackendTest {};
 
 }  // namespace ssam::test
 
@@ -179,4 +180,5 @@ class RasterConformance : public BackendTest {};
     INSTANTIATE_TEST_SUITE_P(prefix, ClippingConformance, generator, ::ssam::test::BackendCaseName());        \
     INSTANTIATE_TEST_SUITE_P(prefix, MsaaResolveConformance, generator, ::ssam::test::BackendCaseName());     \
     INSTANTIATE_TEST_SUITE_P(prefix, TextureConformance, generator, ::ssam::test::BackendCaseName());       \
-    INSTANTIATE_TEST_SUITE_P(prefix, RasterConformance, generator, ::ssam::test::BackendCaseName())
+    INSTANTIATE_TEST_SUITE_P(prefix, RasterConformance, generator, ::ssam::test::BackendCaseName());        \
+    INSTANTIATE_TEST_SUITE_P(prefix, OcclusionQueryConformance, generator, ::ssam::test::BackendCaseName())

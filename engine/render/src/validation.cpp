@@ -45,6 +45,20 @@ void validateBuffer(const BufferDesc& desc, std::span<const std::byte> data, con
                     "-byte buffer");
 }
 
+Error uncountedQueryError(const std::string& queryName) {
+    return Error("occlusion query " + quotedName(queryName) + " is read before any pass counted into it");
+}
+
+void checkQueryUse(QueryHandle query, const std::string& queryName, const PassDesc* open, bool destroying) {
+    if (!open) return;
+    if (open->countSamplesInto == query)
+        throw Error("occlusion query " + quotedName(queryName) + (destroying ? " destroyed" : " read") + " while pass " +
+                    quotedName(open->name) + " counts into it");
+    if (destroying && open->drawOnlyIfSamplesIn == query)
+        throw Error("occlusion query " + quotedName(queryName) + " destroyed while pass " + quotedName(open->name) +
+                    " draws only if it found samples");
+}
+
 PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup) {
     const std::string what = "pass " + quotedName(pass.name);
     PassExtent extent;
@@ -69,6 +83,8 @@ PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup) {
         checkSize(t);
     }
     if (extent.width == 0) throw Error(what + " has no attachments");
+    if (pass.countSamplesInto && pass.countSamplesInto == pass.drawOnlyIfSamplesIn)
+        throw Error(what + ": draws only if samples are in the occlusion query it counts into");
     return extent;
 }
 
@@ -99,6 +115,8 @@ void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& ext
     if (d.params.index() != paramsIndexFor(p.program))
         throw Error(what + ": parameters do not match program " + programKindName(p.program));
     if (p.depth.test && !pass.depth.texture) throw Error(what + ": depth test on but the pass has no depth target");
+    if (pass.countSamplesInto && (p.alphaTest.enabled || p.alphaTest.alphaToCoverage))
+        throw Error(what + ": alpha test or alpha-to-coverage in a pass that counts samples into an occlusion query");
 
     if (isFullscreen(p.program)) {
         // Full-screen programs read their inputs at every target pixel.

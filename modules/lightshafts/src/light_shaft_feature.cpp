@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "sun_visibility.hpp"
 
 namespace lightshafts {
 
@@ -30,12 +31,16 @@ LightShaftFeature::LightShaftFeature(Backend& backend, const LightShaftOptions& 
     p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
                   BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
     pipeline_ = backend.createPipeline(p);
+    if (options_.skipWhenSunHidden) probe_ = std::make_unique<SunVisibilityProbe>(backend);
 }
 
 LightShaftFeature::~LightShaftFeature() { backend_.destroy(pipeline_); }
 
+bool LightShaftFeature::sunVisible() const { return !lastQuery_ || backend_.anySamplesPassed(*lastQuery_); }
+
 void LightShaftFeature::render(const engine::scene::FeatureFrame& frame) {
     ran_ = false;
+    lastQuery_.reset();
     // The sun is a direction: a point at infinity (w = 0). Behind the camera: no shafts.
     const glm::vec3 toward = glm::normalize(frame.sun.towardLight);
     const glm::vec4 clip = frame.viewProj * glm::vec4(toward, 0.0f);
@@ -57,6 +62,15 @@ void LightShaftFeature::render(const engine::scene::FeatureFrame& frame) {
     PassDesc pass;
     pass.name = "light shafts";
     pass.color[0] = {frame.color, LoadOp::Load};
+    if (probe_) {
+        // A sample q adds light only when |q - sun| < glowRadius and its texel floor(q) is sky;
+        // that texel's centre is within glowRadius + sqrt(2)/2 of the sun, so probing the
+        // centres within glowRadius + 1 finds every texel that could add light.
+        lastQuery_ = probe_->probe(frame.depth, frame.width, frame.height, frame.depthFunc, sunPixel_,
+                                   params.glowRadius + 1.0f);
+        if (!lastQuery_) return;  // the glow misses the frame: nothing to add
+        pass.drawOnlyIfSamplesIn = *lastQuery_;
+    }
     backend_.beginPass(pass);
     DrawDesc d;
     d.pipeline = pipeline_;

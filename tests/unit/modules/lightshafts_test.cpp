@@ -2,60 +2,35 @@
 // foliage over the sun blocks them (seeds/000 §3.7); off behind the camera; bad input.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 #include "engine/core/error.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "lightshafts/light_shaft_feature.hpp"
-#include "living_frame.hpp"
+#include "shaft_scene.hpp"
 
 namespace {
 
 using namespace engine;
-using living::testing::addRectangle;
-using living::testing::place;
+using living::testing::Card;
+using living::testing::kSunAhead;
+using living::testing::ShaftScene;
+constexpr int kW = ShaftScene::kW, kH = ShaftScene::kH;
 
-constexpr int kW = 64, kH = 48;
+std::unique_ptr<render::Backend> soft() { return render::soft::createSoftBackend({1, 64, false}); }
 
-struct ShaftScene {
-    std::unique_ptr<render::soft::SoftBackend> backend = render::soft::createSoftBackend({1, 64, false});
-    scene::MeshLibrary library{*backend};
-    ecs::Registry registry;
-    living::testing::LivingFrame frame{*backend, library, kW, kH};
-    // Looking at the sun: light comes from straight ahead and a little up.
-    living::testing::Camera camera{{0, 0, 0}, {0.0f, 0.15f, 1.0f}, 1.0f};
+// The previous tests' scenes: open sky, or a small tree right over the sun.
+std::vector<Card> treeOverSun(bool tree) {
+    if (!tree) return {};
+    return {{-1.5f, -1.0f, 1.5f, 3.0f, 8.0f}};
+}
 
-    explicit ShaftScene(bool treeOverSun) {
-        // Ground-ish wall at the bottom; optionally a foliage card right over the sun.
-        place(registry, addRectangle(library, "hill", -30, -30, 30, -2, 20.0f, scene::SurfaceClass::Opaque,
-                                     {0.3f, 0.4f, 0.2f, 1.0f}));
-        if (treeOverSun)
-            place(registry, addRectangle(library, "tree", -1.5f, -1.0f, 1.5f, 3.0f, 8.0f, scene::SurfaceClass::Mask,
-                                         {0.2f, 0.5f, 0.1f, 1.0f}));
-    }
-    render::Readback render(scene::Feature* f, const glm::vec3& towardSun) {
-        std::vector<scene::Feature*> features;
-        if (f) features.push_back(f);
-        sun = towardSun;
-        return renderWithSun(features);
-    }
-    glm::vec3 sun{0, 0, 1};
-
-private:
-    render::Readback renderWithSun(const std::vector<scene::Feature*>& features) {
-        struct SunOverride final : scene::Feature {
-            std::vector<scene::Feature*> inner;
-            glm::vec3 toward;
-            std::string_view name() const override { return "sun"; }
-            void render(const scene::FeatureFrame& f) override {
-                scene::FeatureFrame g = f;
-                g.sun.towardLight = toward;
-                for (scene::Feature* i : inner) i->render(g);
-            }
-        } wrapper;
-        wrapper.inner = features;
-        wrapper.toward = sun;
-        return frame.render(registry, camera, 0.0f, {&wrapper});
-    }
-};
+const render::PassTiming* findPass(const std::vector<render::PassTiming>& timings, const std::string& name) {
+    for (const render::PassTiming& t : timings)
+        if (t.pass == name) return &t;
+    return nullptr;
+}
 
 float added(const render::Readback& with, const render::Readback& without, int x, int y) {
     return (with.at(x, y, 0) - without.at(x, y, 0)) + (with.at(x, y, 1) - without.at(x, y, 1)) +
@@ -63,8 +38,8 @@ float added(const render::Readback& with, const render::Readback& without, int x
 }
 
 TEST(LightShafts, FoliageOverTheSunBlocksTheShafts) {
-    const glm::vec3 sun = glm::normalize(glm::vec3(0.0f, 0.15f, 1.0f));  // straight ahead
-    ShaftScene open(false), blocked(true);
+    const glm::vec3 sun = kSunAhead;
+    ShaftScene open(soft(), treeOverSun(false)), blocked(soft(), treeOverSun(true));
     lightshafts::LightShaftFeature a(*open.backend), b(*blocked.backend);
     const render::Readback openWith = open.render(&a, sun), openWithout = open.render(nullptr, sun);
     const render::Readback blockedWith = blocked.render(&b, sun), blockedWithout = blocked.render(nullptr, sun);
@@ -81,20 +56,107 @@ TEST(LightShafts, FoliageOverTheSunBlocksTheShafts) {
 }
 
 TEST(LightShafts, OffWhenTheSunIsBehindOrTheModuleIsOff) {
-    ShaftScene s(false);
+    ShaftScene s(soft(), treeOverSun(false));
     lightshafts::LightShaftFeature f(*s.backend);
     s.backend->takeTimings();
     const render::Readback behind = s.render(&f, {0.0f, 0.3f, -1.0f});
     EXPECT_FALSE(f.ranLastFrame());
-    for (const auto& t : s.backend->takeTimings()) EXPECT_NE(t.pass, "light shafts");
+    for (const auto& t : s.backend->takeTimings()) EXPECT_EQ(t.pass.find("light shafts"), std::string::npos) << t.pass;
     EXPECT_EQ(behind.values, s.render(nullptr, {0.0f, 0.3f, -1.0f}).values);
     s.render(&f, {0.0f, 0.15f, 1.0f});
     const auto timings = s.backend->takeTimings();
     EXPECT_TRUE(std::any_of(timings.begin(), timings.end(), [](const auto& t) { return t.pass == "light shafts"; }));
 }
 
+// The sun is fully occluded when no sky is left within its glow: the pass is skipped (its
+// draw does not run) and the frame is bit-identical to running it, which adds exactly 0.
+TEST(LightShafts, SkippedWhenTheSunIsFullyOccluded) {
+    ShaftScene s(soft(), living::testing::canopyOverTheSun());
+    lightshafts::LightShaftFeature probed(*s.backend);
+    lightshafts::LightShaftOptions always;
+    always.skipWhenSunHidden = false;
+    lightshafts::LightShaftFeature forced(*s.backend, always);
+    s.backend->takeTimings();
+    const render::Readback skipped = s.render(&probed, kSunAhead);
+    const auto timings = s.backend->takeTimings();
+    ASSERT_TRUE(probed.ranLastFrame());
+    EXPECT_FALSE(probed.sunVisible());
+    const render::PassTiming* shafts = findPass(timings, "light shafts");
+    ASSERT_NE(shafts, nullptr);
+    EXPECT_TRUE(shafts->skipped);
+    ASSERT_NE(findPass(timings, "light shafts: sun visibility"), nullptr);
+    // Sky (the reverse-Z clear, 0) shows elsewhere, so a probe of the whole frame would not skip.
+    const render::Readback depth = s.backend->readback(s.frame.opaque.depth());
+    EXPECT_EQ(depth.at(1, 1, 0), 0.0f);
+    EXPECT_EQ(depth.at(kW - 2, 1, 0), 0.0f);
+    EXPECT_GT(depth.at(kW / 2, kH / 2, 0), 0.0f);
+    const render::Readback without = s.render(nullptr, kSunAhead);
+    const render::Readback run = s.render(&forced, kSunAhead);
+    EXPECT_FALSE(findPass(s.backend->takeTimings(), "light shafts")->skipped);
+    EXPECT_EQ(skipped.values, run.values) << "skipping changed the frame";
+    EXPECT_EQ(skipped.values, without.values);
+}
+
+// One column of sky through the canopy at the sun is enough: the pass runs and adds light.
+TEST(LightShafts, RunsWhenASlitOfSkyShowsAtTheSun) {
+    ShaftScene s(soft(), living::testing::canopyWithAGap());
+    lightshafts::LightShaftFeature f(*s.backend);
+    s.backend->takeTimings();
+    const render::Readback with = s.render(&f, kSunAhead);
+    EXPECT_TRUE(f.sunVisible());
+    EXPECT_FALSE(findPass(s.backend->takeTimings(), "light shafts")->skipped);
+    const render::Readback without = s.render(nullptr, kSunAhead);
+    float sum = 0.0f;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) sum += added(with, without, x, y);
+    EXPECT_GT(sum, 0.05f) << "the slit casts a shaft";
+}
+
+// Skipping is exact, never a guess: canopies with a small hole at random places around the
+// rim of the glow, where a texel half in the glow could be missed, give the same bits with
+// the probe as with the pass forced on, and both outcomes occur.
+TEST(LightShafts, SkippingNeverChangesTheFrame) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const float pixelsPerUnit = float(kH) / (2.0f * std::tan(0.5f) * 8.0f);  // at z = 8
+    const float glow = 0.3f * float(kH);
+    int skips = 0, runs = 0;
+    for (int i = 0; i < 24; ++i) {
+        const float angle = 6.2831853f * unit(random);
+        const float distance = (glow - 2.0f + 4.0f * unit(random)) / pixelsPerUnit;
+        const float half = (0.05f + 0.1f * unit(random)) / 2.0f;
+        const float hx = distance * std::cos(angle), hy = 1.2f + distance * std::sin(angle);  // the sun is at y 1.2
+        const std::vector<Card> canopy = {{-4.0f, -2.8f, hx - half, 5.2f, 8.0f},
+                                          {hx + half, -2.8f, 4.0f, 5.2f, 8.0f},
+                                          {hx - half, -2.8f, hx + half, hy - half, 8.0f},
+                                          {hx - half, hy + half, hx + half, 5.2f, 8.0f}};
+        ShaftScene s(soft(), canopy);
+        lightshafts::LightShaftFeature probed(*s.backend);
+        lightshafts::LightShaftOptions always;
+        always.skipWhenSunHidden = false;
+        lightshafts::LightShaftFeature forced(*s.backend, always);
+        const render::Readback a = s.render(&probed, kSunAhead);
+        (probed.sunVisible() ? runs : skips) += 1;
+        ASSERT_EQ(a.values, s.render(&forced, kSunAhead).values) << "hole " << i << " at " << hx << "," << hy;
+    }
+    EXPECT_GT(skips, 0);
+    EXPECT_GT(runs, 0);
+}
+
+// A sun in front of the camera whose glow misses the frame casts nothing: no pass at all.
+TEST(LightShafts, OffWhenTheGlowMissesTheFrame) {
+    ShaftScene s(soft(), treeOverSun(false));
+    lightshafts::LightShaftFeature f(*s.backend);
+    s.backend->takeTimings();
+    s.render(&f, glm::normalize(glm::vec3(1.0f, 0.15f, 0.6f)));  // far to the side, in front
+    EXPECT_FALSE(f.ranLastFrame());
+    const float glow = 0.3f * kH + 1.0f;
+    EXPECT_TRUE(f.sunPixel().x < -glow || f.sunPixel().x > float(kW) + glow) << f.sunPixel().x;
+    for (const auto& t : s.backend->takeTimings()) EXPECT_EQ(t.pass.find("light shafts"), std::string::npos) << t.pass;
+}
+
 TEST(LightShafts, DeterministicAndBadInputRefused) {
-    ShaftScene s(true);
+    ShaftScene s(soft(), treeOverSun(true));
     lightshafts::LightShaftFeature f(*s.backend);
     const glm::vec3 sun{0.2f, 0.3f, 1.0f};
     EXPECT_EQ(s.render(&f, sun).values, s.render(&f, sun).values);

@@ -187,6 +187,15 @@ struct ProgramSlot {
 struct PendingTiming {
     std::string pass;
     GLuint query = 0;
+    GLuint condition = 0;  // the pass's drawOnlyIfSamplesIn query object, read for `skipped`
+};
+
+// An occlusion query handle's GL query object (GL_ANY_SAMPLES_PASSED), made at the first
+// pass that counts into it.
+struct GlQuery {
+    std::string name;
+    GLuint id = 0;
+    bool counted = false;
 };
 
 void KHRONOS_APIENTRY onDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
@@ -200,7 +209,7 @@ class GlBackendImpl final : public GlBackend {
 public:
     GlBackendImpl(const GlOptions& options, std::shared_ptr<GlContext> context)
         : options_(options), context_(std::move(context)), textures_("texture"), buffers_("buffer"),
-          pipelines_("pipeline"),
+          pipelines_("pipeline"), queries_("occlusion query"),
           lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
                   [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
                   [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).shadow); },
@@ -272,6 +281,7 @@ public:
             if (s) glDeleteSamplers(1, &s);
         for (const PendingTiming& p : pendingTimings_) glDeleteQueries(1, &p.query);
         if (passQuery_) glDeleteQueries(1, &passQuery_);
+        for (GLuint q : occlusionQueries_) glDeleteQueries(1, &q);
         glDeleteBuffers(1, &identityInstance_);
         glDeleteVertexArrays(1, &vao_);
         glDeleteVertexArrays(1, &emptyVao_);
@@ -457,6 +467,28 @@ public:
 
     void destroy(PipelineHandle h) override { pipelines_.remove(h); }
 
+    QueryHandle createQuery(const std::string& name) override { return queries_.add({name}); }
+
+    void destroy(QueryHandle h) override {
+        const GlQuery q = queries_.get(h);
+        checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, true);
+        queries_.remove(h);
+        if (q.id) {
+            makeCurrent();
+            releaseQueryObject(q.id);
+        }
+    }
+
+    bool anySamplesPassed(QueryHandle h) override {
+        const GlQuery& q = queries_.get(h);
+        checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, false);
+        if (!q.counted) throw uncountedQueryError(q.name);
+        makeCurrent();
+        GLuint any = 0;
+        glGetQueryObjectuiv(q.id, GL_QUERY_RESULT, &any);
+        return any != 0;
+    }
+
     const TextureDesc& describe(TextureHandle h) const override { return textures_.get(h).desc; }
     PipelineInfo pipelineInfo(PipelineHandle h) const override { return pipelines_.get(h).info; }
 
@@ -465,6 +497,9 @@ public:
     void beginPass(const PassDesc& pass) override {
         if (pass_) throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
         const PassExtent extent = validatePass(pass, lookup_);
+        if (pass.countSamplesInto) queries_.get(pass.countSamplesInto);  // alive, or a clear error now
+        if (pass.drawOnlyIfSamplesIn && !queries_.get(pass.drawOnlyIfSamplesIn).counted)
+            throw uncountedQueryError(queries_.get(pass.drawOnlyIfSamplesIn).name);
         const int width = extent.width, height = extent.height, samples = extent.samples;
         int actual = 1;  // the samples the driver really gave (llvmpipe: 4 for 2)
         std::vector<GLuint> colorIds;
@@ -522,6 +557,26 @@ public:
             passQuery_ = 0;
             throw;
         }
+        // Queries begin after the clears (glClearTexImage passes no samples and is not
+        // conditional anyway): only the pass's draws are counted, or skipped.
+        if (pass.countSamplesInto) {
+            GlQuery& q = queries_.get(pass.countSamplesInto);
+            // A pending timing still has to read the object's last result: count into a new one.
+            if (q.id && conditionPending(q.id)) {
+                retiredQueries_.push_back(q.id);
+                q.id = 0;
+            }
+            if (!q.id) {
+                glCreateQueries(GL_ANY_SAMPLES_PASSED, 1, &q.id);
+                occlusionQueries_.insert(q.id);
+            }
+            glBeginQuery(GL_ANY_SAMPLES_PASSED, q.id);
+        }
+        passCondition_ = 0;
+        if (pass.drawOnlyIfSamplesIn) {
+            passCondition_ = queries_.get(pass.drawOnlyIfSamplesIn).id;
+            glBeginConditionalRender(passCondition_, GL_QUERY_WAIT);
+        }
         pass_ = pass;
         passWidth_ = width, passHeight_ = height, passSamples_ = samples, passActualSamples_ = actual;
         passFbo_ = fbo;
@@ -537,8 +592,13 @@ public:
     void endPass() override {
         if (!pass_) throw Error("endPass without beginPass");
         makeCurrent();
+        if (passCondition_) glEndConditionalRender();
+        if (pass_->countSamplesInto) {
+            glEndQuery(GL_ANY_SAMPLES_PASSED);
+            queries_.get(pass_->countSamplesInto).counted = true;
+        }
         glEndQuery(GL_TIME_ELAPSED);
-        pendingTimings_.push_back({pass_->name, std::exchange(passQuery_, 0u)});
+        pendingTimings_.push_back({pass_->name, std::exchange(passQuery_, 0u), std::exchange(passCondition_, 0u)});
         pass_.reset();
         targets_.clear();
         checkGl("pass: ending");
@@ -658,9 +718,12 @@ public:
             GLuint64 ns = 0;
             glGetQueryObjectui64v(p.query, GL_QUERY_RESULT, &ns);
             glDeleteQueries(1, &p.query);
-            out.push_back({p.pass, double(ns) / 1.0e6});
+            GLuint any = 1;
+            if (p.condition) glGetQueryObjectuiv(p.condition, GL_QUERY_RESULT, &any);
+            out.push_back({p.pass, double(ns) / 1.0e6, any == 0});
         }
         pendingTimings_.clear();
+        for (GLuint q : std::exchange(retiredQueries_, {})) releaseQueryObject(q);
         return out;
     }
 
@@ -800,6 +863,21 @@ private:
         }
         framebuffers_.emplace(std::move(key), fbo);
         return fbo;
+    }
+
+    bool conditionPending(GLuint query) const {
+        return std::any_of(pendingTimings_.begin(), pendingTimings_.end(),
+                           [&](const PendingTiming& p) { return p.condition == query; });
+    }
+
+    // Deleted now, or once the pending timing that reads it is taken.
+    void releaseQueryObject(GLuint query) {
+        if (conditionPending(query)) {
+            retiredQueries_.push_back(query);
+            return;
+        }
+        glDeleteQueries(1, &query);
+        occlusionQueries_.erase(query);
     }
 
     void forgetFramebuffersOf(GLuint texture) {
@@ -1117,7 +1195,8 @@ private:
         }
 
         auto applyStep = [&](const PlanStep& step) {
-            bool writes = step.depthWrite;
+            // A step that writes nothing is not drawn, unless an occlusion query counts its samples.
+            bool writes = step.depthWrite || pass_->countSamplesInto;
             for (std::size_t i = 0; i < targets_.size(); ++i) {
                 const std::uint8_t m = masks[i] & step.channels;
                 writes = writes || m;
@@ -1169,6 +1248,7 @@ private:
     ResourcePool<TextureTag, GlTexture> textures_;
     ResourcePool<BufferTag, GlBuffer> buffers_;
     ResourcePool<PipelineTag, GlPipeline> pipelines_;
+    ResourcePool<QueryTag, GlQuery> queries_;
     ResourceLookup lookup_;  // what the shared validation reads
     std::set<GLuint> ownedTextures_, ownedBuffers_;
     std::map<GLenum, int> maxSamplesByFormat_;
@@ -1182,8 +1262,10 @@ private:
     std::optional<PassDesc> pass_;
     std::vector<Target> targets_;  // the pass's colour attachments, packed (soft: colorTargets)
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1, passActualSamples_ = 1;
-    GLuint passFbo_ = 0, passQuery_ = 0;
+    GLuint passFbo_ = 0, passQuery_ = 0, passCondition_ = 0;
     std::vector<PendingTiming> pendingTimings_;
+    std::set<GLuint> occlusionQueries_;  // every GL query object behind a QueryHandle, live or retired
+    std::vector<GLuint> retiredQueries_;  // replaced while a pending timing reads them
 };
 
 }  // namespace

@@ -64,12 +64,24 @@ bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite
     return true;
 }
 
+// An occlusion query: what the last pass that counted into it found.
+struct SoftQuery {
+    std::string name;
+    bool counted = false;
+    bool anyPassed = false;
+};
+
+bool resultOf(const SoftQuery& query) {
+    if (!query.counted) throw uncountedQueryError(query.name);
+    return query.anyPassed;
+}
+
 class SoftBackendImpl final : public SoftBackend {
 public:
     explicit SoftBackendImpl(const SoftOptions& options)
         : options_(options),
           arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic),
-          textures_("texture"), buffers_("buffer"), pipelines_("pipeline"),
+          textures_("texture"), buffers_("buffer"), pipelines_("pipeline"), queries_("occlusion query"),
           lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
                   [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
                   [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).bytes); },
@@ -155,15 +167,29 @@ public:
     void destroy(BufferHandle h) override { buffers_.remove(h); }
     void destroy(PipelineHandle h) override { pipelines_.remove(h); }
 
+    QueryHandle createQuery(const std::string& name) override { return queries_.add({name}); }
+    void destroy(QueryHandle h) override {
+        checkQueryUse(h, queries_.get(h).name, pass_ ? &*pass_ : nullptr, true);
+        queries_.remove(h);
+    }
+    bool anySamplesPassed(QueryHandle h) override {
+        checkQueryUse(h, queries_.get(h).name, pass_ ? &*pass_ : nullptr, false);
+        return resultOf(queries_.get(h));
+    }
+
     const TextureDesc& describe(TextureHandle h) const override { return textures_.get(h).desc; }
     PipelineInfo pipelineInfo(PipelineHandle h) const override { return pipelines_.get(h).info; }
 
     void beginPass(const PassDesc& pass) override {
         if (pass_) throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
         const PassExtent extent = validatePass(pass, lookup_);
+        if (pass.countSamplesInto) queries_.get(pass.countSamplesInto);  // alive, or a clear error now
+        const bool skipped = pass.drawOnlyIfSamplesIn && !resultOf(queries_.get(pass.drawOnlyIfSamplesIn));
         pass_ = pass;
         passWidth_ = extent.width, passHeight_ = extent.height, passSamples_ = extent.samples;
         passStart_ = Clock::now();
+        passSkipped_ = skipped;
+        passTouched_ = 0;
         draws_.clear();
         for (const ColorAttachment& c : pass.color)
             if (c.texture && c.load == LoadOp::Clear) clear(textures_.get(c.texture), c.clear);
@@ -194,8 +220,13 @@ public:
             }
         } close{*this};
         execute();
+        if (pass_->countSamplesInto) {
+            SoftQuery& query = queries_.get(pass_->countSamplesInto);
+            query.counted = true;
+            query.anyPassed = passTouched_ > 0;
+        }
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - passStart_).count();
-        timings_.push_back({pass_->name, ms});
+        timings_.push_back({pass_->name, ms, passSkipped_});
         ++stats_.passes;
     }
 
@@ -492,6 +523,7 @@ private:
     }
 
     void execute() {
+        if (passSkipped_) return;  // drawOnlyIfSamplesIn found none: the draws do not run
         const int tileSize = options_.tileSize;
         const int tilesX = (passWidth_ + tileSize - 1) / tileSize, tilesY = (passHeight_ + tileSize - 1) / tileSize;
         const TileGrid grid{tileSize, tilesX, tilesY, &samplePattern(passSamples_)};
@@ -536,6 +568,7 @@ private:
         });
         stats_.pixelsShaded += shaded;
         stats_.pixelsTouched += touched;
+        passTouched_ += touched;
         // Storage this pass did not need is given back; what it used is kept for the next.
         chunks_.resize(chunksUsed_);
         if (options_.debugChecks) checkNonFinite();
@@ -564,10 +597,13 @@ private:
     ResourcePool<TextureTag, SoftTexture> textures_;
     ResourcePool<BufferTag, SoftBuffer> buffers_;
     ResourcePool<PipelineTag, SoftPipeline> pipelines_;
+    ResourcePool<QueryTag, SoftQuery> queries_;
     ResourceLookup lookup_;  // what the shared validation reads
     std::optional<PassDesc> pass_;
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
     Clock::time_point passStart_;
+    bool passSkipped_ = false;
+    std::uint64_t passTouched_ = 0;  // pixels where a sample passed the depth test
     std::vector<RecordedDraw> draws_;
     FragmentSink* sink_ = nullptr;
     std::vector<GeometryChunk> chunks_;  // setup output of the pass being executed

@@ -40,6 +40,7 @@ struct Readback {
 struct PassTiming {
     std::string pass;
     double milliseconds = 0.0;  // soft: wall time of the pass; GL: GL_TIME_ELAPSED
+    bool skipped = false;       // its PassDesc::drawOnlyIfSamplesIn found no sample: no draw ran
 };
 
 struct ResolveDesc {
@@ -62,6 +63,14 @@ public:
     virtual void destroy(TextureHandle texture) = 0;
     virtual void destroy(BufferHandle buffer) = 0;
     virtual void destroy(PipelineHandle pipeline) = 0;
+
+    // Occlusion queries, filled by a pass's PassDesc::countSamplesInto and read by another's
+    // drawOnlyIfSamplesIn (sun visibility for light shafts, as lens flares use them).
+    virtual QueryHandle createQuery(const std::string& name) = 0;
+    virtual void destroy(QueryHandle query) = 0;
+    // Whether the last pass that counted into `query` found a sample; GL waits for the
+    // result. Throws when no pass has counted into it yet.
+    virtual bool anySamplesPassed(QueryHandle query) = 0;
 
     virtual const TextureDesc& describe(TextureHandle texture) const = 0;
     virtual PipelineInfo pipelineInfo(PipelineHandle pipeline) const = 0;

@@ -19,5 +19,6 @@ struct Handle {
 using TextureHandle = Handle<struct TextureTag>;
 using BufferHandle = Handle<struct BufferTag>;
 using PipelineHandle = Handle<struct PipelineTag>;
+using QueryHandle = Handle<struct QueryTag>;
 
 }  // namespace engine::render

@@ -32,6 +32,14 @@ struct PassDesc {
     std::string name;
     std::array<ColorAttachment, kMaxColorTargets> color{};
     DepthAttachment depth;
+    // Occlusion query (GL_ANY_SAMPLES_PASSED): records whether any sample of the pass's draws
+    // passed the depth test. Its draws may not alpha test: soft counts a pixel before its
+    // alpha test and GL after the discard, which agree only when nothing is discarded.
+    QueryHandle countSamplesInto;
+    // Conditional rendering: the pass's draws are skipped when the last pass that counted
+    // into this query found no sample (clears still happen). The backend decides where the
+    // draws run (GL: glBeginConditionalRender, GL_QUERY_WAIT), so the CPU never waits for it.
+    QueryHandle drawOnlyIfSamplesIn;
 };
 
 struct DrawDesc {

@@ -6,6 +6,7 @@
 #include <functional>
 #include <span>
 
+#include "engine/core/error.hpp"
 #include "engine/render/buffer.hpp"
 #include "engine/render/pass.hpp"
 #include "engine/render/pipeline.hpp"
@@ -43,6 +44,11 @@ PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup);
 // index, vertex and instance it reads, sampled textures are single-sampled, large enough
 // for full-screen programs and not bound as a target of the pass.
 void validateDraw(const DrawDesc& draw, const PassDesc& pass, const PassExtent& extent, const ResourceLookup& lookup);
+
+// Occlusion queries: reading one before any pass counted into it, and reading one the open
+// pass counts into or destroying one it uses (`open` null when no pass is open).
+Error uncountedQueryError(const std::string& queryName);
+void checkQueryUse(QueryHandle query, const std::string& queryName, const PassDesc* open, bool destroying);
 
 // 'name', or '<unnamed>': how resources are named in error messages.
 std::string quotedName(const std::string& name);
