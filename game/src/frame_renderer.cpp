@@ -38,18 +38,23 @@ FrameRenderer::~FrameRenderer() {
 }
 
 void FrameRenderer::setTechnique(transparency::TechniqueKind kind) {
-    // Created first: when it throws, the current technique and targets stay as they were.
+    // Both made before either is replaced: when one throws, the frame stays as it was.
     std::unique_ptr<transparency::Technique> next = transparency::createTechnique(kind, backend_, options_.techniqueOptions);
+    ensureOpaqueTargets(options_.width, options_.height, std::max(options_.msaa, next->opaqueSamples()));
     technique_ = std::move(next);
     options_.technique = kind;
-    ensureOpaqueTargets(std::max(options_.msaa, technique_->opaqueSamples()));
 }
 
-void FrameRenderer::ensureOpaqueTargets(int samples) {
-    if (opaque_ && opaque_->desc().samples == samples) return;
-    opaque_.reset();
-    opaque_ = std::make_unique<ssam::OpaqueTargets>(
-        backend_, ssam::OpaqueTargetsDesc{options_.width, options_.height, samples, Format::RGBA8_SRGB, kDepthFunc});
+void FrameRenderer::resize(int width, int height) { ensureOpaqueTargets(width, height, opaqueSamples()); }
+
+void FrameRenderer::ensureOpaqueTargets(int width, int height, int samples) {
+    if (opaque_ && width == options_.width && height == options_.height && opaque_->desc().samples == samples) return;
+    // The new targets are made before the current ones go, so a refused size keeps the frame.
+    auto next = std::make_unique<ssam::OpaqueTargets>(
+        backend_, ssam::OpaqueTargetsDesc{width, height, samples, Format::RGBA8_SRGB, kDepthFunc});
+    opaque_ = std::move(next);
+    options_.width = width;
+    options_.height = height;
 }
 
 PipelineHandle FrameRenderer::opaquePipeline(bool doubleSided) {

@@ -48,6 +48,14 @@ public:
     transparency::TechniqueKind technique() const { return technique_->kind(); }
     int opaqueSamples() const { return opaque_->desc().samples; }
 
+    // Renders at width x height from the next frame on (the window follows its framebuffer).
+    // The opaque targets are made anew; the technique's and the living scene's follow their
+    // size when they next draw. Throws engine::Error (keeping the current size and targets)
+    // when the backend refuses targets that large.
+    void resize(int width, int height);
+    int width() const { return options_.width; }
+    int height() const { return options_.height; }
+
     void render(const engine::scene::DrawLists& lists, const CameraView& camera);
 
     // The living scene's features (modules/water, ...) draw after the technique, replacing
@@ -62,7 +70,7 @@ private:
     engine::render::DrawDesc batchDraw(const engine::scene::DrawBatch& batch, engine::render::PipelineHandle pipeline,
                                        engine::render::ProgramParams params);
     engine::render::PipelineHandle opaquePipeline(bool doubleSided);
-    void ensureOpaqueTargets(int samples);
+    void ensureOpaqueTargets(int width, int height, int samples);
     void capture(engine::render::TextureHandle target, const char* name);
     void captureIntermediates();
 

@@ -150,13 +150,13 @@ int run(const Options& o) {
         ws.frames = o.framesGiven ? o.frames : 0;
         ws.fixedDt = o.fixedDtGiven ? o.fixedDt : 0.0;
         ws.camera = cameraMode;
-        ws.aspect = aspect;
-        ws.keyScript = o.keyScript;
+        ws.script = o.script;
         std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, Esc quit\n");
         const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
-        std::printf("racer: %d frames, mean frame %.1f ms\n", r.frames, r.meanFrameMs);
+        std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
+                    frame.height());
     } else {
-        if (!o.keyScript.empty()) throw engine::Error("--script needs a window (a display and no --headless)");
+        if (!o.script.empty()) throw engine::Error("--script needs a window (a display and no --headless)");
         std::printf("racer: %d frames at dt %.4f s\n", o.frames, o.fixedDt);
         runHeadless(o, backend, frame, source, cameraMode, aspect);
     }
@@ -175,7 +175,7 @@ int run(const Options& o) {
     }
     if (!o.layerPictures.empty()) {
         if (frame.layers().empty()) throw engine::Error("--layer-pictures needs --capture-layers");
-        const SceneCamera planes = gltf ? gltf->camera(aspect) : SceneCamera{};
+        const SceneCamera planes = gltf ? gltf->camera(float(frame.width()) / float(frame.height())) : SceneCamera{};
         // <technique>_<layer>.png, e.g. ssam_mask_max.png (the README's), alpha_test_result.png.
         std::string prefix = std::string(transparency::techniqueName(frame.technique())) + "_";
         std::replace(prefix.begin(), prefix.end(), '-', '_');

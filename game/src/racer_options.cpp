@@ -27,7 +27,7 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--technique", o.technique, "how foliage is drawn")
         ->check(CLI::IsMember(techniqueNames()))
         ->capture_default_str();
-    app.add_option("--size", o.size, "frame size WIDTHxHEIGHT")->capture_default_str();
+    app.add_option("--size", o.size, "frame size WIDTHxHEIGHT (a window's first size: it renders at its window's)")->capture_default_str();
     app.add_option_function<int>(
            "--frames", [&o](int n) { o.frames = n, o.framesGiven = true; },
            "frames to render (default 60 headless; a window runs until closed)")
@@ -47,8 +47,8 @@ void addOptions(CLI::App& app, Options& o) {
         ->check(CLI::IsMember({1, 2, 4}))
         ->capture_default_str();
     app.add_option("--layer-pictures", o.layerPictures, "write each captured layer as a PNG into this directory");
-    // Hidden (empty group): drives the window's keys from tests, e.g. "2:3,4:C,9:Esc".
-    app.add_option("--script", o.keyScript, "keys pressed at given frames")->group("");
+    // Hidden (empty group): drives the window from tests, e.g. "2:3,4:C,5:size=400x300,9:Esc".
+    app.add_option("--script", o.script, "keys pressed and window changes at given frames")->group("");
     app.add_option("--scene", o.scenePath, "render this glTF 2.0 file (.gltf or .glb) instead of the racing scene");
     app.add_option("--scene-index", o.sceneIndex, "with --scene: which of the file's scenes (default: its default scene)")
         ->check(CLI::NonNegativeNumber);

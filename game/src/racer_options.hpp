@@ -30,7 +30,7 @@ struct Options {
     std::string contentDir = SSAM_CONTENT_DIR;
     int msaa = 1;
     std::string layerPictures;
-    std::string keyScript;   // --script (hidden): keys pressed at given frames, for tests
+    std::string script;     // --script (hidden): keys and window changes at given frames, for tests
     std::string scenePath;  // --scene: a glTF file instead of the racing scene
     int sceneIndex = -1;
     int cameraIndex = -1;
@@ -45,6 +45,7 @@ void addOptions(CLI::App& app, Options& o);
 struct FrameSize {
     int width = 0;
     int height = 0;
+    bool operator==(const FrameSize&) const = default;
 };
 // "WIDTHxHEIGHT", each 1..16384; throws engine::Error quoting the flag otherwise.
 FrameSize parseFrameSize(const std::string& size);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <optional>
+#include <string_view>
 #include <utility>
 
 #include "engine/core/error.hpp"
@@ -84,10 +86,42 @@ int keyNamed(const std::string& name) {
     return -1;
 }
 
+// A number that is all of `text`, in lo..hi; nullopt otherwise.
+std::optional<int> numberIn(std::string_view text, int lo, int hi) {
+    int n = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc() || end != text.data() + text.size() || n < lo || n > hi) return std::nullopt;
+    return n;
+}
+
+// "size=WxH" (each side 1..32767, what X11 and Win32 windows can be) or "minimize=MS" into
+// `change`; returns why `name` is neither, or null.
+const char* readWindowChange(const std::string& name, ScriptedWindowChange& change) {
+    const std::string_view text = name;
+    const std::size_t equals = text.find('=');
+    const std::string_view what = text.substr(0, equals), value = text.substr(equals + 1);
+    if (what == "size") {
+        const std::size_t x = value.find('x');
+        const auto width = numberIn(value.substr(0, x), 1, 32767);
+        const auto height = x == std::string_view::npos ? std::nullopt : numberIn(value.substr(x + 1), 1, 32767);
+        if (!width || !height) return "the size is not WIDTHxHEIGHT with each side in 1..32767";
+        change.width = *width;
+        change.height = *height;
+        return nullptr;
+    }
+    if (what == "minimize") {
+        const auto ms = numberIn(value, 1, 60000);
+        if (!ms) return "the minimised time is not a number of milliseconds in 1..60000";
+        change.minimizeMs = *ms;
+        return nullptr;
+    }
+    return "unknown window change (size= or minimize=)";
+}
+
 }  // namespace
 
-std::vector<ScriptedKey> parseKeyScript(const std::string& script) {
-    std::vector<ScriptedKey> keys;
+WindowScript parseWindowScript(const std::string& script) {
+    WindowScript parsed;
     std::size_t start = 0;
     while (start <= script.size() && !script.empty()) {
         const std::size_t end = std::min(script.find(',', start), script.size());
@@ -95,8 +129,8 @@ std::vector<ScriptedKey> parseKeyScript(const std::string& script) {
         const std::size_t colon = entry.find(':');
         auto bad = [&](const char* why) {
             return engine::Error("--script entry '" + entry + "': " + why +
-                                 " (expected FRAME:KEY or FIRST-LAST:KEY, KEY one of 1-8 T C P Esc W A S D Q E Space "
-                                 "Ctrl Left Right Up Down, optionally shift+)");
+                                 " (expected FRAME:KEY, FIRST-LAST:KEY, FRAME:size=WxH or FRAME:minimize=MS, KEY one "
+                                 "of 1-8 T C P Esc W A S D Q E Space Ctrl Left Right Up Down, optionally shift+)");
         };
         if (colon == std::string::npos) throw bad("no ':'");
         ScriptedKey k;
@@ -112,22 +146,31 @@ std::vector<ScriptedKey> parseKeyScript(const std::string& script) {
             if (k.lastFrame < k.frame) throw bad("the last frame is before the first");
         }
         std::string name = lower(entry.substr(colon + 1));
-        if (name.rfind("shift+", 0) == 0) {
-            k.shift = true;
-            name = name.substr(6);
+        if (name.find('=') != std::string::npos) {  // a window change: at one frame, not held
+            if (k.lastFrame != k.frame) throw bad("a window change happens at one frame, not over a range");
+            ScriptedWindowChange change{k.frame};
+            if (const char* why = readWindowChange(name, change)) throw bad(why);
+            parsed.changes.push_back(change);
+        } else {
+            if (name.rfind("shift+", 0) == 0) {
+                k.shift = true;
+                name = name.substr(6);
+            }
+            k.key = keyNamed(name);
+            if (k.key < 0) throw bad("unknown key");
+            parsed.keys.push_back(k);
         }
-        k.key = keyNamed(name);
-        if (k.key < 0) throw bad("unknown key");
-        keys.push_back(k);
         start = end + 1;
     }
-    std::stable_sort(keys.begin(), keys.end(), [](const ScriptedKey& a, const ScriptedKey& b) { return a.frame < b.frame; });
-    return keys;
+    auto byFrame = [](const auto& a, const auto& b) { return a.frame < b.frame; };
+    std::stable_sort(parsed.keys.begin(), parsed.keys.end(), byFrame);
+    std::stable_sort(parsed.changes.begin(), parsed.changes.end(), byFrame);
+    return parsed;
 }
 
-bool scriptHolds(const std::vector<ScriptedKey>& script, int frame, int key) {
+bool scriptHolds(const std::vector<ScriptedKey>& keys, int frame, int key) {
     const bool shiftKey = key == GLFW_KEY_LEFT_SHIFT;
-    return std::any_of(script.begin(), script.end(), [&](const ScriptedKey& k) {
+    return std::any_of(keys.begin(), keys.end(), [&](const ScriptedKey& k) {
         return frame >= k.frame && frame <= k.lastFrame && (k.key == key || (shiftKey && k.shift));
     });
 }

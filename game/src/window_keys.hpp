@@ -4,8 +4,8 @@
 // the next / previous one, C cycles the camera (chase, pan, free), P pauses the simulation,
 // Esc quits. With the free camera, held keys fly it (flyControls): W/S forward/back, A/D
 // strafe, Q/E or Ctrl/Space down/up, the arrows turn, Shift is faster; the window adds mouse
-// look while the right button is held. A key script (`racer --script`, hidden: for tests)
-// presses or holds keys at given frames.
+// look while the right button is held. A window script (`racer --script`, hidden: for
+// tests) presses or holds keys at given frames, and resizes or minimises the window.
 #include <functional>
 #include <string>
 #include <vector>
@@ -44,14 +44,29 @@ struct ScriptedKey {
     bool shift = false;
 };
 
-// "FRAME:KEY,FIRST-LAST:KEY..." with KEY one of 1-8, T, C, P, Esc, W, A, S, D, Q, E, Space,
-// Ctrl, Left, Right, Up, Down, each optionally "shift+"-prefixed; FIRST-LAST holds the key
-// for those frames (inclusive), e.g. "2:3,4:C,0-9:W,10-14:shift+D,20:Esc". Sorted by first
-// frame. Throws engine::Error naming the bad entry.
-std::vector<ScriptedKey> parseKeyScript(const std::string& script);
+// What a user does to the window itself, before `frame` is rendered: resize it to width x
+// height (screen coordinates; the render size follows its framebuffer), or, with
+// minimizeMs > 0, minimise it and restore it that many milliseconds later.
+struct ScriptedWindowChange {
+    int frame = 0;
+    int width = 0, height = 0;
+    int minimizeMs = 0;
+};
+
+struct WindowScript {
+    std::vector<ScriptedKey> keys;              // sorted by first frame
+    std::vector<ScriptedWindowChange> changes;  // sorted by frame
+};
+
+// "FRAME:ENTRY,FIRST-LAST:KEY..." with ENTRY a KEY, size=WxH (each side 1..32767) or
+// minimize=MS (1..60000 ms), and KEY one of 1-8, T, C, P, Esc, W, A, S, D, Q, E, Space, Ctrl,
+// Left, Right, Up, Down, each optionally "shift+"-prefixed; FIRST-LAST holds the key for those
+// frames (inclusive), e.g. "2:3,4:C,0-9:W,10-14:shift+D,5:size=400x300,8:minimize=200,20:Esc".
+// Throws engine::Error naming the bad entry.
+WindowScript parseWindowScript(const std::string& script);
 
 // Whether the script holds `key` at `frame`; GLFW_KEY_LEFT_SHIFT is held by every held
 // "shift+" entry (so "0-9:shift+W" flies fast).
-bool scriptHolds(const std::vector<ScriptedKey>& script, int frame, int key);
+bool scriptHolds(const std::vector<ScriptedKey>& keys, int frame, int key);
 
 }  // namespace racer

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -22,10 +23,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using engine::render::TextureHandle;
+using engine::render::gl::GlfwWindowContext;
 using transparency::TechniqueKind;
 
 constexpr double kTitleInterval = 0.25;  // seconds between title updates
 constexpr double kMaxWallStep = 0.1;     // a stalled frame (window dragged) never jumps the car far
+constexpr auto kWindowSettleTime = std::chrono::seconds(1);  // a scripted resize waits this long at most
 
 // Frame and per-pass times summed since the last title update.
 struct TitleStats {
@@ -42,11 +45,11 @@ struct TitleStats {
             else it->second += t.milliseconds;
         }
     }
-    std::string title(TechniqueKind technique, CameraMode camera, bool paused) const {
-        char head[160];
-        std::snprintf(head, sizeof head, "racer | %s | %s%s | %.1f fps | %.1f ms |", transparency::techniqueName(technique),
-                      cameraName(camera), paused ? " (paused)" : "", frames ? 1000.0 * frames / frameMs : 0.0,
-                      frames ? frameMs / frames : 0.0);
+    std::string title(TechniqueKind technique, CameraMode camera, bool paused, FrameSize size) const {
+        char head[192];
+        std::snprintf(head, sizeof head, "racer | %s | %s%s | %dx%d | %.1f fps | %.1f ms |",
+                      transparency::techniqueName(technique), cameraName(camera), paused ? " (paused)" : "", size.width,
+                      size.height, frames ? 1000.0 * frames / frameMs : 0.0, frames ? frameMs / frames : 0.0);
         std::string text = head;
         for (const auto& [name, ms] : passes) {
             char buf[96];
@@ -122,6 +125,130 @@ private:
     double x_ = 0.0, y_ = 0.0;
 };
 
+// The render size follows the window's framebuffer (renderSizeFor). A size the backend
+// refuses, when the frame's targets are made or in the first frame drawn at it, is reported
+// and the frame goes back to the last size that rendered; present scales it to the window.
+class RenderSize {
+public:
+    explicit RenderSize(FrameRenderer& frame) : frame_(frame), rendered_(current()) {}
+
+    FrameSize current() const { return {frame_.width(), frame_.height()}; }
+
+    // Resizes the frame when the framebuffer has changed since the last call (a size refused
+    // once is not tried again until the window changes).
+    void follow(glm::ivec2 framebuffer) {
+        if (framebuffer == seen_) return;
+        seen_ = framebuffer;
+        const FrameSize wanted = renderSizeFor(framebuffer.x, framebuffer.y);
+        if (wanted == current()) return;
+        try {
+            frame_.resize(wanted.width, wanted.height);
+        } catch (const engine::Error& e) {
+            refused(wanted, e);
+            return;
+        }
+        const bool clamped = wanted != FrameSize{framebuffer.x, framebuffer.y};
+        std::printf("racer: render size %dx%d (window framebuffer %dx%d%s)\n", wanted.width, wanted.height,
+                    framebuffer.x, framebuffer.y, clamped ? ", scaled down to the largest render target" : "");
+    }
+
+    // The frame just drawn rendered at the current size.
+    void rendered() { rendered_ = current(); }
+
+    // A frame failed with `e`: at a size that has not rendered yet, goes back to the last one
+    // that has and returns true; false when the size is not what is new.
+    bool recover(const engine::Error& e) {
+        const FrameSize failed = current();
+        if (failed == rendered_) return false;
+        frame_.resize(rendered_.width, rendered_.height);
+        refused(failed, e);
+        return true;
+    }
+
+private:
+    void refused(FrameSize size, const engine::Error& e) const {
+        std::printf("racer: cannot render at %dx%d (%s); keeping %dx%d, scaled to the window\n", size.width,
+                    size.height, e.what(), frame_.width(), frame_.height());
+    }
+
+    FrameRenderer& frame_;
+    FrameSize rendered_;
+    glm::ivec2 seen_{-1, -1};
+};
+
+// Resizes the window as a user dragging its border would, and waits (at most
+// kWindowSettleTime) for it to take the size, so the next frame sees it: a window manager may
+// adjust or delay a resize (Xvfb has none and is immediate).
+void resizeWindow(GlfwWindowContext& window, int width, int height) {
+    window.setSize(width, height);
+    const Clock::time_point deadline = Clock::now() + kWindowSettleTime;
+    for (;;) {
+        window.pollEvents();
+        int w = 0, h = 0;
+        glfwGetWindowSize(window.window(), &w, &h);
+        if ((w == width && h == height) || Clock::now() >= deadline) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+}
+
+// A scripted minimise's restore: when, and to the window's size before it.
+struct ScriptedRestore {
+    Clock::time_point at;
+    int width = 0, height = 0;
+};
+
+// A scripted window change, as a user would make it; a minimise returns its restore.
+std::optional<ScriptedRestore> applyWindowChange(GlfwWindowContext& window, const ScriptedWindowChange& change) {
+    if (change.minimizeMs == 0) {
+        resizeWindow(window, change.width, change.height);
+        return std::nullopt;
+    }
+    ScriptedRestore restore{Clock::now() + std::chrono::milliseconds(change.minimizeMs)};
+    glfwGetWindowSize(window.window(), &restore.width, &restore.height);
+    window.setSize(0, 0);
+    return restore;
+}
+
+// While the framebuffer is empty (minimised) nothing is rendered or shown: the loop blocks in
+// glfwWaitEvents until something happens (the restore) instead of spinning. A scripted
+// minimise restores the window itself when its time is up. Entering and leaving are printed,
+// leaving with the number of wake-ups (a handful, where a spinning loop would count thousands).
+class MinimisedWait {
+public:
+    void wait(GlfwWindowContext& window, std::optional<ScriptedRestore>& restore) {
+        if (!waiting_) {
+            std::printf("racer: window minimised, not rendering\n");
+            waiting_ = true;
+            since_ = Clock::now();
+            wakeUps_ = 0;
+        }
+        if (!restore) {
+            glfwWaitEvents();
+        } else if (const double left = std::chrono::duration<double>(restore->at - Clock::now()).count(); left > 0.0) {
+            glfwWaitEventsTimeout(left);
+        } else {
+            resizeWindow(window, restore->width, restore->height);
+            restore.reset();
+            return;
+        }
+        ++wakeUps_;
+    }
+
+    // Called when the framebuffer has a size again: true when the window was minimised.
+    bool ended() {
+        if (!waiting_) return false;
+        waiting_ = false;
+        std::printf("racer: window restored after %.2f s minimised (woke %d times)\n",
+                    std::chrono::duration<double>(Clock::now() - since_).count(), wakeUps_);
+        return true;
+    }
+
+private:
+    bool waiting_ = false;
+    Clock::time_point since_;
+    int wakeUps_ = 0;
+};
+
 // The soft backend's frame as a GL texture: the stored sRGB codes (readback gives code/255)
 // uploaded unchanged, so the window shows exactly the bytes a capture would hold.
 TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine::render::Readback& r) {
@@ -141,16 +268,29 @@ TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine
 
 }  // namespace
 
-WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, engine::render::gl::GlBackend& presenter,
+FrameSize renderSizeFor(int framebufferWidth, int framebufferHeight) {
+    using engine::render::kMaxTextureDimension;
+    const int longest = std::max(framebufferWidth, framebufferHeight);
+    if (longest <= kMaxTextureDimension) return {framebufferWidth, framebufferHeight};
+    // Scaled as a whole, so the camera's aspect still matches the window's.
+    const double scale = double(kMaxTextureDimension) / longest;
+    auto side = [&](int n) { return std::clamp(int(std::lround(n * scale)), 1, kMaxTextureDimension); };
+    return {side(framebufferWidth), side(framebufferHeight)};
+}
+
+WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::GlBackend& presenter,
                                engine::render::Backend& renderer, FrameRenderer& frame, const FrameSource& source,
                                const WindowLoopSettings& settings) {
-    const std::vector<ScriptedKey> script = parseKeyScript(settings.keyScript);
-    std::size_t nextScripted = 0;
+    const WindowScript script = parseWindowScript(settings.script);
+    std::size_t nextKey = 0, nextChange = 0;
+    std::optional<ScriptedRestore> restore;
     std::map<int, bool> wasDown;
     const bool uploads = static_cast<engine::render::Backend*>(&presenter) != &renderer;
     CameraMode camera = settings.camera;
     FreeCamera flyer;  // starts at the overview a headless --camera free run renders
     MouseLook mouse(window.window());
+    RenderSize size(frame);
+    MinimisedWait minimised;
     bool paused = false;
     double time = 0.0, totalMs = 0.0;
     TitleStats stats;
@@ -161,11 +301,15 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
     while (settings.frames == 0 || result.frames < settings.frames) {
         window.pollEvents();
         if (window.shouldClose()) break;
-        if (window.minimized()) {  // nothing to show: do not spin
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            last = Clock::now();
+        for (; nextChange < script.changes.size() && script.changes[nextChange].frame <= result.frames; ++nextChange)
+            restore = applyWindowChange(window, script.changes[nextChange]);
+        const glm::ivec2 framebuffer = window.framebufferSize();
+        if (framebuffer.x <= 0 || framebuffer.y <= 0) {
+            minimised.wait(window, restore);
             continue;
         }
+        if (minimised.ended()) last = Clock::now();  // the time away is no simulation step
+        size.follow(framebuffer);
 
         // Keys pressed since the last frame (edges of the polled state), then scripted ones.
         std::vector<KeyAction> actions;
@@ -176,8 +320,8 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
             if (down && !wasDown[key]) actions.push_back(actionForKey(key, shift));
             wasDown[key] = down;
         }
-        for (; nextScripted < script.size() && script[nextScripted].frame <= result.frames; ++nextScripted)
-            actions.push_back(actionForKey(script[nextScripted].key, script[nextScripted].shift));
+        for (; nextKey < script.keys.size() && script.keys[nextKey].frame <= result.frames; ++nextKey)
+            actions.push_back(actionForKey(script.keys[nextKey].key, script.keys[nextKey].shift));
         bool quit = false;
         for (const KeyAction& a : actions) {
             switch (a.action) {
@@ -214,16 +358,25 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
         const glm::vec2 look = mouse.motion(camera == CameraMode::Free);
         if (camera == CameraMode::Free) {
             FlyControls controls = flyControls([&](int key) {
-                return glfwGetKey(window.window(), key) == GLFW_PRESS || scriptHolds(script, result.frames, key);
+                return glfwGetKey(window.window(), key) == GLFW_PRESS || scriptHolds(script.keys, result.frames, key);
             });
             controls.look = look;
             flyer = flyStep(flyer, controls, float(step));
         }
         // As the headless loop: frame i steps the world by dt and sees the camera at i * dt,
         // so a window with --fixed-dt shows the frames a headless run captures.
-        const SceneFrame scene = source(float(time), float(dt), camera, flyer, settings.aspect);
+        const FrameSize rendering = size.current();
+        const SceneFrame scene =
+            source(float(time), float(dt), camera, flyer, float(rendering.width) / float(rendering.height));
         time += dt;
-        frame.render(scene.lists, scene.camera);
+        try {
+            frame.render(scene.lists, scene.camera);
+        } catch (const engine::Error& e) {
+            if (!size.recover(e)) throw;
+            renderer.takeTimings();  // this frame is dropped; the next one renders at the size that works
+            continue;
+        }
+        size.rendered();
         if (uploads) {
             const TextureHandle shown = uploadFrame(presenter, renderer.readback(frame.color()));
             presenter.present(shown);
@@ -237,7 +390,7 @@ WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, en
         ++result.frames;
         stats.add(ms, renderer.takeTimings());
         if (std::chrono::duration<double>(Clock::now() - titleShown).count() >= kTitleInterval) {
-            glfwSetWindowTitle(window.window(), stats.title(frame.technique(), camera, paused).c_str());
+            glfwSetWindowTitle(window.window(), stats.title(frame.technique(), camera, paused, size.current()).c_str());
             stats = {};
             titleShown = Clock::now();
         }

@@ -1,6 +1,7 @@
 #include "ssam/opaque_targets.hpp"
 
 #include <string>
+#include <utility>
 
 #include "engine/core/error.hpp"
 
@@ -14,17 +15,26 @@ OpaqueTargets::OpaqueTargets(Backend& backend, const OpaqueTargetsDesc& desc) : 
     auto target = [&](const char* name, Format format, int samples) {
         return backend_.createTexture(renderTargetDesc(name, desc.width, desc.height, format, samples));
     };
-    color_ = target("rt_opaque", desc.colorFormat, 1);
-    depth_ = target("rt_depth", Format::D32F, 1);
-    if (desc.samples > 1) {
-        msaaColor_ = target("rt_opaque_msaa", desc.colorFormat, desc.samples);
-        msaaDepth_ = target("rt_depth_msaa", Format::D32F, desc.samples);
+    try {
+        color_ = target("rt_opaque", desc.colorFormat, 1);
+        depth_ = target("rt_depth", Format::D32F, 1);
+        if (desc.samples > 1) {
+            msaaColor_ = target("rt_opaque_msaa", desc.colorFormat, desc.samples);
+            msaaDepth_ = target("rt_depth_msaa", Format::D32F, desc.samples);
+        }
+    } catch (...) {
+        // No destructor runs for a constructor that throws: the targets made so far go here
+        // (a refused window size must not leak the ones that fitted).
+        release();
+        throw;
     }
 }
 
-OpaqueTargets::~OpaqueTargets() {
-    for (TextureHandle t : {color_, depth_, msaaColor_, msaaDepth_})
-        if (t) backend_.destroy(t);
+OpaqueTargets::~OpaqueTargets() { release(); }
+
+void OpaqueTargets::release() {
+    for (TextureHandle* t : {&color_, &depth_, &msaaColor_, &msaaDepth_})
+        if (*t) backend_.destroy(std::exchange(*t, TextureHandle{}));
 }
 
 float OpaqueTargets::farDepth() const { return isCloser(desc_.depthFunc, 0.0f, 1.0f) ? 1.0f : 0.0f; }

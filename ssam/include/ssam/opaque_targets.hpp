@@ -39,6 +39,8 @@ public:
     float farDepth() const;
 
 private:
+    void release();
+
     engine::render::Backend& backend_;
     OpaqueTargetsDesc desc_;
     engine::render::TextureHandle color_, depth_, msaaColor_, msaaDepth_;

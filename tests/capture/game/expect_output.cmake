@@ -1,21 +1,13 @@
 # Runs COMMAND (a space-separated command line) and fails unless it exits 0 and its output
 # matches every regular expression of EXPECT ("@@"-separated), in that order; with OUT, the
 # file must exist afterwards too.
+include(${CMAKE_CURRENT_LIST_DIR}/run_with_display_retry.cmake)
 separate_arguments(command UNIX_COMMAND "${COMMAND}")
 string(REPLACE "@@" ";" patterns "${EXPECT}")
 if(DEFINED OUT)
   file(REMOVE ${OUT})
 endif()
-# xvfb-run -a can lose the race for a display number to another xvfb-run starting at the
-# same moment (parallel ctest, other tests): that is retried, nothing else is.
-foreach(attempt 1 2 3)
-  execute_process(COMMAND ${command} RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
-  if(NOT log MATCHES "xvfb-run: error|Xvfb failed to start|Server is already active")
-    break()
-  endif()
-  execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 1)
-endforeach()
-message(STATUS "${log}")
+run_with_display_retry(rc log ${command})
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${COMMAND} exited with ${rc}")
 endif()

@@ -2,21 +2,14 @@
 # byte-identical to the headless --camera free capture (the free camera starts at the
 # headless overview); with FLY_SCRIPT (keys held, e.g. "0-2:W") the capture differs (the
 # flown pose reaches the renderer, not just the printed line).
+include(${CMAKE_CURRENT_LIST_DIR}/run_with_display_retry.cmake)
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 set(still ${OUT}/free_still.png)
 set(flown ${OUT}/free_flown.png)
 set(headless ${OUT}/free_headless.png)
 file(REMOVE ${still} ${flown} ${headless})
 function(run_window capture)
-  foreach(attempt 1 2 3)  # a lost race for a display number (see expect_output.cmake) is retried
-    execute_process(COMMAND ${XVFB} -a ${RACER} ${args} ${ARGN} --capture ${capture}
-                    RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
-    if(NOT log MATCHES "xvfb-run: error|Xvfb failed to start|Server is already active")
-      break()
-    endif()
-    execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 1)
-  endforeach()
-  message(STATUS "${log}")
+  run_with_display_retry(rc log ${XVFB} -a ${RACER} ${args} ${ARGN} --capture ${capture})
   if(NOT rc EQUAL 0 OR NOT log MATCHES "camera free, backend soft.*, window")
     message(FATAL_ERROR "windowed racer ${ARGN} exited with ${rc} or did not open a window")
   endif()

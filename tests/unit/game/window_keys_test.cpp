@@ -1,5 +1,5 @@
 // racer's window keys (game/src/window_keys.hpp): the key -> action mapping and the test
-// key script's parser, without a window.
+// window script's parser, without a window.
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
@@ -43,7 +43,7 @@ TEST(WindowKeys, EveryMappedKeyIsWatched) {
 }
 
 TEST(WindowKeys, ScriptParsesAndSortsByFrame) {
-    const auto keys = parseKeyScript("4:Esc,0:3,2:shift+T,1:c");
+    const auto keys = parseWindowScript("4:Esc,0:3,2:shift+T,1:c").keys;
     ASSERT_EQ(keys.size(), 4u);
     EXPECT_EQ(keys[0].frame, 0);
     EXPECT_EQ(keys[0].key, GLFW_KEY_3);
@@ -51,13 +51,18 @@ TEST(WindowKeys, ScriptParsesAndSortsByFrame) {
     EXPECT_EQ(keys[2].key, GLFW_KEY_T);
     EXPECT_TRUE(keys[2].shift);
     EXPECT_EQ(keys[3].key, GLFW_KEY_ESCAPE);
-    EXPECT_TRUE(parseKeyScript("").empty());
+    const WindowScript none = parseWindowScript("");
+    EXPECT_TRUE(none.keys.empty());
+    EXPECT_TRUE(none.changes.empty());
 }
 
 TEST(WindowKeys, BadScriptEntriesAreNamed) {
-    for (const char* bad : {"3", "x:T", "-1:T", "2:Z", "2:9", "1:T,", "5-3:W", "1-:W", "1-x:W", "1+2:W"}) {
+    for (const char* bad : {"3", "x:T", "-1:T", "2:Z", "2:9", "1:T,", "5-3:W", "1-:W", "1-x:W", "1+2:W", "1:size=",
+                            "1:size=400", "1:size=400x", "1:size=x300", "1:size=0x300", "1:size=400x0", "1:size=40000x300",
+                            "1:size=-4x300", "1:size=400x300x2", "1:size=400 x300", "1-3:size=400x300", "1:minimize=",
+                            "1:minimize=0", "1:minimize=60001", "1:minimize=2s", "1:maximize=1", "1:=5"}) {
         try {
-            parseKeyScript(bad);
+            parseWindowScript(bad);
             ADD_FAILURE() << "accepted '" << bad << "'";
         } catch (const engine::Error& e) {
             EXPECT_NE(std::string(e.what()).find("--script entry"), std::string::npos) << e.what();
@@ -65,8 +70,26 @@ TEST(WindowKeys, BadScriptEntriesAreNamed) {
     }
 }
 
+TEST(WindowKeys, ScriptResizesAndMinimisesTheWindowAtFrames) {
+    const WindowScript script = parseWindowScript("6:minimize=250,2:W,3:size=400x300,1:Size=32767X1,6:Esc");
+    ASSERT_EQ(script.keys.size(), 2u);
+    EXPECT_EQ(script.keys[0].key, GLFW_KEY_W);
+    EXPECT_EQ(script.keys[1].key, GLFW_KEY_ESCAPE);
+    ASSERT_EQ(script.changes.size(), 3u);
+    EXPECT_EQ(script.changes[0].frame, 1);  // sorted by frame; names are case-blind as keys are
+    EXPECT_EQ(script.changes[0].width, 32767);
+    EXPECT_EQ(script.changes[0].height, 1);
+    EXPECT_EQ(script.changes[0].minimizeMs, 0);
+    EXPECT_EQ(script.changes[1].frame, 3);
+    EXPECT_EQ(script.changes[1].width, 400);
+    EXPECT_EQ(script.changes[1].height, 300);
+    EXPECT_EQ(script.changes[2].frame, 6);
+    EXPECT_EQ(script.changes[2].minimizeMs, 250);
+    EXPECT_EQ(script.changes[2].width, 0);
+}
+
 TEST(WindowKeys, ScriptHoldsKeysForFrameRanges) {
-    const auto keys = parseKeyScript("2-4:W,0:c,6-6:shift+Left,9:Esc");
+    const auto keys = parseWindowScript("2-4:W,0:c,6-6:shift+Left,9:Esc").keys;
     ASSERT_EQ(keys.size(), 4u);
     EXPECT_EQ(keys[0].key, GLFW_KEY_C);
     EXPECT_EQ(keys[0].lastFrame, 0);
@@ -82,7 +105,7 @@ TEST(WindowKeys, ScriptHoldsKeysForFrameRanges) {
     EXPECT_TRUE(scriptHolds(keys, 0, GLFW_KEY_C));  // a press is held for its own frame
     EXPECT_FALSE(scriptHolds(keys, 1, GLFW_KEY_C));
     for (const char* name : {"W", "a", "S", "d", "Q", "e", "Space", "Ctrl", "Left", "Right", "Up", "Down"})
-        EXPECT_NO_THROW(parseKeyScript(std::string("0:") + name)) << name;
+        EXPECT_NO_THROW(parseWindowScript(std::string("0:") + name)) << name;
 }
 
 // A held-key set for flyControls.
