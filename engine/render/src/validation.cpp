@@ -140,6 +140,9 @@ void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& ext
         }
         if (const auto* shafts = std::get_if<LightShaftParams>(&d.params)) {
             input(shafts->depth);
+            const Format depthFormat = lookup.texture(shafts->depth).format;
+            if (depthFormat != Format::D32F && depthFormat != Format::R32F)
+                throw Error(what + ": light-shaft depth is " + std::string(formatName(depthFormat)) + ", not D32F or R32F");
             if (shafts->samples < 1 || shafts->samples > 128)
                 throw Error(what + ": light-shaft samples " + std::to_string(shafts->samples) + " not in 1..128");
             for (float v : {shafts->sunPixel.x, shafts->sunPixel.y, shafts->farDepth, shafts->intensity, shafts->decay,

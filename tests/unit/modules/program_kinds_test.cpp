@@ -4,6 +4,8 @@
 // count (the soft backend's promise, seeds of the goldens).
 #include <gtest/gtest.h>
 
+#include "expect_error.hpp"  // tests/support
+
 #include <cmath>
 #include <limits>
 
@@ -62,6 +64,13 @@ TEST(TransparencyPrograms, FullscreenKindsRefuseMissingOrSmallInputs) {
     // Parameters of another kind.
     EXPECT_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, CompositeParams{good, good, {}, 0.85f, true}, target), engine::Error);
     EXPECT_NO_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{good, good}, target));
+    // Light shafts read one float of depth per texel.
+    LightShaftParams shafts;
+    shafts.depth = good;
+    ssam::testing::expectError([&] { drawFullscreen(*b, ProgramKind::LightShafts, shafts, target); },
+                               "light-shaft depth is RGBA16F, not D32F or R32F");
+    shafts.depth = texture(*b, 8, Format::R32F);
+    EXPECT_NO_THROW(drawFullscreen(*b, ProgramKind::LightShafts, shafts, target));
 }
 
 // Non-finite accumulation (hostile HDR data) composites as black, never NaN.
