@@ -15,6 +15,7 @@
 
 #include "engine/core/error.hpp"
 #include "racer_options.hpp"
+#include "render_size.hpp"
 #include "window_keys.hpp"
 
 namespace racer {
@@ -125,57 +126,6 @@ private:
     double x_ = 0.0, y_ = 0.0;
 };
 
-// The render size follows the window's framebuffer (renderSizeFor). A size the backend
-// refuses, when the frame's targets are made or in the first frame drawn at it, is reported
-// and the frame goes back to the last size that rendered; present scales it to the window.
-class RenderSize {
-public:
-    explicit RenderSize(FrameRenderer& frame) : frame_(frame), rendered_(current()) {}
-
-    FrameSize current() const { return {frame_.width(), frame_.height()}; }
-
-    // Resizes the frame when the framebuffer has changed since the last call (a size refused
-    // once is not tried again until the window changes).
-    void follow(glm::ivec2 framebuffer) {
-        if (framebuffer == seen_) return;
-        seen_ = framebuffer;
-        const FrameSize wanted = renderSizeFor(framebuffer.x, framebuffer.y);
-        if (wanted == current()) return;
-        try {
-            frame_.resize(wanted.width, wanted.height);
-        } catch (const engine::Error& e) {
-            refused(wanted, e);
-            return;
-        }
-        const bool clamped = wanted != FrameSize{framebuffer.x, framebuffer.y};
-        std::printf("racer: render size %dx%d (window framebuffer %dx%d%s)\n", wanted.width, wanted.height,
-                    framebuffer.x, framebuffer.y, clamped ? ", scaled down to the largest render target" : "");
-    }
-
-    // The frame just drawn rendered at the current size.
-    void rendered() { rendered_ = current(); }
-
-    // A frame failed with `e`: at a size that has not rendered yet, goes back to the last one
-    // that has and returns true; false when the size is not what is new.
-    bool recover(const engine::Error& e) {
-        const FrameSize failed = current();
-        if (failed == rendered_) return false;
-        frame_.resize(rendered_.width, rendered_.height);
-        refused(failed, e);
-        return true;
-    }
-
-private:
-    void refused(FrameSize size, const engine::Error& e) const {
-        std::printf("racer: cannot render at %dx%d (%s); keeping %dx%d, scaled to the window\n", size.width,
-                    size.height, e.what(), frame_.width(), frame_.height());
-    }
-
-    FrameRenderer& frame_;
-    FrameSize rendered_;
-    glm::ivec2 seen_{-1, -1};
-};
-
 // Resizes the window as a user dragging its border would, and waits (at most
 // kWindowSettleTime) for it to take the size, so the next frame sees it: a window manager may
 // adjust or delay a resize (Xvfb has none and is immediate).
@@ -267,16 +217,6 @@ TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine
 }
 
 }  // namespace
-
-FrameSize renderSizeFor(int framebufferWidth, int framebufferHeight) {
-    using engine::render::kMaxTextureDimension;
-    const int longest = std::max(framebufferWidth, framebufferHeight);
-    if (longest <= kMaxTextureDimension) return {framebufferWidth, framebufferHeight};
-    // Scaled as a whole, so the camera's aspect still matches the window's.
-    const double scale = double(kMaxTextureDimension) / longest;
-    auto side = [&](int n) { return std::clamp(int(std::lround(n * scale)), 1, kMaxTextureDimension); };
-    return {side(framebufferWidth), side(framebufferHeight)};
-}
 
 WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::GlBackend& presenter,
                                engine::render::Backend& renderer, FrameRenderer& frame, const FrameSource& source,

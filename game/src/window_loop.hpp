@@ -29,10 +29,6 @@ struct WindowLoopResult {
     double meanFrameMs = 0.0;
 };
 
-// The size a window's framebuffer is rendered at: the framebuffer's own (each side >= 1), scaled
-// down as a whole (aspect kept) when a side exceeds engine::render::kMaxTextureDimension.
-FrameSize renderSizeFor(int framebufferWidth, int framebufferHeight);
-
 // `presenter` is the GL backend owning the window's context; `renderer` draws the frames and
 // is either the same backend or another one (soft), whose colour is then read back and
 // uploaded each frame. Technique keys that fail (not runnable here, not implemented yet)

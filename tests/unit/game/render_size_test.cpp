@@ -1,4 +1,4 @@
-// The size racer's window renders its framebuffer at (game/src/window_loop.hpp
+// The size racer's window renders its framebuffer at (game/src/render_size.hpp
 // renderSizeFor): the framebuffer's own, or scaled down as a whole when a side exceeds the
 // largest render target, so the camera's aspect still matches the window's.
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/render/texture.hpp"
-#include "window_loop.hpp"
+#include "render_size.hpp"
 
 namespace racer {
 namespace {
