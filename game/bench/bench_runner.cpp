@@ -63,8 +63,8 @@ SceneViews uploadViews(Backend& backend, BenchScene& scene, float aspect, int pa
     return v;
 }
 
-transparency::TechniqueOptions techniqueOptions() {
-    transparency::TechniqueOptions o;
+// The subject's options with the scenes' depth function (reverse-Z).
+transparency::TechniqueOptions withSceneDepth(transparency::TechniqueOptions o) {
     o.ssam.depthFunc = kDepthFunc;
     return o;
 }
@@ -87,7 +87,7 @@ std::vector<Image> panImages(Backend& backend, FrameDrawer& drawer, ssam::Opaque
 ReferenceFrames computeReference(Backend& soft, BenchScene& scene, const SceneViews& views, const BenchOptions& o) {
     ReferenceFrames ref;
     try {
-        auto technique = transparency::createTechnique(TechniqueKind::Reference, soft, techniqueOptions());
+        auto technique = transparency::createTechnique(TechniqueKind::Reference, soft, withSceneDepth({}));
         ssam::OpaqueTargets targets(soft, {o.width, o.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
         FrameDrawer drawer(soft, scene.library());
         drawer.draw(targets, technique.get(), *views.still);
@@ -116,16 +116,11 @@ BenchRow skippedRow(const std::string& scene, const std::string& technique, cons
     return row;
 }
 
-struct Subject {
-    std::optional<TechniqueKind> kind;  // none: the opaque-only frame
-    std::string name() const { return kind ? transparency::techniqueName(*kind) : kOpaqueOnly; }
-};
-
 BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& scene, const SceneViews& views,
-                 const Subject& subject, const ReferenceFrames& ref, const BenchOptions& o) {
+                 const BenchSubject& subject, const ReferenceFrames& ref, const BenchOptions& o) {
     BenchRow row;
     row.scene = sceneName(scene.kind());
-    row.technique = subject.name();
+    row.technique = subject.name;
     row.backend = backendName;
     row.width = o.width;
     row.height = o.height;
@@ -136,7 +131,7 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         const std::unique_ptr<Backend> counting = makeCountingBackend(backend, count);
         const RssPeak rss;
         std::unique_ptr<transparency::Technique> technique;
-        if (subject.kind) technique = transparency::createTechnique(*subject.kind, *counting, techniqueOptions());
+        if (subject.kind) technique = transparency::createTechnique(*subject.kind, *counting, withSceneDepth(subject.options));
         ssam::OpaqueTargets targets(
             *counting, {o.width, o.height, technique ? technique->opaqueSamples() : 1, Format::RGBA8_SRGB, kDepthFunc});
         FrameDrawer drawer(backend, scene.library());
@@ -179,9 +174,10 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         for (const std::string& pass : passOrder) row.passes.push_back({pass, median(passTimes[pass])});
 
         const Image image = frameImage(backend, targets);
+        const std::string imageStem = row.scene + "_" + row.technique + "_" + backendName;
         if (!o.imagesDir.empty()) {
             std::filesystem::create_directories(o.imagesDir);
-            engine::capture::writePng(o.imagesDir / (row.scene + "_" + row.technique + "_" + backendName + ".png"), image);
+            engine::capture::writePng(o.imagesDir / (imageStem + ".png"), image);
         }
         if (ref.still) {
             namespace cap = engine::capture;
@@ -190,7 +186,10 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
             row.rmseSrgb = cap::rmseSrgb(*ref.still, image);
             row.psnrSrgb = cap::psnrSrgb(*ref.still, image);
             row.ssim = cap::ssim(*ref.still, image);
-            row.flipMean = cap::flip(*ref.still, image);
+            Image flipMap;
+            row.flipMean = cap::flip(*ref.still, image, {}, o.imagesDir.empty() ? nullptr : &flipMap);
+            // Where the error is: the map shows what the mean hides (edges, interiors, halos).
+            if (!o.imagesDir.empty()) engine::capture::writePng(o.imagesDir / (imageStem + "_flip.png"), flipMap);
         } else {
             row.note = ref.note;
         }
@@ -212,6 +211,12 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
 }
 
 }  // namespace
+
+std::vector<BenchSubject> techniqueSubjects(const std::vector<TechniqueKind>& techniques) {
+    std::vector<BenchSubject> subjects{{kOpaqueOnly, std::nullopt, {}}};
+    for (TechniqueKind k : techniques) subjects.push_back({transparency::techniqueName(k), k, {}});
+    return subjects;
+}
 
 int resolvedThreads(int threads) {
     return threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
@@ -237,9 +242,6 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
     std::printf("[ssam-bench] %dx%d, %d rep(s) after %d warm-up, %d pan frames, soft backend %d thread(s)\n", o.width,
                 o.height, o.reps, o.warmup, o.panFrames, threads);
 
-    std::vector<Subject> subjects{{std::nullopt}};
-    for (TechniqueKind k : o.techniques) subjects.push_back({k});
-
     std::vector<BenchRow> rows;
     for (SceneKind kind : o.scenes) {
         BenchScene softScene(*soft, kind, o.contentDir);
@@ -252,8 +254,8 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
 
         for (const std::string& backendName : o.backends) {
             if (backendName == "gl" && !glBackend) {
-                for (const Subject& s : subjects) {
-                    BenchRow row = skippedRow(sceneName(kind), s.name(), backendName, o);
+                for (const BenchSubject& s : o.subjects) {
+                    BenchRow row = skippedRow(sceneName(kind), s.name, backendName, o);
                     row.note = glError;
                     rows.push_back(row);
                 }
@@ -268,7 +270,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
             }
             BenchScene& scene = ownScene ? *ownScene : softScene;
             const SceneViews& views = ownScene ? ownViews : softViews;
-            for (const Subject& s : subjects) rows.push_back(measure(backend, backendName, scene, views, s, ref, o));
+            for (const BenchSubject& s : o.subjects) rows.push_back(measure(backend, backendName, scene, views, s, ref, o));
         }
     }
     return rows;

@@ -1,9 +1,10 @@
 #pragma once
-// Runs the benchmark: every chosen technique (plus the opaque-only frame) on every chosen
-// scene and backend, timed over repetitions after warm-up, judged against the exact
-// reference (technique `reference` on the soft backend, computed once per scene), and its
-// flicker measured over the scene's sideways pan.
+// Runs the benchmark: every subject (a technique with its options, or the opaque-only
+// frame) on every chosen scene and backend, timed over repetitions after warm-up, judged
+// against the exact reference (technique `reference` on the soft backend, computed once per
+// scene), and its flicker measured over the scene's sideways pan.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,19 +14,33 @@
 
 namespace bench {
 
+// One thing measured: a technique with its options (the knob sweep measures SSAM under
+// many ssam::Config values), or the opaque-only frame.
+struct BenchSubject {
+    std::string name;                                 // the rows' technique column and image names
+    std::optional<transparency::TechniqueKind> kind;  // none: the opaque-only frame
+    // options.ssam.depthFunc is overwritten with the scenes' (reverse-Z, kDepthFunc).
+    transparency::TechniqueOptions options;
+};
+
+// The opaque-only frame, then each technique with the default options: the comparison run.
+std::vector<BenchSubject> techniqueSubjects(const std::vector<transparency::TechniqueKind>& techniques);
+
 struct BenchOptions {
     std::vector<SceneKind> scenes;
-    std::vector<transparency::TechniqueKind> techniques;
+    std::vector<BenchSubject> subjects;
     std::vector<std::string> backends;  // "soft", "gl"
     int width = 1280, height = 720;
     int reps = 5, warmup = 1;
     int panFrames = 8;  // frames of the flicker pan (at least 2)
     int threads = 0;    // soft backend threads, and LP_NUM_THREADS for llvmpipe; 0: all
     std::filesystem::path contentDir;
-    std::filesystem::path imagesDir;  // when set: each still frame as <scene>_<technique>_<backend>.png
+    // When set: each still frame as <scene>_<technique>_<backend>.png, and its per-pixel ꟻLIP
+    // error against the reference as <scene>_<technique>_<backend>_flip.png.
+    std::filesystem::path imagesDir;
 };
 
-// Rows in the order scene, backend, then opaque-only followed by the techniques as given.
+// Rows in the order scene, backend, then the subjects as given.
 // Prints one progress line per repetition to stdout.
 std::vector<BenchRow> runBench(const BenchOptions& options);
 

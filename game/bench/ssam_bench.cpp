@@ -1,9 +1,12 @@
 // ssam-bench: every transparency technique's run time against its error from the exact
 // reference (DESIGN.md "Accuracy and the ground truth", issue #6). Writes bench.csv,
-// bench_passes.csv, bench.md and bench.svg into --out.
+// bench_passes.csv, bench.md and bench.svg into --out; with --sweep, SSAM under a grid of its
+// knobs instead, into sweep.csv and sweep.md.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <string>
@@ -11,7 +14,9 @@
 
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
+#include "bench_sweep.hpp"
 #include "engine/core/error.hpp"
+#include "sweep_report.hpp"
 
 namespace {
 
@@ -28,6 +33,12 @@ struct Options {
     int threads = 0;
     bool quick = false;
     bool images = false;
+    bool sweep = false;
+    bool sweepFull = false;
+    std::string sweepLerp = "0,0.25,0.5,0.85,1";
+    std::string sweepSquare = "on,off";
+    std::string sweepReference = "16,64,128";
+    std::string sweepPrecision = "rgba8,rgba16f";
     std::string out = "out/bench";
     std::string contentDir = SSAM_CONTENT_DIR;
 };
@@ -51,6 +62,76 @@ std::string allTechniqueNames() {
     return names;
 }
 
+std::vector<transparency::TechniqueKind> parseTechniques(const std::string& list, bool noneAllowed) {
+    std::vector<transparency::TechniqueKind> kinds;
+    if (list == "all") return {transparency::allTechniques().begin(), transparency::allTechniques().end()};
+    if (noneAllowed && list == "none") return kinds;
+    for (const std::string& name : splitList(list, "--techniques")) {
+        const auto kind = transparency::parseTechnique(name);
+        if (!kind)
+            throw engine::Error("--techniques: unknown technique '" + name + "' (known: " + allTechniqueNames() +
+                                (noneAllowed ? "; or all, none)" : "; or all)"));
+        kinds.push_back(*kind);
+    }
+    return kinds;
+}
+
+float parseNumber(const std::string& item, const char* flag) {
+    char* end = nullptr;
+    errno = 0;
+    const float v = std::strtof(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0' || errno == ERANGE)
+        throw engine::Error(std::string(flag) + ": '" + item + "' is not a number");
+    return v;
+}
+
+// Each value is checked on its own, with the other knobs at their defaults, so the message
+// names both the flag and the knob (ssam::Config::validate).
+void validateKnob(const ssam::Config& c, const char* flag) {
+    try {
+        c.validate();
+    } catch (const engine::Error& e) {
+        throw engine::Error(std::string(flag) + ": " + e.what());
+    }
+}
+
+SweepGrid parseSweepGrid(const Options& o) {
+    SweepGrid g;
+    g.full = o.sweepFull;
+    g.maskLerp.clear();
+    for (const std::string& item : splitList(o.sweepLerp, "--sweep-lerp")) {
+        ssam::Config c;
+        c.maskLerp = parseNumber(item, "--sweep-lerp");
+        validateKnob(c, "--sweep-lerp");
+        g.maskLerp.push_back(c.maskLerp);
+    }
+    g.squareMask.clear();
+    for (const std::string& item : splitList(o.sweepSquare, "--sweep-square")) {
+        if (item != "on" && item != "off")
+            throw engine::Error("--sweep-square: '" + item + "' for squareMask (known: on, off)");
+        g.squareMask.push_back(item == "on");
+    }
+    g.colorAlphaReference.clear();
+    for (const std::string& item : splitList(o.sweepReference, "--sweep-reference")) {
+        ssam::Config c;
+        c.colorAlphaReference = parseNumber(item, "--sweep-reference") / 255.0f;  // given in 255ths (§3.5.3)
+        validateKnob(c, "--sweep-reference");
+        g.colorAlphaReference.push_back(c.colorAlphaReference);
+    }
+    g.maskPrecision.clear();
+    for (const std::string& item : splitList(o.sweepPrecision, "--sweep-precision")) {
+        bool known = false;
+        for (auto p : {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F})
+            if (item == ssam::maskPrecisionName(p)) {
+                g.maskPrecision.push_back(p);
+                known = true;
+            }
+        if (!known)
+            throw engine::Error("--sweep-precision: '" + item + "' for maskPrecision (known: rgba8, rgba16f, rg16f)");
+    }
+    return g;
+}
+
 BenchOptions parse(const Options& o) {
     BenchOptions b;
     for (const std::string& name : splitList(o.scenes, "--scenes")) {
@@ -59,16 +140,12 @@ BenchOptions parse(const Options& o) {
             throw engine::Error("--scenes: unknown scene '" + name + "' (known: tree, forest, vista, empty)");
         b.scenes.push_back(kind);
     }
-    if (o.techniques == "all") {
-        b.techniques.assign(transparency::allTechniques().begin(), transparency::allTechniques().end());
+    // With --sweep the techniques are measured beside the settings, for comparison only.
+    const auto techniques = parseTechniques(o.techniques, o.sweep);
+    if (o.sweep) {
+        for (transparency::TechniqueKind k : techniques) b.subjects.push_back({transparency::techniqueName(k), k, {}});
     } else {
-        for (const std::string& name : splitList(o.techniques, "--techniques")) {
-            const auto kind = transparency::parseTechnique(name);
-            if (!kind)
-                throw engine::Error("--techniques: unknown technique '" + name + "' (known: " + allTechniqueNames() +
-                                    "; or all)");
-            b.techniques.push_back(*kind);
-        }
+        b.subjects = techniqueSubjects(techniques);
     }
     for (const std::string& name : splitList(o.backends, "--backend")) {
         if (name != "soft" && name != "gl")
@@ -98,7 +175,10 @@ int main(int argc, char** argv) {
     CLI::App app{"ssam-bench: run time against error of every transparency technique (seeds/000, issue #6)"};
     Options o;
     app.add_option("--scenes", o.scenes, "comma list of scenes: tree, forest, vista, empty")->capture_default_str();
-    app.add_option("--techniques", o.techniques, "comma list of techniques (" + allTechniqueNames() + ") or all")
+    app.add_option("--techniques", o.techniques,
+                   "comma list of techniques (" + allTechniqueNames() +
+                       ") or all; with --sweep, the ones measured beside the settings (default there: "
+                       "alpha-test,ssam-plus; or none)")
         ->capture_default_str();
     app.add_option("--backend", o.backends, "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU)")
         ->capture_default_str();
@@ -114,10 +194,32 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
     app.add_flag("--quick", o.quick, "CI mode: 160x90, 1 rep, no warm-up, 3 pan frames (explicit flags win)");
-    app.add_flag("--images", o.images, "also write each still frame as a PNG into OUT/images");
+    app.add_flag("--images", o.images,
+                 "also write each still frame, and its per-pixel FLIP error (_flip), as a PNG into OUT/images");
+    CLI::Option* sweep = app.add_flag("--sweep", o.sweep,
+                                      "instead of comparing techniques: SSAM under a grid of its knobs "
+                                      "(ssam::Config), each against the exact reference; writes sweep.csv, sweep.md");
+    app.add_flag("--sweep-full", o.sweepFull,
+                 "every combination of the sweep values (default: every maskLerp x squareMask, then each "
+                 "other knob alone, the rest at the paper's defaults)")
+        ->needs(sweep);
+    app.add_option("--sweep-lerp", o.sweepLerp, "maskLerp values (§3.5.4), each in [0,1]")
+        ->capture_default_str()
+        ->needs(sweep);
+    app.add_option("--sweep-square", o.sweepSquare, "squareMask values (§3.6.2): on, off")
+        ->capture_default_str()
+        ->needs(sweep);
+    app.add_option("--sweep-reference", o.sweepReference,
+                   "colorAlphaReference values in 255ths (§3.5.3; Pure shipped 64), each in [0,255]")
+        ->capture_default_str()
+        ->needs(sweep);
+    app.add_option("--sweep-precision", o.sweepPrecision, "maskPrecision values (§3.5.2): rgba8, rgba16f, rg16f")
+        ->capture_default_str()
+        ->needs(sweep);
     app.add_option("--out", o.out, "output directory")->capture_default_str();
     app.add_option("--content", o.contentDir, "content directory")->check(CLI::ExistingDirectory)->capture_default_str();
     CLI11_PARSE(app, argc, argv);
+    if (o.sweep && !app.count("--techniques")) o.techniques = "alpha-test,ssam-plus";
     if (o.quick) {
         if (!app.count("--size")) o.size = "160x90";
         if (!app.count("--reps")) o.reps = 1;
@@ -126,17 +228,28 @@ int main(int argc, char** argv) {
     }
     try {
         const BenchOptions options = parse(o);
+        // Every sweep value is checked before the first frame: a bad one costs no reference render.
+        const std::vector<SweepSetting> settings = o.sweep ? sweepSettings(parseSweepGrid(o)) : std::vector<SweepSetting>{};
         std::string command = "ssam-bench";
         for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
         const std::filesystem::path out(o.out);
         std::filesystem::create_directories(out);
         BenchOptions run = options;
         if (o.images) run.imagesDir = out / "images";
+        const RunInfo info{command, resolvedThreads(options.threads), options.reps, options.warmup, options.panFrames};
+        if (o.sweep) {
+            std::printf("ssam-bench --sweep: %zu setting(s) per scene\n", settings.size());
+            const SweepRun sweepRun = runSweep(run, settings, options.subjects);
+            writeSweepCsv(out / "sweep.csv", sweepRun.results);
+            writeSweepMarkdown(out / "sweep.md", sweepRun, info);
+            std::printf("ssam-bench: wrote %s/sweep.csv, sweep.md (%zu settings x %zu scene(s) x %zu backend(s))\n",
+                        out.string().c_str(), settings.size(), options.scenes.size(), options.backends.size());
+            return 0;
+        }
         const std::vector<BenchRow> rows = runBench(run);
         writeCsv(out / "bench.csv", rows);
         writePassesCsv(out / "bench_passes.csv", rows);
-        writeMarkdown(out / "bench.md", rows,
-                      {command, resolvedThreads(options.threads), options.reps, options.warmup, options.panFrames});
+        writeMarkdown(out / "bench.md", rows, info);
         writeSvg(out / "bench.svg", rows);
         std::printf("ssam-bench: wrote %s/bench.csv, bench_passes.csv, bench.md, bench.svg (%zu rows)\n",
                     out.string().c_str(), rows.size());

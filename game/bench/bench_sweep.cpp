@@ -1,0 +1,111 @@
+#include "bench_sweep.hpp"
+
+#include <cstdio>
+
+#include "engine/core/error.hpp"
+
+namespace bench {
+
+namespace {
+
+bool sameKnobs(const ssam::Config& a, const ssam::Config& b) {
+    return a.maskLerp == b.maskLerp && a.squareMask == b.squareMask &&
+           a.colorAlphaReference == b.colorAlphaReference && a.maskPrecision == b.maskPrecision &&
+           a.foliageClearColor == b.foliageClearColor && a.depthFunc == b.depthFunc;
+}
+
+template <typename T>
+void requireValues(const std::vector<T>& values, const char* knob) {
+    if (values.empty()) throw engine::Error(std::string("ssam-bench --sweep: no value for ") + knob);
+}
+
+}  // namespace
+
+std::string settingName(const ssam::Config& c) {
+    char buf[96];
+    // The reference in 255ths, as the paper counts it (§3.5.3: "≈ 64", "≈ 128").
+    std::snprintf(buf, sizeof buf, "ssam-lerp%g-%s-ref%.4g-%s", double(c.maskLerp), c.squareMask ? "sq" : "nosq",
+                  double(c.colorAlphaReference) * 255.0, ssam::maskPrecisionName(c.maskPrecision));
+    return buf;
+}
+
+std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
+    requireValues(grid.maskLerp, "maskLerp");
+    requireValues(grid.squareMask, "squareMask");
+    requireValues(grid.colorAlphaReference, "colorAlphaReference");
+    requireValues(grid.maskPrecision, "maskPrecision");
+    const ssam::Config defaults;
+    std::vector<SweepSetting> settings;
+    auto add = [&](const ssam::Config& c) {
+        c.validate();
+        for (const SweepSetting& s : settings)
+            if (sameKnobs(s.config, c)) return;
+        settings.push_back({c, settingName(c), sameKnobs(c, defaults)});
+    };
+    add(defaults);
+    if (grid.full) {
+        for (float lerp : grid.maskLerp)
+            for (bool square : grid.squareMask)
+                for (float reference : grid.colorAlphaReference)
+                    for (ssam::MaskPrecision precision : grid.maskPrecision) {
+                        ssam::Config c = defaults;
+                        c.maskLerp = lerp;
+                        c.squareMask = square;
+                        c.colorAlphaReference = reference;
+                        c.maskPrecision = precision;
+                        add(c);
+                    }
+        return settings;
+    }
+    for (float lerp : grid.maskLerp)
+        for (bool square : grid.squareMask) {
+            ssam::Config c = defaults;
+            c.maskLerp = lerp;
+            c.squareMask = square;
+            add(c);
+        }
+    for (float reference : grid.colorAlphaReference) {
+        ssam::Config c = defaults;
+        c.colorAlphaReference = reference;
+        add(c);
+    }
+    for (ssam::MaskPrecision precision : grid.maskPrecision) {
+        ssam::Config c = defaults;
+        c.maskPrecision = precision;
+        add(c);
+    }
+    return settings;
+}
+
+std::vector<BenchSubject> sweepSubjects(const std::vector<SweepSetting>& settings) {
+    std::vector<BenchSubject> subjects;
+    for (const SweepSetting& s : settings) {
+        transparency::TechniqueOptions options;
+        options.ssam = s.config;
+        subjects.push_back({s.name, transparency::TechniqueKind::Ssam, options});
+    }
+    return subjects;
+}
+
+SweepRun runSweep(BenchOptions options, const std::vector<SweepSetting>& settings,
+                  const std::vector<BenchSubject>& comparison) {
+    options.subjects = sweepSubjects(settings);
+    options.subjects.insert(options.subjects.end(), comparison.begin(), comparison.end());
+    const std::vector<BenchRow> rows = runBench(options);
+    // runBench's rows: per scene and backend, one block of the subjects in order.
+    const std::size_t block = options.subjects.size();
+    if (rows.size() % block != 0)
+        throw engine::Error("ssam-bench --sweep: " + std::to_string(rows.size()) + " rows for " +
+                            std::to_string(block) + " subjects");
+    SweepRun run;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const std::size_t k = i % block;
+        if (k < settings.size())
+            run.results.push_back({settings[k], rows[i]});
+        else
+            run.comparison.push_back(rows[i]);
+    }
+    return run;
+}
+
+}  // namespace bench
