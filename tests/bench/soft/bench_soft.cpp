@@ -13,6 +13,12 @@
 //                 (every layer is shaded: the pass's cost scales with depth complexity)
 //   SsamColor     the same layers through SSAM's colour pass (§3.5.3): FoliageColor, alpha
 //                 test at 64/255, depth test and write, into RGBA8
+//   SsamMaskFar, SsamColorFar
+//                 the same two passes with the texture repeated 16x instead of 4x: minified
+//                 2 to 5 times, so trilinear filtering mixes two mip levels with a log2f per
+//                 fragment, as on the distant foliage of the ssam-bench forest
+//   SsamComposite SSAM's composite (§3.5.4): a full-screen RGBA8 mask (no foliage over 40%
+//                 of it) and sRGB foliage colour blended onto an sRGB target
 //   SmallTris     100k triangles of ~10 px each, Flat into RGBA8 + depth (LessEqual)
 //   SetupCulled   1M triangles outside the viewport (inside the guard band): vertex
 //                 stage, clipping and setup only, every triangle dropped
@@ -48,7 +54,6 @@ namespace render = engine::render;
 namespace soft = engine::render::soft;
 
 constexpr int kWidth = 1280, kHeight = 720;
-constexpr std::uint64_t kScreenPixels = std::uint64_t(kWidth) * kHeight;
 
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& v) {
@@ -211,17 +216,17 @@ void BM_TexturedAlpha(benchmark::State& state) {
 }
 
 // 8 vertical 24 x 14 m foliage layers 1 m apart, 6 to 13 m in front of a 60° camera
-// looking slightly down the row, so w and the texture LOD vary over every layer; uv 0..4.
+// looking slightly down the row, so w and the texture LOD vary over every layer; uv 0..repeats.
 struct FoliageLayers {
     std::vector<render::Vertex> vertices;
     glm::mat4 viewProj{1.0f};
-    FoliageLayers() {
+    explicit FoliageLayers(float repeats) {
         for (int i = 0; i < 8; ++i) {
             const float z = -6.0f - float(i), x0 = -12.0f + 0.7f * float(i), y0 = -7.0f;
             auto at = [&](float u, float v) {
                 render::Vertex vertex;
                 vertex.position = {x0 + 24.0f * u, y0 + 14.0f * v, z - 2.0f * u};
-                vertex.uv = {4.0f * u, 4.0f * (1.0f - v)};
+                vertex.uv = {repeats * u, repeats * (1.0f - v)};
                 return vertex;
             };
             const render::Vertex bl = at(0, 0), br = at(1, 0), tr = at(1, 1), tl = at(0, 1);
@@ -232,14 +237,14 @@ struct FoliageLayers {
     }
 };
 
-// One SSAM foliage pass over FoliageLayers: `mask` the mask pass, else the colour pass.
-void ssamPass(benchmark::State& state, bool mask) {
+// One SSAM foliage pass over FoliageLayers(repeats): `mask` the mask pass, else the colour pass.
+void ssamPass(benchmark::State& state, bool mask, float repeats) {
     auto backend = makeBackend(state);
     render::Backend& b = *backend;
     const auto target = renderTarget(b, render::Format::RGBA8_UNORM);
     const auto depth = renderTarget(b, render::Format::D32F);
     const auto texture = foliageTexture(b);
-    const FoliageLayers layers;
+    const FoliageLayers layers(repeats);
     const auto vb = vertexBuffer(b, layers.vertices);
     render::PipelineDesc pd;
     pd.raster.cull = render::CullMode::None;
@@ -272,8 +277,65 @@ void ssamPass(benchmark::State& state, bool mask) {
         b.endPass();
     });
 }
-void BM_SsamMask(benchmark::State& state) { ssamPass(state, true); }
-void BM_SsamColor(benchmark::State& state) { ssamPass(state, false); }
+void BM_SsamMask(benchmark::State& state) { ssamPass(state, true, 4.0f); }
+void BM_SsamColor(benchmark::State& state) { ssamPass(state, false, 4.0f); }
+void BM_SsamMaskFar(benchmark::State& state) { ssamPass(state, true, 16.0f); }
+void BM_SsamColorFar(benchmark::State& state) { ssamPass(state, false, 16.0f); }
+
+// A screen-sized RGBA8 texture made by texel(x, y, out) (4 bytes into out).
+template <typename Texel>
+render::TextureHandle screenTexture(render::Backend& b, const char* name, render::Format format, Texel&& texel) {
+    std::vector<std::uint8_t> texels(std::size_t(kWidth) * kHeight * 4);
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) texel(x, y, &texels[(std::size_t(y) * kWidth + x) * 4]);
+    render::TextureDesc d;
+    d.name = name;
+    d.width = kWidth;
+    d.height = kHeight;
+    d.format = format;
+    render::TextureData data;
+    data.levels.push_back(std::as_bytes(std::span<const std::uint8_t>(texels)));
+    return b.createTexture(d, &data);
+}
+
+void BM_SsamComposite(benchmark::State& state) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_SRGB);
+    // MAX mask in r, ADD mask in a: zero left of 40% of the width (no foliage there), then
+    // soft leaf-like blobs, saturating where they overlap.
+    const auto mask = screenTexture(b, "mask", render::Format::RGBA8_UNORM, [](int x, int y, std::uint8_t* t) {
+        const float leaf = std::sin(float(x) * 0.11f) * std::sin(float(y) * 0.13f);
+        const float m = x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + leaf, 0.0f, 1.0f);
+        t[0] = t[1] = t[2] = std::uint8_t(255.0f * m);
+        t[3] = std::uint8_t(std::min(255.0f, 400.0f * m));
+    });
+    const auto foliage = screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [](int x, int y, std::uint8_t* t) {
+        t[0] = std::uint8_t(40 + x % 64);
+        t[1] = std::uint8_t(120 + y % 96);
+        t[2] = std::uint8_t(30 + (x ^ y) % 32);
+        t[3] = 255;
+    });
+    render::PipelineDesc pd;
+    pd.program = render::ProgramKind::Composite;
+    pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
+                   render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
+    const auto pipeline = b.createPipeline(pd);
+    render::CompositeParams params;
+    params.foliage = foliage;
+    params.mask = mask;
+    render::PassDesc pass;
+    pass.name = "ssam composite";
+    pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(0.3f, 0.5f, 0.8f, 1.0f)};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        render::DrawDesc d;
+        d.pipeline = pipeline;
+        d.params = params;
+        b.draw(d);
+        b.endPass();
+    });
+}
 
 // 100k right triangles with 4.5 px legs (~10 px each) on a 400 x 250 grid over the screen.
 void BM_SmallTris(benchmark::State& state) {
@@ -386,6 +448,9 @@ SOFT_BENCH(BM_TexturedAlpha);
 SOFT_BENCH(BM_BlendFill);
 SOFT_BENCH(BM_SsamMask);
 SOFT_BENCH(BM_SsamColor);
+SOFT_BENCH(BM_SsamMaskFar);
+SOFT_BENCH(BM_SsamColorFar);
+SOFT_BENCH(BM_SsamComposite);
 SOFT_BENCH(BM_SmallTris);
 SOFT_BENCH(BM_SetupCulled);
 SOFT_BENCH(BM_SetupTiny);

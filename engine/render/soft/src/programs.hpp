@@ -29,7 +29,9 @@ struct ProgramNeeds {
     bool uv = false;
     bool derivatives = false;
     bool normal = false;
-    bool color = false;
+    bool color = false;       // the vertex colour
+    bool colorAlpha = false;  // only its alpha (Fragment::color keeps 1 in r, g, b)
+    constexpr bool anyAttribute() const { return uv || normal || color || colorAlpha; }
 };
 
 // Texture alpha mode conversion: programs output straight alpha.
@@ -60,14 +62,11 @@ struct FlatProgram {
 // interpolated inputs are lanes 0..3 of the arrays (vertex alpha, u, v, and du/dx, dv/dx,
 // du/dy, dv/dy in duv[0..3]), for the lanes set in `lanes`: factor * colorA * sampled, in
 // the order the programs multiply them.
-inline void alphaTimes4(const AlphaSampler& sampler, bool textured, float factor, const float* colorA, const float* u,
-                        const float* v, const float* const* duv, std::uint32_t lanes, float* out) {
-    alignas(16) float sampled[4];
-    if (textured) sampler.sample4(u, v, duv[0], duv[1], duv[2], duv[3], lanes, sampled);
-    for (int i = 0; i < 4; ++i) {
-        out[i] = factor * colorA[i];
-        if (textured) out[i] *= sampled[i];
-    }
+inline __m128 alphaTimes4(const AlphaSampler& sampler, bool textured, float factor, const float* colorA, const float* u,
+                          const float* v, const float* const* duv, std::uint32_t lanes) {
+    const __m128 alpha = _mm_mul_ps(_mm_set1_ps(factor), _mm_loadu_ps(colorA));
+    if (!textured) return alpha;
+    return _mm_mul_ps(alpha, sampler.alpha4(sampler.lookup4(u, v, duv[0], duv[1], duv[2], duv[3], lanes)));
 }
 #endif
 
@@ -89,13 +88,10 @@ struct SurfaceProgram {
     // The alpha shade() outputs for 4 fragments (see alphaTimes4), with the same bits: the
     // rasterizer alpha-tests with it before shading the colour.
     bool hasAlpha4() const { return Foliage && (!texture || alphaSampler.simd4()); }
-    void rgba4(const float* u, const float* v, const float* const* duv, std::uint32_t lanes, float (*out)[4]) const {
-        alphaSampler.sampleRgba4(u, v, duv[0], duv[1], duv[2], duv[3], lanes, out);
-    }
-    void alpha4(const float* colorA, const float* u, const float* v, const float* const* duv, std::uint32_t lanes,
-                float* out) const {
+    __m128 alpha4(const float* colorA, const float* u, const float* v, const float* const* duv,
+                  std::uint32_t lanes) const {
         // base.a = (baseColorFactor.a * vertex alpha) * texel alpha; toStraight keeps alpha.
-        alphaTimes4(alphaSampler, texture != nullptr, params.baseColorFactor.a, colorA, u, v, duv, lanes, out);
+        return alphaTimes4(alphaSampler, texture != nullptr, params.baseColorFactor.a, colorA, u, v, duv, lanes);
     }
 #endif
 
@@ -121,10 +117,10 @@ using OpaqueLitProgram = SurfaceProgram<false>;
 using FoliageColorProgram = SurfaceProgram<true>;
 
 struct FoliageAlphaProgram {
-    static constexpr ProgramNeeds kNeeds{true, true, false, true};
+    static constexpr ProgramNeeds kNeeds{true, true, false, false, true};
     AlphaOnlyParams params;
     const SoftTexture* texture = nullptr;
-    AlphaSampler alphaSampler;  // valid for RGBA8 textures: the same alpha, one byte per tap
+    AlphaSampler alphaSampler;  // valid for RGBA8 textures: the same alpha, read alone
 
     FoliageAlphaProgram(const AlphaOnlyParams& p, const SoftTexture* t) : params(p), texture(t) {
         if (texture) alphaSampler = AlphaSampler(*texture, params.baseColor.sampler);
@@ -148,10 +144,11 @@ struct FoliageAlphaProgram {
     bool hasAlpha4() const { return !texture || alphaSampler.simd4(); }
     // alpha() of 4 fragments whose interpolated inputs are lanes 0..3 of the arrays (vertex
     // alpha, u, v, and du/dx, dv/dx, du/dy, dv/dy in duv[0..3]), for the lanes set in `lanes`.
-    void alpha4(const float* colorA, const float* u, const float* v, const float* const* duv, std::uint32_t lanes,
-                float* out) const {
-        alphaTimes4(alphaSampler, texture != nullptr, params.alphaFactor, colorA, u, v, duv, lanes, out);
-        for (int i = 0; i < 4; ++i) out[i] = out[i] > 0.0f ? (out[i] < 1.0f ? out[i] : 1.0f) : 0.0f;  // as alpha()
+    __m128 alpha4(const float* colorA, const float* u, const float* v, const float* const* duv,
+                  std::uint32_t lanes) const {
+        const __m128 a = alphaTimes4(alphaSampler, texture != nullptr, params.alphaFactor, colorA, u, v, duv, lanes);
+        // As alpha()'s saturate: maxps(a, 0) is 0 for a <= 0 and for NaN, then minps(., 1).
+        return _mm_min_ps(_mm_max_ps(a, _mm_setzero_ps()), _mm_set1_ps(1.0f));
     }
 #endif
 };

@@ -112,6 +112,7 @@ public:
             t.levels.push_back(std::move(l));
         }
         if (data) upload(t, *data, what);
+        t.copyAlpha();  // texels are final here unless the texture is a render target
         return textures_.add(std::move(t));
     }
 

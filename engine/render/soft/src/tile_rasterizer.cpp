@@ -154,6 +154,7 @@ struct TargetView {
     bool blend = false;
     bool normalized = false;
     bool rgba8Plain = false;  // RGBA8_UNORM, all four channels, no blending: a 4-byte store
+    bool srgb8Plain = false;  // RGBA8_SRGB, all four channels, no blending: storeRgba8Srgb
     bool byteLut = false;     // RGBA8 blend whose every stored byte is a function of that byte alone
     std::byte* at(int x, int y) const { return base + std::size_t(y) * rowBytes + std::size_t(x) * pixelBytes; }
 };
@@ -199,6 +200,82 @@ inline void storeRgba8Unorm(std::byte* p, const glm::vec4& v) {
     p[2] = std::byte{encodeUnorm8(v.z)};
     p[3] = std::byte{encodeUnorm8(v.w)};
 }
+// storeTexel(p, RGBA8_SRGB, v, WriteAll) without its per-channel format switch.
+inline void storeRgba8Srgb(std::byte* p, const glm::vec4& v) {
+    p[0] = std::byte{encodeSrgb8(v.x)};
+    p[1] = std::byte{encodeSrgb8(v.y)};
+    p[2] = std::byte{encodeSrgb8(v.z)};
+    p[3] = std::byte{encodeUnorm8(v.w)};
+}
+
+// Whether every 8-bit code decodes (byteTables()) and encodes back to itself, UNORM and sRGB
+// (checked once here rather than assumed): then a blend whose result is the decoded stored
+// value stores the byte that was there.
+bool bytesRoundTrip() {
+    static const bool roundTrip = [] {
+        const ByteTables& t = byteTables();
+        for (int b = 0; b < 256; ++b)
+            if (encodeUnorm8(t.unorm[b]) != b || encodeSrgb8(t.srgb[b]) != b) return false;
+        return true;
+    }();
+    return roundTrip;
+}
+
+// The SSAM composite's blend (seeds/000 §3.5.4): colour SRC_ALPHA / INV_SRC_ALPHA ADD, alpha
+// ZERO / ONE ADD (the target keeps its alpha), all channels written.
+bool isCompositeBlend(const BlendState& b) {
+    return b.enabled && b.srcRgb == BlendFactor::SrcAlpha && b.dstRgb == BlendFactor::InvSrcAlpha &&
+           b.opRgb == BlendOp::Add && b.srcAlpha == BlendFactor::Zero && b.dstAlpha == BlendFactor::One &&
+           b.opAlpha == BlendOp::Add && b.writeMask == WriteAll;
+}
+bool isRgba8(const SoftTexture* t) {
+    return t && t->desc.samples == 1 && (t->desc.format == Format::RGBA8_UNORM || t->desc.format == Format::RGBA8_SRGB);
+}
+
+#if SSAM_SOFT_SSE2
+// encodeUnorm8 of each lane, as a 32-bit integer: 0 unless v > 0 (NaN too), 255 from 1 on,
+// else v * 255 + 0.5 truncated (the same IEEE mul and add).
+inline __m128i encodeUnorm8x4(__m128 v) {
+    const __m128i rounded = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(v, _mm_set1_ps(255.0f)), _mm_set1_ps(0.5f)));
+    const __m128i positive = _mm_castps_si128(_mm_cmpgt_ps(v, _mm_setzero_ps()));
+    const __m128i full = _mm_castps_si128(_mm_cmpge_ps(v, _mm_set1_ps(1.0f)));
+    return _mm_or_si128(_mm_and_si128(full, _mm_set1_epi32(255)), _mm_andnot_si128(full, _mm_and_si128(positive, rounded)));
+}
+
+// Lanes (bit i: pixel i of the 4 RGBA8 pixels at p) whose stored bytes, with the bytes a
+// write mask leaves set to 0xFF in `unwritten`, are all 0xFF.
+inline std::uint32_t saturatedLanes(const std::byte* p, std::uint32_t unwritten) {
+    const __m128i stored = _mm_or_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)),
+                                        _mm_set1_epi32(int(unwritten)));
+    return std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(stored, _mm_set1_epi32(-1)))));
+}
+
+// blendOneOneRgba8 of the 4 RGBA8_UNORM pixels at p, pixel i with alpha a[i] in [0, 1], for
+// the lanes set in `lanes`; the other pixels are stored back as they were. Per channel the
+// same operations: MAX max(encode(a), d), ADD encode(a + d / 255) with d / 255 the unorm
+// table's value (byteTables(): float(d) / 255.0f, one correctly rounded division).
+inline void blendOneOneRgba8x4(const BlendState& b, std::byte* p, __m128 a, std::uint32_t lanes) {
+    __m128i* at = reinterpret_cast<__m128i*>(p);
+    const __m128i stored = _mm_loadu_si128(at);
+    const __m128i encoded = encodeUnorm8x4(a);
+    __m128i blended = _mm_setzero_si128();
+    for (int c = 0; c < 4; ++c) {
+        const __m128i d = _mm_and_si128(_mm_srli_epi32(stored, 8 * c), _mm_set1_epi32(0xFF));
+        __m128i out = d;
+        if (b.writeMask & (1u << c)) {
+            if ((c < 3 ? b.opRgb : b.opAlpha) == BlendOp::Max) {
+                out = _mm_max_epi16(encoded, d);  // both in [0, 255]: the 16-bit max is the max
+            } else {
+                out = encodeUnorm8x4(_mm_add_ps(a, _mm_div_ps(_mm_cvtepi32_ps(d), _mm_set1_ps(255.0f))));
+            }
+        }
+        blended = _mm_or_si128(blended, _mm_slli_epi32(out, 8 * c));
+    }
+    const __m128i bits = _mm_setr_epi32(1, 2, 4, 8);
+    const __m128i write = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(int(lanes)), bits), bits);
+    _mm_storeu_si128(at, _mm_or_si128(_mm_and_si128(write, blended), _mm_andnot_si128(write, stored)));
+}
+#endif
 
 template <typename Program>
 class TriangleRasterizer {
@@ -221,8 +298,17 @@ public:
             TargetView& v = color_[i];
             v = view(*draw.colorTargets[i], draw.blendNeeded[i]);
             v.rgba8Plain = v.format == Format::RGBA8_UNORM && !v.blend && draw.blend[i].writeMask == WriteAll;
+            v.srgb8Plain = v.format == Format::RGBA8_SRGB && !v.blend && draw.blend[i].writeMask == WriteAll;
             v.byteLut = (v.format == Format::RGBA8_UNORM || v.format == Format::RGBA8_SRGB) && v.blend &&
                         blendIsPerChannel(draw.blend[i]);
+        }
+        if constexpr (std::is_same_v<Program, CompositeProgram>) {
+            // The SSAM composite as ScreenSpaceAlphaMask draws it onto an 8-bit target
+            // (shadeCompositeRow); anything else takes the general path.
+            compositeRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite &&
+                            draw.colorTargetCount == 1 && isRgba8(draw.colorTargets[0]) && draw.blendNeeded[0] &&
+                            isCompositeBlend(draw.blend[0]) && isRgba8(program.foliage) && isRgba8(program.mask) &&
+                            program.mask->desc.format == Format::RGBA8_UNORM && !program.maskAdd;
         }
 #if SSAM_SOFT_SSE2
         if constexpr (std::is_same_v<Program, FoliageColorProgram>)
@@ -297,7 +383,7 @@ private:
             return;
         } else {
             constexpr ProgramNeeds needs = Program::kNeeds;
-            if constexpr (needs.uv || needs.normal || needs.color) {
+            if constexpr (needs.anyAttribute()) {
                 if (!constantPlane(t.inverseW)) return;
             }
             if constexpr (needs.uv) {
@@ -310,6 +396,9 @@ private:
             if constexpr (needs.color) {
                 for (int k = 0; k < 4; ++k)
                     if (!constantPlane(t.attributeOverW[kAttrColor + k])) return;
+            }
+            if constexpr (needs.colorAlpha) {
+                if (!constantPlane(t.attributeOverW[kAttrColor + 3])) return;
             }
         }
         constant_ = true;
@@ -412,6 +501,7 @@ private:
         const TargetView& target = color_[i];
         if (!target.blend) {
             if (target.rgba8Plain && mask == WriteAll) storeRgba8Unorm(p, color);
+            else if (target.srgb8Plain && mask == WriteAll) storeRgba8Srgb(p, color);
             else storeTexel(p, target.format, color, mask);
         } else {
             storeTexel(p, target.format,
@@ -517,6 +607,12 @@ private:
             if (!constantDiscard_) writeConstantRow(bx, py, live, z, depthAt);
             return;
         }
+        if constexpr (std::is_same_v<Program, CompositeProgram>) {
+            if (compositeRow_) {
+                shadeCompositeRow(bx, py, live);
+                return;
+            }
+        }
 #if SSAM_SOFT_SSE2
         if constexpr (std::is_same_v<Program, FoliageAlphaProgram>) {
             if (alphaRow_) {
@@ -530,8 +626,8 @@ private:
                 return;
             }
         }
-        if (kBitCount[live] >= 2) {  // the attributes of all 8 lanes at once
-            interpolateRow(t, centerX0, fy);
+        if (kBitCount[live] >= 2) {  // the attributes of 4 lanes at a time
+            interpolateRow(t, centerX0, fy, live);
             for (std::uint32_t bits = live; bits; bits &= bits - 1) {
                 const int i = __builtin_ctz(bits);
                 shadeSingle(rowFragment(t, bx + i, py, i), bx + i, py, z[i], depthAt + i * sizeof(float));
@@ -547,24 +643,65 @@ private:
         }
     }
 
+    // CompositeProgram's row (compositeRow_): shade() and the composite blend, per live pixel
+    // the same operations, with the 8-bit texels decoded straight from the tables. Every
+    // value is in [0, 1], so blend()'s clamps change nothing, and the alpha written is the
+    // stored one (blend * 0 + d = d, encoded back to the same byte). Where the mask gives
+    // blend 0 the colour is c * 0 + d * 1 = d, the decoded stored byte: nothing to write when
+    // bytes round-trip (bytesRoundTrip), and most of the screen has no foliage.
+    void shadeCompositeRow(int bx, int py, std::uint32_t live) {
+        counters_.pixelsShaded += kBitCount[live];
+        const ByteTables& tables = byteTables();
+        const CompositeParams& params = program_.params;
+        const TargetView& target = color_[0];
+        const bool srgbTarget = target.format == Format::RGBA8_SRGB;
+        const float* targetTable = srgbTarget ? tables.srgb : tables.unorm;
+        const float* foliageTable = program_.foliage->desc.format == Format::RGBA8_SRGB ? tables.srgb : tables.unorm;
+        const bool skipZero = bytesRoundTrip();
+        auto byteAt = [](const std::byte* p, int c) { return std::to_integer<std::uint8_t>(p[c]); };
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int px = bx + __builtin_ctz(bits);
+            const std::byte* m = program_.mask->texel(0, px, py);
+            const float maxMask = tables.unorm[byteAt(m, 0)], addMask = tables.unorm[byteAt(m, 3)];
+            float blend = maxMask + (addMask - maxMask) * params.maskLerp;
+            blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
+            if (params.squareMask) blend *= blend;
+            if (blend == 0.0f && skipZero) continue;
+            const std::byte* foliage = program_.foliage->texel(0, px, py);
+            std::byte* p = target.at(px, py);
+            const float keep = 1.0f - blend;
+            for (int c = 0; c < 3; ++c) {
+                const float out = foliageTable[byteAt(foliage, c)] * blend + targetTable[byteAt(p, c)] * keep;
+                p[c] = std::byte{srgbTarget ? encodeSrgb8(out) : encodeUnorm8(out)};
+            }
+            if (!skipZero) p[3] = std::byte{encodeUnorm8(tables.unorm[byteAt(p, 3)])};
+        }
+    }
+
 #if SSAM_SOFT_SSE2
     // FoliageAlpha's row (alphaRow_): what shadeSingle does for each live lane, with the
     // program's replicated alpha kept as one float and ONE/ONE ADD/MAX RGBA8 blends done on
-    // the stored bytes (blendOneOneRgba8).
+    // the stored bytes (blendOneOneRgba8, four pixels at a time where the row lies inside
+    // the target: blendOneOneRgba8x4). Under such blends a pixel whose written bytes are
+    // all 255 can no longer change: MAX gives max(encode(a), 255) = 255 and ADD
+    // encode(a + 1) = 255 for any a in [0, 1], so the layers drawn after the mask saturated
+    // there skip the sampling. (Still counted as shaded: the program's result is known
+    // without running it.)
     void shadeAlphaRow(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy) {
         counters_.pixelsShaded += kBitCount[live];
+        const bool four = program_.hasAlpha4();
+        if (four && alphaZeroSkips_ && bx + kBlockSize <= width_) {
+            shadeAlphaRow4(t, bx, py, live, centerX0, fy);
+            return;
+        }
         if (alphaZeroSkips_) {
-            // A pixel whose written bytes are all 255 can no longer change: MAX gives
-            // max(encode(a), 255) = 255 and ADD encode(a + 1) = 255 for any a in [0, 1], so the
-            // layers drawn after the mask saturated there skip the sampling. (Still counted as
-            // shaded: the program's result is known without running it.)
             std::uint32_t open = 0;
             for (std::uint32_t bits = live; bits; bits &= bits - 1) {
                 const int i = __builtin_ctz(bits);
                 for (int k = 0; k < draw_.colorTargetCount; ++k) {
                     std::uint32_t stored;
                     std::memcpy(&stored, color_[k].at(bx + i, py), sizeof stored);
-                    if ((stored | unwrittenBytes_[k]) != 0xFFFFFFFFu) {
+                    if ((stored | unwrittenBytes_[k]) != 0xFFFFFFFFu) {  // not saturated
                         open |= 1u << i;
                         break;
                     }
@@ -573,17 +710,12 @@ private:
             live = open;
             if (!live) return;
         }
-        interpolateRow(t, centerX0, fy);
+        interpolateRow(t, centerX0, fy, live);
         alignas(16) float alpha[kBlockSize];
-        const bool four = program_.hasAlpha4();
         if (four) {
             for (int h = 0; h < 2; ++h) {
                 const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
-                if (!lanes) continue;
-                const float* duv[4] = {row_.duv[0] + 4 * h, row_.duv[1] + 4 * h, row_.duv[2] + 4 * h,
-                                       row_.duv[3] + 4 * h};
-                program_.alpha4(row_.color[3] + 4 * h, row_.uv[0] + 4 * h, row_.uv[1] + 4 * h, duv, lanes,
-                                alpha + 4 * h);
+                if (lanes) _mm_store_ps(alpha + 4 * h, alpha4(h, lanes));
             }
         }
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
@@ -602,24 +734,46 @@ private:
         }
     }
 
-    // FoliageColor's row under a Keep alpha test (alphaFirst_): the texels four lanes at a
-    // time (rgba4: the general sampler's bits), then the alpha test on the alpha shade()
+    // shadeAlphaRow where every target takes blendOneOneRgba8 and the 8 pixels lie inside
+    // the targets: four lanes at a time, branch-free per lane.
+    void shadeAlphaRow4(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy) {
+        for (int h = 0; h < 2; ++h) {
+            std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
+            if (!lanes) continue;
+            std::uint32_t saturated = 0xFu;  // in every target (see shadeAlphaRow)
+            for (int k = 0; k < draw_.colorTargetCount; ++k)
+                saturated &= saturatedLanes(color_[k].at(bx + 4 * h, py), unwrittenBytes_[k]);
+            lanes &= ~saturated;
+            if (!lanes) continue;
+            interpolateHalf(t, centerX0, fy, h);
+            // A zero alpha needs no skipping: it stores back the bytes that were there.
+            const __m128 a = alpha4(h, lanes);
+            for (int k = 0; k < draw_.colorTargetCount; ++k)
+                blendOneOneRgba8x4(draw_.blend[k], color_[k].at(bx + 4 * h, py), a, lanes);
+        }
+    }
+
+    // program_.alpha4 of lanes 4h..4h+3 of row_.
+    __m128 alpha4(int h, std::uint32_t lanes) const {
+        const int o = 4 * h;
+        const float* duv[4] = {row_.duv[0] + o, row_.duv[1] + o, row_.duv[2] + o, row_.duv[3] + o};
+        return program_.alpha4(row_.color[3] + o, row_.uv[0] + o, row_.uv[1] + o, duv, lanes);
+    }
+
+    // FoliageColor's row under a Keep alpha test (alphaFirst_): the texel alpha four lanes
+    // at a time (the general sampler's bits), then the alpha test on the alpha shade()
     // would output, (baseColorFactor.a * vertex alpha) * texel alpha (toStraight keeps
-    // alpha), and shade() from the texel on only for the fragments that pass: a discarded
-    // fragment writes nothing, so its lighting is never needed.
+    // alpha), and the texel's colour and shade() for the fragments that pass only: a
+    // discarded fragment writes nothing, so neither is ever needed.
     void shadeAlphaTestedRow(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy,
                              const float* z, std::byte* depthAt) {
-        interpolateRow(t, centerX0, fy);
+        interpolateRow(t, centerX0, fy, live);
         if (!program_.texture) {  // alpha4 without a texture: factor * vertex alpha
             alignas(16) float alpha[kBlockSize];
             std::uint32_t passing = 0;
             for (int h = 0; h < 2; ++h) {
                 const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
-                if (!lanes) continue;
-                const float* duv[4] = {row_.duv[0] + 4 * h, row_.duv[1] + 4 * h, row_.duv[2] + 4 * h,
-                                       row_.duv[3] + 4 * h};
-                program_.alpha4(row_.color[3] + 4 * h, row_.uv[0] + 4 * h, row_.uv[1] + 4 * h, duv, lanes,
-                                alpha + 4 * h);
+                if (lanes) _mm_store_ps(alpha + 4 * h, alpha4(h, lanes));
             }
             for (std::uint32_t bits = live; bits; bits &= bits - 1) {
                 const int i = __builtin_ctz(bits);
@@ -632,19 +786,27 @@ private:
             }
             return;
         }
+        const AlphaSampler& sampler = program_.alphaSampler;
         const float factorAlpha = program_.params.baseColorFactor.a;
         for (int h = 0; h < 2; ++h) {
             const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
             if (!lanes) continue;
-            const float* duv[4] = {row_.duv[0] + 4 * h, row_.duv[1] + 4 * h, row_.duv[2] + 4 * h, row_.duv[3] + 4 * h};
-            alignas(16) float texels[4][4];
-            program_.rgba4(row_.uv[0] + 4 * h, row_.uv[1] + 4 * h, duv, lanes, texels);
+            const int o = 4 * h;
+            const AlphaSampler::Lookup4 lookup = sampler.lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o,
+                                                                 row_.duv[1] + o, row_.duv[2] + o, row_.duv[3] + o, lanes);
+            alignas(16) float texelAlpha[4];
+            _mm_store_ps(texelAlpha, sampler.alpha4(lookup));
+            std::uint32_t passing = 0;
             for (std::uint32_t bits = lanes; bits; bits &= bits - 1) {
-                const int k = __builtin_ctz(bits), i = 4 * h + k;
-                if (!draw_.alphaTest.passes(factorAlpha * row_.color[3][i] * texels[k][3])) {
-                    ++counters_.pixelsShaded;  // shaded as far as its alpha
-                    continue;
-                }
+                const int k = __builtin_ctz(bits);
+                if (draw_.alphaTest.passes(factorAlpha * row_.color[3][o + k] * texelAlpha[k])) passing |= 1u << k;
+            }
+            counters_.pixelsShaded += kBitCount[lanes & ~passing];  // shaded as far as their alpha
+            if (!passing) continue;
+            alignas(16) float texels[4][4];
+            sampler.rgba4(lookup, passing, texels);
+            for (std::uint32_t bits = passing; bits; bits &= bits - 1) {
+                const int k = __builtin_ctz(bits), i = o + k;
                 const glm::vec4 texel(texels[k][0], texels[k][1], texels[k][2], texels[k][3]);
                 writeShaded(program_.shadeSampled(rowFragment(t, bx + i, py, i), texel), bx + i, py, z[i],
                             depthAt + i * sizeof(float));
@@ -652,45 +814,48 @@ private:
         }
     }
 
-    // interpolate() for the 8 lanes of a block row (pixel bx + i in lane i), lane by lane
-    // the same IEEE operations in the same order (the division included), into row_.
-    void interpolateRow(const SetupTriangle& t, float centerX0, float fy) {
+    // interpolate() for the lanes of a block row (pixel bx + i in lane i) in the halves of the
+    // row that hold a lane of `lanes`, lane by lane the same IEEE operations in the same
+    // order (the division included), into row_.
+    void interpolateRow(const SetupTriangle& t, float centerX0, float fy, std::uint32_t lanes) {
+        for (int h = 0; h < 2; ++h)
+            if ((lanes >> (4 * h)) & 0xFu) interpolateHalf(t, centerX0, fy, h);
+    }
+    void interpolateHalf(const SetupTriangle& t, float centerX0, float fy, int h) {
         constexpr ProgramNeeds needs = Program::kNeeds;
-        if constexpr (needs.uv || needs.normal || needs.color) {
-            const __m128 origin = _mm_set1_ps(t.originX), one = _mm_set1_ps(1.0f);
-            for (int h = 0; h < 2; ++h) {
-                const __m128 fx = _mm_sub_ps(
-                    _mm_add_ps(_mm_set1_ps(centerX0), _mm_setr_ps(float(4 * h), float(4 * h + 1), float(4 * h + 2),
-                                                                  float(4 * h + 3))),
-                    origin);
-                auto evaluateLanes = [&](const Plane& p) {
-                    return _mm_add_ps(_mm_add_ps(_mm_set1_ps(p.value), _mm_mul_ps(_mm_set1_ps(p.dx), fx)),
-                                      _mm_set1_ps(p.dy * fy));
-                };
-                const __m128 w = _mm_div_ps(one, evaluateLanes(t.inverseW));
-                _mm_store_ps(row_.w + 4 * h, w);
-                auto attribute = [&](int k) { return _mm_mul_ps(evaluateLanes(t.attributeOverW[k]), w); };
-                if constexpr (needs.uv) {
-                    const __m128 u = attribute(kAttrU), v = attribute(kAttrV);
-                    _mm_store_ps(row_.uv[0] + 4 * h, u);
-                    _mm_store_ps(row_.uv[1] + 4 * h, v);
-                    if constexpr (needs.derivatives) {
-                        const Plane& pu = t.attributeOverW[kAttrU];
-                        const Plane& pv = t.attributeOverW[kAttrV];
-                        auto derivative = [&](float slope, __m128 value, float inverseWSlope) {
-                            return _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(slope), _mm_mul_ps(value, _mm_set1_ps(inverseWSlope))), w);
-                        };
-                        _mm_store_ps(row_.duv[0] + 4 * h, derivative(pu.dx, u, t.inverseW.dx));
-                        _mm_store_ps(row_.duv[1] + 4 * h, derivative(pv.dx, v, t.inverseW.dx));
-                        _mm_store_ps(row_.duv[2] + 4 * h, derivative(pu.dy, u, t.inverseW.dy));
-                        _mm_store_ps(row_.duv[3] + 4 * h, derivative(pv.dy, v, t.inverseW.dy));
-                    }
+        if constexpr (needs.anyAttribute()) {
+            const __m128 fx = _mm_sub_ps(
+                _mm_add_ps(_mm_set1_ps(centerX0),
+                           _mm_setr_ps(float(4 * h), float(4 * h + 1), float(4 * h + 2), float(4 * h + 3))),
+                _mm_set1_ps(t.originX));
+            auto evaluateLanes = [&](const Plane& p) {
+                return _mm_add_ps(_mm_add_ps(_mm_set1_ps(p.value), _mm_mul_ps(_mm_set1_ps(p.dx), fx)),
+                                  _mm_set1_ps(p.dy * fy));
+            };
+            const __m128 w = _mm_div_ps(_mm_set1_ps(1.0f), evaluateLanes(t.inverseW));
+            _mm_store_ps(row_.w + 4 * h, w);
+            auto attribute = [&](int k) { return _mm_mul_ps(evaluateLanes(t.attributeOverW[k]), w); };
+            if constexpr (needs.uv) {
+                const __m128 u = attribute(kAttrU), v = attribute(kAttrV);
+                _mm_store_ps(row_.uv[0] + 4 * h, u);
+                _mm_store_ps(row_.uv[1] + 4 * h, v);
+                if constexpr (needs.derivatives) {
+                    const Plane& pu = t.attributeOverW[kAttrU];
+                    const Plane& pv = t.attributeOverW[kAttrV];
+                    auto derivative = [&](float slope, __m128 value, float inverseWSlope) {
+                        return _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(slope), _mm_mul_ps(value, _mm_set1_ps(inverseWSlope))), w);
+                    };
+                    _mm_store_ps(row_.duv[0] + 4 * h, derivative(pu.dx, u, t.inverseW.dx));
+                    _mm_store_ps(row_.duv[1] + 4 * h, derivative(pv.dx, v, t.inverseW.dx));
+                    _mm_store_ps(row_.duv[2] + 4 * h, derivative(pu.dy, u, t.inverseW.dy));
+                    _mm_store_ps(row_.duv[3] + 4 * h, derivative(pv.dy, v, t.inverseW.dy));
                 }
-                if constexpr (needs.normal)
-                    for (int k = 0; k < 3; ++k) _mm_store_ps(row_.normal[k] + 4 * h, attribute(kAttrNormal + k));
-                if constexpr (needs.color)
-                    for (int k = 0; k < 4; ++k) _mm_store_ps(row_.color[k] + 4 * h, attribute(kAttrColor + k));
             }
+            if constexpr (needs.normal)
+                for (int k = 0; k < 3; ++k) _mm_store_ps(row_.normal[k] + 4 * h, attribute(kAttrNormal + k));
+            if constexpr (needs.color)
+                for (int k = 0; k < 4; ++k) _mm_store_ps(row_.color[k] + 4 * h, attribute(kAttrColor + k));
+            if constexpr (needs.colorAlpha) _mm_store_ps(row_.color[3] + 4 * h, attribute(kAttrColor + 3));
         }
     }
 
@@ -710,7 +875,8 @@ private:
         }
         if constexpr (needs.normal) f.normal = {row_.normal[0][i], row_.normal[1][i], row_.normal[2][i]};
         if constexpr (needs.color) f.color = {row_.color[0][i], row_.color[1][i], row_.color[2][i], row_.color[3][i]};
-        if constexpr (needs.uv || needs.normal || needs.color) f.clipW = row_.w[i];
+        if constexpr (needs.colorAlpha) f.color.a = row_.color[3][i];
+        if constexpr (needs.anyAttribute()) f.clipW = row_.w[i];
         return f;
     }
 #endif
@@ -855,7 +1021,7 @@ private:
         f.x = px;
         f.y = py;
         f.frontFacing = t.frontFacing;
-        if constexpr (needs.uv || needs.normal || needs.color) {
+        if constexpr (needs.anyAttribute()) {
             const float inverseW = evaluate(t.inverseW, fx, fy);
             const float w = 1.0f / inverseW;
             f.clipW = w;
@@ -874,6 +1040,7 @@ private:
             if constexpr (needs.color)
                 f.color = {attribute(kAttrColor), attribute(kAttrColor + 1), attribute(kAttrColor + 2),
                            attribute(kAttrColor + 3)};
+            if constexpr (needs.colorAlpha) f.color.a = attribute(kAttrColor + 3);
         }
         return f;
     }
@@ -907,7 +1074,8 @@ private:
     std::array<std::uint8_t, kMaxColorTargets> constantMask_{};
     std::array<std::uint32_t, kMaxColorTargets> constantPacked_{};
     std::array<bool, kMaxColorTargets> useLut_{};
-    bool alphaFirst_ = false;  // FoliageColor: alpha-test (Keep) on the alpha alone before shading
+    bool compositeRow_ = false;  // CompositeProgram: shadeCompositeRow
+    bool alphaFirst_ = false;    // FoliageColor: alpha-test (Keep) on the alpha alone before shading
     // FoliageAlpha's row path (shadeAlphaRow).
     bool alphaRow_ = false;
     bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha
