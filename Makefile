@@ -22,7 +22,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
 # which bundles npm and which Debian's npm package would try to replace).
 NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test demo bench readme-images content clean node-tools
+.PHONY: all deps configure build test demo bench readme-images content clean node-tools fuzz
 
 all: build
 
@@ -77,6 +77,13 @@ bench: build
 	$(BUILD_DIR)/bin/bench_ecs
 	$(BUILD_DIR)/bin/ssam_bench
 	$(BUILD_DIR)/bin/ssam-bench --out out/bench
+
+# Fuzzing, outside CI (tests/fuzz/run_fuzzers.sh): the fuzz targets built with Clang as
+# libFuzzer binaries (ASan + UBSan) in build-fuzz, each run FUZZ_SECONDS on a copy of its
+# seed corpus; findings land in out/fuzz/<target>/. Needs clang (not in PACKAGES: CI never fuzzes).
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_BUILD_JOBS=$(JOBS) tests/fuzz/run_fuzzers.sh
 
 clean:
 	rm -rf $(BUILD_DIR)

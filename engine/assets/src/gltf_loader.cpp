@@ -12,7 +12,8 @@
 //   - Draco data whose index or vertex count disagrees with its accessors (gltf_draco.cpp);
 //   - NaN or infinite vertex attributes, transforms, factors and camera parameters
 //     (decision: refused, never silently clamped: a NaN position poisons bounds, culling and
-//     every pixel it touches, and only the author can say what was meant);
+//     every pixel it touches, and only the author can say what was meant); likewise finite
+//     values whose products overflow: world transforms, world-space bounds, baked UVs;
 //   - alphaCutoff that is negative or not finite, unknown alphaMode strings;
 //   - images over 16384 pixels on a side or 1 GiB decoded, refused from the header;
 //   - indices into meshes, materials, textures, images, samplers, cameras and nodes that are
@@ -150,6 +151,13 @@ float finite(const LoadContext& ctx, double value, const std::string& field) {
     const double limit = static_cast<double>(std::numeric_limits<float>::max());
     if (value > limit || value < -limit) ctx.fail(field, std::to_string(value) + " is out of the float range");
     return static_cast<float>(value);
+}
+
+bool allFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool allFinite(const glm::mat4& m) {
+    const float* values = glm::value_ptr(m);
+    return std::all_of(values, values + 16, [](float v) { return std::isfinite(v); });
 }
 
 template <int N>
@@ -428,7 +436,14 @@ Primitive convertPrimitive(const LoadContext& ctx, const tinygltf::Model& model,
         if (out.hasNormals) vertex.normal = glm::vec3(normals[v * 3], normals[v * 3 + 1], normals[v * 3 + 2]);
         if (out.hasTexCoords) {
             vertex.uv = glm::vec2(uvs[v * 2], uvs[v * 2 + 1]);
-            if (bake) vertex.uv = glm::vec2(uvTransform * glm::vec3(vertex.uv, 1.0f));
+            if (bake) {
+                // Finite UVs and a finite transform can still overflow (scale 1e38 * uv 10).
+                vertex.uv = glm::vec2(uvTransform * glm::vec3(vertex.uv, 1.0f));
+                if (!std::isfinite(vertex.uv.x) || !std::isfinite(vertex.uv.y))
+                    ctx.fail(field + ".attributes." + texCoordName,
+                             "element " + std::to_string(v) + ": KHR_texture_transform of material " +
+                                 std::to_string(out.material) + " takes the UV out of the float range");
+            }
         }
         if (out.hasColors) {
             const std::size_t c = v * static_cast<std::size_t>(colorComponents);
@@ -535,9 +550,13 @@ glm::mat4 localTransform(const LoadContext& ctx, const tinygltf::Node& node, con
     }
     if (!node.rotation.empty()) {
         const glm::vec4 q = finiteVector<4>(ctx, node.rotation, field + ".rotation");  // x, y, z, w
-        const float length = glm::length(q);
-        if (!(length > 1e-6f)) ctx.fail(field + ".rotation", "is not a unit quaternion");
-        m = m * glm::mat4_cast(glm::quat(q.w / length, q.x / length, q.y / length, q.z / length));
+        // In double: the squares of components near FLT_MAX overflow a float, and a length of
+        // infinity would silently turn the rotation into the identity.
+        const double length = glm::length(glm::dvec4(q));
+        if (!(length > 1e-6)) ctx.fail(field + ".rotation", "is not a unit quaternion");
+        const glm::dvec4 unit = glm::dvec4(q) / length;
+        m = m * glm::mat4_cast(glm::quat(static_cast<float>(unit.w), static_cast<float>(unit.x),
+                                         static_cast<float>(unit.y), static_cast<float>(unit.z)));
     }
     if (!node.scale.empty()) {
         const glm::vec3 s = finiteVector<3>(ctx, node.scale, field + ".scale");
@@ -585,6 +604,10 @@ std::vector<Node> convertNodes(const LoadContext& ctx, const tinygltf::Model& mo
         reached[n] = true;
         nodes[n].world = nodes[n].parent == -1 ? nodes[n].local
                                                : nodes[static_cast<std::size_t>(nodes[n].parent)].world * nodes[n].local;
+        // Finite local transforms can multiply to infinity (two nested scales of 1e30).
+        if (!allFinite(nodes[n].world))
+            ctx.fail(indexed("nodes", n), "the world transform (the parents' transforms times this node's) "
+                                          "overflows the float range");
         for (int child : nodes[n].children) stack.push_back(child);
     }
     for (std::size_t i = 0; i < count; ++i)
@@ -638,6 +661,9 @@ void selectScene(const LoadContext& ctx, const tinygltf::Model& model, LoadedMod
         if (node.mesh < 0) continue;
         for (const Primitive& primitive : out.meshes[static_cast<std::size_t>(node.mesh)].primitives)
             out.bounds.add(primitive.bounds, node.world);
+        if (!out.bounds.empty() && !(allFinite(out.bounds.min) && allFinite(out.bounds.max)))
+            ctx.fail(indexed("nodes", static_cast<std::size_t>(n)) + ".mesh",
+                     "the mesh's bounds in world space overflow the float range");
     }
 }
 

@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cstring>
 
+#include "engine/capture/jpeg_metadata.hpp"
 #include "engine/core/error.hpp"
 
 namespace engine::assets {
@@ -50,6 +51,12 @@ RgbaImage decodeImage(std::span<const std::uint8_t> encoded, const std::string& 
     const char* format = formatOf(encoded);
     if (!format) fail(name, "not a PNG or JPEG image (glTF 2.0 images must be one of these)");
 
+    // OpenImageIO never sees JPEG metadata: its parser trusts lengths inside it (jpeg_metadata.hpp).
+    std::vector<std::uint8_t> jpeg;
+    if (std::strcmp(format, "image.jpg") == 0) {
+        jpeg = capture::withoutJpegMetadata(encoded);
+        encoded = jpeg;
+    }
     OIIO::Filesystem::IOMemReader reader(encoded.data(), encoded.size());
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);  // keep PNG's straight alpha as stored

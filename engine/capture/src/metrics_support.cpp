@@ -36,7 +36,10 @@ std::array<int, 3> colourChannels(const Image& image, std::string_view metric) {
 }
 
 std::vector<float> srgbLuma(const Image& image, std::string_view metric) {
-    const auto [r, g, b] = colourChannels(image, metric);
+    // Plain names, not a structured binding: capturing those in a lambda is C++20 that Clang 14
+    // (the fuzz build, tests/fuzz) does not implement yet.
+    const std::array<int, 3> rgb = colourChannels(image, metric);
+    const int r = rgb[0], g = rgb[1], b = rgb[2];
     std::vector<float> luma(image.pixelCount());
     const auto width = static_cast<std::size_t>(image.width);
     const auto channels = static_cast<std::size_t>(image.channels);

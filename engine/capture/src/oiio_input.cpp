@@ -1,9 +1,11 @@
 #include "oiio_input.hpp"
 
+#include "engine/capture/jpeg_metadata.hpp"
 #include "engine/core/error.hpp"
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <system_error>
@@ -62,6 +64,24 @@ void checkLimits(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
                                   std::to_string(options.maxDecodedBytes) + " bytes");
 }
 
+// The file's bytes when it is a JPEG (within the cap), else empty.
+std::vector<std::uint8_t> jpegBytesOf(const std::filesystem::path& path, const ReadOptions& options) {
+    std::ifstream in(path, std::ios::binary);
+    std::uint8_t magic[3] = {};
+    if (!in.read(reinterpret_cast<char*>(magic), sizeof magic) || !isJpeg(magic)) return {};
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throwImageError(path, "cannot read the file size: " + ec.message());
+    if (size > options.maxDecodedBytes)
+        throwImageError(path, "JPEG file of " + std::to_string(size) + " bytes, over the cap of " +
+                                  std::to_string(options.maxDecodedBytes) + " bytes");
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+    in.seekg(0);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
+        throwImageError(path, "cannot read the file");
+    return withoutJpegMetadata(bytes);
+}
+
 }  // namespace
 
 void throwImageError(const std::filesystem::path& path, const std::string& what, const std::string& oiioMessage) {
@@ -93,6 +113,14 @@ OpenedImage openImage(const std::filesystem::path& path, const ReadOptions& opti
     config.attribute("oiio:UnassociatedAlpha", 1);
 
     OpenedImage opened;
+    opened.jpegBytes = jpegBytesOf(path, options);
+    if (!opened.jpegBytes.empty()) {
+        opened.jpegReader =
+            std::make_unique<OIIO::Filesystem::IOMemReader>(opened.jpegBytes.data(), opened.jpegBytes.size());
+        // OpenImageIO 2.4 takes the proxy from the config once a config is given.
+        void* proxy = opened.jpegReader.get();
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    }
     opened.input = OIIO::ImageInput::open(path.string(), &config);
     if (!opened.input) throwImageError(path, "cannot open as an image", OIIO::geterror());
     opened.spec = opened.input->spec();

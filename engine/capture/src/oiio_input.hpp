@@ -1,11 +1,14 @@
 #pragma once
 // Private: opening a file through OpenImageIO with the checks every reader needs
 // (file present, header sane, size under the cap) done before pixels are allocated.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <filesystem>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/capture/image.hpp"
 #include "engine/capture/image_read.hpp"
@@ -17,6 +20,10 @@ namespace engine::capture::detail {
                                   const std::string& oiioMessage = {});
 
 struct OpenedImage {
+    // JPEG files are read through memory, without their metadata (jpeg_metadata.hpp); the
+    // bytes and the reader outlive `input`, which is declared after them.
+    std::vector<std::uint8_t> jpegBytes;
+    std::unique_ptr<OIIO::Filesystem::IOMemReader> jpegReader;
     std::unique_ptr<OIIO::ImageInput> input;
     OIIO::ImageSpec spec;
     AlphaMode alpha = AlphaMode::Straight;
