@@ -17,8 +17,15 @@
 //                 the same two passes with the texture repeated 16x instead of 4x: minified
 //                 2 to 5 times, so trilinear filtering mixes two mip levels with a log2f per
 //                 fragment, as on the distant foliage of the ssam-bench forest
+//   SsamMaskHalf  SsamMask onto SSAM+'s float mask (ssam maskPrecision RG16F): two R16F
+//                 targets, ONE/ONE MAX into one and ADD into the other (no saturation, so
+//                 no layer is skipped where the 8-bit mask would be full)
+//   SsamMaskRgba16f  SsamMask onto one RGBA16F target (maskPrecision RGBA16F)
 //   SsamComposite SSAM's composite (§3.5.4): a full-screen RGBA8 mask (no foliage over 40%
 //                 of it) and sRGB foliage colour blended onto an sRGB target
+//   SsamPlusComposite  SSAM+'s composite (CoverageComposite, equal layers: a pow() per
+//                 partly covered pixel) from the same masks as two R16F targets, the ADD
+//                 one unsaturated (up to 4)
 //   SmallTris     100k triangles of ~10 px each, Flat into RGBA8 + depth (LessEqual)
 //   SetupCulled   1M triangles outside the viewport (inside the guard band): vertex
 //                 stage, clipping and setup only, every triangle dropped
@@ -237,11 +244,18 @@ struct FoliageLayers {
     }
 };
 
-// One SSAM foliage pass over FoliageLayers(repeats): `mask` the mask pass, else the colour pass.
-void ssamPass(benchmark::State& state, bool mask, float repeats) {
+// How the mask pass stores its mask (ssam::Config::maskPrecision).
+enum class MaskTargets { Rgba8, TwoR16f, Rgba16f };
+
+// One SSAM foliage pass over FoliageLayers(repeats): `mask` the mask pass (into `targets`),
+// else the colour pass.
+void ssamPass(benchmark::State& state, bool mask, float repeats, MaskTargets targets = MaskTargets::Rgba8) {
     auto backend = makeBackend(state);
     render::Backend& b = *backend;
-    const auto target = renderTarget(b, render::Format::RGBA8_UNORM);
+    const auto target = renderTarget(b, !mask || targets == MaskTargets::Rgba8 ? render::Format::RGBA8_UNORM
+                                        : targets == MaskTargets::Rgba16f     ? render::Format::RGBA16F
+                                                                              : render::Format::R16F);
+    const auto maskAdd = targets == MaskTargets::TwoR16f ? renderTarget(b, render::Format::R16F) : render::TextureHandle{};
     const auto depth = renderTarget(b, render::Format::D32F);
     const auto texture = foliageTexture(b);
     const FoliageLayers layers(repeats);
@@ -253,6 +267,12 @@ void ssamPass(benchmark::State& state, bool mask, float repeats) {
         pd.program = render::ProgramKind::FoliageAlpha;
         pd.depth = render::DepthState::testOnly(render::CompareFunc::Less);
         pd.blend[0] = render::BlendState::ssamMask();
+        if (maskAdd) {  // as ssam::ScreenSpaceAlphaMask splits it: MAX into one, ADD into the other
+            pd.blend[0] = {true, render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Max,
+                           render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Max, render::WriteAll};
+            pd.blend[1] = {true, render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Add,
+                           render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
+        }
         render::AlphaOnlyParams p;
         p.viewProj = layers.viewProj;
         p.baseColor = {texture, {}};
@@ -270,6 +290,7 @@ void ssamPass(benchmark::State& state, bool mask, float repeats) {
     render::PassDesc pass;
     pass.name = mask ? "ssam mask" : "ssam colour";
     pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(0.0f)};
+    if (maskAdd) pass.color[1] = {maskAdd, render::LoadOp::Clear, glm::vec4(0.0f)};
     pass.depth = {depth, render::LoadOp::Clear, 1.0f};
     runPasses(state, *backend, [&] {
         b.beginPass(pass);
@@ -281,6 +302,8 @@ void BM_SsamMask(benchmark::State& state) { ssamPass(state, true, 4.0f); }
 void BM_SsamColor(benchmark::State& state) { ssamPass(state, false, 4.0f); }
 void BM_SsamMaskFar(benchmark::State& state) { ssamPass(state, true, 16.0f); }
 void BM_SsamColorFar(benchmark::State& state) { ssamPass(state, false, 16.0f); }
+void BM_SsamMaskHalf(benchmark::State& state) { ssamPass(state, true, 4.0f, MaskTargets::TwoR16f); }
+void BM_SsamMaskRgba16f(benchmark::State& state) { ssamPass(state, true, 4.0f, MaskTargets::Rgba16f); }
 
 // A screen-sized RGBA8 texture made by texel(x, y, out) (4 bytes into out).
 template <typename Texel>
@@ -332,6 +355,57 @@ void BM_SsamComposite(benchmark::State& state) {
         render::DrawDesc d;
         d.pipeline = pipeline;
         d.params = params;
+        b.draw(d);
+        b.endPass();
+    });
+}
+
+// A screen-sized R16F texture holding value(x, y).
+template <typename Value>
+render::TextureHandle screenHalfTexture(render::Backend& b, const char* name, Value&& value) {
+    std::vector<float> values(std::size_t(kWidth) * kHeight);
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) values[std::size_t(y) * kWidth + x] = value(x, y);
+    render::TextureDesc d;
+    d.name = name;
+    d.width = kWidth;
+    d.height = kHeight;
+    d.format = render::Format::R16F;
+    render::TextureData data;
+    data.levels.push_back(std::as_bytes(std::span<const float>(values)));
+    return b.createTexture(d, &data);
+}
+
+void BM_SsamPlusComposite(benchmark::State& state) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_SRGB);
+    // SsamComposite's masks in floats: MAX in [0, 1], ADD up to 4 (depth complexity).
+    auto leaf = [](int x, int y) {
+        const float m = std::sin(float(x) * 0.11f) * std::sin(float(y) * 0.13f);
+        return x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + m, 0.0f, 1.0f);
+    };
+    const auto mask = screenHalfTexture(b, "mask max", leaf);
+    const auto maskAdd = screenHalfTexture(b, "mask add", [&](int x, int y) { return leaf(x, y) * (1.0f + float(x % 7) * 0.5f); });
+    const auto foliage = screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [](int x, int y, std::uint8_t* t) {
+        t[0] = std::uint8_t(40 + x % 64);
+        t[1] = std::uint8_t(120 + y % 96);
+        t[2] = std::uint8_t(30 + (x ^ y) % 32);
+        t[3] = 255;
+    });
+    render::PipelineDesc pd;
+    pd.program = render::ProgramKind::CoverageComposite;
+    pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
+                   render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
+    const auto pipeline = b.createPipeline(pd);
+    render::PassDesc pass;
+    pass.name = "ssam+ composite";
+    pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(0.3f, 0.5f, 0.8f, 1.0f)};
+    runPasses(state, *backend, [&] {
+        b.beginPass(pass);
+        render::DrawDesc d;
+        d.pipeline = pipeline;
+        d.params = render::CoverageCompositeParams{foliage, mask, maskAdd, render::CoverageModel::EqualLayers};
         b.draw(d);
         b.endPass();
     });
@@ -450,7 +524,10 @@ SOFT_BENCH(BM_SsamMask);
 SOFT_BENCH(BM_SsamColor);
 SOFT_BENCH(BM_SsamMaskFar);
 SOFT_BENCH(BM_SsamColorFar);
+SOFT_BENCH(BM_SsamMaskHalf);
+SOFT_BENCH(BM_SsamMaskRgba16f);
 SOFT_BENCH(BM_SsamComposite);
+SOFT_BENCH(BM_SsamPlusComposite);
 SOFT_BENCH(BM_SmallTris);
 SOFT_BENCH(BM_SetupCulled);
 SOFT_BENCH(BM_SetupTiny);

@@ -12,6 +12,7 @@
 
 #include "blend.hpp"
 #include "engine/render/pixel_codec.hpp"
+#include "one_one_half_blend.hpp"
 
 namespace engine::render::soft {
 namespace {
@@ -228,6 +229,26 @@ bool isCompositeBlend(const BlendState& b) {
            b.opRgb == BlendOp::Add && b.srcAlpha == BlendFactor::Zero && b.dstAlpha == BlendFactor::One &&
            b.opAlpha == BlendOp::Add && b.writeMask == WriteAll;
 }
+// fetchTexel(t, x, y)[c] (loadTexel's channel c), with the formats SSAM's masks come in
+// read without decoding the other channels: RGBA8_UNORM through the table, half floats
+// through decodeHalf (a channel the format lacks takes loadTexel's default).
+inline float texelChannel(const SoftTexture& t, int x, int y, int c) {
+    const std::byte* p = t.texel(0, x, y);
+    std::uint16_t half;
+    switch (t.desc.format) {
+        case Format::RGBA8_UNORM: return byteTables().unorm[std::to_integer<std::uint8_t>(p[c])];
+        case Format::R16F:
+        case Format::RG16F:
+        case Format::RGBA16F: {
+            const int channels = t.desc.format == Format::R16F ? 1 : t.desc.format == Format::RG16F ? 2 : 4;
+            if (c >= channels) break;
+            std::memcpy(&half, p + 2 * c, sizeof half);
+            return decodeHalf(half);
+        }
+        default: break;
+    }
+    return loadTexel(p, t.desc.format)[c];
+}
 bool isRgba8(const SoftTexture* t) {
     return t && t->desc.samples == 1 && (t->desc.format == Format::RGBA8_UNORM || t->desc.format == Format::RGBA8_SRGB);
 }
@@ -302,13 +323,13 @@ public:
             v.byteLut = (v.format == Format::RGBA8_UNORM || v.format == Format::RGBA8_SRGB) && v.blend &&
                         blendIsPerChannel(draw.blend[i]);
         }
-        if constexpr (std::is_same_v<Program, CompositeProgram>) {
-            // The SSAM composite as ScreenSpaceAlphaMask draws it onto an 8-bit target
-            // (shadeCompositeRow); anything else takes the general path.
+        if constexpr (std::is_same_v<Program, CompositeProgram> || std::is_same_v<Program, CoverageCompositeProgram>) {
+            // The SSAM and SSAM+ composites as ScreenSpaceAlphaMask and the SSAM+ technique
+            // draw them onto an 8-bit target, with masks of any format (compositeRow);
+            // anything else takes the general path.
             compositeRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite &&
                             draw.colorTargetCount == 1 && isRgba8(draw.colorTargets[0]) && draw.blendNeeded[0] &&
-                            isCompositeBlend(draw.blend[0]) && isRgba8(program.foliage) && isRgba8(program.mask) &&
-                            program.mask->desc.format == Format::RGBA8_UNORM && !program.maskAdd;
+                            isCompositeBlend(draw.blend[0]) && isRgba8(program.foliage);
         }
 #if SSAM_SOFT_SSE2
         if constexpr (std::is_same_v<Program, FoliageColorProgram>)
@@ -319,10 +340,13 @@ public:
             // test, no depth write. Anything else takes the general path.
             alphaRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite;
             alphaZeroSkips_ = draw.colorTargetCount > 0;
+            halfRow_ = draw.colorTargetCount > 0;
             for (int i = 0; i < draw.colorTargetCount; ++i) {
                 oneOneBytes_[i] =
                     color_[i].format == Format::RGBA8_UNORM && color_[i].blend && isOneOneAddMax(draw.blend[i]);
+                oneOneHalf_[i] = isHalfFloat(color_[i].format) && color_[i].blend && isOneOneAddMax(draw.blend[i]);
                 alphaZeroSkips_ = alphaZeroSkips_ && oneOneBytes_[i];
+                halfRow_ = halfRow_ && oneOneHalf_[i];
                 for (int c = 0; c < 4; ++c)
                     if (!(draw.blend[i].writeMask & (1u << c))) unwrittenBytes_[i] |= 0xFFu << (8 * c);
             }
@@ -609,7 +633,28 @@ private:
         }
         if constexpr (std::is_same_v<Program, CompositeProgram>) {
             if (compositeRow_) {
-                shadeCompositeRow(bx, py, live);
+                // CompositeProgram::shade()'s alpha.
+                const CompositeProgram& c = program_;
+                compositeRow(bx, py, live, [&c](int x, int y) {
+                    const float maxMask = texelChannel(*c.mask, x, y, 0);
+                    const float addMask = c.maskAdd ? texelChannel(*c.maskAdd, x, y, 0) : texelChannel(*c.mask, x, y, 3);
+                    float blend = maxMask + (addMask - maxMask) * c.params.maskLerp;
+                    blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
+                    if (c.params.squareMask) blend *= blend;
+                    return blend;
+                });
+                return;
+            }
+        }
+        if constexpr (std::is_same_v<Program, CoverageCompositeProgram>) {
+            if (compositeRow_) {
+                // CoverageCompositeProgram::shade()'s alpha.
+                const CoverageCompositeProgram& c = program_;
+                compositeRow(bx, py, live, [&c](int x, int y) {
+                    const float maxMask = texelChannel(*c.mask, x, y, 0);
+                    const float addMask = c.maskAdd ? texelChannel(*c.maskAdd, x, y, 0) : texelChannel(*c.mask, x, y, 3);
+                    return layerCoverage(c.model, maxMask, addMask);
+                });
                 return;
             }
         }
@@ -643,31 +688,30 @@ private:
         }
     }
 
-    // CompositeProgram's row (compositeRow_): shade() and the composite blend, per live pixel
-    // the same operations, with the 8-bit texels decoded straight from the tables. Every
+    // The composite programs' row (compositeRow_): shade() and the composite blend, per live
+    // pixel the same operations, with the 8-bit texels decoded straight from the tables;
+    // factorAt(px, py) is the program's alpha, in [0, 1] (both programs clamp it). The
+    // foliage colour is finite (8-bit), so shade()'s non-finite check changes nothing; every
     // value is in [0, 1], so blend()'s clamps change nothing, and the alpha written is the
-    // stored one (blend * 0 + d = d, encoded back to the same byte). Where the mask gives
-    // blend 0 the colour is c * 0 + d * 1 = d, the decoded stored byte: nothing to write when
-    // bytes round-trip (bytesRoundTrip), and most of the screen has no foliage.
-    void shadeCompositeRow(int bx, int py, std::uint32_t live) {
+    // stored one (blend * 0 + d = d, encoded back to the same byte). Where the factor is 0
+    // the colour is c * 0 + d * 1 = d, the decoded stored byte: nothing to write when bytes
+    // round-trip (bytesRoundTrip), and most of the screen has no foliage.
+    template <typename Factor>
+    void compositeRow(int bx, int py, std::uint32_t live, const Factor& factorAt) {
         counters_.pixelsShaded += kBitCount[live];
         const ByteTables& tables = byteTables();
-        const CompositeParams& params = program_.params;
         const TargetView& target = color_[0];
         const bool srgbTarget = target.format == Format::RGBA8_SRGB;
         const float* targetTable = srgbTarget ? tables.srgb : tables.unorm;
-        const float* foliageTable = program_.foliage->desc.format == Format::RGBA8_SRGB ? tables.srgb : tables.unorm;
+        const SoftTexture& foliageTexture = *program_.foliage;
+        const float* foliageTable = foliageTexture.desc.format == Format::RGBA8_SRGB ? tables.srgb : tables.unorm;
         const bool skipZero = bytesRoundTrip();
         auto byteAt = [](const std::byte* p, int c) { return std::to_integer<std::uint8_t>(p[c]); };
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
             const int px = bx + __builtin_ctz(bits);
-            const std::byte* m = program_.mask->texel(0, px, py);
-            const float maxMask = tables.unorm[byteAt(m, 0)], addMask = tables.unorm[byteAt(m, 3)];
-            float blend = maxMask + (addMask - maxMask) * params.maskLerp;
-            blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
-            if (params.squareMask) blend *= blend;
+            const float blend = factorAt(px, py);
             if (blend == 0.0f && skipZero) continue;
-            const std::byte* foliage = program_.foliage->texel(0, px, py);
+            const std::byte* foliage = foliageTexture.texel(0, px, py);
             std::byte* p = target.at(px, py);
             const float keep = 1.0f - blend;
             for (int c = 0; c < 3; ++c) {
@@ -686,12 +730,18 @@ private:
     // all 255 can no longer change: MAX gives max(encode(a), 255) = 255 and ADD
     // encode(a + 1) = 255 for any a in [0, 1], so the layers drawn after the mask saturated
     // there skip the sampling. (Still counted as shaded: the program's result is known
-    // without running it.)
+    // without running it.) ONE/ONE ADD/MAX blends onto half-float targets (the float masks)
+    // are done on the stored halves in the same way (blendOneOneHalf, one_one_half_blend.hpp;
+    // four pixels at a time: shadeAlphaRowHalf4).
     void shadeAlphaRow(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy) {
         counters_.pixelsShaded += kBitCount[live];
         const bool four = program_.hasAlpha4();
         if (four && alphaZeroSkips_ && bx + kBlockSize <= width_) {
             shadeAlphaRow4(t, bx, py, live, centerX0, fy);
+            return;
+        }
+        if (four && halfRow_) {
+            shadeAlphaRowHalf4(t, bx, py, live, centerX0, fy);
             return;
         }
         if (alphaZeroSkips_) {
@@ -729,6 +779,7 @@ private:
                 if (!mask) continue;
                 std::byte* p = color_[k].at(px, py);
                 if (oneOneBytes_[k]) blendOneOneRgba8(draw_.blend[k], p, a, mask);
+                else if (oneOneHalf_[k]) blendOneOneHalf(draw_.blend[k], p, color_[k].pixelBytes / 2, a, mask);
                 else writeColor(k, p, glm::vec4(a), mask);
             }
         }
@@ -750,6 +801,28 @@ private:
             const __m128 a = alpha4(h, lanes);
             for (int k = 0; k < draw_.colorTargetCount; ++k)
                 blendOneOneRgba8x4(draw_.blend[k], color_[k].at(bx + 4 * h, py), a, lanes);
+        }
+    }
+
+    // shadeAlphaRow where every target is a half-float one that blendOneOneHalf4 applies to
+    // (SSAM's float masks): four lanes at a time. No lane is skipped: a float ADD mask never
+    // saturates, and a zero alpha can still change the stored bits (MAX of 0 over -0 or
+    // NaN gives +0; 0 + -0 = +0).
+    void shadeAlphaRowHalf4(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy) {
+        for (int h = 0; h < 2; ++h) {
+            const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
+            if (!lanes) continue;
+            interpolateHalf(t, centerX0, fy, h);
+            const __m128 a = alpha4(h, lanes);
+            const bool inside = bx + 4 * h + 4 <= width_;  // all four pixels: whole 8-byte R16F loads
+            for (int k = 0; k < draw_.colorTargetCount; ++k) {
+                const std::uint8_t mask = draw_.blend[k].writeMask;
+                std::byte* p = color_[k].at(bx + 4 * h, py);
+                const int channels = color_[k].pixelBytes / 2;
+                if (channels == 1 && inside && (mask & 1u)) blendOneOneR16f4(draw_.blend[k], p, a, lanes);
+                else if (channels == 4 && mask) blendOneOneRgba16f4(draw_.blend[k], p, a, lanes, mask);
+                else if (mask) blendOneOneHalf4(draw_.blend[k], p, channels, a, lanes, mask);
+            }
         }
     }
 
@@ -1074,12 +1147,14 @@ private:
     std::array<std::uint8_t, kMaxColorTargets> constantMask_{};
     std::array<std::uint32_t, kMaxColorTargets> constantPacked_{};
     std::array<bool, kMaxColorTargets> useLut_{};
-    bool compositeRow_ = false;  // CompositeProgram: shadeCompositeRow
+    bool compositeRow_ = false;  // CompositeProgram, CoverageCompositeProgram: compositeRow
     bool alphaFirst_ = false;    // FoliageColor: alpha-test (Keep) on the alpha alone before shading
     // FoliageAlpha's row path (shadeAlphaRow).
     bool alphaRow_ = false;
     bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha
     std::array<bool, kMaxColorTargets> oneOneBytes_{};  // blendOneOneRgba8 applies
+    std::array<bool, kMaxColorTargets> oneOneHalf_{};   // blendOneOneHalf applies
+    bool halfRow_ = false;                              // every target: blendOneOneHalf4 (shadeAlphaRowHalf4)
     std::array<std::uint32_t, kMaxColorTargets> unwrittenBytes_{};  // 0xFF in each byte the write mask leaves
 };
 
