@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lcg.hpp"  // tests/support
 #include "alpha_sampler.hpp"
 #include "sampler.hpp"
 
@@ -21,14 +22,7 @@ namespace {
 using namespace engine::render;
 using namespace engine::render::soft;
 
-struct Lcg {
-    std::uint64_t state;
-    std::uint32_t next() {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return std::uint32_t(state >> 33);
-    }
-    float range(float lo, float hi) { return lo + (hi - lo) * float(next() & 0xFFFFFF) / float(0x1000000); }
-};
+using ssam::testing::Lcg;
 
 bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 

@@ -24,6 +24,7 @@
 #include <memory>
 #include <vector>
 
+#include "lcg.hpp"  // tests/support
 #include "engine/render/pixel_codec.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
@@ -39,15 +40,7 @@ using render::Format;
 
 constexpr int kW = 83, kH = 61;  // no multiple of 8
 
-struct Lcg {
-    std::uint64_t state;
-    std::uint32_t next() {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return std::uint32_t(state >> 33);
-    }
-    float unit() { return float(next() & 0xFFFFFF) / float(0x1000000); }  // [0, 1)
-    float range(float lo, float hi) { return lo + (hi - lo) * unit(); }
-};
+using ssam::testing::Lcg;
 
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& v) {

@@ -10,6 +10,7 @@
 // With SSAM_EXHAUSTIVE_HALF=1 the encode test checks all 2^32 floats instead (about 20 s;
 // it passed when the code was written).
 // Needs engine/render/soft/src on the include path (internal headers).
+#include "lcg.hpp"  // tests/support
 #include "half_float4.hpp"
 
 #include <gtest/gtest.h>
@@ -27,14 +28,7 @@ namespace {
 using namespace engine::render;
 using namespace engine::render::soft;
 
-struct Lcg {
-    std::uint64_t state;
-    std::uint32_t next() {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return std::uint32_t(state >> 33);
-    }
-    float unit() { return float(next() & 0xFFFFFF) / float(0x1000000); }  // [0, 1)
-};
+using ssam::testing::Lcg;
 
 float fromBits(std::uint32_t b) {
     float f;

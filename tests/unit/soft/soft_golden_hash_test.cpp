@@ -21,6 +21,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lcg.hpp"  // tests/support
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
 
@@ -30,15 +31,7 @@ namespace render = engine::render;
 namespace soft = engine::render::soft;
 using render::Format;
 
-struct Lcg {
-    std::uint64_t state;
-    std::uint32_t next() {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return std::uint32_t(state >> 33);
-    }
-    float unit() { return float(next() & 0xFFFFFF) / float(0x1000000); }  // [0, 1)
-    float range(float lo, float hi) { return lo + (hi - lo) * unit(); }
-};
+using ssam::testing::Lcg;
 
 struct Hasher {
     std::uint64_t h = 1469598103934665603ull;
