@@ -15,10 +15,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return ssam::fuzz::scratchDir("gltf_glb") / "input.glb";
     }();
     ssam::fuzz::writeInput(input, data, size);
-    try {
-        ssam::fuzz::checkLoadedModel(engine::assets::loadGltf(input));
-    } catch (const engine::Error& e) {
-        ssam::fuzz::requireMessageNames(e, input.string() + ": ");
-    }
+    ssam::fuzz::loadAndCheck(input);
     return 0;
 }

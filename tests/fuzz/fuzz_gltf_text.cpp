@@ -32,10 +32,6 @@ std::filesystem::path prepareDirectory() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const std::filesystem::path input = prepareDirectory();
     ssam::fuzz::writeInput(input, data, size);
-    try {
-        ssam::fuzz::checkLoadedModel(engine::assets::loadGltf(input));
-    } catch (const engine::Error& e) {
-        ssam::fuzz::requireMessageNames(e, input.string() + ": ");
-    }
+    ssam::fuzz::loadAndCheck(input);
     return 0;
 }

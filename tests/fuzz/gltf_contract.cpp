@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <string>
 
+#include "engine/core/error.hpp"
 #include "fuzz_support.hpp"
 
 namespace ssam::fuzz {
@@ -108,6 +109,14 @@ void checkLoadedModel(const LoadedModel& model) {
     checkImagesAndMaterials(model);
     checkMeshes(model);
     checkCamerasAndNodes(model);
+}
+
+void loadAndCheck(const std::filesystem::path& path) {
+    try {
+        checkLoadedModel(engine::assets::loadGltf(path));
+    } catch (const engine::Error& e) {
+        requireMessageNames(e, path.string() + ": ");
+    }
 }
 
 }  // namespace ssam::fuzz

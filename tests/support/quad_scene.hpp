@@ -47,6 +47,19 @@ struct QuadBatches {
     ~QuadBatches() {
         for (auto b : buffers) backend.destroy(b);
     }
+
+    // Draws every quad with `pipeline` (a Flat one) into the open pass: opaque geometry, or a
+    // later pass that depth-tests against the foliage.
+    void drawFlat(engine::render::PipelineHandle pipeline) const {
+        for (const FoliageBatch& batch : batches) {
+            engine::render::DrawDesc d;
+            d.pipeline = pipeline;
+            d.params = engine::render::FlatParams{};
+            d.vertices = batch.vertices;
+            d.count = batch.count;
+            backend.draw(d);
+        }
+    }
 };
 
 }  // namespace ssam::testing

@@ -65,14 +65,7 @@ void frame(benchmark::State& state, Case c) {
     int passesRun = 0;
     for (auto _ : state) {
         backend->beginPass(opaque.passDesc({0.5f, 0.6f, 0.8f, 1.0f}));
-        for (const auto& batch : scene.batches) {
-            DrawDesc d;
-            d.pipeline = pipeline;
-            d.params = FlatParams{};
-            d.vertices = batch.vertices;
-            d.count = 6;
-            backend->draw(d);
-        }
+        scene.drawFlat(pipeline);
         backend->endPass();
         if (c != Case::OpaqueOnly) passesRun = ssam.render({opaque.color(), opaque.depth()}, view).passesRun;
         benchmark::DoNotOptimize(backend->stats().passes);

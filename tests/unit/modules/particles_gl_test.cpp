@@ -34,49 +34,27 @@ std::vector<Vertex> quad(float x0, float y0, float x1, float y1, float z, glm::v
     return {v(x0, y0, 0, 0), v(x1, y0, 1, 0), v(x1, y1, 1, 1), v(x0, y0, 0, 0), v(x1, y1, 1, 1), v(x0, y1, 0, 1)};
 }
 
-Result run(Backend& b, int stride) {
-    const glm::mat4 proj = perspectiveReverseZ(1.0f, float(kW) / kH, 0.1f, 30000.0f);
-    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0));
-    const glm::mat4 viewProj = proj * view;
+// The kW x kH colour and reverse-Z depth targets with `wall` (an opaque flat quad: the "tree"
+// particles and shafts must respect) drawn over `sky`.
+struct WallFrame {
+    TextureHandle color, depth;
+};
+
+WallFrame wallFrame(Backend& b, const glm::mat4& viewProj, const std::vector<Vertex>& wall, const glm::vec4& sky) {
     TextureDesc t;
-    t.width = kW, t.height = kH, t.usage = UsageRenderTarget | UsageSampled;
-    t.name = "colour";
+    t.width = kW, t.height = kH, t.usage = UsageRenderTarget | UsageSampled, t.name = "colour";
     const TextureHandle color = b.createTexture(t);
     t.name = "depth", t.format = Format::D32F;
     const TextureHandle depth = b.createTexture(t);
-    t.name = "layer", t.format = Format::RGBA16F, t.width = (kW + stride - 1) / stride, t.height = (kH + stride - 1) / stride;
-    const TextureHandle layer = b.createTexture(t);
-
-    // A "tree": a wall at 5 m over the left of the view, its edge at an odd pixel.
-    std::vector<Vertex> wall = quad(-9.0f, -9.0f, 0.37f, 9.0f, 5.0f, {0.2f, 0.5f, 0.1f, 1.0f}, {0, 0, -1});
-    // Particles: one straddling the wall's edge behind it, one in front, one additive.
-    std::vector<Vertex> parts;
-    for (auto [x, y, z, add, c] : {std::tuple{0.6f, 0.3f, 8.0f, 0.0f, glm::vec4(0.9f, 0.4f, 0.2f, 0.8f)},
-                                   std::tuple{-0.4f, -0.4f, 4.2f, 0.0f, glm::vec4(0.5f, 0.5f, 0.9f, 0.6f)},
-                                   std::tuple{0.2f, 0.0f, 4.8f, 1.0f, glm::vec4(0.3f, 1.0f, 0.3f, 0.7f)}}) {
-        const auto q = quad(x - 1.2f, y - 1.2f, x + 1.2f, y + 1.2f, z, c, {z, add, 0.0f});
-        parts.insert(parts.end(), q.begin(), q.end());
-    }
     const BufferHandle wallBuffer = b.createBuffer({"wall", BufferKind::Vertex, wall.size() * sizeof(Vertex)},
                                                    std::as_bytes(std::span(wall)));
-    const BufferHandle partBuffer = b.createBuffer({"particles", BufferKind::Vertex, parts.size() * sizeof(Vertex)},
-                                                   std::as_bytes(std::span(parts)));
     PipelineDesc p;
     p.name = "wall";
     p.depth = DepthState::testAndWrite(CompareFunc::Greater);
     const PipelineHandle wallPipeline = b.createPipeline(p);
-    p = {};
-    p.name = "particles";
-    p.program = ProgramKind::Particle;
-    p.blend[0] = BlendState::premultipliedOver();
-    const PipelineHandle particlePipeline = b.createPipeline(p);
-    p.name = "composite";
-    p.program = ProgramKind::LayerComposite;
-    const PipelineHandle compositePipeline = b.createPipeline(p);
-
     PassDesc pass;
     pass.name = "scene";
-    pass.color[0] = {color, LoadOp::Clear, {0.5f, 0.6f, 0.8f, 1.0f}};
+    pass.color[0] = {color, LoadOp::Clear, sky};
     pass.depth = {depth, LoadOp::Clear, 0.0f};
     b.beginPass(pass);
     DrawDesc d;
@@ -86,11 +64,44 @@ Result run(Backend& b, int stride) {
     d.count = 6;
     b.draw(d);
     b.endPass();
+    return {color, depth};
+}
+
+Result run(Backend& b, int stride) {
+    const glm::mat4 proj = perspectiveReverseZ(1.0f, float(kW) / kH, 0.1f, 30000.0f);
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0));
+    const glm::mat4 viewProj = proj * view;
+    // A "tree": a wall at 5 m over the left of the view, its edge at an odd pixel.
+    const auto [color, depth] = wallFrame(b, viewProj, quad(-9.0f, -9.0f, 0.37f, 9.0f, 5.0f, {0.2f, 0.5f, 0.1f, 1.0f}, {0, 0, -1}),
+                                          {0.5f, 0.6f, 0.8f, 1.0f});
+    TextureDesc t;
+    t.usage = UsageRenderTarget | UsageSampled;
+    t.name = "layer", t.format = Format::RGBA16F, t.width = (kW + stride - 1) / stride, t.height = (kH + stride - 1) / stride;
+    const TextureHandle layer = b.createTexture(t);
+    // Particles: one straddling the wall's edge behind it, one in front, one additive.
+    std::vector<Vertex> parts;
+    for (auto [x, y, z, add, c] : {std::tuple{0.6f, 0.3f, 8.0f, 0.0f, glm::vec4(0.9f, 0.4f, 0.2f, 0.8f)},
+                                   std::tuple{-0.4f, -0.4f, 4.2f, 0.0f, glm::vec4(0.5f, 0.5f, 0.9f, 0.6f)},
+                                   std::tuple{0.2f, 0.0f, 4.8f, 1.0f, glm::vec4(0.3f, 1.0f, 0.3f, 0.7f)}}) {
+        const auto q = quad(x - 1.2f, y - 1.2f, x + 1.2f, y + 1.2f, z, c, {z, add, 0.0f});
+        parts.insert(parts.end(), q.begin(), q.end());
+    }
+    const BufferHandle partBuffer = b.createBuffer({"particles", BufferKind::Vertex, parts.size() * sizeof(Vertex)},
+                                                   std::as_bytes(std::span(parts)));
+    PipelineDesc p;
+    p.name = "particles";
+    p.program = ProgramKind::Particle;
+    p.blend[0] = BlendState::premultipliedOver();
+    const PipelineHandle particlePipeline = b.createPipeline(p);
+    p.name = "composite";
+    p.program = ProgramKind::LayerComposite;
+    const PipelineHandle compositePipeline = b.createPipeline(p);
 
     PassDesc layerPass;
     layerPass.name = "particles";
     layerPass.color[0] = {layer, LoadOp::Clear, glm::vec4(0.0f)};
     b.beginPass(layerPass);
+    DrawDesc d;
     d.pipeline = particlePipeline;
     d.params = ParticleParams{viewProj, depth, stride, proj[3][2], proj[2][2], 0.5f, true};
     d.vertices = partBuffer;
@@ -136,36 +147,15 @@ TEST(ParticlesGl, SoftAndGlAgree) {
 Readback shafts(Backend& b) {
     const glm::mat4 proj = perspectiveReverseZ(1.0f, float(kW) / kH, 0.1f, 30000.0f);
     const glm::mat4 viewProj = proj * glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0));
-    TextureDesc t;
-    t.width = kW, t.height = kH, t.usage = UsageRenderTarget | UsageSampled, t.name = "colour";
-    const TextureHandle color = b.createTexture(t);
-    t.name = "depth", t.format = Format::D32F;
-    const TextureHandle depth = b.createTexture(t);
-    std::vector<Vertex> wall = quad(-0.8f, -0.6f, 0.37f, 0.9f, 5.0f, glm::vec4(0.2f, 0.5f, 0.1f, 1.0f), {0, 0, -1});
-    const BufferHandle wallBuffer = b.createBuffer({"wall", BufferKind::Vertex, wall.size() * sizeof(Vertex)},
-                                                   std::as_bytes(std::span(wall)));
+    const auto [color, depth] = wallFrame(
+        b, viewProj, quad(-0.8f, -0.6f, 0.37f, 0.9f, 5.0f, glm::vec4(0.2f, 0.5f, 0.1f, 1.0f), {0, 0, -1}),
+        {0.3f, 0.4f, 0.6f, 1.0f});
     PipelineDesc p;
-    p.name = "wall";
-    p.depth = DepthState::testAndWrite(CompareFunc::Greater);
-    const PipelineHandle wallPipeline = b.createPipeline(p);
-    p = {};
     p.name = "shafts";
     p.program = ProgramKind::LightShafts;
     p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
                   BlendOp::Add, WriteRGB};
     const PipelineHandle shaftPipeline = b.createPipeline(p);
-    PassDesc pass;
-    pass.name = "scene";
-    pass.color[0] = {color, LoadOp::Clear, {0.3f, 0.4f, 0.6f, 1.0f}};
-    pass.depth = {depth, LoadOp::Clear, 0.0f};
-    b.beginPass(pass);
-    DrawDesc d;
-    d.pipeline = wallPipeline;
-    d.params = FlatParams{viewProj, glm::vec4(1.0f)};
-    d.vertices = wallBuffer;
-    d.count = 6;
-    b.draw(d);
-    b.endPass();
     PassDesc shaftPass;
     shaftPass.name = "light shafts";
     shaftPass.color[0] = {color, LoadOp::Load};

@@ -44,14 +44,7 @@ struct TechniqueFrame {
         const PipelineHandle pipeline = backend.createPipeline(p);
         ssam::testing::QuadBatches geometry(backend, opaqueQuads);
         backend.beginPass(opaque.passDesc(kOpaqueColor));
-        for (const auto& batch : geometry.batches) {
-            DrawDesc d;
-            d.pipeline = pipeline;
-            d.params = FlatParams{};
-            d.vertices = batch.vertices;
-            d.count = 6;
-            backend.draw(d);
-        }
+        geometry.drawFlat(pipeline);
         backend.endPass();
         backend.destroy(pipeline);
     }

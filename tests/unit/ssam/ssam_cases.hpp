@@ -65,14 +65,7 @@ struct Frame {
         const PipelineHandle pipeline = backend->createPipeline(p);
         QuadBatches geometry(*backend, quads);
         backend->beginPass(opaque.passDesc(kOpaqueColor));
-        for (const auto& batch : geometry.batches) {
-            DrawDesc d;
-            d.pipeline = pipeline;
-            d.params = FlatParams{};
-            d.vertices = batch.vertices;
-            d.count = 6;
-            backend->draw(d);
-        }
+        geometry.drawFlat(pipeline);
         backend->endPass();
         opaque.resolve();
         backend->destroy(pipeline);
@@ -216,14 +209,7 @@ TYPED_TEST_P(SsamCases, FoliageDepthOccludesLaterDrawsBehindNotInFront) {
     pass.color[0] = {f.opaque.color(), LoadOp::Load};
     pass.depth = {f.opaque.depth(), LoadOp::Load};
     f.backend->beginPass(pass);
-    for (const auto& batch : later.batches) {
-        DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = FlatParams{};
-        d.vertices = batch.vertices;
-        d.count = 6;
-        f.backend->draw(d);
-    }
+    later.drawFlat(pipeline);
     f.backend->endPass();
     const Readback result = f.backend->readback(f.opaque.color());
     EXPECT_FLOAT_EQ(result.at(3, 8, 0), 0.0f);   // behind: hidden by the foliage

@@ -89,14 +89,7 @@ struct Host {
         const PipelineHandle pipeline = backend->createPipeline(p);
         QuadBatches geometry(*backend, quads);
         backend->beginPass(targets->passDesc(kOpaqueColor));
-        for (const auto& batch : geometry.batches) {
-            DrawDesc d;
-            d.pipeline = pipeline;
-            d.params = FlatParams{};
-            d.vertices = batch.vertices;
-            d.count = 6;
-            backend->draw(d);
-        }
+        geometry.drawFlat(pipeline);
         backend->endPass();
         backend->destroy(pipeline);
         return targets;

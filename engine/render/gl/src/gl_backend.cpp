@@ -1011,6 +1011,15 @@ private:
         glBindSampler(GLuint(unit), sampler(binding.sampler));
     }
 
+    // The lit programs' (OpaqueLit, FoliageColor, WboitAccumulate) light uniforms.
+    static void setLight(const ProgramSlot& s, const DirectionalLight& light) {
+        const GLuint p = s.program.id();
+        const glm::vec3 toward = glm::normalize(light.towardLight);
+        glProgramUniform3fv(p, s.towardLight, 1, &toward[0]);
+        glProgramUniform3fv(p, s.lightColor, 1, &light.color[0]);
+        glProgramUniform3fv(p, s.ambient, 1, &light.ambient[0]);
+    }
+
     void setParams(const ProgramSlot& s, const ProgramParams& params) {
         const GLuint p = s.program.id();
         std::visit(
@@ -1022,10 +1031,7 @@ private:
                 } else if constexpr (std::is_same_v<P, SurfaceParams>) {
                     glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
                     glProgramUniform4fv(p, s.color, 1, &params.baseColorFactor[0]);
-                    const glm::vec3 toward = glm::normalize(params.light.towardLight);
-                    glProgramUniform3fv(p, s.towardLight, 1, &toward[0]);
-                    glProgramUniform3fv(p, s.lightColor, 1, &params.light.color[0]);
-                    glProgramUniform3fv(p, s.ambient, 1, &params.light.ambient[0]);
+                    setLight(s, params.light);
                     bindSampled(kUnitBaseColor, params.baseColor, s, true);
                 } else if constexpr (std::is_same_v<P, AlphaOnlyParams>) {
                     glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
@@ -1034,10 +1040,7 @@ private:
                 } else if constexpr (std::is_same_v<P, WboitAccumulateParams>) {
                     glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
                     glProgramUniform4fv(p, s.color, 1, &params.baseColorFactor[0]);
-                    const glm::vec3 toward = glm::normalize(params.light.towardLight);
-                    glProgramUniform3fv(p, s.towardLight, 1, &toward[0]);
-                    glProgramUniform3fv(p, s.lightColor, 1, &params.light.color[0]);
-                    glProgramUniform3fv(p, s.ambient, 1, &params.light.ambient[0]);
+                    setLight(s, params.light);
                     glProgramUniform1f(p, s.depthScale, params.depthScale);
                     bindSampled(kUnitBaseColor, params.baseColor, s, true);
                 } else if constexpr (std::is_same_v<P, CoverageCompositeParams>) {
