@@ -1,5 +1,5 @@
 // modules/lightshafts: shafts from the sky the opaque + foliage depth leaves visible;
-// foliage over the sun blocks them (seeds/000 §3.7); off behind the camera; bad input.
+// foliage over the sun blocks them ([Hathaway 2010] §3.7); off behind the camera; bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
