@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/core/output_file.hpp"
 #include "geometry.hpp"
 #include "gltf_writer.hpp"
 #include "textures.hpp"
@@ -19,10 +19,11 @@ namespace fs = std::filesystem;
 constexpr int kRepeat = 10497;
 constexpr int kClampToEdge = 33071;
 
-void writeBytes(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
-    fs::create_directories(path.parent_path());
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+// Writes `bytes` to a temporary file of `staged` that becomes `path` when all are committed.
+void stageBytes(engine::PendingFiles& staged, const fs::path& path, const std::vector<std::uint8_t>& bytes) {
+    std::ofstream out(staged.add(path), std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.close();
     if (!out) throw engine::Error("cannot write '" + path.string() + "'");
 }
 
@@ -178,7 +179,34 @@ std::vector<std::uint8_t> track(const Pngs& pngs) {
     return glb.glb();
 }
 
+// Every file, in the fixed order generateContent() writes them, and how it is made.
+struct ContentFile {
+    const char* path;
+    std::vector<std::uint8_t> (*make)(const Pngs&);
+};
+
+const ContentFile kFiles[] = {
+    // Standalone textures the game applies to the terrain and road it builds in code.
+    {"textures/ground.png", [](const Pngs& pngs) { return pngs.ground; }},
+    {"textures/track.png", [](const Pngs& pngs) { return pngs.track; }},
+    {"models/tree_broadleaf.glb", broadleafTree},
+    {"models/tree_tall.glb", tallTree},
+    {"models/tree_palm.glb", palmTree},
+    {"models/bush_round.glb", roundBush},
+    {"models/bush_fern.glb", fernBush},
+    {"models/car.glb", car},
+    {"models/water.glb", [](const Pngs&) { return water(); }},
+    {"models/terrain.glb", terrain},
+    {"models/track.glb", track},
+};
+
 }  // namespace
+
+std::vector<fs::path> contentFiles() {
+    std::vector<fs::path> files;
+    for (const ContentFile& file : kFiles) files.emplace_back(file.path);
+    return files;
+}
 
 std::vector<fs::path> generateContent(const fs::path& dir) {
     Pngs pngs;
@@ -189,25 +217,15 @@ std::vector<fs::path> generateContent(const fs::path& dir) {
     pngs.track = encodePng(makeTrack(0x7AC0u));
     pngs.car = encodePng(makeCarAtlas(0xCA40u));
 
-    const std::vector<std::pair<fs::path, std::function<std::vector<std::uint8_t>()>>> files = {
-        // Standalone textures the game applies to the terrain and road it builds in code.
-        {"textures/ground.png", [&] { return pngs.ground; }},
-        {"textures/track.png", [&] { return pngs.track; }},
-        {"models/tree_broadleaf.glb", [&] { return broadleafTree(pngs); }},
-        {"models/tree_tall.glb", [&] { return tallTree(pngs); }},
-        {"models/tree_palm.glb", [&] { return palmTree(pngs); }},
-        {"models/bush_round.glb", [&] { return roundBush(pngs); }},
-        {"models/bush_fern.glb", [&] { return fernBush(pngs); }},
-        {"models/car.glb", [&] { return car(pngs); }},
-        {"models/water.glb", [&] { return water(); }},
-        {"models/terrain.glb", [&] { return terrain(pngs); }},
-        {"models/track.glb", [&] { return track(pngs); }},
-    };
+    engine::PendingFiles staged;  // the content set is replaced whole or not at all
     std::vector<fs::path> written;
-    for (const auto& [relative, make] : files) {
-        writeBytes(dir / relative, make());
-        written.push_back(relative);
+    for (const ContentFile& file : kFiles) {
+        const fs::path target = dir / file.path;
+        fs::create_directories(target.parent_path());
+        stageBytes(staged, target, file.make(pngs));
+        written.emplace_back(file.path);
     }
+    staged.commit();
     return written;
 }
 

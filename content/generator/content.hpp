@@ -9,6 +9,12 @@
 
 namespace content {
 
+// The set is written whole or not at all: every file to a temporary name first, then all
+// renamed into place together (engine/core/output_file.hpp).
 std::vector<std::filesystem::path> generateContent(const std::filesystem::path& dir);
+
+// The paths generateContent() writes, relative to its dir, without making anything: for a
+// tool to check every place it will write before the work.
+std::vector<std::filesystem::path> contentFiles();
 
 }  // namespace content

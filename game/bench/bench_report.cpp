@@ -58,8 +58,7 @@ const std::vector<std::string>& csvColumns() {
     return columns;
 }
 
-void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows) {
-    std::ofstream out = openOut(path);
+void writeCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
     const auto& columns = csvColumns();
     for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
     out << "\n";
@@ -73,8 +72,7 @@ void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& ro
     }
 }
 
-void writePassesCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows) {
-    std::ofstream out = openOut(path);
+void writePassesCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
     out << "scene,technique,backend,pass,time_ms_median\n";
     for (const BenchRow& r : rows)
         for (const PassTime& p : r.passes)
@@ -82,8 +80,7 @@ void writePassesCsv(const std::filesystem::path& path, const std::vector<BenchRo
                 << ',' << num(p.medianMs, "%.3f") << "\n";
 }
 
-void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow>& rows, const RunInfo& info) {
-    std::ofstream out = openOut(path);
+void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const RunInfo& info) {
     out << "# ssam-bench\n\n`" << info.command << "`\n\n";
     if (!rows.empty())
         out << rows.front().width << "x" << rows.front().height << ", " << info.reps << " timed repetition(s) after "
@@ -197,7 +194,7 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
     out << "Chart: [bench.svg](bench.svg). Per-pass medians: bench_passes.csv.\n";
 }
 
-void writeSvg(const std::filesystem::path& path, const std::vector<BenchRow>& rows) {
+void writeSvg(std::ostream& out, const std::vector<BenchRow>& rows) {
     const std::string backend = primaryBackend(rows);
     struct Point {
         std::string label;
@@ -306,7 +303,6 @@ void writeSvg(const std::filesystem::path& path, const std::vector<BenchRow>& ro
         s << "</g>\n";
     }
     s << "</svg>\n";
-    std::ofstream out = openOut(path);
     out << s.str();
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // `ssam-bench`'s outputs: bench.csv (one row per scene x technique x backend),
 // bench_passes.csv (median time of each pass), bench.md (tables and the goal ratios of
-// issue #6) and bench.svg (time against ꟻLIP per scene, Pareto front marked).
-#include <filesystem>
+// issue #6) and bench.svg (time against ꟻLIP per scene, Pareto front marked). Each is
+// written to a stream; ssam-bench stages the files and puts them in place together
+// (report_text.hpp stageReport).
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -19,9 +21,9 @@ struct RunInfo {
 // The columns of bench.csv, in order.
 const std::vector<std::string>& csvColumns();
 
-void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
-void writePassesCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
-void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow>& rows, const RunInfo& info);
-void writeSvg(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
+void writeCsv(std::ostream& out, const std::vector<BenchRow>& rows);
+void writePassesCsv(std::ostream& out, const std::vector<BenchRow>& rows);
+void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const RunInfo& info);
+void writeSvg(std::ostream& out, const std::vector<BenchRow>& rows);
 
 }  // namespace bench

@@ -2,15 +2,21 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "engine/core/error.hpp"
 
 namespace bench {
 
-std::ofstream openOut(const std::filesystem::path& path) {
-    std::ofstream out(path);
-    if (!out) throw engine::Error("ssam-bench: cannot write '" + path.string() + "'");
-    return out;
+void stageReport(engine::PendingFiles& files, const std::filesystem::path& path,
+                 const std::function<void(std::ostream&)>& write) {
+    std::ostringstream text;
+    write(text);
+    std::ofstream out(files.add(path), std::ios::binary);
+    out << text.str();
+    out.close();
+    if (!out) throw engine::Error("cannot write '" + path.string() + "'");
 }
 
 std::string num(double v, const char* format) {

@@ -1,13 +1,19 @@
 #pragma once
 // Text helpers shared by ssam-bench's reports (bench.* and sweep.*): numbers as the CSV and
-// Markdown print them, quoting, and opening an output file with a clear error.
+// Markdown print them, quoting, and staging a report file.
 #include <filesystem>
-#include <fstream>
+#include <functional>
+#include <ostream>
 #include <string>
+
+#include "engine/core/output_file.hpp"
 
 namespace bench {
 
-std::ofstream openOut(const std::filesystem::path& path);
+// Writes the text `write` produces to a temporary file of `files` that becomes `path` when the
+// caller commits them all (engine::PendingFiles): reports appear together, whole, or not at all.
+void stageReport(engine::PendingFiles& files, const std::filesystem::path& path,
+                 const std::function<void(std::ostream&)>& write);
 
 // `v` printed with `format`; NaN (a missing value) as the empty string, infinities as inf/-inf.
 // The default prints 9 significant digits: enough to show that two runs are identical.

@@ -1,7 +1,8 @@
 // ssam-bench: every transparency technique's run time against its error from the exact
 // reference (DESIGN.md "Accuracy and the ground truth", issue #6). Writes bench.csv,
 // bench_passes.csv, bench.md and bench.svg into --out; with --sweep, SSAM under a grid of its
-// knobs instead, into sweep.csv and sweep.md.
+// knobs instead, into sweep.csv and sweep.md. Keeps the command-line contract (game/README.md):
+// exit 2 for a bad flag, 1 for a failed run; --out is checked before the first frame.
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
@@ -15,7 +16,10 @@
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
 #include "bench_sweep.hpp"
-#include "engine/core/error.hpp"
+#include "engine/cli/command_line.hpp"
+#include "engine/core/output_file.hpp"
+#include "engine/core/usage_error.hpp"
+#include "report_text.hpp"
 #include "sweep_report.hpp"
 
 namespace {
@@ -49,7 +53,7 @@ std::vector<std::string> splitList(const std::string& list, const char* flag) {
     while (start <= list.size()) {
         const std::size_t comma = std::min(list.find(',', start), list.size());
         const std::string item = list.substr(start, comma - start);
-        if (item.empty()) throw engine::Error(std::string(flag) + " '" + list + "': empty entry in the comma list");
+        if (item.empty()) throw engine::UsageError(std::string(flag) + " '" + list + "': empty entry in the comma list");
         items.push_back(item);
         start = comma + 1;
     }
@@ -69,8 +73,8 @@ std::vector<transparency::TechniqueKind> parseTechniques(const std::string& list
     for (const std::string& name : splitList(list, "--techniques")) {
         const auto kind = transparency::parseTechnique(name);
         if (!kind)
-            throw engine::Error("--techniques: unknown technique '" + name + "' (known: " + allTechniqueNames() +
-                                (noneAllowed ? "; or all, none)" : "; or all)"));
+            throw engine::UsageError("--techniques: unknown technique '" + name + "' (known: " + allTechniqueNames() +
+                                     (noneAllowed ? "; or all, none)" : "; or all)"));
         kinds.push_back(*kind);
     }
     return kinds;
@@ -81,7 +85,7 @@ float parseNumber(const std::string& item, const char* flag) {
     errno = 0;
     const float v = std::strtof(item.c_str(), &end);
     if (end == item.c_str() || *end != '\0' || errno == ERANGE)
-        throw engine::Error(std::string(flag) + ": '" + item + "' is not a number");
+        throw engine::UsageError(std::string(flag) + ": '" + item + "' is not a number");
     return v;
 }
 
@@ -91,7 +95,7 @@ void validateKnob(const ssam::Config& c, const char* flag) {
     try {
         c.validate();
     } catch (const engine::Error& e) {
-        throw engine::Error(std::string(flag) + ": " + e.what());
+        throw engine::UsageError(std::string(flag) + ": " + e.what());
     }
 }
 
@@ -108,7 +112,7 @@ SweepGrid parseSweepGrid(const Options& o) {
     g.squareMask.clear();
     for (const std::string& item : splitList(o.sweepSquare, "--sweep-square")) {
         if (item != "on" && item != "off")
-            throw engine::Error("--sweep-square: '" + item + "' for squareMask (known: on, off)");
+            throw engine::UsageError("--sweep-square: '" + item + "' for squareMask (known: on, off)");
         g.squareMask.push_back(item == "on");
     }
     g.colorAlphaReference.clear();
@@ -127,7 +131,7 @@ SweepGrid parseSweepGrid(const Options& o) {
                 known = true;
             }
         if (!known)
-            throw engine::Error("--sweep-precision: '" + item + "' for maskPrecision (known: rgba8, rgba16f, rg16f)");
+            throw engine::UsageError("--sweep-precision: '" + item + "' for maskPrecision (known: rgba8, rgba16f, rg16f)");
     }
     return g;
 }
@@ -137,7 +141,7 @@ BenchOptions parse(const Options& o) {
     for (const std::string& name : splitList(o.scenes, "--scenes")) {
         SceneKind kind;
         if (!parseScene(name, kind))
-            throw engine::Error("--scenes: unknown scene '" + name + "' (known: tree, forest, vista, empty)");
+            throw engine::UsageError("--scenes: unknown scene '" + name + "' (known: tree, forest, vista, empty)");
         b.scenes.push_back(kind);
     }
     // With --sweep the techniques are measured beside the settings, for comparison only.
@@ -149,24 +153,76 @@ BenchOptions parse(const Options& o) {
     }
     for (const std::string& name : splitList(o.backends, "--backend")) {
         if (name != "soft" && name != "gl")
-            throw engine::Error("--backend: unknown backend '" + name + "' (known: soft, gl)");
+            throw engine::UsageError("--backend: unknown backend '" + name + "' (known: soft, gl)");
         b.backends.push_back(name);
     }
     std::smatch m;
     static const std::regex sizePattern(R"((\d{1,5})x(\d{1,5}))");
     if (!std::regex_match(o.size, m, sizePattern))
-        throw engine::Error("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 1280x720");
+        throw engine::UsageError("--size '" + o.size + "': expected WIDTHxHEIGHT, e.g. 1280x720");
     b.width = std::stoi(m[1]);
     b.height = std::stoi(m[2]);
     // SSIM's 11x11 window needs at least 11 pixels each way.
     if (b.width < 11 || b.height < 11 || b.width > 16384 || b.height > 16384)
-        throw engine::Error("--size '" + o.size + "': each dimension must be in 11..16384");
+        throw engine::UsageError("--size '" + o.size + "': each dimension must be in 11..16384");
     b.reps = o.reps;
     b.warmup = o.warmup;
     b.panFrames = o.panFrames;
     b.threads = o.threads;
     b.contentDir = o.contentDir;
     return b;
+}
+
+int run(const CLI::App& app, Options o, int argc, char** argv) {
+    if (o.sweep && !app.count("--techniques")) o.techniques = "alpha-test,ssam-plus";
+    if (o.quick) {
+        if (!app.count("--size")) o.size = "160x90";
+        if (!app.count("--reps")) o.reps = 1;
+        if (!app.count("--warmup")) o.warmup = 0;
+        if (!app.count("--pan-frames")) o.panFrames = 3;
+    }
+    // Every flag and sweep value is checked before the first frame (a bad one costs no
+    // reference render), and so is every output: the directory is made and proven writable,
+    // so a bad --out fails at once (game/README.md "Command-line contract").
+    const BenchOptions options = parse(o);
+    const std::vector<SweepSetting> settings = o.sweep ? sweepSettings(parseSweepGrid(o)) : std::vector<SweepSetting>{};
+    if (!std::filesystem::is_directory(o.contentDir))
+        throw engine::Error("--content '" + o.contentDir + "': no such directory");
+    const std::filesystem::path out(o.out);
+    const std::vector<const char*> reports = o.sweep ? std::vector<const char*>{"sweep.csv", "sweep.md"}
+                                                     : std::vector<const char*>{"bench.csv", "bench_passes.csv",
+                                                                                "bench.md", "bench.svg"};
+    engine::requireWritableDirectory(out, /*create=*/true);
+    for (const char* name : reports) engine::requireWritableFile(out / name, /*createDirectory=*/false);
+    BenchOptions run = options;
+    if (o.images) {
+        run.imagesDir = out / "images";
+        engine::requireWritableDirectory(run.imagesDir, /*create=*/true);
+    }
+
+    std::string command = "ssam-bench";
+    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+    const RunInfo info{command, resolvedThreads(options.threads), options.reps, options.warmup, options.panFrames};
+    engine::PendingFiles files;  // the reports appear together, each whole, or none does
+    if (o.sweep) {
+        std::printf("ssam-bench --sweep: %zu setting(s) per scene\n", settings.size());
+        const SweepRun sweepRun = runSweep(run, settings, options.subjects);
+        stageReport(files, out / "sweep.csv", [&](std::ostream& s) { writeSweepCsv(s, sweepRun.results); });
+        stageReport(files, out / "sweep.md", [&](std::ostream& s) { writeSweepMarkdown(s, sweepRun, info); });
+        files.commit();
+        std::printf("ssam-bench: wrote %s/sweep.csv, sweep.md (%zu settings x %zu scene(s) x %zu backend(s))\n",
+                    out.string().c_str(), settings.size(), options.scenes.size(), options.backends.size());
+        return 0;
+    }
+    const std::vector<BenchRow> rows = runBench(run);
+    stageReport(files, out / "bench.csv", [&](std::ostream& s) { writeCsv(s, rows); });
+    stageReport(files, out / "bench_passes.csv", [&](std::ostream& s) { writePassesCsv(s, rows); });
+    stageReport(files, out / "bench.md", [&](std::ostream& s) { writeMarkdown(s, rows, info); });
+    stageReport(files, out / "bench.svg", [&](std::ostream& s) { writeSvg(s, rows); });
+    files.commit();
+    std::printf("ssam-bench: wrote %s/bench.csv, bench_passes.csv, bench.md, bench.svg (%zu rows)\n",
+                out.string().c_str(), rows.size());
+    return 0;
 }
 
 }  // namespace
@@ -216,46 +272,9 @@ int main(int argc, char** argv) {
     app.add_option("--sweep-precision", o.sweepPrecision, "maskPrecision values (§3.5.2): rgba8, rgba16f, rg16f")
         ->capture_default_str()
         ->needs(sweep);
-    app.add_option("--out", o.out, "output directory")->capture_default_str();
-    app.add_option("--content", o.contentDir, "content directory")->check(CLI::ExistingDirectory)->capture_default_str();
-    CLI11_PARSE(app, argc, argv);
-    if (o.sweep && !app.count("--techniques")) o.techniques = "alpha-test,ssam-plus";
-    if (o.quick) {
-        if (!app.count("--size")) o.size = "160x90";
-        if (!app.count("--reps")) o.reps = 1;
-        if (!app.count("--warmup")) o.warmup = 0;
-        if (!app.count("--pan-frames")) o.panFrames = 3;
-    }
-    try {
-        const BenchOptions options = parse(o);
-        // Every sweep value is checked before the first frame: a bad one costs no reference render.
-        const std::vector<SweepSetting> settings = o.sweep ? sweepSettings(parseSweepGrid(o)) : std::vector<SweepSetting>{};
-        std::string command = "ssam-bench";
-        for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
-        const std::filesystem::path out(o.out);
-        std::filesystem::create_directories(out);
-        BenchOptions run = options;
-        if (o.images) run.imagesDir = out / "images";
-        const RunInfo info{command, resolvedThreads(options.threads), options.reps, options.warmup, options.panFrames};
-        if (o.sweep) {
-            std::printf("ssam-bench --sweep: %zu setting(s) per scene\n", settings.size());
-            const SweepRun sweepRun = runSweep(run, settings, options.subjects);
-            writeSweepCsv(out / "sweep.csv", sweepRun.results);
-            writeSweepMarkdown(out / "sweep.md", sweepRun, info);
-            std::printf("ssam-bench: wrote %s/sweep.csv, sweep.md (%zu settings x %zu scene(s) x %zu backend(s))\n",
-                        out.string().c_str(), settings.size(), options.scenes.size(), options.backends.size());
-            return 0;
-        }
-        const std::vector<BenchRow> rows = runBench(run);
-        writeCsv(out / "bench.csv", rows);
-        writePassesCsv(out / "bench_passes.csv", rows);
-        writeMarkdown(out / "bench.md", rows, info);
-        writeSvg(out / "bench.svg", rows);
-        std::printf("ssam-bench: wrote %s/bench.csv, bench_passes.csv, bench.md, bench.svg (%zu rows)\n",
-                    out.string().c_str(), rows.size());
-        return 0;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssam-bench: error: %s\n", e.what());
-        return 1;
-    }
+    app.add_option("--out", o.out, "output directory (created if missing; checked before the first frame)")
+        ->capture_default_str();
+    app.add_option("--content", o.contentDir, "content directory")->capture_default_str();
+    app.footer(engine::cli::contractHelpFooter());
+    return engine::cli::runTool("ssam-bench", app, argc, argv, [&] { return run(app, o, argc, argv); });
 }

@@ -181,8 +181,7 @@ const std::vector<std::string>& sweepCsvColumns() {
     return columns;
 }
 
-void writeSweepCsv(const std::filesystem::path& path, const std::vector<SweepResult>& results) {
-    std::ofstream out = openOut(path);
+void writeSweepCsv(std::ostream& out, const std::vector<SweepResult>& results) {
     const auto& columns = sweepCsvColumns();
     for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
     out << "\n";
@@ -199,8 +198,7 @@ void writeSweepCsv(const std::filesystem::path& path, const std::vector<SweepRes
     }
 }
 
-void writeSweepMarkdown(const std::filesystem::path& path, const SweepRun& run, const RunInfo& info) {
-    std::ofstream out = openOut(path);
+void writeSweepMarkdown(std::ostream& out, const SweepRun& run, const RunInfo& info) {
     out << "# ssam-bench --sweep\n\n`" << info.command << "`\n\n";
     if (!run.results.empty())
         out << run.results.front().row.width << "x" << run.results.front().row.height << ", " << info.reps

@@ -3,7 +3,7 @@
 // and the same measure columns as bench.csv) and sweep.md (per scene: the settings sorted by
 // ꟻLIP with the defaults and the best marked, how far each knob alone moves the error, and
 // the techniques measured beside them).
-#include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -15,7 +15,7 @@ namespace bench {
 // The columns of sweep.csv, in order.
 const std::vector<std::string>& sweepCsvColumns();
 
-void writeSweepCsv(const std::filesystem::path& path, const std::vector<SweepResult>& results);
-void writeSweepMarkdown(const std::filesystem::path& path, const SweepRun& run, const RunInfo& info);
+void writeSweepCsv(std::ostream& out, const std::vector<SweepResult>& results);
+void writeSweepMarkdown(std::ostream& out, const SweepRun& run, const RunInfo& info);
 
 }  // namespace bench

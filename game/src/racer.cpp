@@ -10,19 +10,20 @@
 #include <filesystem>
 
 #include "camera_rig.hpp"
-#include "engine/capture/image_write.hpp"
 #include "engine/capture/readback_image.hpp"
-#include "engine/core/error.hpp"
+#include "engine/cli/command_line.hpp"
+#include "engine/core/usage_error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "frame_renderer.hpp"
 #include "frame_source.hpp"
 #include "gltf_scene.hpp"
-#include "layer_pictures.hpp"
 #include "living_scene.hpp"
 #include "racer_options.hpp"
+#include "racer_outputs.hpp"
 #include "racing_scene.hpp"
+#include "window_keys.hpp"
 #include "window_loop.hpp"
 
 namespace {
@@ -61,8 +62,17 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
                 last.lists.mask.size(), last.lists.blend.size());
 }
 
-int run(const Options& o) {
+int run(const CLI::App& app, const Options& o) {
+    // Everything the command line can get wrong is refused before any work (exit 2), and
+    // every output is proven writable before the first frame (exit 1): a bad path fails at
+    // once, not after a 1000-frame run (game/README.md "Command-line contract").
+    checkCombinations(app, o);
     const FrameSize size = parseFrameSize(o.size);
+    if (!o.script.empty()) parseWindowScript(o.script);
+    if (o.scenePath.empty() && !std::filesystem::is_directory(o.contentDir))
+        throw engine::Error("--content '" + o.contentDir + "': no such directory");
+    const OutputPlan outputs = planOutputs(o);
+
     RendererOptions renderer;
     renderer.width = size.width;
     renderer.height = size.height;
@@ -156,32 +166,18 @@ int run(const Options& o) {
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());
     } else {
-        if (!o.script.empty()) throw engine::Error("--script needs a window (a display and no --headless)");
+        if (!o.script.empty()) throw engine::UsageError("--script needs a window (a display and no --headless)");
         std::printf("racer: %d frames at dt %.4f s\n", o.frames, o.fixedDt);
         runHeadless(o, backend, frame, source, cameraMode, aspect);
     }
 
-    if (!o.capturePath.empty()) {
-        const std::filesystem::path path(o.capturePath);
-        if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-        engine::capture::writePng(path, engine::capture::imageFromReadback(backend.readback(frame.color())));
-        std::printf("racer: wrote %s\n", path.string().c_str());
-        if (o.captureLayers) {
-            std::filesystem::path exr = path;
-            exr.replace_extension(".exr");
-            engine::capture::writeLayersExr(exr, frame.layers());
-            std::printf("racer: wrote %s (%zu layers)\n", exr.string().c_str(), frame.layers().size());
-        }
-    }
-    if (!o.layerPictures.empty()) {
-        if (frame.layers().empty()) throw engine::Error("--layer-pictures needs --capture-layers");
-        const SceneCamera planes = gltf ? gltf->camera(float(frame.width()) / float(frame.height())) : SceneCamera{};
-        // <technique>_<layer>.png, e.g. ssam_mask_max.png (the README's), alpha_test_result.png.
-        std::string prefix = std::string(transparency::techniqueName(frame.technique())) + "_";
-        std::replace(prefix.begin(), prefix.end(), '-', '_');
-        const int n = writeLayerPictures(o.layerPictures, prefix, frame.layers(), planes.nearPlane, planes.farPlane);
-        std::printf("racer: wrote %d layer pictures to %s\n", n, o.layerPictures.c_str());
-    }
+    const SceneCamera planes = gltf ? gltf->camera(float(frame.width()) / float(frame.height())) : SceneCamera{};
+    // <technique>_<layer>.png, e.g. ssam_mask_max.png (the README's), alpha_test_result.png.
+    std::string prefix = std::string(transparency::techniqueName(frame.technique())) + "_";
+    std::replace(prefix.begin(), prefix.end(), '-', '_');
+    if (!outputs.capture.empty())
+        writeOutputs(outputs, engine::capture::imageFromReadback(backend.readback(frame.color())), frame.layers(), prefix,
+                     planes.nearPlane, planes.farPlane);
     return 0;
 }
 
@@ -191,11 +187,5 @@ int main(int argc, char** argv) {
     CLI::App app{"racer: the SSAM racing-scene demo ([Hathaway 2010], Pure)"};
     Options o;
     addOptions(app, o);
-    CLI11_PARSE(app, argc, argv);
-    try {
-        return run(o);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "racer: error: %s\n", e.what());
-        return 1;
-    }
+    return engine::cli::runTool("racer", app, argc, argv, [&] { return run(app, o); });
 }

@@ -5,7 +5,8 @@
 #include <regex>
 #include <vector>
 
-#include "engine/core/error.hpp"
+#include "engine/cli/command_line.hpp"
+#include "engine/core/usage_error.hpp"
 
 namespace racer {
 
@@ -39,14 +40,18 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--camera", o.camera, "camera")->check(CLI::IsMember({"chase", "pan", "free", "sky"}))->capture_default_str();
     app.add_option("--seed", o.seed, "scene seed (track shape, placement)")->capture_default_str();
     app.add_option("--threads", o.threads, "soft backend threads (0: all)")->check(CLI::Range(0, 256))->capture_default_str();
-    app.add_option("--capture", o.capturePath, "write the last frame to this PNG");
-    app.add_flag("--capture-layers", o.captureLayers, "also write every layer of the technique to an EXR next to the PNG");
+    app.add_option("--capture", o.capturePath,
+                   "write the last frame to this image: .png (8-bit sRGB) or .exr (linear float); checked before "
+                   "the first frame, its directory created if missing");
+    app.add_flag("--capture-layers", o.captureLayers,
+                 "with a --capture .png: also write every layer of the technique to an EXR of the same name");
     app.add_flag("--headless", o.headless, "render offscreen even when a display is available");
-    app.add_option("--content", o.contentDir, "content directory")->check(CLI::ExistingDirectory)->capture_default_str();
+    app.add_option("--content", o.contentDir, "content directory (the racing scene's models)")->capture_default_str();
     app.add_option("--msaa", o.msaa, "opaque-pass samples at least (1, 2, 4; Pure used 2; a2c always uses 4)")
         ->check(CLI::IsMember({1, 2, 4}))
         ->capture_default_str();
-    app.add_option("--layer-pictures", o.layerPictures, "write each captured layer as a PNG into this directory");
+    app.add_option("--layer-pictures", o.layerPictures,
+                   "with --capture-layers: write each captured layer as a PNG into this directory (created if missing)");
     // Hidden (empty group): drives the window from tests, e.g. "2:3,4:C,5:size=400x300,9:Esc".
     app.add_option("--script", o.script, "keys pressed and window changes at given frames")->group("");
     app.add_option("--scene", o.scenePath, "render this glTF 2.0 file (.gltf or .glb) instead of the racing scene");
@@ -60,16 +65,39 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_flag("--no-grass", o.noGrass, "no grass cards");
     app.add_flag("--no-particles", o.noParticles, "no dust or spray from the wheels");
     app.add_flag("--no-lightshafts", o.noLightshafts, "no light shafts");
+    app.footer(engine::cli::contractHelpFooter());
+}
+
+void checkCombinations(const CLI::App& app, const Options& o) {
+    auto given = [&](const char* flag) { return app.count(flag) > 0; };
+    auto refuse = [](const std::string& why) { throw engine::UsageError(why); };
+    if (given("--capture-layers") && !given("--capture"))
+        refuse("--capture-layers writes the layers to an EXR beside the --capture image: give --capture too");
+    if (given("--layer-pictures") && !given("--capture-layers"))
+        refuse("--layer-pictures draws the layers that --capture-layers captures: give --capture-layers too");
+    for (const char* flag : {"--scene-index", "--camera-index"})
+        if (given(flag) && !given("--scene")) refuse(std::string(flag) + " picks from the --scene file: give --scene too");
+    if (given("--scene")) {
+        if (given("--camera"))
+            refuse("--camera moves the racing scene's camera; a --scene file is seen through its own (--camera-index)");
+        if (given("--seed")) refuse("--seed shapes the racing scene; a --scene file has nothing to seed");
+        if (given("--content")) refuse("--content holds the racing scene's models; a --scene file brings its own");
+        for (const char* flag : {"--no-wind", "--no-water", "--no-grass", "--no-particles", "--no-lightshafts"})
+            if (given(flag)) refuse(std::string(flag) + " turns off part of the racing scene's life; a --scene file has none");
+    }
+    if (given("--script") && o.headless) refuse("--script drives a window; --headless has none");
+    if (given("--threads") && o.backend == "gl")
+        refuse("--threads sets the soft backend's threads; --backend gl does not use them");
 }
 
 FrameSize parseFrameSize(const std::string& size) {
     std::smatch m;
     static const std::regex sizePattern(R"((\d{1,5})x(\d{1,5}))");
     if (!std::regex_match(size, m, sizePattern))
-        throw engine::Error("--size '" + size + "': expected WIDTHxHEIGHT, e.g. 1280x720");
+        throw engine::UsageError("--size '" + size + "': expected WIDTHxHEIGHT, e.g. 1280x720");
     const FrameSize s{std::stoi(m[1]), std::stoi(m[2])};
     if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384)
-        throw engine::Error("--size '" + size + "': each dimension must be in 1..16384");
+        throw engine::UsageError("--size '" + size + "': each dimension must be in 1..16384");
     return s;
 }
 
@@ -78,7 +106,7 @@ CameraMode parseCamera(const std::string& name) {
     if (name == "pan") return CameraMode::Pan;
     if (name == "free") return CameraMode::Free;
     if (name == "sky") return CameraMode::Sky;
-    throw engine::Error("--camera '" + name + "': expected chase, pan, free or sky");
+    throw engine::UsageError("--camera '" + name + "': expected chase, pan, free or sky");
 }
 
 const char* cameraName(CameraMode mode) {
@@ -93,7 +121,7 @@ const char* cameraName(CameraMode mode) {
 
 transparency::TechniqueKind parseTechniqueName(const std::string& name) {
     if (const auto kind = transparency::parseTechnique(name)) return *kind;
-    throw engine::Error("--technique '" + name + "': unknown");
+    throw engine::UsageError("--technique '" + name + "': unknown");
 }
 
 }  // namespace racer

@@ -42,12 +42,16 @@ struct Options {
 // refused by CLI11 with "X not in {...}").
 void addOptions(CLI::App& app, Options& o);
 
+// After parsing: throws engine::UsageError, saying why, for a combination of flags that means
+// nothing (--capture-layers without --capture, --camera with --scene, ...).
+void checkCombinations(const CLI::App& app, const Options& o);
+
 struct FrameSize {
     int width = 0;
     int height = 0;
     bool operator==(const FrameSize&) const = default;
 };
-// "WIDTHxHEIGHT", each 1..16384; throws engine::Error quoting the flag otherwise.
+// "WIDTHxHEIGHT", each 1..16384; throws engine::UsageError quoting the flag otherwise.
 FrameSize parseFrameSize(const std::string& size);
 
 CameraMode parseCamera(const std::string& name);                  // chase, pan, free

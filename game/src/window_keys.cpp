@@ -9,7 +9,7 @@
 #include <string_view>
 #include <utility>
 
-#include "engine/core/error.hpp"
+#include "engine/core/usage_error.hpp"
 
 namespace racer {
 
@@ -128,7 +128,7 @@ WindowScript parseWindowScript(const std::string& script) {
         const std::string entry = script.substr(start, end - start);
         const std::size_t colon = entry.find(':');
         auto bad = [&](const char* why) {
-            return engine::Error("--script entry '" + entry + "': " + why +
+            return engine::UsageError("--script entry '" + entry + "': " + why +
                                  " (expected FRAME:KEY, FIRST-LAST:KEY, FRAME:size=WxH or FRAME:minimize=MS, KEY one "
                                  "of 1-8 T C P Esc W A S D Q E Space Ctrl Left Right Up Down, optionally shift+)");
         };

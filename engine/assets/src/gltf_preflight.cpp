@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.hpp"
+#include "engine/core/file_signature.hpp"
 #include "engine/core/log.hpp"
 
 namespace engine::assets::detail {
@@ -78,11 +79,23 @@ std::string hex32(std::uint32_t value) {
     return text;
 }
 
+// A file that is neither GLB nor text is refused by what it is ("starts with the PNG
+// signature"), before a JSON parser quotes its bytes back. Text that is not JSON is left to
+// the parser, whose message (made printable) says where it stopped.
+void requireJsonText(const LoadContext& ctx, std::span<const std::uint8_t> file) {
+    if (file.empty()) return;
+    const std::uint8_t first = file[0];
+    const bool text = (first >= 0x20 && first < 0x7F) || first == '\t' || first == '\n' || first == '\r' ||
+                      first == 0xEF;  // the first byte of a UTF-8 byte-order mark
+    if (!fileSignatureName(file).empty() || !text) ctx.fail("", describeFileStart(file) + ", not glTF JSON or GLB");
+}
+
 }  // namespace
 
 Container splitContainer(const LoadContext& ctx, std::span<const std::uint8_t> file) {
     Container container;
     if (file.size() < 4 || readLe32(file, 0) != kGlbMagic) {
+        requireJsonText(ctx, file);
         container.json = file;
         return container;
     }
@@ -247,6 +260,23 @@ namespace {
 
 struct DepthExceeded {};
 
+// The parser's message quotes what it last read, which in a damaged file may be any byte:
+// every byte outside printable ASCII is written as \xNN instead.
+std::string printable(std::string_view message) {
+    std::string out;
+    for (const char c : message) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7F) {
+            out += c;
+        } else {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
+            out += escaped;
+        }
+    }
+    return out;
+}
+
 json parseJson(const LoadContext& ctx, std::span<const std::uint8_t> text) {
     const json::parser_callback_t limitDepth = [](int depth, json::parse_event_t, json&) {
         if (depth > kMaxJsonDepth) throw DepthExceeded{};
@@ -259,7 +289,7 @@ json parseJson(const LoadContext& ctx, std::span<const std::uint8_t> text) {
     } catch (const DepthExceeded&) {
         ctx.fail("JSON", "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     } catch (const json::exception& e) {
-        ctx.fail("JSON", std::string("not valid JSON: ") + e.what());
+        ctx.fail("JSON", "not valid JSON: " + printable(e.what()));
     }
 }
 

@@ -13,6 +13,7 @@
 
 #include "engine/capture/jpeg_metadata.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/file_signature.hpp"
 
 namespace engine::assets {
 
@@ -49,7 +50,8 @@ const char* formatOf(std::span<const std::uint8_t> data) {
 RgbaImage decodeImage(std::span<const std::uint8_t> encoded, const std::string& name, const ImageLimits& limits) {
     if (encoded.empty()) fail(name, "empty image data");
     const char* format = formatOf(encoded);
-    if (!format) fail(name, "not a PNG or JPEG image (glTF 2.0 images must be one of these)");
+    if (!format)
+        fail(name, "not a PNG or JPEG image (glTF 2.0 images must be one of these): it " + describeFileStart(encoded));
 
     // OpenImageIO never sees JPEG metadata: its parser trusts lengths inside it (jpeg_metadata.hpp).
     std::vector<std::uint8_t> jpeg;

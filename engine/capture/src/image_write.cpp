@@ -63,4 +63,19 @@ void writeImage(const std::filesystem::path& path, const Image& image) {
     detail::throwImageError(path, "unsupported extension '" + ext + "' (write .png or .exr)");
 }
 
+void requireImageExtension(const std::filesystem::path& path, std::initializer_list<std::string_view> extensions) {
+    const std::string ext = lowercaseExtension(path);
+    std::string names;
+    bool listed = false;
+    for (std::string_view allowed : extensions) {
+        names += (names.empty() ? "" : " or ") + std::string(allowed);
+        listed = listed || ext == allowed;
+    }
+    if (!listed)
+        detail::throwImageError(path, "the name must end in " + names +
+                                          (ext.empty() ? std::string(", and it has no extension") : ", not '" + ext + "'"));
+    if (!detail::hasWriterFor(path))
+        detail::throwImageError(path, "this OpenImageIO build has no writer for '" + ext + "' files");
+}
+
 }  // namespace engine::capture

@@ -4,8 +4,12 @@
 //                  [--hardfail H] [--hardwarn H] [--diff out.png|out.exr] [--scale S] [--linear]
 //
 // Exit status, as idiff's: 0 PASS, 1 WARNING, 2 FAILURE (including a size or channel-count
-// mismatch), 4 an input could not be read or the diff image not written (idiff's ErrFile);
-// command-line mistakes exit with CLI11's code.
+// mismatch), 4 an input could not be read or the diff image not written (idiff's ErrFile).
+// The project's command-line contract (engine/cli/command_line.hpp) holds otherwise: a usage
+// mistake (unknown flag, bad value, a --diff name with no writer) exits 2 -- shared with
+// FAILURE, as idiff's own usage errors are not 0 or 1 either: "not shown to match" -- and
+// every message is "ssam-idiff: error: ..." on stderr. The --diff place is proven writable
+// before the inputs are read, and the diff image is written whole or not at all.
 //
 // Statistics are always printed (idiff prints them only on failure or with -v).
 // By default values are compared as stored (8-bit codes / 255, like idiff) so thresholds
@@ -23,7 +27,11 @@
 #include "engine/capture/compare.hpp"
 #include "engine/capture/diff_image.hpp"
 #include "engine/capture/image_read.hpp"
+#include "engine/cli/command_line.hpp"
+#include "engine/capture/image_write.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/output_file.hpp"
+#include "engine/core/usage_error.hpp"
 
 namespace {
 
@@ -79,16 +87,53 @@ void printReport(const Image& a, const Image& b, const CompareResult& r, const C
               << options.failThreshold << "\n";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{"Compare two images like OpenImageIO's idiff. Exit 0 pass, 1 warn, 2 fail, 4 unreadable input."};
+struct Arguments {
     std::string pathA, pathB, diffPath;
     CompareOptions options;
     float scale = 1.0f;
     bool linear = false;
-    app.add_option("A", pathA, "First image")->required();
-    app.add_option("B", pathB, "Second image")->required();
+};
+
+int compare(const Arguments& args) {
+    if (!args.diffPath.empty()) {
+        try {
+            requireImageExtension(args.diffPath);
+        } catch (const engine::Error& e) {
+            throw engine::UsageError(std::string("--diff: ") + e.what());
+        }
+    }
+    try {
+        if (!args.diffPath.empty()) engine::requireWritableFile(args.diffPath, /*createDirectory=*/false);
+        ReadOptions readOptions;
+        readOptions.linearize = args.linear;
+        const Image a = readImage(args.pathA, readOptions);
+        const Image b = readImage(args.pathB, readOptions);
+
+        std::cout << "Comparing \"" << args.pathA << "\" and \"" << args.pathB << "\"\n";
+        const CompareResult result = compareImages(a, b, args.options);
+        if (!result.mismatch.empty()) {
+            std::cout << "  " << result.mismatch << "\n" << verdictName(result.verdict) << "\n";
+            return exitCode(result.verdict);
+        }
+        printReport(a, b, result, args.options);
+        if (!args.diffPath.empty()) writeDiffImage(args.diffPath, a, b, args.scale);
+        std::cout << verdictName(result.verdict) << "\n";
+        return exitCode(result.verdict);
+    } catch (const engine::Error& e) {
+        engine::cli::printError("ssam-idiff", e.what());
+        return kExitFileError;
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Compare two images like OpenImageIO's idiff. Exit 0 pass, 1 warn, 2 fail (or a usage error), 4 an "
+                 "input unreadable or the diff image not written."};
+    Arguments args;
+    CompareOptions& options = args.options;
+    app.add_option("A", args.pathA, "First image")->required();
+    app.add_option("B", args.pathB, "Second image")->required();
     app.add_option("--fail", options.failThreshold, "Failure threshold: per-channel absolute difference")
         ->capture_default_str();
     app.add_option("--warn", options.warnThreshold, "Warning threshold: per-channel absolute difference")
@@ -99,38 +144,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--hardfail", options.hardFail, "Fail if any one value differs by more than this");
     app.add_option("--hardwarn", options.hardWarn, "Warn if any one value differs by more than this");
-    app.add_option("--diff", diffPath, "Write |A-B| * scale to this .png or .exr");
-    app.add_option("--scale", scale, "Scale factor for the difference image")->capture_default_str();
-    app.add_flag("--linear", linear, "Compare in linear light (decode sRGB) instead of stored values");
-    CLI11_PARSE(app, argc, argv);
-
-    ReadOptions readOptions;
-    readOptions.linearize = linear;
-    Image a, b;
-    try {
-        a = readImage(pathA, readOptions);
-        b = readImage(pathB, readOptions);
-    } catch (const engine::Error& e) {
-        std::cerr << "ssam-idiff: " << e.what() << "\n";
-        return kExitFileError;
-    }
-
-    std::cout << "Comparing \"" << pathA << "\" and \"" << pathB << "\"\n";
-    const CompareResult result = compareImages(a, b, options);
-    if (!result.mismatch.empty()) {
-        std::cout << "  " << result.mismatch << "\n" << verdictName(result.verdict) << "\n";
-        return exitCode(result.verdict);
-    }
-    printReport(a, b, result, options);
-
-    if (!diffPath.empty()) {
-        try {
-            writeDiffImage(diffPath, a, b, scale);
-        } catch (const engine::Error& e) {
-            std::cerr << "ssam-idiff: " << e.what() << "\n";
-            return kExitFileError;
-        }
-    }
-    std::cout << verdictName(result.verdict) << "\n";
-    return exitCode(result.verdict);
+    app.add_option("--diff", args.diffPath, "Write |A-B| * scale to this .png or .exr");
+    app.add_option("--scale", args.scale, "Scale factor for the difference image")->capture_default_str();
+    app.add_flag("--linear", args.linear, "Compare in linear light (decode sRGB) instead of stored values");
+    app.footer("Messages are 'ssam-idiff: error: ...' on stderr; a usage error exits 2.");
+    return engine::cli::runTool("ssam-idiff", app, argc, argv, [&] { return compare(args); });
 }

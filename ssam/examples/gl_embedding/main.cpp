@@ -6,7 +6,8 @@
 //   ssam_gl_embedding               a GLFW window when a display is available
 //   ssam_gl_embedding --headless --out frame.png
 //                                   EGL surfaceless (EGL_PLATFORM_SURFACELESS_MESA), one frame
-// Exit codes: 0 ok, 1 error, 77 no OpenGL 3.3 core context could be created (tests skip).
+// Exit codes (arguments.hpp): 0 ok, 1 error, 2 usage error, 77 no OpenGL 3.3 core context could
+// be created (tests skip).
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -23,6 +24,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <ssam/gl/ssam_gl.hpp>
 
+#include "arguments.hpp"
 #include "png_writer.hpp"
 #include "scene.hpp"
 
@@ -270,9 +272,9 @@ int runHeadless(const std::string& out) {
     const std::size_t row = std::size_t(kWidth) * 4;
     for (int y = 0; y < kHeight; ++y)  // GL's row 0 is the bottom; PNG's the top
         std::copy_n(pixels.begin() + std::ptrdiff_t((kHeight - 1 - y) * row), row, flipped.begin() + std::ptrdiff_t(y * row));
-    if (!writePng(out, kWidth, kHeight, flipped)) {
-        std::fprintf(stderr, "cannot write %s\n", out.c_str());
-        return 1;
+    if (const std::string why = writePng(out, kWidth, kHeight, flipped); !why.empty()) {
+        printError(why);
+        return kExitFailure;
     }
     std::printf("wrote %s (%dx%d)\n", out.c_str(), kWidth, kHeight);
     return 0;
@@ -298,27 +300,32 @@ int runWindow(int frames) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool headless = false;
-    std::string out = "ssam_gl_embedding.png";
-    int frames = 0;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (arg == "--headless") headless = true;
-        else if (arg == "--out" && i + 1 < argc) out = argv[++i], headless = true;
-        else if (arg == "--frames" && i + 1 < argc) frames = std::atoi(argv[++i]);
-        else {
-            std::fprintf(stderr, "usage: %s [--headless] [--out PATH.png] [--frames N]\n", argv[0]);
-            return 1;
+    Arguments args;
+    try {
+        args = parseArguments(argc, argv);
+    } catch (const UsageError& e) {
+        printError(std::string(e.what()) + " (see --help)");
+        return kExitUsage;
+    }
+    if (args.help) {
+        std::fputs(usage().c_str(), stdout);
+        return 0;
+    }
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) args.headless = true;
+    // The output is proven writable before a context is made or a frame drawn.
+    if (args.headless) {
+        if (const std::string why = checkWritable(args.out); !why.empty()) {
+            printError(why);
+            return kExitFailure;
         }
     }
-    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) headless = true;
     try {
-        return headless ? runHeadless(out) : runWindow(frames);
+        return args.headless ? runHeadless(args.out) : runWindow(args.frames);
     } catch (const NoContext& e) {
         std::printf("SKIPPED: no OpenGL 3.3 core context: %s\n", e.what());
         return kNoContext;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 1;
+        printError(e.what());
+        return kExitFailure;
     }
 }

@@ -1,8 +1,14 @@
 #include "png_writer.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 
 namespace gl_embedding {
 
@@ -35,9 +41,28 @@ void chunk(std::vector<std::uint8_t>& out, const char* type, const std::vector<s
     put32(out, crc32(out.data() + start, out.size() - start));
 }
 
+// Creates an empty, new file beside `path` (O_EXCL: ours alone) and names it in `temporary`.
+std::string createTemporaryBeside(const std::string& path, std::string& temporary) {
+    const std::filesystem::path target(path);
+    const std::filesystem::path directory = target.has_parent_path() ? target.parent_path() : ".";
+    for (unsigned attempt = 0; attempt < 100; ++attempt) {
+        const std::filesystem::path candidate =
+            target.parent_path() / ("." + target.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                                    std::to_string(attempt) + target.extension().string());
+        const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            ::close(fd);
+            temporary = candidate.string();
+            return {};
+        }
+        if (errno != EEXIST) return "cannot create files in '" + directory.string() + "': " + std::strerror(errno);
+    }
+    return "cannot create files in '" + directory.string() + "': no free temporary name";
+}
+
 }  // namespace
 
-bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
+std::string writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
     // Scanlines with filter type 0, then a zlib stream of stored (uncompressed) blocks.
     std::vector<std::uint8_t> raw;
     const std::size_t row = static_cast<std::size_t>(width) * 4;
@@ -70,10 +95,26 @@ bool writePng(const std::string& path, int width, int height, const std::vector<
     chunk(png, "IHDR", header);
     chunk(png, "IDAT", z);
     chunk(png, "IEND", {});
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) return false;
-    const bool ok = std::fwrite(png.data(), 1, png.size(), f) == png.size();
-    return std::fclose(f) == 0 && ok;
+    std::string temporary;
+    if (std::string why = createTemporaryBeside(path, temporary); !why.empty()) return why;
+    std::FILE* f = std::fopen(temporary.c_str(), "wb");
+    bool ok = f && std::fwrite(png.data(), 1, png.size(), f) == png.size();
+    ok = f && std::fclose(f) == 0 && ok;
+    if (!ok || std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string why = std::string("cannot write '") + path + "': " + std::strerror(errno);
+        std::remove(temporary.c_str());
+        return why;
+    }
+    return {};
+}
+
+std::string checkWritable(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return "'" + path + "' is a directory";
+    std::string temporary;
+    if (std::string why = createTemporaryBeside(path, temporary); !why.empty()) return why;
+    std::remove(temporary.c_str());
+    return {};
 }
 
 }  // namespace gl_embedding

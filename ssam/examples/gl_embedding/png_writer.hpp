@@ -7,8 +7,13 @@
 
 namespace gl_embedding {
 
-// `rgba` holds height rows of width * 4 bytes, the first row the top of the image.
-// Returns false when the file cannot be written.
-bool writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba);
+// `rgba` holds height rows of width * 4 bytes, the first row the top of the image. The file is
+// written whole or not at all: to a temporary file beside `path`, renamed over it once
+// complete. Returns "" on success, else why the file could not be written.
+std::string writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba);
+
+// Proves before any rendering that `path` can be written, by creating (and removing) a
+// temporary file beside it: access() would answer yes to root even on /proc. Returns "" or why not.
+std::string checkWritable(const std::string& path);
 
 }  // namespace gl_embedding

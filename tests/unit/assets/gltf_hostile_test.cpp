@@ -123,6 +123,36 @@ TEST(GltfHostileFiles, EmptyAndGarbageFilesAreRefused) {
     EXPECT_THAT(errorOf([&] { loadGltf(dir / "v1.gltf"); }), HasSubstr("asset.version: '1.0': only glTF 2.x"));
 }
 
+// A file that is not glTF is refused by what it is, its bytes never echoed into the message.
+bool printableAscii(const std::string& text) {
+    for (const char c : text)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) return false;
+    return true;
+}
+
+TEST(GltfHostileFiles, OtherFormatsAreNamedByTheirSignature) {
+    TempDir dir;
+    std::filesystem::copy_file(fixture("leaf4.png"), dir / "picture.gltf");
+    const std::string png = errorOf([&] { loadGltf(dir / "picture.gltf"); });
+    EXPECT_EQ(png, (dir / "picture.gltf").string() + ": starts with the PNG signature, not glTF JSON or GLB");
+    assets_test::writeFile(dir / "archive.glb", std::string("PK\x03\x04\x14\x00\x00\x00", 8));
+    EXPECT_THAT(errorOf([&] { loadGltf(dir / "archive.glb"); }),
+                HasSubstr("archive.glb: starts with the ZIP signature, not glTF JSON or GLB"));
+    assets_test::writeFile(dir / "noise.gltf", std::string("\x93\x01\xfe{}", 5));
+    EXPECT_THAT(errorOf([&] { loadGltf(dir / "noise.gltf"); }),
+                HasSubstr("noise.gltf: starts with the byte 0x93, not glTF JSON or GLB"));
+    EXPECT_TRUE(printableAscii(png)) << png;
+}
+
+TEST(GltfHostileFiles, JsonParserMessagesCarryNoRawBytes) {
+    TempDir dir;
+    assets_test::writeFile(dir / "binary_inside.gltf", std::string("{\"asset\": \x89\x01}"));
+    const std::string message = errorOf([&] { loadGltf(dir / "binary_inside.gltf"); });
+    EXPECT_THAT(message, HasSubstr("JSON: not valid JSON"));
+    EXPECT_THAT(message, HasSubstr("\\x89"));
+    EXPECT_TRUE(printableAscii(message)) << message;
+}
+
 // A relative URI naming a symbolic link that points outside the glTF's directory.
 TEST(GltfHostileFiles, SymbolicLinkOutOfTheDirectoryIsRefused) {
     TempDir dir;

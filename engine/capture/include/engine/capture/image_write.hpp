@@ -2,6 +2,8 @@
 // Writing captures. PNG for looking at (8-bit sRGB, straight alpha), EXR for exact values
 // (linear, premultiplied, half or float). Failures throw engine::Error naming the file.
 #include <filesystem>
+#include <initializer_list>
+#include <string_view>
 
 #include "engine/capture/image.hpp"
 
@@ -24,5 +26,14 @@ void writeExr(const std::filesystem::path& path, const Image& image, ExrPixelTyp
 
 // By extension: .png -> writePng, .exr -> writeExr (float). Anything else is an error.
 void writeImage(const std::filesystem::path& path, const Image& image);
+
+// Every writer here writes whole or not at all: a temporary file beside `path`, renamed over
+// it on success (engine/core/output_file.hpp), so a failure leaves no partial image.
+
+// For a tool to call before any work: throws engine::Error (saying what would work) unless
+// `path`'s extension is one of `extensions` (lower case, with the dot) and OpenImageIO has a
+// writer for it. The directory is checked separately (engine::requireWritableFile).
+void requireImageExtension(const std::filesystem::path& path,
+                           std::initializer_list<std::string_view> extensions = {".png", ".exr"});
 
 }  // namespace engine::capture
