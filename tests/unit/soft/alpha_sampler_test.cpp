@@ -5,7 +5,7 @@
 // the decoded alpha copy, at random coordinates and derivatives (magnified and minified,
 // texel edges, non-finite values). The golden hashes only see the few cases their scenes
 // hit; this walks the whole space of the sampler's branches.
-// Needs engine/render/soft/src on the include path (the samplers are internal).
+// The samplers come from the soft backend's program-authoring headers.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 
 #include "lcg.hpp"  // tests/support
-#include "alpha_sampler.hpp"
-#include "sampler.hpp"
+#include "engine/render/soft/kernel/alpha_sampler.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
 
 namespace {
 

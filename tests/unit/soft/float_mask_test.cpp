@@ -29,8 +29,8 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
 
-// The general blend (internal header: engine/render/soft/src).
-#include "blend.hpp"
+// The general blend (program-authoring header).
+#include "engine/render/soft/kernel/blend.hpp"
 
 namespace {
 

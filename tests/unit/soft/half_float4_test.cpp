@@ -9,9 +9,9 @@
 // write mask.
 // With SSAM_EXHAUSTIVE_HALF=1 the encode test checks all 2^32 floats instead (about 20 s;
 // it passed when the code was written).
-// Needs engine/render/soft/src on the include path (internal headers).
+// Program-authoring headers of the soft backend.
 #include "lcg.hpp"  // tests/support
-#include "half_float4.hpp"
+#include "engine/render/soft/kernel/half_float4.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +20,8 @@
 #include <cstring>
 #include <vector>
 
-#include "blend.hpp"
-#include "one_one_half_blend.hpp"
+#include "engine/render/soft/kernel/blend.hpp"
+#include "engine/render/soft/kernel/one_one_half_blend.hpp"
 
 namespace {
 

@@ -1,10 +1,10 @@
-#include "sampler.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "engine/render/pixel_codec.hpp"
-#include "texel_addressing.hpp"
+#include "engine/render/soft/kernel/texel_addressing.hpp"
 
 namespace engine::render::soft {
 namespace {

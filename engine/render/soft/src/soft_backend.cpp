@@ -16,12 +16,12 @@
 #include "engine/render/resource_pool.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
-#include "draw_state.hpp"
+#include "engine/render/soft/kernel/draw_state.hpp"
 #include "engine/render/pixel_codec.hpp"
-#include "sampler.hpp"
-#include "soft_texture.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
+#include "engine/render/soft/kernel/soft_texture.hpp"
 #include "tile_rasterizer.hpp"
-#include "triangle_setup.hpp"
+#include "engine/render/soft/kernel/triangle_setup.hpp"
 
 namespace engine::render::soft {
 namespace {
