@@ -27,7 +27,7 @@ void writeBytes(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
 }
 
 // The glTF material of alpha-tested foliage: MASK at 0.5, both sides drawn, and the
-// extras flag that routes it to SSAM (seeds/000).
+// extras flag that routes it to SSAM ([Hathaway 2010]).
 ordered_json foliageMaterial(const std::string& name, int texture) {
     return {{"name", name},
             {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}},

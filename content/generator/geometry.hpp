@@ -1,5 +1,5 @@
 #pragma once
-// Procedural meshes of the committed content: trees and bushes built as in Pure (seeds/000
+// Procedural meshes of the committed content: trees and bushes built as in Pure ([Hathaway 2010]
 // §3.3, Fig. 3.2: "a multitude of polygonal planes ... oriented as randomly as possible",
 // intersecting, around a trunk), and the props of the racing scene. Units are metres, +Y up,
 // +Z forward (the glTF convention), UV origin top-left.

@@ -92,7 +92,7 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
     out << "Time: wall clock of one frame (opaque pass + the technique, including its resolve; GL waits for the "
            "frame's timer queries), median (min-max). Errors against the exact reference (technique `reference` "
            "on the soft backend). Flicker: mean |change| of sRGB luma between consecutive frames of a slow sideways "
-           "pan, minus the reference's (seeds/000 §3.4). Memory: peak MiB of targets and buffers the technique "
+           "pan, minus the reference's ([Hathaway 2010] §3.4). Memory: peak MiB of targets and buffers the technique "
            "and its opaque targets allocated through the backend (exact, deterministic); RSS: growth of the "
            "process's peak resident memory while the technique ran (CPU-side memory too, e.g. the reference's "
            "fragment lists; noisy). `opaque-only`: the frame without foliage (its errors: what leaving "

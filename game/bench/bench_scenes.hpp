@@ -3,9 +3,9 @@
 // with the engine's ECS (Transform + Renderable entities, a MeshLibrary) so extraction and
 // culling are the racer's own:
 //   tree    one tree close up: the paper's "high degree of depth complexity present within a
-//           single foliage model" (seeds/000 §3.3)
+//           single foliage model" ([Hathaway 2010] §3.3)
 //   forest  a dense stand seen from inside its edge: many overlapping trees and bushes
-//   vista   a distant view over hundreds of trees (seeds/000 §3.1: Pure's vistas)
+//   vista   a distant view over hundreds of trees ([Hathaway 2010] §3.1: Pure's vistas)
 //   empty   trees only behind the camera: no foliage in view, the opaque frame alone
 // Projection: reverse-Z, 60° vertical field of view, 0.1 m to 30 km, depth test Greater —
 // the racer's conventions (game/src/camera_rig.cpp, frame_renderer.cpp).
@@ -49,7 +49,7 @@ public:
     // The still view every technique is timed and judged on.
     BenchCamera camera(float aspect) const { return view(aspect, 0.0f); }
     // Whether the scene has a sideways pan for the flicker measure (tree and forest: the
-    // slow side-to-side move where alpha testing sparkles, seeds/000 §3.4).
+    // slow side-to-side move where alpha testing sparkles, [Hathaway 2010] §3.4).
     bool hasPan() const { return panStep_ > 0.0f; }
     // Frame `frame` of the pan: the still view moved `frame` steps sideways (eye and target
     // together, so the view direction stays the same: a pure translation).

@@ -1,9 +1,9 @@
 #pragma once
 // The demo's cameras: chase (behind the car), pan (the slow side-to-side pre-race move
-// where alpha testing sparkles, seeds/000 §3.4), free (a free-fly camera: it starts at an
+// where alpha testing sparkles, [Hathaway 2010] §3.4), free (a free-fly camera: it starts at an
 // overview of the track, which is all a headless run sees; the window flies it, keys in
 // window_keys.hpp) and sky (straight up from above the start line: nothing but the sky, the
-// no-foliage case the capture tests need). Projection: reverse-Z, 0.1 m to 30 km (seeds/000 §3.1).
+// no-foliage case the capture tests need). Projection: reverse-Z, 0.1 m to 30 km ([Hathaway 2010] §3.1).
 #include <glm/glm.hpp>
 
 #include "racing_scene.hpp"

@@ -14,7 +14,7 @@ namespace racer {
 // The path, or engine::Error saying the content file is missing and how to regenerate it.
 std::filesystem::path requireContent(const std::filesystem::path& path);
 
-// An sRGB colour texture with premultiplied-alpha mips (seeds/002), trilinear and wrapping.
+// An sRGB colour texture with premultiplied-alpha mips ([Hargreaves 2009]), trilinear and wrapping.
 engine::render::TextureBinding loadContentTexture(engine::render::Backend& backend, const std::filesystem::path& path);
 
 engine::scene::ModelId loadContentModel(engine::scene::MeshLibrary& library, const std::filesystem::path& path);

@@ -45,7 +45,7 @@ struct SceneCamera {
     std::string description;    // e.g. "cameras[1] 'Overview' on nodes[4]", "automatic"
 };
 
-// A file camera seen from `nodeWorld`, projected reverse-Z (seeds/000 §3.1) for the
+// A file camera seen from `nodeWorld`, projected reverse-Z ([Hathaway 2010] §3.1) for the
 // viewport's aspect: glTF leaves aspectRatio mismatches to the implementation, and keeping
 // yfov (or ymag) with the viewport's aspect never stretches the image.
 SceneCamera fileCamera(const engine::assets::Camera& camera, const glm::mat4& nodeWorld, float aspect);

@@ -188,7 +188,7 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"racer: the SSAM racing-scene demo (seeds/000, Pure)"};
+    CLI::App app{"racer: the SSAM racing-scene demo ([Hathaway 2010], Pure)"};
     Options o;
     addOptions(app, o);
     CLI11_PARSE(app, argc, argv);

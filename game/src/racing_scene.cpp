@@ -84,7 +84,7 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
               random.uniform(0.7f, 1.4f));
     }
     // A grove across the track from the start line, where the pre-race pan camera looks:
-    // overlapping trees close up, the case where alpha testing sparkles (seeds/000 §3.4).
+    // overlapping trees close up, the case where alpha testing sparkles ([Hathaway 2010] §3.4).
     {
         const glm::vec3 start = track_.position(0.0f), f = track_.forward(0.0f);
         const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
@@ -98,7 +98,7 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
                   random.uniform(0.9f, 1.4f));
         }
     }
-    // The vista: a ring of forest out to a few kilometres (seeds/000 §3.1).
+    // The vista: a ring of forest out to a few kilometres ([Hathaway 2010] §3.1).
     for (int i = 0; i < options.vistaTrees; ++i) {
         const float angle = random.uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
         const float radius = random.uniform(450.0f, 1900.0f);

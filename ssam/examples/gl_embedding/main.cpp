@@ -1,7 +1,7 @@
 // An OpenGL program that is not built on our engine (its own context, shaders, buffers and
 // render targets) embedding SSAM through ssam::gl: the opaque scene is drawn into the program's
 // own colour + depth textures, then ssam::gl::ScreenSpaceAlphaMaskGl runs the mask, colour and
-// composite passes (seeds/000 §3.5), calling back into the program to draw its foliage cards.
+// composite passes ([Hathaway 2010] §3.5), calling back into the program to draw its foliage cards.
 //
 //   ssam_gl_embedding               a GLFW window when a display is available
 //   ssam_gl_embedding --headless --out frame.png

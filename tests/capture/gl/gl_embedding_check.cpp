@@ -1,5 +1,5 @@
 // Checks the image of ssam/examples/gl_embedding (ssam::gl embedded in a plain OpenGL program)
-// at known pixels against SSAM's formulas (seeds/000 §3.5.2-3.5.4, §3.6.2) computed from the
+// at known pixels against SSAM's formulas ([Hathaway 2010] §3.5.2-3.5.4, §3.6.2) computed from the
 // example's own scene description (scene.hpp): no stored image, no hard-coded results.
 //
 // Tolerance: 2 codes of 255 where foliage is blended (the composite blends an 8-bit target; GL

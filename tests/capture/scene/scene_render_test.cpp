@@ -152,7 +152,7 @@ TEST(RacerScene, MaskUsesTheMaterialsAlphaCutoff) {
 TEST(RacerScene, MaskIsTheFoliageSsamMasksAndBlends) {
     const RacerRun run = racer(sceneFile("mask_cutoff.gltf"), "--technique ssam");
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    // SSAM turns alpha into soft coverage (seeds/000 §3.5): more alpha, more foliage over the
+    // SSAM turns alpha into soft coverage ([Hathaway 2010] §3.5): more alpha, more foliage over the
     // background; the outside of the quad is untouched background.
     const int low = run.at(kAlpha030, kMid)[0], mid = run.at(kAlpha055, kMid)[0], high = run.at(kAlpha090, kMid)[0];
     const int background = srgb(kBackground)[0];

@@ -1,5 +1,5 @@
 // MSAA resolve: colour resolves to the average of the samples, depth to the sample closest
-// to the observer under the given depth function (seeds/000 §3.5.1), never an average.
+// to the observer under the given depth function ([Hathaway 2010] §3.5.1), never an average.
 //
 // The partial pixels come from a vertical edge exactly through the centre of column 2: with
 // the standard sample patterns (D3D/Vulkan standard locations, which GL implementations use

@@ -87,7 +87,7 @@ public:
     // A quad over the whole width x height RGBA32F target, uv (u0, v0) at the top-left corner
     // and (u1, v1) at the bottom-right, drawn with `program` sampling `texture`.
     render::Readback draw(int width, int height, render::TextureHandle texture, SamplerState sampler, glm::vec2 uv0,
-                          glm::vec2 uv1, ProgramKind program = ProgramKind::FoliageColor) {
+                          glm::vec2 uv1, ProgramKind program = ProgramKind::MaskedLit) {
         std::vector<render::Vertex> quad = pixelRect(width, height, 0, 0, float(width), float(height));
         for (render::Vertex& v : quad) v.uv = uv0 + (uv1 - uv0) * v.uv;
         const render::TextureHandle target = outputTarget(width, height);

@@ -1,6 +1,6 @@
 // The committed content/ is exactly what the generator writes (byte for byte, so a change to
 // the generator without `make content` fails here), it loads with engine_assets, and it has
-// the properties the renderer and SSAM rely on (seeds/000 §3.3 trees, MASK foliage, ...).
+// the properties the renderer and SSAM rely on ([Hathaway 2010] §3.3 trees, MASK foliage, ...).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -96,7 +96,7 @@ TEST(Content, EveryModelLoadsCleanly) {
     EXPECT_GE(models, 9);
 }
 
-// seeds/000 §3.3: many randomly oriented, intersecting textured planes around a trunk,
+// [Hathaway 2010] §3.3: many randomly oriented, intersecting textured planes around a trunk,
 // alpha-tested (MASK) and drawn from both sides, flagged for SSAM, Draco-compressed.
 TEST(Content, TreesAndBushesAreBuiltLikePures) {
     const auto trees = committedModels("tree_");

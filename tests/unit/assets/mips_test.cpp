@@ -1,5 +1,5 @@
 // Mip chains: sizes, premultiplied filtering (no colour bleeding from transparent texels,
-// seeds/002), and Castaño's coverage preservation for alpha-tested foliage: coverage at the
+// [Hargreaves 2009]), and Castaño's coverage preservation for alpha-tested foliage: coverage at the
 // cutoff stays at level 0's down the chain, while plain box filtering loses it.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

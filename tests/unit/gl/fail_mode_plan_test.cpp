@@ -24,7 +24,7 @@ TEST(FailModePlan, OffOrUselessTestIsOneStepOverAllFragments) {
     ASSERT_EQ(plan.steps.size(), 1u);
     EXPECT_EQ(plan.steps[0].select, FragmentSelect::All);
     EXPECT_FALSE(plan.alphaTestDropped);
-    // FB_ONLY without depth writes cannot matter (seeds/004 "Looking further").
+    // FB_ONLY without depth writes cannot matter ([PCSX2] "Looking further").
     plan = planFailMode(inputs(AlphaFailMode::FbOnly, true, false));
     EXPECT_TRUE(plan.alphaTestDropped);
     ASSERT_EQ(plan.steps.size(), 1u);
@@ -52,7 +52,7 @@ TEST(FailModePlan, ZbOnlyWithoutDepthWritesIsADiscard) {
     EXPECT_TRUE(plan.exact);
 }
 
-// seeds/004: with depth ALWAYS, colour by the fragments that write colour, depth by those
+// [PCSX2]: with depth ALWAYS, colour by the fragments that write colour, depth by those
 // that write depth, each in primitive order: exact.
 TEST(FailModePlan, DepthAlwaysRewrite) {
     FailModePlan plan = planFailMode(inputs(AlphaFailMode::FbOnly, true, true, CompareFunc::Always));

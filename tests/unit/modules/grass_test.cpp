@@ -1,5 +1,5 @@
 // modules/grass: instanced alpha-tested cards, depth-tested against the foliage depth
-// (seeds/000 §3.7), culled by distance, swaying deterministically.
+// ([Hathaway 2010] §3.7), culled by distance, swaying deterministically.
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"

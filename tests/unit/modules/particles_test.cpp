@@ -1,5 +1,5 @@
-// modules/particles: the premultiplied layer (seeds/003), soft particles against the
-// opaque + foliage depth (seeds/000 §3.7), the half-resolution upsample without halos,
+// modules/particles: the premultiplied layer ([Turánszki 2017]), soft particles against the
+// opaque + foliage depth ([Hathaway 2010] §3.7), the half-resolution upsample without halos,
 // caps and bad input, determinism.
 #include <gtest/gtest.h>
 
@@ -120,7 +120,7 @@ TEST(Particles, PremultipliedLayerAccumulatesAlphaAndSharesAdditive) {
     f.simulation().emit(puff({0.0f, 0.0f, 4.0f}, {0.0f, 1.0f, 0.0f, 0.5f}, 1.0f));
     s.render(&f);
     const render::Readback layer = s.backend->readback(f.layer());
-    // Centre of the quads (shape 1): a = 0.5 + 0.5 * (1 - 0.5) = 0.75 (seeds/003), the
+    // Centre of the quads (shape 1): a = 0.5 + 0.5 * (1 - 0.5) = 0.75 ([Turánszki 2017]), the
     // additive spray adds green without touching alpha.
     const int x = kW / 2, y = kH / 2;
     EXPECT_NEAR(layer.at(x, y, 3), 0.75f, 0.01f);

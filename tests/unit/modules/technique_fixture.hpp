@@ -64,7 +64,7 @@ struct TechniqueFrame {
     }
 };
 
-// Straight-alpha "over" of (color, alpha) onto dst (seeds/002 "conventional").
+// Straight-alpha "over" of (color, alpha) onto dst ([Hargreaves 2009] "conventional").
 inline glm::vec3 over(const glm::vec4& src, const glm::vec3& dst) {
     return glm::vec3(src) * src.a + dst * (1.0f - src.a);
 }

@@ -1,5 +1,5 @@
 // Every transparency technique on synthetic quads whose expected pixels follow from a
-// formula (modules/transparency): alpha test is binary, SSAM is seeds/000 §3.5.4, ...
+// formula (modules/transparency): alpha test is binary, SSAM is [Hathaway 2010] §3.5.4, ...
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,7 +81,7 @@ TEST(Techniques, AlphaTestRejectsABadReference) {
     EXPECT_THROW(createTechnique(TechniqueKind::AlphaTest, *backend, options), engine::Error);
 }
 
-// seeds/000 §3.5.4 with Pure's defaults: mask = lerp(max, add, 0.85), squared; the colour
+// [Hathaway 2010] §3.5.4 with Pure's defaults: mask = lerp(max, add, 0.85), squared; the colour
 // pass keeps fragments with alpha >= 64/255 and the nearest one wins its depth test.
 TEST(Techniques, SsamMatchesThePaperFormula) {
     auto backend = softBackend();

@@ -1,5 +1,5 @@
 // modules/water: the pools are blended after SSAM and depth-tested against the foliage
-// depth (seeds/000 §3.7): water behind a tree is hidden by it, water in front is not.
+// depth ([Hathaway 2010] §3.7): water behind a tree is hidden by it, water in front is not.
 #include <gtest/gtest.h>
 
 #include <cstring>

@@ -1,6 +1,6 @@
 #pragma once
 // Hand-made plants for the wind tests: a crown of intersecting vertical cards around the y
-// axis (seeds/000 §3.3, Figure 3.2), as one alpha-tested (Mask) part, from y = 0 to `height`.
+// axis ([Hathaway 2010] §3.3, Figure 3.2), as one alpha-tested (Mask) part, from y = 0 to `height`.
 #include <cmath>
 #include <cstdint>
 #include <vector>

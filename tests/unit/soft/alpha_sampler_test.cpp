@@ -101,7 +101,7 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
                                         ASSERT_TRUE(sameBits(alphaOnly, general[i].a));
                                         ASSERT_TRUE(sameBits(sampler.sample({uu[i], vv[i]}, d), alphaOnly));
                                     }
-#if SSAM_ALPHA_SAMPLER_SSE2
+#if SOFT_SAMPLER_SSE2
                                     if (!sampler.simd4()) continue;
                                     const std::uint32_t lanes = it % 5 == 0 ? (rng.next() & 0xFu) | 1u : 0xFu;
                                     const AlphaSampler::Lookup4 lookup =
@@ -118,7 +118,7 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
 #endif
                                 }
                             }
-#if SSAM_ALPHA_SAMPLER_SSE2
+#if SOFT_SAMPLER_SSE2
     EXPECT_GT(simdConfigurations, 0);  // the SIMD path was exercised
 #endif
 }

@@ -41,7 +41,7 @@ std::uint32_t bitsOf(float f) {
     return b;
 }
 
-#if SSAM_HALF_FLOAT4_SSE2
+#if SOFT_HALF_FLOAT4_SSE2
 // encodeHalf4 + packHalf4 of four floats given as bits; counts (and reports the first few)
 // lanes that differ from encodeHalf.
 int encodeMismatches(const std::uint32_t* in, int& reported) {
@@ -165,7 +165,7 @@ TEST(SoftOneOneHalfBlend, ScalarMatchesGeneralBlendForEveryStoredHalf) {
     EXPECT_EQ(checked, 3L * 4 * 3 * 0x10000);
 }
 
-#if SSAM_HALF_FLOAT4_SSE2
+#if SOFT_HALF_FLOAT4_SSE2
 TEST(SoftOneOneHalfBlend, FourLanesMatchGeneralBlendAndLeaveOtherLanes) {
     Lcg rng{9};
     const std::vector<float> as = alphas(rng);

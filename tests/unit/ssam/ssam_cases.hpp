@@ -1,5 +1,5 @@
 #pragma once
-// SSAM's exact synthetic cases (seeds/000 §3.5-3.7), written once and run on every render
+// SSAM's exact synthetic cases ([Hathaway 2010] §3.5-3.7), written once and run on every render
 // backend: each backend's test binary instantiates them with its BackendKind
 //   struct BackendKind {
 //       static std::unique_ptr<engine::render::Backend> create();

@@ -1,4 +1,4 @@
-// SSAM on the soft backend: the shared exact synthetic cases (ssam_cases.hpp, seeds/000 §3.5),
+// SSAM on the soft backend: the shared exact synthetic cases (ssam_cases.hpp, [Hathaway 2010] §3.5),
 // plus what only the soft backend can show (its work counters).
 #include "ssam_cases.hpp"
 

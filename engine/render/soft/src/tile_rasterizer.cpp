@@ -2,14 +2,13 @@
 
 #include <algorithm>
 
-#include "engine/render/soft/kernel/triangle_rasterizer.hpp"
+#include "engine/render/soft/kernel/program_kernel.hpp"
 
 namespace engine::render::soft {
 
 using raster::kHalfPixel;
 using raster::kPixelStep;
 using raster::kSampleOffsetScale;
-using raster::TriangleRasterizer;
 
 
 const SamplePattern& samplePattern(int samples) {
@@ -34,12 +33,7 @@ void rasterizeTile(const Rect& tile, std::span<const SetupTriangle* const> trian
         std::size_t end = i + 1;
         while (end < triangles.size() && triangles[end]->drawIndex == drawIndex) ++end;
         const DrawState& draw = draws[drawIndex];
-        std::visit(
-            [&](const auto& program) {
-                TriangleRasterizer rasterizer(draw, program, counters);
-                for (std::size_t k = i; k < end; ++k) rasterizer.rasterize(*triangles[k], tile);
-            },
-            draw.program);
+        draw.program->rasterize(draw, triangles.subspan(i, end - i), tile, counters);
         i = end;
     }
 }

@@ -18,16 +18,10 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/draw_params.hpp"
+#include "engine/render/soft/kernel/texture_lookup.hpp"
 #include "engine/render/soft/kernel/triangle_rasterizer.hpp"
 
 namespace engine::render::soft {
-
-// The driver's textures, for a kernel binding a draw's parameters.
-class TextureLookup {
-public:
-    virtual ~TextureLookup() = default;
-    virtual const SoftTexture* texture(TextureHandle handle) const = 0;  // null for a null handle
-};
 
 // One draw's program, its parameters and textures resolved.
 class BoundProgram {

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <cstring>
 
-#if defined(__SSE2__) && !defined(SSAM_SOFT_SCALAR)
+#if defined(__SSE2__) && !defined(SOFT_RASTER_SCALAR)
 #include <emmintrin.h>
-#define SSAM_SOFT_SSE2 1
+#define SOFT_RASTER_SSE2 1
 #endif
 
 #include <glm/glm.hpp>
@@ -54,7 +54,7 @@ inline constexpr std::array<std::uint8_t, 256> kBitCount = [] {
 template <CompareFunc Func, bool Write>
 inline std::uint32_t depthRow(const Plane& plane, float centerX0, float originX, float fy, std::uint32_t coverage,
                        std::byte* stored, float* z) {
-#if SSAM_SOFT_SSE2
+#if SOFT_RASTER_SSE2
     const __m128 value = _mm_set1_ps(plane.value), dx = _mm_set1_ps(plane.dx);
     const __m128 dyFy = _mm_set1_ps(plane.dy * fy);
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), origin = _mm_set1_ps(originX);
@@ -228,9 +228,9 @@ inline bool bytesRoundTrip() {
     return roundTrip;
 }
 
-// The SSAM composite's blend (seeds/000 §3.5.4): colour SRC_ALPHA / INV_SRC_ALPHA ADD, alpha
+// The SSAM composite's blend ([Hathaway 2010] §3.5.4): colour SRC_ALPHA / INV_SRC_ALPHA ADD, alpha
 // ZERO / ONE ADD (the target keeps its alpha), all channels written.
-inline bool isCompositeBlend(const BlendState& b) {
+inline bool isAlphaOverKeepingAlpha(const BlendState& b) {
     return b.enabled && b.srcRgb == BlendFactor::SrcAlpha && b.dstRgb == BlendFactor::InvSrcAlpha &&
            b.opRgb == BlendOp::Add && b.srcAlpha == BlendFactor::Zero && b.dstAlpha == BlendFactor::One &&
            b.opAlpha == BlendOp::Add && b.writeMask == WriteAll;
@@ -255,11 +255,11 @@ inline float texelChannel(const SoftTexture& t, int x, int y, int c) {
     }
     return loadTexel(p, t.desc.format)[c];
 }
-bool isRgba8(const SoftTexture* t) {
+inline bool isRgba8(const SoftTexture* t) {
     return t && t->desc.samples == 1 && (t->desc.format == Format::RGBA8_UNORM || t->desc.format == Format::RGBA8_SRGB);
 }
 
-#if SSAM_SOFT_SSE2
+#if SOFT_RASTER_SSE2
 // encodeUnorm8 of each lane, as a 32-bit integer: 0 unless v > 0 (NaN too), 255 from 1 on,
 // else v * 255 + 0.5 truncated (the same IEEE mul and add).
 inline __m128i encodeUnorm8x4(__m128 v) {

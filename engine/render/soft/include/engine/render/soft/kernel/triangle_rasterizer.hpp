@@ -7,9 +7,11 @@
 // no virtual call happens per fragment.
 #include <algorithm>
 #include <array>
+#include <concepts>
 #include <cstring>
 #include <type_traits>
 
+#include "engine/render/soft/kernel/programs.hpp"
 #include "engine/render/soft/kernel/raster_support.hpp"
 
 namespace engine::render::soft {
@@ -20,6 +22,25 @@ struct TileCounters {
 };
 
 namespace raster {
+
+// Whether a full-screen program is a mask composite drawn over the frame with the
+// SRC_ALPHA / INV_SRC_ALPHA blend, whose shade() is (compositeColor() at the pixel with
+// non-finite components as 0, compositeFactor(x, y) in [0, 1]) ([Hathaway 2010] §3.5.4):
+// then an 8-bit target takes compositeRow, which blends from the bytes directly.
+template <typename Program>
+constexpr bool hasCompositeHooks() {
+    return requires(const Program& p) {
+        { p.compositeColor() } -> std::same_as<const SoftTexture*>;
+        { p.compositeFactor(0, 0) } -> std::same_as<float>;
+    };
+}
+
+// Whether the program's shade() reads textures at the fragment's pixel (program_kernel.hpp).
+template <typename Program>
+constexpr bool readsPixels() {
+    if constexpr (requires { Program::kReadsPixels; }) return Program::kReadsPixels;
+    else return false;
+}
 
 template <typename Program>
 class TriangleRasterizer {
@@ -46,19 +67,18 @@ public:
             v.byteLut = (v.format == Format::RGBA8_UNORM || v.format == Format::RGBA8_SRGB) && v.blend &&
                         blendIsPerChannel(draw.blend[i]);
         }
-        if constexpr (std::is_same_v<Program, CompositeProgram> || std::is_same_v<Program, CoverageCompositeProgram>) {
-            // The SSAM and SSAM+ composites as ScreenSpaceAlphaMask and the SSAM+ technique
-            // draw them onto an 8-bit target, with masks of any format (compositeRow);
-            // anything else takes the general path.
+        if constexpr (hasCompositeHooks<Program>()) {
+            // A mask composite (SSAM's, SSAM+'s) as they are drawn: onto an 8-bit target,
+            // with masks of any format (compositeRow); anything else takes the general path.
             compositeRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite &&
                             draw.colorTargetCount == 1 && isRgba8(draw.colorTargets[0]) && draw.blendNeeded[0] &&
-                            isCompositeBlend(draw.blend[0]) && isRgba8(program.foliage);
+                            isAlphaOverKeepingAlpha(draw.blend[0]) && isRgba8(program.compositeColor());
         }
-#if SSAM_SOFT_SSE2
-        if constexpr (std::is_same_v<Program, FoliageColorProgram>)
+#if SOFT_RASTER_SSE2
+        if constexpr (std::is_same_v<Program, MaskedLitProgram>)
             alphaFirst_ = !draw.capture && draw.shade && draw.alphaTest.enabled &&
                           draw.alphaTest.failMode == AlphaFailMode::Keep && program.hasAlpha4();
-        if constexpr (std::is_same_v<Program, FoliageAlphaProgram>) {
+        if constexpr (std::is_same_v<Program, AlphaOnlyProgram>) {
             // The mask path (shadeAlphaRow) covers what the mask pass is: no capture, no alpha
             // test, no depth write. Anything else takes the general path.
             alphaRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite;
@@ -124,9 +144,7 @@ private:
     void prepareConstant(const SetupTriangle& t, int boxPixels) {
         constant_ = false;
         if (draw_.capture) return;  // captured fragments each carry their own depth
-        if constexpr (std::is_same_v<Program, CompositeProgram> || std::is_same_v<Program, WboitResolveProgram> ||
-                      std::is_same_v<Program, CoverageCompositeProgram> || std::is_same_v<Program, ParticleProgram> ||
-                      std::is_same_v<Program, LayerCompositeProgram> || std::is_same_v<Program, LightShaftsProgram>) {
+        if constexpr (readsPixels<Program>()) {
             return;
         } else {
             constexpr ProgramNeeds needs = Program::kNeeds;
@@ -354,41 +372,21 @@ private:
             if (!constantDiscard_) writeConstantRow(bx, py, live, z, depthAt);
             return;
         }
-        if constexpr (std::is_same_v<Program, CompositeProgram>) {
+        if constexpr (hasCompositeHooks<Program>()) {
             if (compositeRow_) {
-                // CompositeProgram::shade()'s alpha.
-                const CompositeProgram& c = program_;
-                compositeRow(bx, py, live, [&c](int x, int y) {
-                    const float maxMask = texelChannel(*c.mask, x, y, 0);
-                    const float addMask = c.maskAdd ? texelChannel(*c.maskAdd, x, y, 0) : texelChannel(*c.mask, x, y, 3);
-                    float blend = maxMask + (addMask - maxMask) * c.params.maskLerp;
-                    blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
-                    if (c.params.squareMask) blend *= blend;
-                    return blend;
-                });
+                const Program& program = program_;
+                compositeRow(bx, py, live, [&program](int x, int y) { return program.compositeFactor(x, y); });
                 return;
             }
         }
-        if constexpr (std::is_same_v<Program, CoverageCompositeProgram>) {
-            if (compositeRow_) {
-                // CoverageCompositeProgram::shade()'s alpha.
-                const CoverageCompositeProgram& c = program_;
-                compositeRow(bx, py, live, [&c](int x, int y) {
-                    const float maxMask = texelChannel(*c.mask, x, y, 0);
-                    const float addMask = c.maskAdd ? texelChannel(*c.maskAdd, x, y, 0) : texelChannel(*c.mask, x, y, 3);
-                    return layerCoverage(c.model, maxMask, addMask);
-                });
-                return;
-            }
-        }
-#if SSAM_SOFT_SSE2
-        if constexpr (std::is_same_v<Program, FoliageAlphaProgram>) {
+#if SOFT_RASTER_SSE2
+        if constexpr (std::is_same_v<Program, AlphaOnlyProgram>) {
             if (alphaRow_) {
                 shadeAlphaRow(t, bx, py, live, centerX0, fy);
                 return;
             }
         }
-        if constexpr (std::is_same_v<Program, FoliageColorProgram>) {
+        if constexpr (std::is_same_v<Program, MaskedLitProgram>) {
             if (alphaFirst_) {
                 shadeAlphaTestedRow(t, bx, py, live, centerX0, fy, z, depthAt);
                 return;
@@ -426,27 +424,27 @@ private:
         const TargetView& target = color_[0];
         const bool srgbTarget = target.format == Format::RGBA8_SRGB;
         const float* targetTable = srgbTarget ? tables.srgb : tables.unorm;
-        const SoftTexture& foliageTexture = *program_.foliage;
-        const float* foliageTable = foliageTexture.desc.format == Format::RGBA8_SRGB ? tables.srgb : tables.unorm;
+        const SoftTexture& colorTexture = *program_.compositeColor();
+        const float* colorTable = colorTexture.desc.format == Format::RGBA8_SRGB ? tables.srgb : tables.unorm;
         const bool skipZero = bytesRoundTrip();
         auto byteAt = [](const std::byte* p, int c) { return std::to_integer<std::uint8_t>(p[c]); };
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
             const int px = bx + __builtin_ctz(bits);
             const float blend = factorAt(px, py);
             if (blend == 0.0f && skipZero) continue;
-            const std::byte* foliage = foliageTexture.texel(0, px, py);
+            const std::byte* source = colorTexture.texel(0, px, py);
             std::byte* p = target.at(px, py);
             const float keep = 1.0f - blend;
             for (int c = 0; c < 3; ++c) {
-                const float out = foliageTable[byteAt(foliage, c)] * blend + targetTable[byteAt(p, c)] * keep;
+                const float out = colorTable[byteAt(source, c)] * blend + targetTable[byteAt(p, c)] * keep;
                 p[c] = std::byte{srgbTarget ? encodeSrgb8(out) : encodeUnorm8(out)};
             }
             if (!skipZero) p[3] = std::byte{encodeUnorm8(tables.unorm[byteAt(p, 3)])};
         }
     }
 
-#if SSAM_SOFT_SSE2
-    // FoliageAlpha's row (alphaRow_): what shadeSingle does for each live lane, with the
+#if SOFT_RASTER_SSE2
+    // AlphaOnly's row (alphaRow_): what shadeSingle does for each live lane, with the
     // program's replicated alpha kept as one float and ONE/ONE ADD/MAX RGBA8 blends done on
     // the stored bytes (blendOneOneRgba8, four pixels at a time where the row lies inside
     // the target: blendOneOneRgba8x4). Under such blends a pixel whose written bytes are
@@ -556,7 +554,7 @@ private:
         return program_.alpha4(row_.color[3] + o, row_.uv[0] + o, row_.uv[1] + o, duv, lanes);
     }
 
-    // FoliageColor's row under a Keep alpha test (alphaFirst_): the texel alpha four lanes
+    // MaskedLit's row under a Keep alpha test (alphaFirst_): the texel alpha four lanes
     // at a time (the general sampler's bits), then the alpha test on the alpha shade()
     // would output, (baseColorFactor.a * vertex alpha) * texel alpha (toStraight keeps
     // alpha), and the texel's colour and shade() for the fragments that pass only: a
@@ -773,7 +771,7 @@ private:
             if (!live) return;
         }
 
-        // Alpha test in the GS sense (seeds/004): on failure the fail mode decides what
+        // Alpha test in the GS sense ([PCSX2]): on failure the fail mode decides what
         // is still written.
         bool writeRgb = true, writeAlpha = true, writeDepth = draw_.depthWrite;
         if (!draw_.alphaTest.passes(color.a)) {
@@ -871,8 +869,8 @@ private:
     std::array<std::uint32_t, kMaxColorTargets> constantPacked_{};
     std::array<bool, kMaxColorTargets> useLut_{};
     bool compositeRow_ = false;  // CompositeProgram, CoverageCompositeProgram: compositeRow
-    bool alphaFirst_ = false;    // FoliageColor: alpha-test (Keep) on the alpha alone before shading
-    // FoliageAlpha's row path (shadeAlphaRow).
+    bool alphaFirst_ = false;    // MaskedLit: alpha-test (Keep) on the alpha alone before shading
+    // AlphaOnly's row path (shadeAlphaRow).
     bool alphaRow_ = false;
     bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha
     std::array<bool, kMaxColorTargets> oneOneBytes_{};  // blendOneOneRgba8 applies
