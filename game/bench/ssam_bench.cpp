@@ -172,7 +172,7 @@ BenchOptions parse(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"ssam-bench: run time against error of every transparency technique ([Hathaway 2010], issue #6)"};
+    CLI::App app{"ssam-bench: run time against error of every transparency technique ([Hathaway 2010])"};
     Options o;
     app.add_option("--scenes", o.scenes, "comma list of scenes: tree, forest, vista, empty")->capture_default_str();
     app.add_option("--techniques", o.techniques,
