@@ -15,10 +15,10 @@ std::vector<const FoliageDraw*> visibleDraws(const FoliageFrame& frame, int widt
 // The batches of every draw, for ssam::FoliageView.
 std::vector<ssam::FoliageBatch> batchesOf(const FoliageFrame& frame);
 
-// FoliageColor's parameters for one batch under the frame's camera and light.
+// MaskedLit's parameters for one batch under the frame's camera and light.
 engine::render::SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch& batch);
 
-// FoliageColor on both faces (foliage is double-sided), nothing else set: each technique
+// MaskedLit on both faces (foliage is double-sided), nothing else set: each technique
 // adds its depth, blend and alpha state.
 engine::render::PipelineDesc foliagePipeline(const char* name);
 

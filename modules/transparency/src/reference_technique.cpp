@@ -3,7 +3,7 @@
 // composited front to back with straight-alpha "over" ([Hargreaves 2009]) onto the opaque colour.
 //
 // How: the soft backend's fragment capture (Backend::fragmentCapture, setFragmentSink) runs the foliage
-// with FoliageColor, the program every other technique shades foliage with, so the
+// with MaskedLit, the program every other technique shades foliage with, so the
 // reference differs from them only in how the fragments are combined. Each pixel's list
 // arrives in submission order (one thread per tile, triangles in order), is stable-sorted
 // nearest first, so fragments at exactly the same depth (coplanar, or crossing exactly at

@@ -8,7 +8,7 @@
 // Both geometry passes depth-test against the opaque depth and write none. The paper
 // writes accumulation and revealage from one pass into two targets (MRT); here every
 // program writes one colour to all its targets, so revealage is a second pass with the
-// alpha-only program (FoliageAlpha, the same alpha FoliageColor computes). The result is
+// alpha-only program (AlphaOnly, the same alpha MaskedLit computes). The result is
 // the same; the cost is a second geometry pass.
 #include <cmath>
 #include <string>

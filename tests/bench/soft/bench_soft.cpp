@@ -4,14 +4,14 @@
 //   DepthOnly     8 full-screen quads at decreasing depth, no colour target, Less + write,
 //                 depth cleared each pass (the clear is part of the measured pass)
 //   FlatFill      8 full-screen opaque Flat quads into RGBA8 (load, no depth)
-//   TexturedAlpha 4 full-screen FoliageColor quads, 256^2 RGBA8 mipmapped texture
+//   TexturedAlpha 4 full-screen MaskedLit quads, 256^2 RGBA8 mipmapped texture
 //                 (trilinear), alpha test discarding below 0.5 (about half the texels)
 //   BlendFill     8 full-screen alpha-over quads (alpha 0.5) into RGBA8
 //   SsamMask      SSAM's mask pass ([Hathaway 2010] §3.5.2): 8 receding foliage layers under a
-//                 perspective camera, FoliageAlpha with the 256^2 texture (trilinear,
+//                 perspective camera, AlphaOnly with the 256^2 texture (trilinear,
 //                 repeated 4x), MAX/ADD ONE/ONE blend into RGBA8, depth test without write
 //                 (every layer is shaded: the pass's cost scales with depth complexity)
-//   SsamColor     the same layers through SSAM's colour pass (§3.5.3): FoliageColor, alpha
+//   SsamColor     the same layers through SSAM's colour pass (§3.5.3): MaskedLit, alpha
 //                 test at 64/255, depth test and write, into RGBA8
 //   SsamMaskFar, SsamColorFar
 //                 the same two passes with the texture repeated 16x instead of 4x: minified

@@ -7,6 +7,7 @@
 #include "../backend_fixture.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "failing_backend.hpp"  // tests/support
+#include "ssam/composite_program.hpp"
 #include "ssam/ssam.hpp"
 
 namespace ssam::test {
@@ -67,7 +68,9 @@ TEST_P(ExceptionSafetyConformance, AnErrorInsideAPassDropsItsDraws) {
     // The aborted pass's draw never ran (soft records draws until endPass; GL's ran into the
     // target already, so only the state is checked there: the next pass works).
     const render::Readback r = gfx().readback(target);
-    if (gfx().name() == "soft") EXPECT_EQ(r.at(kSize / 2, kSize / 2, 0), 0.0f);
+    if (gfx().name() == "soft") {
+        EXPECT_EQ(r.at(kSize / 2, kSize / 2, 0), 0.0f);
+    }
     EXPECT_EQ(centreAfter(gfx(), target, {0.0f, 0.0f, 1.0f, 1.0f}), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
 }
 

@@ -4,7 +4,7 @@
 // filtering. The references follow GL 4.5 §8.14 (texture minification: rho, lambda, the
 // LINEAR_MIPMAP_LINEAR blend) and §8.14.2 (wrap modes), written here independently.
 //
-// The FoliageColor program with ambient 1 and no directional light outputs the (straight)
+// The MaskedLit program with ambient 1 and no directional light outputs the (straight)
 // texel itself, alpha included, so a textured quad into an RGBA32F target reads the filter
 // result back unchanged.
 #include <algorithm>

@@ -2,8 +2,8 @@
 // backend, compared target by target, pixel by pixel.
 //
 // A scene is an SSAM-shaped frame: an opaque pass (Flat and OpaqueLit, textured with every
-// filter and address mode, instanced, culled, scissored), the foliage mask pass (FoliageAlpha,
-// SSAM mask blend RGB MAX + A ADD), the foliage colour pass (FoliageColor, alpha-tested,
+// filter and address mode, instanced, culled, scissored), the foliage mask pass (AlphaOnly,
+// SSAM mask blend RGB MAX + A ADD), the foliage colour pass (MaskedLit, alpha-tested,
 // depth-writing), the composite (full-screen, SRC_ALPHA / INV_SRC_ALPHA), and a "zoo" pass in its
 // own target: Flat triangles with random blend factors, ops, constants, write masks, depth
 // functions and GS alpha tests (every function and fail mode). Colour targets are RGBA8, sRGB,
@@ -202,7 +202,7 @@ public:
         }
         s.passes.push_back(opaque);
 
-        // 2. SSAM mask: FoliageAlpha, RGB MAX + A ADD, depth tested against the opaque depth.
+        // 2. SSAM mask: AlphaOnly, RGB MAX + A ADD, depth tested against the opaque depth.
         PassSpec mask;
         mask.name = "mask";
         mask.colors = {kMask};

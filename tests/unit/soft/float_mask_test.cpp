@@ -1,5 +1,5 @@
 // The soft backend's float-mask fast paths against the general path, bit for bit, on whole
-// random scenes: SSAM's mask pass (FoliageAlpha, ONE/ONE MAX and ADD, [Hathaway 2010] §3.5.2)
+// random scenes: SSAM's mask pass (AlphaOnly, ONE/ONE MAX and ADD, [Hathaway 2010] §3.5.2)
 // onto half-float targets as maskPrecision RG16F (two R16F targets; SSAM+) and RGBA16F
 // store it, and the SSAM / SSAM+ composites onto RGBA8 targets from float and 8-bit masks.
 // The targets start with arbitrary halves (NaN, infinities, -0, denormals, values past 1
