@@ -1,5 +1,7 @@
 #include "bench_frame.hpp"
 
+#include "engine/render/pass_scope.hpp"
+
 namespace bench {
 
 using namespace engine::render;
@@ -58,7 +60,7 @@ FrameDrawer::~FrameDrawer() {
 }
 
 void FrameDrawer::draw(ssam::OpaqueTargets& targets, transparency::Technique* technique, const ViewUpload& view) {
-    backend_.beginPass(targets.passDesc(kSky));
+    PassScope scope(backend_, targets.passDesc(kSky));
     const auto& opaque = view.lists().opaque;
     for (std::size_t i = 0; i < opaque.size(); ++i) {
         const engine::scene::MeshPart& part = library_.part(opaque[i].part);
@@ -78,7 +80,7 @@ void FrameDrawer::draw(ssam::OpaqueTargets& targets, transparency::Technique* te
         d.instanceCount = static_cast<std::uint32_t>(opaque[i].instances.size());
         backend_.draw(d);
     }
-    backend_.endPass();
+    scope.end();
     if (technique)
         technique->render(targets, view.foliageFrame());
     else

@@ -4,9 +4,8 @@
 // Handed to a technique (and its OpaqueTargets), it measures exactly what that technique
 // allocates — targets at their sample count, mip chains, buffers — the same numbers on
 // every run and backend, unlike a process RSS. Resources created elsewhere (the scene's
-// meshes, made on the wrapped backend) pass through uncounted. Wrapping a soft backend
-// gives a soft::SoftBackend, so techniques that need the soft backend's features (the exact
-// reference's fragment capture) still find them.
+// meshes, made on the wrapped backend) pass through uncounted. Capabilities (the soft
+// backend's fragment capture, which the exact reference needs) are forwarded.
 #include <cstdint>
 #include <memory>
 #include <unordered_map>

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "engine/capture/image.hpp"
+#include "engine/render/pass_scope.hpp"
 #include "living_scene.hpp"
 
 namespace racer {
@@ -23,7 +24,7 @@ FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary&
     opaqueTwoSided_ = opaquePipeline(true);
     PipelineDesc water;
     water.name = "water (blend over)";
-    water.program = ProgramKind::FoliageColor;  // double-sided lit, straight alpha out
+    water.program = ProgramKind::MaskedLit;  // double-sided lit, straight alpha out
     water.blend[0] = BlendState::alphaOver();
     water.depth = DepthState::testOnly(kDepthFunc);
     water_ = backend.createPipeline(water);
@@ -72,7 +73,7 @@ BufferHandle FrameRenderer::uploadInstances(const DrawBatch& batch) {
     return frameBuffers_.back();
 }
 
-DrawDesc FrameRenderer::batchDraw(const DrawBatch& batch, PipelineHandle pipeline, ProgramParams params) {
+DrawDesc FrameRenderer::batchDraw(const DrawBatch& batch, PipelineHandle pipeline, DrawParams params) {
     const MeshPart& part = library_.part(batch.part);
     DrawDesc d;
     d.pipeline = pipeline;
@@ -135,12 +136,12 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
     };
 
     // 1. Opaque pass (MSAA when the technique or --msaa asks for it).
-    backend_.beginPass(opaque_->passDesc(options_.background));
+    PassScope scope(backend_, opaque_->passDesc(options_.background));
     for (const DrawBatch& b : lists.opaque) {
         const MeshPart& part = library_.part(b.part);
         backend_.draw(batchDraw(b, part.material.doubleSided ? opaqueTwoSided_ : opaqueCulled_, surface(part)));
     }
-    backend_.endPass();
+    scope.end();
     if (options_.captureLayers) {
         // The technique resolves again after drawing; resolving here too only costs time
         // when layers are captured.
@@ -167,12 +168,12 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
         pass.name = "water";
         pass.color[0] = {opaque_->color(), LoadOp::Load};
         pass.depth = {opaque_->depth(), LoadOp::Load};
-        backend_.beginPass(pass);
+        PassScope passScope(backend_, pass);
         for (const DrawBatch& b : lists.blend) {
             const MeshPart& part = library_.part(b.part);
             backend_.draw(batchDraw(b, part.material.doubleSided ? water_ : waterCulled_, surface(part)));
         }
-        backend_.endPass();
+        passScope.end();
     }
     capture(opaque_->color(), "result");
 }

@@ -68,7 +68,7 @@ public:
 private:
     engine::render::BufferHandle uploadInstances(const engine::scene::DrawBatch& batch);
     engine::render::DrawDesc batchDraw(const engine::scene::DrawBatch& batch, engine::render::PipelineHandle pipeline,
-                                       engine::render::ProgramParams params);
+                                       engine::render::DrawParams params);
     engine::render::PipelineHandle opaquePipeline(bool doubleSided);
     void ensureOpaqueTargets(int width, int height, int samples);
     void capture(engine::render::TextureHandle target, const char* name);

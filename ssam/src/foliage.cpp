@@ -4,7 +4,7 @@ namespace ssam {
 
 using namespace engine::render;
 
-DrawDesc foliageDraw(const FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
+DrawDesc foliageDraw(const FoliageBatch& batch, PipelineHandle pipeline, DrawParams params) {
     DrawDesc d;
     d.pipeline = pipeline;
     d.params = std::move(params);

@@ -1,73 +1,103 @@
 #include "ssam/ssam.hpp"
 
+#include "engine/render/pass_scope.hpp"
+#include "ssam/composite_program.hpp"
 #include "ssam/screen_region.hpp"
 
 namespace ssam {
 
 using namespace engine::render;
 
-ScreenSpaceAlphaMask::ScreenSpaceAlphaMask(Backend& backend, const Config& config) : backend_(backend) {
-    config.validate();
-    config_ = config;
-    createPipelines();
-}
+namespace {
 
-ScreenSpaceAlphaMask::~ScreenSpaceAlphaMask() {
-    destroyPipelines();
-    destroyTargets();
-}
-
-void ScreenSpaceAlphaMask::setConfig(const Config& config) {
-    config.validate();
-    config_ = config;
-    destroyPipelines();
-    createPipelines();
-}
-
-void ScreenSpaceAlphaMask::createPipelines() {
-    // Mask pass (§3.5.2, Table 3.1): RGB = MAX and A = ADD with ONE/ONE, depth test without
-    // write, both faces, no alpha rejection (the paper's alpha reference of 0).
+// Mask pass (§3.5.2, Table 3.1): RGB = MAX and A = ADD with ONE/ONE, depth test without
+// write, both faces, no alpha rejection (the paper's alpha reference of 0).
+PipelineDesc maskPipelineDesc(const Config& config) {
     PipelineDesc mask;
     mask.name = "ssam mask";
-    mask.program = ProgramKind::FoliageAlpha;
-    mask.depth = DepthState::testOnly(config_.depthFunc);
+    mask.program = ProgramKind::AlphaOnly;
+    mask.depth = DepthState::testOnly(config.depthFunc);
     mask.raster.cull = CullMode::None;
-    if (config_.maskPrecision == MaskPrecision::RG16F) {
+    if (config.maskPrecision == MaskPrecision::RG16F) {
         // Two R16F targets, one blend equation each.
         mask.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Max,
                          BlendFactor::One, BlendFactor::One, BlendOp::Max, WriteAll};
         mask.blend[1] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
                          BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
     } else {
-        mask.blend[0] = BlendState::ssamMask();
+        mask.blend[0] = BlendState::maxRgbAddAlpha();
     }
-    maskPipeline_ = backend_.createPipeline(mask);
-
-    // Colour pass (§3.5.3): alpha test at the colour reference, depth test and write, no
-    // culling, no blending.
-    PipelineDesc color;
-    color.name = "ssam colour";
-    color.program = ProgramKind::FoliageColor;
-    color.depth = DepthState::testAndWrite(config_.depthFunc);
-    color.raster.cull = CullMode::None;
-    color.alphaTest = AlphaTest::discardBelow(config_.colorAlphaReference);
-    colorPipeline_ = backend_.createPipeline(color);
-
-    // Composite (§3.5.4): out = (foliage, mask) blended SRC_ALPHA / INV_SRC_ALPHA onto the
-    // opaque colour = lerp(opaque, foliage, mask); the target's alpha is kept.
-    PipelineDesc composite;
-    composite.name = "ssam composite";
-    composite.program = ProgramKind::Composite;
-    composite.blend[0] = {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
-                          BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteAll};
-    compositePipeline_ = backend_.createPipeline(composite);
+    return mask;
 }
 
-void ScreenSpaceAlphaMask::destroyPipelines() {
-    for (PipelineHandle* p : {&maskPipeline_, &colorPipeline_, &compositePipeline_}) {
-        if (*p) backend_.destroy(*p);
-        *p = {};
+// Colour pass (§3.5.3): alpha test at the colour reference, depth test and write, no
+// culling, no blending.
+PipelineDesc colorPipelineDesc(const Config& config) {
+    PipelineDesc color;
+    color.name = "ssam colour";
+    color.program = ProgramKind::MaskedLit;
+    color.depth = DepthState::testAndWrite(config.depthFunc);
+    color.raster.cull = CullMode::None;
+    color.alphaTest = AlphaTest::discardBelow(config.colorAlphaReference);
+    return color;
+}
+
+// Composite (§3.5.4): out = (foliage, mask) blended SRC_ALPHA / INV_SRC_ALPHA onto the
+// opaque colour = lerp(opaque, foliage, mask); the target's alpha is kept.
+PipelineDesc compositePipelineDesc(ProgramHandle program) {
+    PipelineDesc composite;
+    composite.name = "ssam composite";
+    composite.program = program;
+    composite.blend[0] = {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
+                          BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteAll};
+    return composite;
+}
+
+}  // namespace
+
+ScreenSpaceAlphaMask::ScreenSpaceAlphaMask(Backend& backend, const Config& config) : backend_(backend) {
+    config.validate();
+    config_ = config;
+    compositeProgram_ = backend_.createProgram(compositeProgram());
+    try {
+        pipelines_ = createPipelines(config_);
+    } catch (...) {
+        backend_.destroy(compositeProgram_);
+        throw;
     }
+}
+
+ScreenSpaceAlphaMask::~ScreenSpaceAlphaMask() {
+    destroy(pipelines_);
+    destroyTargets();
+    backend_.destroy(compositeProgram_);
+}
+
+void ScreenSpaceAlphaMask::setConfig(const Config& config) {
+    config.validate();
+    // The new pipelines first: if one cannot be made, the old configuration stays in force.
+    const Pipelines next = createPipelines(config);
+    destroy(pipelines_);
+    pipelines_ = next;
+    config_ = config;
+}
+
+ScreenSpaceAlphaMask::Pipelines ScreenSpaceAlphaMask::createPipelines(const Config& config) {
+    Pipelines made;
+    try {
+        made.mask = backend_.createPipeline(maskPipelineDesc(config));
+        made.color = backend_.createPipeline(colorPipelineDesc(config));
+        made.composite = backend_.createPipeline(compositePipelineDesc(compositeProgram_));
+    } catch (...) {
+        destroy(made);
+        throw;
+    }
+    return made;
+}
+
+void ScreenSpaceAlphaMask::destroy(const Pipelines& pipelines) {
+    for (PipelineHandle p : {pipelines.mask, pipelines.color, pipelines.composite})
+        if (p) backend_.destroy(p);
 }
 
 void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFormat) {
@@ -130,15 +160,15 @@ void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& vi
     pass.color[0] = {mask_, LoadOp::Clear, glm::vec4(0.0f)};  // black background (§3.5.2)
     if (maskAdd_) pass.color[1] = {maskAdd_, LoadOp::Clear, glm::vec4(0.0f)};
     pass.depth = {depth, LoadOp::Load};
-    backend_.beginPass(pass);
+    PassScope passScope(backend_, pass);
     for (const FoliageBatch* batch : plan.visible) {
         AlphaOnlyParams params;
         params.viewProj = view.viewProj;
         params.alphaFactor = batch->baseColorFactor.a;
         params.baseColor = batch->baseColor;
-        backend_.draw(foliageDraw(*batch, maskPipeline_, params));
+        backend_.draw(foliageDraw(*batch, pipelines_.mask, params));
     }
-    backend_.endPass();
+    passScope.end();
 }
 
 void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
@@ -146,23 +176,23 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
     pass.name = "ssam colour";
     pass.color[0] = {foliage_, LoadOp::Clear, config_.foliageClearColor};  // the clear-colour fix (§3.6.1)
     pass.depth = {depth, LoadOp::Load};
-    backend_.beginPass(pass);
+    PassScope passScope(backend_, pass);
     for (const FoliageBatch* batch : plan.visible) {
         SurfaceParams params;
         params.viewProj = view.viewProj;
         params.baseColorFactor = batch->baseColorFactor;
         params.baseColor = batch->baseColor;
         params.light = batch->unlit ? engine::render::unlitLight() : view.light;
-        backend_.draw(foliageDraw(*batch, colorPipeline_, params));
+        backend_.draw(foliageDraw(*batch, pipelines_.color, params));
     }
-    backend_.endPass();
+    passScope.end();
 }
 
 void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color) {
     PassDesc pass;
     pass.name = "ssam composite";
     pass.color[0] = {color, LoadOp::Load};
-    backend_.beginPass(pass);
+    PassScope passScope(backend_, pass);
     CompositeParams params;
     params.foliage = foliage_;
     params.mask = mask_;
@@ -170,11 +200,11 @@ void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle co
     params.maskLerp = config_.maskLerp;
     params.squareMask = config_.squareMask;
     DrawDesc d;
-    d.pipeline = compositePipeline_;
+    d.pipeline = pipelines_.composite;
     d.params = params;
     d.scissor = plan.compositeRegion;
     backend_.draw(d);
-    backend_.endPass();
+    passScope.end();
 }
 
 FrameReport ScreenSpaceAlphaMask::render(const FrameTargets& targets, const FoliageView& view) {

@@ -166,6 +166,8 @@ class MsaaResolveConformance : public BackendTest {};
 class TextureConformance : public BackendTest {};
 class RasterConformance : public BackendTest {};
 class OcclusionQueryConformance : public BackendTest {};
+class ExceptionSafetyConformance : public BackendTest {};
+class NonFiniteConformance : public BackendTest {};
 
 }  // namespace ssam::test
 
@@ -181,4 +183,6 @@ class OcclusionQueryConformance : public BackendTest {};
     INSTANTIATE_TEST_SUITE_P(prefix, MsaaResolveConformance, generator, ::ssam::test::BackendCaseName());     \
     INSTANTIATE_TEST_SUITE_P(prefix, TextureConformance, generator, ::ssam::test::BackendCaseName());       \
     INSTANTIATE_TEST_SUITE_P(prefix, RasterConformance, generator, ::ssam::test::BackendCaseName());        \
-    INSTANTIATE_TEST_SUITE_P(prefix, OcclusionQueryConformance, generator, ::ssam::test::BackendCaseName())
+    INSTANTIATE_TEST_SUITE_P(prefix, OcclusionQueryConformance, generator, ::ssam::test::BackendCaseName());    \
+    INSTANTIATE_TEST_SUITE_P(prefix, ExceptionSafetyConformance, generator, ::ssam::test::BackendCaseName());   \
+    INSTANTIATE_TEST_SUITE_P(prefix, NonFiniteConformance, generator, ::ssam::test::BackendCaseName())

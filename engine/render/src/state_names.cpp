@@ -31,9 +31,7 @@ const char* alphaFailModeName(AlphaFailMode mode) {
 }
 
 const char* programKindName(ProgramKind kind) {
-    constexpr const char* kNames[] = {"Flat", "OpaqueLit", "FoliageColor", "FoliageAlpha", "Composite",
-                                         "WboitAccumulate", "WboitResolve", "CoverageComposite",
-                                         "Particle", "LayerComposite", "LightShafts"};
+    constexpr const char* kNames[] = {"Flat", "OpaqueLit", "MaskedLit", "AlphaOnly"};
     return kNames[static_cast<int>(kind)];
 }
 

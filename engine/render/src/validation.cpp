@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "engine/core/error.hpp"
@@ -90,128 +91,116 @@ PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup) {
 
 namespace {
 
-const TextureDesc& sampledTexture(TextureHandle h, const PassDesc& pass, const ResourceLookup& lookup,
-                                  const std::string& what) {
-    const TextureDesc& t = lookup.texture(h);
-    if (t.samples != 1) throw Error(what + ": samples multisampled texture " + quotedName(t.name));
-    for (const ColorAttachment& c : pass.color)
-        if (c.texture == h) throw Error(what + ": samples " + quotedName(t.name) + " while rendering into it");
-    if (pass.depth.texture == h) throw Error(what + ": samples depth target " + quotedName(t.name));
-    return t;
+// DrawCheck for one draw. Messages name the draw's pipeline and pass; they are built only
+// when a check fails, so a valid draw costs no string work.
+class DrawChecks final : public DrawCheck {
+public:
+    DrawChecks(const PipelineDesc& pipeline, const PassDesc& pass, const PassExtent& extent,
+               const ResourceLookup& lookup)
+        : pipeline_(pipeline), pass_(pass), extent_(extent), lookup_(lookup) {}
+
+    [[noreturn]] void fail(const std::string& message) const override {
+        throw Error("draw with pipeline " + quotedName(pipeline_.name) + " in pass " + quotedName(pass_.name) + ": " +
+                    message);
+    }
+    const TextureDesc& texture(TextureHandle texture) const override { return lookup_.texture(texture); }
+    const TextureDesc& sampled(TextureHandle h) const override {
+        const TextureDesc& t = lookup_.texture(h);
+        if (t.samples != 1) fail("samples multisampled texture " + quotedName(t.name));
+        for (const ColorAttachment& c : pass_.color)
+            if (c.texture == h) fail("samples " + quotedName(t.name) + " while rendering into it");
+        if (pass_.depth.texture == h) fail("samples depth target " + quotedName(t.name));
+        return t;
+    }
+    int targetWidth() const override { return extent_.width; }
+    int targetHeight() const override { return extent_.height; }
+
+    const BufferDesc& bufferOfKind(BufferHandle h, BufferKind kind, const char* kindName) const {
+        const BufferDesc& b = lookup_.buffer(h);
+        if (b.kind != kind) fail(quotedName(b.name) + " is not " + kindName);
+        return b;
+    }
+
+private:
+    const PipelineDesc& pipeline_;
+    const PassDesc& pass_;
+    const PassExtent& extent_;
+    const ResourceLookup& lookup_;
+};
+
+// The textures a program's parameters name, as its layout declares them.
+void checkTextures(const ProgramDesc& program, const DrawParams& params, const DrawChecks& check) {
+    const auto* bytes = static_cast<const std::byte*>(params.data());
+    for (const TextureField& field : program.gl.textures) {
+        TextureHandle handle;
+        std::memcpy(&handle, bytes + field.offset, sizeof handle);  // first member of a TextureBinding too
+        if (!handle && field.optional) continue;
+        const TextureDesc& t = check.sampled(handle);
+        if (field.use == TextureUse::FullSize && (t.width < check.targetWidth() || t.height < check.targetHeight()))
+            check.fail("input " + quotedName(t.name) + " is smaller than the target");
+    }
 }
 
-const BufferDesc& bufferOfKind(BufferHandle h, BufferKind kind, const char* kindName, const ResourceLookup& lookup,
-                               const std::string& what) {
-    const BufferDesc& b = lookup.buffer(h);
-    if (b.kind != kind) throw Error(what + ": " + quotedName(b.name) + " is not " + kindName);
-    return b;
+// Every index of the draw's range names a vertex of the buffer. The largest index of the
+// buffer, kept by the backend since the buffer was last written, settles nearly every draw
+// at once; only a buffer holding an index out of this draw's vertex range is scanned, to say
+// which index and where.
+void checkIndices(const DrawDesc& d, std::uint64_t vertexCount, const DrawChecks& check,
+                  const ResourceLookup& lookup) {
+    const BufferDesc& ib = check.bufferOfKind(d.indices, BufferKind::Index, "an index buffer");
+    const std::uint64_t indexCount = ib.size / 4;
+    if (std::uint64_t(d.first) + d.count > indexCount)
+        check.fail("indices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) + ") outside " +
+                   quotedName(ib.name) + " of " + std::to_string(indexCount));
+    if (lookup.maxIndex(d.indices) < vertexCount) return;
+    const auto* indices = reinterpret_cast<const std::uint32_t*>(lookup.indexData(d.indices).data()) + d.first;
+    for (std::uint32_t i = 0; i < d.count; ++i)
+        if (indices[i] >= vertexCount)
+            check.fail("index " + std::to_string(indices[i]) + " at position " + std::to_string(d.first + i) +
+                       " >= vertex count " + std::to_string(vertexCount));
 }
 
 }  // namespace
 
 void validateDraw(const DrawDesc& d, const PassDesc& pass, const PassExtent& extent, const ResourceLookup& lookup) {
     const PipelineDesc& p = lookup.pipeline(d.pipeline);
-    const std::string what = "draw with pipeline " + quotedName(p.name) + " in pass " + quotedName(pass.name);
-    if (d.params.index() != paramsIndexFor(p.program))
-        throw Error(what + ": parameters do not match program " + programKindName(p.program));
-    if (p.depth.test && !pass.depth.texture) throw Error(what + ": depth test on but the pass has no depth target");
+    const ProgramDesc& program = lookup.program(d.pipeline);
+    const DrawChecks check(p, pass, extent, lookup);
+    if (d.params.type() != program.params) check.fail("parameters do not match program " + program.name);
+    if (p.depth.test && !pass.depth.texture) check.fail("depth test on but the pass has no depth target");
     if (pass.countSamplesInto && (p.alphaTest.enabled || p.alphaTest.alphaToCoverage))
-        throw Error(what + ": alpha test or alpha-to-coverage in a pass that counts samples into an occlusion query");
+        check.fail("alpha test or alpha-to-coverage in a pass that counts samples into an occlusion query");
+    checkTextures(program, d.params, check);
+    if (program.check) program.check(d.params.data(), check);
+    if (program.vertexInput == VertexInput::Fullscreen) return;  // no vertex input
 
-    if (isFullscreen(p.program)) {
-        // Full-screen programs read their inputs at every target pixel.
-        auto input = [&](TextureHandle h) {
-            const TextureDesc& t = sampledTexture(h, pass, lookup, what);
-            if (t.width < extent.width || t.height < extent.height)
-                throw Error(what + ": input " + quotedName(t.name) + " is smaller than the target");
-        };
-        if (const auto* w = std::get_if<WboitResolveParams>(&d.params)) {
-            input(w->accumulation);
-            input(w->revealage);
-            return;
-        }
-        if (const auto* c = std::get_if<CoverageCompositeParams>(&d.params)) {
-            input(c->foliage);
-            input(c->mask);
-            if (c->maskAdd) input(c->maskAdd);
-            if (c->model != CoverageModel::EqualLayers && c->model != CoverageModel::Exponential)
-                throw Error(what + ": unknown coverage model " + std::to_string(int(c->model)));
-            return;
-        }
-        if (const auto* shafts = std::get_if<LightShaftParams>(&d.params)) {
-            input(shafts->depth);
-            const Format depthFormat = lookup.texture(shafts->depth).format;
-            if (depthFormat != Format::D32F && depthFormat != Format::R32F)
-                throw Error(what + ": light-shaft depth is " + std::string(formatName(depthFormat)) + ", not D32F or R32F");
-            if (shafts->samples < 1 || shafts->samples > 128)
-                throw Error(what + ": light-shaft samples " + std::to_string(shafts->samples) + " not in 1..128");
-            for (float v : {shafts->sunPixel.x, shafts->sunPixel.y, shafts->farDepth, shafts->intensity, shafts->decay,
-                            shafts->density, shafts->color.r, shafts->color.g, shafts->color.b, shafts->glowRadius})
-                if (!std::isfinite(v)) throw Error(what + ": light-shaft parameters are not finite");
-            return;
-        }
-        if (const auto* l = std::get_if<LayerCompositeParams>(&d.params)) {
-            // A layer of 1/layerScale the target's size (rounded up), upsampled by the program.
-            if (l->layerScale != 1 && l->layerScale != 2)
-                throw Error(what + ": layerScale " + std::to_string(l->layerScale) + " is not 1 or 2");
-            const TextureDesc& t = sampledTexture(l->layer, pass, lookup, what);
-            const int s = l->layerScale;
-            if (t.width < (extent.width + s - 1) / s || t.height < (extent.height + s - 1) / s)
-                throw Error(what + ": layer " + quotedName(t.name) + " is smaller than the target / " + std::to_string(s));
-            if (l->sceneDepth) input(l->sceneDepth);
-            if (!std::isfinite(l->depthScale) || !std::isfinite(l->depthOffset))
-                throw Error(what + ": depth-to-distance factors are not finite");
-            return;
-        }
-        const CompositeParams& c = std::get<CompositeParams>(d.params);
-        input(c.foliage);
-        input(c.mask);
-        if (c.maskAdd) input(c.maskAdd);  // the split ADD mask is optional
-        if (!std::isfinite(c.maskLerp)) throw Error(what + ": maskLerp is not finite");
-        return;
-    }
-
-    if (d.count % 3 != 0) throw Error(what + ": count " + std::to_string(d.count) + " is not a multiple of 3");
-    if (const auto* particle = std::get_if<ParticleParams>(&d.params)) {
-        if (particle->depthStride != 1 && particle->depthStride != 2)
-            throw Error(what + ": depthStride " + std::to_string(particle->depthStride) + " is not 1 or 2");
-        if (!(particle->softness > 0.0f) || !std::isfinite(particle->softness))
-            throw Error(what + ": softness must be finite and > 0");
-        if (!std::isfinite(particle->depthScale) || !std::isfinite(particle->depthOffset))
-            throw Error(what + ": depth-to-distance factors are not finite");
-        if (particle->sceneDepth) sampledTexture(particle->sceneDepth, pass, lookup, what);
-    }
-    const BufferDesc& vb = bufferOfKind(d.vertices, BufferKind::Vertex, "a vertex buffer", lookup, what);
+    if (d.count % 3 != 0) check.fail("count " + std::to_string(d.count) + " is not a multiple of 3");
+    const BufferDesc& vb = check.bufferOfKind(d.vertices, BufferKind::Vertex, "a vertex buffer");
     const std::uint64_t vertexCount = vb.size / sizeof(Vertex);
     if (d.indices) {
-        const BufferDesc& ib = bufferOfKind(d.indices, BufferKind::Index, "an index buffer", lookup, what);
-        const std::uint64_t indexCount = ib.size / 4;
-        if (std::uint64_t(d.first) + d.count > indexCount)
-            throw Error(what + ": indices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
-                        ") outside " + quotedName(ib.name) + " of " + std::to_string(indexCount));
-        const auto* indices = reinterpret_cast<const std::uint32_t*>(lookup.indexData(d.indices).data()) + d.first;
-        for (std::uint32_t i = 0; i < d.count; ++i)
-            if (indices[i] >= vertexCount)
-                throw Error(what + ": index " + std::to_string(indices[i]) + " at position " +
-                            std::to_string(d.first + i) + " >= vertex count " + std::to_string(vertexCount));
+        checkIndices(d, vertexCount, check, lookup);
     } else if (std::uint64_t(d.first) + d.count > vertexCount) {
-        throw Error(what + ": vertices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) +
-                    ") outside " + quotedName(vb.name) + " of " + std::to_string(vertexCount));
+        check.fail("vertices [" + std::to_string(d.first) + ", " + std::to_string(d.first + d.count) + ") outside " +
+                   quotedName(vb.name) + " of " + std::to_string(vertexCount));
     }
     if (d.instances) {
-        const BufferDesc& inst = bufferOfKind(d.instances, BufferKind::Instance, "an instance buffer", lookup, what);
+        const BufferDesc& inst = check.bufferOfKind(d.instances, BufferKind::Instance, "an instance buffer");
         if (std::uint64_t(d.instanceCount) * sizeof(Instance) > inst.size)
-            throw Error(what + ": " + std::to_string(d.instanceCount) + " instances exceed " + quotedName(inst.name));
+            check.fail(std::to_string(d.instanceCount) + " instances exceed " + quotedName(inst.name));
     } else if (d.instanceCount != 1) {
-        throw Error(what + ": instanceCount " + std::to_string(d.instanceCount) + " without an instance buffer");
+        check.fail("instanceCount " + std::to_string(d.instanceCount) + " without an instance buffer");
     }
-    std::visit(
-        [&](const auto& params) {
-            using P = std::decay_t<decltype(params)>;
-            if constexpr (std::is_same_v<P, SurfaceParams> || std::is_same_v<P, AlphaOnlyParams>)
-                if (params.baseColor.texture) sampledTexture(params.baseColor.texture, pass, lookup, what);
-        },
-        d.params);
+}
+
+std::uint32_t largestIndex(std::span<const std::byte> indexData) {
+    std::uint32_t largest = 0;
+    const std::size_t count = indexData.size() / sizeof(std::uint32_t);
+    for (std::size_t i = 0; i < count; ++i) {
+        std::uint32_t index;
+        std::memcpy(&index, indexData.data() + i * sizeof index, sizeof index);
+        largest = index > largest ? index : largest;
+    }
+    return largest;
 }
 
 }  // namespace engine::render

@@ -52,7 +52,7 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
     lists.mask.insert(lists.mask.end(), ownMask.begin(), ownMask.end());
     std::stable_sort(lists.opaque.begin(), lists.opaque.end(), byPart);
     std::stable_sort(lists.mask.begin(), lists.mask.end(), byPart);
-    // Straight-alpha "over" needs back-to-front order (glTF BLEND, seeds/001).
+    // Straight-alpha "over" needs back-to-front order (glTF BLEND, [Moore 2015]).
     std::stable_sort(lists.blend.begin(), lists.blend.end(),
                      [](const DrawBatch& a, const DrawBatch& b) { return a.viewDistance > b.viewDistance; });
     return lists;

@@ -52,7 +52,7 @@ ModelId MeshLibrary::add(const assets::LoadedModel& model) {
             // darken such a texel by its alpha (to black at 0), so its alpha becomes 1 here.
             if (m.alphaMode == assets::AlphaMode::Opaque)
                 for (std::size_t i = 3; i < pixels.pixels.size(); i += 4) pixels.pixels[i] = 255;
-            // Premultiplied mips filter correctly (seeds/002); masked ones also keep their
+            // Premultiplied mips filter correctly ([Hargreaves 2009]); masked ones also keep their
             // alpha-test coverage per level.
             const std::vector<assets::RgbaImage> levels =
                 m.alphaMode == assets::AlphaMode::Mask

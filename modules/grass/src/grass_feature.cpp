@@ -3,6 +3,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/pass_scope.hpp"
 
 namespace grass {
 
@@ -43,7 +44,7 @@ PipelineHandle GrassFeature::pipeline(CompareFunc depthFunc) {
     if (pipeline_) backend_.destroy(pipeline_);
     PipelineDesc p;
     p.name = "grass (alpha tested)";
-    p.program = ProgramKind::FoliageColor;
+    p.program = ProgramKind::MaskedLit;
     p.depth = DepthState::testAndWrite(depthFunc);
     p.alphaTest = AlphaTest::discardBelow(options_.alphaReference);
     p.blend[0].writeMask = WriteRGB;  // the frame's alpha stays; the card's alpha only cuts it out
@@ -64,7 +65,7 @@ void GrassFeature::render(const engine::scene::FeatureFrame& frame) {
     pass.name = "grass";
     pass.color[0] = {frame.color, LoadOp::Load};
     pass.depth = {frame.depth, LoadOp::Load};
-    backend_.beginPass(pass);
+    PassScope passScope(backend_, pass);
     SurfaceParams s;
     s.viewProj = frame.viewProj;
     s.baseColor = {blades_, {Filter::Bilinear, AddressMode::Wrap, AddressMode::Clamp}};
@@ -78,7 +79,7 @@ void GrassFeature::render(const engine::scene::FeatureFrame& frame) {
     d.instances = instances_;
     d.instanceCount = std::uint32_t(visible.size());
     backend_.draw(d);
-    backend_.endPass();
+    passScope.end();
 }
 
 }  // namespace grass

@@ -4,6 +4,8 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/pass_scope.hpp"
+#include "lightshafts/light_shaft_program.hpp"
 #include "sun_visibility.hpp"
 
 namespace lightshafts {
@@ -25,16 +27,26 @@ void validate(const LightShaftOptions& o) {
 LightShaftFeature::LightShaftFeature(Backend& backend, const LightShaftOptions& options)
     : backend_(backend), options_(options) {
     validate(options_);
-    PipelineDesc p;
-    p.name = "light shafts (additive)";
-    p.program = ProgramKind::LightShafts;
-    p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
-                  BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
-    pipeline_ = backend.createPipeline(p);
-    if (options_.skipWhenSunHidden) probe_ = std::make_unique<SunVisibilityProbe>(backend);
+    program_ = backend.createProgram(lightShaftProgram());
+    try {
+        PipelineDesc p;
+        p.name = "light shafts (additive)";
+        p.program = program_;
+        p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
+                      BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+        pipeline_ = backend.createPipeline(p);
+        if (options_.skipWhenSunHidden) probe_ = std::make_unique<SunVisibilityProbe>(backend);
+    } catch (...) {
+        if (pipeline_) backend.destroy(pipeline_);
+        backend.destroy(program_);
+        throw;
+    }
 }
 
-LightShaftFeature::~LightShaftFeature() { backend_.destroy(pipeline_); }
+LightShaftFeature::~LightShaftFeature() {
+    backend_.destroy(pipeline_);
+    backend_.destroy(program_);
+}
 
 bool LightShaftFeature::sunVisible() const { return !lastQuery_ || backend_.anySamplesPassed(*lastQuery_); }
 
@@ -71,12 +83,12 @@ void LightShaftFeature::render(const engine::scene::FeatureFrame& frame) {
         if (!lastQuery_) return;  // the glow misses the frame: nothing to add
         pass.drawOnlyIfSamplesIn = *lastQuery_;
     }
-    backend_.beginPass(pass);
+    PassScope passScope(backend_, pass);
     DrawDesc d;
     d.pipeline = pipeline_;
     d.params = params;
     backend_.draw(d);
-    backend_.endPass();
+    passScope.end();
     ran_ = true;
 }
 

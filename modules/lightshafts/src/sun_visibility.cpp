@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/render/pass_scope.hpp"
 #include "engine/render/vertex.hpp"
 
 namespace lightshafts {
@@ -80,14 +81,14 @@ std::optional<QueryHandle> SunVisibilityProbe::probe(TextureHandle depth, int wi
     pass.name = "light shafts: sun visibility";
     pass.depth = {depth, LoadOp::Load};
     pass.countSamplesInto = query_;
-    backend_.beginPass(pass);
+    PassScope passScope(backend_, pass);
     DrawDesc d;
     d.pipeline = reverse ? reverseZ_ : standardZ_;
     d.params = params;
     d.vertices = disc_;
     d.count = 3 * kDiscSides;
     backend_.draw(d);
-    backend_.endPass();
+    passScope.end();
     return query_;
 }
 

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "engine/render/pass_scope.hpp"
 #include "engine/scene/bounds.hpp"
+#include "particles/particle_programs.hpp"
 #include "ssam/screen_region.hpp"
 
 namespace particles {
@@ -11,22 +13,35 @@ using namespace engine::render;
 
 ParticleFeature::ParticleFeature(Backend& backend, const ParticleOptions& options, std::uint64_t seed)
     : backend_(backend), simulation_(options, seed) {
-    PipelineDesc p;
-    p.name = "particles (premultiplied)";
-    p.program = ProgramKind::Particle;
-    p.blend[0] = BlendState::premultipliedOver();  // seeds/003: one layer for alpha and additive
-    particlePipeline_ = backend.createPipeline(p);
-    p.name = "particles composite";
-    p.program = ProgramKind::LayerComposite;
-    compositePipeline_ = backend.createPipeline(p);
+    try {
+        particleProgram_ = backend.createProgram(particleProgram());
+        compositeProgram_ = backend.createProgram(layerCompositeProgram());
+        PipelineDesc p;
+        p.name = "particles (premultiplied)";
+        p.program = particleProgram_;
+        p.blend[0] = BlendState::premultipliedOver();  // [Turánszki 2017]: one layer for alpha and additive
+        particlePipeline_ = backend.createPipeline(p);
+        p.name = "particles composite";
+        p.program = compositeProgram_;
+        compositePipeline_ = backend.createPipeline(p);
+    } catch (...) {
+        destroyPrograms();
+        throw;
+    }
+}
+
+void ParticleFeature::destroyPrograms() {
+    for (PipelineHandle p : {particlePipeline_, compositePipeline_})
+        if (p) backend_.destroy(p);
+    for (ProgramHandle p : {particleProgram_, compositeProgram_})
+        if (p) backend_.destroy(p);
 }
 
 ParticleFeature::~ParticleFeature() {
     for (BufferHandle b : {vertices_, indices_})
         if (b) backend_.destroy(b);
     if (layer_) backend_.destroy(layer_);
-    backend_.destroy(particlePipeline_);
-    backend_.destroy(compositePipeline_);
+    destroyPrograms();
 }
 
 void ParticleFeature::registerSystems(engine::ecs::Scheduler& scheduler) {
@@ -44,7 +59,7 @@ void ParticleFeature::ensureLayer(int width, int height) {
     desc.name = "particle layer";
     desc.width = width;
     desc.height = height;
-    desc.format = Format::RGBA16F;  // HDR: additive spray may exceed 1 (seeds/003)
+    desc.format = Format::RGBA16F;  // HDR: additive spray may exceed 1 ([Turánszki 2017])
     desc.usage = UsageRenderTarget | UsageSampled;
     desc.alpha = AlphaMode::Premultiplied;
     layer_ = backend_.createTexture(desc);
@@ -103,7 +118,7 @@ void ParticleFeature::render(const engine::scene::FeatureFrame& frame) {
     PassDesc pass;
     pass.name = "particles";
     pass.color[0] = {layer_, LoadOp::Clear, glm::vec4(0.0f)};
-    backend_.beginPass(pass);
+    PassScope passScope(backend_, pass);
     DrawDesc d;
     d.pipeline = particlePipeline_;
     d.params = ParticleParams{frame.viewProj, frame.depth, stride, depthScale, depthOffset, o.softness, greater};
@@ -114,18 +129,18 @@ void ParticleFeature::render(const engine::scene::FeatureFrame& frame) {
     d.scissor = Rect{x0, y0, (region->x + region->width + stride - 1) / stride - x0 + 1,
                      (region->y + region->height + stride - 1) / stride - y0 + 1};
     backend_.draw(d);
-    backend_.endPass();
+    passScope.end();
 
     PassDesc composite;
     composite.name = "particles composite";
     composite.color[0] = {frame.color, LoadOp::Load};
-    backend_.beginPass(composite);
+    PassScope compositeScope(backend_, composite);
     DrawDesc c;
     c.pipeline = compositePipeline_;
     c.params = LayerCompositeParams{layer_, frame.depth, stride, depthScale, depthOffset, greater};
     c.scissor = region;
     backend_.draw(c);
-    backend_.endPass();
+    compositeScope.end();
 }
 
 }  // namespace particles

@@ -1,4 +1,4 @@
-// Plain alpha testing, the baseline SSAM replaces (seeds/000 §3.2, seeds/001): foliage drawn
+// Plain alpha testing, the baseline SSAM replaces ([Hathaway 2010] §3.2, [Moore 2015]): foliage drawn
 // into the opaque targets before their resolve, discarding fragments below the material's
 // alphaCutoff (glTF 2.0 alphaMode MASK) or one reference for all,
 // with depth test and write and no culling. Only RGB is written: the texture's alpha decides
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "techniques.hpp"
 
@@ -33,11 +34,11 @@ public:
         if (!visible.empty()) {
             PassDesc pass = opaque.loadPassDesc();
             pass.name = "foliage alpha test";
-            backend_.beginPass(pass);
+            PassScope passScope(backend_, pass);
             for (const FoliageDraw* draw : visible)
                 backend_.draw(batchDraw(draw->batch, pipelineFor(reference_.value_or(draw->alphaCutoff)),
                                         surfaceParams(frame, draw->batch)));
-            backend_.endPass();
+            passScope.end();
         }
         opaque.resolve();
     }
@@ -56,7 +57,7 @@ private:
             checkReference(reference, "alphaCutoff");
             PipelineDesc p;
             p.name = "foliage alpha test";
-            p.program = ProgramKind::FoliageColor;
+            p.program = ProgramKind::MaskedLit;
             p.depth = DepthState::testAndWrite(depthFunc_);
             p.raster.cull = CullMode::None;
             p.alphaTest = AlphaTest::discardBelow(reference);

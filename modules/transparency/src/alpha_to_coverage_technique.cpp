@@ -1,4 +1,4 @@
-// Alpha-to-coverage (seeds/001): the opaque pass runs at 4x MSAA and the foliage is drawn
+// Alpha-to-coverage ([Moore 2015]): the opaque pass runs at 4x MSAA and the foliage is drawn
 // into those targets with each fragment covering round(alpha * 4) of its samples (the
 // engine's deterministic rule, AlphaTest::alphaToCoverage), with depth test and write; the
 // resolve then averages the samples, so alpha becomes a 5-level coverage fraction.
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "techniques.hpp"
 
@@ -40,10 +41,10 @@ public:
                                     " sample(s); draw the opaque pass with opaqueSamples() = 4");
             PassDesc pass = opaque.loadPassDesc();
             pass.name = "foliage alpha-to-coverage";
-            backend_.beginPass(pass);
+            PassScope passScope(backend_, pass);
             for (const FoliageDraw* draw : visible)
                 backend_.draw(batchDraw(draw->batch, pipeline_, surfaceParams(frame, draw->batch)));
-            backend_.endPass();
+            passScope.end();
         }
         opaque.resolve();
     }

@@ -1,4 +1,4 @@
-// Straight-alpha blending sorted per object (seeds/001 "order dependence": sort back to
+// Straight-alpha blending sorted per object ([Moore 2015] "order dependence": sort back to
 // front, then blend "over"). An object is one instance: every visible instance is keyed by
 // the view depth of its bounds' centre, the instances are stable-sorted farthest first
 // (ties keep submission order: batch, then instance), and consecutive instances of the same
@@ -10,6 +10,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "techniques.hpp"
 
@@ -55,7 +56,7 @@ public:
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (visible.empty()) return;
         sort(frame, visible);
-        backend_.beginPass(resolvedPass(opaque, "foliage blend (sorted)"));
+        PassScope scope(backend_, resolvedPass(opaque, "foliage blend (sorted)"));
         std::size_t bufferIndex = 0;
         for (const Run& run : runs_) {
             const FoliageDraw& draw = *visible[run.draw];
@@ -64,7 +65,7 @@ public:
             d.instanceCount = static_cast<std::uint32_t>(run.count);
             backend_.draw(d);
         }
-        backend_.endPass();
+        scope.end();
     }
 
 private:

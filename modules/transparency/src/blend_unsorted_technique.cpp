@@ -1,8 +1,9 @@
-// Straight-alpha blending in submission order (seeds/002 "conventional" over, seeds/001
+// Straight-alpha blending in submission order ([Hargreaves 2009] "conventional" over, [Moore 2015]
 // "order dependence"): after the opaque resolve, every foliage fragment is blended
 // SRC_ALPHA / INV_SRC_ALPHA onto the frame, depth-tested against the opaque depth and
 // writing none, so nothing is discarded and the result is exact only where the draws
 // happen to arrive back to front. The frame's alpha is not written (it stays 1).
+#include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "techniques.hpp"
 
@@ -29,10 +30,10 @@ public:
         opaque.resolve();
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (visible.empty()) return;
-        backend_.beginPass(resolvedPass(opaque, "foliage blend (unsorted)"));
+        PassScope scope(backend_, resolvedPass(opaque, "foliage blend (unsorted)"));
         for (const FoliageDraw* draw : visible)
             backend_.draw(batchDraw(draw->batch, pipeline_, surfaceParams(frame, draw->batch)));
-        backend_.endPass();
+        scope.end();
     }
 
 private:

@@ -36,7 +36,7 @@ SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch&
 PipelineDesc foliagePipeline(const char* name) {
     PipelineDesc p;
     p.name = name;
-    p.program = ProgramKind::FoliageColor;
+    p.program = ProgramKind::MaskedLit;
     p.raster.cull = CullMode::None;
     return p;
 }
@@ -49,7 +49,7 @@ PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const char* name) {
     return pass;
 }
 
-DrawDesc batchDraw(const ssam::FoliageBatch& batch, PipelineHandle pipeline, ProgramParams params) {
+DrawDesc batchDraw(const ssam::FoliageBatch& batch, PipelineHandle pipeline, DrawParams params) {
     return ssam::foliageDraw(batch, pipeline, std::move(params));
 }
 

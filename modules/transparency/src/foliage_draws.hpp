@@ -9,16 +9,16 @@
 
 namespace transparency::detail {
 
-// The draws that can touch a width x height target, in submission order (seeds/000 §3.8).
+// The draws that can touch a width x height target, in submission order ([Hathaway 2010] §3.8).
 std::vector<const FoliageDraw*> visibleDraws(const FoliageFrame& frame, int width, int height);
 
 // The batches of every draw, for ssam::FoliageView.
 std::vector<ssam::FoliageBatch> batchesOf(const FoliageFrame& frame);
 
-// FoliageColor's parameters for one batch under the frame's camera and light.
+// MaskedLit's parameters for one batch under the frame's camera and light.
 engine::render::SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch& batch);
 
-// FoliageColor on both faces (foliage is double-sided), nothing else set: each technique
+// MaskedLit on both faces (foliage is double-sided), nothing else set: each technique
 // adds its depth, blend and alpha state.
 engine::render::PipelineDesc foliagePipeline(const char* name);
 
@@ -28,7 +28,7 @@ engine::render::PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const c
 
 // One draw of a batch (all its instances, or `instances`/`instanceCount` when given).
 engine::render::DrawDesc batchDraw(const ssam::FoliageBatch& batch, engine::render::PipelineHandle pipeline,
-                                   engine::render::ProgramParams params);
+                                   engine::render::DrawParams params);
 
 // SSAM's targets for captures, named as the racer's layers: mask (or mask_max + mask_add), foliage.
 std::vector<NamedTarget> ssamTargets(const ssam::Intermediates& targets);

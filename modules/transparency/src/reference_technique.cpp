@@ -1,9 +1,9 @@
 // The exact ground truth (DESIGN.md "Accuracy and the ground truth"): every foliage fragment
 // that passes the opaque depth test, none alpha-tested, sorted per pixel by depth and
-// composited front to back with straight-alpha "over" (seeds/002) onto the opaque colour.
+// composited front to back with straight-alpha "over" ([Hargreaves 2009]) onto the opaque colour.
 //
-// How: the soft backend's fragment capture (SoftBackend::setFragmentSink) runs the foliage
-// with FoliageColor, the program every other technique shades foliage with, so the
+// How: the soft backend's fragment capture (Backend::fragmentCapture, setFragmentSink) runs the foliage
+// with MaskedLit, the program every other technique shades foliage with, so the
 // reference differs from them only in how the fragments are combined. Each pixel's list
 // arrives in submission order (one thread per tile, triangles in order), is stable-sorted
 // nearest first, so fragments at exactly the same depth (coplanar, or crossing exactly at
@@ -28,8 +28,9 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
-#include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
+#include "ssam/composite_program.hpp"
 #include "ssam/screen_region.hpp"
 #include "techniques.hpp"
 
@@ -43,17 +44,17 @@ using namespace engine::render;
 // pixel lists only grow to the fragments they get).
 constexpr std::size_t kBandFragments = std::size_t(1) << 24;
 
-class BandSink final : public soft::FragmentSink {
+class BandSink final : public FragmentSink {
 public:
     BandSink(int width, int y0, int rows, std::size_t cap, CompareFunc func)
         : width_(width), y0_(y0), cap_(cap), func_(func), pixels_(std::size_t(width) * rows),
           counts_(std::size_t(width) * rows, 0) {}
 
-    void add(int x, int y, const soft::CapturedFragment& f) override {
+    void add(int x, int y, const CapturedFragment& f) override {
         if (!(f.color.a > 0.0f)) return;  // a = 0 (or NaN) changes nothing under "over"
         const std::size_t i = std::size_t(y - y0_) * width_ + x;
         ++counts_[i];
-        std::vector<soft::CapturedFragment>& list = pixels_[i];
+        std::vector<CapturedFragment>& list = pixels_[i];
         if (list.size() < cap_) {
             list.push_back(f);
             return;
@@ -66,14 +67,14 @@ public:
         if (isCloser(func_, f.depth, farthest->depth)) *farthest = f;
     }
 
-    std::vector<soft::CapturedFragment>& pixel(std::size_t i) { return pixels_[i]; }
+    std::vector<CapturedFragment>& pixel(std::size_t i) { return pixels_[i]; }
     std::uint64_t count(std::size_t i) const { return counts_[i]; }
 
 private:
     int width_, y0_;
     std::size_t cap_;
     CompareFunc func_;
-    std::vector<std::vector<soft::CapturedFragment>> pixels_;
+    std::vector<std::vector<CapturedFragment>> pixels_;
     std::vector<std::uint64_t> counts_;
 };
 
@@ -82,9 +83,9 @@ float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
 class ReferenceTechnique final : public Technique {
 public:
     ReferenceTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), soft_(dynamic_cast<soft::SoftBackend*>(&backend)), cap_(options.referenceFragmentsPerPixel),
+        : backend_(backend), fragments_(backend.fragmentCapture()), cap_(options.referenceFragmentsPerPixel),
           depthFunc_(options.ssam.depthFunc) {
-        if (!soft_)
+        if (!fragments_)
             throw engine::Error("reference: the exact reference needs the soft backend's fragment capture (backend '" +
                                 backend.name() + "'); render it with --backend soft and compare against that image");
         if (cap_ == 0) throw engine::Error("reference: referenceFragmentsPerPixel must be at least 1");
@@ -93,7 +94,9 @@ public:
         capture_ = backend_.createPipeline(capture);
         PipelineDesc composite;
         composite.name = "reference composite";
-        composite.program = ProgramKind::Composite;
+        // SSAM's composite program does "over" with (C, T) as (foliage, mask): see render().
+        compositeProgram_ = backend_.createProgram(ssam::compositeProgram());
+        composite.program = compositeProgram_;
         composite.blend[0] = {true, BlendFactor::One, BlendFactor::SrcAlpha, BlendOp::Add,
                               BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
         composite_ = backend_.createPipeline(composite);
@@ -102,6 +105,7 @@ public:
         destroyTargets();
         backend_.destroy(capture_);
         backend_.destroy(composite_);
+        backend_.destroy(compositeProgram_);
     }
 
     TechniqueKind kind() const override { return TechniqueKind::Reference; }
@@ -125,20 +129,20 @@ public:
         for (int y0 = region.y; y0 < region.y + region.height; y0 += bandRows) {
             const int rows = std::min(bandRows, region.y + region.height - y0);
             BandSink sink(width, y0, rows, cap_, depthFunc_);
-            soft_->setFragmentSink(&sink);
+            fragments_->setFragmentSink(&sink);
             try {
-                backend_.beginPass(resolvedPass(opaque, "reference capture"));
+                PassScope scope(backend_, resolvedPass(opaque, "reference capture"));
                 for (const FoliageDraw* draw : visible) {
                     DrawDesc d = batchDraw(draw->batch, capture_, surfaceParams(frame, draw->batch));
                     d.scissor = Rect{region.x, y0, region.width, rows};
                     backend_.draw(d);
                 }
-                backend_.endPass();
+                scope.end();
             } catch (...) {
-                soft_->setFragmentSink(nullptr);
+                fragments_->setFragmentSink(nullptr);
                 throw;
             }
-            soft_->setFragmentSink(nullptr);
+            fragments_->setFragmentSink(nullptr);
             compositeBand(sink, width, y0, rows, color, transmittance);
         }
         if (report_.pixelsOverCap > 0)
@@ -150,15 +154,15 @@ public:
         PassDesc pass;
         pass.name = "reference composite";
         pass.color[0] = {opaque.color(), LoadOp::Load};
-        backend_.beginPass(pass);
+        PassScope passScope(backend_, pass);
         DrawDesc d;
         d.pipeline = composite_;
         // out = (C, T) blended ONE / SRC_ALPHA: C + T * opaque. mask = maskAdd = T gives
         // lerp(T, T, .) = T exactly.
-        d.params = CompositeParams{colorTexture_, transmittanceTexture_, transmittanceTexture_, 0.0f, false};
+        d.params = ssam::CompositeParams{colorTexture_, transmittanceTexture_, transmittanceTexture_, 0.0f, false};
         d.scissor = region;
         backend_.draw(d);
-        backend_.endPass();
+        passScope.end();
     }
 
     std::vector<NamedTarget> intermediates() const override {
@@ -173,7 +177,7 @@ private:
         for (int y = 0; y < rows; ++y)
             for (int x = 0; x < width; ++x) {
                 const std::size_t i = std::size_t(y) * width + x;
-                std::vector<soft::CapturedFragment>& list = sink.pixel(i);
+                std::vector<CapturedFragment>& list = sink.pixel(i);
                 const std::uint64_t count = sink.count(i);
                 if (count == 0) continue;
                 report_.maxFragmentsPerPixel = std::max<std::size_t>(report_.maxFragmentsPerPixel, count);
@@ -187,7 +191,7 @@ private:
                 });
                 glm::vec3 c(0.0f);
                 float t = 1.0f;
-                for (const soft::CapturedFragment& f : list) {
+                for (const CapturedFragment& f : list) {
                     const float a = clamp01(f.color.a);
                     glm::vec3 rgb(f.color);
                     for (int k = 0; k < 3; ++k)
@@ -226,10 +230,11 @@ private:
     }
 
     Backend& backend_;
-    soft::SoftBackend* soft_;
+    FragmentCapture* fragments_;  // the backend's (Backend::fragmentCapture)
     std::size_t cap_;
     CompareFunc depthFunc_;
     PipelineHandle capture_, composite_;
+    ProgramHandle compositeProgram_;
     TextureHandle colorTexture_, transmittanceTexture_;
     ReferenceReport report_;
 };

@@ -1,20 +1,23 @@
-// SSAM+ (README "SSAM+"): SSAM's mask pass and colour pass unchanged (seeds/000 §3.5.2,
+// SSAM+ (README "SSAM+"): SSAM's mask pass and colour pass unchanged ([Hathaway 2010] §3.5.2,
 // §3.5.3, run by ssam::ScreenSpaceAlphaMask), with two changes measured against the exact
 // reference (modules/transparency README / report):
 //   - the mask is stored in floats (two R16F targets by default: the memory of one RGBA8
 //     mask plus one, and the same error as RGBA16F), so the ADD mask keeps counting past 1
 //     instead of saturating;
 //   - the composite estimates the pixel's covered fraction 1 - prod(1 - a_i) from the two
-//     masks (program.hpp CoverageModel; by default n = ADD / MAX layers of alpha MAX:
+//     masks (programs.hpp CoverageModel; by default n = ADD / MAX layers of alpha MAX:
 //     1 - (1 - MAX)^(ADD / MAX)) where the paper uses lerp(MAX, ADD, 0.85) squared, a
 //     hand-tuned stand-in for the same quantity (§3.5.4, §3.6.2).
 // Same passes, same geometry work; the composite does a pow() per pixel more.
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/owned.hpp"
+#include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "ssam/ssam.hpp"
 #include "techniques.hpp"
+#include "transparency/programs.hpp"
 
 namespace transparency::detail {
 
@@ -38,12 +41,12 @@ public:
             throw engine::Error("ssam-plus: unknown coverage model " + std::to_string(int(model_)));
         PipelineDesc composite;
         composite.name = "ssam+ composite";
-        composite.program = ProgramKind::CoverageComposite;
+        program_ = {backend_, backend_.createProgram(coverageCompositeProgram())};
+        composite.program = program_.get();
         composite.blend[0] = {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
                               BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteAll};
-        composite_ = backend_.createPipeline(composite);
+        composite_ = {backend_, backend_.createPipeline(composite)};
     }
-    ~SsamPlusTechnique() override { backend_.destroy(composite_); }
 
     TechniqueKind kind() const override { return TechniqueKind::SsamPlus; }
 
@@ -60,13 +63,13 @@ public:
         PassDesc pass;
         pass.name = "ssam+ composite";
         pass.color[0] = {opaque.color(), LoadOp::Load};
-        backend_.beginPass(pass);
+        PassScope passScope(backend_, pass);
         DrawDesc d;
         d.pipeline = composite_;
         d.params = CoverageCompositeParams{t.foliage, t.mask, t.maskAdd, model_};
         d.scissor = plan.compositeRegion;
         backend_.draw(d);
-        backend_.endPass();
+        passScope.end();
     }
 
     std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
@@ -75,7 +78,8 @@ private:
     Backend& backend_;
     ssam::ScreenSpaceAlphaMask ssam_;
     CoverageModel model_;
-    PipelineHandle composite_;
+    Owned<ProgramHandle> program_;  // programs.hpp coverageCompositeProgram
+    Owned<PipelineHandle> composite_;
     std::vector<ssam::FoliageBatch> batches_;
 };
 

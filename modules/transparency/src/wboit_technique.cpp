@@ -8,15 +8,18 @@
 // Both geometry passes depth-test against the opaque depth and write none. The paper
 // writes accumulation and revealage from one pass into two targets (MRT); here every
 // program writes one colour to all its targets, so revealage is a second pass with the
-// alpha-only program (FoliageAlpha, the same alpha FoliageColor computes). The result is
+// alpha-only program (AlphaOnly, the same alpha MaskedLit computes). The result is
 // the same; the cost is a second geometry pass.
 #include <cmath>
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/owned.hpp"
+#include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "ssam/screen_region.hpp"
 #include "techniques.hpp"
+#include "transparency/programs.hpp"
 
 namespace transparency::detail {
 
@@ -27,33 +30,34 @@ using namespace engine::render;
 class WboitTechnique final : public Technique {
 public:
     WboitTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), depthScale_(options.wboitDepthScale) {
+        : backend_(backend), depthScale_(options.wboitDepthScale),
+          accumulateProgram_(backend, backend.createProgram(wboitAccumulateProgram())),
+          resolveProgram_(backend, backend.createProgram(wboitResolveProgram())) {
         if (!(std::isfinite(depthScale_) && depthScale_ > 0.0f))
             throw engine::Error("wboit: wboitDepthScale " + std::to_string(depthScale_) + " must be finite and > 0");
         PipelineDesc accumulate = foliagePipeline("wboit accumulate");
-        accumulate.program = ProgramKind::WboitAccumulate;
+        accumulate.program = accumulateProgram_.get();
         accumulate.depth = DepthState::testOnly(options.ssam.depthFunc);
         accumulate.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
                                BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
-        accumulatePipeline_ = backend_.createPipeline(accumulate);
+        accumulatePipeline_ = {backend_, backend_.createPipeline(accumulate)};
 
         PipelineDesc revealage = foliagePipeline("wboit revealage");
-        revealage.program = ProgramKind::FoliageAlpha;
+        revealage.program = ProgramKind::AlphaOnly;
         revealage.depth = DepthState::testOnly(options.ssam.depthFunc);
         revealage.blend[0] = {true, BlendFactor::Zero, BlendFactor::InvSrcAlpha, BlendOp::Add,
                               BlendFactor::Zero, BlendFactor::InvSrcAlpha, BlendOp::Add, WriteAll};
-        revealagePipeline_ = backend_.createPipeline(revealage);
+        revealagePipeline_ = {backend_, backend_.createPipeline(revealage)};
 
         PipelineDesc resolve;
         resolve.name = "wboit resolve";
-        resolve.program = ProgramKind::WboitResolve;
+        resolve.program = resolveProgram_.get();
         resolve.blend[0] = {true, BlendFactor::InvSrcAlpha, BlendFactor::SrcAlpha, BlendOp::Add,
                             BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
-        resolvePipeline_ = backend_.createPipeline(resolve);
+        resolvePipeline_ = {backend_, backend_.createPipeline(resolve)};
     }
     ~WboitTechnique() override {
         destroyTargets();
-        for (PipelineHandle p : {accumulatePipeline_, revealagePipeline_, resolvePipeline_}) backend_.destroy(p);
     }
 
     TechniqueKind kind() const override { return TechniqueKind::Wboit; }
@@ -73,19 +77,19 @@ public:
         accumulate.name = "wboit accumulate";
         accumulate.color[0] = {accumulation_, LoadOp::Clear, glm::vec4(0.0f)};
         accumulate.depth = {opaque.depth(), LoadOp::Load};
-        backend_.beginPass(accumulate);
+        PassScope accumulateScope(backend_, accumulate);
         for (const FoliageDraw* draw : visible) {
             const ssam::FoliageBatch& b = draw->batch;
             WboitAccumulateParams params{frame.viewProj, b.baseColorFactor, b.baseColor, frame.light, depthScale_};
             backend_.draw(batchDraw(b, accumulatePipeline_, params));
         }
-        backend_.endPass();
+        accumulateScope.end();
 
         PassDesc reveal;
         reveal.name = "wboit revealage";
         reveal.color[0] = {revealageTarget_, LoadOp::Clear, glm::vec4(1.0f)};
         reveal.depth = {opaque.depth(), LoadOp::Load};
-        backend_.beginPass(reveal);
+        PassScope revealScope(backend_, reveal);
         for (const FoliageDraw* draw : visible) {
             const ssam::FoliageBatch& b = draw->batch;
             AlphaOnlyParams params;
@@ -94,18 +98,18 @@ public:
             params.baseColor = b.baseColor;
             backend_.draw(batchDraw(b, revealagePipeline_, params));
         }
-        backend_.endPass();
+        revealScope.end();
 
         PassDesc composite;
         composite.name = "wboit resolve";
         composite.color[0] = {opaque.color(), LoadOp::Load};
-        backend_.beginPass(composite);
+        PassScope compositeScope(backend_, composite);
         DrawDesc d;
         d.pipeline = resolvePipeline_;
         d.params = WboitResolveParams{accumulation_, revealageTarget_};
         d.scissor = region;
         backend_.draw(d);
-        backend_.endPass();
+        compositeScope.end();
     }
 
     std::vector<NamedTarget> intermediates() const override {
@@ -134,7 +138,8 @@ private:
 
     Backend& backend_;
     float depthScale_;
-    PipelineHandle accumulatePipeline_, revealagePipeline_, resolvePipeline_;
+    Owned<ProgramHandle> accumulateProgram_, resolveProgram_;  // programs.hpp
+    Owned<PipelineHandle> accumulatePipeline_, revealagePipeline_, resolvePipeline_;
     TextureHandle accumulation_, revealageTarget_;
     int width_ = 0, height_ = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "engine/render/pass_scope.hpp"
 #include "engine/scene/components.hpp"
 
 namespace water {
@@ -94,7 +95,7 @@ PipelineHandle WaterFeature::pipeline(CompareFunc depthFunc, bool doubleSided) {
         PipelineDesc p;
         p.name = doubleSided ? "water (blend over)" : "water (blend over, culled)";
         p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;  // glTF doubleSided (§3.9.6)
-        p.program = ProgramKind::FoliageColor;  // double-sided lit, straight alpha out
+        p.program = ProgramKind::MaskedLit;  // double-sided lit, straight alpha out
         p.blend[0] = BlendState::alphaOver();
         p.depth = DepthState::testOnly(depthFunc);
         it->second = library_.backend().createPipeline(p);
@@ -111,7 +112,7 @@ void WaterFeature::render(const scene::FeatureFrame& frame) {
     pass.name = "water";
     pass.color[0] = {frame.color, LoadOp::Load};
     pass.depth = {frame.depth, LoadOp::Load};
-    backend.beginPass(pass);
+    PassScope passScope(backend, pass);
     for (const scene::DrawBatch& b : frame.lists.blend) {  // already back to front
         const scene::MeshPart& part = frame.library.part(b.part);
         const auto bytes = std::as_bytes(std::span(b.instances));
@@ -132,7 +133,7 @@ void WaterFeature::render(const scene::FeatureFrame& frame) {
         d.instanceCount = std::uint32_t(b.instances.size());
         backend.draw(d);
     }
-    backend.endPass();
+    passScope.end();
 }
 
 }  // namespace water

@@ -1,5 +1,5 @@
 #pragma once
-// Every knob of the paper (seeds/000), with Pure's values as defaults where the paper
+// Every knob of the paper ([Hathaway 2010]), with Pure's values as defaults where the paper
 // gives them.
 #include <cstdint>
 

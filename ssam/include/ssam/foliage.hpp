@@ -34,7 +34,7 @@ struct FoliageBatch {
 // The draw of one batch with a pipeline and its parameters (SSAM's passes and the other
 // foliage techniques draw batches the same way).
 engine::render::DrawDesc foliageDraw(const FoliageBatch& batch, engine::render::PipelineHandle pipeline,
-                                     engine::render::ProgramParams params);
+                                     engine::render::DrawParams params);
 
 struct FoliageView {
     glm::mat4 viewProj{1.0f};

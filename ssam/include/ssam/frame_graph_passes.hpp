@@ -2,7 +2,7 @@
 // SSAM as a frame-graph pass group (DESIGN.md "Data flow of one frame", Falcor-style
 // reflection of inputs and outputs): reads the opaque colour and depth, writes the
 // composited colour and the foliage depth that later passes (grass, water, particles,
-// light shafts) depth-test against (seeds/000 §3.7).
+// light shafts) depth-test against ([Hathaway 2010] §3.7).
 //
 // With no foliage in view the mask and colour passes declare themselves empty, so the
 // composite (which reads their outputs) is skipped too and the colour and depth flow

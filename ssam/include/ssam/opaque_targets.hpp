@@ -1,5 +1,5 @@
 #pragma once
-// The opaque pass's targets (seeds/000 §3.5.1): rt_opaque and rt_depth at screen
+// The opaque pass's targets ([Hathaway 2010] §3.5.1): rt_opaque and rt_depth at screen
 // resolution, optionally rendered at 2x/4x MSAA and resolved with colour averaged and
 // depth taking the sample closest to the observer (averaged depth would invent surfaces
 // between foreground and background; §3.5.1, Cantlay).

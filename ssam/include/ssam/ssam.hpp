@@ -1,5 +1,5 @@
 #pragma once
-// Screen-Space Alpha Masking (seeds/000, "Alpha Blending as a Post-Process", as shipped in
+// Screen-Space Alpha Masking ([Hathaway 2010], "Alpha Blending as a Post-Process", as shipped in
 // Pure). After the engine's opaque pass:
 //   1. mask pass    rt_mask    <- foliage alpha only; RGB = MAX, A = ADD, all ONE (Table 3.1);
 //                                 depth test against rt_depth, no depth write, no culling,
@@ -71,14 +71,19 @@ public:
     engine::render::Backend& backend() const { return backend_; }
 
 private:
-    void createPipelines();
-    void destroyPipelines();
+    struct Pipelines {
+        engine::render::PipelineHandle mask, color, composite;
+    };
+    // All three for `config`, or none: a create that throws destroys those made before it.
+    Pipelines createPipelines(const Config& config);
+    void destroy(const Pipelines& pipelines);
     void ensureTargets(int width, int height, engine::render::Format foliageFormat);
     void destroyTargets();
 
     engine::render::Backend& backend_;
     Config config_;
-    engine::render::PipelineHandle maskPipeline_, colorPipeline_, compositePipeline_;
+    engine::render::ProgramHandle compositeProgram_;  // composite_program.hpp
+    Pipelines pipelines_;
     engine::render::TextureHandle mask_, maskAdd_, foliage_;
     int width_ = 0, height_ = 0;
     std::optional<engine::render::Format> foliageFormat_;

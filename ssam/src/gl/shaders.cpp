@@ -27,7 +27,7 @@ void main() {
 }
 )";
 
-// seeds/000 Listing 3.1 / §3.5.2: only the alpha (no lighting, no colour fetch), saturated and
+// [Hathaway 2010] Listing 3.1 / §3.5.2: only the alpha (no lighting, no colour fetch), saturated and
 // replicated to every channel of both draw buffers (RG16F precision: MAX target, ADD target).
 // Nothing is rejected: the mask pass's alpha reference is 0.
 const char* const kMaskFragment = R"(#version 330 core

@@ -1,5 +1,5 @@
 #pragma once
-// GLSL 3.30 core sources of ssam_gl's three programs (seeds/000 Listings 3.1 and 3.2).
+// GLSL 3.30 core sources of ssam_gl's three programs ([Hathaway 2010] Listings 3.1 and 3.2).
 namespace ssam::gl::shaders {
 
 extern const char* const kFoliageVertex;     // shared by the mask and colour programs

@@ -4,14 +4,14 @@
 //   DepthOnly     8 full-screen quads at decreasing depth, no colour target, Less + write,
 //                 depth cleared each pass (the clear is part of the measured pass)
 //   FlatFill      8 full-screen opaque Flat quads into RGBA8 (load, no depth)
-//   TexturedAlpha 4 full-screen FoliageColor quads, 256^2 RGBA8 mipmapped texture
+//   TexturedAlpha 4 full-screen MaskedLit quads, 256^2 RGBA8 mipmapped texture
 //                 (trilinear), alpha test discarding below 0.5 (about half the texels)
 //   BlendFill     8 full-screen alpha-over quads (alpha 0.5) into RGBA8
-//   SsamMask      SSAM's mask pass (seeds/000 §3.5.2): 8 receding foliage layers under a
-//                 perspective camera, FoliageAlpha with the 256^2 texture (trilinear,
+//   SsamMask      SSAM's mask pass ([Hathaway 2010] §3.5.2): 8 receding foliage layers under a
+//                 perspective camera, AlphaOnly with the 256^2 texture (trilinear,
 //                 repeated 4x), MAX/ADD ONE/ONE blend into RGBA8, depth test without write
 //                 (every layer is shaded: the pass's cost scales with depth complexity)
-//   SsamColor     the same layers through SSAM's colour pass (§3.5.3): FoliageColor, alpha
+//   SsamColor     the same layers through SSAM's colour pass (§3.5.3): MaskedLit, alpha
 //                 test at 64/255, depth test and write, into RGBA8
 //   SsamMaskFar, SsamColorFar
 //                 the same two passes with the texture repeated 16x instead of 4x: minified
@@ -53,6 +53,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/render/soft/soft_backend.hpp"
+#include "ssam/composite_program.hpp"
+#include "transparency/programs.hpp"
 #include "engine/render/vertex.hpp"
 
 namespace {
@@ -142,7 +144,7 @@ std::unique_ptr<soft::SoftBackend> makeBackend(const benchmark::State& state) {
 }
 
 void draw(render::Backend& b, render::PipelineHandle p, render::BufferHandle vb, std::uint32_t count,
-          const render::ProgramParams& params) {
+          const render::DrawParams& params) {
     render::DrawDesc d;
     d.pipeline = p;
     d.params = params;
@@ -207,7 +209,7 @@ void BM_TexturedAlpha(benchmark::State& state) {
     for (int i = 0; i < 4; ++i) appendQuad(quads, 0.5f);
     const auto vb = vertexBuffer(b, quads);
     render::PipelineDesc pd;
-    pd.program = render::ProgramKind::FoliageColor;
+    pd.program = render::ProgramKind::MaskedLit;
     pd.alphaTest = render::AlphaTest::discardBelow(0.5f);
     const auto pipeline = b.createPipeline(pd);
     render::SurfaceParams params;
@@ -262,11 +264,11 @@ void ssamPass(benchmark::State& state, bool mask, float repeats, MaskTargets tar
     const auto vb = vertexBuffer(b, layers.vertices);
     render::PipelineDesc pd;
     pd.raster.cull = render::CullMode::None;
-    render::ProgramParams params;
+    render::DrawParams params;
     if (mask) {
-        pd.program = render::ProgramKind::FoliageAlpha;
+        pd.program = render::ProgramKind::AlphaOnly;
         pd.depth = render::DepthState::testOnly(render::CompareFunc::Less);
-        pd.blend[0] = render::BlendState::ssamMask();
+        pd.blend[0] = render::BlendState::maxRgbAddAlpha();
         if (maskAdd) {  // as ssam::ScreenSpaceAlphaMask splits it: MAX into one, ADD into the other
             pd.blend[0] = {true, render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Max,
                            render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Max, render::WriteAll};
@@ -278,7 +280,7 @@ void ssamPass(benchmark::State& state, bool mask, float repeats, MaskTargets tar
         p.baseColor = {texture, {}};
         params = p;
     } else {
-        pd.program = render::ProgramKind::FoliageColor;
+        pd.program = render::ProgramKind::MaskedLit;
         pd.depth = render::DepthState::testAndWrite(render::CompareFunc::Less);
         pd.alphaTest = render::AlphaTest::discardBelow(64.0f / 255.0f);
         render::SurfaceParams p;
@@ -340,11 +342,11 @@ void BM_SsamComposite(benchmark::State& state) {
         t[3] = 255;
     });
     render::PipelineDesc pd;
-    pd.program = render::ProgramKind::Composite;
+    pd.program = b.createProgram(ssam::compositeProgram());
     pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
                    render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
     const auto pipeline = b.createPipeline(pd);
-    render::CompositeParams params;
+    ssam::CompositeParams params;
     params.foliage = foliage;
     params.mask = mask;
     render::PassDesc pass;
@@ -394,7 +396,7 @@ void BM_SsamPlusComposite(benchmark::State& state) {
         t[3] = 255;
     });
     render::PipelineDesc pd;
-    pd.program = render::ProgramKind::CoverageComposite;
+    pd.program = b.createProgram(transparency::coverageCompositeProgram());
     pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
                    render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
     const auto pipeline = b.createPipeline(pd);
@@ -405,7 +407,7 @@ void BM_SsamPlusComposite(benchmark::State& state) {
         b.beginPass(pass);
         render::DrawDesc d;
         d.pipeline = pipeline;
-        d.params = render::CoverageCompositeParams{foliage, mask, maskAdd, render::CoverageModel::EqualLayers};
+        d.params = transparency::CoverageCompositeParams{foliage, mask, maskAdd, transparency::CoverageModel::EqualLayers};
         b.draw(d);
         b.endPass();
     });

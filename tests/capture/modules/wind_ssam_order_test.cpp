@@ -1,4 +1,4 @@
-// seeds/000 §3.3: wind and collisions make neighbouring trees "overlap rather unpredictably",
+// [Hathaway 2010] §3.3: wind and collisions make neighbouring trees "overlap rather unpredictably",
 // which no offline sort can handle. SSAM needs no sorting (§3.5, §3.8): here two content
 // trees are deformed by modules/wind (sway, gusts, flutter, and a collider pushing through
 // both crowns) until they interpenetrate, and the SSAM frame drawn with the trees in one
@@ -105,7 +105,7 @@ struct TwoTrees {
         if (unsortedBlend) {
             PipelineDesc p;
             p.name = "unsorted blend";
-            p.program = ProgramKind::FoliageColor;
+            p.program = ProgramKind::MaskedLit;
             p.blend[0] = BlendState::alphaOver();
             p.depth = DepthState::testOnly(CompareFunc::Greater);
             const PipelineHandle pipeline = backend->createPipeline(p);

@@ -208,7 +208,7 @@ INSTANTIATE_TEST_SUITE_P(Formats, GlBlendVsSoft,
                              return std::string(render::formatName(info.param));
                          });
 
-// The SSAM mask (seeds/000 Table 3.1: RGB MAX, A ADD) accumulated over overlapping layers,
+// The SSAM mask ([Hathaway 2010] Table 3.1: RGB MAX, A ADD) accumulated over overlapping layers,
 // into one RGBA target and into the split RG16F/R16F pair.
 TEST(GlVsSoft, SsamMaskBlend) {
     auto soft = softBackend();
@@ -230,8 +230,8 @@ TEST(GlVsSoft, SsamMaskBlend) {
                 const auto vb = vertices(b, v);
                 render::PipelineDesc desc;
                 desc.name = "mask";
-                desc.program = render::ProgramKind::FoliageAlpha;
-                desc.blend.fill(BlendState::ssamMask());
+                desc.program = render::ProgramKind::AlphaOnly;
+                desc.blend.fill(BlendState::maxRgbAddAlpha());
                 const auto p = b.createPipeline(desc);
                 render::PassDesc pass;
                 pass.name = "mask";

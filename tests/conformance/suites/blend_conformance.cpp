@@ -210,7 +210,7 @@ TEST_P(BlendConformance, DisabledStoresSource) {
 // destination bit for bit, the others get the blended value.
 TEST_P(BlendConformance, PerChannelWriteMasks) {
     const BlendState states[] = {BlendState::opaque(), BlendState::alphaOver(), BlendState::premultipliedOver(),
-                                 BlendState::ssamMask()};
+                                 BlendState::maxRgbAddAlpha()};
     std::uint64_t combinations = 0;
     for (Format format : {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::RGBA16F, Format::RGBA32F}) {
         BlendRig rig(gfx(), format);

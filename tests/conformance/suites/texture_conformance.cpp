@@ -4,7 +4,7 @@
 // filtering. The references follow GL 4.5 §8.14 (texture minification: rho, lambda, the
 // LINEAR_MIPMAP_LINEAR blend) and §8.14.2 (wrap modes), written here independently.
 //
-// The FoliageColor program with ambient 1 and no directional light outputs the (straight)
+// The MaskedLit program with ambient 1 and no directional light outputs the (straight)
 // texel itself, alpha included, so a textured quad into an RGBA32F target reads the filter
 // result back unchanged.
 #include <algorithm>
@@ -87,7 +87,7 @@ public:
     // A quad over the whole width x height RGBA32F target, uv (u0, v0) at the top-left corner
     // and (u1, v1) at the bottom-right, drawn with `program` sampling `texture`.
     render::Readback draw(int width, int height, render::TextureHandle texture, SamplerState sampler, glm::vec2 uv0,
-                          glm::vec2 uv1, ProgramKind program = ProgramKind::FoliageColor) {
+                          glm::vec2 uv1, ProgramKind program = ProgramKind::MaskedLit) {
         std::vector<render::Vertex> quad = pixelRect(width, height, 0, 0, float(width), float(height));
         for (render::Vertex& v : quad) v.uv = uv0 + (uv1 - uv0) * v.uv;
         const render::TextureHandle target = outputTarget(width, height);

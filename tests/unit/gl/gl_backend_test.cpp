@@ -13,6 +13,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "ssam/composite_program.hpp"
 
 namespace ssam::test {
 namespace {
@@ -200,7 +201,7 @@ TEST_F(GlBackendTest, WindingAndCullingMatchSoft) {
                 const auto vb = vertices(*b, v);
                 render::PipelineDesc pd;
                 pd.name = "winding";
-                pd.program = render::ProgramKind::FoliageColor;  // double-sided lighting shows facing
+                pd.program = render::ProgramKind::MaskedLit;  // double-sided lighting shows facing
                 pd.raster = {cull, front};
                 const auto p = b->createPipeline(pd);
                 onePass(*b, t, glm::vec4(0.0f), [&] {
@@ -249,7 +250,7 @@ TEST_F(GlBackendTest, MultipleTargetsMatchSoft) {
         render::PipelineDesc pd;
         pd.name = "mrt";
         pd.blend[0] = render::BlendState::alphaOver();
-        pd.blend[1] = render::BlendState::ssamMask();
+        pd.blend[1] = render::BlendState::maxRgbAddAlpha();
         pd.blend[2] = render::BlendState::premultipliedOver();
         pd.blend[2].writeMask = render::WriteR;
         const auto p = b->createPipeline(pd);
@@ -333,7 +334,7 @@ TEST_F(GlBackendTest, CompositeMatchesSoft) {
         const auto out = target(*b, w, h, Format::RGBA8_SRGB, 1, "out");
         render::PipelineDesc pd;
         pd.name = "composite";
-        pd.program = render::ProgramKind::Composite;
+        pd.program = b->createProgram(ssam::compositeProgram());
         pd.blend[0] = render::BlendState::alphaOver();
         const auto p = b->createPipeline(pd);
         render::PassDesc pass;
@@ -342,10 +343,10 @@ TEST_F(GlBackendTest, CompositeMatchesSoft) {
         b->beginPass(pass);
         render::DrawDesc d;
         d.pipeline = p;
-        d.params = render::CompositeParams{foliage, mask, {}, 0.85f, true};
+        d.params = ssam::CompositeParams{foliage, mask, {}, 0.85f, true};
         d.scissor = render::Rect{0, 0, 6, 3};
         b->draw(d);
-        d.params = render::CompositeParams{foliage, mask, maskAdd, 0.5f, false};
+        d.params = ssam::CompositeParams{foliage, mask, maskAdd, 0.5f, false};
         d.scissor = render::Rect{0, 3, 6, 2};
         b->draw(d);
         b->endPass();

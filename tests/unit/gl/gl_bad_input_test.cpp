@@ -14,6 +14,7 @@
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/gl/gl_program.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "ssam/composite_program.hpp"
 
 namespace ssam::test {
 namespace {
@@ -212,7 +213,7 @@ const Misuse kMisuses[] = {
      [](Rig& r) {
          render::PipelineDesc pd;
          pd.name = "composite";
-         pd.program = render::ProgramKind::Composite;
+         pd.program = r.backend->createProgram(ssam::compositeProgram());
          pd.depth = render::DepthState::testOnly();
          r.backend->createPipeline(pd);
      }},

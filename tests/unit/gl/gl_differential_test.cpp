@@ -2,8 +2,8 @@
 // backend, compared target by target, pixel by pixel.
 //
 // A scene is an SSAM-shaped frame: an opaque pass (Flat and OpaqueLit, textured with every
-// filter and address mode, instanced, culled, scissored), the foliage mask pass (FoliageAlpha,
-// SSAM mask blend RGB MAX + A ADD), the foliage colour pass (FoliageColor, alpha-tested,
+// filter and address mode, instanced, culled, scissored), the foliage mask pass (AlphaOnly,
+// SSAM mask blend RGB MAX + A ADD), the foliage colour pass (MaskedLit, alpha-tested,
 // depth-writing), the composite (full-screen, SRC_ALPHA / INV_SRC_ALPHA), and a "zoo" pass in its
 // own target: Flat triangles with random blend factors, ops, constants, write masks, depth
 // functions and GS alpha tests (every function and fail mode). Colour targets are RGBA8, sRGB,
@@ -59,6 +59,7 @@
 #include "../../conformance/backend_fixture.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "ssam/composite_program.hpp"
 
 namespace ssam::test {
 namespace {
@@ -85,7 +86,7 @@ struct TextureSpec {
 
 struct DrawSpec {
     render::PipelineDesc pipeline;
-    render::ProgramParams params;  // texture handles are indices into Scene::textures (+1), resolved per backend
+    render::DrawParams params;  // texture handles are indices into Scene::textures (+1), resolved per backend
     std::vector<render::Vertex> vertices;
     std::vector<render::Instance> instances;  // empty: none
     std::optional<render::Rect> scissor;
@@ -117,7 +118,7 @@ struct Scene {
     std::vector<int> compared;  // targets read back and compared
 };
 
-// Texture references inside ProgramParams are stored as TextureHandle{index + 1, 1} and mapped
+// Texture references inside DrawParams are stored as TextureHandle{index + 1, 1} and mapped
 // to real handles when a backend runs the scene; render targets are offset by kTargetRef.
 constexpr std::uint32_t kTargetRef = 1000;
 render::TextureHandle textureRef(int index) { return {std::uint32_t(index + 1), 1}; }
@@ -201,7 +202,7 @@ public:
         }
         s.passes.push_back(opaque);
 
-        // 2. SSAM mask: FoliageAlpha, RGB MAX + A ADD, depth tested against the opaque depth.
+        // 2. SSAM mask: AlphaOnly, RGB MAX + A ADD, depth tested against the opaque depth.
         PassSpec mask;
         mask.name = "mask";
         mask.colors = {kMask};
@@ -214,8 +215,8 @@ public:
             std::vector<render::Vertex> v = triangles(randomInt(1, 3), false);
             DrawSpec m;
             m.pipeline.name = "mask" + std::to_string(i);
-            m.pipeline.program = render::ProgramKind::FoliageAlpha;
-            m.pipeline.blend[0] = BlendState::ssamMask();
+            m.pipeline.program = render::ProgramKind::AlphaOnly;
+            m.pipeline.blend[0] = BlendState::maxRgbAddAlpha();
             m.pipeline.depth = render::DepthState::testOnly(CompareFunc::LessEqual);
             render::AlphaOnlyParams ap;
             ap.viewProj = projection(depth);
@@ -227,7 +228,7 @@ public:
 
             DrawSpec f;
             f.pipeline.name = "foliage" + std::to_string(i);
-            f.pipeline.program = render::ProgramKind::FoliageColor;
+            f.pipeline.program = render::ProgramKind::MaskedLit;
             f.pipeline.depth = render::DepthState::testAndWrite(CompareFunc::LessEqual);
             f.pipeline.alphaTest = render::AlphaTest::discardBelow(0.5f);
             render::SurfaceParams sp;
@@ -265,9 +266,8 @@ public:
         composite.clearColor = false;
         DrawSpec c;
         c.pipeline.name = "composite";
-        c.pipeline.program = render::ProgramKind::Composite;
         c.pipeline.blend[0] = BlendState::alphaOver();
-        c.params = render::CompositeParams{targetRef(msaa ? kFoliageResolved : kFoliageColor),
+        c.params = ssam::CompositeParams{targetRef(msaa ? kFoliageResolved : kFoliageColor),
                                            targetRef(msaa ? kMaskResolved : kMask), {}, 0.85f, true};
         composite.draws.push_back(c);
         s.passes.push_back(composite);
@@ -504,6 +504,7 @@ std::vector<render::Readback> run(render::Backend& b, const Scene& s, const std:
         if (!h) return h;
         return h.index >= kTargetRef ? targets[h.index - kTargetRef] : textures[h.index - 1];
     };
+    render::ProgramHandle composite;  // ssam's composite, made on this backend when a draw needs it
     std::size_t drawIndex = 0;
     for (const PassSpec& p : s.passes) {
         render::PassDesc pass;
@@ -516,21 +517,29 @@ std::vector<render::Readback> run(render::Backend& b, const Scene& s, const std:
         for (const DrawSpec& d : p.draws) {
             if (!drawEnabled[drawIndex++]) continue;
             render::DrawDesc dd;
-            dd.pipeline = b.createPipeline(d.pipeline);
+            render::PipelineDesc pipeline = d.pipeline;
+            if (d.params.get<ssam::CompositeParams>()) {  // a module's program: made on each backend
+                if (!composite) composite = b.createProgram(ssam::compositeProgram());
+                pipeline.program = composite;
+            }
+            dd.pipeline = b.createPipeline(pipeline);
             dd.params = d.params;
-            std::visit(
-                [&](auto& params) {
-                    using P = std::decay_t<decltype(params)>;
-                    if constexpr (std::is_same_v<P, render::SurfaceParams> || std::is_same_v<P, render::AlphaOnlyParams>)
-                        params.baseColor.texture = resolveRef(params.baseColor.texture);
-                    if constexpr (std::is_same_v<P, render::CompositeParams>) {
-                        params.foliage = resolveRef(params.foliage);
-                        params.mask = resolveRef(params.mask);
-                        params.maskAdd = resolveRef(params.maskAdd);
-                    }
-                },
-                dd.params);
-            if (!render::isFullscreen(d.pipeline.program)) {
+            if (const auto* surface = d.params.get<render::SurfaceParams>()) {
+                render::SurfaceParams resolved = *surface;
+                resolved.baseColor.texture = resolveRef(resolved.baseColor.texture);
+                dd.params = resolved;
+            } else if (const auto* alpha = d.params.get<render::AlphaOnlyParams>()) {
+                render::AlphaOnlyParams resolved = *alpha;
+                resolved.baseColor.texture = resolveRef(resolved.baseColor.texture);
+                dd.params = resolved;
+            } else if (const auto* composite = d.params.get<ssam::CompositeParams>()) {
+                ssam::CompositeParams resolved = *composite;
+                resolved.foliage = resolveRef(resolved.foliage);
+                resolved.mask = resolveRef(resolved.mask);
+                resolved.maskAdd = resolveRef(resolved.maskAdd);
+                dd.params = resolved;
+            }
+            if (!d.params.get<ssam::CompositeParams>()) {  // the only full-screen program here
                 dd.vertices = b.createBuffer(
                     {"vertices", render::BufferKind::Vertex, d.vertices.size() * sizeof(render::Vertex)}, bytesOf(d.vertices));
                 dd.count = std::uint32_t(d.vertices.size());

@@ -7,7 +7,9 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "expect_error.hpp"  // tests/support
 #include "lightshafts/light_shaft_feature.hpp"
+#include "lightshafts/light_shaft_program.hpp"
 #include "shaft_scene.hpp"
 
 namespace {
@@ -174,6 +176,50 @@ TEST(LightShafts, DeterministicAndBadInputRefused) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("decay"), std::string::npos);
     }
+}
+
+// The module's program on the backend (Backend::createProgram): it reads one float of depth
+// per texel, and a draw with another module's parameters is refused.
+TEST(LightShafts, ProgramRefusesBadDepthAndForeignParameters) {
+    auto b = render::soft::createSoftBackend({});
+    auto texture = [&](render::Format format) {
+        render::TextureDesc t;
+        t.name = "t";
+        t.width = t.height = 8;
+        t.format = format;
+        t.usage = render::UsageSampled | render::UsageRenderTarget;
+        return b->createTexture(t);
+    };
+    const render::TextureHandle target = texture(render::Format::RGBA32F);
+    const render::ProgramHandle program = b->createProgram(lightshafts::lightShaftProgram());
+    render::PipelineDesc p;
+    p.name = "shafts";
+    p.program = program;
+    const render::PipelineHandle pipeline = b->createPipeline(p);
+    auto draw = [&](render::DrawParams params) {
+        render::PassDesc pass;
+        pass.name = "pass";
+        pass.color[0] = {target, render::LoadOp::Clear};
+        b->beginPass(pass);
+        render::DrawDesc d;
+        d.pipeline = pipeline;
+        d.params = params;
+        try {
+            b->draw(d);
+        } catch (...) {
+            b->endPass();
+            throw;
+        }
+        b->endPass();
+    };
+    lightshafts::LightShaftParams shafts;
+    shafts.depth = texture(render::Format::RGBA16F);
+    ssam::testing::expectError([&] { draw(shafts); }, "light-shaft depth is RGBA16F, not D32F or R32F");
+    ssam::testing::expectError([&] { draw(render::FlatParams{}); }, "parameters do not match program LightShafts");
+    shafts.depth = texture(render::Format::R32F);
+    EXPECT_NO_THROW(draw(shafts));
+    b->destroy(pipeline);
+    b->destroy(program);
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include "engine/render/projection.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
+#include "lightshafts/light_shaft_program.hpp"
+#include "particles/particle_programs.hpp"
 
 #include <tuple>
 
@@ -90,11 +92,11 @@ Result run(Backend& b, int stride) {
                                                    std::as_bytes(std::span(parts)));
     PipelineDesc p;
     p.name = "particles";
-    p.program = ProgramKind::Particle;
+    p.program = b.createProgram(particles::particleProgram());
     p.blend[0] = BlendState::premultipliedOver();
     const PipelineHandle particlePipeline = b.createPipeline(p);
     p.name = "composite";
-    p.program = ProgramKind::LayerComposite;
+    p.program = b.createProgram(particles::layerCompositeProgram());
     const PipelineHandle compositePipeline = b.createPipeline(p);
 
     PassDesc layerPass;
@@ -103,7 +105,7 @@ Result run(Backend& b, int stride) {
     b.beginPass(layerPass);
     DrawDesc d;
     d.pipeline = particlePipeline;
-    d.params = ParticleParams{viewProj, depth, stride, proj[3][2], proj[2][2], 0.5f, true};
+    d.params = particles::ParticleParams{viewProj, depth, stride, proj[3][2], proj[2][2], 0.5f, true};
     d.vertices = partBuffer;
     d.count = std::uint32_t(parts.size());
     b.draw(d);
@@ -115,7 +117,7 @@ Result run(Backend& b, int stride) {
     b.beginPass(composite);
     DrawDesc c;
     c.pipeline = compositePipeline;
-    c.params = LayerCompositeParams{layer, depth, stride, proj[3][2], proj[2][2], true};
+    c.params = particles::LayerCompositeParams{layer, depth, stride, proj[3][2], proj[2][2], true};
     b.draw(c);
     b.endPass();
     return {b.readback(layer), b.readback(color)};
@@ -150,9 +152,10 @@ Readback shafts(Backend& b) {
     const auto [color, depth] = wallFrame(
         b, viewProj, quad(-0.8f, -0.6f, 0.37f, 0.9f, 5.0f, glm::vec4(0.2f, 0.5f, 0.1f, 1.0f), {0, 0, -1}),
         {0.3f, 0.4f, 0.6f, 1.0f});
+    const ProgramHandle program = b.createProgram(lightshafts::lightShaftProgram());
     PipelineDesc p;
     p.name = "shafts";
-    p.program = ProgramKind::LightShafts;
+    p.program = program;
     p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
                   BlendOp::Add, WriteRGB};
     const PipelineHandle shaftPipeline = b.createPipeline(p);
@@ -160,7 +163,7 @@ Readback shafts(Backend& b) {
     shaftPass.name = "light shafts";
     shaftPass.color[0] = {color, LoadOp::Load};
     b.beginPass(shaftPass);
-    LightShaftParams params;
+    lightshafts::LightShaftParams params;
     params.depth = depth;
     params.sunPixel = {27.3f, 11.6f};  // behind the wall
     params.farDepth = 0.0f;

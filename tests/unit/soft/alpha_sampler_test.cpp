@@ -5,7 +5,7 @@
 // the decoded alpha copy, at random coordinates and derivatives (magnified and minified,
 // texel edges, non-finite values). The golden hashes only see the few cases their scenes
 // hit; this walks the whole space of the sampler's branches.
-// Needs engine/render/soft/src on the include path (the samplers are internal).
+// The samplers come from the soft backend's program-authoring headers.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 
 #include "lcg.hpp"  // tests/support
-#include "alpha_sampler.hpp"
-#include "sampler.hpp"
+#include "engine/render/soft/kernel/alpha_sampler.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
 
 namespace {
 
@@ -101,7 +101,7 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
                                         ASSERT_TRUE(sameBits(alphaOnly, general[i].a));
                                         ASSERT_TRUE(sameBits(sampler.sample({uu[i], vv[i]}, d), alphaOnly));
                                     }
-#if SSAM_ALPHA_SAMPLER_SSE2
+#if SOFT_SAMPLER_SSE2
                                     if (!sampler.simd4()) continue;
                                     const std::uint32_t lanes = it % 5 == 0 ? (rng.next() & 0xFu) | 1u : 0xFu;
                                     const AlphaSampler::Lookup4 lookup =
@@ -118,7 +118,7 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
 #endif
                                 }
                             }
-#if SSAM_ALPHA_SAMPLER_SSE2
+#if SOFT_SAMPLER_SSE2
     EXPECT_GT(simdConfigurations, 0);  // the SIMD path was exercised
 #endif
 }

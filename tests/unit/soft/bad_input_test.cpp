@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "soft_test_util.hpp"
+#include "ssam/composite_program.hpp"
 
 namespace ssam::test::soft {
 namespace {
@@ -240,7 +241,7 @@ TEST_F(SoftBadInput, SampledTextures) {
     const render::TextureHandle msaa = makeTarget(*gfx, 4, 4, Format::RGBA8_UNORM, 4, "msaa");
     const render::TextureHandle depth = makeTarget(*gfx, 4, 4, Format::D32F, 1, "depth");
     const render::BufferHandle vb = makeVertices(*gfx, fullQuad());
-    const render::PipelineDesc litDesc = pipelineDesc("lit", render::ProgramKind::FoliageColor);
+    const render::PipelineDesc litDesc = pipelineDesc("lit", render::ProgramKind::MaskedLit);
     const render::PipelineHandle lit = gfx->createPipeline(litDesc);
     render::DrawDesc d = flatDraw(lit, vb, 6);
     gfx->beginPass(onePass(t, depth));
@@ -262,7 +263,7 @@ TEST_F(SoftBadInput, Pipelines) {
     render::PipelineDesc d = pipelineDesc("nanref");
     d.alphaTest = {true, render::CompareFunc::Less, std::nanf(""), render::AlphaFailMode::Keep, false};
     expectError([&] { gfx->createPipeline(d); }, "pipeline 'nanref': alpha reference is not finite");
-    d = pipelineDesc("composite", render::ProgramKind::Composite);
+    d = pipelineDesc("composite", gfx->createProgram(ssam::compositeProgram()));
     d.depth = render::DepthState::testOnly();
     expectError([&] { gfx->createPipeline(d); }, "full-screen program Composite cannot depth-test");
     expectUsable();
@@ -272,11 +273,11 @@ TEST_F(SoftBadInput, CompositeInputs) {
     const render::TextureHandle out = makeTarget(*gfx, 8, 8);
     const render::TextureHandle small = makeTarget(*gfx, 4, 4, Format::RGBA8_UNORM, 1, "small");
     const render::TextureHandle full = makeTarget(*gfx, 8, 8, Format::RGBA8_UNORM, 1, "full");
-    const render::PipelineHandle p = gfx->createPipeline(pipelineDesc("composite", render::ProgramKind::Composite));
+    const render::PipelineHandle p = gfx->createPipeline(pipelineDesc("composite", gfx->createProgram(ssam::compositeProgram())));
     render::DrawDesc d;
     d.pipeline = p;
     gfx->beginPass(onePass(out));
-    render::CompositeParams c;
+    ssam::CompositeParams c;
     c.foliage = full;
     c.mask = small;
     d.params = c;

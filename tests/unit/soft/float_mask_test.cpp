@@ -1,5 +1,5 @@
 // The soft backend's float-mask fast paths against the general path, bit for bit, on whole
-// random scenes: SSAM's mask pass (FoliageAlpha, ONE/ONE MAX and ADD, seeds/000 §3.5.2)
+// random scenes: SSAM's mask pass (AlphaOnly, ONE/ONE MAX and ADD, [Hathaway 2010] §3.5.2)
 // onto half-float targets as maskPrecision RG16F (two R16F targets; SSAM+) and RGBA16F
 // store it, and the SSAM / SSAM+ composites onto RGBA8 targets from float and 8-bit masks.
 // The targets start with arbitrary halves (NaN, infinities, -0, denormals, values past 1
@@ -29,8 +29,10 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
 
-// The general blend (internal header: engine/render/soft/src).
-#include "blend.hpp"
+// The general blend (program-authoring header).
+#include "engine/render/soft/kernel/blend.hpp"
+#include "ssam/composite_program.hpp"
+#include "transparency/programs.hpp"
 
 namespace {
 
@@ -143,7 +145,7 @@ std::vector<MaskSetup> maskSetups() {
         {"RG16F (two R16F, SSAM+)",
          {Format::R16F, Format::R16F},
          {oneOne(BlendOp::Max, BlendOp::Max), oneOne(BlendOp::Add, BlendOp::Add)}},
-        {"RGBA16F", {Format::RGBA16F}, {render::BlendState::ssamMask()}},
+        {"RGBA16F", {Format::RGBA16F}, {render::BlendState::maxRgbAddAlpha()}},
         {"RGBA16F + RG16F, partial write masks",
          {Format::RGBA16F, Format::RG16F},
          {oneOne(BlendOp::Max, BlendOp::Add, render::WriteA | 1u), oneOne(BlendOp::Add, BlendOp::Max, 2u)}},
@@ -211,7 +213,7 @@ MaskRun runMaskScene(const MaskSetup& setup, const std::vector<HalfImage>& initi
     b.endPass();
 
     render::PipelineDesc mp;
-    mp.program = render::ProgramKind::FoliageAlpha;
+    mp.program = render::ProgramKind::AlphaOnly;
     mp.raster.cull = render::CullMode::None;
     const bool always = mode == MaskMode::AlwaysFast || mode == MaskMode::AlwaysWrite;
     mp.depth = {true, mode == MaskMode::AlwaysWrite, always ? render::CompareFunc::Always : render::CompareFunc::Less};
@@ -315,13 +317,15 @@ TEST(SoftFloatMask, MaskPassMatchesTheGeneralPathForAnyThreadCount) {
 // The composites (Composite: SSAM, CoverageComposite: SSAM+) from masks of every format
 // SSAM makes onto 8-bit targets, fast path (write mask RGBA) against the general path
 // (write mask RGB), full screen and under a scissor.
+enum class CompositeKind { Ssam, SsamPlus };
+
 struct CompositeSetup {
-    render::ProgramKind program;
+    CompositeKind program;
     Format mask;
     bool maskAdd;  // a second, R16F ADD mask (RG16F precision)
     Format target;
     Format foliage;
-    render::CoverageModel model = render::CoverageModel::EqualLayers;
+    transparency::CoverageModel model = transparency::CoverageModel::EqualLayers;
 };
 
 render::Readback runComposite(const CompositeSetup& s, bool general, std::uint64_t seed) {
@@ -352,7 +356,8 @@ render::Readback runComposite(const CompositeSetup& s, bool general, std::uint64
         maskAdd = texture(b, "maskAdd", Format::R16F, true, bytesOf(addHalves.values));
     }
     render::PipelineDesc pd;
-    pd.program = s.program;
+    pd.program = s.program == CompositeKind::Ssam ? render::ProgramRef(b.createProgram(ssam::compositeProgram()))
+                                                  : render::ProgramRef(b.createProgram(transparency::coverageCompositeProgram()));
     pd.blend[0] = {true,
                    render::BlendFactor::SrcAlpha,
                    render::BlendFactor::InvSrcAlpha,
@@ -369,10 +374,10 @@ render::Readback runComposite(const CompositeSetup& s, bool general, std::uint64
     for (int k = 0; k < 2; ++k) {
         render::DrawDesc d;
         d.pipeline = pipeline;
-        if (s.program == render::ProgramKind::Composite)
-            d.params = render::CompositeParams{foliage, mask, maskAdd, k == 0 ? 0.85f : 0.3f, k == 0};
+        if (s.program == CompositeKind::Ssam)
+            d.params = ssam::CompositeParams{foliage, mask, maskAdd, k == 0 ? 0.85f : 0.3f, k == 0};
         else
-            d.params = render::CoverageCompositeParams{foliage, mask, maskAdd, s.model};
+            d.params = transparency::CoverageCompositeParams{foliage, mask, maskAdd, s.model};
         if (k == 1) d.scissor = render::Rect{5, 7, 41, 30};
         b.draw(d);
     }
@@ -383,7 +388,7 @@ render::Readback runComposite(const CompositeSetup& s, bool general, std::uint64
 TEST(SoftFloatMask, CompositesMatchTheGeneralPath) {
     using render::ProgramKind;
     std::vector<CompositeSetup> setups;
-    for (ProgramKind program : {ProgramKind::Composite, ProgramKind::CoverageComposite})
+    for (CompositeKind program : {CompositeKind::Ssam, CompositeKind::SsamPlus})
         for (Format target : {Format::RGBA8_UNORM, Format::RGBA8_SRGB})
             for (Format foliage : {Format::RGBA8_UNORM, Format::RGBA8_SRGB}) {
                 setups.push_back({program, Format::R16F, true, target, foliage});
@@ -391,16 +396,16 @@ TEST(SoftFloatMask, CompositesMatchTheGeneralPath) {
                 setups.push_back({program, Format::RGBA8_UNORM, false, target, foliage});
                 setups.push_back({program, Format::RGBA16F, true, target, foliage});
             }
-    setups.push_back({ProgramKind::CoverageComposite, Format::R16F, true, Format::RGBA8_SRGB, Format::RGBA8_SRGB,
-                      render::CoverageModel::Exponential});
-    setups.push_back({ProgramKind::CoverageComposite, Format::RGBA16F, false, Format::RGBA8_UNORM, Format::RGBA8_UNORM,
-                      render::CoverageModel::Exponential});
+    setups.push_back({CompositeKind::SsamPlus, Format::R16F, true, Format::RGBA8_SRGB, Format::RGBA8_SRGB,
+                      transparency::CoverageModel::Exponential});
+    setups.push_back({CompositeKind::SsamPlus, Format::RGBA16F, false, Format::RGBA8_UNORM, Format::RGBA8_UNORM,
+                      transparency::CoverageModel::Exponential});
     std::uint64_t seed = 50;
     for (const CompositeSetup& s : setups) {
         ++seed;
         const render::Readback fast = runComposite(s, false, seed), general = runComposite(s, true, seed);
         EXPECT_TRUE(sameBits(fast, general))
-            << render::programKindName(s.program) << " mask " << render::formatName(s.mask)
+            << (s.program == CompositeKind::Ssam ? "SSAM" : "SSAM+") << " mask " << render::formatName(s.mask)
             << (s.maskAdd ? " + R16F" : "") << " onto " << render::formatName(s.target) << " foliage "
             << render::formatName(s.foliage) << " model " << int(s.model);
     }

@@ -9,9 +9,9 @@
 // write mask.
 // With SSAM_EXHAUSTIVE_HALF=1 the encode test checks all 2^32 floats instead (about 20 s;
 // it passed when the code was written).
-// Needs engine/render/soft/src on the include path (internal headers).
+// Program-authoring headers of the soft backend.
 #include "lcg.hpp"  // tests/support
-#include "half_float4.hpp"
+#include "engine/render/soft/kernel/half_float4.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +20,8 @@
 #include <cstring>
 #include <vector>
 
-#include "blend.hpp"
-#include "one_one_half_blend.hpp"
+#include "engine/render/soft/kernel/blend.hpp"
+#include "engine/render/soft/kernel/one_one_half_blend.hpp"
 
 namespace {
 
@@ -41,7 +41,7 @@ std::uint32_t bitsOf(float f) {
     return b;
 }
 
-#if SSAM_HALF_FLOAT4_SSE2
+#if SOFT_HALF_FLOAT4_SSE2
 // encodeHalf4 + packHalf4 of four floats given as bits; counts (and reports the first few)
 // lanes that differ from encodeHalf.
 int encodeMismatches(const std::uint32_t* in, int& reported) {
@@ -165,7 +165,7 @@ TEST(SoftOneOneHalfBlend, ScalarMatchesGeneralBlendForEveryStoredHalf) {
     EXPECT_EQ(checked, 3L * 4 * 3 * 0x10000);
 }
 
-#if SSAM_HALF_FLOAT4_SSE2
+#if SOFT_HALF_FLOAT4_SSE2
 TEST(SoftOneOneHalfBlend, FourLanesMatchGeneralBlendAndLeaveOtherLanes) {
     Lcg rng{9};
     const std::vector<float> as = alphas(rng);

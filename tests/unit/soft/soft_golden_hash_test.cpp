@@ -23,6 +23,7 @@
 
 #include "lcg.hpp"  // tests/support
 #include "engine/render/soft/soft_backend.hpp"
+#include "ssam/composite_program.hpp"
 #include "engine/render/vertex.hpp"
 
 namespace {
@@ -109,7 +110,7 @@ glm::mat4 perspectiveViewProj() {
 }
 
 void drawTriangles(render::Backend& b, render::PipelineHandle p, render::BufferHandle vb, std::uint32_t count,
-                   render::ProgramParams params, std::optional<render::Rect> scissor = std::nullopt) {
+                   render::DrawParams params, std::optional<render::Rect> scissor = std::nullopt) {
     render::DrawDesc d;
     d.pipeline = p;
     d.params = params;
@@ -197,7 +198,7 @@ void sceneFoliage(render::Backend& b, Hasher& h) {
                                         render::AddressMode::Mirror, render::AddressMode::Wrap};
     for (int i = 0; i < 4; ++i) {
         render::PipelineDesc pd;
-        pd.program = render::ProgramKind::FoliageColor;
+        pd.program = render::ProgramKind::MaskedLit;
         pd.depth = render::DepthState::testAndWrite(render::CompareFunc::LessEqual);
         pd.alphaTest = {true, i == 3 ? render::CompareFunc::Less : render::CompareFunc::GreaterEqual, 0.4f + 0.05f * i,
                         modes[i], false};
@@ -260,7 +261,7 @@ void scenePresetsSmallFormats(render::Backend& b, Hasher& h) {
     for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
     const auto vb = vertexBuffer(b, randomTriangles(rng, 500, 0.4f, false));
     const render::BlendState presets[] = {render::BlendState::opaque(), render::BlendState::alphaOver(),
-                                          render::BlendState::premultipliedOver(), render::BlendState::ssamMask()};
+                                          render::BlendState::premultipliedOver(), render::BlendState::maxRgbAddAlpha()};
     render::PassDesc pass;
     pass.name = "small";
     for (int i = 0; i < 4; ++i) pass.color[i] = {targets[i], render::LoadOp::Clear, glm::vec4(0.25f)};
@@ -300,10 +301,10 @@ void sceneMsaa(render::Backend& b, Hasher& h) {
     pass.depth = {msDepth, render::LoadOp::Clear, 1.0f};
     b.beginPass(pass);
     render::PipelineDesc pd;
-    pd.program = render::ProgramKind::FoliageColor;
+    pd.program = render::ProgramKind::MaskedLit;
     pd.depth = render::DepthState::testAndWrite();
     pd.alphaTest = {true, render::CompareFunc::Greater, 0.3f, render::AlphaFailMode::Keep, true};
-    pd.blend[1] = render::BlendState::ssamMask();
+    pd.blend[1] = render::BlendState::maxRgbAddAlpha();
     render::SurfaceParams sp;
     sp.viewProj = perspectiveViewProj();
     sp.baseColor = {tex, {}};
@@ -329,8 +330,8 @@ void sceneComposite(render::Backend& b, Hasher& h) {
     pre.color[1] = {mask, render::LoadOp::Clear, glm::vec4(0.0f)};
     pre.color[2] = {maskAdd, render::LoadOp::Clear, glm::vec4(0.0f)};
     render::PipelineDesc pd;
-    pd.blend[1] = render::BlendState::ssamMask();
-    pd.blend[2] = render::BlendState::ssamMask();
+    pd.blend[1] = render::BlendState::maxRgbAddAlpha();
+    pd.blend[2] = render::BlendState::maxRgbAddAlpha();
     b.beginPass(pre);
     drawTriangles(b, b.createPipeline(pd), vb, 600, render::FlatParams{glm::mat4(1.0f), glm::vec4(0.9f, 0.6f, 0.3f, 0.4f)});
     b.endPass();
@@ -338,14 +339,14 @@ void sceneComposite(render::Backend& b, Hasher& h) {
     comp.name = "composite";
     comp.color[0] = {out, render::LoadOp::Clear, glm::vec4(0.05f, 0.1f, 0.2f, 1.0f)};
     render::PipelineDesc cd;
-    cd.program = render::ProgramKind::Composite;
+    cd.program = b.createProgram(ssam::compositeProgram());
     cd.blend[0] = render::BlendState::alphaOver();
     const auto cp = b.createPipeline(cd);
     b.beginPass(comp);
     for (int i = 0; i < 2; ++i) {
         render::DrawDesc d;
         d.pipeline = cp;
-        d.params = render::CompositeParams{foliage, mask, i == 1 ? maskAdd : render::TextureHandle{}, 0.85f, i == 0};
+        d.params = ssam::CompositeParams{foliage, mask, i == 1 ? maskAdd : render::TextureHandle{}, 0.85f, i == 0};
         d.scissor = render::Rect{10 + 40 * i, 5, 120, 130};
         b.draw(d);
     }
@@ -439,7 +440,7 @@ void sceneBigQuads(render::Backend& b, Hasher& h) {
     d.count = 6;
     b.draw(d);
     pd = {};
-    pd.program = render::ProgramKind::FoliageColor;
+    pd.program = render::ProgramKind::MaskedLit;
     pd.depth = render::DepthState::testAndWrite(render::CompareFunc::LessEqual);
     pd.alphaTest = render::AlphaTest::discardBelow(0.5f);
     render::SurfaceParams sp;
@@ -513,7 +514,7 @@ void sceneConstantColour(render::Backend& b, Hasher& h) {
         render::BlendState::opaque(),
         render::BlendState::alphaOver(),
         render::BlendState::premultipliedOver(),
-        render::BlendState::ssamMask(),
+        render::BlendState::maxRgbAddAlpha(),
         {true, render::BlendFactor::DstColor, render::BlendFactor::InvSrcColor, render::BlendOp::RevSubtract,
          render::BlendFactor::DstAlpha, render::BlendFactor::One, render::BlendOp::Subtract, render::WriteAll},
         {true, render::BlendFactor::DstAlpha, render::BlendFactor::InvDstAlpha, render::BlendOp::Add,

@@ -75,7 +75,7 @@ inline render::PassDesc onePass(render::TextureHandle color, render::TextureHand
 }
 
 inline render::PipelineDesc pipelineDesc(const std::string& name,
-                                         render::ProgramKind program = render::ProgramKind::Flat) {
+                                         render::ProgramRef program = render::ProgramKind::Flat) {
     render::PipelineDesc d;
     d.name = name;
     d.program = program;

@@ -63,7 +63,7 @@ FailModePlan planFailMode(const FailModeInputs& in) {
         const std::uint8_t passOnly = passWrites & std::uint8_t(~fail);
         if (both) plan.steps.push_back(step(FragmentSelect::All, both));
         if (passOnly) plan.steps.push_back(step(FragmentSelect::Passing, passOnly));
-        if (depthWrite) plan.note = "seeds/004 depth-always rewrite: one step per fragment subset";
+        if (depthWrite) plan.note = "[PCSX2] depth-always rewrite: one step per fragment subset";
         else plan.note = "no depth writes: one step per fragment subset";
         const bool rgbAlphaSplit = (both & WriteRGB) && (passOnly & WriteA);
         if (rgbAlphaSplit && in.rgbReadsDstAlpha && in.anyAlphaWrite) {
@@ -91,7 +91,7 @@ FailModePlan planFailMode(const FailModeInputs& in) {
         plan.exact = false;
         plan.note = std::string(alphaFailModeName(test.failMode)) + " with depth test " +
                     compareFuncName(in.depthFunc) +
-                    " and depth writes: two-pass split (passing, then failing fragments, seeds/004) is "
+                    " and depth writes: two-pass split (passing, then failing fragments, [PCSX2]) is "
                     "inexact where fragments of one draw overlap";
     }
     return plan;

@@ -21,6 +21,7 @@
 #include "engine/render/gl/fail_mode_plan.hpp"
 #include "engine/render/gl/gl_program.hpp"
 #include "engine/render/resource_pool.hpp"
+#include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
 #include "gl_shaders.hpp"
@@ -43,6 +44,12 @@ void drainGlErrors() {
     for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i) {
     }
 }
+
+#ifdef NDEBUG
+constexpr bool kCheckEveryDraw = false;
+#else
+constexpr bool kCheckEveryDraw = true;
+#endif
 
 void checkGl(const std::string& what) {
     const GLenum error = glGetError();
@@ -162,26 +169,27 @@ struct GlTexture {
 struct GlBuffer {
     BufferDesc desc;
     GLuint id = 0;
-    std::vector<std::byte> shadow;  // index buffers: kept to validate indices as the soft backend does
+    std::vector<std::byte> shadow;  // index buffers: read only when a draw may index past its vertices
+    std::uint32_t maxIndex = 0;     // index buffers: the largest index (validation's fast accept)
+};
+
+// A ProgramDesc compiled: the GL program and the locations of its layout's uniforms.
+struct ProgramSlot {
+    GlProgram program;
+    std::shared_ptr<const ProgramDesc> desc;  // null for the backend's internal programs
+    std::vector<GLint> uniforms;              // one per desc->gl.uniforms
+    struct TextureUniforms {
+        GLint present = -1, filter = -1, premultiplied = -1;
+    };
+    std::vector<TextureUniforms> textures;  // one per desc->gl.textures
+    // The shared fragment tail's (finish()).
+    GLint alphaSelect = -1, scissor = -1, alphaFunc = -1, alphaRef = -1, a2cSamples = -1, a2cActual = -1;
 };
 
 struct GlPipeline {
     PipelineDesc desc;
     PipelineInfo info;
-};
-
-struct ProgramSlot {
-    GlProgram program;
-    GLint viewProj = -1, color = -1, hasTexture = -1, premultiplied = -1, towardLight = -1, lightColor = -1,
-          ambient = -1, alphaFactor = -1, hasMaskAdd = -1, maskLerp = -1, squareMask = -1, alphaSelect = -1,
-          filter = -1, scissor = -1, alphaFunc = -1, alphaRef = -1, a2cSamples = -1, a2cActual = -1,
-          depthScale = -1, coverageModel = -1;
-    // Particle / LayerComposite (modules/particles)
-    GLint hasDepth = -1, depthStride = -1, distanceScale = -1, distanceOffset = -1, softness = -1,
-          greaterIsCloser = -1, layerScale = -1;
-    // LightShafts (modules/lightshafts)
-    GLint sunPixel = -1, farDepth = -1, shaftGreater = -1, shaftColor = -1, intensity = -1, decay = -1, density = -1,
-          samples = -1, glowRadius = -1;
+    std::shared_ptr<const ProgramSlot> program;  // alive while the pipeline is
 };
 
 struct PendingTiming {
@@ -209,11 +217,13 @@ class GlBackendImpl final : public GlBackend {
 public:
     GlBackendImpl(const GlOptions& options, std::shared_ptr<GlContext> context)
         : options_(options), context_(std::move(context)), textures_("texture"), buffers_("buffer"),
-          pipelines_("pipeline"), queries_("occlusion query"),
+          pipelines_("pipeline"), queries_("occlusion query"), programs_("program"),
           lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
                   [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
                   [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).shadow); },
-                  [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; }} {
+                  [this](BufferHandle h) { return buffers_.get(h).maxIndex; },
+                  [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; },
+                  [this](PipelineHandle h) -> const ProgramDesc& { return *pipelines_.get(h).program->desc; }} {
         makeCurrent();
         const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
         if (!version) throw Error("GL backend: no GL context is current on this thread");
@@ -285,7 +295,10 @@ public:
         glDeleteBuffers(1, &identityInstance_);
         glDeleteVertexArrays(1, &vao_);
         glDeleteVertexArrays(1, &emptyVao_);
-        for (auto& p : programs_) p.reset();
+        // GL program objects are deleted while the context is current.
+        pipelines_ = ResourcePool<PipelineTag, GlPipeline>("pipeline");
+        programs_ = ResourcePool<ProgramTag, std::shared_ptr<const ProgramSlot>>("program");
+        for (auto& p : standardPrograms_) p.reset();
         resolveColor_.reset();
         resolveDepth_.reset();
         nothing_.reset();
@@ -398,6 +411,7 @@ public:
         if (desc.kind == BufferKind::Index) {
             const auto* p = static_cast<const std::byte*>(initial);
             b.shadow.assign(p, p + desc.size);
+            b.maxIndex = largestIndex(b.shadow);
         }
         ownedBuffers_.insert(b.id);
         return buffers_.add(std::move(b));
@@ -412,16 +426,26 @@ public:
         if (data.empty()) return;
         makeCurrent();
         glNamedBufferSubData(b.id, GLintptr(offset), GLsizeiptr(data.size()), data.data());
-        if (!b.shadow.empty()) std::memcpy(b.shadow.data() + offset, data.data(), data.size());
+        if (!b.shadow.empty()) {
+            std::memcpy(b.shadow.data() + offset, data.data(), data.size());
+            b.maxIndex = largestIndex(b.shadow);
+        }
+    }
+
+    ProgramHandle createProgram(const ProgramDesc& desc) override {
+        if (desc.gl.fragment.empty()) throw Error("program " + quotedName(desc.name) + " has no GLSL for the GL backend");
+        makeCurrent();
+        return programs_.add(compile(std::make_shared<const ProgramDesc>(desc)));
     }
 
     PipelineHandle createPipeline(const PipelineDesc& desc) override {
         const std::string what = "pipeline " + quotedName(desc.name);
         if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
             throw Error(what + ": alpha reference is not finite");
-        if (isFullscreen(desc.program) && desc.depth.test)
-            throw Error(what + ": full-screen program " + programKindName(desc.program) + " cannot depth-test");
-        GlPipeline p{desc, {}};
+        std::shared_ptr<const ProgramSlot> program = programFor(desc.program);
+        if (program->desc->vertexInput == VertexInput::Fullscreen && desc.depth.test)
+            throw Error(what + ": full-screen program " + program->desc->name + " cannot depth-test");
+        GlPipeline p{desc, {}, std::move(program)};
         bool anyRgb = false, anyAlpha = false, plain = true, readsDstAlpha = false;
         for (const BlendState& b : desc.blend) {
             anyRgb = anyRgb || (b.writeMask & WriteRGB);
@@ -465,6 +489,10 @@ public:
         buffers_.remove(h);
     }
 
+    void destroy(ProgramHandle h) override {
+        makeCurrent();
+        programs_.remove(h);
+    }
     void destroy(PipelineHandle h) override { pipelines_.remove(h); }
 
     QueryHandle createQuery(const std::string& name) override { return queries_.add({name}); }
@@ -602,6 +630,24 @@ public:
         pass_.reset();
         targets_.clear();
         checkGl("pass: ending");
+    }
+
+    void abortPass() noexcept override {
+        if (!pass_) return;
+        try {
+            makeCurrent();
+            if (passCondition_) glEndConditionalRender();
+            if (pass_->countSamplesInto) {
+                glEndQuery(GL_ANY_SAMPLES_PASSED);
+                queries_.get(pass_->countSamplesInto).counted = false;
+            }
+            glEndQuery(GL_TIME_ELAPSED);
+            glDeleteQueries(1, &passQuery_);
+        } catch (...) {  // no current context or a destroyed query: the pass is dropped all the same
+        }
+        passQuery_ = passCondition_ = 0;
+        pass_.reset();
+        targets_.clear();
     }
 
     void resolve(const ResolveDesc& r) override {
@@ -915,57 +961,44 @@ private:
 
     // ---- programs ------------------------------------------------------------------------
 
-    static void locate(ProgramSlot& s) {
+    static void locateTail(ProgramSlot& s) {
         const GlProgram& p = s.program;
-        s.viewProj = p.uniform("u_viewProj");
-        s.color = p.uniform("u_color");
-        s.hasTexture = p.uniform("u_hasTexture");
-        s.premultiplied = p.uniform("u_premultiplied");
-        s.towardLight = p.uniform("u_towardLight");
-        s.lightColor = p.uniform("u_lightColor");
-        s.ambient = p.uniform("u_ambient");
-        s.alphaFactor = p.uniform("u_alphaFactor");
-        s.hasMaskAdd = p.uniform("u_hasMaskAdd");
-        s.maskLerp = p.uniform("u_maskLerp");
-        s.squareMask = p.uniform("u_squareMask");
         s.alphaSelect = p.uniform("u_alphaSelect");
-        s.hasDepth = p.uniform("u_hasDepth");
-        s.depthStride = p.uniform("u_depthStride");
-        s.distanceScale = p.uniform("u_distanceScale");
-        s.distanceOffset = p.uniform("u_distanceOffset");
-        s.softness = p.uniform("u_softness");
-        s.greaterIsCloser = p.uniform("u_greaterIsCloser");
-        s.layerScale = p.uniform("u_layerScale");
-        s.sunPixel = p.uniform("u_sunPixel");
-        s.farDepth = p.uniform("u_farDepth");
-        s.shaftGreater = p.uniform("u_shaftGreater");
-        s.shaftColor = p.uniform("u_shaftColor");
-        s.intensity = p.uniform("u_intensity");
-        s.decay = p.uniform("u_decay");
-        s.density = p.uniform("u_density");
-        s.samples = p.uniform("u_samples");
-        s.glowRadius = p.uniform("u_glowRadius");
-        s.filter = p.uniform("u_filter");
         s.scissor = p.uniform("u_scissor");
         s.alphaFunc = p.uniform("u_alphaFunc");
         s.alphaRef = p.uniform("u_alphaRef");
         s.a2cSamples = p.uniform("u_a2cSamples");
         s.a2cActual = p.uniform("u_a2cActual");
-        s.depthScale = p.uniform("u_depthScale");
-        s.coverageModel = p.uniform("u_coverageModel");
     }
 
-    ProgramSlot& program(ProgramKind kind) {
-        if (std::size_t(kind) >= programs_.size()) throw Error("GL backend: program kind " + std::to_string(int(kind)) + " has no slot");
-        std::optional<ProgramSlot>& slot = programs_[std::size_t(kind)];
-        if (!slot) {
-            ProgramSlot s;
-            s.program = compileProgram(programKindName(kind), withGlslVersion(vertexSource(kind), glMajor_, glMinor_),
-                                       withGlslVersion(fragmentSource(kind), glMajor_, glMinor_));
-            locate(s);
-            slot = std::move(s);
+    std::shared_ptr<const ProgramSlot> compile(std::shared_ptr<const ProgramDesc> desc) {
+        auto s = std::make_shared<ProgramSlot>();
+        s->program = compileProgram(desc->name, withGlslVersion(vertexSource(desc->vertexInput), glMajor_, glMinor_),
+                                    withGlslVersion(fragmentSource(desc->vertexInput, desc->gl.fragment), glMajor_, glMinor_));
+        for (const UniformField& u : desc->gl.uniforms) s->uniforms.push_back(s->program.uniform(u.name));
+        for (const TextureField& t : desc->gl.textures) {
+            ProgramSlot::TextureUniforms& l = s->textures.emplace_back();
+            if (t.presentUniform) l.present = s->program.uniform(t.presentUniform);
+            if (t.filterUniform) l.filter = s->program.uniform(t.filterUniform);
+            if (t.premultipliedUniform) l.premultiplied = s->program.uniform(t.premultipliedUniform);
         }
-        return *slot;
+        locateTail(*s);
+        s->desc = std::move(desc);
+        return s;
+    }
+
+    std::shared_ptr<const ProgramSlot> programFor(const ProgramRef& ref) {
+        if (ref.created) return programs_.get(ref.created);
+        const auto index = std::size_t(ref.standard);
+        if (index >= standardPrograms_.size()) throw Error("unknown standard program " + std::to_string(index));
+        std::shared_ptr<const ProgramSlot>& slot = standardPrograms_[index];
+        if (!slot) {
+            ProgramDesc desc = standardProgramDesc(ref.standard);
+            desc.gl.fragment = standardFragment(ref.standard);
+            makeCurrent();
+            slot = compile(std::make_shared<const ProgramDesc>(std::move(desc)));
+        }
+        return slot;
     }
 
     ProgramSlot& internalProgram(std::optional<ProgramSlot>& slot, const char* name, const std::string& fragment) {
@@ -995,107 +1028,101 @@ private:
         return id;
     }
 
-    void bindSampled(int unit, const TextureBinding& binding, const ProgramSlot& s, bool premultipliedUniform) {
-        const GLuint program = s.program.id();
-        if (!binding.texture) {
-            glProgramUniform1i(program, s.hasTexture, 0);
-            glBindTextureUnit(GLuint(unit), 0);
-            return;
-        }
-        const GlTexture& t = textures_.get(binding.texture);
-        glProgramUniform1i(program, s.hasTexture, 1);
-        glProgramUniform1i(program, s.filter, int(binding.sampler.filter));
-        if (premultipliedUniform)
-            glProgramUniform1i(program, s.premultiplied, t.desc.alpha == AlphaMode::Premultiplied ? 1 : 0);
-        glBindTextureUnit(GLuint(unit), t.id);
-        glBindSampler(GLuint(unit), sampler(binding.sampler));
-    }
-
-    // The lit programs' (OpaqueLit, FoliageColor, WboitAccumulate) light uniforms.
-    static void setLight(const ProgramSlot& s, const DirectionalLight& light) {
+    // The draw's parameters as the program's layout lays them out (ProgramDesc::gl).
+    void setParams(const ProgramSlot& s, const DrawParams& params) {
         const GLuint p = s.program.id();
-        const glm::vec3 toward = glm::normalize(light.towardLight);
-        glProgramUniform3fv(p, s.towardLight, 1, &toward[0]);
-        glProgramUniform3fv(p, s.lightColor, 1, &light.color[0]);
-        glProgramUniform3fv(p, s.ambient, 1, &light.ambient[0]);
-    }
-
-    void setParams(const ProgramSlot& s, const ProgramParams& params) {
-        const GLuint p = s.program.id();
-        std::visit(
-            [&](const auto& params) {
-                using P = std::decay_t<decltype(params)>;
-                if constexpr (std::is_same_v<P, FlatParams>) {
-                    glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
-                    glProgramUniform4fv(p, s.color, 1, &params.color[0]);
-                } else if constexpr (std::is_same_v<P, SurfaceParams>) {
-                    glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
-                    glProgramUniform4fv(p, s.color, 1, &params.baseColorFactor[0]);
-                    setLight(s, params.light);
-                    bindSampled(kUnitBaseColor, params.baseColor, s, true);
-                } else if constexpr (std::is_same_v<P, AlphaOnlyParams>) {
-                    glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
-                    glProgramUniform1f(p, s.alphaFactor, params.alphaFactor);
-                    bindSampled(kUnitBaseColor, params.baseColor, s, false);
-                } else if constexpr (std::is_same_v<P, WboitAccumulateParams>) {
-                    glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
-                    glProgramUniform4fv(p, s.color, 1, &params.baseColorFactor[0]);
-                    setLight(s, params.light);
-                    glProgramUniform1f(p, s.depthScale, params.depthScale);
-                    bindSampled(kUnitBaseColor, params.baseColor, s, true);
-                } else if constexpr (std::is_same_v<P, CoverageCompositeParams>) {
-                    glBindTextureUnit(kUnitFoliage, textures_.get(params.foliage).id);
-                    glBindTextureUnit(kUnitMask, textures_.get(params.mask).id);
-                    glBindTextureUnit(kUnitMaskAdd, params.maskAdd ? textures_.get(params.maskAdd).id : 0);
-                    for (GLuint unit : {0u, 1u, 2u}) glBindSampler(unit, 0);
-                    glProgramUniform1i(p, s.hasMaskAdd, params.maskAdd ? 1 : 0);
-                    glProgramUniform1i(p, s.coverageModel, int(params.model));
-                } else if constexpr (std::is_same_v<P, ParticleParams>) {
-                    glProgramUniformMatrix4fv(p, s.viewProj, 1, GL_FALSE, &params.viewProj[0][0]);
-                    glBindTextureUnit(0, params.sceneDepth ? textures_.get(params.sceneDepth).id : 0);
-                    glBindSampler(0, 0);
-                    glProgramUniform1i(p, s.hasDepth, params.sceneDepth ? 1 : 0);
-                    glProgramUniform1i(p, s.depthStride, params.depthStride);
-                    glProgramUniform1f(p, s.distanceScale, params.depthScale);
-                    glProgramUniform1f(p, s.distanceOffset, params.depthOffset);
-                    glProgramUniform1f(p, s.softness, params.softness);
-                    glProgramUniform1i(p, s.greaterIsCloser, params.greaterIsCloser ? 1 : 0);
-                } else if constexpr (std::is_same_v<P, LightShaftParams>) {
-                    glBindTextureUnit(0, textures_.get(params.depth).id);
-                    glBindSampler(0, 0);
-                    glProgramUniform2fv(p, s.sunPixel, 1, &params.sunPixel[0]);
-                    glProgramUniform1f(p, s.farDepth, params.farDepth);
-                    glProgramUniform1i(p, s.shaftGreater, params.greaterIsCloser ? 1 : 0);
-                    glProgramUniform3fv(p, s.shaftColor, 1, &params.color[0]);
-                    glProgramUniform1f(p, s.intensity, params.intensity);
-                    glProgramUniform1f(p, s.decay, params.decay);
-                    glProgramUniform1f(p, s.density, params.density);
-                    glProgramUniform1i(p, s.samples, params.samples);
-                    glProgramUniform1f(p, s.glowRadius, params.glowRadius);
-                } else if constexpr (std::is_same_v<P, LayerCompositeParams>) {
-                    glBindTextureUnit(0, params.sceneDepth ? textures_.get(params.sceneDepth).id : 0);
-                    glBindTextureUnit(1, textures_.get(params.layer).id);
-                    for (GLuint unit : {0u, 1u}) glBindSampler(unit, 0);
-                    glProgramUniform1i(p, s.layerScale, params.layerScale);
-                    glProgramUniform1i(p, s.hasDepth, params.sceneDepth ? 1 : 0);
-                    glProgramUniform1f(p, s.distanceScale, params.depthScale);
-                    glProgramUniform1f(p, s.distanceOffset, params.depthOffset);
-                    glProgramUniform1i(p, s.greaterIsCloser, params.greaterIsCloser ? 1 : 0);
-                } else if constexpr (std::is_same_v<P, WboitResolveParams>) {
-                    glBindTextureUnit(0, textures_.get(params.accumulation).id);
-                    glBindTextureUnit(1, textures_.get(params.revealage).id);
-                    for (GLuint unit : {0u, 1u}) glBindSampler(unit, 0);
-                } else {
-                    glBindTextureUnit(kUnitFoliage, textures_.get(params.foliage).id);
-                    glBindTextureUnit(kUnitMask, textures_.get(params.mask).id);
-                    glBindTextureUnit(kUnitMaskAdd, params.maskAdd ? textures_.get(params.maskAdd).id : 0);
-                    for (GLuint unit : {0u, 1u, 2u}) glBindSampler(unit, 0);
-                    glProgramUniform1i(p, s.hasMaskAdd, params.maskAdd ? 1 : 0);
-                    glProgramUniform1f(p, s.maskLerp, params.maskLerp);
-                    glProgramUniform1i(p, s.squareMask, params.squareMask ? 1 : 0);
+        const auto* bytes = static_cast<const std::byte*>(params.data());
+        const GlslProgram& gl = s.desc->gl;
+        for (std::size_t i = 0; i < gl.uniforms.size(); ++i) setUniform(p, s.uniforms[i], gl.uniforms[i], bytes);
+        for (std::size_t i = 0; i < gl.textures.size(); ++i) {
+            const TextureField& field = gl.textures[i];
+            const ProgramSlot::TextureUniforms& l = s.textures[i];
+            const auto unit = GLuint(field.unit);
+            if (field.read == TextureRead::Sampled) {
+                TextureBinding binding;
+                std::memcpy(&binding, bytes + field.offset, sizeof binding);
+                if (!binding.texture) {
+                    glProgramUniform1i(p, l.present, 0);
+                    glBindTextureUnit(unit, 0);
+                    continue;
                 }
-            },
-            params);
+                const GlTexture& t = textures_.get(binding.texture);
+                glProgramUniform1i(p, l.present, 1);
+                glProgramUniform1i(p, l.filter, int(binding.sampler.filter));
+                if (field.premultipliedUniform)
+                    glProgramUniform1i(p, l.premultiplied, t.desc.alpha == AlphaMode::Premultiplied ? 1 : 0);
+                glBindTextureUnit(unit, t.id);
+                glBindSampler(unit, sampler(binding.sampler));
+            } else {
+                TextureHandle handle;
+                std::memcpy(&handle, bytes + field.offset, sizeof handle);
+                glBindTextureUnit(unit, handle ? textures_.get(handle).id : 0);
+                glBindSampler(unit, 0);
+                if (field.presentUniform) glProgramUniform1i(p, l.present, handle ? 1 : 0);
+            }
+        }
+    }
+
+    static void setUniform(GLuint p, GLint location, const UniformField& field, const std::byte* bytes) {
+        const std::byte* at = bytes + field.offset;
+        auto read = [at](auto& value) { std::memcpy(&value, at, sizeof value); };
+        switch (field.type) {
+            case UniformType::Float: {
+                float v;
+                read(v);
+                glProgramUniform1f(p, location, v);
+                return;
+            }
+            case UniformType::Int: {
+                int v;
+                read(v);
+                glProgramUniform1i(p, location, v);
+                return;
+            }
+            case UniformType::Bool: {
+                bool v;
+                read(v);
+                glProgramUniform1i(p, location, v ? 1 : 0);
+                return;
+            }
+            case UniformType::Byte: {
+                std::uint8_t v;
+                read(v);
+                glProgramUniform1i(p, location, int(v));
+                return;
+            }
+            case UniformType::Vec2: {
+                glm::vec2 v;
+                read(v);
+                glProgramUniform2fv(p, location, 1, &v[0]);
+                return;
+            }
+            case UniformType::Vec3: {
+                glm::vec3 v;
+                read(v);
+                glProgramUniform3fv(p, location, 1, &v[0]);
+                return;
+            }
+            case UniformType::Direction: {
+                glm::vec3 v;
+                read(v);
+                v = glm::normalize(v);  // as the soft programs normalise it
+                glProgramUniform3fv(p, location, 1, &v[0]);
+                return;
+            }
+            case UniformType::Vec4: {
+                glm::vec4 v;
+                read(v);
+                glProgramUniform4fv(p, location, 1, &v[0]);
+                return;
+            }
+            case UniformType::Mat4: {
+                glm::mat4 v;
+                read(v);
+                glProgramUniformMatrix4fv(p, location, 1, GL_FALSE, &v[0][0]);
+                return;
+            }
+        }
     }
 
     // ---- draws ---------------------------------------------------------------------------
@@ -1103,8 +1130,8 @@ private:
     void execute(const DrawDesc& d) {
         const GlPipeline& pipeline = pipelines_.get(d.pipeline);
         const PipelineDesc& desc = pipeline.desc;
-        const bool fullscreen = isFullscreen(desc.program);
-        ProgramSlot& s = program(desc.program);
+        const ProgramSlot& s = *pipeline.program;
+        const bool fullscreen = s.desc->vertexInput == VertexInput::Fullscreen;
         const GLuint p = s.program.id();
 
         // Effective state, as the soft backend's drawStateFor computes it.
@@ -1126,7 +1153,8 @@ private:
         const FailModePlan plan = planFailMode({desc.alphaTest, depthTest, depthWrite, desc.depth.func, anyRgb, anyAlpha,
                                                 readsDstAlpha, options_.failModes == FailModeStrategy::PerTriangle});
 
-        applyBaseState();
+        // The base state was applied when the pass began; within a pass only this backend
+        // touches the context (a host sharing it changes state between passes, not inside one).
         glBindFramebuffer(GL_FRAMEBUFFER, passFbo_);
         glViewport(0, 0, passWidth_, passHeight_);
         glUseProgram(p);
@@ -1221,7 +1249,11 @@ private:
                 for (const PlanStep& step : plan.steps)
                     if (applyStep(step)) drawRange(d, d.first, d.count, 0, d.instanceCount);
         }
-        checkGl("draw with pipeline " + quotedName(desc.name) + " in pass " + quotedName(pass_->name));
+        // glGetError stalls a threaded driver and the message costs a string per draw: errors
+        // are checked per draw only in debug builds or with debug output on, and always at the
+        // end of the pass (endPass), which names the pass.
+        if (kCheckEveryDraw || options_.debugOutput)
+            checkGl("draw with pipeline " + quotedName(desc.name) + " in pass " + quotedName(pass_->name));
     }
 
     void drawRange(const DrawDesc& d, std::uint32_t first, std::uint32_t count, std::uint32_t baseInstance,
@@ -1252,12 +1284,12 @@ private:
     ResourcePool<BufferTag, GlBuffer> buffers_;
     ResourcePool<PipelineTag, GlPipeline> pipelines_;
     ResourcePool<QueryTag, GlQuery> queries_;
+    ResourcePool<ProgramTag, std::shared_ptr<const ProgramSlot>> programs_;
     ResourceLookup lookup_;  // what the shared validation reads
     std::set<GLuint> ownedTextures_, ownedBuffers_;
     std::map<GLenum, int> maxSamplesByFormat_;
     std::map<std::vector<GLuint>, GLuint> framebuffers_;
-    // Indexed by ProgramKind; room for kinds still to come (program() checks the bound).
-    std::array<std::optional<ProgramSlot>, 16> programs_;
+    std::array<std::shared_ptr<const ProgramSlot>, kStandardProgramCount> standardPrograms_;  // made on first use
     std::optional<ProgramSlot> resolveColor_, resolveDepth_, nothing_;
     std::array<GLuint, 27> samplers_{};
     GLuint vao_ = 0, emptyVao_ = 0, identityInstance_ = 0;

@@ -1,20 +1,22 @@
 #pragma once
-// GLSL 4.50 sources of every program kind (what soft/src/programs.hpp computes, line for
+// GLSL 4.50 sources of the standard programs (what soft/kernel/programs.hpp computes, line for
 // line) and of the backend's internal programs (resolves).
 #include <string>
 
 #include "engine/render/program.hpp"
+#include "engine/render/program_desc.hpp"
 
 namespace engine::render::gl {
-
-// Uniform/attribute/texture-unit layout shared by the sources and the backend.
-enum TextureUnit : int { kUnitBaseColor = 0, kUnitFoliage = 0, kUnitMask = 1, kUnitMaskAdd = 2 };
 
 // Fragment selection by the alpha test (u_alphaSelect), see FailModePlan.
 enum AlphaSelect : int { kSelectAll = 0, kSelectPassing = 1, kSelectFailing = 2 };
 
-std::string vertexSource(ProgramKind kind);
-std::string fragmentSource(ProgramKind kind);
+// The vertex stage for a program's input, and its fragment stage: the shared head (outputs,
+// finish()) before the program's body.
+std::string vertexSource(VertexInput input);
+std::string fragmentSource(VertexInput input, const std::string& body);
+// The fragment body of a standard program (standard_programs.hpp).
+std::string standardFragment(ProgramKind kind);
 
 // The sources are GLSL 4.50; on a 4.3/4.4 context (a GLFW window where nothing newer exists)
 // they are compiled as 4.30, which has everything they use.

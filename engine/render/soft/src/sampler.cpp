@@ -1,10 +1,10 @@
-#include "sampler.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "engine/render/pixel_codec.hpp"
-#include "texel_addressing.hpp"
+#include "engine/render/soft/kernel/texel_addressing.hpp"
 
 namespace engine::render::soft {
 namespace {
@@ -19,7 +19,7 @@ template <SampledChannels Channels>
     const Format f = t.desc.format;
     auto u8 = [p](int i) { return std::to_integer<std::uint8_t>(p[i]); };
     if constexpr (Channels == SampledChannels::AlphaOnly) {
-        // The mask program's dead-code stripping (seeds/000 §3.5.2): only alpha is decoded.
+        // The mask program's dead-code stripping ([Hathaway 2010] §3.5.2): only alpha is decoded.
         if (f == Format::RGBA8_UNORM || f == Format::RGBA8_SRGB) return {0.0f, 0.0f, 0.0f, tables.unorm[u8(3)]};
     }
     // The 8-bit formats inline (as loadTexel decodes them); the rest through loadTexel.

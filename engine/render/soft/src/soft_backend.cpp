@@ -1,6 +1,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -14,14 +15,16 @@
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/render/resource_pool.hpp"
+#include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
-#include "draw_state.hpp"
+#include "engine/render/soft/kernel/draw_state.hpp"
 #include "engine/render/pixel_codec.hpp"
-#include "sampler.hpp"
-#include "soft_texture.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
+#include "engine/render/soft/kernel/soft_texture.hpp"
+#include "standard_kernels.hpp"
 #include "tile_rasterizer.hpp"
-#include "triangle_setup.hpp"
+#include "engine/render/soft/kernel/triangle_setup.hpp"
 
 namespace engine::render::soft {
 namespace {
@@ -31,11 +34,13 @@ using Clock = std::chrono::steady_clock;
 struct SoftBuffer {
     BufferDesc desc;
     std::vector<std::byte> bytes;
+    std::uint32_t maxIndex = 0;  // index buffers: the largest index (validation's fast accept)
 };
 
 struct SoftPipeline {
     PipelineDesc desc;
     PipelineInfo info;
+    std::shared_ptr<const ProgramDesc> program;  // alive while the pipeline is
 };
 
 struct RecordedDraw {
@@ -52,7 +57,7 @@ struct GeometryChunk {
 
 
 // The alpha test can only matter when a failing fragment writes something different
-// from a passing one (seeds/004 "Looking further").
+// from a passing one ([PCSX2] "Looking further").
 bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite, bool anyAlphaWrite) {
     if (!test.enabled || test.func == CompareFunc::Always) return false;
     switch (test.failMode) {
@@ -82,10 +87,13 @@ public:
         : options_(options),
           arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic),
           textures_("texture"), buffers_("buffer"), pipelines_("pipeline"), queries_("occlusion query"),
+          programs_("program"),
           lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
                   [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
                   [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).bytes); },
-                  [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; }} {
+                  [this](BufferHandle h) { return buffers_.get(h).maxIndex; },
+                  [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; },
+                  [this](PipelineHandle h) -> const ProgramDesc& { return *pipelines_.get(h).program; }} {
         if (options.tileSize < 8 || options.tileSize % 8 != 0 || options.tileSize > 1024)
             throw Error("soft backend: tileSize " + std::to_string(options.tileSize) +
                         " must be a multiple of 8 in [8, 1024]");
@@ -121,6 +129,7 @@ public:
         validateBuffer(desc, data, what);
         SoftBuffer b{desc, std::vector<std::byte>(desc.size)};
         if (!data.empty()) std::memcpy(b.bytes.data(), data.data(), data.size());
+        if (desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
         return buffers_.add(std::move(b));
     }
 
@@ -143,15 +152,22 @@ public:
             execute();
         }
         std::memcpy(b.bytes.data() + offset, data.data(), data.size());
+        if (b.desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
+    }
+
+    ProgramHandle createProgram(const ProgramDesc& desc) override {
+        if (!desc.soft) throw Error("program " + quotedName(desc.name) + " has no CPU kernel for the soft backend");
+        return programs_.add(std::make_shared<const ProgramDesc>(desc));
     }
 
     PipelineHandle createPipeline(const PipelineDesc& desc) override {
         const std::string what = "pipeline " + quotedName(desc.name);
         if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
             throw Error(what + ": alpha reference is not finite");
-        if (isFullscreen(desc.program) && desc.depth.test)
-            throw Error(what + ": full-screen program " + programKindName(desc.program) + " cannot depth-test");
-        SoftPipeline p{desc, {}};
+        std::shared_ptr<const ProgramDesc> program = programFor(desc.program);
+        if (program->vertexInput == VertexInput::Fullscreen && desc.depth.test)
+            throw Error(what + ": full-screen program " + program->name + " cannot depth-test");
+        SoftPipeline p{desc, {}, std::move(program)};
         const bool depthWrite = desc.depth.test && desc.depth.write;
         bool anyRgb = false, anyAlpha = false, plain = true;
         for (const BlendState& b : desc.blend) {
@@ -167,6 +183,7 @@ public:
     void destroy(TextureHandle h) override { textures_.remove(h); }
     void destroy(BufferHandle h) override { buffers_.remove(h); }
     void destroy(PipelineHandle h) override { pipelines_.remove(h); }
+    void destroy(ProgramHandle h) override { programs_.remove(h); }
 
     QueryHandle createQuery(const std::string& name) override { return queries_.add({name}); }
     void destroy(QueryHandle h) override {
@@ -231,6 +248,17 @@ public:
         ++stats_.passes;
     }
 
+    void abortPass() noexcept override {
+        if (pass_ && pass_->countSamplesInto) {
+            try {
+                queries_.get(pass_->countSamplesInto).counted = false;
+            } catch (...) {  // destroyed meanwhile: nothing to mark
+            }
+        }
+        pass_.reset();
+        draws_.clear();
+    }
+
     void resolve(const ResolveDesc& r) override {
         SoftTexture& src = textures_.get(r.source);
         SoftTexture& dst = textures_.get(r.destination);
@@ -245,7 +273,7 @@ public:
                 for (int y = rows.begin(); y != rows.end(); ++y) {
                     for (int x = 0; x < src.desc.width; ++x) {
                         if (depth) {
-                            // The closest sample, never an average (seeds/000 §3.5.1).
+                            // The closest sample, never an average ([Hathaway 2010] §3.5.1).
                             float best = loadTexel(src.sample(x, y, 0), src.desc.format).r;
                             for (int s = 1; s < n; ++s) {
                                 const float z = loadTexel(src.sample(x, y, s), src.desc.format).r;
@@ -390,67 +418,31 @@ private:
         s.alphaTest = p.desc.alphaTest;
         s.alphaTest.enabled = alphaTestCanMatter(p.desc.alphaTest, s.depthWrite, anyRgb, anyAlpha);
         s.shade = anyRgb || anyAlpha || s.alphaTest.enabled || (s.alphaToCoverage && s.samples > 1);
-        s.program = makeProgram(p.desc.program, d.params);
+        s.program = p.program->soft->bind(d.params, textureLookup_);
         return s;
     }
 
-    ProgramInstance makeProgram(ProgramKind kind, const ProgramParams& params) const {
-        auto texture = [&](TextureHandle h) -> const SoftTexture* { return h ? &textures_.get(h) : nullptr; };
-        switch (kind) {
-            case ProgramKind::Flat: return FlatProgram{std::get<FlatParams>(params).color};
-            case ProgramKind::OpaqueLit: {
-                const auto& p = std::get<SurfaceParams>(params);
-                return OpaqueLitProgram{p, texture(p.baseColor.texture)};
-            }
-            case ProgramKind::FoliageColor: {
-                const auto& p = std::get<SurfaceParams>(params);
-                return FoliageColorProgram{p, texture(p.baseColor.texture)};
-            }
-            case ProgramKind::FoliageAlpha: {
-                const auto& p = std::get<AlphaOnlyParams>(params);
-                return FoliageAlphaProgram{p, texture(p.baseColor.texture)};
-            }
-            case ProgramKind::Composite: {
-                const auto& p = std::get<CompositeParams>(params);
-                return CompositeProgram{p, texture(p.foliage), texture(p.mask), texture(p.maskAdd)};
-            }
-            case ProgramKind::WboitAccumulate: {
-                const auto& p = std::get<WboitAccumulateParams>(params);
-                const SurfaceParams surface{p.viewProj, p.baseColorFactor, p.baseColor, p.light};
-                return WboitAccumulateProgram{FoliageColorProgram{surface, texture(p.baseColor.texture)}, p.depthScale};
-            }
-            case ProgramKind::WboitResolve: {
-                const auto& p = std::get<WboitResolveParams>(params);
-                return WboitResolveProgram{texture(p.accumulation), texture(p.revealage)};
-            }
-            case ProgramKind::Particle: {
-                const auto& p = std::get<ParticleParams>(params);
-                return ParticleProgram{p, texture(p.sceneDepth)};
-            }
-            case ProgramKind::LightShafts: {
-                const auto& p = std::get<LightShaftParams>(params);
-                return LightShaftsProgram{p, texture(p.depth)};
-            }
-            case ProgramKind::LayerComposite: {
-                const auto& p = std::get<LayerCompositeParams>(params);
-                return LayerCompositeProgram{p, texture(p.layer), texture(p.sceneDepth)};
-            }
-            case ProgramKind::CoverageComposite: {
-                const auto& p = std::get<CoverageCompositeParams>(params);
-                return CoverageCompositeProgram{p.model, texture(p.foliage), texture(p.mask), texture(p.maskAdd)};
-            }
+    std::shared_ptr<const ProgramDesc> programFor(const ProgramRef& ref) {
+        if (ref.created) return programs_.get(ref.created);
+        const auto index = std::size_t(ref.standard);
+        if (index >= standardPrograms_.size()) throw Error("unknown standard program " + std::to_string(index));
+        std::shared_ptr<const ProgramDesc>& slot = standardPrograms_[index];
+        if (!slot) {
+            ProgramDesc desc = standardProgramDesc(ref.standard);
+            desc.soft = standardKernel(ref.standard);
+            slot = std::make_shared<const ProgramDesc>(std::move(desc));
         }
-        throw Error("unknown program kind");
+        return slot;
     }
 
     // Vertex stage + clipping + setup + binning for one draw, in parallel over fixed chunks
     // of triangles; each chunk keeps its triangles and their (tile, triangle) bin entries
     // in submission order, and chunks are merged into the tile bins in order, so the result
     // is independent of the thread count. Chunk storage is reused from pass to pass.
-    void processGeometry(const DrawDesc& d, std::uint32_t drawIndex, const Viewport& vp, const RasterState& raster,
-                         const TileGrid& grid) {
+    void processGeometry(const DrawDesc& d, const DrawState& state, std::uint32_t drawIndex, const Viewport& vp,
+                         const RasterState& raster, const TileGrid& grid) {
         const SoftPipeline& p = pipelines_.get(d.pipeline);
-        if (isFullscreen(p.desc.program)) {
+        if (p.program->vertexInput == VertexInput::Fullscreen) {
             if (vp.scissor.empty()) return;
             GeometryChunk& chunk = nextChunks(1)[0];
             chunk.triangles.push_back(fullscreenTriangle(vp, drawIndex));
@@ -464,12 +456,7 @@ private:
         const Instance identity{};
         const Instance* instances =
             d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity;
-        const glm::mat4 viewProj = std::visit(
-            [](const auto& params) -> glm::mat4 {
-                if constexpr (requires { params.viewProj; }) return params.viewProj;
-                else return glm::mat4(1.0f);  // full-screen programs
-            },
-            d.params);
+        const glm::mat4 viewProj = state.program->viewProj();
 
         const std::uint64_t trianglesPerInstance = d.count / 3;
         const std::uint64_t total = trianglesPerInstance * d.instanceCount;
@@ -540,7 +527,7 @@ private:
                 s.shade = true;
                 s.depthWrite = false;
             }
-            processGeometry(d, i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, grid);
+            processGeometry(d, drawStates.back(), i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, grid);
         }
         stats_.draws += draws_.size();
 
@@ -599,7 +586,15 @@ private:
     ResourcePool<BufferTag, SoftBuffer> buffers_;
     ResourcePool<PipelineTag, SoftPipeline> pipelines_;
     ResourcePool<QueryTag, SoftQuery> queries_;
+    ResourcePool<ProgramTag, std::shared_ptr<const ProgramDesc>> programs_;
+    std::array<std::shared_ptr<const ProgramDesc>, kStandardProgramCount> standardPrograms_;  // made on first use
     ResourceLookup lookup_;  // what the shared validation reads
+    // How bound programs resolve texture handles.
+    struct Textures final : TextureLookup {
+        explicit Textures(const ResourcePool<TextureTag, SoftTexture>& pool) : pool(pool) {}
+        const SoftTexture* texture(TextureHandle h) const override { return h ? &pool.get(h) : nullptr; }
+        const ResourcePool<TextureTag, SoftTexture>& pool;
+    } textureLookup_{textures_};
     std::optional<PassDesc> pass_;
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
     Clock::time_point passStart_;

@@ -7,16 +7,12 @@
 #include <span>
 #include <vector>
 
-#include "draw_state.hpp"
+#include "engine/render/soft/kernel/draw_state.hpp"
+#include "engine/render/soft/kernel/triangle_rasterizer.hpp"
 #include "engine/render/raster_state.hpp"
-#include "triangle_setup.hpp"
+#include "engine/render/soft/kernel/triangle_setup.hpp"
 
 namespace engine::render::soft {
-
-struct TileCounters {
-    std::uint64_t pixelsShaded = 0;
-    std::uint64_t pixelsTouched = 0;
-};
 
 void rasterizeTile(const Rect& tile, std::span<const SetupTriangle* const> triangles,
                    const std::vector<DrawState>& draws, TileCounters& counters);

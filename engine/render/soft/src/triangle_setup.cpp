@@ -1,4 +1,4 @@
-#include "triangle_setup.hpp"
+#include "engine/render/soft/kernel/triangle_setup.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // The grass module as a living-scene feature: the "grass" pass draws every visible tuft
 // (GrassOptions::drawDistance) as one instanced draw of an alpha-tested card, depth-tested
 // against and writing into the opaque + foliage depth, so a tree in front hides the grass
-// behind it and the passes after (water, particles) see the grass (seeds/000 §3.7).
+// behind it and the passes after (water, particles) see the grass ([Hathaway 2010] §3.7).
 #include <vector>
 
 #include "engine/scene/frame_feature.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // The light-shafts module as a living-scene feature: one pass, "light shafts", running
-// ProgramKind::LightShafts over the whole frame with additive blending (RGB ONE/ONE, alpha
+// its program (light_shaft_program.hpp) over the whole frame with additive blending (RGB ONE/ONE, alpha
 // kept). The occlusion image is the opaque + foliage depth: foliage in front of the sun
 // blocks the shafts exactly where its colour pass wrote depth. Off (no pass) when the sun
 // is behind the camera or its glow misses the frame; skipped (the pass's draw does not run)
@@ -51,6 +51,7 @@ public:
 private:
     engine::render::Backend& backend_;
     LightShaftOptions options_;
+    engine::render::ProgramHandle program_;
     engine::render::PipelineHandle pipeline_;
     std::unique_ptr<SunVisibilityProbe> probe_;
     std::optional<engine::render::QueryHandle> lastQuery_;

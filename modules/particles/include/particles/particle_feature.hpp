@@ -2,10 +2,10 @@
 // The particles module as a living-scene feature.
 //   system "particles" (phase::simulation): ParticleSimulation::update with the frame's dt
 //   pass "particles": camera-facing quads into an RGBA16F layer cleared to 0, full or half
-//       resolution, ProgramKind::Particle with BlendState::premultipliedOver(): alpha-blended
-//       dust and additive spray in one target, a = src.a + dst.a(1 - src.a) (seeds/003);
+//       resolution, the Particle program (particle_programs.hpp) with BlendState::premultipliedOver(): alpha-blended
+//       dust and additive spray in one target, a = src.a + dst.a(1 - src.a) ([Turánszki 2017]);
 //       soft against the opaque + foliage depth (so a tree in front hides them, §3.7)
-//   pass "particles composite": ProgramKind::LayerComposite, the layer over the frame with
+//   pass "particles composite": the LayerComposite program, the layer over the frame with
 //       the premultiplied blend; a half-resolution layer is upsampled by nearest depth.
 // No live particle in view: neither pass runs.
 #include <memory>
@@ -38,6 +38,9 @@ private:
     engine::render::Backend& backend_;
     ParticleSimulation simulation_;
     float dt_ = 0.0f;
+    void destroyPrograms();  // and their pipelines
+
+    engine::render::ProgramHandle particleProgram_, compositeProgram_;  // particle_programs.hpp
     engine::render::PipelineHandle particlePipeline_, compositePipeline_;
     engine::render::TextureHandle layer_;
     engine::render::BufferHandle vertices_, indices_;

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "transparency/programs.hpp"
 #include "engine/render/backend.hpp"
 #include "engine/render/vertex.hpp"
 #include "ssam/config.hpp"
@@ -21,7 +22,7 @@
 namespace transparency {
 
 enum class TechniqueKind : std::uint8_t {
-    Ssam,             // seeds/000 with the paper's defaults
+    Ssam,             // [Hathaway 2010] with the paper's defaults
     SsamPlus,         // our improvement on it (README "SSAM+")
     AlphaTest,        // alpha test at 0.5, depth write: the baseline SSAM replaces
     AlphaToCoverage,  // 4x MSAA, coverage from alpha
@@ -58,9 +59,9 @@ struct FoliageFrame {
 // composite's coverage estimated from the MAX and ADD masks (engine/render program.hpp
 // CoverageModel) instead of lerp(max, add, 0.85) squared.
 struct SsamPlusOptions {
-    engine::render::CoverageModel coverage = engine::render::CoverageModel::EqualLayers;
+    CoverageModel coverage = CoverageModel::EqualLayers;
     ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::RG16F;  // ADD must not saturate at 1
-    float colorAlphaReference = 64.0f / 255.0f;                        // the colour pass's (seeds/000 §3.5.3)
+    float colorAlphaReference = 64.0f / 255.0f;                        // the colour pass's ([Hathaway 2010] §3.5.3)
 };
 
 struct TechniqueOptions {

@@ -1,9 +1,9 @@
 #pragma once
 // The water module: a "water ripples" system (phase::deformation) gives every pool in view
 // its own copy of its mesh with animated normals (VertexOverride), and the "water" pass
-// draws the frame's BLEND batches back to front, straight-alpha "over" (seeds/002), lit
+// draws the frame's BLEND batches back to front, straight-alpha "over" ([Hargreaves 2009]), lit
 // double-sided, depth-tested against the opaque + foliage depth without writing it
-// (seeds/000 §3.7: foliage in front hides the water, foliage behind does not).
+// ([Hathaway 2010] §3.7: foliage in front hides the water, foliage behind does not).
 #include <map>
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The deformation of one plant's vertices for one frame, a pure function of the rest pose,
 // the plant's pose and the time (so it is deterministic for a fixed time step and any
-// thread count). seeds/000 §3.3: wind and collisions move the intersecting cards of a tree,
+// thread count). [Hathaway 2010] §3.3: wind and collisions move the intersecting cards of a tree,
 // and of neighbouring trees, unpredictably; SSAM does not care about their order.
 #include <span>
 

@@ -1,5 +1,5 @@
 #pragma once
-// SSAM for engines that bring their own OpenGL (seeds/000 §3.5-3.7): the engine hands over the
+// SSAM for engines that bring their own OpenGL ([Hathaway 2010] §3.5-3.7): the engine hands over the
 // GL names of its opaque colour and depth textures and a callback that draws its foliage; SSAM
 // runs the mask, colour and composite passes into its own framebuffers and composites onto the
 // engine's colour texture, writing the foliage depth into the engine's depth texture.

@@ -53,7 +53,7 @@ struct Material {
     float alphaCutoff = 0.5f;  // used by Mask only
     bool doubleSided = false;
     bool unlit = false;    // KHR_materials_unlit
-    bool foliage = false;  // extras.foliage: drawn by SSAM (seeds/000)
+    bool foliage = false;  // extras.foliage: drawn by SSAM ([Hathaway 2010])
     float metallicFactor = 1.0f;
     float roughnessFactor = 1.0f;
     glm::vec3 emissiveFactor{0.0f};

@@ -1,5 +1,5 @@
 #pragma once
-// Mipmap chains for textures, filtered the way seeds/002 says filtering is correct:
+// Mipmap chains for textures, filtered the way [Hargreaves 2009] says filtering is correct:
 // on premultiplied colour, in linear light. Alpha-tested foliage additionally keeps its
 // alpha-test coverage down the chain (Castaño, "Computing Alpha Mipmaps", 2010): plain
 // box filtering averages thin leaves into alpha below the cutoff, so distant trees go bald.

@@ -1,5 +1,5 @@
 #pragma once
-// Alpha test in the PS2 GS sense (seeds/004): a fragment whose alpha fails
+// Alpha test in the PS2 GS sense ([PCSX2]): a fragment whose alpha fails
 // `alpha <func> reference` is not necessarily discarded whole; the fail mode says
 // what it still writes. Modern APIs only know Keep (GL/D3D `discard`).
 #include <cstdint>

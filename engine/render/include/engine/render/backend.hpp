@@ -10,15 +10,17 @@
 #include <vector>
 
 #include "engine/render/buffer.hpp"
+#include "engine/render/fragment_capture.hpp"
 #include "engine/render/handles.hpp"
 #include "engine/render/pass.hpp"
 #include "engine/render/pipeline.hpp"
+#include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 
 namespace engine::render {
 
 // What a pipeline became after creation-time simplification, so callers and tests can
-// see which work was skipped (seeds/004 "alpha testing is useless here").
+// see which work was skipped ([PCSX2] "alpha testing is useless here").
 struct PipelineInfo {
     bool alphaTestDropped = false;  // the test could not change the result
     bool blendIsPlainWrite = false; // ONE/ZERO ADD on every target: the no-blend path
@@ -47,7 +49,7 @@ struct ResolveDesc {
     TextureHandle source;       // multisampled colour or depth
     TextureHandle destination;  // single-sampled, same format and size
     // Depth resolve keeps the sample closest to the observer under this depth function
-    // (seeds/000 §3.5.1); colour resolve averages the samples.
+    // ([Hathaway 2010] §3.5.1); colour resolve averages the samples.
     CompareFunc depthFunc = CompareFunc::Less;
 };
 
@@ -59,10 +61,15 @@ public:
     virtual TextureHandle createTexture(const TextureDesc& desc, const TextureData* data = nullptr) = 0;
     virtual BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) = 0;
     virtual void updateBuffer(BufferHandle buffer, std::uint64_t offset, std::span<const std::byte> data) = 0;
+    // A module's program (program_desc.hpp); pipelines run it through PipelineDesc::program.
+    // Throws engine::Error when the description lacks this backend's part or does not compile.
+    virtual ProgramHandle createProgram(const ProgramDesc& desc) = 0;
     virtual PipelineHandle createPipeline(const PipelineDesc& desc) = 0;
     virtual void destroy(TextureHandle texture) = 0;
     virtual void destroy(BufferHandle buffer) = 0;
     virtual void destroy(PipelineHandle pipeline) = 0;
+    // A program still used by a pipeline stays alive until that pipeline is destroyed.
+    virtual void destroy(ProgramHandle program) = 0;
 
     // Occlusion queries, filled by a pass's PassDesc::countSamplesInto and read by another's
     // drawOnlyIfSamplesIn (sun visibility for light shafts, as lens flares use them).
@@ -78,12 +85,20 @@ public:
     virtual void beginPass(const PassDesc& pass) = 0;
     virtual void draw(const DrawDesc& draw) = 0;
     virtual void endPass() = 0;
+    // Ends the open pass without running what was recorded in it; nothing when no pass is
+    // open. PassScope calls it when an error unwinds through a pass, so the backend is never
+    // left inside one. A query the pass counted into reads as never counted.
+    virtual void abortPass() noexcept = 0;
 
     virtual void resolve(const ResolveDesc& resolve) = 0;
     virtual Readback readback(TextureHandle texture) = 0;
 
     // Per-pass timings since the last call, in execution order.
     virtual std::vector<PassTiming> takeTimings() = 0;
+
+    // Capabilities only some backends have: null where this one has none (asked for through
+    // the interface, so no caller downcasts a Backend).
+    virtual FragmentCapture* fragmentCapture() { return nullptr; }
 };
 
 }  // namespace engine::render

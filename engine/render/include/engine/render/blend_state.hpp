@@ -1,6 +1,6 @@
 #pragma once
 // Fixed-function blending as data, per colour target, RGB and alpha set separately
-// (D3DRS_SEPARATEALPHABLENDENABLE in seeds/000 §3.5.2, glBlendFuncSeparatei in GL).
+// (D3DRS_SEPARATEALPHABLENDENABLE in [Hathaway 2010] §3.5.2, glBlendFuncSeparatei in GL).
 //   result.rgb = op_rgb(src.rgb * srcFactorRgb, dst.rgb * dstFactorRgb)
 //   result.a   = op_a  (src.a   * srcFactorAlpha, dst.a  * dstFactorAlpha)
 // MIN and MAX ignore the factors (GL 4.5 Table 17.1).
@@ -59,18 +59,18 @@ struct BlendState {
 
     // Common set-ups, named as the seeds name them.
     static BlendState opaque() { return {}; }
-    // Straight-alpha "over" (seeds/002 "conventional"), alpha accumulated as in seeds/003.
+    // Straight-alpha "over" ([Hargreaves 2009] "conventional"), alpha accumulated as in [Turánszki 2017].
     static BlendState alphaOver() {
         return {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
                 BlendFactor::One, BlendFactor::InvSrcAlpha, BlendOp::Add, WriteAll};
     }
-    // Premultiplied "over" (seeds/002, seeds/003 layer blend).
+    // Premultiplied "over" ([Hargreaves 2009], [Turánszki 2017] layer blend).
     static BlendState premultipliedOver() {
         return {true, BlendFactor::One, BlendFactor::InvSrcAlpha, BlendOp::Add,
                 BlendFactor::One, BlendFactor::InvSrcAlpha, BlendOp::Add, WriteAll};
     }
-    // The SSAM mask (seeds/000 Table 3.1): RGB = MAX, A = ADD, all factors ONE.
-    static BlendState ssamMask() {
+    // The SSAM mask ([Hathaway 2010] Table 3.1): RGB = MAX, A = ADD, all factors ONE.
+    static BlendState maxRgbAddAlpha() {
         return {true, BlendFactor::One, BlendFactor::One, BlendOp::Max,
                 BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
     }

@@ -20,5 +20,6 @@ using TextureHandle = Handle<struct TextureTag>;
 using BufferHandle = Handle<struct BufferTag>;
 using PipelineHandle = Handle<struct PipelineTag>;
 using QueryHandle = Handle<struct QueryTag>;
+using ProgramHandle = Handle<struct ProgramTag>;
 
 }  // namespace engine::render

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/render/draw_params.hpp"
 #include "engine/render/handles.hpp"
 #include "engine/render/pipeline.hpp"
 #include "engine/render/program.hpp"
@@ -44,7 +45,7 @@ struct PassDesc {
 
 struct DrawDesc {
     PipelineHandle pipeline;
-    ProgramParams params;
+    DrawParams params;       // the program's parameter struct
     BufferHandle vertices;   // Vertex[]; unused by full-screen programs
     BufferHandle indices;    // uint32 indices; null: non-indexed
     std::uint32_t first = 0; // first index (or vertex when non-indexed)

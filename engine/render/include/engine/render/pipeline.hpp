@@ -1,6 +1,6 @@
 #pragma once
 // A pipeline is a program kind plus all fixed-function state, validated and simplified
-// once at creation (seeds/004: skip work that cannot change the result).
+// once at creation ([PCSX2]: skip work that cannot change the result).
 #include <array>
 #include <string>
 
@@ -19,7 +19,7 @@ inline constexpr int kMaxColorTargets = 4;
 
 struct PipelineDesc {
     std::string name;
-    ProgramKind program = ProgramKind::Flat;
+    ProgramRef program;
     std::array<BlendState, kMaxColorTargets> blend{};
     glm::vec4 blendConstant{0.0f};
     DepthState depth;

@@ -2,7 +2,7 @@
 // Perspective projections for the engine's clip convention (depth = z/w in [0, 1]).
 // Reverse-Z maps the near plane to 1 and the far plane to 0: float depth then has its
 // densest values where distances are largest, which keeps the 0.1 m .. 30 km range of
-// Pure's vistas (seeds/000 §3.1) resolvable; use it with CompareFunc::Greater and clear 0.
+// Pure's vistas ([Hathaway 2010] §3.1) resolvable; use it with CompareFunc::Greater and clear 0.
 #include <cmath>
 
 #include <glm/glm.hpp>

@@ -10,7 +10,7 @@
 
 namespace engine::render {
 
-// Whether colour texels are straight or already multiplied by alpha (seeds/002).
+// Whether colour texels are straight or already multiplied by alpha ([Hargreaves 2009]).
 // Filtering is only correct on premultiplied texels; programs ask for what they need.
 enum class AlphaMode : std::uint8_t { Straight, Premultiplied };
 

@@ -10,6 +10,7 @@
 #include "engine/render/buffer.hpp"
 #include "engine/render/pass.hpp"
 #include "engine/render/pipeline.hpp"
+#include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 
 namespace engine::render {
@@ -24,7 +25,9 @@ struct ResourceLookup {
     std::function<const TextureDesc&(TextureHandle)> texture;
     std::function<const BufferDesc&(BufferHandle)> buffer;
     std::function<std::span<const std::byte>(BufferHandle)> indexData;  // contents of an index buffer
+    std::function<std::uint32_t(BufferHandle)> maxIndex;  // its largest index (largestIndex, kept per write)
     std::function<const PipelineDesc&(PipelineHandle)> pipeline;
+    std::function<const ProgramDesc&(PipelineHandle)> program;  // the program a pipeline runs
 };
 
 // A size in 1..16384 per side and at most 1 GiB, 1/2/4/8 samples (multisampled and depth
@@ -44,6 +47,10 @@ PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup);
 // index, vertex and instance it reads, sampled textures are single-sampled, large enough
 // for full-screen programs and not bound as a target of the pass.
 void validateDraw(const DrawDesc& draw, const PassDesc& pass, const PassExtent& extent, const ResourceLookup& lookup);
+
+// The largest of the uint32 indices (0 for none): a backend keeps it per index buffer, updated
+// when the buffer is written, so validateDraw need not read every index of every draw.
+std::uint32_t largestIndex(std::span<const std::byte> indexData);
 
 // Occlusion queries: reading one before any pass counted into it, and reading one the open
 // pass counts into or destroying one it uses (`open` null when no pass is open).

@@ -14,7 +14,7 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 48);
 
-// One per drawn instance: hundreds of trees are one mesh and one draw (seeds/000 §3.3).
+// One per drawn instance: hundreds of trees are one mesh and one draw ([Hathaway 2010] §3.3).
 struct Instance {
     glm::mat4 model{1.0f};
     glm::vec4 tint{1.0f};  // multiplies the vertex colour

@@ -5,7 +5,7 @@
 // render() on each in that order: opaque -> foliage technique (SSAM's colour pass writes
 // foliage depth into the opaque depth target) -> grass -> water -> particles -> light
 // shafts -> present. Everything a pass depth-tests against is `depth`, the opaque + foliage
-// depth, so foliage correctly hides what is behind it (seeds/000 §3.7).
+// depth, so foliage correctly hides what is behind it ([Hathaway 2010] §3.7).
 #include <string_view>
 
 #include <glm/glm.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// How the GL backend turns a GS-style alpha test (seeds/004) into GL draws: a list of steps,
+// How the GL backend turns a GS-style alpha test ([PCSX2]) into GL draws: a list of steps,
 // each drawing the whole draw with the fragments that pass, fail or all of them, writing only
 // some channels and maybe depth. Pure logic, no GL, so it is unit-tested on its own.
 //
@@ -51,7 +51,7 @@ struct FailModeInputs {
 };
 
 // The alpha test can only matter when a failing fragment writes something different from a
-// passing one (seeds/004 "Looking further"); the soft backend's rule, verbatim.
+// passing one ([PCSX2] "Looking further"); the soft backend's rule, verbatim.
 bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite, bool anyAlphaWrite);
 
 FailModePlan planFailMode(const FailModeInputs& in);

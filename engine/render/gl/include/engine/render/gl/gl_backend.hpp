@@ -10,7 +10,7 @@
 // What is emulated, and how exactly (README "GL backend"):
 //   - Alpha test in GLSL with `discard`; the PS2 GS fail modes FB_ONLY / ZB_ONLY / RGB_ONLY by
 //     splitting a draw into steps that each write a subset of colour/alpha/depth for the
-//     fragments that pass or fail (seeds/004; fail_mode_plan.hpp). Exact when depth cannot change
+//     fragments that pass or fail ([PCSX2]; fail_mode_plan.hpp). Exact when depth cannot change
 //     under the draw (no depth writes) or its test cannot depend on order (ALWAYS: the seed's
 //     depth-always rewrite); otherwise the two-pass split is inexact where fragments of one draw
 //     overlap, reported by PipelineInfo::exact = false + note and a warning, unless

@@ -30,34 +30,18 @@ struct SoftStats {
     std::uint64_t nonFiniteStores = 0;   // NaN/Inf written to float targets (debugChecks only)
 };
 
-// One fragment as a capturing draw hands it over (SoftBackend::setFragmentSink).
-struct CapturedFragment {
-    float depth = 0.0f;     // the pixel-centre depth the depth test compared
-    glm::vec4 color{0.0f};  // the program's output, straight alpha, before any blending
-};
-
-// Receives the fragments of capturing draws instead of their colour targets: every fragment
-// that passes the depth test (and the alpha test, if any), per pixel in submission order.
-// add() is called concurrently for pixels of different tiles, never for one pixel from two
-// threads (a tile is rasterized by one thread, in submission order), so per-pixel storage
-// needs no locking and the result does not depend on the thread count.
-class FragmentSink {
-public:
-    virtual ~FragmentSink() = default;
-    virtual void add(int x, int y, const CapturedFragment& fragment) = 0;
-};
+// Fragment capture (engine/render/fragment_capture.hpp), by the names it had here.
+using engine::render::CapturedFragment;
+using engine::render::FragmentSink;
 
 class SoftBackend;
 std::unique_ptr<SoftBackend> createSoftBackend(const SoftOptions& options = {});
 
-class SoftBackend : public Backend {
+class SoftBackend : public Backend, public FragmentCapture {
 public:
     virtual SoftStats stats() const = 0;
     virtual const SoftOptions& options() const = 0;
-    // Draws recorded while a sink is set hand their fragments to it and write no colour and
-    // no depth (the exact transparency reference, modules/transparency). They must be in a
-    // single-sampled pass and depth-tested (engine::Error otherwise). Null: draw normally.
-    virtual void setFragmentSink(FragmentSink* sink) = 0;
+    FragmentCapture* fragmentCapture() override { return this; }
 };
 
 }  // namespace engine::render::soft

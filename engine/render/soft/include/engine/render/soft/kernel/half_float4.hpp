@@ -1,6 +1,6 @@
 #pragma once
 // Half-float (binary16) conversion of four lanes at a time in SSE2, for the float-mask
-// paths of the rasterizer (SSAM's maskPrecision RGBA16F / RG16F and SSAM+, seeds/000
+// paths of the rasterizer (SSAM's maskPrecision RGBA16F / RG16F and SSAM+, [Hathaway 2010]
 // §3.5.2), with exactly the bits of pixel_codec.hpp's encodeHalf and decodeHalf. The build
 // targets plain x86-64 SSE2, so Imath converts without F16C: float -> half is
 // imath_float_to_half's integer rounding to nearest even, half -> float its 65536-entry
@@ -10,16 +10,16 @@
 // every float (tests/unit/soft/half_float4_test.cpp).
 #include <cstdint>
 
-#if defined(__SSE2__) && !defined(SSAM_SOFT_SCALAR)
+#if defined(__SSE2__) && !defined(SOFT_RASTER_SCALAR)
 #include <emmintrin.h>
-#define SSAM_HALF_FLOAT4_SSE2 1
+#define SOFT_HALF_FLOAT4_SSE2 1
 #endif
 
 #include "engine/render/pixel_codec.hpp"
 
 namespace engine::render::soft {
 
-#if SSAM_HALF_FLOAT4_SSE2
+#if SOFT_HALF_FLOAT4_SSE2
 // encodeHalf of each lane, in the low 16 bits of each 32-bit lane (the high bits are 0).
 // Per lane, with ui = |v|'s bits and the sign put back at the end (imath_float_to_half):
 //   NaN          0x7C00 | m | (m == 0), m = the top 10 mantissa bits (stays a NaN)

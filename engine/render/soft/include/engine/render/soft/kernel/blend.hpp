@@ -90,7 +90,7 @@ inline glm::vec4 blend(const BlendState& b, glm::vec4 src, glm::vec4 dst, glm::v
 }
 
 // Blends whose factors are all ONE and whose operations are ADD or MAX (the SSAM mask,
-// seeds/000 Table 3.1).
+// [Hathaway 2010] Table 3.1).
 inline bool isOneOneAddMax(const BlendState& b) {
     auto addOrMax = [](BlendOp op) { return op == BlendOp::Add || op == BlendOp::Max; };
     return b.srcRgb == BlendFactor::One && b.dstRgb == BlendFactor::One && b.srcAlpha == BlendFactor::One &&

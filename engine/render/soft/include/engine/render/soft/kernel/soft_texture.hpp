@@ -15,7 +15,7 @@ struct MipLevel {
     std::vector<std::byte> texels;
     // The alpha of each RGBA8 texel, decoded (byteTables().unorm: code / 255), for textures
     // that are only sampled (see SoftTexture::copyAlpha); empty otherwise. The mask pass and
-    // the colour pass's alpha test sample alpha alone (seeds/000 §3.5.2): with the values
+    // the colour pass's alpha test sample alpha alone ([Hathaway 2010] §3.5.2): with the values
     // ready, a bilinear tap pair is one 8-byte load and nothing to decode.
     std::vector<float> alpha;
 };

@@ -1,5 +1,5 @@
-// The program kinds and soft-backend hooks the transparency techniques added
-// (WboitAccumulate, WboitResolve, CoverageComposite, SoftBackend::setFragmentSink): bad
+// The programs and soft-backend hooks the transparency techniques added
+// (programs.hpp: WboitAccumulate, WboitResolve, CoverageComposite; SoftBackend::setFragmentSink): bad
 // input is refused with engine::Error, and every technique is deterministic for any thread
 // count (the soft backend's promise, seeds of the goldens).
 #include <gtest/gtest.h>
@@ -10,7 +10,9 @@
 #include <limits>
 
 #include "engine/core/error.hpp"
+#include "ssam/composite_program.hpp"
 #include "technique_fixture.hpp"
+#include "transparency/programs.hpp"
 
 namespace {
 
@@ -26,10 +28,10 @@ TextureHandle texture(Backend& b, int size, Format format, std::uint8_t usage = 
     return b.createTexture(t);
 }
 
-void drawFullscreen(Backend& b, ProgramKind kind, ProgramParams params, TextureHandle target) {
+void drawFullscreen(Backend& b, ProgramRef program, DrawParams params, TextureHandle target) {
     PipelineDesc p;
     p.name = "fullscreen";
-    p.program = kind;
+    p.program = program;
     const PipelineHandle pipeline = b.createPipeline(p);
     PassDesc pass;
     pass.name = "pass";
@@ -54,23 +56,18 @@ TEST(TransparencyPrograms, FullscreenKindsRefuseMissingOrSmallInputs) {
     const TextureHandle target = texture(*b, 8, Format::RGBA32F);
     const TextureHandle small = texture(*b, 4, Format::RGBA16F);
     const TextureHandle good = texture(*b, 8, Format::RGBA16F);
-    EXPECT_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{{}, good}, target), engine::Error);
-    EXPECT_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{good, small}, target), engine::Error);
-    EXPECT_THROW(drawFullscreen(*b, ProgramKind::CoverageComposite, CoverageCompositeParams{good, {}, {}, CoverageModel::EqualLayers}, target),
+    const ProgramHandle resolve = b->createProgram(wboitResolveProgram());
+    const ProgramHandle coverage = b->createProgram(coverageCompositeProgram());
+    EXPECT_THROW(drawFullscreen(*b, resolve, WboitResolveParams{{}, good}, target), engine::Error);
+    EXPECT_THROW(drawFullscreen(*b, resolve, WboitResolveParams{good, small}, target), engine::Error);
+    EXPECT_THROW(drawFullscreen(*b, coverage, CoverageCompositeParams{good, {}, {}, CoverageModel::EqualLayers}, target),
                  engine::Error);
-    EXPECT_THROW(drawFullscreen(*b, ProgramKind::CoverageComposite,
+    EXPECT_THROW(drawFullscreen(*b, coverage,
                                 CoverageCompositeParams{good, good, {}, CoverageModel(7)}, target),
                  engine::Error);
     // Parameters of another kind.
-    EXPECT_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, CompositeParams{good, good, {}, 0.85f, true}, target), engine::Error);
-    EXPECT_NO_THROW(drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{good, good}, target));
-    // Light shafts read one float of depth per texel.
-    LightShaftParams shafts;
-    shafts.depth = good;
-    ssam::testing::expectError([&] { drawFullscreen(*b, ProgramKind::LightShafts, shafts, target); },
-                               "light-shaft depth is RGBA16F, not D32F or R32F");
-    shafts.depth = texture(*b, 8, Format::R32F);
-    EXPECT_NO_THROW(drawFullscreen(*b, ProgramKind::LightShafts, shafts, target));
+    EXPECT_THROW(drawFullscreen(*b, resolve, ssam::CompositeParams{good, good, {}, 0.85f, true}, target), engine::Error);
+    EXPECT_NO_THROW(drawFullscreen(*b, resolve, WboitResolveParams{good, good}, target));
 }
 
 // Non-finite accumulation (hostile HDR data) composites as black, never NaN.
@@ -90,7 +87,7 @@ TEST(TransparencyPrograms, WboitResolveNeverOutputsNaN) {
     data.levels[0] = std::as_bytes(std::span(revealage));
     const TextureHandle rev = b->createTexture(t, &data);
     const TextureHandle target = texture(*b, 1, Format::RGBA32F);
-    drawFullscreen(*b, ProgramKind::WboitResolve, WboitResolveParams{acc, rev}, target);
+    drawFullscreen(*b, b->createProgram(wboitResolveProgram()), WboitResolveParams{acc, rev}, target);
     const Readback r = b->readback(target);
     for (float v : r.values) EXPECT_TRUE(std::isfinite(v));
 }
@@ -108,7 +105,7 @@ TEST(TransparencyPrograms, FragmentCaptureNeedsASingleSampledDepthTestedPass) {
             ssam::OpaqueTargets opaque(*b, {8, 8, samples, Format::RGBA8_UNORM, CompareFunc::Less});
             PipelineDesc p;
             p.name = "capture";
-            p.program = ProgramKind::FoliageColor;
+            p.program = ProgramKind::MaskedLit;
             if (depthTest) p.depth = DepthState::testOnly();
             const PipelineHandle pipeline = b->createPipeline(p);
             b->setFragmentSink(&sink);

@@ -1,6 +1,6 @@
 #pragma once
 // The alpha of sampleTexture<SampledChannels::AlphaOnly> for RGBA8 textures (UNORM or sRGB:
-// alpha is linear in both), for the mask program (seeds/000 §3.5.2: "alpha only"). The
+// alpha is linear in both), for the mask program ([Hathaway 2010] §3.5.2: "alpha only"). The
 // mask pass shades every foliage layer, so its cost is per fragment: this sampler reads the
 // texture's decoded alpha copy (MipLevel::alpha) where it has one, finds each level's
 // texels once per draw rather than per tap, and is inlined into the rasterizer's row loop;
@@ -14,9 +14,9 @@
 #include <cmath>
 #include <cstdint>
 
-#if defined(__SSE2__) && !defined(SSAM_SOFT_SCALAR)
+#if defined(__SSE2__) && !defined(SOFT_RASTER_SCALAR)
 #include <emmintrin.h>
-#define SSAM_ALPHA_SAMPLER_SSE2 1
+#define SOFT_SAMPLER_SSE2 1
 #endif
 
 #include <glm/glm.hpp>
@@ -90,7 +90,7 @@ public:
         return bilinear(lo, uv) * (1.0f - t) + bilinear(lo + 1, uv) * t;
     }
 
-#if SSAM_ALPHA_SAMPLER_SSE2
+#if SOFT_SAMPLER_SSE2
     // What sampling 4 fragments reads: each lane's level(s) and the texels and weights of
     // bilinear() there (lane i: uv (u[i], v[i]), derivatives (dudx[i], dvdx[i]) and (dudy[i],
     // dvdy[i])), for the lanes set in `lanes` (the others read safe, unused texels). Worked
@@ -143,7 +143,7 @@ private:
         return top * (1.0f - ay) + bottom * ay;
     }
 
-#if SSAM_ALPHA_SAMPLER_SSE2
+#if SOFT_SAMPLER_SSE2
     // The levels each lane reads: level0 alone, or level0 and level1 mixed by t where bit i
     // of `trilinear` is set (sample()'s level choice).
     struct Footprint4 {
@@ -336,7 +336,7 @@ private:
     std::array<Level, kMaxLevels> levels_{};
 };
 
-#if SSAM_ALPHA_SAMPLER_SSE2
+#if SOFT_SAMPLER_SSE2
 inline AlphaSampler::Lookup4 AlphaSampler::lookup4(const float* u, const float* v, const float* dudx, const float* dvdx,
                                                    const float* dudy, const float* dvdy, std::uint32_t lanes) const {
     Lookup4 l;

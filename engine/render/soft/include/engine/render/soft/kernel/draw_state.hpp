@@ -3,20 +3,15 @@
 // targets, effective fixed-function state (after creation-time simplification) and the
 // program instance.
 #include <array>
-#include <variant>
+#include <memory>
 
 #include "engine/render/pipeline.hpp"
 #include "engine/render/soft/soft_backend.hpp"
-#include "programs.hpp"
-#include "particle_programs.hpp"
 #include "soft_texture.hpp"
 
 namespace engine::render::soft {
 
-using ProgramInstance =
-    std::variant<FlatProgram, OpaqueLitProgram, FoliageColorProgram, FoliageAlphaProgram, CompositeProgram,
-                 WboitAccumulateProgram, WboitResolveProgram, CoverageCompositeProgram, ParticleProgram,
-                 LayerCompositeProgram, LightShaftsProgram>;
+class BoundProgram;  // program_kernel.hpp
 
 // Standard sample positions (D3D11 / Vulkan standard locations), in 1/16 pixel from the
 // pixel centre. GL leaves them to the implementation; README "Differential tolerances".
@@ -27,7 +22,7 @@ struct SamplePattern {
 const SamplePattern& samplePattern(int samples);
 
 struct DrawState {
-    ProgramInstance program;
+    std::shared_ptr<const BoundProgram> program;  // the draw's program, bound to its parameters
     std::array<SoftTexture*, kMaxColorTargets> colorTargets{};
     int colorTargetCount = 0;
     SoftTexture* depthTarget = nullptr;

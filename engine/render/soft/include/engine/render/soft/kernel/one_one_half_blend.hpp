@@ -1,5 +1,5 @@
 #pragma once
-// SSAM's mask blends (ONE/ONE, MAX or ADD per half, seeds/000 §3.5.2 and Table 3.1) onto
+// SSAM's mask blends (ONE/ONE, MAX or ADD per half, [Hathaway 2010] §3.5.2 and Table 3.1) onto
 // half-float targets: maskPrecision RGBA16F, and RG16F, which is two R16F targets, one
 // equation each (SSAM+ too). The general path loads the texel, runs blend() and stores
 // through storeTexel per pixel; these do the same per channel with the same bits. Float
@@ -8,7 +8,7 @@
 //   MAX  glm::max(a, d) = (a < d) ? d : a   (a, not d, where d is NaN; +0 over -0)
 //   ADD  a * 1 + d * 1                        (the factors are exactly 1: a + d, unsaturated)
 // then encodeHalf, which rounds to nearest even. Channels the write mask leaves keep their
-// bits. (a is the FoliageAlpha program's saturated alpha, never NaN; the results do not
+// bits. (a is the AlphaOnly program's saturated alpha, never NaN; the results do not
 // depend on that, except which NaN an ADD of two NaNs gives.)
 #include <cstddef>
 #include <cstdint>
@@ -38,7 +38,7 @@ inline void blendOneOneHalf(const BlendState& b, std::byte* p, int channels, flo
     }
 }
 
-#if SSAM_HALF_FLOAT4_SSE2
+#if SOFT_HALF_FLOAT4_SSE2
 // Four pixels, pixel i at p + i * 2 * channels with alpha lane i of `a`, for the lanes set in
 // `lanes` (the others are neither read nor written, so lanes past a target's edge are
 // safe). MAX is maxps(d, a), which is d where d > a and a otherwise (NaN, equal values and

@@ -1,0 +1,104 @@
+#pragma once
+// Programs are data (Filament's DriverAPI createProgram, sokol_gfx's shader descriptors): a
+// module describes its program once, for every backend, and hands the description to
+// Backend::createProgram. The render layer knows no effect; it runs what it is given:
+//   - for GL, a GLSL fragment stage and the layout of the parameter struct's uniforms and
+//     textures, which the driver uploads from each draw's DrawParams;
+//   - for the soft backend, a CPU kernel written against the program-authoring headers
+//     (engine/render/soft/kernel/), which instantiates the tile rasterizer for the program
+//     in the module's own translation unit (no virtual call per fragment).
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/render/draw_params.hpp"
+#include "engine/render/texture.hpp"
+
+namespace engine::render {
+
+namespace soft {
+class ProgramKernel;  // engine/render/soft/kernel/program_kernel.hpp
+}
+
+// What the vertex stage is. Mesh: the engine's Vertex and Instance layout (vertex.hpp),
+// transformed by the viewProj the program's parameters carry (GL: uniform u_viewProj).
+// Fullscreen: one triangle over the viewport, no vertex input; the fragment stage reads
+// its textures at its own pixel.
+enum class VertexInput : std::uint8_t { Mesh, Fullscreen };
+
+// One uniform of a GLSL program, read from the parameter struct at `offset`.
+enum class UniformType : std::uint8_t {
+    Float,      // float
+    Int,        // int
+    Bool,       // bool (GLSL bool / int)
+    Byte,       // std::uint8_t, e.g. an enum class : std::uint8_t (GLSL int)
+    Vec2,       // glm::vec2
+    Vec3,       // glm::vec3
+    Vec4,       // glm::vec4
+    Mat4,       // glm::mat4, column-major
+    Direction,  // glm::vec3, normalised by the driver as glm::normalize does on the CPU
+};
+struct UniformField {
+    const char* name = "";
+    UniformType type = UniformType::Float;
+    std::uint32_t offset = 0;
+};
+
+// How a program reads a texture its parameters name.
+enum class TextureRead : std::uint8_t {
+    Texel,    // a TextureHandle read with texelFetch (no sampler object, no filtering)
+    Sampled,  // a TextureBinding, filtered with its sampler state
+};
+// What the texture must be for the draw to be valid (checked on every backend alike).
+enum class TextureUse : std::uint8_t {
+    Sampled,   // single-sampled and not a target of the pass
+    FullSize,  // as Sampled, and at least the target's size: read at every target pixel
+};
+struct TextureField {
+    const char* name = "";  // the GLSL sampler, for messages
+    std::uint32_t offset = 0;  // of the TextureHandle (Texel) or TextureBinding (Sampled)
+    int unit = 0;              // the GLSL layout(binding = unit)
+    TextureRead read = TextureRead::Texel;
+    TextureUse use = TextureUse::Sampled;
+    bool optional = false;     // a null handle is allowed (the program reads presentUniform)
+    const char* presentUniform = nullptr;        // set to whether the handle is non-null
+    const char* filterUniform = nullptr;         // Sampled: the binding's Filter, as an int
+    const char* premultipliedUniform = nullptr;  // Sampled: whether the texture is premultiplied
+};
+
+struct GlslProgram {
+    // The fragment stage's body. The driver puts before it the version line, the outputs and
+    // finish(vec4 color) (alpha test, alpha-to-coverage, every target written), and for Mesh
+    // programs the interpolants v_uv, v_normal, v_color are declared by the body itself.
+    std::string fragment;
+    std::vector<UniformField> uniforms;
+    std::vector<TextureField> textures;
+};
+
+// Checks of a draw's parameters beyond their textures, made by every backend before the
+// draw is recorded: fail() throws engine::Error naming the draw, pipeline and pass.
+class DrawCheck {
+public:
+    virtual ~DrawCheck() = default;
+    [[noreturn]] virtual void fail(const std::string& message) const = 0;
+    virtual const TextureDesc& texture(TextureHandle texture) const = 0;
+    virtual const TextureDesc& sampled(TextureHandle texture) const = 0;  // TextureUse::Sampled's checks
+    virtual int targetWidth() const = 0;
+    virtual int targetHeight() const = 0;
+};
+
+struct ProgramDesc {
+    std::string name;
+    VertexInput vertexInput = VertexInput::Mesh;
+    ParamsType params = nullptr;  // paramsType<P>() of the struct its draws pass
+    const char* paramsName = "";  // that struct's name, for messages
+    GlslProgram gl;
+    std::shared_ptr<const soft::ProgramKernel> soft;
+    // Optional: checks of the parameters (ranges, finiteness, texture formats), made after
+    // the textures' own checks; `params` points at the draw's struct.
+    std::function<void(const void* params, const DrawCheck& check)> check;
+};
+
+}  // namespace engine::render

@@ -1,0 +1,111 @@
+#pragma once
+// The soft backend's kernels of the particle module's programs (particle_programs.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/soft/kernel/fragment.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
+#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "particles/particle_programs.hpp"
+
+namespace particles {
+
+namespace soft = engine::render::soft;
+
+inline float saturateOrZero(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }  // NaN -> 0
+
+// The depth of the `stride` x `stride` block of full-resolution texels under layer texel
+// (x, y) that is closest to the observer (clamped at the texture's edge).
+inline float closestDepth(const soft::SoftTexture& depth, int x, int y, int stride, bool greaterIsCloser) {
+    stride = std::clamp(stride, 1, 4);  // the kinds accept 1 or 2; anything else stays in bounds
+    const int w = depth.desc.width, h = depth.desc.height;
+    float best = soft::fetchTexel(depth, std::min(x * stride, w - 1), std::min(y * stride, h - 1)).r;
+    for (int sy = 0; sy < stride; ++sy)
+        for (int sx = 0; sx < stride; ++sx) {
+            const float z = soft::fetchTexel(depth, std::min(x * stride + sx, w - 1), std::min(y * stride + sy, h - 1)).r;
+            if (greaterIsCloser ? z > best : z < best) best = z;
+        }
+    return best;
+}
+
+struct ParticleKernel {
+    static constexpr soft::ProgramNeeds kNeeds{true, false, true, true};
+    static constexpr bool kReadsPixels = true;  // the scene depth at the fragment's pixel
+    ParticleParams params;
+    const soft::SoftTexture* depth = nullptr;
+
+    ParticleKernel(const ParticleParams& p, const soft::TextureLookup& textures)
+        : params(p), depth(textures.texture(p.sceneDepth)) {}
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const glm::vec2 q = f.uv * 2.0f - 1.0f;
+        const float shape = saturateOrZero(1.0f - (q.x * q.x + q.y * q.y));
+        float fade = 1.0f;
+        if (depth) {
+            const float z = closestDepth(*depth, f.x, f.y, params.depthStride, params.greaterIsCloser);
+            const float sceneDistance = params.depthScale / (z + params.depthOffset);
+            fade = saturateOrZero((sceneDistance - f.normal.x) / params.softness);
+        }
+        const float a = saturateOrZero(f.color.a) * shape * fade;
+        const float additive = saturateOrZero(f.normal.y);
+        glm::vec4 out(glm::vec3(f.color) * a, a * (1.0f - additive));
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(out[c])) out[c] = 0.0f;
+        return out;
+    }
+};
+
+struct LayerCompositeKernel {
+    static constexpr soft::ProgramNeeds kNeeds{};
+    static constexpr bool kReadsPixels = true;
+    LayerCompositeParams params;
+    const soft::SoftTexture* layer = nullptr;
+    const soft::SoftTexture* depth = nullptr;
+
+    LayerCompositeKernel(const LayerCompositeParams& p, const soft::TextureLookup& textures)
+        : params(p), layer(textures.texture(p.layer)), depth(textures.texture(p.sceneDepth)) {}
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const int lw = layer->desc.width, lh = layer->desc.height;
+        const int scale = std::clamp(params.layerScale, 1, 4);
+        int lx = std::min(f.x / scale, lw - 1), ly = std::min(f.y / scale, lh - 1);
+        if (scale > 1 && depth) {
+            const float here = params.depthScale / (soft::fetchTexel(*depth, f.x, f.y).r + params.depthOffset);
+            // The 2x2 layer texels around this pixel's centre, nearest first on ties.
+            const int x0 = std::clamp((f.x - 1) / 2, 0, lw - 1), y0 = std::clamp((f.y - 1) / 2, 0, lh - 1);
+            const int x1 = std::min(x0 + 1, lw - 1), y1 = std::min(y0 + 1, lh - 1);
+            const int nx = std::clamp(f.x / 2, 0, lw - 1), ny = std::clamp(f.y / 2, 0, lh - 1);
+            // Where the four candidates agree (most of the screen: all empty, or inside one
+            // puff) any choice gives the same texel: no depth is read.
+            const glm::vec4 c00 = soft::fetchTexel(*layer, x0, y0);
+            if (c00 == soft::fetchTexel(*layer, x1, y0) && c00 == soft::fetchTexel(*layer, x0, y1) &&
+                c00 == soft::fetchTexel(*layer, x1, y1))
+                return finiteLayerTexel(c00);
+            float best = std::abs(params.depthScale /
+                                      (closestDepth(*depth, nx, ny, scale, params.greaterIsCloser) +
+                                       params.depthOffset) -
+                                  here);
+            lx = nx, ly = ny;
+            for (int cy : {y0, y1})
+                for (int cx : {x0, x1}) {
+                    const float d = params.depthScale /
+                                    (closestDepth(*depth, cx, cy, scale, params.greaterIsCloser) +
+                                     params.depthOffset);
+                    const float diff = std::abs(d - here);
+                    if (diff < best) best = diff, lx = cx, ly = cy;
+                }
+        }
+        return finiteLayerTexel(soft::fetchTexel(*layer, lx, ly));
+    }
+
+    static glm::vec4 finiteLayerTexel(glm::vec4 c) {
+        for (int i = 0; i < 4; ++i)
+            if (!std::isfinite(c[i])) c[i] = 0.0f;
+        c.a = saturateOrZero(c.a);
+        return c;
+    }
+};
+
+}  // namespace particles

@@ -1,0 +1,67 @@
+#pragma once
+// The transparency module's own programs (weighted blended OIT and SSAM+'s composite),
+// described once for every backend (engine/render/program_desc.hpp): the GLSL in
+// src/programs.cpp, the CPU kernels in src/program_kernels.hpp.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/program.hpp"
+#include "engine/render/program_desc.hpp"
+#include "engine/render/texture.hpp"
+
+namespace transparency {
+
+// WboitAccumulate (McGuire & Bavoil, "Weighted Blended Order-Independent Transparency",
+// JCGT 2(2), 2013): the fragment is shaded exactly as the engine's MaskedLit program shades
+// it, straight (C, a), then output premultiplied and weighted, (C * a * w, a * w), for a
+// ONE/ONE additive RGBA16F accumulation target. w is the paper's eq. (7):
+//   w(z, a) = a * clamp(10 / (1e-5 + (|z|/5)^2 + (|z|/200)^6), 1e-2, 3e3)
+// with z the view depth (clip w; 1 under an orthographic or identity projection) times
+// depthScale, which maps the scene's units onto the metres eq. (7) was tuned for.
+struct WboitAccumulateParams {
+    glm::mat4 viewProj{1.0f};
+    glm::vec4 baseColorFactor{1.0f};
+    engine::render::TextureBinding baseColor;
+    engine::render::DirectionalLight light;
+    float depthScale = 1.0f;
+};
+
+// WboitResolve (McGuire & Bavoil 2013, the composite pass), one texel per pixel:
+//   out = (accum.rgb / max(accum.a, 1e-5), revealage.r)
+// blended ONE_MINUS_SRC_ALPHA / SRC_ALPHA onto the opaque colour:
+//   result = average * (1 - revealage) + opaque * revealage.
+// Non-finite components come out as 0 (as SSAM's composite's).
+struct WboitResolveParams {
+    engine::render::TextureHandle accumulation;  // RGBA16F: sum of (C * a * w, a * w)
+    engine::render::TextureHandle revealage;     // r: product of (1 - a), cleared to 1
+};
+
+// How the coverage composite turns the MAX mask m and the ADD mask s (sum of the layers'
+// alphas, unclamped: a float mask) into the covered fraction of the pixel, 1 - prod(1 - a_i):
+enum class CoverageModel : std::uint8_t {
+    // n = s / m layers all of alpha m: 1 - (1 - m)^(s / m). Exact when the layers share one
+    // alpha, and exact for one layer (s = m); between the paper's MAX (too low) and ADD (too high).
+    EqualLayers,
+    // Many thin layers (Poisson): 1 - exp(-s).
+    Exponential,
+};
+
+// CoverageComposite (SSAM+): as SSAM's composite, one texel per pixel,
+//   out = (foliage.rgb, coverage(mask.r, ADD)), ADD = maskAdd.r when given, else mask.a,
+// coverage clamped to [0,1] (NaN -> 0), non-finite foliage components as 0; the pipeline
+// blends it SRC_ALPHA / INV_SRC_ALPHA onto the opaque colour.
+struct CoverageCompositeParams {
+    engine::render::TextureHandle foliage;
+    engine::render::TextureHandle mask;
+    engine::render::TextureHandle maskAdd;
+    CoverageModel model = CoverageModel::EqualLayers;
+};
+
+// For Backend::createProgram. Full-screen inputs must be at least the target's size; the
+// coverage model must be one of the above.
+engine::render::ProgramDesc wboitAccumulateProgram();
+engine::render::ProgramDesc wboitResolveProgram();
+engine::render::ProgramDesc coverageCompositeProgram();
+
+}  // namespace transparency

@@ -1,0 +1,113 @@
+#pragma once
+// The soft backend's kernels of the transparency module's programs (programs.hpp).
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/soft/kernel/fragment.hpp"
+#include "engine/render/soft/kernel/programs.hpp"
+#include "engine/render/soft/kernel/raster_support.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
+#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "transparency/programs.hpp"
+
+namespace transparency {
+
+namespace soft = engine::render::soft;
+
+// Weighted blended OIT (McGuire & Bavoil, JCGT 2(2), 2013), eq. (7):
+//   w(z, a) = a * clamp(10 / (1e-5 + (|z|/5)^2 + (|z|/200)^6), 1e-2, 3e3)
+// (programs.hpp WboitAccumulateParams). Written out with multiplications only, in the same
+// order as the GLSL (programs.cpp), so both backends round alike. NaN clamps to 1e-2.
+inline float wboitWeight(float alpha, float viewDepth) {
+    const float z = std::fabs(viewDepth);
+    const float near = z / 5.0f, far = z / 200.0f;
+    const float far2 = far * far;
+    const float g = 10.0f / (1e-5f + near * near + far2 * far2 * far2);
+    return alpha * (g > 1e-2f ? (g < 3e3f ? g : 3e3f) : 1e-2f);
+}
+
+// The MaskedLit surface's fragment, premultiplied and weighted: (C * a * w, a * w).
+struct WboitAccumulateKernel {
+    static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;
+    soft::MaskedLitProgram surface;
+    float depthScale = 1.0f;
+
+    WboitAccumulateKernel(const WboitAccumulateParams& p, const soft::TextureLookup& textures)
+        : surface(engine::render::SurfaceParams{p.viewProj, p.baseColorFactor, p.baseColor, p.light}, textures),
+          depthScale(p.depthScale) {}
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const glm::vec4 c = surface.shade(f);
+        const float w = wboitWeight(c.a, f.clipW * depthScale);
+        return {glm::vec3(c) * (c.a * w), c.a * w};
+    }
+};
+
+// The WBOIT composite: (average colour, revealage), blended INV_SRC_ALPHA / SRC_ALPHA onto
+// the opaque colour by the pipeline (program.hpp WboitResolveParams).
+struct WboitResolveKernel {
+    static constexpr soft::ProgramNeeds kNeeds{};
+    static constexpr bool kReadsPixels = true;
+    const soft::SoftTexture* accumulation = nullptr;
+    const soft::SoftTexture* revealage = nullptr;
+
+    WboitResolveKernel(const WboitResolveParams& p, const soft::TextureLookup& textures)
+        : accumulation(textures.texture(p.accumulation)), revealage(textures.texture(p.revealage)) {}
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const glm::vec4 sum = soft::fetchTexel(*accumulation, f.x, f.y);
+        float reveal = soft::fetchTexel(*revealage, f.x, f.y).r;
+        reveal = reveal > 0.0f ? (reveal < 1.0f ? reveal : 1.0f) : 0.0f;  // NaN -> 0
+        const float weight = sum.a > 1e-5f ? sum.a : 1e-5f;                 // the paper's max(accum.a, 1e-5)
+        glm::vec3 average = glm::vec3(sum) / weight;
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(average[c])) average[c] = 0.0f;
+        return {average, reveal};
+    }
+};
+
+// SSAM+'s composite (programs.hpp CoverageCompositeParams): the coverage of the layers from
+// the MAX and ADD masks.
+inline float layerCoverage(CoverageModel model, float maxMask, float addMask) {
+    float coverage = 0.0f;
+    if (model == CoverageModel::Exponential) {
+        coverage = 1.0f - std::exp(-addMask);
+    } else if (maxMask >= 1.0f) {
+        coverage = 1.0f;
+    } else if (maxMask > 0.0f) {
+        coverage = 1.0f - std::pow(1.0f - maxMask, addMask / maxMask);
+    }
+    return coverage > 0.0f ? (coverage < 1.0f ? coverage : 1.0f) : 0.0f;  // NaN -> 0
+}
+
+struct CoverageCompositeKernel {
+    static constexpr soft::ProgramNeeds kNeeds{};
+    static constexpr bool kReadsPixels = true;
+    CoverageModel model = CoverageModel::EqualLayers;
+    const soft::SoftTexture* foliage = nullptr;
+    const soft::SoftTexture* mask = nullptr;
+    const soft::SoftTexture* maskAdd = nullptr;
+
+    CoverageCompositeKernel(const CoverageCompositeParams& p, const soft::TextureLookup& textures)
+        : model(p.model), foliage(textures.texture(p.foliage)), mask(textures.texture(p.mask)),
+          maskAdd(textures.texture(p.maskAdd)) {}
+
+    const soft::SoftTexture* compositeColor() const { return foliage; }
+    float compositeFactor(int x, int y) const {
+        const float maxMask = soft::raster::texelChannel(*mask, x, y, 0);
+        const float addMask = maskAdd ? soft::raster::texelChannel(*maskAdd, x, y, 0) : soft::raster::texelChannel(*mask, x, y, 3);
+        return layerCoverage(model, maxMask, addMask);
+    }
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const glm::vec4 m = soft::fetchTexel(*mask, f.x, f.y);
+        const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, f.x, f.y).r : m.a;
+        glm::vec3 color(soft::fetchTexel(*foliage, f.x, f.y));
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(color[c])) color[c] = 0.0f;
+        return {color, layerCoverage(model, m.r, addMask)};
+    }
+};
+
+}  // namespace transparency

@@ -1,0 +1,136 @@
+#include "transparency/programs.hpp"
+
+#include <cstddef>
+#include <string>
+
+#include "engine/render/glsl/lit_surface.hpp"
+#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "program_kernels.hpp"
+
+namespace transparency {
+namespace {
+
+using namespace engine::render;
+
+// WboitAccumulate: the lit surface's output hook wboitWeighted() (soft: program_kernels.hpp
+// wboitWeight, the same operations in the same order). McGuire & Bavoil 2013, eq. (7), with
+// the view depth |z| = clip w = 1 / gl_FragCoord.w.
+constexpr const char* kWboitWeight = R"(
+#define SURFACE_OUTPUT wboitWeighted
+uniform float u_depthScale;
+vec4 wboitWeighted(vec4 c) {
+    precise float z = abs((1.0 / gl_FragCoord.w) * u_depthScale);
+    precise float near = z / 5.0, far = z / 200.0;
+    precise float far2 = far * far;
+    precise float g = 10.0 / (1e-5 + near * near + far2 * far2 * far2);
+    precise float w = c.a * (g > 1e-2 ? (g < 3e3 ? g : 3e3) : 1e-2);
+    precise float aw = c.a * w;
+    return vec4(c.rgb * aw, aw);
+}
+)";
+
+// The WBOIT composite (McGuire & Bavoil 2013): average colour and revealage; the blend
+// (INV_SRC_ALPHA / SRC_ALPHA) puts it over the opaque colour.
+constexpr const char* kWboitResolveFragment = R"(
+layout(binding = 0) uniform sampler2D u_accumulation;
+layout(binding = 1) uniform sampler2D u_revealage;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 sum = texelFetch(u_accumulation, p, 0);
+    float reveal = clamp01(texelFetch(u_revealage, p, 0).r);
+    float weight = sum.a > 1e-5 ? sum.a : 1e-5;
+    vec3 average = sum.rgb / weight;
+    for (int c = 0; c < 3; ++c)
+        if (isnan(average[c]) || isinf(average[c])) average[c] = 0.0;
+    finish(vec4(average, reveal));
+}
+)";
+
+// SSAM+'s composite (soft: program_kernels.hpp CoverageCompositeKernel, layerCoverage).
+constexpr const char* kCoverageCompositeFragment = R"(
+layout(binding = 0) uniform sampler2D u_foliage;
+layout(binding = 1) uniform sampler2D u_mask;
+layout(binding = 2) uniform sampler2D u_maskAdd;
+uniform bool u_hasMaskAdd;
+uniform int u_coverageModel;  // CoverageModel: 0 equal layers, 1 exponential
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 m = texelFetch(u_mask, p, 0);
+    float addMask = u_hasMaskAdd ? texelFetch(u_maskAdd, p, 0).r : m.a;
+    float coverage = 0.0;
+    if (u_coverageModel == 1) coverage = 1.0 - exp(-addMask);
+    else if (m.r >= 1.0) coverage = 1.0;
+    else if (m.r > 0.0) coverage = 1.0 - pow(1.0 - m.r, addMask / m.r);
+    coverage = clamp01(coverage);
+    vec3 color = texelFetch(u_foliage, p, 0).rgb;
+    for (int c = 0; c < 3; ++c)
+        if (isnan(color[c]) || isinf(color[c])) color[c] = 0.0;
+    finish(vec4(color, coverage));
+}
+)";
+
+std::uint32_t at(std::size_t offset) { return std::uint32_t(offset); }
+
+}  // namespace
+
+ProgramDesc wboitAccumulateProgram() {
+    ProgramDesc d;
+    d.name = "WboitAccumulate";
+    d.vertexInput = VertexInput::Mesh;
+    d.params = paramsType<WboitAccumulateParams>();
+    d.paramsName = "transparency::WboitAccumulateParams";
+    d.gl.fragment = std::string(glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + kWboitWeight + glsl::kLitSurface;
+    const std::size_t light = offsetof(WboitAccumulateParams, light);
+    d.gl.uniforms = {
+        {"u_viewProj", UniformType::Mat4, at(offsetof(WboitAccumulateParams, viewProj))},
+        {"u_color", UniformType::Vec4, at(offsetof(WboitAccumulateParams, baseColorFactor))},
+        {"u_towardLight", UniformType::Direction, at(light + offsetof(DirectionalLight, towardLight))},
+        {"u_lightColor", UniformType::Vec3, at(light + offsetof(DirectionalLight, color))},
+        {"u_ambient", UniformType::Vec3, at(light + offsetof(DirectionalLight, ambient))},
+        {"u_depthScale", UniformType::Float, at(offsetof(WboitAccumulateParams, depthScale))},
+    };
+    d.gl.textures = {{"u_baseColor", at(offsetof(WboitAccumulateParams, baseColor)), 0, TextureRead::Sampled,
+                      TextureUse::Sampled, true, "u_hasTexture", "u_filter", "u_premultiplied"}};
+    d.soft = soft::makeKernel<WboitAccumulateKernel, WboitAccumulateParams>();
+    return d;
+}
+
+ProgramDesc wboitResolveProgram() {
+    ProgramDesc d;
+    d.name = "WboitResolve";
+    d.vertexInput = VertexInput::Fullscreen;
+    d.params = paramsType<WboitResolveParams>();
+    d.paramsName = "transparency::WboitResolveParams";
+    d.gl.fragment = kWboitResolveFragment;
+    d.gl.textures = {
+        {"u_accumulation", at(offsetof(WboitResolveParams, accumulation)), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_revealage", at(offsetof(WboitResolveParams, revealage)), 1, TextureRead::Texel, TextureUse::FullSize},
+    };
+    d.soft = soft::makeKernel<WboitResolveKernel, WboitResolveParams>();
+    return d;
+}
+
+ProgramDesc coverageCompositeProgram() {
+    ProgramDesc d;
+    d.name = "CoverageComposite";
+    d.vertexInput = VertexInput::Fullscreen;
+    d.params = paramsType<CoverageCompositeParams>();
+    d.paramsName = "transparency::CoverageCompositeParams";
+    d.gl.fragment = kCoverageCompositeFragment;
+    d.gl.uniforms = {{"u_coverageModel", UniformType::Byte, at(offsetof(CoverageCompositeParams, model))}};
+    d.gl.textures = {
+        {"u_foliage", at(offsetof(CoverageCompositeParams, foliage)), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_mask", at(offsetof(CoverageCompositeParams, mask)), 1, TextureRead::Texel, TextureUse::FullSize},
+        {"u_maskAdd", at(offsetof(CoverageCompositeParams, maskAdd)), 2, TextureRead::Texel, TextureUse::FullSize, true,
+         "u_hasMaskAdd"},
+    };
+    d.check = [](const void* params, const DrawCheck& check) {
+        const CoverageModel model = static_cast<const CoverageCompositeParams*>(params)->model;
+        if (model != CoverageModel::EqualLayers && model != CoverageModel::Exponential)
+            check.fail("unknown coverage model " + std::to_string(int(model)));
+    };
+    d.soft = soft::makeKernel<CoverageCompositeKernel, CoverageCompositeParams>();
+    return d;
+}
+
+}  // namespace transparency

@@ -1,0 +1,28 @@
+#pragma once
+// SSAM's composite ([Hathaway 2010] §3.5.4, Listing 3.2), full screen, one texel per pixel:
+//   mask = lerp(mask.r (MAX), ADD, maskLerp), clamped to [0, 1] (NaN -> 0), squared when
+//          squareMask (the squared alpha trick, §3.6.2); ADD = maskAdd.r when given, else mask.a
+//   out  = (foliage.rgb, mask), non-finite foliage components output as 0
+// The pipeline blends it onto the opaque colour with SRC_ALPHA / INV_SRC_ALPHA, which is
+// Listing 3.2's lerp(opaque, foliage, mask) done by the blend unit, as §3.5 describes the
+// post-process ("resembles frame-buffer blending ... SRCALPHA and INVSRCALPHA"). Composing in
+// place lets a scissor limit the work to the foliage's screen bounds.
+// One GLSL source serves both the engine backend's program and ssam::gl (composite_glsl.hpp).
+#include "engine/render/program_desc.hpp"
+#include "engine/render/texture.hpp"
+
+namespace ssam {
+
+struct CompositeParams {
+    engine::render::TextureHandle foliage;
+    engine::render::TextureHandle mask;     // r = MAX mask, a = ADD mask (one RGBA target)
+    engine::render::TextureHandle maskAdd;  // optional: ADD mask in its own R target (then `mask` holds MAX in r)
+    float maskLerp = 0.85f;
+    bool squareMask = true;
+};
+
+// For Backend::createProgram. Draws are checked for: foliage and mask textures of at least the
+// target's size (and maskAdd when given), a finite maskLerp.
+engine::render::ProgramDesc compositeProgram();
+
+}  // namespace ssam

@@ -1,0 +1,24 @@
+#pragma once
+// The GLSL of SSAM's composite (composite_program.hpp), one source for the engine's GL
+// backend and for ssam::gl: each declares the samplers and uniforms the way its GLSL version
+// allows, defines PRECISE (`precise` from GLSL 4.00, empty before) and appends this.
+namespace ssam::glsl {
+
+// Needs u_foliage, u_mask, u_maskAdd (sampler2D), u_hasMaskAdd, u_squareMask (bool),
+// u_maskLerp (float). Defines vec4 ssamComposite(ivec2 pixel).
+inline constexpr const char* kComposite = R"(
+vec4 ssamComposite(ivec2 p) {
+    vec4 m = texelFetch(u_mask, p, 0);
+    float addMask = u_hasMaskAdd ? texelFetch(u_maskAdd, p, 0).r : m.a;
+    PRECISE float blend = m.r + (addMask - m.r) * u_maskLerp;
+    blend = blend > 0.0 ? (blend < 1.0 ? blend : 1.0) : 0.0;  // NaN -> 0
+    if (u_squareMask) blend *= blend;  // the squared alpha trick ([Hathaway 2010] §3.6.2)
+    // A non-finite foliage colour (HDR lighting, hostile data) composites as black.
+    vec3 color = texelFetch(u_foliage, p, 0).rgb;
+    for (int c = 0; c < 3; ++c)
+        if (isnan(color[c]) || isinf(color[c])) color[c] = 0.0;
+    return vec4(color, blend);
+}
+)";
+
+}  // namespace ssam::glsl

@@ -1,0 +1,58 @@
+#pragma once
+// The soft backend's kernel of SSAM's composite (composite_program.hpp).
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/soft/kernel/fragment.hpp"
+#include "engine/render/soft/kernel/raster_support.hpp"
+#include "engine/render/soft/kernel/sampler.hpp"
+#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "ssam/composite_program.hpp"
+
+namespace ssam {
+
+struct CompositeKernel {
+    static constexpr engine::render::soft::ProgramNeeds kNeeds{};
+    static constexpr bool kReadsPixels = true;
+    CompositeParams params;
+    const engine::render::soft::SoftTexture* foliage = nullptr;
+    const engine::render::soft::SoftTexture* mask = nullptr;
+    const engine::render::soft::SoftTexture* maskAdd = nullptr;  // split mask (RG16F precision): ADD mask in r
+
+    CompositeKernel(const CompositeParams& p, const engine::render::soft::TextureLookup& textures)
+        : params(p), foliage(textures.texture(p.foliage)), mask(textures.texture(p.mask)),
+          maskAdd(textures.texture(p.maskAdd)) {}
+
+    glm::vec4 shade(const engine::render::soft::Fragment& f) const {
+        using engine::render::soft::fetchTexel;
+        const glm::vec4 m = fetchTexel(*mask, f.x, f.y);
+        const float addMask = maskAdd ? fetchTexel(*maskAdd, f.x, f.y).r : m.a;
+        float blend = m.r + (addMask - m.r) * params.maskLerp;
+        // A float ADD mask exceeds 1 under depth complexity; a factor outside [0,1] would
+        // extrapolate past the foliage colour, so it is clamped (NaN becomes 0).
+        blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
+        if (params.squareMask) blend *= blend;  // the squared alpha trick (§3.6.2)
+        // A non-finite foliage colour (NaN/Inf from HDR lighting or hostile data) would make
+        // the blended result non-finite on float targets; it composites as black instead.
+        glm::vec3 color(fetchTexel(*foliage, f.x, f.y));
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(color[c])) color[c] = 0.0f;
+        return {color, blend};
+    }
+
+    // The rasterizer's composite fast path (raster::hasCompositeHooks): shade()'s alpha, read
+    // channel by channel.
+    const engine::render::soft::SoftTexture* compositeColor() const { return foliage; }
+    float compositeFactor(int x, int y) const {
+        using engine::render::soft::raster::texelChannel;
+        const float maxMask = texelChannel(*mask, x, y, 0);
+        const float addMask = maskAdd ? texelChannel(*maskAdd, x, y, 0) : texelChannel(*mask, x, y, 3);
+        float blend = maxMask + (addMask - maxMask) * params.maskLerp;
+        blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
+        if (params.squareMask) blend *= blend;
+        return blend;
+    }
+};
+
+}  // namespace ssam

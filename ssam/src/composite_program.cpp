@@ -1,0 +1,57 @@
+#include "ssam/composite_program.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include "composite_glsl.hpp"
+#include "composite_kernel.hpp"
+#include "engine/render/soft/kernel/program_kernel.hpp"
+
+namespace ssam {
+namespace {
+
+using namespace engine::render;
+
+std::uint32_t at(std::size_t offset) { return std::uint32_t(offset); }
+
+std::string fragment() {
+    return std::string(R"(
+#define PRECISE precise
+layout(binding = 0) uniform sampler2D u_foliage;
+layout(binding = 1) uniform sampler2D u_mask;
+layout(binding = 2) uniform sampler2D u_maskAdd;
+uniform bool u_hasMaskAdd;
+uniform float u_maskLerp;
+uniform bool u_squareMask;
+)") + glsl::kComposite + R"(
+void main() { finish(ssamComposite(ivec2(gl_FragCoord.xy))); }
+)";
+}
+
+}  // namespace
+
+ProgramDesc compositeProgram() {
+    ProgramDesc d;
+    d.name = "Composite";
+    d.vertexInput = VertexInput::Fullscreen;
+    d.params = paramsType<CompositeParams>();
+    d.paramsName = "ssam::CompositeParams";
+    d.gl.fragment = fragment();
+    d.gl.uniforms = {{"u_maskLerp", UniformType::Float, at(offsetof(CompositeParams, maskLerp))},
+                     {"u_squareMask", UniformType::Bool, at(offsetof(CompositeParams, squareMask))}};
+    // Read at every target pixel: at least the target's size.
+    d.gl.textures = {
+        {"u_foliage", at(offsetof(CompositeParams, foliage)), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_mask", at(offsetof(CompositeParams, mask)), 1, TextureRead::Texel, TextureUse::FullSize},
+        {"u_maskAdd", at(offsetof(CompositeParams, maskAdd)), 2, TextureRead::Texel, TextureUse::FullSize, true,
+         "u_hasMaskAdd"},
+    };
+    d.check = [](const void* params, const DrawCheck& check) {
+        if (!std::isfinite(static_cast<const CompositeParams*>(params)->maskLerp)) check.fail("maskLerp is not finite");
+    };
+    d.soft = soft::makeKernel<CompositeKernel, CompositeParams>();
+    return d;
+}
+
+}  // namespace ssam
