@@ -44,7 +44,7 @@ struct CompositeKernel {
     // The rasterizer's composite fast path (raster::hasCompositeHooks): shade()'s alpha, read
     // channel by channel.
     const engine::render::soft::SoftTexture* compositeColor() const { return foliage; }
-    float compositeFactor(int x, int y) const {
+    [[gnu::always_inline]] float compositeFactor(int x, int y) const {
         using engine::render::soft::raster::texelChannel;
         const float maxMask = texelChannel(*mask, x, y, 0);
         const float addMask = maskAdd ? texelChannel(*maskAdd, x, y, 0) : texelChannel(*mask, x, y, 3);

@@ -13,8 +13,6 @@ namespace {
 
 using namespace engine::render;
 
-std::uint32_t at(std::size_t offset) { return std::uint32_t(offset); }
-
 std::string fragment() {
     return std::string(R"(
 #define PRECISE precise
@@ -32,19 +30,15 @@ void main() { finish(ssamComposite(ivec2(gl_FragCoord.xy))); }
 }  // namespace
 
 ProgramDesc compositeProgram() {
-    ProgramDesc d;
-    d.name = "Composite";
-    d.vertexInput = VertexInput::Fullscreen;
-    d.params = paramsType<CompositeParams>();
-    d.paramsName = "ssam::CompositeParams";
+    ProgramDesc d = describeProgram<CompositeParams>("Composite", VertexInput::Fullscreen, "ssam::CompositeParams");
     d.gl.fragment = fragment();
-    d.gl.uniforms = {{"u_maskLerp", UniformType::Float, at(offsetof(CompositeParams, maskLerp))},
-                     {"u_squareMask", UniformType::Bool, at(offsetof(CompositeParams, squareMask))}};
+    d.gl.uniforms = {{"u_maskLerp", UniformType::Float, offsetof(CompositeParams, maskLerp)},
+                     {"u_squareMask", UniformType::Bool, offsetof(CompositeParams, squareMask)}};
     // Read at every target pixel: at least the target's size.
     d.gl.textures = {
-        {"u_foliage", at(offsetof(CompositeParams, foliage)), 0, TextureRead::Texel, TextureUse::FullSize},
-        {"u_mask", at(offsetof(CompositeParams, mask)), 1, TextureRead::Texel, TextureUse::FullSize},
-        {"u_maskAdd", at(offsetof(CompositeParams, maskAdd)), 2, TextureRead::Texel, TextureUse::FullSize, true,
+        {"u_foliage", offsetof(CompositeParams, foliage), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_mask", offsetof(CompositeParams, mask), 1, TextureRead::Texel, TextureUse::FullSize},
+        {"u_maskAdd", offsetof(CompositeParams, maskAdd), 2, TextureRead::Texel, TextureUse::FullSize, true,
          "u_hasMaskAdd"},
     };
     d.check = [](const void* params, const DrawCheck& check) {

@@ -10,35 +10,13 @@ namespace {
 
 template <typename Params>
 ProgramDesc describe(ProgramKind kind, VertexInput input, const char* paramsName) {
-    ProgramDesc d;
-    d.name = programKindName(kind);
-    d.vertexInput = input;
-    d.params = paramsType<Params>();
-    d.paramsName = paramsName;
-    return d;
-}
-
-std::uint32_t at(std::size_t offset) { return std::uint32_t(offset); }
-
-// SurfaceParams and WboitAccumulateParams: the lit, textured surface's uniforms.
-template <typename Params>
-void litSurfaceLayout(GlslProgram& gl) {
-    const std::size_t light = offsetof(Params, light);
-    gl.uniforms = {
-        {"u_viewProj", UniformType::Mat4, at(offsetof(Params, viewProj))},
-        {"u_color", UniformType::Vec4, at(offsetof(Params, baseColorFactor))},
-        {"u_towardLight", UniformType::Direction, at(light + offsetof(DirectionalLight, towardLight))},
-        {"u_lightColor", UniformType::Vec3, at(light + offsetof(DirectionalLight, color))},
-        {"u_ambient", UniformType::Vec3, at(light + offsetof(DirectionalLight, ambient))},
-    };
-    gl.textures = {{"u_baseColor", at(offsetof(Params, baseColor)), 0, TextureRead::Sampled, TextureUse::Sampled, true,
-                    "u_hasTexture", "u_filter", "u_premultiplied"}};
+    return describeProgram<Params>(programKindName(kind), input, paramsName);
 }
 
 ProgramDesc flat() {
     ProgramDesc d = describe<FlatParams>(ProgramKind::Flat, VertexInput::Mesh, "FlatParams");
-    d.gl.uniforms = {{"u_viewProj", UniformType::Mat4, at(offsetof(FlatParams, viewProj))},
-                     {"u_color", UniformType::Vec4, at(offsetof(FlatParams, color))}};
+    d.gl.uniforms = {{"u_viewProj", UniformType::Mat4, offsetof(FlatParams, viewProj)},
+                     {"u_color", UniformType::Vec4, offsetof(FlatParams, color)}};
     return d;
 }
 
@@ -50,9 +28,9 @@ ProgramDesc surface(ProgramKind kind) {
 
 ProgramDesc alphaOnly() {
     ProgramDesc d = describe<AlphaOnlyParams>(ProgramKind::AlphaOnly, VertexInput::Mesh, "AlphaOnlyParams");
-    d.gl.uniforms = {{"u_viewProj", UniformType::Mat4, at(offsetof(AlphaOnlyParams, viewProj))},
-                     {"u_alphaFactor", UniformType::Float, at(offsetof(AlphaOnlyParams, alphaFactor))}};
-    d.gl.textures = {{"u_baseColor", at(offsetof(AlphaOnlyParams, baseColor)), 0, TextureRead::Sampled,
+    d.gl.uniforms = {{"u_viewProj", UniformType::Mat4, offsetof(AlphaOnlyParams, viewProj)},
+                     {"u_alphaFactor", UniformType::Float, offsetof(AlphaOnlyParams, alphaFactor)}};
+    d.gl.textures = {{"u_baseColor", offsetof(AlphaOnlyParams, baseColor), 0, TextureRead::Sampled,
                       TextureUse::Sampled, true, "u_hasTexture", "u_filter"}};
     return d;
 }

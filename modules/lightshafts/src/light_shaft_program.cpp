@@ -52,8 +52,6 @@ void main() {
 }
 )";
 
-std::uint32_t at(std::size_t offset) { return std::uint32_t(offset); }
-
 void check(const void* params, const DrawCheck& check) {
     const auto& shafts = *static_cast<const LightShaftParams*>(params);
     const Format depthFormat = check.texture(shafts.depth).format;
@@ -69,25 +67,21 @@ void check(const void* params, const DrawCheck& check) {
 }  // namespace
 
 ProgramDesc lightShaftProgram() {
-    ProgramDesc d;
-    d.name = "LightShafts";
-    d.vertexInput = VertexInput::Fullscreen;
-    d.params = paramsType<LightShaftParams>();
-    d.paramsName = "lightshafts::LightShaftParams";
+    ProgramDesc d = describeProgram<LightShaftParams>("LightShafts", VertexInput::Fullscreen, "lightshafts::LightShaftParams");
     d.gl.fragment = kFragment;
     d.gl.uniforms = {
-        {"u_sunPixel", UniformType::Vec2, at(offsetof(LightShaftParams, sunPixel))},
-        {"u_farDepth", UniformType::Float, at(offsetof(LightShaftParams, farDepth))},
-        {"u_shaftGreater", UniformType::Bool, at(offsetof(LightShaftParams, greaterIsCloser))},
-        {"u_shaftColor", UniformType::Vec3, at(offsetof(LightShaftParams, color))},
-        {"u_intensity", UniformType::Float, at(offsetof(LightShaftParams, intensity))},
-        {"u_decay", UniformType::Float, at(offsetof(LightShaftParams, decay))},
-        {"u_density", UniformType::Float, at(offsetof(LightShaftParams, density))},
-        {"u_samples", UniformType::Int, at(offsetof(LightShaftParams, samples))},
-        {"u_glowRadius", UniformType::Float, at(offsetof(LightShaftParams, glowRadius))},
+        {"u_sunPixel", UniformType::Vec2, offsetof(LightShaftParams, sunPixel)},
+        {"u_farDepth", UniformType::Float, offsetof(LightShaftParams, farDepth)},
+        {"u_shaftGreater", UniformType::Bool, offsetof(LightShaftParams, greaterIsCloser)},
+        {"u_shaftColor", UniformType::Vec3, offsetof(LightShaftParams, color)},
+        {"u_intensity", UniformType::Float, offsetof(LightShaftParams, intensity)},
+        {"u_decay", UniformType::Float, offsetof(LightShaftParams, decay)},
+        {"u_density", UniformType::Float, offsetof(LightShaftParams, density)},
+        {"u_samples", UniformType::Int, offsetof(LightShaftParams, samples)},
+        {"u_glowRadius", UniformType::Float, offsetof(LightShaftParams, glowRadius)},
     };
     // Read at every target pixel: at least the target's size.
-    d.gl.textures = {{"u_shaftDepth", at(offsetof(LightShaftParams, depth)), 0, TextureRead::Texel, TextureUse::FullSize}};
+    d.gl.textures = {{"u_shaftDepth", offsetof(LightShaftParams, depth), 0, TextureRead::Texel, TextureUse::FullSize}};
     d.check = check;
     d.soft = soft::makeKernel<LightShaftKernel, LightShaftParams>();
     return d;

@@ -99,26 +99,20 @@ void main() {
 }
 )";
 
-std::uint32_t at(std::size_t offset) { return std::uint32_t(offset); }
-
 }  // namespace
 
 ProgramDesc particleProgram() {
-    ProgramDesc d;
-    d.name = "Particle";
-    d.vertexInput = VertexInput::Mesh;
-    d.params = paramsType<ParticleParams>();
-    d.paramsName = "particles::ParticleParams";
+    ProgramDesc d = describeProgram<ParticleParams>("Particle", VertexInput::Mesh, "particles::ParticleParams");
     d.gl.fragment = std::string(kParticleDepth) + kParticleFragment;
     d.gl.uniforms = {
-        {"u_viewProj", UniformType::Mat4, at(offsetof(ParticleParams, viewProj))},
-        {"u_depthStride", UniformType::Int, at(offsetof(ParticleParams, depthStride))},
-        {"u_distanceScale", UniformType::Float, at(offsetof(ParticleParams, depthScale))},
-        {"u_distanceOffset", UniformType::Float, at(offsetof(ParticleParams, depthOffset))},
-        {"u_softness", UniformType::Float, at(offsetof(ParticleParams, softness))},
-        {"u_greaterIsCloser", UniformType::Bool, at(offsetof(ParticleParams, greaterIsCloser))},
+        {"u_viewProj", UniformType::Mat4, offsetof(ParticleParams, viewProj)},
+        {"u_depthStride", UniformType::Int, offsetof(ParticleParams, depthStride)},
+        {"u_distanceScale", UniformType::Float, offsetof(ParticleParams, depthScale)},
+        {"u_distanceOffset", UniformType::Float, offsetof(ParticleParams, depthOffset)},
+        {"u_softness", UniformType::Float, offsetof(ParticleParams, softness)},
+        {"u_greaterIsCloser", UniformType::Bool, offsetof(ParticleParams, greaterIsCloser)},
     };
-    d.gl.textures = {{"u_sceneDepth", at(offsetof(ParticleParams, sceneDepth)), 0, TextureRead::Texel,
+    d.gl.textures = {{"u_sceneDepth", offsetof(ParticleParams, sceneDepth), 0, TextureRead::Texel,
                       TextureUse::Sampled, true, "u_hasDepth"}};
     d.check = [](const void* params, const DrawCheck& check) {
         const auto& p = *static_cast<const ParticleParams*>(params);
@@ -133,22 +127,18 @@ ProgramDesc particleProgram() {
 }
 
 ProgramDesc layerCompositeProgram() {
-    ProgramDesc d;
-    d.name = "LayerComposite";
-    d.vertexInput = VertexInput::Fullscreen;
-    d.params = paramsType<LayerCompositeParams>();
-    d.paramsName = "particles::LayerCompositeParams";
+    ProgramDesc d = describeProgram<LayerCompositeParams>("LayerComposite", VertexInput::Fullscreen, "particles::LayerCompositeParams");
     d.gl.fragment = std::string(kParticleDepth) + kLayerCompositeFragment;
     d.gl.uniforms = {
-        {"u_layerScale", UniformType::Int, at(offsetof(LayerCompositeParams, layerScale))},
-        {"u_distanceScale", UniformType::Float, at(offsetof(LayerCompositeParams, depthScale))},
-        {"u_distanceOffset", UniformType::Float, at(offsetof(LayerCompositeParams, depthOffset))},
-        {"u_greaterIsCloser", UniformType::Bool, at(offsetof(LayerCompositeParams, greaterIsCloser))},
+        {"u_layerScale", UniformType::Int, offsetof(LayerCompositeParams, layerScale)},
+        {"u_distanceScale", UniformType::Float, offsetof(LayerCompositeParams, depthScale)},
+        {"u_distanceOffset", UniformType::Float, offsetof(LayerCompositeParams, depthOffset)},
+        {"u_greaterIsCloser", UniformType::Bool, offsetof(LayerCompositeParams, greaterIsCloser)},
     };
     d.gl.textures = {
-        {"u_sceneDepth", at(offsetof(LayerCompositeParams, sceneDepth)), 0, TextureRead::Texel, TextureUse::FullSize,
+        {"u_sceneDepth", offsetof(LayerCompositeParams, sceneDepth), 0, TextureRead::Texel, TextureUse::FullSize,
          true, "u_hasDepth"},
-        {"u_layer", at(offsetof(LayerCompositeParams, layer)), 1, TextureRead::Texel, TextureUse::Sampled},
+        {"u_layer", offsetof(LayerCompositeParams, layer), 1, TextureRead::Texel, TextureUse::Sampled},
     };
     d.check = [](const void* params, const DrawCheck& check) {
         // A layer of 1/layerScale the target's size (rounded up), upsampled by the program.

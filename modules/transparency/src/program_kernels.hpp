@@ -94,7 +94,7 @@ struct CoverageCompositeKernel {
           maskAdd(textures.texture(p.maskAdd)) {}
 
     const soft::SoftTexture* compositeColor() const { return foliage; }
-    float compositeFactor(int x, int y) const {
+    [[gnu::always_inline]] float compositeFactor(int x, int y) const {
         const float maxMask = soft::raster::texelChannel(*mask, x, y, 0);
         const float addMask = maskAdd ? soft::raster::texelChannel(*maskAdd, x, y, 0) : soft::raster::texelChannel(*mask, x, y, 3);
         return layerCoverage(model, maxMask, addMask);

@@ -69,59 +69,36 @@ void main() {
 }
 )";
 
-std::uint32_t at(std::size_t offset) { return std::uint32_t(offset); }
-
 }  // namespace
 
 ProgramDesc wboitAccumulateProgram() {
-    ProgramDesc d;
-    d.name = "WboitAccumulate";
-    d.vertexInput = VertexInput::Mesh;
-    d.params = paramsType<WboitAccumulateParams>();
-    d.paramsName = "transparency::WboitAccumulateParams";
+    ProgramDesc d = describeProgram<WboitAccumulateParams>("WboitAccumulate", VertexInput::Mesh, "transparency::WboitAccumulateParams");
     d.gl.fragment = std::string(glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + kWboitWeight + glsl::kLitSurface;
-    const std::size_t light = offsetof(WboitAccumulateParams, light);
-    d.gl.uniforms = {
-        {"u_viewProj", UniformType::Mat4, at(offsetof(WboitAccumulateParams, viewProj))},
-        {"u_color", UniformType::Vec4, at(offsetof(WboitAccumulateParams, baseColorFactor))},
-        {"u_towardLight", UniformType::Direction, at(light + offsetof(DirectionalLight, towardLight))},
-        {"u_lightColor", UniformType::Vec3, at(light + offsetof(DirectionalLight, color))},
-        {"u_ambient", UniformType::Vec3, at(light + offsetof(DirectionalLight, ambient))},
-        {"u_depthScale", UniformType::Float, at(offsetof(WboitAccumulateParams, depthScale))},
-    };
-    d.gl.textures = {{"u_baseColor", at(offsetof(WboitAccumulateParams, baseColor)), 0, TextureRead::Sampled,
-                      TextureUse::Sampled, true, "u_hasTexture", "u_filter", "u_premultiplied"}};
+    litSurfaceLayout<WboitAccumulateParams>(d.gl);  // the surface it weights
+    d.gl.uniforms.push_back({"u_depthScale", UniformType::Float, offsetof(WboitAccumulateParams, depthScale)});
     d.soft = soft::makeKernel<WboitAccumulateKernel, WboitAccumulateParams>();
     return d;
 }
 
 ProgramDesc wboitResolveProgram() {
-    ProgramDesc d;
-    d.name = "WboitResolve";
-    d.vertexInput = VertexInput::Fullscreen;
-    d.params = paramsType<WboitResolveParams>();
-    d.paramsName = "transparency::WboitResolveParams";
+    ProgramDesc d = describeProgram<WboitResolveParams>("WboitResolve", VertexInput::Fullscreen, "transparency::WboitResolveParams");
     d.gl.fragment = kWboitResolveFragment;
     d.gl.textures = {
-        {"u_accumulation", at(offsetof(WboitResolveParams, accumulation)), 0, TextureRead::Texel, TextureUse::FullSize},
-        {"u_revealage", at(offsetof(WboitResolveParams, revealage)), 1, TextureRead::Texel, TextureUse::FullSize},
+        {"u_accumulation", offsetof(WboitResolveParams, accumulation), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_revealage", offsetof(WboitResolveParams, revealage), 1, TextureRead::Texel, TextureUse::FullSize},
     };
     d.soft = soft::makeKernel<WboitResolveKernel, WboitResolveParams>();
     return d;
 }
 
 ProgramDesc coverageCompositeProgram() {
-    ProgramDesc d;
-    d.name = "CoverageComposite";
-    d.vertexInput = VertexInput::Fullscreen;
-    d.params = paramsType<CoverageCompositeParams>();
-    d.paramsName = "transparency::CoverageCompositeParams";
+    ProgramDesc d = describeProgram<CoverageCompositeParams>("CoverageComposite", VertexInput::Fullscreen, "transparency::CoverageCompositeParams");
     d.gl.fragment = kCoverageCompositeFragment;
-    d.gl.uniforms = {{"u_coverageModel", UniformType::Byte, at(offsetof(CoverageCompositeParams, model))}};
+    d.gl.uniforms = {{"u_coverageModel", UniformType::Byte, offsetof(CoverageCompositeParams, model)}};
     d.gl.textures = {
-        {"u_foliage", at(offsetof(CoverageCompositeParams, foliage)), 0, TextureRead::Texel, TextureUse::FullSize},
-        {"u_mask", at(offsetof(CoverageCompositeParams, mask)), 1, TextureRead::Texel, TextureUse::FullSize},
-        {"u_maskAdd", at(offsetof(CoverageCompositeParams, maskAdd)), 2, TextureRead::Texel, TextureUse::FullSize, true,
+        {"u_foliage", offsetof(CoverageCompositeParams, foliage), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_mask", offsetof(CoverageCompositeParams, mask), 1, TextureRead::Texel, TextureUse::FullSize},
+        {"u_maskAdd", offsetof(CoverageCompositeParams, maskAdd), 2, TextureRead::Texel, TextureUse::FullSize, true,
          "u_hasMaskAdd"},
     };
     d.check = [](const void* params, const DrawCheck& check) {

@@ -1,5 +1,7 @@
 #include "shaders.hpp"
 
+#include "../composite_glsl.hpp"
+
 namespace ssam::gl::shaders {
 
 // Attribute locations: ssam::gl::AttributeLocations. Unset attributes read the generic values
@@ -79,10 +81,13 @@ void main() {
 }
 )";
 
-// §3.5.4 / Listing 3.2, one texel per pixel: mask = lerp(max, add, maskLerp), squared
-// (§3.6.2); the output (foliage, mask) is blended SRC_ALPHA / ONE_MINUS_SRC_ALPHA onto the
-// engine's colour, which is lerp(opaque, foliage, mask) and keeps the colour's alpha.
-const char* const kCompositeFragment = R"(#version 330 core
+// §3.5.4 / Listing 3.2, one texel per pixel: the same function as the engine backend's
+// composite program (composite_glsl.hpp); the output (foliage, mask) is blended SRC_ALPHA /
+// ONE_MINUS_SRC_ALPHA onto the engine's colour, which is lerp(opaque, foliage, mask) and keeps
+// the colour's alpha. GLSL 3.30 has no `precise`; nothing here can be contracted into an FMA
+// that changes which side of 0 or 1 the mask falls anyway.
+const std::string kCompositeFragment = std::string(R"(#version 330 core
+#define PRECISE
 uniform sampler2D u_foliage;
 uniform sampler2D u_mask;
 uniform sampler2D u_maskAdd;
@@ -90,14 +95,8 @@ uniform bool u_hasMaskAdd;
 uniform float u_maskLerp;
 uniform bool u_squareMask;
 layout(location = 0) out vec4 o_color;
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    vec4 m = texelFetch(u_mask, p, 0);
-    float addMask = u_hasMaskAdd ? texelFetch(u_maskAdd, p, 0).r : m.a;
-    float blend = clamp(m.r + (addMask - m.r) * u_maskLerp, 0.0, 1.0);
-    if (u_squareMask) blend *= blend;
-    o_color = vec4(texelFetch(u_foliage, p, 0).rgb, blend);
-}
+)") + ssam::glsl::kComposite + R"(
+void main() { o_color = ssamComposite(ivec2(gl_FragCoord.xy)); }
 )";
 
 }  // namespace ssam::gl::shaders

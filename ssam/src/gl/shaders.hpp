@@ -1,11 +1,13 @@
 #pragma once
 // GLSL 3.30 core sources of ssam_gl's three programs ([Hathaway 2010] Listings 3.1 and 3.2).
+#include <string>
+
 namespace ssam::gl::shaders {
 
 extern const char* const kFoliageVertex;     // shared by the mask and colour programs
 extern const char* const kMaskFragment;      // Listing 3.1: alpha only, replicated
 extern const char* const kColorFragment;     // alpha-tested, double-sided lit colour
 extern const char* const kFullscreenVertex;  // one triangle over the viewport
-extern const char* const kCompositeFragment; // Listing 3.2 as (foliage, mask) for SRC_ALPHA blending
+extern const std::string kCompositeFragment;  // Listing 3.2 as (foliage, mask) for SRC_ALPHA blending
 
 }  // namespace ssam::gl::shaders

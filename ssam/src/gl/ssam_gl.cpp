@@ -163,7 +163,7 @@ ScreenSpaceAlphaMaskGl::ScreenSpaceAlphaMaskGl(const Config& config) : impl_(std
     s.mask.locate();
     s.color.id = compileProgram("ssam_gl colour", shaders::kFoliageVertex, shaders::kColorFragment);
     s.color.locate();
-    s.composite = compileProgram("ssam_gl composite", shaders::kFullscreenVertex, shaders::kCompositeFragment);
+    s.composite = compileProgram("ssam_gl composite", shaders::kFullscreenVertex, shaders::kCompositeFragment.c_str());
     s.compositeFoliage = glGetUniformLocation(s.composite, "u_foliage");
     s.compositeMask = glGetUniformLocation(s.composite, "u_mask");
     s.compositeMaskAdd = glGetUniformLocation(s.composite, "u_maskAdd");

@@ -7,6 +7,7 @@
 //   - for the soft backend, a CPU kernel written against the program-authoring headers
 //     (engine/render/soft/kernel/), which instantiates the tile rasterizer for the program
 //     in the module's own translation unit (no virtual call per fragment).
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "engine/render/draw_params.hpp"
+#include "engine/render/program.hpp"
 #include "engine/render/texture.hpp"
 
 namespace engine::render {
@@ -43,7 +45,7 @@ enum class UniformType : std::uint8_t {
 struct UniformField {
     const char* name = "";
     UniformType type = UniformType::Float;
-    std::uint32_t offset = 0;
+    std::size_t offset = 0;  // offsetof(Params, member)
 };
 
 // How a program reads a texture its parameters name.
@@ -58,7 +60,7 @@ enum class TextureUse : std::uint8_t {
 };
 struct TextureField {
     const char* name = "";  // the GLSL sampler, for messages
-    std::uint32_t offset = 0;  // of the TextureHandle (Texel) or TextureBinding (Sampled)
+    std::size_t offset = 0;  // offsetof the TextureHandle (Texel) or TextureBinding (Sampled)
     int unit = 0;              // the GLSL layout(binding = unit)
     TextureRead read = TextureRead::Texel;
     TextureUse use = TextureUse::Sampled;
@@ -100,5 +102,33 @@ struct ProgramDesc {
     // the textures' own checks; `params` points at the draw's struct.
     std::function<void(const void* params, const DrawCheck& check)> check;
 };
+
+// What every description states first: a program `name` whose draws pass a `Params`.
+template <typename Params>
+ProgramDesc describeProgram(std::string name, VertexInput input, const char* paramsName) {
+    ProgramDesc d;
+    d.name = std::move(name);
+    d.vertexInput = input;
+    d.params = paramsType<Params>();
+    d.paramsName = paramsName;
+    return d;
+}
+
+// The lit surface's uniforms and base-colour texture (glsl/lit_surface.hpp) for any Params
+// with its members viewProj, baseColorFactor, baseColor and light: the standard lit programs
+// use it, and modules whose programs shade that surface (WBOIT's accumulation).
+template <typename Params>
+void litSurfaceLayout(GlslProgram& gl) {
+    const std::size_t light = offsetof(Params, light);
+    gl.uniforms = {
+        {"u_viewProj", UniformType::Mat4, offsetof(Params, viewProj)},
+        {"u_color", UniformType::Vec4, offsetof(Params, baseColorFactor)},
+        {"u_towardLight", UniformType::Direction, light + offsetof(DirectionalLight, towardLight)},
+        {"u_lightColor", UniformType::Vec3, light + offsetof(DirectionalLight, color)},
+        {"u_ambient", UniformType::Vec3, light + offsetof(DirectionalLight, ambient)},
+    };
+    gl.textures = {{"u_baseColor", offsetof(Params, baseColor), 0, TextureRead::Sampled, TextureUse::Sampled, true,
+                    "u_hasTexture", "u_filter", "u_premultiplied"}};
+}
 
 }  // namespace engine::render

@@ -22,6 +22,9 @@
 #include "engine/render/soft/kernel/triangle_setup.hpp"
 
 namespace engine::render::soft::raster {
+// Internal linkage in every translation unit that instantiates the rasterizer, as when these
+// lived in the driver's own .cpp: GCC inlines a static function called once, not an inline one.
+namespace {
 
 inline constexpr int kBlockSize = 8;
 inline constexpr std::int64_t kPixelStep = kSubpixelScale;
@@ -304,4 +307,5 @@ inline void blendOneOneRgba8x4(const BlendState& b, std::byte* p, __m128 a, std:
 }
 #endif
 
+}  // namespace
 }  // namespace engine::render::soft::raster

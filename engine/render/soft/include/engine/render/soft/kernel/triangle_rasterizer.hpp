@@ -22,6 +22,7 @@ struct TileCounters {
 };
 
 namespace raster {
+namespace {  // as raster_support.hpp's
 
 // Whether a full-screen program is a mask composite drawn over the frame with the
 // SRC_ALPHA / INV_SRC_ALPHA blend, whose shade() is (compositeColor() at the pixel with
@@ -880,5 +881,6 @@ private:
 };
 
 
+}  // namespace
 }  // namespace raster
 }  // namespace engine::render::soft
