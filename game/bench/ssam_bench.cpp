@@ -15,6 +15,7 @@
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
 #include "bench_sweep.hpp"
+#include "content_dir.hpp"
 #include "engine/core/error.hpp"
 #include "sweep_report.hpp"
 
@@ -40,7 +41,7 @@ struct Options {
     std::string sweepReference = "16,64,128";
     std::string sweepPrecision = "rgba8,rgba16f";
     std::string out = "out/bench";
-    std::string contentDir = SSAM_CONTENT_DIR;
+    std::string contentDir = racer::defaultContentDir().string();
 };
 
 std::vector<std::string> splitList(const std::string& list, const char* flag) {
