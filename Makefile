@@ -13,7 +13,7 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests,
 # then Node.js for the Khronos glTF Validator the content test runs.
 PACKAGES := build-essential cmake pkg-config ccache \
-            libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev \
+            libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libpng-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libepoxy-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \

@@ -82,7 +82,17 @@ void printReport(const Image& a, const Image& b, const CompareResult& r, const C
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Compare two images like OpenImageIO's idiff. Exit 0 pass, 1 warn, 2 fail, 4 unreadable input."};
+    CLI::App app{"Compare two images like OpenImageIO's idiff (same options, report and exit status: 0 pass,\n"
+                 "1 warn, 2 fail, 4 unreadable input), for this project's golden-image tests."};
+    app.footer(
+        "Why not idiff itself: the golden tests need three things it does not do.\n"
+        "  - PNG colour is compared straight, not premultiplied: idiff premultiplies on reading,\n"
+        "    so a colour change under alpha 0 would pass unseen.\n"
+        "  - A warning threshold below the fail threshold warns even when no pixel fails (idiff 2.4\n"
+        "    returns PASS early), and every non-finite value is counted (idiff skips the first).\n"
+        "  - Images are read as the tests and racer read them (engine/capture), --linear compares\n"
+        "    linear light, and the statistics are always printed, not only on failure.\n"
+        "Otherwise it is idiff: thresholds and numbers carry over between the two.");
     std::string pathA, pathB, diffPath;
     CompareOptions options;
     float scale = 1.0f;

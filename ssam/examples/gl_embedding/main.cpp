@@ -6,7 +6,8 @@
 //   ssam_gl_embedding               a GLFW window when a display is available
 //   ssam_gl_embedding --headless --out frame.png
 //                                   EGL surfaceless (EGL_PLATFORM_SURFACELESS_MESA), one frame
-// Exit codes: 0 ok, 1 error, 77 no OpenGL 3.3 core context could be created (tests skip).
+// Exit codes: 0 ok, 1 error, 2 bad arguments, 77 no OpenGL 3.3 core context could be created
+// (tests skip).
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -271,7 +272,7 @@ int runHeadless(const std::string& out) {
     for (int y = 0; y < kHeight; ++y)  // GL's row 0 is the bottom; PNG's the top
         std::copy_n(pixels.begin() + std::ptrdiff_t((kHeight - 1 - y) * row), row, flipped.begin() + std::ptrdiff_t(y * row));
     if (!writePng(out, kWidth, kHeight, flipped)) {
-        std::fprintf(stderr, "cannot write %s\n", out.c_str());
+        std::fprintf(stderr, "ssam_gl_embedding: error: cannot write %s\n", out.c_str());
         return 1;
     }
     std::printf("wrote %s (%dx%d)\n", out.c_str(), kWidth, kHeight);
@@ -295,6 +296,24 @@ int runWindow(int frames) {
     return 0;
 }
 
+void printUsage(std::FILE* to, const char* program) {
+    std::fprintf(to,
+                 "usage: %s [--headless] [--out PATH.png] [--frames N]\n"
+                 "  SSAM through ssam::gl in a program with its own OpenGL context.\n"
+                 "  --headless     one frame in an EGL surfaceless context, written as a PNG\n"
+                 "  --out PATH     where the PNG goes (implies --headless; default ssam_gl_embedding.png)\n"
+                 "  --frames N     in a window: close after N frames (default: when closed)\n"
+                 "  -h, --help     this text\n"
+                 "Exit status: 0 ok, 1 error, 2 bad arguments, 77 no OpenGL 3.3 core context.\n",
+                 program);
+}
+
+int badArguments(const char* program, const std::string& why) {
+    std::fprintf(stderr, "ssam_gl_embedding: error: %s\n", why.c_str());
+    printUsage(stderr, program);
+    return 2;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -303,12 +322,27 @@ int main(int argc, char** argv) {
     int frames = 0;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--headless") headless = true;
-        else if (arg == "--out" && i + 1 < argc) out = argv[++i], headless = true;
-        else if (arg == "--frames" && i + 1 < argc) frames = std::atoi(argv[++i]);
-        else {
-            std::fprintf(stderr, "usage: %s [--headless] [--out PATH.png] [--frames N]\n", argv[0]);
-            return 1;
+        const bool hasValue = i + 1 < argc;
+        if (arg == "-h" || arg == "--help") {
+            printUsage(stdout, argv[0]);
+            return 0;
+        } else if (arg == "--headless") {
+            headless = true;
+        } else if (arg == "--out" || arg == "--frames") {
+            if (!hasValue) return badArguments(argv[0], arg + " needs a value");
+            const std::string value = argv[++i];
+            if (arg == "--out") {
+                if (value.empty()) return badArguments(argv[0], "--out needs a file name");
+                out = value, headless = true;
+            } else {
+                char* end = nullptr;
+                const long n = std::strtol(value.c_str(), &end, 10);
+                if (value.empty() || *end != '\0' || n < 0 || n > 1000000)
+                    return badArguments(argv[0], "--frames '" + value + "': expected a whole number 0..1000000");
+                frames = static_cast<int>(n);
+            }
+        } else {
+            return badArguments(argv[0], "unknown argument '" + arg + "'");
         }
     }
     if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) headless = true;
@@ -318,7 +352,7 @@ int main(int argc, char** argv) {
         std::printf("SKIPPED: no OpenGL 3.3 core context: %s\n", e.what());
         return kNoContext;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
+        std::fprintf(stderr, "ssam_gl_embedding: error: %s\n", e.what());
         return 1;
     }
 }
