@@ -15,18 +15,6 @@ namespace bench {
 
 namespace {
 
-std::string xmlEscape(const std::string& s) {
-    std::string r;
-    for (char c : s) {
-        if (c == '<') r += "&lt;";
-        else if (c == '>') r += "&gt;";
-        else if (c == '&') r += "&amp;";
-        else if (c == '"') r += "&quot;";
-        else r += c;
-    }
-    return r;
-}
-
 const BenchRow* find(const std::vector<BenchRow>& rows, const std::string& scene, const std::string& technique,
                      const std::string& backend) {
     for (const BenchRow& r : rows)
@@ -195,119 +183,6 @@ void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow
         out << "\n";
     }
     out << "Chart: [bench.svg](bench.svg). Per-pass medians: bench_passes.csv.\n";
-}
-
-void writeSvg(const std::filesystem::path& path, const std::vector<BenchRow>& rows) {
-    const std::string backend = primaryBackend(rows);
-    struct Point {
-        std::string label;
-        double time, error;
-        bool front = false;
-    };
-    struct Panel {
-        std::string scene;
-        std::vector<Point> points;
-    };
-    std::vector<Panel> panels;
-    for (const std::string& scene : distinct(rows, &BenchRow::scene)) {
-        Panel p{scene, {}};
-        for (const BenchRow& r : rows)
-            if (r.scene == scene && r.backend == backend && r.technique != kOpaqueOnly && has(r.timeMedianMs) &&
-                r.timeMedianMs > 0.0 && has(r.flipMean))
-                p.points.push_back({r.technique, r.timeMedianMs, r.flipMean});
-        // Pareto front: no other point is at least as fast and at least as accurate, and better in one.
-        for (Point& a : p.points) {
-            a.front = std::none_of(p.points.begin(), p.points.end(), [&](const Point& b) {
-                return b.time <= a.time && b.error <= a.error && (b.time < a.time || b.error < a.error);
-            });
-        }
-        if (!p.points.empty()) panels.push_back(std::move(p));
-    }
-
-    const int panelW = 460, panelH = 340, margin = 20;
-    const int cols = std::max<int>(1, std::min<int>(2, int(panels.size())));
-    const int rowsN = std::max<int>(1, (int(panels.size()) + cols - 1) / cols);
-    const int width = cols * panelW + margin * 2, height = rowsN * panelH + margin * 2 + 40;
-    std::ostringstream s;
-    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
-    s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    s << "<text x=\"" << margin << "\" y=\"" << margin + 12 << "\" font-size=\"15\" font-weight=\"bold\">"
-      << "ssam-bench: frame time against ꟻLIP error (" << xmlEscape(backend)
-      << " backend); filled = Pareto front</text>\n";
-    if (panels.empty())
-        s << "<text x=\"" << margin << "\" y=\"" << margin + 50
-          << "\">no error data: the exact reference was not available in this run</text>\n";
-
-    for (std::size_t i = 0; i < panels.size(); ++i) {
-        const Panel& p = panels[i];
-        const double ox = margin + double(i % cols) * panelW, oy = margin + 40 + double(i / cols) * panelH;
-        const double left = ox + 60, right = ox + panelW - 20, top = oy + 24, bottom = oy + panelH - 50;
-        double tMin = 1e300, tMax = 0, eMax = 0;
-        for (const Point& pt : p.points) {
-            tMin = std::min(tMin, pt.time);
-            tMax = std::max(tMax, pt.time);
-            eMax = std::max(eMax, pt.error);
-        }
-        // Time on a log axis (techniques span orders of magnitude), error linear from 0.
-        const double l0 = std::floor(std::log10(tMin)), l1 = std::max(l0 + 1.0, std::ceil(std::log10(tMax)));
-        const double eTop = eMax > 0 ? eMax * 1.15 : 1.0;
-        auto X = [&](double t) { return left + (std::log10(t) - l0) / (l1 - l0) * (right - left); };
-        auto Y = [&](double e) { return bottom - e / eTop * (bottom - top); };
-        s << "<g>\n<text x=\"" << (left + right) / 2 << "\" y=\"" << oy + 14
-          << "\" text-anchor=\"middle\" font-weight=\"bold\">scene " << xmlEscape(p.scene) << "</text>\n";
-        s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\""
-          << bottom - top << "\" fill=\"none\" stroke=\"#444\"/>\n";
-        for (double l = l0; l <= l1 + 1e-9; l += 1.0) {
-            const double x = X(std::pow(10.0, l));
-            s << "<line x1=\"" << x << "\" y1=\"" << bottom << "\" x2=\"" << x << "\" y2=\"" << bottom + 5
-              << "\" stroke=\"#444\"/><text x=\"" << x << "\" y=\"" << bottom + 18 << "\" text-anchor=\"middle\">"
-              << num(std::pow(10.0, l), "%g") << "</text>\n";
-        }
-        for (int k = 0; k <= 4; ++k) {
-            const double e = eTop * k / 4.0, y = Y(e);
-            s << "<line x1=\"" << left - 5 << "\" y1=\"" << y << "\" x2=\"" << left << "\" y2=\"" << y
-              << "\" stroke=\"#444\"/><text x=\"" << left - 8 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">"
-              << num(e, "%.3f") << "</text>\n";
-        }
-        s << "<text x=\"" << (left + right) / 2 << "\" y=\"" << bottom + 36
-          << "\" text-anchor=\"middle\">median frame time, ms (log scale)</text>\n";
-        s << "<text transform=\"translate(" << ox + 16 << ' ' << (top + bottom) / 2
-          << ") rotate(-90)\" text-anchor=\"middle\">mean ꟻLIP vs reference</text>\n";
-        // The front as a staircase from the fastest to the most accurate point.
-        std::vector<Point> front;
-        for (const Point& pt : p.points)
-            if (pt.front) front.push_back(pt);
-        std::sort(front.begin(), front.end(), [](const Point& a, const Point& b) { return a.time < b.time; });
-        if (front.size() > 1) {
-            s << "<polyline fill=\"none\" stroke=\"#c0392b\" stroke-dasharray=\"4 3\" points=\"";
-            for (std::size_t k = 0; k < front.size(); ++k) {
-                if (k) s << X(front[k].time) << ',' << Y(front[k - 1].error) << ' ';
-                s << X(front[k].time) << ',' << Y(front[k].error) << ' ';
-            }
-            s << "\"/>\n";
-        }
-        std::vector<std::pair<double, double>> labels;  // placed label anchors, to keep labels apart
-        for (const Point& pt : p.points) {
-            const double x = X(pt.time), y = Y(pt.error);
-            double labelY = y - 6;
-            auto clashes = [&](double ly) {
-                return std::any_of(labels.begin(), labels.end(), [&](const auto& l) {
-                    return std::abs(l.first - x) < 90 && std::abs(l.second - ly) < 12;
-                });
-            };
-            for (int tries = 0; tries < 12 && clashes(labelY); ++tries) labelY += 13;
-            labels.push_back({x, labelY});
-            s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"5\" fill=\"" << (pt.front ? "#c0392b" : "white")
-              << "\" stroke=\"#c0392b\" stroke-width=\"1.5\"><title>" << xmlEscape(pt.label) << ": "
-              << num(pt.time, "%.2f") << " ms, ꟻLIP " << num(pt.error, "%.4f") << "</title></circle>\n";
-            s << "<text x=\"" << x + 7 << "\" y=\"" << labelY << "\">" << xmlEscape(pt.label) << "</text>\n";
-        }
-        s << "</g>\n";
-    }
-    s << "</svg>\n";
-    std::ofstream out = openOut(path);
-    out << s.str();
 }
 
 }  // namespace bench

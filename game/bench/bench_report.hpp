@@ -1,7 +1,7 @@
 #pragma once
 // `ssam-bench`'s outputs: bench.csv (one row per scene x technique x backend),
 // bench_passes.csv (median time of each pass), bench.md (tables and the goal ratios of
-// issue #6) and bench.svg (time against ꟻLIP per scene, Pareto front marked).
+// issue #6); bench.svg is bench_chart.hpp's.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,6 +22,5 @@ const std::vector<std::string>& csvColumns();
 void writeCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
 void writePassesCsv(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
 void writeMarkdown(const std::filesystem::path& path, const std::vector<BenchRow>& rows, const RunInfo& info);
-void writeSvg(const std::filesystem::path& path, const std::vector<BenchRow>& rows);
 
 }  // namespace bench

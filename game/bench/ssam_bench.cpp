@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_chart.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
 #include "bench_sweep.hpp"
