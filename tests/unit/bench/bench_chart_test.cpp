@@ -33,8 +33,9 @@ BenchRow row(const std::string& scene, const std::string& technique, const std::
 }
 
 std::string describe(const ChartBox& b) {
-    return "[" + std::to_string(b.x0) + ", " + std::to_string(b.y0) + " .. " + std::to_string(b.x1) + ", " +
-           std::to_string(b.y1) + "]";
+    std::ostringstream text;  // not "[" + std::to_string(...): GCC 12 -O3 warns falsely (-Wrestrict)
+    text << '[' << b.x0 << ", " << b.y0 << " .. " << b.x1 << ", " << b.y1 << ']';
+    return text.str();
 }
 
 // Every property the chart promises, for one layout.
