@@ -13,7 +13,7 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests,
 # then Node.js for the Khronos glTF Validator the content test runs.
 PACKAGES := build-essential cmake pkg-config ccache \
-            libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev \
+            libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libpng-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libepoxy-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
@@ -22,7 +22,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
 # which bundles npm and which Debian's npm package would try to replace).
 NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test demo bench readme-images content clean node-tools fuzz
+.PHONY: all deps configure build test demo bench readme-images readme-chart content clean node-tools fuzz
 
 all: build
 
@@ -68,6 +68,12 @@ readme-images: build
 	# The living scene: the pan when the car passes the start line (55.9 s at 0.1 s steps).
 	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 559 --fixed-dt 0.1 --camera pan \
 	  --capture content/readme/living_scene.png
+
+# The README's chart: the full ssam-bench run on both backends with 2 threads (soft tiles and
+# llvmpipe's LP_NUM_THREADS), as the README's measured figures; its tables are in out/readme-bench/bench.md.
+readme-chart: build
+	DISPLAY= $(BUILD_DIR)/bin/ssam-bench --backend soft,gl --threads 2 --out out/readme-bench
+	cp out/readme-bench/bench.svg content/readme/bench.svg
 
 # Regenerates the committed assets (deterministic: a test checks the bytes match).
 content: build

@@ -1,9 +1,8 @@
 #pragma once
 // `ssam-bench`'s outputs: bench.csv (one row per scene x technique x backend),
 // bench_passes.csv (median time of each pass), bench.md (tables and the goal ratios of
-// issue #6) and bench.svg (time against ꟻLIP per scene, Pareto front marked). Each is
-// written to a stream; ssam-bench stages the files and puts them in place together
-// (report_text.hpp stageReport).
+// issue #6); bench.svg is bench_chart.hpp's. Each is written to a stream; ssam-bench stages
+// the files and puts them in place together (report_text.hpp stageReport).
 #include <ostream>
 #include <string>
 #include <vector>
@@ -24,6 +23,5 @@ const std::vector<std::string>& csvColumns();
 void writeCsv(std::ostream& out, const std::vector<BenchRow>& rows);
 void writePassesCsv(std::ostream& out, const std::vector<BenchRow>& rows);
 void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const RunInfo& info);
-void writeSvg(std::ostream& out, const std::vector<BenchRow>& rows);
 
 }  // namespace bench

@@ -13,10 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "bench_chart.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
 #include "bench_sweep.hpp"
+#include "bench_chart.hpp"
+#include "content_dir.hpp"
 #include "engine/cli/command_line.hpp"
+#include "engine/core/error.hpp"
 #include "engine/core/output_file.hpp"
 #include "engine/core/usage_error.hpp"
 #include "report_text.hpp"
@@ -44,7 +48,7 @@ struct Options {
     std::string sweepReference = "16,64,128";
     std::string sweepPrecision = "rgba8,rgba16f";
     std::string out = "out/bench";
-    std::string contentDir = SSAM_CONTENT_DIR;
+    std::string contentDir = racer::defaultContentDir().string();
 };
 
 std::vector<std::string> splitList(const std::string& list, const char* flag) {

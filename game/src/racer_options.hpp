@@ -5,6 +5,7 @@
 #include <string>
 
 #include "camera_rig.hpp"
+#include "content_dir.hpp"
 #include "transparency/technique.hpp"
 
 namespace CLI {
@@ -27,7 +28,7 @@ struct Options {
     std::string capturePath;
     bool captureLayers = false;
     bool headless = false;
-    std::string contentDir = SSAM_CONTENT_DIR;
+    std::string contentDir = defaultContentDir().string();
     int msaa = 1;
     std::string layerPictures;
     std::string script;     // --script (hidden): keys and window changes at given frames, for tests

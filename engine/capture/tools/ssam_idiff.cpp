@@ -147,6 +147,15 @@ int main(int argc, char** argv) {
     app.add_option("--diff", args.diffPath, "Write |A-B| * scale to this .png or .exr");
     app.add_option("--scale", args.scale, "Scale factor for the difference image")->capture_default_str();
     app.add_flag("--linear", args.linear, "Compare in linear light (decode sRGB) instead of stored values");
-    app.footer("Messages are 'ssam-idiff: error: ...' on stderr; a usage error exits 2.");
+    app.footer(
+        "Why not idiff itself: the golden tests need three things it does not do.\n"
+        "  - PNG colour is compared straight, not premultiplied: idiff premultiplies on reading,\n"
+        "    so a colour change under alpha 0 would pass unseen.\n"
+        "  - A warning threshold below the fail threshold warns even when no pixel fails (idiff 2.4\n"
+        "    returns PASS early), and every non-finite value is counted (idiff skips the first).\n"
+        "  - Images are read as the tests and racer read them (engine/capture), --linear compares\n"
+        "    linear light, and the statistics are always printed, not only on failure.\n"
+        "Otherwise it is idiff: thresholds and numbers carry over between the two.\n"
+        "Messages are 'ssam-idiff: error: ...' on stderr; a usage error exits 2.");
     return engine::cli::runTool("ssam-idiff", app, argc, argv, [&] { return compare(args); });
 }

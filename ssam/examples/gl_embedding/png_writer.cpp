@@ -3,43 +3,16 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 
+#include <png.h>
+
 namespace gl_embedding {
 
 namespace {
-
-std::uint32_t crc32(const std::uint8_t* data, std::size_t size, std::uint32_t crc = 0) {
-    static const std::array<std::uint32_t, 256> table = [] {
-        std::array<std::uint32_t, 256> t{};
-        for (std::uint32_t n = 0; n < 256; ++n) {
-            std::uint32_t c = n;
-            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-            t[n] = c;
-        }
-        return t;
-    }();
-    crc = ~crc;
-    for (std::size_t i = 0; i < size; ++i) crc = table[(crc ^ data[i]) & 0xFFu] ^ (crc >> 8);
-    return ~crc;
-}
-
-void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(v >> shift));
-}
-
-void chunk(std::vector<std::uint8_t>& out, const char* type, const std::vector<std::uint8_t>& data) {
-    put32(out, static_cast<std::uint32_t>(data.size()));
-    const std::size_t start = out.size();
-    out.insert(out.end(), type, type + 4);
-    out.insert(out.end(), data.begin(), data.end());
-    put32(out, crc32(out.data() + start, out.size() - start));
-}
 
 // Creates an empty, new file beside `path` (O_EXCL: ours alone) and names it in `temporary`.
 std::string createTemporaryBeside(const std::string& path, std::string& temporary) {
@@ -63,44 +36,26 @@ std::string createTemporaryBeside(const std::string& path, std::string& temporar
 }  // namespace
 
 std::string writePng(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
-    // Scanlines with filter type 0, then a zlib stream of stored (uncompressed) blocks.
-    std::vector<std::uint8_t> raw;
-    const std::size_t row = static_cast<std::size_t>(width) * 4;
-    for (int y = 0; y < height; ++y) {
-        raw.push_back(0);
-        raw.insert(raw.end(), rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
-                   rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row));
-    }
-    std::vector<std::uint8_t> z = {0x78, 0x01};
-    for (std::size_t pos = 0; pos < raw.size() || pos == 0;) {
-        const std::size_t n = std::min<std::size_t>(65535, raw.size() - pos);
-        z.push_back(pos + n == raw.size() ? 1 : 0);
-        z.push_back(static_cast<std::uint8_t>(n & 0xFF));
-        z.push_back(static_cast<std::uint8_t>(n >> 8));
-        z.push_back(static_cast<std::uint8_t>(~n & 0xFF));
-        z.push_back(static_cast<std::uint8_t>((~n >> 8) & 0xFF));
-        z.insert(z.end(), raw.begin() + static_cast<std::ptrdiff_t>(pos), raw.begin() + static_cast<std::ptrdiff_t>(pos + n));
-        pos += n;
-        if (n == 0) break;
-    }
-    std::uint32_t a = 1, b = 0;  // Adler-32 of the uncompressed data
-    for (std::uint8_t byte : raw) a = (a + byte) % 65521u, b = (b + a) % 65521u;
-    put32(z, (b << 16) | a);
-
-    std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    std::vector<std::uint8_t> header;
-    put32(header, static_cast<std::uint32_t>(width));
-    put32(header, static_cast<std::uint32_t>(height));
-    header.insert(header.end(), {8, 6, 0, 0, 0});  // 8-bit RGBA, deflate, no filter, no interlace
-    chunk(png, "IHDR", header);
-    chunk(png, "IDAT", z);
-    chunk(png, "IEND", {});
+    if (width <= 0 || height <= 0 || rgba.size() != std::size_t(width) * std::size_t(height) * 4)
+        return "writePng: " + std::to_string(rgba.size()) + " bytes for " + std::to_string(width) + "x" +
+               std::to_string(height) + " RGBA";
+    // A temporary file beside the target, renamed into place when complete: a failure leaves
+    // no partial file. libpng's simplified API writes it deflate-compressed, 8-bit straight RGBA.
     std::string temporary;
     if (std::string why = createTemporaryBeside(path, temporary); !why.empty()) return why;
-    std::FILE* f = std::fopen(temporary.c_str(), "wb");
-    bool ok = f && std::fwrite(png.data(), 1, png.size(), f) == png.size();
-    ok = f && std::fclose(f) == 0 && ok;
-    if (!ok || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    image.width = static_cast<png_uint_32>(width);
+    image.height = static_cast<png_uint_32>(height);
+    image.format = PNG_FORMAT_RGBA;
+    const bool written = png_image_write_to_file(&image, temporary.c_str(), 0, rgba.data(), 0, nullptr) != 0;
+    const std::string libpngMessage = image.message;
+    png_image_free(&image);
+    if (!written) {
+        std::remove(temporary.c_str());
+        return "cannot write '" + path + "': libpng: " + libpngMessage;
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
         const std::string why = std::string("cannot write '") + path + "': " + std::strerror(errno);
         std::remove(temporary.c_str());
         return why;

@@ -1,6 +1,5 @@
 #pragma once
-// A minimal PNG writer (RGBA8, stored deflate blocks: no compression library needed), so the
-// example depends on nothing but GL, EGL/GLFW and ssam::gl.
+// Writes the example's frame as a compressed PNG through libpng (Debian: libpng-dev).
 #include <cstdint>
 #include <string>
 #include <vector>

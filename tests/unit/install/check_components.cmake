@@ -1,0 +1,39 @@
+# cmake -P script: find_package(ssam) against an installed prefix with good and bad requests.
+#   -DBUILD_DIR= -DPREFIX= -DPROBE_SOURCE= -DPROBE_BUILD=
+# A missing component, one whose dependency is missing, or a wrong version must fail the
+# consumer's configure with a message naming it; optional ones that cannot load must not.
+include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
+install_library(${BUILD_DIR} ${PREFIX})
+
+# probe(<expect: ok|fail> <message regex> <cmake -D arguments>...)
+function(probe expect pattern)
+  file(REMOVE_RECURSE ${PROBE_BUILD})
+  execute_process(COMMAND ${CMAKE_COMMAND} -S ${PROBE_SOURCE} -B ${PROBE_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} ${ARGN}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(all "${out}${err}")
+  if(expect STREQUAL "ok" AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "find_package(ssam) with ${ARGN} failed:\n${all}")
+  elseif(expect STREQUAL "fail" AND rc EQUAL 0)
+    message(FATAL_ERROR "find_package(ssam) with ${ARGN} succeeded; it must fail:\n${all}")
+  endif()
+  if(NOT all MATCHES "${pattern}")
+    message(FATAL_ERROR "find_package(ssam) with ${ARGN}: the output does not say '${pattern}':\n${all}")
+  endif()
+  message(STATUS "ok (${expect}): ${ARGN}")
+endfunction()
+
+set(v -DSSAM_VERSION_WANTED=0.2)
+probe(ok "ssam targets: ssam::ssam;ssam::render;ssam::core;ssam::render_soft;ssam::render_gl;ssam::gl\n"
+      ${v} "-DSSAM_COMPONENTS=soft gl")
+probe(ok "ssam targets: ssam::ssam;ssam::render;ssam::core;ssam::render_soft;ssam::render_gl;ssam::gl\n"
+      ${v})  # no COMPONENTS: every one that can load
+probe(ok "ssam targets: ssam::ssam;ssam::render;ssam::core;ssam::render_soft\n" ${v} -DSSAM_COMPONENTS=soft)
+probe(fail "no component 'vulkan'" ${v} "-DSSAM_COMPONENTS=soft vulkan")
+probe(fail "no component 'vulkan'" ${v} -DSSAM_OPTIONAL=vulkan)
+# A component whose dependency cannot be found here (oneTBB hidden from the search).
+probe(fail "component 'soft': it needs oneTBB" ${v} -DSSAM_COMPONENTS=soft -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON)
+probe(ok "optional component 'soft' not loaded: it needs oneTBB.*ssam targets: ssam::ssam;ssam::render;ssam::core;ssam::render_gl;ssam::gl\n"
+      ${v} -DSSAM_COMPONENTS=gl -DSSAM_OPTIONAL=soft -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON)
+# 0.x: another minor version is another API.
+probe(fail "version: 0\\.2\\.0" -DSSAM_VERSION_WANTED=0.3)
+probe(fail "version: 0\\.2\\.0" -DSSAM_VERSION_WANTED=0.1)
