@@ -80,8 +80,6 @@ template glm::vec4 sampleTexture<SampledChannels::All>(const SoftTexture&, const
 template glm::vec4 sampleTexture<SampledChannels::AlphaOnly>(const SoftTexture&, const SamplerState&, glm::vec2,
                                                              const UvDerivatives&);
 
-glm::vec4 fetchTexel(const SoftTexture& t, int x, int y) { return loadTexel(t.texel(0, x, y), t.desc.format); }
-
 void generateMipLevel(SoftTexture& t, int level) {
     const MipLevel& src = t.levels[level - 1];
     MipLevel& dst = t.levels[level];

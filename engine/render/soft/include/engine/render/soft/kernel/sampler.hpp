@@ -5,6 +5,7 @@
 // texel (0,0) rather than reaching undefined float-to-int conversions.
 #include <glm/glm.hpp>
 
+#include "engine/render/pixel_codec.hpp"
 #include "soft_texture.hpp"
 
 namespace engine::render::soft {
@@ -21,7 +22,9 @@ glm::vec4 sampleTexture(const SoftTexture& texture, const SamplerState& sampler,
                         const UvDerivatives& derivatives);
 
 // Texel (x, y) of level 0, sample 0; for full-screen passes that read one texel per pixel.
-glm::vec4 fetchTexel(const SoftTexture& texture, int x, int y);
+inline glm::vec4 fetchTexel(const SoftTexture& texture, int x, int y) {
+    return loadTexel(texture.texel(0, x, y), texture.desc.format);
+}
 
 // Mip level `level` (>= 1) computed as the 2x2 box average of level - 1 (in linear light).
 void generateMipLevel(SoftTexture& texture, int level);
