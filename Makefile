@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The two set-up commands of the README:
 #   make demo   install what is missing, build, run the racer demo
 #   make test   install what is missing, build, run ctest --preset default

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The committed content, generated: `generateContent(dir)` writes every file under dir
 // (textures/*.png, models/*.glb) and returns their paths relative to dir, in a fixed order.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Procedural meshes of the committed content: trees and bushes built as in Pure ([Hathaway 2010]
 // §3.3, Fig. 3.2: "a multitude of polygonal planes ... oriented as randomly as possible",

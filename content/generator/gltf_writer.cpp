@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gltf_writer.hpp"
 
 #include <draco/compression/decode.h>

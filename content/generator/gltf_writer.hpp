@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A small glTF 2.0 writer for the generator: one GLB per model, everything embedded (geometry,
 // PNG textures), so each file is self-contained. Primitives are stored either plainly or with

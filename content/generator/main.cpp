@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // content-generator: writes the committed content (textures/*.png, models/*.glb) under --out.
 // Run explicitly (`make content`), never as part of a build; unit_content checks that the
 // committed files are exactly what this program writes. Keeps the command-line contract

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Tileable value noise and fractal sums of it, for procedural textures. Only +, * and
 // floor are used, so results do not depend on the maths library.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The generator's only source of randomness: PCG32 (O'Neill, pcg-random.org, "pcg32" =
 // PCG-XSH-RR with 64-bit state). Every draw is integer arithmetic and the float helpers use

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Procedural textures of the committed content: straight-alpha RGBA8 with sRGB colour codes,
 // as glTF base colour textures are stored. Every function is a pure function of its seed.

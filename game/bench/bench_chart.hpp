@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // bench.svg: median frame time (log axis) against mean ꟻLIP error, one panel per scene, every
 // backend of the run in each panel (soft: circles, gl: squares; a grey line joins one

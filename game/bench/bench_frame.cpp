@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bench_frame.hpp"
 
 #include "engine/render/pass_scope.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One benchmark frame: the opaque pass (ground, trunks: OpaqueLit, reverse-Z, depth test
 // Greater, as game/src/frame_renderer.cpp draws it) into ssam::OpaqueTargets, then the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `ssam-bench`'s outputs: bench.csv (one row per scene x technique x backend),
 // bench_passes.csv (median time of each pass), bench.md (tables and the goal ratios of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One row of `ssam-bench`'s results: a technique (or the opaque-only frame) on one scene and
 // backend. Missing values (no reference yet, no pan, a skipped technique) are NaN and are

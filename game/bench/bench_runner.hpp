@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs the benchmark: every subject (a technique with its options, or the opaque-only
 // frame) on every chosen scene and backend, timed over repetitions after warm-up, judged

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scenes `ssam-bench` measures every transparency technique on, built from content/models
 // with the engine's ECS (Transform + Renderable entities, a MeshLibrary) so extraction and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `ssam-bench --sweep`: SSAM's error against the exact reference under a grid of its knobs
 // (ssam::Config: maskLerp §3.5.4, squareMask §3.6.2, colorAlphaReference §3.5.3,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "counting_backend.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A Backend that forwards every call to another and counts the bytes of the textures and
 // buffers created through it that are still alive: `ssam-bench`'s peak_mem_mb column.

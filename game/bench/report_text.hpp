@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Text helpers shared by ssam-bench's reports (bench.* and sweep.*): numbers as the CSV and
 // Markdown print them, quoting, and staging a report file.

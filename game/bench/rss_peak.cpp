@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rss_peak.hpp"
 
 #include <algorithm>

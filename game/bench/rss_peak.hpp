@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How much the process's peak resident memory grew over a scope (Linux): the peak is reset
 // to the current RSS (/proc/self/clear_refs, "5") at construction and read back from

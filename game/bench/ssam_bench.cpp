@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ssam-bench: every transparency technique's run time against its error from the exact
 // reference (DESIGN.md "Accuracy and the ground truth", issue #6). Writes bench.csv,
 // bench_passes.csv, bench.md and bench.svg into --out; with --sweep, SSAM under a grid of its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sweep_report.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `ssam-bench --sweep`'s outputs: sweep.csv (one row per scene x backend x setting, the knobs
 // and the same measure columns as bench.csv) and sweep.md (per scene: the settings sorted by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The demo's cameras: chase (behind the car), pan (the slow side-to-side pre-race move
 // where alpha testing sparkles, [Hathaway 2010] §3.4), free (a free-fly camera: it starts at an

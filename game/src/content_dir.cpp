@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "content_dir.hpp"
 
 #include <system_error>

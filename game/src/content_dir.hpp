@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where racer and ssam-bench find the committed content (models/, textures/) when no
 // --content is given.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "content_files.hpp"
 
 #include <fstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Loading the committed content (content/): models, textures and placed instances, shared
 // by the racing scene and ssam-bench's scenes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "foliage_upload.hpp"
 
 namespace racer {

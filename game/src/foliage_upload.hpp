@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The bridge from the scene's draw lists to the foliage techniques: each alpha-tested
 // (Mask) batch becomes a transparency::FoliageDraw whose instances live in a buffer of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One frame of the racing scene on any backend: the opaque pass (terrain, road, trunks,
 // car), the foliage by the chosen transparency::Technique (SSAM, alpha testing, the rivals

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What racer's loops (headless and window) ask the world for each frame: advance the
 // simulation by dt, then the draw lists seen from the chosen camera. racer.cpp builds it

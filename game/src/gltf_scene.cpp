@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gltf_scene.hpp"
 
 #include <algorithm>

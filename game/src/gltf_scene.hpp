@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `racer --scene FILE.gltf|FILE.glb`: any glTF 2.0 file in place of the racing scene. The
 // file's scene becomes one entity of the ECS (node transforms are baked into the mesh

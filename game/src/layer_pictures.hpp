@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small PNG pictures of captured layers, for the README's walk through SSAM's passes:
 // colour layers as they are, masks as grey, reverse-Z depth as log distance (white near,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "living_scene.hpp"
 
 #include "track.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The living scene (issue #8): the enabled modules' features in frame order (grass ->
 // water -> particles -> light shafts after the foliage technique; wind has systems only),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // racer: the project's main job. Renders the racing scene (or a --scene glTF file) with a
 // chosen foliage technique, in a GLFW window (when there is a display and no --headless) or
 // headless, and writes captures. Flags: racer_options.cpp; the window: window_loop.cpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // racer's command line: every flag, its default and its check, in one place (README
 // "The demo: racer" lists them). main() parses; run() turns them into renderer settings.

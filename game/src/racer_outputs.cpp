@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "racer_outputs.hpp"
 
 #include <cstdio>

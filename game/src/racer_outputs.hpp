@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What racer writes -- the --capture image; with --capture-layers, the EXR of every layer
 // beside it; with --layer-pictures, a PNG per layer -- checked before the first frame, so a

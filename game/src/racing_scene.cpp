@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "racing_scene.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The racing scene on the ECS: terrain and road built in code from the track, models from
 // content/ (trees, bushes, the car, water pools) placed with a seeded PRNG, and the car

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The size racer's window renders at: its framebuffer's, followed on every resize, and what
 // happens when the backend refuses a size.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The closed race track: a seeded loop of control points joined by a Catmull-Rom spline,
 // parameterised by arc length so the car drives at a constant speed, draped over the

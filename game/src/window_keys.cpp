@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "window_keys.hpp"
 
 #include <GLFW/glfw3.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The window's keys, as pure functions of GLFW key codes so they are unit-tested without a
 // window: 1-8 pick a technique (transparency::allTechniques() order), T / Shift+T step to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "window_loop.hpp"
 
 #include <GLFW/glfw3.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // racer's window: frames rendered by a FrameRenderer (on the GL backend of the window, or on
 // the soft backend and uploaded to a GL texture to be shown), presented until the window

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The installed package: what another engine finds with
 #   find_package(ssam 0.2 REQUIRED COMPONENTS soft gl)        (CMake)
 #   pkg-config --static --cflags --libs ssam ssam-soft ssam-gl  (anything else; static archives)

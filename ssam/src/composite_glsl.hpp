@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The GLSL of SSAM's composite (composite_program.hpp), one source for the engine's GL
 // backend and for ssam::gl: each declares the samplers and uniforms the way its GLSL version

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The soft backend's kernel of SSAM's composite (composite_program.hpp).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/composite_program.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/config.hpp"
 
 #include <cmath>

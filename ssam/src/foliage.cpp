@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/foliage.hpp"
 
 namespace ssam {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/frame_graph_passes.hpp"
 
 #include <memory>

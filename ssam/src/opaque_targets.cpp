@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/opaque_targets.hpp"
 
 #include <string>

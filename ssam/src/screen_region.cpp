@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/screen_region.hpp"
 
 #include <algorithm>

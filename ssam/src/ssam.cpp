@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/ssam.hpp"
 
 #include "engine/render/pass_scope.hpp"

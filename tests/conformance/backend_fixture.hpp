@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Backend-agnostic conformance fixture (dEQP style). The suites in tests/conformance/suites
 // are written against engine::render::Backend only; each backend's conformance executable

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // An independent scalar reference for fixed-function blending and colour stores, written
 // from the OpenGL 4.5 (Core) specification, §17.3.6 "Blending":

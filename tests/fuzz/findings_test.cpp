@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fixes for what fuzzing found (tests/fuzz), checked directly. The seed-corpus replays
 // catch escaping exceptions, broken contracts, crashes and hangs, but a read past a buffer
 // that does not crash shows only under a sanitizer, and a silently wrong value only to a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target: engine::capture's image readers (readImage, readImage8, and for EXR files
 // listExrLayers and readExrLayer), which ssam-idiff and the golden-image tests run on files
 // they did not write. The input is written to a file whose extension matches its magic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target: engine::assets::loadGltf on a binary glTF (.glb) — the container, the JSON,
 // accessors, Draco (KHR_draco_mesh_compression) and images embedded in bufferViews.
 // Seeds: tests/fuzz/corpus/gltf_glb (make_corpus.py).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target: engine::assets::loadGltf on a JSON glTF (.gltf) whose relative URIs can reach
 // real files: the directory it is loaded from also holds triangle.bin and leaf4.png (copies
 // of tests/data/gltf), a sub-directory, and escape.bin, a symbolic link to a file outside

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target: engine::assets::decodeImage, the in-memory PNG/JPEG decoding every glTF image
 // goes through (OpenImageIO behind it). Seeds: tests/fuzz/corpus/image_decode.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target: the text parsers of racer's command line — the window script (`--script`,
 // racer::parseWindowScript) and --size, --camera and --technique — all run on the same
 // input string, cut at its first NUL as argv would be. Seeds: tests/fuzz/corpus/racer_flags.

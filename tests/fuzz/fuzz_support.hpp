@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared by the fuzz targets (DESIGN.md "Testing layers": fuzz): what a target may accept as
 // the outcome of hostile input, and a scratch directory for the loaders that take paths.

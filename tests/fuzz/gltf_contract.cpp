@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gltf_contract.hpp"
 
 #include <cmath>

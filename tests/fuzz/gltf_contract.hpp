@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a glTF file that loadGltf accepted must look like (engine/assets/gltf.hpp): every
 // number finite (the loader refuses NaN and infinity rather than passing them on), every

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes the seed corpora of the fuzz targets (committed; rerun after editing).
 
     python3 tests/fuzz/make_corpus.py

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The main() of a fuzz target in the default build (GCC, CI): runs LLVMFuzzerTestOneInput once
 // on every file named on the command line, and on every file inside each directory named (not
 // recursive, in name order, so a run is repeatable). Prints one line per file. The target

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # `make fuzz`: builds the fuzz targets as libFuzzer binaries (Clang, ASan + UBSan) in their own
 # build directory and runs each for FUZZ_SECONDS on a copy of its seed corpus.
 #

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Expects `fn` to throw engine::Error whose message contains `substring` (bad input must be
 // refused with a message that says what was wrong).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A backend decorator for exception-safety tests: the create call number `failAt` (0-based,
 // counting textures, buffers, programs, pipelines and queries alike) throws engine::Error

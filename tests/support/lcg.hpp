@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A tiny linear congruential generator (Knuth's MMIX constants) for randomized tests: the
 // same values on every platform and standard library (std:: distributions differ between

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small hand-made scenes for SSAM tests: axis-aligned quads at a given depth with a given
 // colour and alpha (vertex colour; no texture), in NDC with an identity view-projection.

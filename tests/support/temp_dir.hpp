@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A fresh directory per test under the system temp dir, removed afterwards, so tests
 // never write into the repository and can run in parallel (ctest -j, one process per test).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gltf_accessor.hpp"
 
 #include <algorithm>

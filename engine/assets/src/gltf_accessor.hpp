@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Private: reading accessors with every range checked. Offsets and lengths from the file are
 // combined in 64 bits with overflow checks before any byte is touched (glTF 2.0 §3.6.2).

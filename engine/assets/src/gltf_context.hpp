@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Private: where a glTF load reports problems. Every refusal names the file and the field
 // ("scene.gltf: accessors[3].count: ...") so a user knows what to fix.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Private: KHR_draco_mesh_compression decoding with the Draco library.
 //

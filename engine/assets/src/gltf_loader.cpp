@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // glTF 2.0 loading: preflight checks, tinygltf parsing, then conversion with every index,
 // range and value checked. What is refused (each with "<file>: <field>: <problem>"):
 //   - missing, unreadable or over-size files (the glTF, its .bin files and images);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Private: the checks that must pass before tinygltf is allowed to look at a file.
 // tinygltf trusts much of what a file says (it indexes bufferViews and buffers it has not

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Decoding glTF images held in memory through OpenImageIO. engine_capture reads image
 // *files*; glTF images also come from data: URIs and GLB bufferViews, so every image (external
 // files too, after a confined read) goes through this one in-memory path, with one set of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/assets/mips.hpp"
 
 #include <algorithm>

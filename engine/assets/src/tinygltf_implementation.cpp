@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tinygltf's implementation, compiled once, here. Its configuration macros (tinygltf 2.7) are
 // compile definitions of the whole engine_assets target (CMakeLists.txt), because the header's
 // inline code (TinyGLTF's constructor) depends on them in every file that includes it:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/diff_image.hpp"
 
 #include "engine/capture/compare.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/exr_layers.hpp"
 
 #include "engine/capture/image_convert.hpp"

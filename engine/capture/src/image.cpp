@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/image.hpp"
 
 #include "engine/core/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/image_convert.hpp"
 
 #include "engine/capture/srgb.hpp"

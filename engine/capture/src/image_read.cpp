@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/image_read.hpp"
 
 #include "engine/capture/srgb.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/image_write.hpp"
 
 #include "engine/capture/exr_layers.hpp"

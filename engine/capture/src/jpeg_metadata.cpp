@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/jpeg_metadata.hpp"
 
 #include <algorithm>

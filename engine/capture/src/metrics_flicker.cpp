@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Temporal flicker: mean |luma(t+1) - luma(t)| over pixels and consecutive frame pairs (metrics.hpp).
 #include <cmath>
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // LDR-ꟻLIP: P. Andersson, J. Nilsson, T. Akenine-Möller, M. Oskarsson, K. Åström, M. D. Fairchild,
 // "ꟻLIP: A Difference Evaluator for Alternating Images", Proc. ACM Comput. Graph. Interact. Tech.
 // (HPG) 3(2), 2020. Written from the paper's description; no code from the reference

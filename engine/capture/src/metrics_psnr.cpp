@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // RMSE and PSNR of the colour channels, in linear light and after sRGB encoding (metrics.hpp).
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SSIM (Wang, Bovik, Sheikh, Simoncelli, "Image quality assessment: from error visibility to
 // structural similarity", IEEE TIP 2004) on Rec.709 luma of sRGB-encoded colour; see metrics.hpp.
 //

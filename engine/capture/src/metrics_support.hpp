@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared plumbing of the metrics (metrics.hpp): argument checks, colour-channel lookup,
 // luma, separable filtering and deterministic row-parallel sums. Private to engine_capture.

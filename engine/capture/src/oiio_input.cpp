@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "oiio_input.hpp"
 
 #include "engine/capture/jpeg_metadata.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Private: opening a file through OpenImageIO with the checks every reader needs
 // (file present, header sane, size under the cap) done before pixels are allocated.

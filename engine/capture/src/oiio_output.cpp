@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "oiio_output.hpp"
 
 #include "engine/core/output_file.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Private: one place that creates, opens, writes and closes an OpenImageIO output and
 // turns each failure into an engine::Error naming the file. The file is written whole or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/readback_image.hpp"
 
 #include "engine/capture/srgb.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/srgb.hpp"
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/capture/target_capture.hpp"
 
 #include <vector>

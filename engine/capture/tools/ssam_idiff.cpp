@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ssam-idiff: compare two images the way OpenImageIO's idiff does, with our reader.
 //
 //   ssam-idiff A B [--fail F] [--warn W] [--failpercent P] [--warnpercent P]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/core/file_signature.hpp"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/core/output_file.hpp"
 
 #include <fcntl.h>

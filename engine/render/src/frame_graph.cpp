@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Building the frame graph: declaring passes and textures, checking each declaration as it
 // is made, and the queries on the result. compile(), execute() and dumpGraphviz() live in
 // frame_graph_compile.cpp, frame_graph_execute.cpp and frame_graph_graphviz.cpp.

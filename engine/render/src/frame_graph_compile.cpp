@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // FrameGraph::compile(): which passes run (empty-pass propagation, then Filament's
 // reference-count culling), in what order, and how long each transient texture lives.
 // The three steps are described in frame_graph.hpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // FrameGraph::execute(): runs the surviving passes in order, giving transient textures
 // real backing from the caller's allocator only while some pass needs them; and the
 // Resources accessor passes use to find those real textures.

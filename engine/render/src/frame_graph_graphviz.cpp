@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // FrameGraph::dumpGraphviz(): the graph as Graphviz dot, for looking at what compile()
 // kept and why (`dot -Tsvg graph.dot`).
 #include "engine/render/frame_graph.hpp"

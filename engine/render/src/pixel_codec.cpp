@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/render/pixel_codec.hpp"
 
 namespace engine::render {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/render/standard_programs.hpp"
 
 #include <cstddef>

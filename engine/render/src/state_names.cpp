@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Printable names of state enums, for errors, logs and test names.
 #include "engine/render/alpha_test.hpp"
 #include "engine/render/blend_state.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/scene/bounds.hpp"
 
 #include <algorithm>

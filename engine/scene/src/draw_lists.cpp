@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/scene/draw_lists.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/scene/mesh_library.hpp"
 
 #include <map>

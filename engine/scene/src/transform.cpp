@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/scene/transform.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>

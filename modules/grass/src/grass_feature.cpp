@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "grass/grass_feature.hpp"
 
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "grass/grass_field.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The soft backend's kernel of the light-shaft program (light_shaft_program.hpp).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "lightshafts/light_shaft_program.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sun_visibility.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Is any sky near the sun visible? An occlusion query over the sun's glow disc (as lens
 // flares ask the GPU whether the sun is seen): a depth-only draw of the disc at the far

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "particles/particle_feature.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The soft backend's kernels of the particle module's programs (particle_programs.hpp).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "particles/particle_programs.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Plain alpha testing, the baseline SSAM replaces ([Hathaway 2010] §3.2, [Moore 2015]): foliage drawn
 // into the opaque targets before their resolve, discarding fragments below the material's
 // alphaCutoff (glTF 2.0 alphaMode MASK) or one reference for all,

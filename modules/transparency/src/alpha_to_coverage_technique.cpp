@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Alpha-to-coverage ([Moore 2015]): the opaque pass runs at 4x MSAA and the foliage is drawn
 // into those targets with each fragment covering round(alpha * 4) of its samples (the
 // engine's deterministic rule, AlphaTest::alphaToCoverage), with depth test and write; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Straight-alpha blending sorted per object ([Moore 2015] "order dependence": sort back to
 // front, then blend "over"). An object is one instance: every visible instance is keyed by
 // the view depth of its bounds' centre, the instances are stable-sorted farthest first

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Straight-alpha blending in submission order ([Hargreaves 2009] "conventional" over, [Moore 2015]
 // "order dependence"): after the opaque resolve, every foliage fragment is blended
 // SRC_ALPHA / INV_SRC_ALPHA onto the frame, depth-tested against the opaque depth and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/core/error.hpp"
 #include "techniques.hpp"
 #include "transparency/technique.hpp"

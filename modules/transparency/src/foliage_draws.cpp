@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "foliage_draws.hpp"
 
 #include "ssam/screen_region.hpp"

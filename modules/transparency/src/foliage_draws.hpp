@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What every technique does with a FoliageFrame: pick the draws in view, and turn a batch
 // into a DrawDesc with the programs' parameters. Shared so that every technique shades

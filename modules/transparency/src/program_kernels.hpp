@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The soft backend's kernels of the transparency module's programs (programs.hpp).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "transparency/programs.hpp"
 
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SSAM+ (README "SSAM+"): SSAM's mask pass and colour pass unchanged ([Hathaway 2010] §3.5.2,
 // §3.5.3, run by ssam::ScreenSpaceAlphaMask), with two changes measured against the exact
 // reference (modules/transparency README / report):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SSAM as the paper describes it ([Hathaway 2010]), with options.ssam's knobs: the opaque targets
 // are resolved first (SSAM reads the single-sampled rt_opaque and rt_depth, §3.5.1), then
 // ssam::ScreenSpaceAlphaMask runs the mask, colour and composite passes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The factories behind createTechnique, one per file (modules/transparency/src/*_technique.cpp).
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Weighted blended order-independent transparency (McGuire & Bavoil, "Weighted Blended
 // Order-Independent Transparency", JCGT vol. 2 no. 2, 2013), after the opaque resolve:
 //   accumulate  rt_accum (RGBA16F, cleared 0)  += (C * a * w, a * w), ONE/ONE; w is the

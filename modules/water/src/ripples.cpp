@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "water/ripples.hpp"
 
 #include <cmath>

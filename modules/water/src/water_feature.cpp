@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "water/water_feature.hpp"
 
 #include <algorithm>

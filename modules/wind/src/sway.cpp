@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "wind/sway.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "wind/wind_feature.hpp"
 
 namespace wind {

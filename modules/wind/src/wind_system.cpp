@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "wind/wind_system.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The example's command line, keeping the project's command-line contract (game/README.md
 // "Command-line contract") without the engine's helper, since the example builds against an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An OpenGL program that is not built on our engine (its own context, shaders, buffers and
 // render targets) embedding SSAM through ssam::gl: the opaque scene is drawn into the program's
 // own colour + depth textures, then ssam::gl::ScreenSpaceAlphaMaskGl runs the mask, colour and

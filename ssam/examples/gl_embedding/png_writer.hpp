@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writes the example's frame as a compressed PNG through libpng (Debian: libpng-dev).
 #include <cstdint>

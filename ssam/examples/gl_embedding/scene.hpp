@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The example's scene, as data, so the test that checks its image (tests/capture/gl) computes
 // the expected pixels from the same numbers. Orthographic front view: world x, y in [-1, 1] are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SSAM's composite ([Hathaway 2010] §3.5.4, Listing 3.2), full screen, one texel per pixel:
 //   mask = lerp(mask.r (MAX), ADD, maskLerp), clamped to [0, 1] (NaN -> 0), squared when

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Every knob of the paper ([Hathaway 2010]), with Pure's values as defaults where the paper
 // gives them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What SSAM draws: batches of alpha-tested foliage (instanced meshes) as the engine
 // already has them. SSAM draws each batch twice, once per pass, with its own programs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SSAM as a frame-graph pass group (DESIGN.md "Data flow of one frame", Falcor-style
 // reflection of inputs and outputs): reads the opaque colour and depth, writes the

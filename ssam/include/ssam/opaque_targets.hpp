@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The opaque pass's targets ([Hathaway 2010] §3.5.1): rt_opaque and rt_depth at screen
 // resolution, optionally rendered at 2x/4x MSAA and resolved with colour averaged and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The part of the screen some foliage can touch, from world-space bounds. SSAM uses it to
 // skip batches out of view and to scissor the composite to where foliage is (the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Screen-Space Alpha Masking ([Hathaway 2010], "Alpha Blending as a Post-Process", as shipped in
 // Pure). After the engine's opaque pass:

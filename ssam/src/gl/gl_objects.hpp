@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small GL helpers of ssam_gl: program compilation, texture inspection, framebuffer checks.
 // ssam_gl has its own (rather than engine/render/gl's) so it depends on nothing but libepoxy.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gl_state_guard.hpp"
 
 #include <epoxy/gl.h>

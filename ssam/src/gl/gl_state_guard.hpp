@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Saves every piece of GL state ssam_gl changes and restores it on destruction (also when the
 // engine's callback throws), so SSAM can run in the middle of an engine's frame. The list is

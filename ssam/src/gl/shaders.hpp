@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GLSL 3.30 core sources of ssam_gl's three programs ([Hathaway 2010] Listings 3.1 and 3.2).
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ssam/gl/ssam_gl.hpp"
 
 #include <epoxy/gl.h>

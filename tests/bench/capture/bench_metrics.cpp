@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Timings of the benchmark's image metrics on a 1280x720 RGBA pair. Arg 0: one thread,
 // arg 1: oneTBB's default parallelism.
 #include <benchmark/benchmark.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ECS iteration cost per entity against a plain std::vector<struct> loop doing the
 // same work, over 1M entities with 1, 2 and 3 components (every entity has all of
 // them). "time/entity" is the per-entity cost; compare EcsN_* with PlainN.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/lightshafts: what the sun-visibility query saves when the sun is hidden and costs
 // when it is not, on the soft backend at 1280x720 (one frame's light-shaft work: the probe
 // pass and the shaft pass, or the shaft pass alone with the probe off).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/wind: deformed vertices per second, for 1 and 2 oneTBB threads.
 //   build/bin/bench_wind --benchmark_counters_tabular=true
 // 64 or 1024 content trees (tree_broadleaf.glb, 188 vertices each), all within the active radius, swaying and pushed

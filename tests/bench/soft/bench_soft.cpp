@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Soft backend throughput at 1280x720, each case at 1 and 2 threads (SoftOptions::threads;
 // the argument) so the 2-thread speed-up can be read off directly. Wall-clock time
 // (UseRealTime) throughout: the work runs on TBB workers, not only the timing thread.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // "Skip verified by benchmark": what SSAM costs a frame on the soft backend at 1280x720 when no
 // foliage is in view (nothing: no pass runs, no target is allocated) and when it is.
 //   OpaqueOnly        the opaque pass alone: clear + 8 overlapping opaque quads (Flat, depth)

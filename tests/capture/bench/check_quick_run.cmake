@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs `ssam-bench --quick` twice (BENCH, OUT) and checks its outputs (issue #6):
 #   - both runs exit 0;
 #   - bench.csv has every required column and one row per scene x technique (+ opaque-only);

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs `ssam-bench --quick --sweep` on the tree scene (BENCH, OUT) and checks the knob sweep:
 #   - sweep.csv has one row per setting of the default grid (every maskLerp x squareMask, then
 #     each other knob alone, the rest at the defaults), each setting once, one defaults row;

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs one command line of a tool and checks what the command-line contract promises
 # (game/README.md "Command-line contract"). Lists are "@@"-separated.
 #   -DCOMMAND="tool args"   the command (split like a shell would, without quotes)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The same capture with --threads 1 and --threads 2 must be byte-identical.
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 foreach(n 1 2)

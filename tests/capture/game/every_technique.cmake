@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Every name of transparency::allTechniques() is accepted by racer --technique, and each run
 # either renders (exit 0, a capture) or exits non-zero with the engine::Error saying why
 # ("racer: error: ..." naming it): never a crash, never a silent fallback.

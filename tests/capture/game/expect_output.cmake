@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs COMMAND (a space-separated command line) and fails unless it exits 0 and its output
 # matches every regular expression of EXPECT ("@@"-separated), in that order; with OUT, the
 # file must exist afterwards too.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Renders one racer capture and compares it with its golden the way idiff does (ssam-idiff).
 #   -DRACER=racer -DIDIFF=ssam-idiff -DARGS="racer flags" -DOUT=out.png -DGOLDEN=golden.png
 #   -DFAIL=<per-value threshold> -DFAILPERCENT=<% of pixels allowed over it> [-DHARDFAIL=<max error>]

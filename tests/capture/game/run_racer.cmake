@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Runs racer with ARGS and --capture OUT; fails unless it exits 0 and OUT exists.
 file(REMOVE ${OUT})
 separate_arguments(args UNIX_COMMAND "${ARGS}")

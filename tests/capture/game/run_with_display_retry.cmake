@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # run_with_display_retry(<rc var> <log var> <command>...): execute_process of the command,
 # stdout and stderr both into the log, which is printed. xvfb-run -a can lose the race for a
 # display number to another xvfb-run starting at the same moment (parallel ctest, other

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # racer --backend soft --camera free in a window (under xvfb-run): unmoved, its capture is
 # byte-identical to the headless --camera free capture (the free camera starts at the
 # headless overview); with FLY_SCRIPT (keys held, e.g. "0-2:W") the capture differs (the

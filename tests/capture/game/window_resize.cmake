@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # racer in a window (under xvfb-run) that its --script resizes, against a headless run of the
 # same flags at the new size: the window's frames after the resize are rendered at the new
 # size (its log says so and its capture has that size) and show what the headless run

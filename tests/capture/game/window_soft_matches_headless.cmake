@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # racer --backend soft in a window (under xvfb-run) and headless, same flags: the captures
 # must be byte-identical (the window only shows the soft frame; the simulation steps alike).
 include(${CMAKE_CURRENT_LIST_DIR}/run_with_display_retry.cmake)

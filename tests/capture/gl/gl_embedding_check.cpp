@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Checks the image of ssam/examples/gl_embedding (ssam::gl embedded in a plain OpenGL program)
 // at known pixels against SSAM's formulas ([Hathaway 2010] §3.5.2-3.5.4, §3.6.2) computed from the
 // example's own scene description (scene.hpp): no stored image, no hard-coded results.

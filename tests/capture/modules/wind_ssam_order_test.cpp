@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // [Hathaway 2010] §3.3: wind and collisions make neighbouring trees "overlap rather unpredictably",
 // which no offline sort can handle. SSAM needs no sorting (§3.5, §3.8): here two content
 // trees are deformed by modules/wind (sway, gusts, flutter, and a collider pushing through

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # run_validator.sh NODE MODULES SCRIPT FILE...: validate_gltf.mjs on the files; exits 77
 # (ctest: skipped) without Node.js or without the gltf-validator package in MODULES
 # (`make test` installs it into build/node/node_modules).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `racer --scene FILE` end to end (label capture): each crafted file of tests/data/scene is
 // rendered headless at 64x64 on the soft backend and checked at known pixels against the
 // glTF 2.0 §3.9.4 alpha rules; Draco variants are encoded here with the Draco library;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The paper's Figures 3.4-3.10 as one multi-layer EXR: every intermediate of an SSAM frame
 // captured from the targets and read back from the file.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Instantiates the backend-agnostic conformance suites (tests/conformance/suites) for the GL
 // backend on a headless EGL context (llvmpipe on CI). The suites' tolerances are the API's
 // (one UNORM code, one half ULP), which is what the GL backend is held to as well.

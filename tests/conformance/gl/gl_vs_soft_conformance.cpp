@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // GL conformance against the soft backend as the reference: the same state on both, results
 // compared with the GL tolerances (README "GL backend"):
 //   UNORM: 2 codes (llvmpipe blends 8-bit targets in 8-bit fixed point, GL 4.5 §17.3.6 allows

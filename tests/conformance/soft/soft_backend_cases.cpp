@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Instantiates the backend-agnostic conformance suites (tests/conformance/suites) for the
 // soft backend: once with the default options and once single-threaded with small tiles,
 // so tile-boundary and threading paths both run the whole suite.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Alpha test in the GS sense (alpha_test.hpp): every CompareFunc x AlphaFailMode with the
 // fragment alpha below, equal to and above the reference; colour RGB, colour alpha and
 // depth are checked separately. Plus alpha-to-coverage at 1/2/4/8 samples.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Blend conformance: every RGB (src, dst) factor pair x every alpha (src, dst) factor pair x
 // every (RGB op, alpha op) pair x the four colour formats, against the scalar reference in
 // reference_blend.hpp (GL 4.5 §17.3.6). Also per-channel write masks.

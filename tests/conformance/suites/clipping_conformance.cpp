@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipping: triangles crossing the near plane (vertices behind the eye, w < 0, or between
 // the eye and the near plane, z < 0) and the far plane, checked pixel by pixel against a ray
 // cast of the same triangle (coverage, perspective-correct colour, depth); triangles spanning

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Depth test and write: the eight compare functions with writes on and off, the test off,
 // reverse-Z, interpolation of a sloped depth, and exact repeatability across passes.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Exception safety: after any error thrown by a draw, by code inside a pass, or by a create
 // in a module's constructor or reconfiguration, the backend is usable and nothing leaks
 // (PassScope, Backend::abortPass, engine::render::Owned; ScreenSpaceAlphaMask's strong

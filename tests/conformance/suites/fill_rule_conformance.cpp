@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fill rule: meshes of adjacent triangles (fans and jittered grids, both windings mixed,
 // vertices at random sub-pixel positions and exactly on pixel centres) drawn with additive
 // blending must cover every sample inside exactly once: no double hits on shared edges or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // MSAA resolve: colour resolves to the average of the samples, depth to the sample closest
 // to the observer under the given depth function ([Hathaway 2010] §3.5.1), never an average.
 //

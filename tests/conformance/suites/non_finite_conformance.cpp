@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The non-finite rules the full-screen programs document hold on every backend alike: a
 // NaN or Inf colour component read from a float target composites as 0, never as NaN
 // (ssam::compositeProgram, transparency's coverage composite and WBOIT resolve).

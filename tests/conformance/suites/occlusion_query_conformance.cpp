@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Occlusion queries and conditional rendering (PassDesc::countSamplesInto and
 // drawOnlyIfSamplesIn): a query says whether any sample of a pass's draws passed the depth
 // test; a conditional pass skips its draws, not its clears, when none did; misuse is refused.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Rasterizer conventions every backend shares: NDC +y is the top row, counter-clockwise as
 // displayed is front-facing by default, culling, scissor, instancing (transform and tint),
 // vertex colour interpolation and multiple render targets with their own blend state.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Texture sampling through the surface programs: nearest and bilinear values at known UVs,
 // wrap / clamp-to-edge / mirrored-repeat addressing, trilinear mip selection at known
 // derivatives, generated mips, straight vs premultiplied declared alpha, sRGB decode before

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Numerical stability of SSAM (label `stress`): depth complexity 1..4096 for every mask
 // precision, alpha outside [0,1], NaN/Inf in vertex data and textures, and a 0.1 m .. 30 km
 // depth range. The output must never hold NaN/Inf, nothing may wrap or go negative, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Shared helpers of unit_assets: fixture paths, a per-test temporary directory, and a
 // matcher-friendly way to capture the engine::Error a load throws.

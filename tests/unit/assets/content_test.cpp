@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The committed content/ is exactly what the generator writes (byte for byte, so a change to
 // the generator without `make content` fails here), it loads with engine_assets, and it has
 // the properties the renderer and SSAM rely on ([Hathaway 2010] §3.3 trees, MASK foliage, ...).

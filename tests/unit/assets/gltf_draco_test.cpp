@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // KHR_draco_mesh_compression: a mesh encoded here with the Draco library loads back with its
 // geometry intact, and Draco output that disagrees with the accessors is refused.
 #include <gmock/gmock.h>

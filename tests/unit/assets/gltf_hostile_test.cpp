@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hostile and broken glTF files are refused with an engine::Error that names the file, the
 // field and the problem. One committed fixture per rule (tests/data/gltf/hostile, made by
 // make_fixtures.py), plus cases that need the file system (missing files, symbolic links).

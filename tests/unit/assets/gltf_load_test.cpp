@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Valid glTF files load into the expected CPU-side data: geometry, materials, images,
 // samplers, node transforms, cameras, scenes and bounds. The three containers (.gltf + .bin,
 // embedded data: URIs, .glb) of one triangle must load identically.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // decodeImage: PNG bytes in memory -> RGBA8 with straight alpha; grey and RGB files expanded;
 // non-images, truncated data and over-cap headers refused with the name in the message.
 #include <gmock/gmock.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Mip chains: sizes, premultiplied filtering (no colour bleeding from transparent texels,
 // [Hargreaves 2009]), and Castaño's coverage preservation for alpha-tested foliage: coverage at the
 // cutoff stays at level 0's down the chain, while plain box filtering loses it.

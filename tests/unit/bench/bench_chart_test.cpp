@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // bench.svg's layout (bench_chart.hpp): labels never overlap one another or a marker and stay
 // inside their plot and panel, every technique is named once per scene, axis ticks never read
 // the same twice, every backend of the run is drawn, and the SVG shows what the layout placed.

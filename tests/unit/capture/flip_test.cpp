@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // LDR-ꟻLIP (engine/capture/metrics.hpp, engine/capture/src/metrics_flip.cpp).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Image outputs: a tool checks the name has a writer before any work
 // (requireImageExtension), and every image is written whole or not at all -- through a
 // temporary file renamed into place, so neither a partial image nor a temporary is left.

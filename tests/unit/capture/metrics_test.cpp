@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // RMSE/PSNR, SSIM and temporal flicker (engine/capture/metrics.hpp). ꟻLIP is in flip_test.cpp.
 #include <gtest/gtest.h>
 

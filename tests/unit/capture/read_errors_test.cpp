@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bad input never crashes or allocates blindly: it is an engine::Error naming the file
 // and saying what was wrong.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading the texture formats we do not write ourselves (TGA, JPEG, 16-bit and linear PNG);
 // fixtures are made with OpenImageIO directly.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // engine/cli/command_line.hpp: the exit codes and messages every tool shares -- 0 done, 1 the
 // work failed, 2 a usage error (CLI11's own codes, 104, 105, ..., never escape) -- each message
 // "<tool>: error: ..." on stderr.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // CommandBuffer: commands apply at flush in recording order; pending creates are
 // usable handles; stale targets are caught when recorded or dropped when flushed.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Entity handles: bit layout, slot reuse with a new generation, stale-handle
 // detection, and retirement of a slot whose generation would wrap.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Structural changes while a view iterates: direct ones on the viewed pools are
 // refused with engine::Error (and change nothing); others are allowed; deferred ones
 // through a CommandBuffer are applied at flush.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Registry component storage: add/get/remove contracts, swap-and-pop bookkeeping,
 // destroy of an entity holding many component types.
 #include <gtest/gtest.h>

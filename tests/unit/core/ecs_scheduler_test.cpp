@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scheduler: phases run in their fixed order, systems in registration order, and the
 // shared CommandBuffer is flushed between phases.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Views over 0..3 components visit exactly the entities that have all of them,
 // with each entity's own components, through both range-for and each().
 #include <gtest/gtest.h>

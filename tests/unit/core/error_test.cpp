@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // engine::Error: what() carries the whole message, even one quoting input with a NUL in it.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // engine/core/file_signature.hpp: a file named by what its first bytes say it is, in words
 // that never echo a raw byte.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // engine/core/output_file.hpp: outputs proven writable before work, and written whole or not
 // at all -- a failure leaves neither a partial target nor a temporary file, and a set of files
 // is put in place together or not at all.

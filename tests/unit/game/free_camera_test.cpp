@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // racer's free-fly camera (game/src/camera_rig.hpp): flyStep's movement and rotation, without
 // a window or a scene.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The size racer's window renders its framebuffer at (game/src/render_size.hpp
 // renderSizeFor): the framebuffer's own, or scaled down as a whole when a side exceeds the
 // largest render target, so the camera's aspect still matches the window's.

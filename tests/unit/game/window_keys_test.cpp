@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // racer's window keys (game/src/window_keys.hpp): the key -> action mapping and the test
 // window script's parser, without a window.
 #include <GLFW/glfw3.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The fail-mode emulation plan (no GL): which steps each GS fail mode becomes, and which
 // combinations are reported inexact.
 #include <gtest/gtest.h>

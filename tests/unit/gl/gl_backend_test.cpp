@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // GL backend unit tests on a headless EGL context: conventions (row order, uv origin,
 // winding, scissor), formats, resolves, programs, timings and pipeline info. Where the
 // soft backend is the reference, the same calls run on both and the results are compared.

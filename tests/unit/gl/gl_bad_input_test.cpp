@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bad input on the GL backend: broken GLSL, incomplete framebuffers and impossible contexts
 // give engine::Error with a clear message; misuse of the Backend interface is rejected with
 // exactly the soft backend's message (validation parity).

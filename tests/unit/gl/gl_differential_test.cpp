@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Differential test: the same random scenes on the soft backend (the reference) and the GL
 // backend, compared target by target, pixel by pixel.
 //

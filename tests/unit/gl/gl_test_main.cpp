@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // main() of the GL test binaries: skips (exit 77, ctest SKIP_RETURN_CODE) when no headless
 // EGL context can be created here, and says why. Listing tests (ctest discovery) never needs GL.
 // llvmpipe compiles a shader variant per fixed-function state (every blend state is one): Mesa's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A GLFW window through the GL backend, run under `xvfb-run -a` by ctest: renders frames
 // and presents them, is resized to 0x0 (minimised: rendering is skipped, nothing breaks)
 // and back, reads back what it drew, and closes cleanly. Exits 77 (skipped) when there is

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -P script: find_package(ssam) against an installed prefix with good and bad requests.
 #   -DBUILD_DIR= -DPREFIX= -DPROBE_SOURCE= -DPROBE_BUILD=
 # A missing component, one whose dependency is missing, or a wrong version must fail the

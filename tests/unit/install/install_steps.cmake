@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Helpers shared by the install tests' cmake -P scripts.
 
 # run(<command>...): runs it; any non-zero exit fails the test with the command's output.

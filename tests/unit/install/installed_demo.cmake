@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -P script: `cmake --install --component demo` into a scratch prefix, then the installed
 # racer and ssam-bench, run from an unrelated working directory, take their content from
 # <prefix>/share/ssam (what --help shows as the default) and racer renders a frame with it.

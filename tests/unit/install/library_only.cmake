@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -P script: configures the source tree with -DSSAM_LIBRARY_ONLY=ON in a scratch
 # directory with every demo/tool/test dependency hidden from find_package (a REQUIRED search
 # for one would fail the configure; CMake reports each as never used), builds it (Release: -O3),

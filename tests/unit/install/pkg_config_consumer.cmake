@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -P script: the consumer built without CMake, from `pkg-config ssam ssam-soft ssam-gl`
 # against an installed prefix, at -O3 with warnings as errors, then run.
 #   -DBUILD_DIR= -DPREFIX= -DCONSUMER_SOURCE= -DOUT= -DCXX= -DPKG_CONFIG=

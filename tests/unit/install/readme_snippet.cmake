@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -P script: the README's embedding program (the ```cpp block that starts with
 # "// leaves.cpp"), taken from README.md unchanged, built against an installed prefix twice,
 # with find_package(ssam 0.2 COMPONENTS soft) and with pkg-config, at -O3 with warnings as

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -P script: installs the library into a scratch prefix, checks the layout, then
 # configures (no warnings allowed), builds (-O3, warnings as errors) and runs the consumer with
 # find_package(ssam 0.2 COMPONENTS soft gl); then the raw-OpenGL example the same way.

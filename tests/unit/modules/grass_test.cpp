@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/grass: instanced alpha-tested cards, depth-tested against the foliage depth
 // ([Hathaway 2010] §3.7), culled by distance, swaying deterministically.
 #include <gtest/gtest.h>

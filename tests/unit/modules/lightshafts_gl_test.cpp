@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/lightshafts on the GL backend: the sun-visibility occlusion query and the
 // conditional shaft pass (glBeginConditionalRender) skip the pass exactly when the soft
 // backend does, and the frames agree with soft's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/lightshafts: shafts from the sky the opaque + foliage depth leaves visible;
 // foliage over the sun blocks them ([Hathaway 2010] §3.7); off behind the camera; bad input.
 #include <gtest/gtest.h>

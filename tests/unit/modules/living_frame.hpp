@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A whole living-scene frame for module tests, on any backend: extraction, the opaque pass,
 // SSAM (whose colour pass writes the foliage depth), then each feature's passes in order,

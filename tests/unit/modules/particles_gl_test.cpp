@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Soft vs GL for the living-scene program kinds (program.hpp): Particle and
 // LayerComposite (modules/particles) and LightShafts (modules/lightshafts) — the same depth
 // and draws on both backends, compared texel by texel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/particles: the premultiplied layer ([Turánszki 2017]), soft particles against the
 // opaque + foliage depth ([Hathaway 2010] §3.7), the half-resolution upsample without halos,
 // caps and bad input, determinism.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The exact reference (modules/transparency reference_technique.cpp): every fragment, sorted
 // per pixel, "over" front to back; ties in submission order; the cap reported.
 #include <gtest/gtest.h>

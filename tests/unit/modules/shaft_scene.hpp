@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A light-shafts test scene on any backend: the camera looks at the sun (straight ahead and
 // a little up), a hill at the bottom, and camera-facing cards (opaque or foliage) placed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A tiny frame for technique tests: soft backend, 16x16 opaque targets cleared to a known
 // colour, and foliage made of NDC quads (tests/support/quad_scene.hpp) with known colours,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The transparency techniques on the GL backend against the soft backend, pixel by pixel
 // (soft-vs-GL check of the WboitAccumulate / WboitResolve program kinds included).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every transparency technique on synthetic quads whose expected pixels follow from a
 // formula (modules/transparency): alpha test is binary, SSAM is [Hathaway 2010] §3.5.4, ...
 #include <gtest/gtest.h>

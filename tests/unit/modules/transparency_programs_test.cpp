@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The programs and soft-backend hooks the transparency techniques added
 // (programs.hpp: WboitAccumulate, WboitResolve, CoverageComposite; SoftBackend::setFragmentSink): bad
 // input is refused with engine::Error, and every technique is deterministic for any thread

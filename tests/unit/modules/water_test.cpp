@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/water: the pools are blended after SSAM and depth-tested against the foliage
 // depth ([Hathaway 2010] §3.7): water behind a tree is hidden by it, water in front is not.
 #include <gtest/gtest.h>

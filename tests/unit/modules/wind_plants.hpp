@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Hand-made plants for the wind tests: a crown of intersecting vertical cards around the y
 // axis ([Hathaway 2010] §3.3, Figure 3.2), as one alpha-tested (Mask) part, from y = 0 to `height`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // modules/wind: sway, collision, which plants deform, bad input, determinism, extraction of
 // the deformed copies (engine/scene VertexOverride).
 #include <gtest/gtest.h>

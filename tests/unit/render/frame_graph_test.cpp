@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Frame graph: culling, empty passes, ordering, validation, transient lifetimes, imports
 // and the Graphviz dump. Passes record their execution in an event list, and so does the
 // allocator, so the tests check what actually ran and when textures lived.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The soft backend's fast samplers against the general one, bit for bit: AlphaSampler's
 // scalar sample() and its SIMD lookup4 + alpha4 / rgba4 (the mask pass and the alpha-tested
 // colour pass) must give exactly sampleTexture<AlphaOnly> / sampleTexture<All> for every

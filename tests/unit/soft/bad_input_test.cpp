@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bad input to the soft backend: every misuse throws engine::Error with a message that says
 // what was wrong, never crashes, and leaves the backend usable.
 #include <cmath>

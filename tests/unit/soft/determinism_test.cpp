@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Determinism: the same scene rendered with any thread count and tile size gives
 // byte-identical images (soft_backend.hpp: primitives stay in submission order inside each
 // tile). The scene is a few hundred random overlapping triangles with order-dependent state

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The soft backend's float-mask fast paths against the general path, bit for bit, on whole
 // random scenes: SSAM's mask pass (AlphaOnly, ONE/ONE MAX and ADD, [Hathaway 2010] §3.5.2)
 // onto half-float targets as maskPrecision RG16F (two R16F targets; SSAM+) and RGBA16F

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The soft backend's SSE2 half-float conversions and ONE/ONE half-float blends
 // (half_float4.hpp, one_one_half_blend.hpp) against the general codec and blend, bit for
 // bit: decodeHalf4 for every half; encodeHalf4 for every float whose low 13 bits are one of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The soft backend's own contract beyond conformance: work counters (what was skipped is
 // visible), creation-time simplification (PipelineInfo), clears and readback of every
 // format, resource lifetime and per-pass timings.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bit-exactness guard for the soft backend's fast paths: a set of scenes that together
 // exercise every rasterizer path (depth-only, plain stores, every blend factor/op, sRGB,
 // 8/16/32-bit targets, alpha test fail modes, MSAA with alpha-to-coverage, scissor,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The soft backend's table-driven sRGB encode (engine/render/pixel_codec.hpp) against
 // the exact curve it replaces: every stored byte of an sRGB target depends on it.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SSAM's exact synthetic cases ([Hathaway 2010] §3.5-3.7), written once and run on every render
 // backend: each backend's test binary instantiates them with its BackendKind

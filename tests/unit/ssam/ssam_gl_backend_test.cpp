@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shared exact SSAM cases (ssam_cases.hpp) on the OpenGL backend (headless EGL; llvmpipe on
 // CI), the same test bodies as on the soft backend.
 #include "ssam_cases.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ssam::gl (the raw-OpenGL entry point, ssam/include/ssam/gl/ssam_gl.hpp) in a headless EGL
 // context. Its render targets come from our GL backend, which is the "host engine" here: the
 // backend draws the opaque pass, hands its GL texture names to ssam::gl, and reads the results

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SSAM on the soft backend: the shared exact synthetic cases (ssam_cases.hpp, [Hathaway 2010] §3.5),
 // plus what only the soft backend can show (its work counters).
 #include "ssam_cases.hpp"

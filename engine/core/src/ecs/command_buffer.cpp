@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/core/ecs/command_buffer.hpp"
 
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/core/ecs/registry.hpp"
 
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/core/ecs/scheduler.hpp"
 
 #include <sstream>

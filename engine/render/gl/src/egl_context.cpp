@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Headless EGL: Mesa's surfaceless platform (llvmpipe or a DRM driver), then the EGL device
 // platform (NVIDIA's headless path). A core 4.5 context without any surface or config
 // (EGL_KHR_surfaceless_context + EGL_KHR_no_config_context); the backend renders into FBOs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/render/gl/fail_mode_plan.hpp"
 
 #include "engine/render/blend_state.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The OpenGL 4.5 core backend. Draws execute as they are recorded (GL queues them); every
 // piece of fixed-function state a draw depends on is set for that draw, so a host engine
 // sharing the context may change state between calls. Validation and error messages follow

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/render/gl/gl_program.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "gl_shaders.hpp"
 
 #include "engine/render/glsl/lit_surface.hpp"

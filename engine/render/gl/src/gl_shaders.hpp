@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GLSL 4.50 sources of the standard programs (what soft/kernel/programs.hpp computes, line for
 // line) and of the backend's internal programs (resolves).

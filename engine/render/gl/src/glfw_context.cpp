@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A GLFW 3.3 window with a core 4.5 context, or the highest core >= 4.3 the display offers.
 // Minimising (by the user, or setSize(0, 0)) makes framebufferSize() 0x0 so callers skip
 // rendering; window managers differ on whether an iconified window keeps its framebuffer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "texel_codec.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // CPU-side texel work the GL backend does itself so that it matches the soft backend bit for
 // bit: 16-bit float conversion (round to nearest even, Imath) and mip generation. The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/render/soft/kernel/sampler.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "engine/render/soft/soft_backend.hpp"
 
 #include <algorithm>

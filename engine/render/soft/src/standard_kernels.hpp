@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The soft backend's CPU kernels of the standard programs (standard_programs.hpp).
 #include <memory>

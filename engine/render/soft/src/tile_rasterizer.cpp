@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tile_rasterizer.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Rasterizes the triangles binned to one tile, in submission order: tile -> 8x8 block
 // -> pixel coverage with trivial reject/accept per block (llvmpipe's lp_rast_tri.c

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The grass module as a living-scene feature: the "grass" pass draws every visible tuft
 // (GrassOptions::drawDistance) as one instanced draw of an alpha-tested card, depth-tested

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where grass grows and how it moves: root points (world space, on the ground) given by the
 // game, and the parameters of the cards drawn there.

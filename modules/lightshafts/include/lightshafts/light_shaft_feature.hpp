@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The light-shafts module as a living-scene feature: one pass, "light shafts", running
 // its program (light_shaft_program.hpp) over the whole frame with additive blending (RGB ONE/ONE, alpha

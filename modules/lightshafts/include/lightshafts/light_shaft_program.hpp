@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The light-shaft program: screen-space light scattering (GPU Gems 3 ch. 13) over a frame
 // whose occlusion image is its depth; [Hathaway 2010] §3.7 lists light shafts among the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The particles module as a living-scene feature.
 //   system "particles" (phase::simulation): ParticleSimulation::update with the frame's dt

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The particle module's two programs, described once for every backend
 // (engine/render/program_desc.hpp): the GLSL in particle_programs.cpp, the CPU kernels in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The particles themselves: spawned at the wheels of every entity with a WheelEmitter,
 // moved by velocity, drag and gravity, aged and removed — a plain array, not ECS entities

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The transparency module's own programs (weighted blended OIT and SSAM+'s composite),
 // described once for every backend (engine/render/program_desc.hpp): the GLSL in

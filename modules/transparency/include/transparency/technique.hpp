@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How the foliage of a frame is drawn: SSAM and the rivals it is judged against
 // (DESIGN.md "Accuracy and the ground truth"). Every technique draws the same foliage over

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Animated water normals: two travelling waves tilt each vertex normal, so the sun's
 // highlight moves over the surface. Geometry stays flat (pools are shallow and small).

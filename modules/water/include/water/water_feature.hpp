@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The water module: a "water ripples" system (phase::deformation) gives every pool in view
 // its own copy of its mesh with animated normals (VertexOverride), and the "water" pass

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The deformation of one plant's vertices for one frame, a pure function of the rest pose,
 // the plant's pose and the time (so it is deterministic for a fixed time step and any

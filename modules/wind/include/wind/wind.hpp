@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The wind's parameters, a component on one entity of the registry (no Wind entity: no
 // deformation), and the per-tree sway state. Units: metres, seconds, hertz.

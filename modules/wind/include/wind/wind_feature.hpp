@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The wind module as a living-scene feature: one system, "wind", in phase::deformation.
 // It draws no pass of its own: deformed plants reach the frame through extraction

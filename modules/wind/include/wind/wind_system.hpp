@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // WindSystem: the ECS system (phase::deformation) that bends foliage in the wind and pushes
 // it out of colliders (the car), every frame.

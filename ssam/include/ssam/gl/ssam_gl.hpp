@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SSAM for engines that bring their own OpenGL ([Hathaway 2010] §3.5-3.7): the engine hands over the
 // GL names of its opaque colour and depth textures and a callback that draws its foliage; SSAM

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Another engine's program using the installed ssam package (find_package(ssam 0.2 COMPONENTS
 // soft gl), or pkg-config ssam ssam-soft ssam-gl): renders one half-transparent red leaf over a
 // blue opaque scene through SSAM on the soft backend, then on the GL backend when a headless

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // glTF 2.0 loading (.gltf + .bin, embedded data: URIs, .glb) into CPU-side data the
 // renderer and the scene can use directly: triangle lists in the engine's one vertex

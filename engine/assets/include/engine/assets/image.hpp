@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Decoded texture images as glTF uses them: 8-bit RGBA, rows top to bottom, colour codes
 // sRGB-encoded (base colour textures are sRGB, glTF 2.0 §3.9.2), alpha linear and straight.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Mipmap chains for textures, filtered the way [Hargreaves 2009] says filtering is correct:
 // on premultiplied colour, in linear light. Alpha-tested foliage additionally keeps its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Numeric image comparison in the convention of OpenImageIO's idiff
 // (ImageBufAlgo::compare), so thresholds and reports carry over between the two:

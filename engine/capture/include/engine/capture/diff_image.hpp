@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Difference images for looking at where two images disagree, as idiff -o -abs -scale writes them.
 #include <filesystem>

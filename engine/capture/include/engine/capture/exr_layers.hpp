@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Several named images in one EXR file, the usual multi-layer convention: layer "depth"
 // with channel Z becomes channel "depth.Z", layer "opaque" with RGBA becomes

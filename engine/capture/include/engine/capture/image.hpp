@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // In-memory images exchanged with files: a float image (colour in linear light) for
 // rendering and comparison, and an 8-bit image holding the exact stored codes of an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Conversions between the in-memory representations: 8-bit stored codes <-> linear float,
 // and straight <-> premultiplied colour. Alpha is never transfer-encoded; every other

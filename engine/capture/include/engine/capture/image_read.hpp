@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reading textures and captures (PNG, TGA, JPEG, EXR, anything OpenImageIO reads).
 // Every failure (missing, truncated or corrupt file, unsupported layout, over the size

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writing captures. PNG for looking at (8-bit sRGB, straight alpha), EXR for exact values
 // (linear, premultiplied, half or float). Failures throw engine::Error naming the file.

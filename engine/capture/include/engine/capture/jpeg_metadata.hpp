@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // JPEG files with their metadata segments hidden from OpenImageIO. Its JPEG reader (2.4)
 // parses the segments it keeps (APP1 Exif and XMP, APP2 ICC profile, APP13 Photoshop IPTC)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Image error metrics for the transparency benchmark: how far a technique's frame is from
 // the exact reference frame, and how much a sequence of frames flickers.

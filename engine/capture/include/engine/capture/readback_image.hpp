@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Backend readbacks as capture images: what a render target holds, in linear light, ready
 // for EXR layers, PNG captures and comparisons.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The exact sRGB transfer curve (IEC 61966-2-1), not a 2.2 gamma approximation: the
 // piecewise function with the linear toe, so 8-bit codes round-trip exactly.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Frame capture straight from render targets: several targets as named layers of one EXR
 // (e.g. SSAM's opaque, depth, mask_max, mask_add, foliage, foliage_depth, result), or one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one exception type the engine throws for bad input and invalid state.
 // Messages say what was wrong and where ("image 'x.png': truncated at row 12"),

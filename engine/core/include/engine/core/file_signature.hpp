@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a file is, judged by its first bytes, for the message that refuses it: a PNG handed to
 // a glTF loader is reported as "starts with the PNG signature", never by echoing its bytes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Minimal levelled logging to stderr. Messages are built with operator<< so any
 // streamable value can be logged without a formatting library.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Output files written whole or not at all, the way git replaces a ref or an index: each file
 // is written under a temporary name in its own directory and renamed over its target only once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A mistake in how a tool was asked to work, found by the tool itself rather than by its
 // argument parser: a value out of range ("--size 0x0"), a combination that means nothing, an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Alpha test in the PS2 GS sense ([PCSX2]): a fragment whose alpha fails
 // `alpha <func> reference` is not necessarily discarded whole; the fail mode says

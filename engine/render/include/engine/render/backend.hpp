@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The render backend interface, chosen at run time (--backend soft|gl). In the spirit of
 // bgfx's RendererContextI and Filament's driver API: typed generation-checked handles,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Fixed-function blending as data, per colour target, RGB and alpha set separately
 // (D3DRS_SEPARATEALPHABLENDENABLE in [Hathaway 2010] §3.5.2, glBlendFuncSeparatei in GL).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The eight comparison functions shared by the depth test and the alpha test.
 // Read as "incoming <func> stored/reference": Less passes when incoming < stored.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Depth test and write. Depth is a float in [0,1] (clip z in [0,w], as D3D/Vulkan and
 // GL with glClipControl(ZERO_TO_ONE)); reverse-Z (near = 1, far = 0, func Greater, clear 0)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One draw's program parameters: a copy of the program's own plain parameter struct, kept in
 // place (no allocation per draw) and tagged with its type, so a backend hands the kernel

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Pixel formats of textures and render targets, and what each implies for blending.
 // The API rules (GL 4.5 §17.3.6, Vulkan "Blending"): UNORM/sRGB targets clamp source,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A Backend that forwards every call to another: the base of decorators that observe or
 // alter some calls (ssam-bench counts the bytes a technique allocates; tests make a create

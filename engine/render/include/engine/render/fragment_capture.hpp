@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Fragment capture: a capability a backend may offer (Backend::fragmentCapture; the soft
 // backend does, GL does not). Draws recorded while a sink is set hand every fragment that

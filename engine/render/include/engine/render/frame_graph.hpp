@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The frame graph: a frame described as passes that create, read and write virtual
 // textures, so that the engine can drop work whose result nobody uses, order what is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Typed, generation-checked resource handles (sokol_gfx / bgfx style): plain values,
 // zero means "none", and a destroyed-then-reused slot never aliases an old handle.

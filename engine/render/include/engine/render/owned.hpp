@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A backend resource destroyed with its owner (RAII over a handle): a module that creates
 // programs and pipelines in its constructor leaks none when a later create throws.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A render pass: the targets drawn into, how they start (load or clear), and draws.
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One render pass as a scope (RAII): begun on construction, ended by end(). When an error
 // unwinds through the scope before end() (a draw refused, a module's callback throwing), the

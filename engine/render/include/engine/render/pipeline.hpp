@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A pipeline is a program kind plus all fixed-function state, validated and simplified
 // once at creation ([PCSX2]: skip work that cannot change the result).

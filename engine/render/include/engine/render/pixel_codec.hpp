@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Conversion between stored texels and the float values blending and shading work on,
 // following the API rules (GL 4.5 §2.3.5, §17.3.6.3; Vulkan "Conversion"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The standard programs: what an engine needs for itself, brought by every backend (the soft
 // backend as C++ kernels, GL as GLSL). Effects bring their own programs as data

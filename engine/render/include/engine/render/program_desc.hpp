@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Programs are data (Filament's DriverAPI createProgram, sokol_gfx's shader descriptors): a
 // module describes its program once, for every backend, and hands the description to

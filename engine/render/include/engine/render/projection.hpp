@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Perspective projections for the engine's clip convention (depth = z/w in [0, 1]).
 // Reverse-Z maps the near plane to 1 and the far plane to 0: float depth then has its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Slots addressed by generation-checked handles, shared by the backends. A destroyed
 // slot's generation moves on, so an old handle to it is reported, never aliased.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The programs every backend brings (ProgramRef::standard). Each is described like a
 // module's program (program_desc.hpp); this is the backend-neutral half of the description

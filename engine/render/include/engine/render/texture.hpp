@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Textures and render targets are one resource type; usage says what a texture may do.
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The misuse checks every backend makes before it renders, in one place so every backend
 // refuses the same things with the same messages (the GL tests compare them with soft's).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The engine's one vertex layout and per-instance data. A fixed layout keeps every
 // program kind implementable on every backend; meshes that lack an attribute fill it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Axis-aligned boxes and the view-volume test extraction uses to skip what can't be seen.
 #include <limits>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Components the scene's systems and extraction work on.
 #include <vector>

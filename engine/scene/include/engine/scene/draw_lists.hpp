@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Extraction (DESIGN.md "Data flow of one frame", step 2): visible entities become draw
 // batches — one per mesh part, with every visible instance of it — split by surface class.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A pluggable feature of the living scene (modules/wind, water, grass, particles,
 // lightshafts): systems registered into the scheduler's phases, and passes drawn after the

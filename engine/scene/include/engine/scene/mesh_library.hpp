@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Models uploaded to a backend: each glTF primitive becomes one part with its own buffers
 // and material, node transforms baked into the vertices. Entities refer to a model by id;

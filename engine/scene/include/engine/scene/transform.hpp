@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The command-line contract every tool of the project keeps (racer, ssam-bench,
 // content-generator, ssam-idiff; game/README.md "Command-line contract"), after the GNU and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // CommandBuffer: structural changes recorded now, applied to the registry at flush(),
 // in recording order. This is how systems create, destroy, add and remove while a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Component type identity without RTTI lookups: a dense id per type (so the Registry
 // finds a pool by indexing a vector) and a readable name (for error messages).

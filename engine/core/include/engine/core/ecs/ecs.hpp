@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The whole ECS: entities, registry and views, command buffers, phased scheduler.
 #include "engine/core/ecs/command_buffer.hpp"

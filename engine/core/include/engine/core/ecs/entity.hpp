@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Entity: a 32-bit handle = slot index (low 22 bits) + generation (high 10 bits).
 //

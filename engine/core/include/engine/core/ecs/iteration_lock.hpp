@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // IterationLock: holds a structural lock on the sets a view walks, for as long as an
 // iterator (or an each() call) is alive. Copies lock again, so a range-for, which

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Pool<T>: the storage of one component type. A SparseSet of owners plus a dense
 // array of T kept in the same order, so components[i] belongs to entities()[i] and a

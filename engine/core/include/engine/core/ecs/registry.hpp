@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Registry: owns the entities and one Pool per component type.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Scheduler: runs named systems in named phases, in a fixed order.
 //

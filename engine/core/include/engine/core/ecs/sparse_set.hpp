@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SparseSet: the set of entities that own something, as two arrays.
 //   dense:  the member entities, packed, in no particular order (iteration walks this)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // View<Ts...>: the entities that have every component in Ts, obtained from
 // Registry::view<Ts...>(). View<> (no components) is every live entity.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The bridge between the frame graph's opaque ConcreteTexture and a Backend's
 // TextureHandle: the handle's index and generation packed in one integer, and an

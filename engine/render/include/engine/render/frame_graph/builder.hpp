@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a pass's setup lambda uses to declare its resources. Declarations are checked as
 // they are made, so a mistake throws engine::Error from inside the setup that made it,

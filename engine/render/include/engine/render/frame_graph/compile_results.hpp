@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What FrameGraph::compile() decides about each pass and each transient texture.
 #include <cstddef>

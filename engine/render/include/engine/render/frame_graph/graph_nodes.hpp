@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The frame graph's internal bookkeeping: passes, virtual textures and the versions of
 // their contents. Only FrameGraph and its .cpp files use these; they live in a header

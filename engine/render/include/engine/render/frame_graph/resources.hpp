@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a pass's execute lambda uses to turn its virtual handles into the real textures
 // the allocator (or importTexture()) supplied.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How the frame graph turns virtual textures into real ones without knowing the backend:
 // the caller hands execute() two callbacks. A ConcreteTexture is whatever the backend

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the frame graph knows about a texture: just enough to allocate one. The render
 // backend owns the real texture descriptor and format enum; the graph sits below it and

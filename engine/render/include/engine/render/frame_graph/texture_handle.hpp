@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A virtual texture as passes see it while the graph is being built: which resource, and
 // which version of its contents. Every write produces a new version, so a handle names

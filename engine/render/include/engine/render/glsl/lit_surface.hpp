@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GLSL of the engine's lit, textured surface, shared by its standard programs on the GL
 // backend and by modules whose programs shade a surface the same way and then post-process

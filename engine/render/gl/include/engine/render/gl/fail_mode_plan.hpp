@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How the GL backend turns a GS-style alpha test ([PCSX2]) into GL draws: a list of steps,
 // each drawing the whole draw with the fragments that pass, fail or all of them, writing only

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The OpenGL 4.5 core backend: the same Backend semantics as the soft backend (which is
 // the reference), mapped to GL state where GL has it and emulated where it does not.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the GL backend's context comes from. A GlContext owns (or wraps) one OpenGL 4.5
 // core context and says whether it has a window to present to:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GL program and framebuffer helpers the backend is built on, public so a module that brings
 // a new program kind can compile its GLSL the same way (and tests can feed bad input).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The CPU software backend: the embedded default, what CI runs and what goldens come
 // from. Fixed-point tile rasterizer (8 sub-pixel bits, top-left rule), hierarchical

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The alpha of sampleTexture<SampledChannels::AlphaOnly> for RGBA8 textures (UNORM or sRGB:
 // alpha is linear in both), for the mask program ([Hathaway 2010] §3.5.2: "alpha only"). The

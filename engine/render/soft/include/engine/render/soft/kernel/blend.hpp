@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The blend equation (GL 4.5 §17.3.6, Vulkan "Blend Factors"/"Blend Operations").
 // Normalized targets clamp source, destination and constant to [0,1] first, so factors

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Everything the tile loop needs about one recorded draw, resolved once per pass:
 // targets, effective fixed-function state (after creation-time simplification) and the

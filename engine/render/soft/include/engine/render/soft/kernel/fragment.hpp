@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a soft program's shade() receives (program_kernel.hpp), and how it says which of the
 // interpolants it reads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Half-float (binary16) conversion of four lanes at a time in SSE2, for the float-mask
 // paths of the rasterizer (SSAM's maskPrecision RGBA16F / RG16F and SSAM+, [Hathaway 2010]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // SSAM's mask blends (ONE/ONE, MAX or ADD per half, [Hathaway 2010] §3.5.2 and Table 3.1) onto
 // half-float targets: maskPrecision RGBA16F, and RG16F, which is two R16F targets, one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A CPU program for the soft backend (ProgramDesc::soft), written against the
 // program-authoring headers beside this one. A program is a plain struct:

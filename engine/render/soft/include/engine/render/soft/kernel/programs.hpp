@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The soft backend's implementation of each ProgramKind. A program is a small struct
 // whose `shade` runs per pixel; its `needs` flags let the rasterizer skip interpolating

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The tile rasterizer's building blocks (program-authoring header): depth rows, target
 // views, per-channel blend tables and the 8-bit stores, shared by every instantiation of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Texture sampling as GL does it: nearest (GL_NEAREST), bilinear (GL_LINEAR, level 0)
 // and trilinear (GL_LINEAR_MIPMAP_LINEAR, lambda from the analytic UV derivatives);

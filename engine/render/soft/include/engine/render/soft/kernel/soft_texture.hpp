@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Storage of one texture or render target: native texels per mip level, samples of a
 // pixel stored next to each other so a resolve or a blend touches one cache line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Texel addressing shared by the general sampler (sampler.cpp) and the alpha-only one
 // (alpha_sampler.hpp), so both find the same texels for the same coordinates.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How a soft program resolves the texture handles its parameters name (program_kernel.hpp).
 #include "engine/render/handles.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The tile rasterizer for one program type (program-authoring header): coverage per 8x8
 // block, early depth, the program's shade(), alpha test with the GS fail modes,

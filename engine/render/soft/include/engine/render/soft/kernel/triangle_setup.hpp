@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // From clip-space vertices to rasterizable triangles: homogeneous clipping against the
 // near/far planes and a guard band, perspective divide, snapping to 24.8 fixed point,
