@@ -25,10 +25,19 @@ std::string escaped(std::string_view text) {
     return out;
 }
 
-std::string passId(std::uint32_t pass) { return "P" + std::to_string(pass); }
+// Appended piece by piece: GCC 12's false -Wrestrict at -O3 on "P" + std::string (bug 105329).
+std::string passId(std::uint32_t pass) {
+    std::string id = "P";
+    id += std::to_string(pass);
+    return id;
+}
 
 std::string versionId(const VersionNode& node) {
-    return "R" + std::to_string(node.resource) + "_" + std::to_string(node.version);
+    std::string id = "R";
+    id += std::to_string(node.resource);
+    id += '_';
+    id += std::to_string(node.version);
+    return id;
 }
 
 constexpr const char* kGrey = "color=gray, fontcolor=gray";
