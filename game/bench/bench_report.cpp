@@ -16,18 +16,6 @@ namespace bench {
 
 namespace {
 
-std::string xmlEscape(const std::string& s) {
-    std::string r;
-    for (char c : s) {
-        if (c == '<') r += "&lt;";
-        else if (c == '>') r += "&gt;";
-        else if (c == '&') r += "&amp;";
-        else if (c == '"') r += "&quot;";
-        else r += c;
-    }
-    return r;
-}
-
 const BenchRow* find(const std::vector<BenchRow>& rows, const std::string& scene, const std::string& technique,
                      const std::string& backend) {
     for (const BenchRow& r : rows)
