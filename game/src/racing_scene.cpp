@@ -64,25 +64,30 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     for (const auto& f : treeFiles) trees.push_back(loadContentModel(library_, f));
     for (const auto& f : bushFiles) bushes.push_back(loadContentModel(library_, f));
 
+    // Each draw from `random` is sequenced on its own: C++ leaves the evaluation order of a
+    // call's arguments (and of most operators' operands) unspecified, GCC goes right to left
+    // and Clang left to right, so two draws in one expression grow a different forest per
+    // compiler. The order kept is the one GCC gave the goldens: scale, heading, then position.
     // Trees and bushes line the track on both sides, clear of the road.
     auto besideTrack = [&](float minOffset, float maxOffset) {
         const float d = random.uniform(0.0f, track_.length());
         const glm::vec3 p = track_.position(d), f = track_.forward(d);
         const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
-        const float offset = random.uniform(minOffset, maxOffset) * (random.next() & 1 ? 1.0f : -1.0f);
+        const float distance = random.uniform(minOffset, maxOffset);
+        const float offset = random.next() & 1 ? distance : -distance;
         glm::vec3 q = p + side * offset;
         q.y = terrainHeight(q.x, q.z);
         return q;
     };
     for (int i = 0; i < options.trees; ++i) {
         const scene::ModelId m = trees[random.next() % trees.size()];
-        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 3.0f, 45.0f), random.uniform(0.0f, 6.2832f),
-              random.uniform(0.8f, 1.3f));
+        const float scale = random.uniform(0.8f, 1.3f), heading = random.uniform(0.0f, 6.2832f);
+        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 3.0f, 45.0f), heading, scale);
     }
     for (int i = 0; i < options.bushes; ++i) {
         const scene::ModelId m = bushes[random.next() % bushes.size()];
-        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 1.0f, 25.0f), random.uniform(0.0f, 6.2832f),
-              random.uniform(0.7f, 1.4f));
+        const float scale = random.uniform(0.7f, 1.4f), heading = random.uniform(0.0f, 6.2832f);
+        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 1.0f, 25.0f), heading, scale);
     }
     // A grove across the track from the start line, where the pre-race pan camera looks:
     // overlapping trees close up, the case where alpha testing sparkles ([Hathaway 2010] §3.4).
@@ -90,13 +95,14 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
         const glm::vec3 start = track_.position(0.0f), f = track_.forward(0.0f);
         const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
         for (int i = 0; i < options.groveTrees; ++i) {
-            glm::vec3 p = start + side * random.uniform(track_.width() * 0.5f + 6.0f, 40.0f) +
-                          f * random.uniform(-30.0f, 30.0f);
+            const float along = random.uniform(-30.0f, 30.0f);
+            const float across = random.uniform(track_.width() * 0.5f + 6.0f, 40.0f);
+            glm::vec3 p = start + side * across + f * along;
             p.y = terrainHeight(p.x, p.z);
             const bool tree = (random.next() % 3) != 0;
             const auto& models = tree ? trees : bushes;
-            placeModel(registry_, models[random.next() % models.size()], p, random.uniform(0.0f, 6.2832f),
-                  random.uniform(0.9f, 1.4f));
+            const float scale = random.uniform(0.9f, 1.4f), heading = random.uniform(0.0f, 6.2832f);
+            placeModel(registry_, models[random.next() % models.size()], p, heading, scale);
         }
     }
     // The vista: a ring of forest out to a few kilometres ([Hathaway 2010] §3.1).
@@ -105,8 +111,8 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
         const float radius = random.uniform(450.0f, 1900.0f);
         glm::vec3 p(radius * std::cos(angle), 0.0f, radius * std::sin(angle));
         p.y = terrainHeight(p.x, p.z);
-        placeModel(registry_, trees[random.next() % trees.size()], p, random.uniform(0.0f, 6.2832f),
-              random.uniform(1.5f, 2.5f));
+        const float scale = random.uniform(1.5f, 2.5f), heading = random.uniform(0.0f, 6.2832f);
+        placeModel(registry_, trees[random.next() % trees.size()], p, heading, scale);
     }
 
     // Water pools (glTF BLEND material): one among the grove's trees, the rest in the infield.
@@ -128,7 +134,8 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
         const float angle = float(i) * 1.5708f + 0.4f;
         glm::vec3 p(95.0f * std::cos(angle), 0.0f, 95.0f * std::sin(angle));
         p.y = terrainHeight(p.x, p.z) + 0.3f;
-        placeModel(registry_, water, p, random.uniform(0.0f, 6.2832f), random.uniform(2.0f, 3.5f));
+        const float scale = random.uniform(2.0f, 3.5f), heading = random.uniform(0.0f, 6.2832f);
+        placeModel(registry_, water, p, heading, scale);
     }
 
     const scene::ModelId carModel = loadContentModel(library_, content / "models" / "car.glb");
