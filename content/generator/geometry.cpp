@@ -83,7 +83,12 @@ void addCrownLobe(MeshData& mesh, Pcg32& rng, const Lobe& lobe) {
     for (int i = 0; i < lobe.quads; ++i) {
         glm::vec3 offset;
         do {  // uniform in the unit ball, then stretched to the ellipsoid
-            offset = glm::vec3(rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f));
+            // z, y, x: one draw per statement in the order GCC evaluated the constructor's
+            // arguments (C++ leaves it unspecified; Clang goes left to right), so the committed
+            // assets come out byte for byte with either compiler.
+            offset.z = rng.uniform(-1.0f, 1.0f);
+            offset.y = rng.uniform(-1.0f, 1.0f);
+            offset.x = rng.uniform(-1.0f, 1.0f);
         } while (glm::dot(offset, offset) > 1.0f);
         const glm::vec3 centre = lobe.centre + offset * lobe.radii * 0.8f;
         glm::vec3 normal = randomDirection(rng);

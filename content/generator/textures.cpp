@@ -129,7 +129,10 @@ RgbaImage makeLeafCluster(std::uint32_t seed) {
         const float angle = -kPi / 2 + spread * 1.1f + rng.uniform(-0.1f, 0.1f);
         const float length = rng.uniform(160.0f, 205.0f) * (1.0f - 0.3f * std::abs(spread));
         const glm::vec2 tip = root + length * glm::vec2(std::cos(angle), std::sin(angle));
-        const glm::vec2 bend = 0.5f * (root + tip) + glm::vec2(rng.uniform(-18.0f, 18.0f), rng.uniform(-10.0f, 10.0f));
+        // One draw per statement, in the order GCC evaluated them when the assets were committed
+        // (C++ leaves the order of a call's arguments unspecified; Clang goes left to right).
+        const float bendY = rng.uniform(-10.0f, 10.0f), bendX = rng.uniform(-18.0f, 18.0f);
+        const glm::vec2 bend = 0.5f * (root + tip) + glm::vec2(bendX, bendY);
         layout.push_back({root, bend, tip});
         drawStroke(canvas, root, bend, tip, 4.0f, 1.5f, twigColour);
     }
@@ -140,8 +143,12 @@ RgbaImage makeLeafCluster(std::uint32_t seed) {
             const glm::vec2 at = bezier(twig.a, twig.c, twig.b, t);
             const glm::vec2 tangent = bezierTangent(twig.a, twig.c, twig.b, t);
             const float angle = std::atan2(tangent.y, tangent.x) + static_cast<float>(side) * rng.uniform(0.55f, 0.95f);
-            const glm::vec3 tint = leafBase * rng.uniform(0.8f, 1.2f) + glm::vec3(rng.uniform(-0.04f, 0.05f), rng.uniform(-0.03f, 0.06f), 0.0f);
-            drawLeaf(canvas, at, angle, rng.uniform(30.0f, 44.0f), rng.uniform(14.0f, 20.0f), tint, 3.0f, seed + 7u);
+            // One draw per statement, in GCC's order (as for `bend` above).
+            const float greenShift = rng.uniform(-0.03f, 0.06f), redShift = rng.uniform(-0.04f, 0.05f);
+            const float brightness = rng.uniform(0.8f, 1.2f);
+            const glm::vec3 tint = leafBase * brightness + glm::vec3(redShift, greenShift, 0.0f);
+            const float width = rng.uniform(14.0f, 20.0f), length = rng.uniform(30.0f, 44.0f);
+            drawLeaf(canvas, at, angle, length, width, tint, 3.0f, seed + 7u);
             side = -side;
         }
         const glm::vec2 tangent = bezierTangent(twig.a, twig.c, twig.b, 1.0f);
