@@ -39,6 +39,11 @@ constexpr SceneEntry kScenes[] = {
 
 glm::vec3 onGround(float x, float z) { return {x, racer::terrainHeight(x, z), z}; }
 
+// tan(kFovY / 2), the same in every build: at -O2 GCC folds std::tan of this constant to the
+// correctly rounded float, while a Debug build calls glibc's tanf, which is one ulp away for
+// this angle. The tangent taken in double and rounded once is the correctly rounded float in both.
+float halfFovTangent() { return static_cast<float>(std::tan(0.5 * static_cast<double>(kFovY))); }
+
 }  // namespace
 
 const std::vector<SceneKind>& allScenes() {
@@ -86,6 +91,10 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
     racer::placeModel(registry_, library_.add("terrain", vertices, indices, ground), {}, 0.0f, 1.0f);
 
     auto randomYaw = [&] { return random.uniform(0.0f, 2.0f * std::numbers::pi_v<float>); };
+    // Each draw from `random` is sequenced on its own: C++ leaves the evaluation order of a
+    // call's arguments unspecified (GCC right to left, Clang left to right), so draws made in
+    // one call would build a different scene per compiler. The order kept is GCC's: scale,
+    // heading, then the model.
     switch (kind) {
         case SceneKind::Tree: {
             // The crown (upper 60% of the bounds) fills the frame's height, seen level.
@@ -95,12 +104,12 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             const float height = 0.6f * (b.max.y - b.min.y);
             const glm::vec3 centre = base + glm::vec3(0.5f * (b.min.x + b.max.x), b.max.y - 0.5f * height,
                                                       0.5f * (b.min.z + b.max.z));
-            const float distance = 0.5f * height / std::tan(0.5f * kFovY);
+            const float distance = 0.5f * height / halfFovTangent();
             target_ = centre;
             eye_ = centre - glm::vec3(0.0f, 0.0f, distance);
             eye_.y = std::max(eye_.y, racer::terrainHeight(eye_.x, eye_.z) + 1.5f);
             // Half a pixel of a 720-line frame per pan frame at the tree's distance.
-            panStep_ = 0.5f * distance * 2.0f * std::tan(0.5f * kFovY) / 720.0f;
+            panStep_ = 0.5f * distance * 2.0f * halfFovTangent() / 720.0f;
             break;
         }
         case SceneKind::Forest: {
@@ -110,15 +119,17 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
                 for (int j = 0; j < 22; ++j) {
                     const float x = -42.0f + 4.0f * float(i) + random.uniform(-1.5f, 1.5f);
                     const float z = 5.0f + 4.0f * float(j) + random.uniform(-1.5f, 1.5f);
-                    racer::placeModel(registry_, trees[random.next() % 3], onGround(x, z), randomYaw(), random.uniform(0.9f, 1.4f));
+                    const float scale = random.uniform(0.9f, 1.4f), heading = randomYaw();
+                    racer::placeModel(registry_, trees[random.next() % 3], onGround(x, z), heading, scale);
                 }
             for (int i = 0; i < 160; ++i) {
                 const float x = random.uniform(-45.0f, 45.0f), z = random.uniform(3.0f, 95.0f);
-                racer::placeModel(registry_, bushes[random.next() % 2], onGround(x, z), randomYaw(), random.uniform(0.8f, 1.4f));
+                const float scale = random.uniform(0.8f, 1.4f), heading = randomYaw();
+                racer::placeModel(registry_, bushes[random.next() % 2], onGround(x, z), heading, scale);
             }
             eye_ = onGround(0.0f, -4.0f) + glm::vec3(0.0f, 1.8f, 0.0f);
             target_ = onGround(0.0f, 30.0f) + glm::vec3(0.0f, 8.0f, 0.0f);  // into the canopies
-            panStep_ = 0.5f * 15.0f * 2.0f * std::tan(0.5f * kFovY) / 720.0f;  // half a pixel at 15 m
+            panStep_ = 0.5f * 15.0f * 2.0f * halfFovTangent() / 720.0f;  // half a pixel at 15 m
             break;
         }
         case SceneKind::Vista: {
@@ -126,8 +137,9 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             for (int i = 0; i < 700; ++i) {
                 const float angle = random.uniform(-0.75f, 0.75f);
                 const float radius = random.uniform(120.0f, 1500.0f);
-                racer::placeModel(registry_, trees[random.next() % 3], onGround(radius * std::sin(angle), radius * std::cos(angle)),
-                      randomYaw(), random.uniform(1.5f, 2.5f));
+                const float scale = random.uniform(1.5f, 2.5f), heading = randomYaw();
+                racer::placeModel(registry_, trees[random.next() % 3],
+                                  onGround(radius * std::sin(angle), radius * std::cos(angle)), heading, scale);
             }
             eye_ = onGround(0.0f, 0.0f) + glm::vec3(0.0f, 45.0f, 0.0f);
             target_ = onGround(0.0f, 600.0f) + glm::vec3(0.0f, 10.0f, 0.0f);
@@ -138,7 +150,8 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             // technique should cost what the opaque frame costs (DESIGN.md data flow, step 3).
             for (int i = 0; i < 40; ++i) {
                 const float x = random.uniform(-60.0f, 60.0f), z = random.uniform(-90.0f, -25.0f);
-                racer::placeModel(registry_, trees[random.next() % 3], onGround(x, z), randomYaw(), random.uniform(0.9f, 1.4f));
+                const float scale = random.uniform(0.9f, 1.4f), heading = randomYaw();
+                racer::placeModel(registry_, trees[random.next() % 3], onGround(x, z), heading, scale);
             }
             eye_ = onGround(0.0f, 0.0f) + glm::vec3(0.0f, 2.0f, 0.0f);
             target_ = onGround(0.0f, 80.0f) + glm::vec3(0.0f, 2.0f, 0.0f);
