@@ -90,7 +90,10 @@ std::vector<std::uint8_t> bladeTexels(int width, int height, std::uint32_t seed)
     for (int b = 0; b < blades; ++b) {
         const float x0 = next() * float(width), lean = (next() - 0.5f) * 0.5f * float(width);
         const float tall = 0.55f + 0.45f * next(), thick = 1.0f + 1.5f * next();
-        const glm::vec3 green(0.25f + 0.2f * next(), 0.55f + 0.25f * next(), 0.12f + 0.1f * next());
+        // One draw per statement: C++ leaves the order of a call's arguments unspecified (GCC
+        // right to left, Clang left to right); this is the order GCC gave the goldens.
+        const float blue = 0.12f + 0.1f * next(), greenness = 0.55f + 0.25f * next(), red = 0.25f + 0.2f * next();
+        const glm::vec3 green(red, greenness, blue);
         for (int y = 0; y < height; ++y) {
             const float h = 1.0f - (float(y) + 0.5f) / float(height);  // 0 at the root (bottom row)
             if (h > tall) continue;

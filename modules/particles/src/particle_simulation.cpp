@@ -111,11 +111,16 @@ void ParticleSimulation::update(engine::ecs::Registry& registry, float dt) {
                 const glm::vec3 wheel = glm::vec3(m * glm::vec4(e.wheels[i % 4], 1.0f));
                 const bool spray = random() < e.sprayFraction;
                 Particle p;
-                p.position = wheel + glm::vec3(random() - 0.5f, 0.0f, random() - 0.5f) * 0.4f;
+                // One draw per statement: C++ leaves the order of a call's arguments and of `+`'s
+                // operands unspecified (GCC right to left, Clang left to right); this is the
+                // order GCC gave the goldens.
+                const float dz = random() - 0.5f, dx = random() - 0.5f;
+                p.position = wheel + glm::vec3(dx, 0.0f, dz) * 0.4f;
                 // Thrown up and back, spread out.
                 const glm::vec3 back = glm::vec3(m * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
-                p.velocity = carVelocity * e.inherit + back * (1.5f + 2.0f * random()) +
-                             glm::vec3((random() - 0.5f) * 2.0f, 1.0f + 2.5f * random(), (random() - 0.5f) * 2.0f);
+                const float vz = (random() - 0.5f) * 2.0f, vy = 1.0f + 2.5f * random(), vx = (random() - 0.5f) * 2.0f;
+                const float throwSpeed = 1.5f + 2.0f * random();
+                p.velocity = carVelocity * e.inherit + back * throwSpeed + glm::vec3(vx, vy, vz);
                 p.age = random() * dt;  // spread over the step
                 p.additive = spray ? 1.0f : 0.0f;
                 p.color = spray ? e.spray : e.dust;

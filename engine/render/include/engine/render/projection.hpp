@@ -12,7 +12,10 @@ namespace engine::render {
 
 // Conventional: depth 0 at `near`, 1 at `far` (glm::perspectiveRH_ZO).
 inline glm::mat4 perspectiveZeroToOne(float fovY, float aspect, float near, float far) {
-    const float f = 1.0f / std::tan(fovY * 0.5f);
+    // tan in double, then rounded: GCC folds tanf of a constant angle to the correctly rounded
+    // float at -O2, while a Debug build calls glibc's tanf, one ulp away for 30 degrees; the
+    // double result rounds to that same float either way, so images do not depend on the build.
+    const float f = 1.0f / static_cast<float>(std::tan(0.5 * static_cast<double>(fovY)));
     glm::mat4 m(0.0f);
     m[0][0] = f / aspect;
     m[1][1] = f;
@@ -24,7 +27,10 @@ inline glm::mat4 perspectiveZeroToOne(float fovY, float aspect, float near, floa
 
 // Reverse-Z: depth 1 at `near`, 0 at `far`; depth = near*(far - d) / (d*(far - near)) at distance d.
 inline glm::mat4 perspectiveReverseZ(float fovY, float aspect, float near, float far) {
-    const float f = 1.0f / std::tan(fovY * 0.5f);
+    // tan in double, then rounded: GCC folds tanf of a constant angle to the correctly rounded
+    // float at -O2, while a Debug build calls glibc's tanf, one ulp away for 30 degrees; the
+    // double result rounds to that same float either way, so images do not depend on the build.
+    const float f = 1.0f / static_cast<float>(std::tan(0.5 * static_cast<double>(fovY)));
     glm::mat4 m(0.0f);
     m[0][0] = f / aspect;
     m[1][1] = f;
