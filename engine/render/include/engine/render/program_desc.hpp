@@ -72,9 +72,10 @@ struct TextureField {
 };
 
 struct GlslProgram {
-    // The fragment stage's body. The driver puts before it the version line, the outputs and
-    // finish(vec4 color) (alpha test, alpha-to-coverage, every target written), and for Mesh
-    // programs the interpolants v_uv, v_normal, v_color are declared by the body itself.
+    // The fragment stage's body, ending in finish(color). The driver puts before it the version
+    // line, the outputs and finish(vec4) (alpha test, alpha-to-coverage, every target written);
+    // a Mesh program's body declares the interpolants it reads (in vec2 v_uv; in vec3 v_normal;
+    // in vec4 v_color: what the driver's vertex stage writes).
     std::string fragment;
     std::vector<UniformField> uniforms;
     std::vector<TextureField> textures;
