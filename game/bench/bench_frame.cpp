@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "bench_frame.hpp"
 
+#include "engine/render/frame_graph.hpp"
+#include "engine/render/frame_graph/side_effect_pass.hpp"
 #include "engine/render/pass_scope.hpp"
 
 namespace bench {
@@ -60,7 +62,29 @@ FrameDrawer::~FrameDrawer() {
     backend_.destroy(twoSided_);
 }
 
-void FrameDrawer::draw(ssam::OpaqueTargets& targets, transparency::Technique* technique, const ViewUpload& view) {
+void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Technique* technique, const ViewUpload& view) {
+    FrameGraph graph;
+    const FrameTargets::InGraph in = targets.importInto(graph);
+    struct Drawn {
+        ColorDepth out;
+    };
+    const ColorDepth drawn = graph
+                                 .addPass<Drawn>(
+                                     "opaque",
+                                     [&](FrameGraph::Builder& b, Drawn& d) {
+                                         d.out = {b.write(in.drawn.color), b.write(in.drawn.depth)};
+                                     },
+                                     [&](const FrameGraph::Resources&, const Drawn&) { drawOpaque(targets, view); })
+                                 .out;
+    const ColorDepth resolved = in.drawn != in.resolved ? in.resolved : drawn;
+    const transparency::FoliageFrame foliage = view.foliageFrame();
+    const ColorDepth frame = technique ? technique->addPasses(graph, targets, drawn, resolved, foliage)
+                                       : targets.addResolvePass(graph, drawn, resolved);
+    addSideEffectPass(graph, "present", frame);
+    graph.execute();
+}
+
+void FrameDrawer::drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view) {
     PassScope scope(backend_, targets.passDesc(kSky));
     const auto& opaque = view.lists().opaque;
     for (std::size_t i = 0; i < opaque.size(); ++i) {
@@ -82,10 +106,6 @@ void FrameDrawer::draw(ssam::OpaqueTargets& targets, transparency::Technique* te
         backend_.draw(d);
     }
     scope.end();
-    if (technique)
-        technique->render(targets, view.foliageFrame());
-    else
-        targets.resolve();
 }
 
 }  // namespace bench

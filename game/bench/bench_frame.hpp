@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // One benchmark frame: the opaque pass (ground, trunks: OpaqueLit, reverse-Z, depth test
-// Greater, as game/src/frame_renderer.cpp draws it) into ssam::OpaqueTargets, then the
+// Greater, as game/src/frame_renderer.cpp draws it) into engine::render::FrameTargets, then the
 // technique's foliage (Technique::render, which resolves), or just the resolve for the
 // opaque-only frame. The scene is extracted and its instances uploaded once per view
 // (ViewUpload), outside the timed frame, so every technique gets the same input and the
@@ -12,10 +12,10 @@
 
 #include "bench_scenes.hpp"
 #include "engine/render/backend.hpp"
+#include "engine/render/frame_targets.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "foliage_upload.hpp"
-#include "ssam/opaque_targets.hpp"
-#include "transparency/technique.hpp"
+#include "transparency/create_technique.hpp"
 
 namespace bench {
 
@@ -52,10 +52,13 @@ public:
     FrameDrawer(const FrameDrawer&) = delete;
     FrameDrawer& operator=(const FrameDrawer&) = delete;
 
-    // Opaque pass, then `technique->render` (or the plain resolve when technique is null).
-    void draw(ssam::OpaqueTargets& targets, transparency::Technique* technique, const ViewUpload& view);
+    // The frame as a frame graph, as racer builds it: the opaque pass, then the technique's
+    // passes (or the plain resolve when technique is null), then a present pass.
+    void draw(engine::render::FrameTargets& targets, transparency::Technique* technique, const ViewUpload& view);
 
 private:
+    void drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view);
+
     engine::render::Backend& backend_;
     const engine::scene::MeshLibrary& library_;
     engine::render::PipelineHandle culled_, twoSided_;

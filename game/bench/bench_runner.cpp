@@ -14,13 +14,13 @@
 
 #include "bench_frame.hpp"
 #include "counting_backend.hpp"
-#include "rss_peak.hpp"
 #include "engine/capture/image_write.hpp"
 #include "engine/capture/metrics.hpp"
 #include "engine/capture/readback_image.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "rss_peak.hpp"
 
 namespace bench {
 
@@ -70,11 +70,11 @@ transparency::TechniqueOptions withSceneDepth(transparency::TechniqueOptions o) 
     return o;
 }
 
-Image frameImage(Backend& backend, const ssam::OpaqueTargets& targets) {
+Image frameImage(Backend& backend, const engine::render::FrameTargets& targets) {
     return engine::capture::imageFromReadback(backend.readback(targets.color()));
 }
 
-std::vector<Image> panImages(Backend& backend, FrameDrawer& drawer, ssam::OpaqueTargets& targets,
+std::vector<Image> panImages(Backend& backend, FrameDrawer& drawer, engine::render::FrameTargets& targets,
                              transparency::Technique* technique, const SceneViews& views) {
     std::vector<Image> frames;
     for (const auto& view : views.pan) {
@@ -89,7 +89,7 @@ ReferenceFrames computeReference(Backend& soft, BenchScene& scene, const SceneVi
     ReferenceFrames ref;
     try {
         auto technique = transparency::createTechnique(TechniqueKind::Reference, soft, withSceneDepth({}));
-        ssam::OpaqueTargets targets(soft, {o.width, o.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
+        engine::render::FrameTargets targets(soft, {o.width, o.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
         FrameDrawer drawer(soft, scene.library());
         drawer.draw(targets, technique.get(), *views.still);
         soft.takeTimings();
@@ -133,7 +133,7 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         const RssPeak rss;
         std::unique_ptr<transparency::Technique> technique;
         if (subject.kind) technique = transparency::createTechnique(*subject.kind, *counting, withSceneDepth(subject.options));
-        ssam::OpaqueTargets targets(
+        engine::render::FrameTargets targets(
             *counting, {o.width, o.height, technique ? technique->opaqueSamples() : 1, Format::RGBA8_SRGB, kDepthFunc});
         FrameDrawer drawer(backend, scene.library());
         backend.takeTimings();  // drop whatever earlier work left

@@ -11,7 +11,7 @@
 
 #include "bench_result.hpp"
 #include "bench_scenes.hpp"
-#include "transparency/technique.hpp"
+#include "transparency/create_technique.hpp"
 
 namespace bench {
 

@@ -2,7 +2,7 @@
 #pragma once
 // A Backend that forwards every call to another and counts the bytes of the textures and
 // buffers created through it that are still alive: `ssam-bench`'s peak_mem_mb column.
-// Handed to a technique (and its OpaqueTargets), it measures exactly what that technique
+// Handed to a technique (and its FrameTargets), it measures exactly what that technique
 // allocates — targets at their sample count, mip chains, buffers — the same numbers on
 // every run and backend, unlike a process RSS. Resources created elsewhere (the scene's
 // meshes, made on the wrapped backend) pass through uncounted. Capabilities (the soft

@@ -5,27 +5,18 @@ namespace racer {
 
 using namespace engine::render;
 
-FoliageUpload::~FoliageUpload() { release(); }
-
-void FoliageUpload::release() {
-    for (BufferHandle b : buffers_) backend_.destroy(b);
-    buffers_.clear();
-    draws_.clear();
-}
-
 std::span<const transparency::FoliageDraw> FoliageUpload::upload(const engine::scene::DrawLists& lists,
                                                                  const engine::scene::MeshLibrary& library) {
-    release();
+    instances_.beginFrame();
+    draws_.clear();
     for (const engine::scene::DrawBatch& b : lists.mask) {
         const engine::scene::MeshPart& part = library.part(b.part);
-        const auto bytes = std::as_bytes(std::span(b.instances));
-        buffers_.push_back(backend_.createBuffer({"foliage instances", BufferKind::Instance, bytes.size()}, bytes));
 
         transparency::FoliageDraw d;
         d.batch.vertices = engine::scene::vertexBufferOf(b, part);  // deformed copy (modules/wind) or shared
         d.batch.indices = part.indices;
         d.batch.count = part.indexCount;
-        d.batch.instances = buffers_.back();
+        d.batch.instances = instances_.upload("foliage instances", BufferKind::Instance, std::as_bytes(std::span(b.instances)));
         d.batch.instanceCount = static_cast<std::uint32_t>(b.instances.size());
         d.batch.baseColor = part.material.baseColor;
         d.batch.baseColorFactor = part.material.baseColorFactor;

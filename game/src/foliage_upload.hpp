@@ -2,11 +2,12 @@
 #pragma once
 // The bridge from the scene's draw lists to the foliage techniques: each alpha-tested
 // (Mask) batch becomes a transparency::FoliageDraw whose instances live in a buffer of the
-// frame. The buffers of one frame are released when the next frame is uploaded.
+// frame, from a pool: the next frame's upload reuses them (engine/render frame_buffer_pool.hpp).
 #include <span>
 #include <vector>
 
 #include "engine/render/backend.hpp"
+#include "engine/render/frame_buffer_pool.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "engine/scene/mesh_library.hpp"
 #include "transparency/technique.hpp"
@@ -15,8 +16,7 @@ namespace racer {
 
 class FoliageUpload {
 public:
-    explicit FoliageUpload(engine::render::Backend& backend) : backend_(backend) {}
-    ~FoliageUpload();
+    explicit FoliageUpload(engine::render::Backend& backend) : instances_(backend) {}
     FoliageUpload(const FoliageUpload&) = delete;
     FoliageUpload& operator=(const FoliageUpload&) = delete;
 
@@ -25,10 +25,7 @@ public:
                                                       const engine::scene::MeshLibrary& library);
 
 private:
-    void release();
-
-    engine::render::Backend& backend_;
-    std::vector<engine::render::BufferHandle> buffers_;
+    engine::render::FrameBufferPool instances_;
     std::vector<transparency::FoliageDraw> draws_;
 };
 

@@ -2,8 +2,12 @@
 #include "frame_renderer.hpp"
 
 #include <algorithm>
+#include <ostream>
 
 #include "engine/capture/image.hpp"
+#include "engine/core/error.hpp"
+#include "engine/render/frame_graph.hpp"
+#include "engine/render/frame_graph/side_effect_pass.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "living_scene.hpp"
 
@@ -18,7 +22,8 @@ constexpr CompareFunc kDepthFunc = CompareFunc::Greater;  // reverse-Z
 }  // namespace
 
 FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary& library, const RendererOptions& options)
-    : backend_(backend), library_(library), options_(options), foliage_(backend) {
+    : backend_(backend), library_(library), options_(options), foliage_(backend), instances_(backend),
+      transients_(backend) {
     options_.techniqueOptions.ssam.depthFunc = kDepthFunc;
     setTechnique(options.technique);
     opaqueCulled_ = opaquePipeline(false);
@@ -35,7 +40,6 @@ FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary&
 }
 
 FrameRenderer::~FrameRenderer() {
-    for (BufferHandle b : frameBuffers_) backend_.destroy(b);
     for (PipelineHandle p : {opaqueCulled_, opaqueTwoSided_, water_, waterCulled_}) backend_.destroy(p);
 }
 
@@ -52,8 +56,8 @@ void FrameRenderer::resize(int width, int height) { ensureOpaqueTargets(width, h
 void FrameRenderer::ensureOpaqueTargets(int width, int height, int samples) {
     if (opaque_ && width == options_.width && height == options_.height && opaque_->desc().samples == samples) return;
     // The new targets are made before the current ones go, so a refused size keeps the frame.
-    auto next = std::make_unique<ssam::OpaqueTargets>(
-        backend_, ssam::OpaqueTargetsDesc{width, height, samples, Format::RGBA8_SRGB, kDepthFunc});
+    auto next = std::make_unique<engine::render::FrameTargets>(
+        backend_, engine::render::FrameTargetsDesc{width, height, samples, Format::RGBA8_SRGB, kDepthFunc});
     opaque_ = std::move(next);
     options_.width = width;
     options_.height = height;
@@ -68,10 +72,13 @@ PipelineHandle FrameRenderer::opaquePipeline(bool doubleSided) {
     return backend_.createPipeline(p);
 }
 
-BufferHandle FrameRenderer::uploadInstances(const DrawBatch& batch) {
-    const auto bytes = std::as_bytes(std::span(batch.instances));
-    frameBuffers_.push_back(backend_.createBuffer({"instances", BufferKind::Instance, bytes.size()}, bytes));
-    return frameBuffers_.back();
+SurfaceParams FrameRenderer::surface(const MeshPart& part, const glm::mat4& viewProj) const {
+    SurfaceParams s;
+    s.viewProj = viewProj;
+    s.baseColorFactor = part.material.baseColorFactor;
+    s.baseColor = part.material.baseColor;
+    s.light = part.material.unlit ? unlitLight() : options_.sun;
+    return s;
 }
 
 DrawDesc FrameRenderer::batchDraw(const DrawBatch& batch, PipelineHandle pipeline, DrawParams params) {
@@ -82,7 +89,7 @@ DrawDesc FrameRenderer::batchDraw(const DrawBatch& batch, PipelineHandle pipelin
     d.vertices = engine::scene::vertexBufferOf(batch, part);  // deformed copy (modules/wind) or shared
     d.indices = part.indices;
     d.count = part.indexCount;
-    d.instances = uploadInstances(batch);
+    d.instances = instances_.upload("instances", BufferKind::Instance, std::as_bytes(std::span(batch.instances)));
     d.instanceCount = static_cast<std::uint32_t>(batch.instances.size());
     return d;
 }
@@ -122,61 +129,110 @@ void FrameRenderer::captureIntermediates() {
 }
 
 void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraView& camera) {
-    for (BufferHandle b : frameBuffers_) backend_.destroy(b);
-    frameBuffers_.clear();
     layers_.clear();
-
-    auto surface = [&](const MeshPart& part) {
-        SurfaceParams s;
-        s.viewProj = camera.viewProj;
-        s.baseColorFactor = part.material.baseColorFactor;
-        s.baseColor = part.material.baseColor;
-        s.light = options_.sun;
-        if (part.material.unlit) s.light = unlitLight();
-        return s;
-    };
+    instances_.beginFrame();
+    auto graph = std::make_unique<FrameGraph>();
+    const FrameTargets::InGraph in = opaque_->importInto(*graph);
 
     // 1. Opaque pass (MSAA when the technique or --msaa asks for it).
-    PassScope scope(backend_, opaque_->passDesc(options_.background));
-    for (const DrawBatch& b : lists.opaque) {
-        const MeshPart& part = library_.part(b.part);
-        backend_.draw(batchDraw(b, part.material.doubleSided ? opaqueTwoSided_ : opaqueCulled_, surface(part)));
-    }
-    scope.end();
+    const bool multisampled = in.drawn != in.resolved;
+    ColorDepth drawn = addOpaquePass(*graph, in.drawn, lists, camera);
+    ColorDepth resolved = multisampled ? in.resolved : drawn;  // single-sampled: the same textures
     if (options_.captureLayers) {
         // The technique resolves again after drawing; resolving here too only costs time
         // when layers are captured.
-        opaque_->resolve();
-        capture(opaque_->color(), "opaque");
-        capture(opaque_->depth(), "depth");
+        struct Data {};
+        graph->addPass<Data>(
+            "capture opaque",
+            [&](FrameGraph::Builder& b, Data&) {
+                drawn = {b.read(drawn.color), b.read(drawn.depth)};
+                if (multisampled) resolved = {b.write(resolved.color), b.write(resolved.depth)};
+                b.sideEffect();
+            },
+            [this](const FrameGraph::Resources&, const Data&) {
+                opaque_->resolve();
+                capture(opaque_->color(), "opaque");
+                capture(opaque_->depth(), "depth");
+            });
+        if (!multisampled) resolved = drawn;
     }
 
-    // 2. Foliage by the technique: it draws, resolves the opaque targets and leaves the
+    // 2. Foliage by the technique: it draws, resolves the frame targets and leaves the
     //    colour and the depth later passes test against in them.
     const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, options_.sun, foliage_.upload(lists, library_)};
-    technique_->render(*opaque_, foliage);
-    captureIntermediates();
-    capture(opaque_->depth(), "foliage_depth");
+    ColorDepth frame = technique_->addPasses(*graph, *opaque_, drawn, resolved, foliage);
+    if (options_.captureLayers) addSideEffectPass(*graph, "capture foliage", frame, [this] {
+        captureIntermediates();
+        capture(opaque_->depth(), "foliage_depth");
+    });
 
     // 3. The living scene's passes (grass, water, particles, light shafts) onto the colour,
     //    depth-tested against the opaque + foliage depth; without one, BLEND surfaces here.
-    if (living_) {
-        const int w = backend_.describe(opaque_->color()).width, h = backend_.describe(opaque_->color()).height;
-        living_->render({backend_, library_, lists, opaque_->color(), opaque_->depth(), w, h, camera.view,
-                         camera.projection, camera.viewProj, camera.eye, options_.sun, 0.0f, kDepthFunc});
-    } else if (!lists.blend.empty()) {
-        PassDesc pass;
-        pass.name = "water";
-        pass.color[0] = {opaque_->color(), LoadOp::Load};
-        pass.depth = {opaque_->depth(), LoadOp::Load};
-        PassScope passScope(backend_, pass);
-        for (const DrawBatch& b : lists.blend) {
-            const MeshPart& part = library_.part(b.part);
-            backend_.draw(batchDraw(b, part.material.doubleSided ? water_ : waterCulled_, surface(part)));
-        }
-        passScope.end();
-    }
-    capture(opaque_->color(), "result");
+    const engine::scene::FeatureFrame features{backend_, library_, lists, opaque_->color(), opaque_->depth(),
+                                               options_.width, options_.height, camera.view, camera.projection,
+                                               camera.viewProj, camera.eye, options_.sun, 0.0f, kDepthFunc};
+    frame = living_ ? living_->addPasses(*graph, features, frame) : addBlendPass(*graph, frame, features, camera);
+
+    // 4. The frame leaves the graph: presented by the caller, captured here.
+    addSideEffectPass(*graph, "present", frame, [this] { capture(opaque_->color(), "result"); });
+
+    graph->execute(transients_.allocator());
+    transients_.endFrame();
+    lastGraph_ = std::move(graph);
+}
+
+ColorDepth FrameRenderer::addOpaquePass(FrameGraph& graph, const ColorDepth& targets, const engine::scene::DrawLists& lists,
+                                        const CameraView& camera) {
+    struct Data {
+        ColorDepth out;
+    };
+    return graph
+        .addPass<Data>(
+            "opaque",
+            [&](FrameGraph::Builder& b, Data& d) { d.out = {b.write(targets.color), b.write(targets.depth)}; },
+            [this, &lists, viewProj = camera.viewProj](const FrameGraph::Resources&, const Data&) {
+                PassScope scope(backend_, opaque_->passDesc(options_.background));
+                for (const DrawBatch& b : lists.opaque) {
+                    const MeshPart& part = library_.part(b.part);
+                    backend_.draw(batchDraw(b, part.material.doubleSided ? opaqueTwoSided_ : opaqueCulled_,
+                                            surface(part, viewProj)));
+                }
+                scope.end();
+            })
+        .out;
+}
+
+ColorDepth FrameRenderer::addBlendPass(FrameGraph& graph, const ColorDepth& targets, const engine::scene::FeatureFrame& frame,
+                                       const CameraView& camera) {
+    struct Data {
+        ColorDepth out;
+    };
+    const engine::scene::DrawLists& lists = frame.lists;
+    return graph
+        .addPass<Data>(
+            "water",
+            [&](FrameGraph::Builder& b, Data& d) {
+                d.out = {b.write(b.read(targets.color)), b.read(targets.depth)};
+                if (lists.blend.empty()) b.markEmpty();
+            },
+            [this, &lists, viewProj = camera.viewProj](const FrameGraph::Resources&, const Data&) {
+                PassDesc pass;
+                pass.name = "water";
+                pass.color[0] = {opaque_->color(), LoadOp::Load};
+                pass.depth = {opaque_->depth(), LoadOp::Load};
+                PassScope passScope(backend_, pass);
+                for (const DrawBatch& b : lists.blend) {
+                    const MeshPart& part = library_.part(b.part);
+                    backend_.draw(batchDraw(b, part.material.doubleSided ? water_ : waterCulled_, surface(part, viewProj)));
+                }
+                passScope.end();
+            })
+        .out;
+}
+
+void FrameRenderer::dumpGraph(std::ostream& out) const {
+    if (!lastGraph_) throw engine::Error("no frame rendered yet: nothing to dump");
+    lastGraph_->dumpGraphviz(out);
 }
 
 }  // namespace racer

@@ -1,19 +1,27 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// One frame of the racing scene on any backend: the opaque pass (terrain, road, trunks,
-// car), the foliage by the chosen transparency::Technique (SSAM, alpha testing, the rivals
-// and the exact reference), then BLEND surfaces (water) back to front, depth-tested against
-// the depth the technique leaves (SSAM: the foliage depth its colour pass wrote, §3.7).
+// One frame of the racing scene on any backend, built as a frame graph each frame: the
+// opaque pass (terrain, road, trunks, car), the foliage by the chosen transparency::Technique
+// (SSAM, alpha testing, the rivals and the exact reference), then the living scene's passes
+// or BLEND surfaces (water) back to front, depth-tested against the depth the technique
+// leaves (SSAM: the foliage depth its colour pass wrote, [Hathaway 2010] §3.7), then present.
+// Per-frame instance buffers and the graph's transient targets come from pools, so a
+// steady-state frame creates no buffer or texture.
+#include <iosfwd>
 #include <memory>
 #include <vector>
 
 #include "camera_rig.hpp"
 #include "engine/capture/target_capture.hpp"
 #include "engine/render/backend.hpp"
+#include "engine/render/frame_buffer_pool.hpp"
+#include "engine/render/frame_graph.hpp"
+#include "engine/render/frame_graph/transient_texture_pool.hpp"
+#include "engine/render/frame_targets.hpp"
 #include "engine/scene/draw_lists.hpp"
+#include "engine/scene/frame_feature.hpp"
 #include "foliage_upload.hpp"
-#include "ssam/opaque_targets.hpp"
-#include "transparency/technique.hpp"
+#include "transparency/create_technique.hpp"
 
 namespace racer {
 
@@ -63,11 +71,19 @@ public:
     // the built-in BLEND step; null (the default) keeps that step.
     void setLivingScene(LivingScene* living) { living_ = living; }
 
+    // Graphviz dot of the last frame's compiled graph (racer --dump-graph): culled passes
+    // and passes skipped as empty are marked so. Throws engine::Error before any frame.
+    void dumpGraph(std::ostream& out) const;
+
     engine::render::TextureHandle color() const { return opaque_->color(); }
     const std::vector<engine::capture::CapturedLayer>& layers() const { return layers_; }
 
 private:
-    engine::render::BufferHandle uploadInstances(const engine::scene::DrawBatch& batch);
+    engine::render::ColorDepth addOpaquePass(engine::render::FrameGraph& graph, const engine::render::ColorDepth& targets,
+                                             const engine::scene::DrawLists& lists, const CameraView& camera);
+    engine::render::ColorDepth addBlendPass(engine::render::FrameGraph& graph, const engine::render::ColorDepth& targets,
+                                            const engine::scene::FeatureFrame& frame, const CameraView& camera);
+    engine::render::SurfaceParams surface(const engine::scene::MeshPart& part, const glm::mat4& viewProj) const;
     engine::render::DrawDesc batchDraw(const engine::scene::DrawBatch& batch, engine::render::PipelineHandle pipeline,
                                        engine::render::DrawParams params);
     engine::render::PipelineHandle opaquePipeline(bool doubleSided);
@@ -78,11 +94,13 @@ private:
     engine::render::Backend& backend_;
     const engine::scene::MeshLibrary& library_;
     RendererOptions options_;
-    std::unique_ptr<ssam::OpaqueTargets> opaque_;
+    std::unique_ptr<engine::render::FrameTargets> opaque_;
     std::unique_ptr<transparency::Technique> technique_;
     FoliageUpload foliage_;
     engine::render::PipelineHandle opaqueCulled_, opaqueTwoSided_, water_, waterCulled_;  // water_: BLEND, two-sided
-    std::vector<engine::render::BufferHandle> frameBuffers_;  // instance data of the frame in flight
+    engine::render::FrameBufferPool instances_;           // opaque and BLEND instance data
+    engine::render::TransientTexturePool transients_;     // the graph's transient targets
+    std::unique_ptr<engine::render::FrameGraph> lastGraph_;  // for dumpGraph()
     std::vector<engine::capture::CapturedLayer> layers_;
     LivingScene* living_ = nullptr;
 };

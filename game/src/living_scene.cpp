@@ -103,10 +103,13 @@ void LivingScene::update(float time, float dt, const CameraView& camera) {
     scheduler_.run(registry_);
 }
 
-void LivingScene::render(const engine::scene::FeatureFrame& frame) {
+engine::render::ColorDepth LivingScene::addPasses(engine::render::FrameGraph& graph,
+                                                  const engine::scene::FeatureFrame& frame,
+                                                  engine::render::ColorDepth targets) {
     engine::scene::FeatureFrame timed = frame;
     timed.time = time_;
-    for (const auto& f : features_) f->render(timed);
+    for (const auto& f : features_) targets = f->addPasses(graph, timed, targets);
+    return targets;
 }
 
 std::vector<std::string> LivingScene::names() const {

@@ -38,9 +38,11 @@ public:
     // The features' systems for this frame (wind deformation, water ripples), seen from
     // `camera`; call after the simulation step, before extraction.
     void update(float time, float dt, const CameraView& camera);
-    // Every feature's passes, in frame order, onto `frame`'s colour and depth (its time is
-    // the last update's).
-    void render(const engine::scene::FeatureFrame& frame);
+    // Every feature's passes, in frame order, onto `frame`'s colour and depth, whose latest
+    // versions in `graph` are `targets` (its time is the last update's). Returns the
+    // versions the last feature left.
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
+                                         engine::render::ColorDepth targets);
 
     // Names of the enabled features, in frame order ("wind", "water", ...).
     std::vector<std::string> names() const;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 #include "camera_rig.hpp"
 #include "engine/capture/readback_image.hpp"
@@ -176,9 +177,21 @@ int run(const CLI::App& app, const Options& o) {
     // <technique>_<layer>.png, e.g. ssam_mask_max.png (the README's), alpha_test_result.png.
     std::string prefix = std::string(transparency::techniqueName(frame.technique())) + "_";
     std::replace(prefix.begin(), prefix.end(), '-', '_');
-    if (!outputs.capture.empty())
-        writeOutputs(outputs, engine::capture::imageFromReadback(backend.readback(frame.color())), frame.layers(), prefix,
-                     planes.nearPlane, planes.farPlane);
+    if (!outputs.empty()) {
+        FrameOutputs out;
+        engine::capture::Image color;
+        if (!outputs.capture.empty()) {
+            color = engine::capture::imageFromReadback(backend.readback(frame.color()));
+            out.color = &color;
+        }
+        out.layers = frame.layers();
+        if (!outputs.graph.empty()) {
+            std::ostringstream dot;
+            frame.dumpGraph(dot);
+            out.graphDot = dot.str();
+        }
+        writeOutputs(outputs, out, prefix, planes.nearPlane, planes.farPlane);
+    }
     return 0;
 }
 

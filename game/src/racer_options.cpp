@@ -53,6 +53,9 @@ void addOptions(CLI::App& app, Options& o) {
         ->capture_default_str();
     app.add_option("--layer-pictures", o.layerPictures,
                    "with --capture-layers: write each captured layer as a PNG into this directory (created if missing)");
+    app.add_option("--dump-graph", o.dumpGraphPath,
+                   "write the last frame's compiled frame graph to this Graphviz .dot file (passes culled or "
+                   "skipped as empty are marked so; checked before the first frame)");
     // Hidden (empty group): drives the window from tests, e.g. "2:3,4:C,5:size=400x300,9:Esc".
     app.add_option("--script", o.script, "keys pressed and window changes at given frames")->group("");
     app.add_option("--scene", o.scenePath, "render this glTF 2.0 file (.gltf or .glb) instead of the racing scene");

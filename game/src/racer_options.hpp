@@ -32,6 +32,7 @@ struct Options {
     std::string contentDir = defaultContentDir().string();
     int msaa = 1;
     std::string layerPictures;
+    std::string dumpGraphPath;  // --dump-graph: Graphviz dot of the last frame's graph
     std::string script;     // --script (hidden): keys and window changes at given frames, for tests
     std::string scenePath;  // --scene: a glTF file instead of the racing scene
     int sceneIndex = -1;

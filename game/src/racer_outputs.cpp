@@ -2,6 +2,7 @@
 #include "racer_outputs.hpp"
 
 #include <cstdio>
+#include <fstream>
 #include <vector>
 
 #include "engine/capture/image_write.hpp"
@@ -23,6 +24,13 @@ void requireExtension(const fs::path& path, std::initializer_list<std::string_vi
     } catch (const engine::Error& e) {
         throw engine::UsageError(std::string("--capture: ") + e.what());
     }
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw engine::Error("cannot write '" + path.string() + "'");
 }
 
 }  // namespace
@@ -47,15 +55,23 @@ OutputPlan planOutputs(const Options& o) {
         plan.layerPictures = o.layerPictures;
         engine::requireWritableDirectory(plan.layerPictures, /*create=*/true);
     }
+    if (!o.dumpGraphPath.empty()) {
+        plan.graph = o.dumpGraphPath;
+        if (plan.graph.extension() != ".dot")
+            throw engine::UsageError("--dump-graph '" + plan.graph.string() + "': the graph is written as Graphviz "
+                                     "dot, give a .dot name");
+        engine::requireWritableFile(plan.graph, /*createDirectory=*/true);
+    }
     return plan;
 }
 
-void writeOutputs(const OutputPlan& plan, const cap::Image& color, std::span<const cap::CapturedLayer> layers,
-                  const std::string& picturePrefix, float nearPlane, float farPlane) {
+void writeOutputs(const OutputPlan& plan, const FrameOutputs& frame, const std::string& picturePrefix, float nearPlane,
+                  float farPlane) {
+    const std::span<const cap::CapturedLayer> layers = frame.layers;
     engine::PendingFiles files;
     std::vector<std::string> report;
     if (!plan.capture.empty()) {
-        cap::writeImage(files.add(plan.capture), color);
+        cap::writeImage(files.add(plan.capture), *frame.color);
         report.push_back("wrote " + plan.capture.string());
     }
     if (!plan.layersExr.empty()) {
@@ -67,6 +83,10 @@ void writeOutputs(const OutputPlan& plan, const cap::Image& color, std::span<con
             cap::writePng(files.add(plan.layerPictures / (picturePrefix + layer.name + ".png")),
                           layerPicture(layer, nearPlane, farPlane));
         report.push_back("wrote " + std::to_string(layers.size()) + " layer pictures to " + plan.layerPictures.string());
+    }
+    if (!plan.graph.empty()) {
+        writeText(files.add(plan.graph), frame.graphDot);
+        report.push_back("wrote " + plan.graph.string() + " (the last frame's graph)");
     }
     files.commit();
     for (const std::string& line : report) std::printf("racer: %s\n", line.c_str());

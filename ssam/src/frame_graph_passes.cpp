@@ -9,8 +9,9 @@ namespace ssam {
 
 using namespace engine::render;
 
-SsamGraphOutputs addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const FoliageView& view,
-                               FrameGraphTexture color, FrameGraphTexture depth) {
+ColorDepth addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const FoliageView& view,
+                         const ColorDepth& frame) {
+    const FrameGraphTexture color = frame.color, depth = frame.depth;
     const FrameGraphTextureDesc colorDesc = graph.desc(color);
     auto plan = std::make_shared<const FramePlan>(
         ssam.plan(int(colorDesc.width), int(colorDesc.height), static_cast<Format>(colorDesc.format), view));

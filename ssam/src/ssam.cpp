@@ -3,7 +3,7 @@
 
 #include "engine/render/pass_scope.hpp"
 #include "ssam/composite_program.hpp"
-#include "ssam/screen_region.hpp"
+#include "engine/render/screen_bounds.hpp"
 
 namespace ssam {
 
@@ -142,9 +142,9 @@ FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, 
     FramePlan plan;
     plan.width = width;
     plan.height = height;
-    for (const FoliageBatch& batch : view.batches) {
+    for (const MaskedBatch& batch : view.batches) {
         if (batch.count == 0 || batch.instanceCount == 0) continue;
-        const std::optional<Rect> region = screenRegion(batch.worldBounds, view.viewProj, plan.width, plan.height);
+        const std::optional<Rect> region = screenBounds(batch.worldBounds, view.viewProj, plan.width, plan.height);
         if (!region) continue;
         plan.visible.push_back(&batch);
         plan.compositeRegion = unite(plan.compositeRegion, *region);
@@ -162,12 +162,12 @@ void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& vi
     if (maskAdd_) pass.color[1] = {maskAdd_, LoadOp::Clear, glm::vec4(0.0f)};
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
-    for (const FoliageBatch* batch : plan.visible) {
+    for (const MaskedBatch* batch : plan.visible) {
         AlphaOnlyParams params;
         params.viewProj = view.viewProj;
         params.alphaFactor = batch->baseColorFactor.a;
         params.baseColor = batch->baseColor;
-        backend_.draw(foliageDraw(*batch, pipelines_.mask, params));
+        backend_.draw(maskedBatchDraw(*batch, pipelines_.mask, params));
     }
     passScope.end();
 }
@@ -178,13 +178,13 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
     pass.color[0] = {foliage_, LoadOp::Clear, config_.foliageClearColor};  // the clear-colour fix (§3.6.1)
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
-    for (const FoliageBatch* batch : plan.visible) {
+    for (const MaskedBatch* batch : plan.visible) {
         SurfaceParams params;
         params.viewProj = view.viewProj;
         params.baseColorFactor = batch->baseColorFactor;
         params.baseColor = batch->baseColor;
         params.light = batch->unlit ? engine::render::unlitLight() : view.light;
-        backend_.draw(foliageDraw(*batch, pipelines_.color, params));
+        backend_.draw(maskedBatchDraw(*batch, pipelines_.color, params));
     }
     passScope.end();
 }

@@ -31,14 +31,14 @@ inline std::vector<engine::render::Vertex> quadVertices(const Quad& q) {
 struct QuadBatches {
     engine::render::Backend& backend;
     std::vector<engine::render::BufferHandle> buffers;
-    std::vector<FoliageBatch> batches;
+    std::vector<engine::render::MaskedBatch> batches;
 
     QuadBatches(engine::render::Backend& b, const std::vector<Quad>& quads) : backend(b) {
         for (const Quad& q : quads) {
             const auto vertices = quadVertices(q);
             const auto bytes = std::as_bytes(std::span(vertices));
             buffers.push_back(backend.createBuffer({"quad", engine::render::BufferKind::Vertex, bytes.size()}, bytes));
-            FoliageBatch batch;
+            engine::render::MaskedBatch batch;
             batch.vertices = buffers.back();
             batch.count = 6;
             batch.worldBounds = {{q.x0, q.y0, q.depth}, {q.x1, q.y1, q.depth}};
@@ -52,7 +52,7 @@ struct QuadBatches {
     // Draws every quad with `pipeline` (a Flat one) into the open pass: opaque geometry, or a
     // later pass that depth-tests against the foliage.
     void drawFlat(engine::render::PipelineHandle pipeline) const {
-        for (const FoliageBatch& batch : batches) {
+        for (const engine::render::MaskedBatch& batch : batches) {
             engine::render::DrawDesc d;
             d.pipeline = pipeline;
             d.params = engine::render::FlatParams{};

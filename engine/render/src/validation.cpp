@@ -36,9 +36,7 @@ void validateTexture(const TextureDesc& desc, const std::string& what) {
 }
 
 void validateBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) {
-    const std::uint64_t stride = desc.kind == BufferKind::Vertex  ? sizeof(Vertex)
-                                 : desc.kind == BufferKind::Index ? sizeof(std::uint32_t)
-                                                                  : sizeof(Instance);
+    const std::uint64_t stride = elementSize(desc.kind);
     if (desc.size == 0 || desc.size % stride != 0)
         throw Error(what + ": size " + std::to_string(desc.size) + " is not a positive multiple of " +
                     std::to_string(stride));

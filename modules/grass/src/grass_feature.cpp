@@ -11,7 +11,7 @@ namespace grass {
 using namespace engine::render;
 
 GrassFeature::GrassFeature(Backend& backend, std::vector<Tuft> tufts, const GrassOptions& options)
-    : backend_(backend), options_(options), tufts_(std::move(tufts)) {
+    : backend_(backend), options_(options), tufts_(std::move(tufts)), instances_(backend) {
     validate(options_);
     if (tufts_.size() > options_.maxTufts)
         throw engine::Error("grass: " + std::to_string(tufts_.size()) + " tufts exceed the limit of " +
@@ -34,7 +34,7 @@ GrassFeature::GrassFeature(Backend& backend, std::vector<Tuft> tufts, const Gras
 }
 
 GrassFeature::~GrassFeature() {
-    for (BufferHandle b : {vertices_, indices_, instances_})
+    for (BufferHandle b : {vertices_, indices_})
         if (b) backend_.destroy(b);
     backend_.destroy(blades_);
     if (pipeline_) backend_.destroy(pipeline_);
@@ -54,13 +54,16 @@ PipelineHandle GrassFeature::pipeline(CompareFunc depthFunc) {
     return pipeline_;
 }
 
-void GrassFeature::render(const engine::scene::FeatureFrame& frame) {
-    if (instances_) backend_.destroy(instances_), instances_ = {};
-    const std::vector<Instance> visible = visibleTufts(tufts_, options_, frame.eye, frame.viewProj, frame.time);
-    drawn_ = visible.size();
-    if (visible.empty()) return;  // nothing near: no pass
-    const auto bytes = std::as_bytes(std::span(visible));
-    instances_ = backend_.createBuffer({"grass tufts", BufferKind::Instance, bytes.size()}, bytes);
+bool GrassFeature::prepare(const engine::scene::FeatureFrame& frame) {
+    instances_.beginFrame();
+    visible_ = visibleTufts(tufts_, options_, frame.eye, frame.viewProj, frame.time);
+    drawn_ = visible_.size();
+    return !visible_.empty();  // nothing near: no pass
+}
+
+void GrassFeature::draw(const engine::scene::FeatureFrame& frame) {
+    const BufferHandle instances =
+        instances_.upload("grass tufts", BufferKind::Instance, std::as_bytes(std::span(visible_)));
     const PipelineHandle cards = pipeline(frame.depthFunc);
     PassDesc pass;
     pass.name = "grass";
@@ -77,8 +80,8 @@ void GrassFeature::render(const engine::scene::FeatureFrame& frame) {
     d.vertices = vertices_;
     d.indices = indices_;
     d.count = indexCount_;
-    d.instances = instances_;
-    d.instanceCount = std::uint32_t(visible.size());
+    d.instances = instances;
+    d.instanceCount = std::uint32_t(visible_.size());
     backend_.draw(d);
     passScope.end();
 }

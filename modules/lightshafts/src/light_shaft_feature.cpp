@@ -51,15 +51,18 @@ LightShaftFeature::~LightShaftFeature() {
 
 bool LightShaftFeature::sunVisible() const { return !lastQuery_ || backend_.anySamplesPassed(*lastQuery_); }
 
-void LightShaftFeature::render(const engine::scene::FeatureFrame& frame) {
+bool LightShaftFeature::prepare(const engine::scene::FeatureFrame& frame) {
     ran_ = false;
     lastQuery_.reset();
     // The sun is a direction: a point at infinity (w = 0). Behind the camera: no shafts.
     const glm::vec3 toward = glm::normalize(frame.sun.towardLight);
     const glm::vec4 clip = frame.viewProj * glm::vec4(toward, 0.0f);
-    if (!(clip.w > 1e-6f) || !std::isfinite(clip.x) || !std::isfinite(clip.y)) return;
+    if (!(clip.w > 1e-6f) || !std::isfinite(clip.x) || !std::isfinite(clip.y)) return false;
     sunPixel_ = {(clip.x / clip.w * 0.5f + 0.5f) * float(frame.width), (0.5f - clip.y / clip.w * 0.5f) * float(frame.height)};
-    if (!std::isfinite(sunPixel_.x) || !std::isfinite(sunPixel_.y)) return;
+    return std::isfinite(sunPixel_.x) && std::isfinite(sunPixel_.y);
+}
+
+void LightShaftFeature::draw(const engine::scene::FeatureFrame& frame) {
     const bool greater = frame.depthFunc == CompareFunc::Greater || frame.depthFunc == CompareFunc::GreaterEqual;
     LightShaftParams params;
     params.depth = frame.depth;

@@ -6,14 +6,14 @@
 #include "engine/render/pass_scope.hpp"
 #include "engine/scene/bounds.hpp"
 #include "particles/particle_programs.hpp"
-#include "ssam/screen_region.hpp"
+#include "engine/render/screen_bounds.hpp"
 
 namespace particles {
 
 using namespace engine::render;
 
 ParticleFeature::ParticleFeature(Backend& backend, const ParticleOptions& options, std::uint64_t seed)
-    : backend_(backend), simulation_(options, seed) {
+    : backend_(backend), simulation_(options, seed), buffers_(backend) {
     try {
         particleProgram_ = backend.createProgram(particleProgram());
         compositeProgram_ = backend.createProgram(layerCompositeProgram());
@@ -39,8 +39,6 @@ void ParticleFeature::destroyPrograms() {
 }
 
 ParticleFeature::~ParticleFeature() {
-    for (BufferHandle b : {vertices_, indices_})
-        if (b) backend_.destroy(b);
     if (layer_) backend_.destroy(layer_);
     destroyPrograms();
 }
@@ -66,20 +64,21 @@ void ParticleFeature::ensureLayer(int width, int height) {
     layer_ = backend_.createTexture(desc);
 }
 
-void ParticleFeature::render(const engine::scene::FeatureFrame& frame) {
-    for (BufferHandle* b : {&vertices_, &indices_})
-        if (*b) backend_.destroy(*b), *b = {};
+bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
+    buffers_.beginFrame();
     drawn_ = 0;
+    vertices_.clear();
+    indices_.clear();
     const std::vector<Particle>& live = simulation_.particles();
-    if (live.empty()) return;
+    if (live.empty()) return false;
 
     // Camera-facing quads; the view distance rides in normal.x, "additive" in normal.y
     // (program.hpp ParticleParams). Particles behind the eye are skipped.
     const glm::vec3 right(frame.view[0][0], frame.view[1][0], frame.view[2][0]);
     const glm::vec3 up(frame.view[0][1], frame.view[1][1], frame.view[2][1]);
     const ParticleOptions& o = simulation_.options();
-    std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;
+    std::vector<Vertex>& vertices = vertices_;
+    std::vector<std::uint32_t>& indices = indices_;
     engine::scene::Aabb bounds;  // of every quad: both passes are scissored to its screen region
     vertices.reserve(live.size() * 4);
     indices.reserve(live.size() * 6);
@@ -102,16 +101,21 @@ void ParticleFeature::render(const engine::scene::FeatureFrame& frame) {
         for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(base + i);
     }
     const std::optional<Rect> region =
-        ssam::screenRegion({bounds.min, bounds.max}, frame.viewProj, frame.width, frame.height);
-    if (vertices.empty() || !region) return;
+        engine::render::screenBounds({bounds.min, bounds.max}, frame.viewProj, frame.width, frame.height);
+    if (vertices.empty() || !region) return false;
     drawn_ = vertices.size() / 4;
+    region_ = *region;
+    return true;
+}
+
+void ParticleFeature::draw(const engine::scene::FeatureFrame& frame) {
+    const ParticleOptions& o = simulation_.options();
+    const Rect& region = region_;
 
     const int stride = o.halfResolution ? 2 : 1;
     ensureLayer(std::max(1, (frame.width + stride - 1) / stride), std::max(1, (frame.height + stride - 1) / stride));
-    vertices_ = backend_.createBuffer({"particles", BufferKind::Vertex, vertices.size() * sizeof(Vertex)},
-                                      std::as_bytes(std::span(vertices)));
-    indices_ = backend_.createBuffer({"particle indices", BufferKind::Index, indices.size() * 4},
-                                     std::as_bytes(std::span(indices)));
+    const BufferHandle vertices = buffers_.upload("particles", BufferKind::Vertex, std::as_bytes(std::span(vertices_)));
+    const BufferHandle indices = buffers_.upload("particle indices", BufferKind::Index, std::as_bytes(std::span(indices_)));
     const bool greater = frame.depthFunc == CompareFunc::Greater || frame.depthFunc == CompareFunc::GreaterEqual;
     // distance = P[3][2] / (depth + P[2][2]) for the engine's perspective projections.
     const float depthScale = frame.projection[3][2], depthOffset = frame.projection[2][2];
@@ -123,12 +127,12 @@ void ParticleFeature::render(const engine::scene::FeatureFrame& frame) {
     DrawDesc d;
     d.pipeline = particlePipeline_;
     d.params = ParticleParams{frame.viewProj, frame.depth, stride, depthScale, depthOffset, o.softness, greater};
-    d.vertices = vertices_;
-    d.indices = indices_;
-    d.count = std::uint32_t(indices.size());
-    const int x0 = region->x / stride, y0 = region->y / stride;
-    d.scissor = Rect{x0, y0, (region->x + region->width + stride - 1) / stride - x0 + 1,
-                     (region->y + region->height + stride - 1) / stride - y0 + 1};
+    d.vertices = vertices;
+    d.indices = indices;
+    d.count = std::uint32_t(indices_.size());
+    const int x0 = region.x / stride, y0 = region.y / stride;
+    d.scissor = Rect{x0, y0, (region.x + region.width + stride - 1) / stride - x0 + 1,
+                     (region.y + region.height + stride - 1) / stride - y0 + 1};
     backend_.draw(d);
     passScope.end();
 

@@ -30,7 +30,7 @@ public:
 
     TechniqueKind kind() const override { return TechniqueKind::AlphaTest; }
 
-    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (!visible.empty()) {
             PassDesc pass = opaque.loadPassDesc();

@@ -34,7 +34,7 @@ public:
     TechniqueKind kind() const override { return TechniqueKind::AlphaToCoverage; }
     int opaqueSamples() const override { return kSamples; }
 
-    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (!visible.empty()) {
             if (opaque.desc().samples != kSamples)

@@ -52,7 +52,7 @@ public:
 
     TechniqueKind kind() const override { return TechniqueKind::BlendSorted; }
 
-    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         opaque.resolve();
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (visible.empty()) return;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine/core/error.hpp"
 #include "techniques.hpp"
-#include "transparency/technique.hpp"
+#include "transparency/create_technique.hpp"
 
 namespace transparency {
 

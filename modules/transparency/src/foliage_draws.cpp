@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "foliage_draws.hpp"
 
-#include "ssam/screen_region.hpp"
+#include "engine/render/screen_bounds.hpp"
 
 namespace transparency::detail {
 
@@ -10,22 +10,22 @@ using namespace engine::render;
 std::vector<const FoliageDraw*> visibleDraws(const FoliageFrame& frame, int width, int height) {
     std::vector<const FoliageDraw*> visible;
     for (const FoliageDraw& draw : frame.draws) {
-        const ssam::FoliageBatch& b = draw.batch;
+        const engine::render::MaskedBatch& b = draw.batch;
         if (b.count == 0 || b.instanceCount == 0) continue;
-        if (!ssam::screenRegion(b.worldBounds, frame.viewProj, width, height)) continue;
+        if (!engine::render::screenBounds(b.worldBounds, frame.viewProj, width, height)) continue;
         visible.push_back(&draw);
     }
     return visible;
 }
 
-std::vector<ssam::FoliageBatch> batchesOf(const FoliageFrame& frame) {
-    std::vector<ssam::FoliageBatch> batches;
+std::vector<engine::render::MaskedBatch> batchesOf(const FoliageFrame& frame) {
+    std::vector<engine::render::MaskedBatch> batches;
     batches.reserve(frame.draws.size());
     for (const FoliageDraw& draw : frame.draws) batches.push_back(draw.batch);
     return batches;
 }
 
-SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch& batch) {
+SurfaceParams surfaceParams(const FoliageFrame& frame, const engine::render::MaskedBatch& batch) {
     SurfaceParams params;
     params.viewProj = frame.viewProj;
     params.baseColorFactor = batch.baseColorFactor;
@@ -42,7 +42,7 @@ PipelineDesc foliagePipeline(const char* name) {
     return p;
 }
 
-PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const char* name) {
+PassDesc resolvedPass(const engine::render::FrameTargets& opaque, const char* name) {
     PassDesc pass;
     pass.name = name;
     pass.color[0] = {opaque.color(), LoadOp::Load};
@@ -50,16 +50,8 @@ PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const char* name) {
     return pass;
 }
 
-DrawDesc batchDraw(const ssam::FoliageBatch& batch, PipelineHandle pipeline, DrawParams params) {
-    return ssam::foliageDraw(batch, pipeline, std::move(params));
-}
-
-std::vector<NamedTarget> ssamTargets(const ssam::Intermediates& t) {
-    std::vector<NamedTarget> out;
-    if (t.mask) out.push_back({t.maskAdd ? "mask_max" : "mask", t.mask});
-    if (t.maskAdd) out.push_back({"mask_add", t.maskAdd});
-    if (t.foliage) out.push_back({"foliage", t.foliage});
-    return out;
+DrawDesc batchDraw(const engine::render::MaskedBatch& batch, PipelineHandle pipeline, DrawParams params) {
+    return engine::render::maskedBatchDraw(batch, pipeline, std::move(params));
 }
 
 }  // namespace transparency::detail

@@ -5,7 +5,8 @@
 // the same fragments the same way and differs only in how it combines them.
 #include <vector>
 
-#include "ssam/ssam.hpp"
+#include "engine/render/frame_targets.hpp"
+#include "engine/render/masked_batch.hpp"
 #include "transparency/technique.hpp"
 
 namespace transparency::detail {
@@ -14,10 +15,10 @@ namespace transparency::detail {
 std::vector<const FoliageDraw*> visibleDraws(const FoliageFrame& frame, int width, int height);
 
 // The batches of every draw, for ssam::FoliageView.
-std::vector<ssam::FoliageBatch> batchesOf(const FoliageFrame& frame);
+std::vector<engine::render::MaskedBatch> batchesOf(const FoliageFrame& frame);
 
 // MaskedLit's parameters for one batch under the frame's camera and light.
-engine::render::SurfaceParams surfaceParams(const FoliageFrame& frame, const ssam::FoliageBatch& batch);
+engine::render::SurfaceParams surfaceParams(const FoliageFrame& frame, const engine::render::MaskedBatch& batch);
 
 // MaskedLit on both faces (foliage is double-sided), nothing else set: each technique
 // adds its depth, blend and alpha state.
@@ -25,13 +26,10 @@ engine::render::PipelineDesc foliagePipeline(const char* name);
 
 // The opaque targets' resolved colour and depth, loaded: for techniques that draw after
 // the resolve.
-engine::render::PassDesc resolvedPass(const ssam::OpaqueTargets& opaque, const char* name);
+engine::render::PassDesc resolvedPass(const engine::render::FrameTargets& opaque, const char* name);
 
 // One draw of a batch (all its instances, or `instances`/`instanceCount` when given).
-engine::render::DrawDesc batchDraw(const ssam::FoliageBatch& batch, engine::render::PipelineHandle pipeline,
+engine::render::DrawDesc batchDraw(const engine::render::MaskedBatch& batch, engine::render::PipelineHandle pipeline,
                                    engine::render::DrawParams params);
-
-// SSAM's targets for captures, named as the racer's layers: mask (or mask_max + mask_add), foliage.
-std::vector<NamedTarget> ssamTargets(const ssam::Intermediates& targets);
 
 }  // namespace transparency::detail

@@ -111,4 +111,22 @@ struct CoverageCompositeKernel {
     }
 };
 
+struct TransmittanceCompositeKernel {
+    static constexpr soft::ProgramNeeds kNeeds{};
+    static constexpr bool kReadsPixels = true;
+    const soft::SoftTexture* color = nullptr;
+    const soft::SoftTexture* transmittance = nullptr;
+
+    TransmittanceCompositeKernel(const TransmittanceCompositeParams& p, const soft::TextureLookup& textures)
+        : color(textures.texture(p.color)), transmittance(textures.texture(p.transmittance)) {}
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const float t = soft::fetchTexel(*transmittance, f.x, f.y).r;
+        glm::vec3 c(soft::fetchTexel(*color, f.x, f.y));
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(c[i])) c[i] = 0.0f;
+        return {c, t > 0.0f ? (t < 1.0f ? t : 1.0f) : 0.0f};  // NaN -> 0
+    }
+};
+
 }  // namespace transparency

@@ -70,6 +70,19 @@ void main() {
 }
 )";
 
+// The exact reference's composite (soft: program_kernels.hpp TransmittanceCompositeKernel).
+constexpr const char* kTransmittanceCompositeFragment = R"(
+layout(binding = 0) uniform sampler2D u_color;
+layout(binding = 1) uniform sampler2D u_transmittance;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec3 color = texelFetch(u_color, p, 0).rgb;
+    for (int c = 0; c < 3; ++c)
+        if (isnan(color[c]) || isinf(color[c])) color[c] = 0.0;
+    finish(vec4(color, clamp01(texelFetch(u_transmittance, p, 0).r)));
+}
+)";
+
 }  // namespace
 
 ProgramDesc wboitAccumulateProgram() {
@@ -108,6 +121,19 @@ ProgramDesc coverageCompositeProgram() {
             check.fail("unknown coverage model " + std::to_string(int(model)));
     };
     d.soft = soft::makeKernel<CoverageCompositeKernel, CoverageCompositeParams>();
+    return d;
+}
+
+ProgramDesc transmittanceCompositeProgram() {
+    ProgramDesc d = describeProgram<TransmittanceCompositeParams>("TransmittanceComposite", VertexInput::Fullscreen,
+                                                                  "transparency::TransmittanceCompositeParams");
+    d.gl.fragment = kTransmittanceCompositeFragment;
+    d.gl.textures = {
+        {"u_color", offsetof(TransmittanceCompositeParams, color), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_transmittance", offsetof(TransmittanceCompositeParams, transmittance), 1, TextureRead::Texel,
+         TextureUse::FullSize},
+    };
+    d.soft = soft::makeKernel<TransmittanceCompositeKernel, TransmittanceCompositeParams>();
     return d;
 }
 

@@ -30,9 +30,8 @@
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/render/pass_scope.hpp"
+#include "engine/render/screen_bounds.hpp"
 #include "foliage_draws.hpp"
-#include "ssam/composite_program.hpp"
-#include "ssam/screen_region.hpp"
 #include "techniques.hpp"
 
 namespace transparency::detail {
@@ -95,8 +94,8 @@ public:
         capture_ = backend_.createPipeline(capture);
         PipelineDesc composite;
         composite.name = "reference composite";
-        // SSAM's composite program does "over" with (C, T) as (foliage, mask): see render().
-        compositeProgram_ = backend_.createProgram(ssam::compositeProgram());
+        // "over" for the whole sorted stack at once: C + T * opaque (programs.hpp).
+        compositeProgram_ = backend_.createProgram(transmittanceCompositeProgram());
         composite.program = compositeProgram_;
         composite.blend[0] = {true, BlendFactor::One, BlendFactor::SrcAlpha, BlendOp::Add,
                               BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
@@ -112,7 +111,7 @@ public:
     TechniqueKind kind() const override { return TechniqueKind::Reference; }
     std::optional<ReferenceReport> referenceReport() const override { return report_; }
 
-    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         opaque.resolve();
         report_ = {};
         const int width = opaque.desc().width, height = opaque.desc().height;
@@ -120,8 +119,8 @@ public:
         if (visible.empty()) return;
         Rect region;
         for (const FoliageDraw* draw : visible)
-            if (auto r = ssam::screenRegion(draw->batch.worldBounds, frame.viewProj, width, height))
-                region = ssam::unite(region, *r);
+            if (auto r = engine::render::screenBounds(draw->batch.worldBounds, frame.viewProj, width, height))
+                region = engine::render::unite(region, *r);
 
         // Premultiplied foliage colour C (rgb) and transmittance T, per pixel.
         std::vector<float> color(std::size_t(width) * height * 4, 0.0f), transmittance(std::size_t(width) * height, 1.0f);
@@ -158,9 +157,7 @@ public:
         PassScope passScope(backend_, pass);
         DrawDesc d;
         d.pipeline = composite_;
-        // out = (C, T) blended ONE / SRC_ALPHA: C + T * opaque. mask = maskAdd = T gives
-        // lerp(T, T, .) = T exactly.
-        d.params = ssam::CompositeParams{colorTexture_, transmittanceTexture_, transmittanceTexture_, 0.0f, false};
+        d.params = TransmittanceCompositeParams{colorTexture_, transmittanceTexture_};
         d.scissor = region;
         backend_.draw(d);
         passScope.end();

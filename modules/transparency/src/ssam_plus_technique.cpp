@@ -17,6 +17,7 @@
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "ssam/ssam.hpp"
+#include "ssam_targets.hpp"
 #include "techniques.hpp"
 #include "transparency/programs.hpp"
 
@@ -51,7 +52,7 @@ public:
 
     TechniqueKind kind() const override { return TechniqueKind::SsamPlus; }
 
-    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         opaque.resolve();
         batches_ = batchesOf(frame);
         const ssam::FoliageView view{frame.viewProj, frame.light, batches_};
@@ -81,7 +82,7 @@ private:
     CoverageModel model_;
     Owned<ProgramHandle> program_;  // programs.hpp coverageCompositeProgram
     Owned<PipelineHandle> composite_;
-    std::vector<ssam::FoliageBatch> batches_;
+    std::vector<engine::render::MaskedBatch> batches_;
 };
 
 }  // namespace

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // SSAM as the paper describes it ([Hathaway 2010]), with options.ssam's knobs: the opaque targets
 // are resolved first (SSAM reads the single-sampled rt_opaque and rt_depth, §3.5.1), then
-// ssam::ScreenSpaceAlphaMask runs the mask, colour and composite passes.
+// ssam::ScreenSpaceAlphaMask runs the mask, colour and composite passes (in a frame graph:
+// ssam::addSsamPasses, so with no foliage in view they are skipped as empty).
 #include "foliage_draws.hpp"
+#include "ssam/frame_graph_passes.hpp"
 #include "ssam/ssam.hpp"
+#include "ssam_targets.hpp"
 #include "techniques.hpp"
 
 namespace transparency::detail {
@@ -17,17 +20,28 @@ public:
 
     TechniqueKind kind() const override { return TechniqueKind::Ssam; }
 
-    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         opaque.resolve();
         batches_ = batchesOf(frame);
         ssam_.render({opaque.color(), opaque.depth()}, {frame.viewProj, frame.light, batches_});
+    }
+
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, engine::render::FrameTargets& opaque,
+                                         const engine::render::ColorDepth& drawn,
+                                         const engine::render::ColorDepth& resolved,
+                                         const FoliageFrame& frame) override {
+        const engine::render::ColorDepth frameTargets = opaque.addResolvePass(graph, drawn, resolved);
+        batches_ = batchesOf(frame);
+        view_ = {frame.viewProj, frame.light, batches_};
+        return ssam::addSsamPasses(graph, ssam_, view_, frameTargets);
     }
 
     std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
 
 private:
     ssam::ScreenSpaceAlphaMask ssam_;
-    std::vector<ssam::FoliageBatch> batches_;  // the view's span points here during render
+    std::vector<engine::render::MaskedBatch> batches_;  // the view's span points here during render
+    ssam::FoliageView view_;                            // the graph's passes read it when they execute
 };
 
 }  // namespace

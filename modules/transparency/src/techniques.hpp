@@ -3,7 +3,7 @@
 // The factories behind createTechnique, one per file (modules/transparency/src/*_technique.cpp).
 #include <memory>
 
-#include "transparency/technique.hpp"
+#include "transparency/create_technique.hpp"
 
 namespace transparency::detail {
 

@@ -17,8 +17,8 @@
 #include "engine/core/error.hpp"
 #include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
+#include "engine/render/screen_bounds.hpp"
 #include "foliage_draws.hpp"
-#include "ssam/screen_region.hpp"
 #include "techniques.hpp"
 #include "transparency/programs.hpp"
 
@@ -63,7 +63,7 @@ public:
 
     TechniqueKind kind() const override { return TechniqueKind::Wboit; }
 
-    void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) override {
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         opaque.resolve();
         const int width = opaque.desc().width, height = opaque.desc().height;
         const auto visible = visibleDraws(frame, width, height);
@@ -71,8 +71,8 @@ public:
         ensureTargets(width, height);
         Rect region;
         for (const FoliageDraw* draw : visible)
-            if (auto r = ssam::screenRegion(draw->batch.worldBounds, frame.viewProj, width, height))
-                region = ssam::unite(region, *r);
+            if (auto r = engine::render::screenBounds(draw->batch.worldBounds, frame.viewProj, width, height))
+                region = engine::render::unite(region, *r);
 
         PassDesc accumulate;
         accumulate.name = "wboit accumulate";
@@ -80,7 +80,7 @@ public:
         accumulate.depth = {opaque.depth(), LoadOp::Load};
         PassScope accumulateScope(backend_, accumulate);
         for (const FoliageDraw* draw : visible) {
-            const ssam::FoliageBatch& b = draw->batch;
+            const engine::render::MaskedBatch& b = draw->batch;
             WboitAccumulateParams params{frame.viewProj, b.baseColorFactor, b.baseColor, frame.light, depthScale_};
             backend_.draw(batchDraw(b, accumulatePipeline_, params));
         }
@@ -92,7 +92,7 @@ public:
         reveal.depth = {opaque.depth(), LoadOp::Load};
         PassScope revealScope(backend_, reveal);
         for (const FoliageDraw* draw : visible) {
-            const ssam::FoliageBatch& b = draw->batch;
+            const engine::render::MaskedBatch& b = draw->batch;
             AlphaOnlyParams params;
             params.viewProj = frame.viewProj;
             params.alphaFactor = b.baseColorFactor.a;

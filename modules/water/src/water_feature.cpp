@@ -11,13 +11,12 @@ namespace water {
 using namespace engine;
 using namespace engine::render;
 
-WaterFeature::WaterFeature(const scene::MeshLibrary& library, const Ripples& ripples) : library_(library) {
+WaterFeature::WaterFeature(const scene::MeshLibrary& library, const Ripples& ripples) : library_(library), frameInstances_(library.backend()) {
     setRipples(ripples);
 }
 
 WaterFeature::~WaterFeature() {
     Backend& backend = library_.backend();
-    for (BufferHandle b : frameBuffers_) backend.destroy(b);
     for (auto& [e, s] : surfaces_)
         for (BufferHandle b : s.buffers)
             if (b) backend.destroy(b);
@@ -104,11 +103,13 @@ PipelineHandle WaterFeature::pipeline(CompareFunc depthFunc, bool doubleSided) {
     return it->second;
 }
 
-void WaterFeature::render(const scene::FeatureFrame& frame) {
+bool WaterFeature::prepare(const scene::FeatureFrame& frame) {
+    frameInstances_.beginFrame();
+    return !frame.lists.blend.empty();  // no pool in view: no pass
+}
+
+void WaterFeature::draw(const scene::FeatureFrame& frame) {
     Backend& backend = frame.backend;
-    for (BufferHandle b : frameBuffers_) backend.destroy(b);
-    frameBuffers_.clear();
-    if (frame.lists.blend.empty()) return;  // no pool in view: no pass
     PassDesc pass;
     pass.name = "water";
     pass.color[0] = {frame.color, LoadOp::Load};
@@ -116,8 +117,6 @@ void WaterFeature::render(const scene::FeatureFrame& frame) {
     PassScope passScope(backend, pass);
     for (const scene::DrawBatch& b : frame.lists.blend) {  // already back to front
         const scene::MeshPart& part = frame.library.part(b.part);
-        const auto bytes = std::as_bytes(std::span(b.instances));
-        frameBuffers_.push_back(backend.createBuffer({"water instances", BufferKind::Instance, bytes.size()}, bytes));
         SurfaceParams s;
         s.viewProj = frame.viewProj;
         s.baseColorFactor = part.material.baseColorFactor;
@@ -130,7 +129,7 @@ void WaterFeature::render(const scene::FeatureFrame& frame) {
         d.vertices = scene::vertexBufferOf(b, part);
         d.indices = part.indices;
         d.count = part.indexCount;
-        d.instances = frameBuffers_.back();
+        d.instances = frameInstances_.upload("water instances", BufferKind::Instance, std::as_bytes(std::span(b.instances)));
         d.instanceCount = std::uint32_t(b.instances.size());
         backend.draw(d);
     }

@@ -46,6 +46,29 @@ WindSystem::WindSystem(const scene::MeshLibrary& library) : library_(library) {}
 WindSystem::~WindSystem() {
     for (auto& [e, plant] : plants_)
         for (DeformedPart& p : plant.parts) library_.backend().destroy(p.buffer);
+    destroySpares();
+}
+
+void WindSystem::destroySpares() {
+    for (auto& [part, buffers] : spares_)
+        for (render::BufferHandle b : buffers) library_.backend().destroy(b);
+    spares_.clear();
+}
+
+render::BufferHandle WindSystem::partBuffer(std::uint32_t part, std::span<const Vertex> vertices) {
+    const auto bytes = std::as_bytes(vertices);
+    std::vector<render::BufferHandle>& spare = spares_[part];
+    if (!spare.empty()) {
+        const render::BufferHandle b = spare.back();
+        library_.backend().updateBuffer(b, 0, bytes);
+        spare.pop_back();
+        ++stats_.buffersReused;
+        return b;
+    }
+    const render::BufferHandle b = library_.backend().createBuffer(
+        {library_.part(part).name + " (deformed)", render::BufferKind::Vertex, bytes.size()}, bytes);
+    ++stats_.buffersCreated;
+    return b;
 }
 
 std::size_t WindSystem::attach(ecs::Registry& registry, std::uint32_t seed) const {
@@ -72,7 +95,7 @@ std::span<const Vertex> WindSystem::deformed(ecs::Entity e, std::size_t i) const
 
 void WindSystem::releasePlant(ecs::Registry& registry, ecs::Entity e, DeformedPlant& plant) {
     for (DeformedPart& p : plant.parts) {
-        library_.backend().destroy(p.buffer);
+        spares_[p.part].push_back(p.buffer);
         ++stats_.buffersReleased;
     }
     plant.parts.clear();
@@ -82,6 +105,7 @@ void WindSystem::releasePlant(ecs::Registry& registry, ecs::Entity e, DeformedPl
 void WindSystem::release(ecs::Registry& registry) {
     for (auto& [e, plant] : plants_) releasePlant(registry, e, plant);
     plants_.clear();
+    destroySpares();  // no wind: nothing will be deformed again soon
 }
 
 void WindSystem::update(ecs::Registry& registry) {
@@ -176,10 +200,7 @@ void WindSystem::update(ecs::Registry& registry) {
                 p.flutter = mesh.material.surface == scene::SurfaceClass::Mask;
                 p.vertices = library_.vertices(parts[i]);
                 p.push.assign(p.vertices.size(), glm::vec3(0.0f));
-                const auto bytes = std::as_bytes(std::span(p.vertices));
-                p.buffer = library_.backend().createBuffer(
-                    {mesh.name + " (deformed)", render::BufferKind::Vertex, bytes.size()}, bytes);
-                ++stats_.buffersCreated;
+                p.buffer = partBuffer(parts[i], p.vertices);
                 plant.parts.push_back(std::move(p));
             }
         }

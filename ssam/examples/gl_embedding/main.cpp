@@ -138,7 +138,7 @@ struct HostScene {
     GLuint opaqueProgram = 0, opaqueVao = 0, foliageVao = 0, buffers[2] = {0, 0}, leafTexture = 0;
     GLuint colorTexture = 0, depthTexture = 0, framebuffer = 0;
     GLint viewProjUniform = -1, colorUniform = -1;
-    std::vector<ssam::Bounds> foliageBounds;
+    std::vector<engine::render::BoundingBox> foliageBounds;
 
     HostScene() {
         opaqueProgram = glCreateProgram();
@@ -256,7 +256,7 @@ void renderFrame(HostScene& scene, ssam::gl::ScreenSpaceAlphaMaskGl& ssam) {
     frame.width = kWidth;
     frame.height = kHeight;
     frame.viewProj = viewProjection();
-    frame.foliageBounds = std::span<const ssam::Bounds>(scene.foliageBounds);
+    frame.foliageBounds = std::span<const engine::render::BoundingBox>(scene.foliageBounds);
     ssam.render(frame, [&](const ssam::gl::FoliageProgram& p) { scene.drawFoliage(p); });
 }
 

@@ -9,19 +9,16 @@
 // composite (which reads their outputs) is skipped too and the colour and depth flow
 // through unchanged: SSAM costs nothing.
 #include "engine/render/frame_graph.hpp"
+#include "engine/render/frame_graph/color_depth.hpp"
 #include "ssam/ssam.hpp"
 
 namespace ssam {
 
-struct SsamGraphOutputs {
-    engine::render::FrameGraphTexture color;  // composited colour (the opaque colour when empty)
-    engine::render::FrameGraphTexture depth;  // opaque + foliage depth
-};
-
-// `color` and `depth` must be backed by backend textures (imported, or transient textures
-// from backendTextureAllocator). `view` must outlive the graph's execute().
-// The pass names are "ssam mask", "ssam colour" and "ssam composite".
-SsamGraphOutputs addSsamPasses(engine::render::FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const FoliageView& view,
-                               engine::render::FrameGraphTexture color, engine::render::FrameGraphTexture depth);
+// `frame` (the opaque colour and depth) must be backed by backend textures (imported, or
+// transient textures from a backend allocator). `view` must outlive the graph's execute().
+// Returns the composited colour (the opaque colour when empty) and the opaque + foliage
+// depth. The pass names are "ssam mask", "ssam colour" and "ssam composite".
+engine::render::ColorDepth addSsamPasses(engine::render::FrameGraph& graph, ScreenSpaceAlphaMask& ssam,
+                                         const FoliageView& view, const engine::render::ColorDepth& frame);
 
 }  // namespace ssam

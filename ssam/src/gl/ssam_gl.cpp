@@ -6,10 +6,10 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/core/error.hpp"
+#include "engine/render/screen_bounds.hpp"
 #include "gl_objects.hpp"
 #include "gl_state_guard.hpp"
 #include "shaders.hpp"
-#include "ssam/screen_region.hpp"
 
 namespace ssam::gl {
 
@@ -190,7 +190,7 @@ GlIntermediates ScreenSpaceAlphaMaskGl::intermediates() const {
 namespace {
 
 // The composite's scissor in GL window coordinates, or nullopt when no bound is in view.
-// screenRegion() expects our backend's clip conventions (z in [0, w], NDC +y = row 0): the
+// screenBounds() expects our backend's clip conventions (z in [0, w], NDC +y = row 0): the
 // engine's are read from glClipControl's state and mapped to them.
 std::optional<Rect> compositeRegion(const FrameDesc& frame, bool clipControl) {
     if (!frame.foliageBounds) return Rect{0, 0, frame.width, frame.height};
@@ -208,14 +208,14 @@ std::optional<Rect> compositeRegion(const FrameDesc& frame, bool clipControl) {
     }
     Rect region;
     bool any = false;
-    for (const Bounds& b : *frame.foliageBounds) {
-        const std::optional<Rect> r = screenRegion(b, viewProj, frame.width, frame.height);
+    for (const engine::render::BoundingBox& b : *frame.foliageBounds) {
+        const std::optional<Rect> r = screenBounds(b, viewProj, frame.width, frame.height);
         if (!r) continue;
         region = unite(region, *r);
         any = true;
     }
     if (!any) return std::nullopt;
-    // screenRegion's rows count from NDC +1; with GL_LOWER_LEFT that is the top window row.
+    // screenBounds's rows count from NDC +1; with GL_LOWER_LEFT that is the top window row.
     if (origin == GL_LOWER_LEFT) region.y = frame.height - (region.y + region.height);
     return region;
 }

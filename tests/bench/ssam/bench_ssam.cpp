@@ -13,9 +13,9 @@
 #include <memory>
 #include <vector>
 
+#include "engine/render/frame_targets.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
-#include "ssam/opaque_targets.hpp"
 #include "ssam/ssam.hpp"
 
 namespace {
@@ -54,7 +54,7 @@ std::vector<Quad> foliageQuads(bool inView) {
 
 void frame(benchmark::State& state, Case c) {
     auto backend = soft::createSoftBackend({static_cast<int>(state.range(0))});
-    ssam::OpaqueTargets opaque(*backend, {kWidth, kHeight, 1, Format::RGBA8_SRGB, CompareFunc::Less});
+    engine::render::FrameTargets opaque(*backend, {kWidth, kHeight, 1, Format::RGBA8_SRGB, CompareFunc::Less});
     ssam::ScreenSpaceAlphaMask ssam(*backend);
     PipelineDesc p;
     p.name = "opaque flat";

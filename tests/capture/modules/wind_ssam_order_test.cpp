@@ -12,11 +12,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/assets/gltf.hpp"
+#include "engine/render/frame_targets.hpp"
 #include "engine/render/projection.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/components.hpp"
 #include "engine/scene/draw_lists.hpp"
-#include "ssam/opaque_targets.hpp"
 #include "ssam/ssam.hpp"
 #include "wind/wind_system.hpp"
 
@@ -76,18 +76,18 @@ struct TwoTrees {
     // Plain unsorted alpha blending of the same batches instead of SSAM: the control that
     // shows the scene really is order-sensitive.
     Frame render(bool reversed, bool unsortedBlend = false) {
-        ssam::OpaqueTargets opaque(*backend, {kWidth, kHeight, 1, Format::RGBA8_SRGB, CompareFunc::Greater});
+        engine::render::FrameTargets opaque(*backend, {kWidth, kHeight, 1, Format::RGBA8_SRGB, CompareFunc::Greater});
         ssam::Config config;
         config.depthFunc = CompareFunc::Greater;
         ssam::ScreenSpaceAlphaMask ssam(*backend, config);
         const scene::DrawLists lists = scene::extractDrawLists(registry, library, viewProj, eye);
         std::vector<BufferHandle> buffers;
-        std::vector<ssam::FoliageBatch> batches;
+        std::vector<engine::render::MaskedBatch> batches;
         for (const scene::DrawBatch& b : lists.mask) {
             const scene::MeshPart& part = library.part(b.part);
             const auto bytes = std::as_bytes(std::span(b.instances));
             buffers.push_back(backend->createBuffer({"instances", BufferKind::Instance, bytes.size()}, bytes));
-            ssam::FoliageBatch f;
+            engine::render::MaskedBatch f;
             f.vertices = scene::vertexBufferOf(b, part);
             f.indices = part.indices;
             f.count = part.indexCount;
@@ -115,7 +115,7 @@ struct TwoTrees {
             pass.color[0] = {opaque.color(), LoadOp::Load};
             pass.depth = {opaque.depth(), LoadOp::Load};
             backend->beginPass(pass);
-            for (const ssam::FoliageBatch& f : batches) {
+            for (const engine::render::MaskedBatch& f : batches) {
                 DrawDesc d;
                 d.pipeline = pipeline;
                 d.params = SurfaceParams{viewProj, f.baseColorFactor, f.baseColor, kSun};

@@ -7,9 +7,9 @@
 
 #include "engine/capture/exr_layers.hpp"
 #include "engine/capture/target_capture.hpp"
+#include "engine/render/frame_targets.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
-#include "ssam/opaque_targets.hpp"
 #include "ssam/ssam.hpp"
 
 namespace {
@@ -19,7 +19,7 @@ namespace capture = engine::capture;
 
 TEST(SsamCapture, EveryIntermediateIsALayerOfOneExr) {
     auto backend = soft::createSoftBackend({});
-    ssam::OpaqueTargets opaque(*backend, {16, 16, 1, Format::RGBA8_SRGB, CompareFunc::Less});
+    engine::render::FrameTargets opaque(*backend, {16, 16, 1, Format::RGBA8_SRGB, CompareFunc::Less});
     backend->beginPass(opaque.passDesc({0.2f, 0.4f, 0.6f, 1.0f}));
     backend->endPass();
     ssam::testing::QuadBatches quads(*backend, {{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.4f}},

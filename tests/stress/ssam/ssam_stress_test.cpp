@@ -10,10 +10,10 @@
 
 #include <Imath/half.h>
 
+#include "engine/render/frame_targets.hpp"
 #include "engine/render/projection.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
-#include "ssam/opaque_targets.hpp"
 #include "ssam/ssam.hpp"
 
 namespace {
@@ -34,7 +34,7 @@ struct Result {
 Result renderLayers(ssam::MaskPrecision precision, const std::vector<Quad>& quads,
                     std::uint8_t colorFormat = std::uint8_t(Format::RGBA8_UNORM)) {
     auto backend = soft::createSoftBackend({});
-    ssam::OpaqueTargets opaque(*backend, {kSize, kSize, 1, Format(colorFormat), CompareFunc::Less});
+    engine::render::FrameTargets opaque(*backend, {kSize, kSize, 1, Format(colorFormat), CompareFunc::Less});
     backend->beginPass(opaque.passDesc(kOpaque));
     backend->endPass();
     ssam::Config config;
@@ -141,7 +141,7 @@ TEST(SsamStress, NonFiniteVertexDataNeverReachesTheImage) {
 
 TEST(SsamStress, NonFiniteTextureAlphaAndUvs) {
     auto backend = soft::createSoftBackend({});
-    ssam::OpaqueTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA16F, CompareFunc::Less});
+    engine::render::FrameTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA16F, CompareFunc::Less});
     backend->beginPass(opaque.passDesc(kOpaque));
     backend->endPass();
     // A float texture whose texels are NaN, +Inf and -Inf in every channel.
@@ -158,7 +158,7 @@ TEST(SsamStress, NonFiniteTextureAlphaAndUvs) {
     vertices[2].uv = {-INFINITY, 1e30f};
     const auto bytes = std::as_bytes(std::span(vertices));
     const BufferHandle vb = backend->createBuffer({"quad", BufferKind::Vertex, bytes.size()}, bytes);
-    ssam::FoliageBatch batch;
+    engine::render::MaskedBatch batch;
     batch.vertices = vb;
     batch.count = 6;
     batch.baseColor.texture = texture;
@@ -185,7 +185,7 @@ TEST(SsamStress, ReverseZResolvesThirtyKilometreVistas) {
     // wherever the colour pass writes, whatever the submission order.
     for (const bool nearFirst : {true, false}) {
         auto backend = soft::createSoftBackend({});
-        ssam::OpaqueTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA8_UNORM, CompareFunc::Greater});
+        engine::render::FrameTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA8_UNORM, CompareFunc::Greater});
         backend->beginPass(opaque.passDesc(kOpaque));
         backend->endPass();
         const glm::mat4 proj = perspectiveReverseZ(1.0f, 1.0f, kNear, kFar);
@@ -197,11 +197,11 @@ TEST(SsamStress, ReverseZResolvesThirtyKilometreVistas) {
         std::vector<engine::render::Vertex> near = quadAt(29000.0f, {1, 0, 0, 1}), far = quadAt(29010.0f, {0, 1, 0, 1});
         std::vector<std::vector<engine::render::Vertex>> order = nearFirst ? std::vector{near, far} : std::vector{far, near};
         std::vector<BufferHandle> buffers;
-        std::vector<ssam::FoliageBatch> batches;
+        std::vector<engine::render::MaskedBatch> batches;
         for (const auto& v : order) {
             const auto bytes = std::as_bytes(std::span(v));
             buffers.push_back(backend->createBuffer({"q", BufferKind::Vertex, bytes.size()}, bytes));
-            ssam::FoliageBatch b;
+            engine::render::MaskedBatch b;
             b.vertices = buffers.back();
             b.count = 6;
             b.worldBounds = {{-3e4f, -3e4f, -3e4f}, {3e4f, 3e4f, -2.8e4f}};

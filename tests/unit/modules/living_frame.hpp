@@ -9,11 +9,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/core/ecs/registry.hpp"
+#include "engine/render/frame_targets.hpp"
 #include "engine/render/projection.hpp"
 #include "engine/scene/components.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "engine/scene/frame_feature.hpp"
-#include "ssam/opaque_targets.hpp"
 #include "ssam/ssam.hpp"
 
 namespace living::testing {
@@ -33,7 +33,7 @@ struct LivingFrame {
     engine::render::Backend& backend;
     const engine::scene::MeshLibrary& library;
     int width, height;
-    ssam::OpaqueTargets opaque{backend, {width, height, 1, engine::render::Format::RGBA8_UNORM,
+    engine::render::FrameTargets opaque{backend, {width, height, 1, engine::render::Format::RGBA8_UNORM,
                                          engine::render::CompareFunc::Greater}};
     std::unique_ptr<ssam::ScreenSpaceAlphaMask> ssam = [this] {
         ssam::Config c;
@@ -84,10 +84,10 @@ struct LivingFrame {
             backend.draw(d);
         }
         backend.endPass();
-        std::vector<ssam::FoliageBatch> foliage;
+        std::vector<engine::render::MaskedBatch> foliage;
         for (const engine::scene::DrawBatch& b : lists.mask) {
             const engine::scene::MeshPart& part = library.part(b.part);
-            ssam::FoliageBatch f;
+            engine::render::MaskedBatch f;
             f.vertices = engine::scene::vertexBufferOf(b, part);
             f.indices = part.indices;
             f.count = part.indexCount;

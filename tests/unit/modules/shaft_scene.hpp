@@ -45,11 +45,13 @@ struct ShaftScene {
             engine::scene::Feature* inner = nullptr;
             glm::vec3 toward{0.0f};
             std::string_view name() const override { return "sun"; }
-            void render(const engine::scene::FeatureFrame& f) override {
+            engine::scene::FeatureFrame withSun(const engine::scene::FeatureFrame& f) const {
                 engine::scene::FeatureFrame g = f;
                 g.sun.towardLight = toward;
-                if (inner) inner->render(g);
+                return g;
             }
+            bool prepare(const engine::scene::FeatureFrame& f) override { return inner && inner->prepare(withSun(f)); }
+            void draw(const engine::scene::FeatureFrame& f) override { inner->draw(withSun(f)); }
         } wrapper;
         wrapper.inner = feature;
         wrapper.toward = towardSun;

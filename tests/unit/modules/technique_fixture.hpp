@@ -6,10 +6,10 @@
 #include <memory>
 #include <vector>
 
+#include "engine/render/frame_targets.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
-#include "ssam/opaque_targets.hpp"
-#include "transparency/technique.hpp"
+#include "transparency/create_technique.hpp"
 
 namespace transparency::testing {
 
@@ -22,7 +22,7 @@ inline const glm::vec4 kOpaqueColor{0.2f, 0.4f, 0.6f, 1.0f};
 
 struct TechniqueFrame {
     Backend& backend;
-    ssam::OpaqueTargets opaque;
+    engine::render::FrameTargets opaque;
     std::unique_ptr<ssam::testing::QuadBatches> quads;
     std::vector<FoliageDraw> draws;
 

@@ -60,7 +60,7 @@ TEST(TechniquesGl, WboitDepthWeightMatchesTheSoftBackend) {
         quad(40.0f, 0.2f, {0, 0, 1, 0.7f});
         const auto bytes = std::as_bytes(std::span(vertices));
         const BufferHandle buffer = backend.createBuffer({"quads", BufferKind::Vertex, bytes.size()}, bytes);
-        ssam::OpaqueTargets opaque(backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
+        engine::render::FrameTargets opaque(backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
         FoliageDraw draw;
         draw.batch.vertices = buffer;
         draw.batch.count = std::uint32_t(vertices.size());

@@ -153,7 +153,7 @@ TEST(Techniques, SortedBlendingSortsTheInstancesOfOneBatch) {
         }
         const auto bytes = std::as_bytes(std::span(instances));
         const BufferHandle buffer = backend->createBuffer({"instances", BufferKind::Instance, bytes.size()}, bytes);
-        ssam::OpaqueTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA32F, func});
+        engine::render::FrameTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA32F, func});
         ssam::testing::QuadBatches quad(*backend, {{-1.0f, -1.0f, 1.0f, 1.0f, 0.0f, glm::vec4(1.0f)}});
         FoliageDraw draw;
         draw.batch = quad.batches[0];
@@ -258,7 +258,7 @@ TEST(Techniques, WboitWeightsNearerLayersMore) {
     vertices.insert(vertices.end(), nearQuad.begin(), nearQuad.end());
     const auto bytes = std::as_bytes(std::span(vertices));
     const BufferHandle buffer = backend->createBuffer({"quads", BufferKind::Vertex, bytes.size()}, bytes);
-    ssam::OpaqueTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
+    engine::render::FrameTargets opaque(*backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
     FoliageDraw draw;
     draw.batch.vertices = buffer;
     draw.batch.count = 12;

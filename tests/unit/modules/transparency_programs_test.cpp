@@ -103,7 +103,7 @@ TEST(TransparencyPrograms, FragmentCaptureNeedsASingleSampledDepthTestedPass) {
     NullSink sink;
     for (int samples : {1, 4})
         for (bool depthTest : {false, true}) {
-            ssam::OpaqueTargets opaque(*b, {8, 8, samples, Format::RGBA8_UNORM, CompareFunc::Less});
+            engine::render::FrameTargets opaque(*b, {8, 8, samples, Format::RGBA8_UNORM, CompareFunc::Less});
             PipelineDesc p;
             p.name = "capture";
             p.program = ProgramKind::MaskedLit;

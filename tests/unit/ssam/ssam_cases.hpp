@@ -20,9 +20,10 @@
 #include "engine/render/backend.hpp"
 #include "engine/render/frame_graph.hpp"
 #include "engine/render/frame_graph/backend_textures.hpp"
+#include "engine/render/frame_graph/side_effect_pass.hpp"
+#include "engine/render/frame_targets.hpp"
 #include "quad_scene.hpp"
 #include "ssam/frame_graph_passes.hpp"
-#include "ssam/opaque_targets.hpp"
 #include "ssam/ssam.hpp"
 
 namespace ssam_cases {
@@ -54,7 +55,7 @@ inline float q8(float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f)
 template <typename BackendKind>
 struct Frame {
     std::unique_ptr<Backend> backend = BackendKind::create();
-    ssam::OpaqueTargets opaque;
+    engine::render::FrameTargets opaque;
     explicit Frame(int samples = 1)
         : opaque(*backend, {kSize, kSize, samples, Format::RGBA8_UNORM, CompareFunc::Less}) {}
 
@@ -300,16 +301,7 @@ inline std::vector<std::string> runGraph(Frame<BackendKind>& f, ssam::ScreenSpac
                                            toConcrete(f.opaque.color()));
     const auto depth = graph.importTexture("rt_depth", graphDescOf(f.backend->describe(f.opaque.depth())),
                                            toConcrete(f.opaque.depth()));
-    const auto out = ssam::addSsamPasses(graph, ssam, view, color, depth);
-    struct Present {};
-    graph.addPass<Present>(
-        "present",
-        [&](FrameGraph::Builder& b, Present&) {
-            b.read(out.color);
-            b.read(out.depth);
-            b.sideEffect();
-        },
-        [](const FrameGraph::Resources&, const Present&) {});
+    addSideEffectPass(graph, "present", ssam::addSsamPasses(graph, ssam, view, {color, depth}));
     graph.execute(backendTextureAllocator(*f.backend));
     return graph.executedPassNames();
 }
@@ -339,7 +331,6 @@ TYPED_TEST_P(SsamCases, FrameGraphRunsThreePassesWithFoliageAndNoneWithout) {
     EXPECT_EQ(runGraph(g, ssam3, viewOf(hidden)), (std::vector<std::string>{"present"}));
     EXPECT_EQ(ssamPassesTimed(*g.backend), 0);
 }
-
 
 REGISTER_TYPED_TEST_SUITE_P(SsamCases,
     CrossingQuadsGiveMaxAndAddMasks,

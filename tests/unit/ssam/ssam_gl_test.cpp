@@ -16,12 +16,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "expect_error.hpp"
 #include "engine/core/error.hpp"
+#include "engine/render/frame_targets.hpp"
 #include "engine/render/gl/gl_backend.hpp"
+#include "expect_error.hpp"
 #include "quad_scene.hpp"
 #include "ssam/gl/ssam_gl.hpp"
-#include "ssam/opaque_targets.hpp"
 #include "ssam/ssam.hpp"
 
 namespace {
@@ -69,8 +69,8 @@ struct HostFoliage {
     }
 };
 
-std::vector<ssam::Bounds> boundsOf(const std::vector<Quad>& qs) {
-    std::vector<ssam::Bounds> out;
+std::vector<engine::render::BoundingBox> boundsOf(const std::vector<Quad>& qs) {
+    std::vector<engine::render::BoundingBox> out;
     for (const Quad& q : qs) out.push_back({{q.x0, q.y0, q.depth}, {q.x1, q.y1, q.depth}});
     return out;
 }
@@ -79,11 +79,11 @@ struct Host {
     std::unique_ptr<gl::GlBackend> backend = gl::createGlBackend({});
 
     // Opaque targets cleared to kOpaqueColor and the far depth (plus an optional opaque quad).
-    std::unique_ptr<ssam::OpaqueTargets> opaque(CompareFunc depthFunc = CompareFunc::Less,
+    std::unique_ptr<engine::render::FrameTargets> opaque(CompareFunc depthFunc = CompareFunc::Less,
                                                  Format format = Format::RGBA8_UNORM,
                                                  const std::vector<Quad>& quads = {}) {
-        auto targets = std::make_unique<ssam::OpaqueTargets>(*backend,
-                                                              ssam::OpaqueTargetsDesc{kSize, kSize, 1, format, depthFunc});
+        auto targets = std::make_unique<engine::render::FrameTargets>(*backend,
+                                                              engine::render::FrameTargetsDesc{kSize, kSize, 1, format, depthFunc});
         PipelineDesc p;
         p.name = "opaque flat";
         p.depth = DepthState::testAndWrite(depthFunc);
@@ -96,7 +96,7 @@ struct Host {
         return targets;
     }
 
-    ssam::gl::FrameDesc frameOf(const ssam::OpaqueTargets& t) const {
+    ssam::gl::FrameDesc frameOf(const engine::render::FrameTargets& t) const {
         ssam::gl::FrameDesc f;
         f.colorTexture = backend->glTexture(t.color());
         f.depthTexture = backend->glTexture(t.depth());
@@ -180,9 +180,9 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
         auto targets = host.opaque(k.config.depthFunc, k.colorFormat);
         ssam::gl::ScreenSpaceAlphaMaskGl glSsam(k.config);
         HostFoliage foliage(quads);
-        const std::vector<ssam::Bounds> bounds = boundsOf(quads);
+        const std::vector<engine::render::BoundingBox> bounds = boundsOf(quads);
         ssam::gl::FrameDesc frame = host.frameOf(*targets);
-        frame.foliageBounds = std::span<const ssam::Bounds>(bounds);
+        frame.foliageBounds = std::span<const engine::render::BoundingBox>(bounds);
         int calls = 0;
         const ssam::gl::FrameReport report =
             glSsam.render(frame, [&](const ssam::gl::FoliageProgram& p) { ++calls, foliage.draw(p); });
@@ -248,9 +248,9 @@ TEST(SsamGl, NothingInViewRunsNoPassAndNeverCallsBack) {
     auto targets = host.opaque();
     const Readback before = host.backend->readback(targets->color());
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
-    const std::vector<ssam::Bounds> bounds{{{-1, -1, -0.5f}, {1, 1, -0.5f}}, {{3, 3, 0.5f}, {4, 4, 0.5f}}};
+    const std::vector<engine::render::BoundingBox> bounds{{{-1, -1, -0.5f}, {1, 1, -0.5f}}, {{3, 3, 0.5f}, {4, 4, 0.5f}}};
     ssam::gl::FrameDesc frame = host.frameOf(*targets);
-    frame.foliageBounds = std::span<const ssam::Bounds>(bounds);
+    frame.foliageBounds = std::span<const engine::render::BoundingBox>(bounds);
     int calls = 0;
     EXPECT_EQ(ssam.render(frame, [&](const ssam::gl::FoliageProgram&) { ++calls; }).passesRun, 0);
     EXPECT_EQ(calls, 0);
@@ -265,11 +265,11 @@ TEST(SsamGl, CompositeIsScissoredToTheFoliage) {
     auto targets = host.opaque();
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     HostFoliage foliage({{-1.0f, 0.0f, 0.0f, 1.0f, 0.5f, {1, 1, 1, 1.0f}}});
-    const std::vector<ssam::Bounds> bounds{{{-1.0f, 0.5f, 0.5f}, {-0.5f, 1.0f, 0.5f}}};
+    const std::vector<engine::render::BoundingBox> bounds{{{-1.0f, 0.5f, 0.5f}, {-0.5f, 1.0f, 0.5f}}};
     ssam::gl::FrameDesc frame = host.frameOf(*targets);
-    frame.foliageBounds = std::span<const ssam::Bounds>(bounds);
+    frame.foliageBounds = std::span<const engine::render::BoundingBox>(bounds);
     const ssam::gl::FrameReport report = ssam.render(frame, [&](const ssam::gl::FoliageProgram& p) { foliage.draw(p); });
-    // The backend's clip origin is GL_UPPER_LEFT: window row 0 is the top, as in screenRegion().
+    // The backend's clip origin is GL_UPPER_LEFT: window row 0 is the top, as in screenBounds().
     EXPECT_EQ(report.compositeRegion.x, 0);
     EXPECT_EQ(report.compositeRegion.y, 0);
     EXPECT_LE(report.compositeRegion.width, 6);
@@ -382,7 +382,7 @@ using ssam::testing::expectError;
 TEST(SsamGl, BadInputIsRejectedWithClearErrors) {
     Host host;
     auto targets = host.opaque();
-    auto small = std::make_unique<ssam::OpaqueTargets>(*host.backend, ssam::OpaqueTargetsDesc{8, 8, 1, Format::RGBA8_UNORM});
+    auto small = std::make_unique<engine::render::FrameTargets>(*host.backend, engine::render::FrameTargetsDesc{8, 8, 1, Format::RGBA8_UNORM});
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     const auto draw = [](const ssam::gl::FoliageProgram&) {};
     const ssam::gl::FrameDesc good = host.frameOf(*targets);

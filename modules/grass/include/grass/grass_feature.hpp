@@ -6,6 +6,7 @@
 // behind it and the passes after (water, particles) see the grass ([Hathaway 2010] §3.7).
 #include <vector>
 
+#include "engine/render/frame_buffer_pool.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "grass/grass_field.hpp"
 
@@ -20,7 +21,9 @@ public:
     GrassFeature& operator=(const GrassFeature&) = delete;
 
     std::string_view name() const override { return "grass"; }
-    void render(const engine::scene::FeatureFrame& frame) override;
+    bool prepare(const engine::scene::FeatureFrame& frame) override;
+    void draw(const engine::scene::FeatureFrame& frame) override;
+    bool writesDepth() const override { return true; }
 
     std::size_t tufts() const { return tufts_.size(); }
     std::size_t drawnLastFrame() const { return drawn_; }
@@ -31,7 +34,9 @@ private:
     engine::render::Backend& backend_;
     GrassOptions options_;
     std::vector<Tuft> tufts_;
-    engine::render::BufferHandle vertices_, indices_, instances_;
+    engine::render::BufferHandle vertices_, indices_;
+    engine::render::FrameBufferPool instances_;
+    std::vector<engine::render::Instance> visible_;  // prepare()'s tufts, drawn by draw()
     std::uint32_t indexCount_ = 0;
     engine::render::TextureHandle blades_;
     engine::render::PipelineHandle pipeline_;

@@ -40,7 +40,8 @@ public:
     LightShaftFeature& operator=(const LightShaftFeature&) = delete;
 
     std::string_view name() const override { return "light shafts"; }
-    void render(const engine::scene::FeatureFrame& frame) override;
+    bool prepare(const engine::scene::FeatureFrame& frame) override;
+    void draw(const engine::scene::FeatureFrame& frame) override;
 
     // Whether the last frame issued the pass, and where the sun was (pixels). An issued pass
     // may still be skipped by the backend: takeTimings() marks it, or ask sunVisible().

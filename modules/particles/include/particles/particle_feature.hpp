@@ -11,6 +11,7 @@
 // No live particle in view: neither pass runs.
 #include <memory>
 
+#include "engine/render/frame_buffer_pool.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "particles/particle_simulation.hpp"
 
@@ -26,7 +27,8 @@ public:
     std::string_view name() const override { return "particles"; }
     void registerSystems(engine::ecs::Scheduler& scheduler) override;
     void beginFrame(const engine::scene::SimulationFrame& frame) override { dt_ = frame.dt; }
-    void render(const engine::scene::FeatureFrame& frame) override;
+    bool prepare(const engine::scene::FeatureFrame& frame) override;
+    void draw(const engine::scene::FeatureFrame& frame) override;
 
     ParticleSimulation& simulation() { return simulation_; }
     // The layer of the last frame (null before one was drawn), for tests and captures.
@@ -44,7 +46,11 @@ private:
     engine::render::ProgramHandle particleProgram_, compositeProgram_;  // particle_programs.hpp
     engine::render::PipelineHandle particlePipeline_, compositePipeline_;
     engine::render::TextureHandle layer_;
-    engine::render::BufferHandle vertices_, indices_;
+    engine::render::FrameBufferPool buffers_;  // the quads, reused frame after frame
+    // What prepare() found: camera-facing quads and the screen region they touch.
+    std::vector<engine::render::Vertex> vertices_;
+    std::vector<std::uint32_t> indices_;
+    engine::render::Rect region_;
     std::size_t drawn_ = 0;
 };
 

@@ -59,10 +59,21 @@ struct CoverageCompositeParams {
     CoverageModel model = CoverageModel::EqualLayers;
 };
 
+// TransmittanceComposite (the exact reference): a premultiplied colour C and the
+// transmittance T of what lies in front of the target, one texel per pixel,
+//   out = (C.rgb, T), C's non-finite components as 0, T = transmittance.r clamped to [0,1]
+// (NaN -> 0); the pipeline blends it ONE / SRC_ALPHA, so the target becomes C + T * target:
+// "over" for a whole stack of layers at once.
+struct TransmittanceCompositeParams {
+    engine::render::TextureHandle color;
+    engine::render::TextureHandle transmittance;
+};
+
 // For Backend::createProgram. Full-screen inputs must be at least the target's size; the
 // coverage model must be one of the above.
 engine::render::ProgramDesc wboitAccumulateProgram();
 engine::render::ProgramDesc wboitResolveProgram();
 engine::render::ProgramDesc coverageCompositeProgram();
+engine::render::ProgramDesc transmittanceCompositeProgram();
 
 }  // namespace transparency

@@ -13,12 +13,16 @@
 
 #include <glm/glm.hpp>
 
-#include "transparency/programs.hpp"
 #include "engine/render/backend.hpp"
+#include "engine/render/frame_graph/color_depth.hpp"
+#include "engine/render/frame_targets.hpp"
+#include "engine/render/masked_batch.hpp"
 #include "engine/render/vertex.hpp"
-#include "ssam/config.hpp"
-#include "ssam/foliage.hpp"
-#include "ssam/opaque_targets.hpp"
+#include "transparency/programs.hpp"
+
+namespace engine::render {
+class FrameGraph;
+}
 
 namespace transparency {
 
@@ -43,9 +47,9 @@ std::optional<TechniqueKind> parseTechnique(std::string_view name);
 // One batch of foliage, both as GPU handles (to draw it) and as the CPU copy of its
 // instances (for techniques that reorder instances, such as sorted blending).
 struct FoliageDraw {
-    ssam::FoliageBatch batch;
+    engine::render::MaskedBatch batch;
     std::span<const engine::render::Instance> instances;  // the contents of batch.instances
-    ssam::Bounds meshBounds;                              // of one instance, in model space
+    engine::render::BoundingBox meshBounds;                              // of one instance, in model space
     float alphaCutoff = 0.5f;  // the material's (glTF alphaCutoff): alpha-test techniques use it
 };
 
@@ -54,27 +58,6 @@ struct FoliageFrame {
     glm::vec3 eye{0.0f};
     engine::render::DirectionalLight light;
     std::span<const FoliageDraw> draws;
-};
-
-// SSAM+ (README "SSAM+"): SSAM's mask and colour passes, with a float mask and the
-// composite's coverage estimated from the MAX and ADD masks (engine/render program.hpp
-// CoverageModel) instead of lerp(max, add, 0.85) squared.
-struct SsamPlusOptions {
-    CoverageModel coverage = CoverageModel::EqualLayers;
-    ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::RG16F;  // ADD must not saturate at 1
-    float colorAlphaReference = 64.0f / 255.0f;                        // the colour pass's ([Hathaway 2010] §3.5.3)
-};
-
-struct TechniqueOptions {
-    ssam::Config ssam;  // SSAM's knobs; ssam.depthFunc is the scene's depth function for all
-    // alpha-test's reference: unset, each material's own (FoliageDraw::alphaCutoff, glTF's
-    // alphaCutoff, 0.5 by default); set, one reference for every draw.
-    std::optional<float> alphaTestReference;
-    std::size_t referenceFragmentsPerPixel = 256;  // the exact reference's cap (reported, never truncated silently)
-    // WBOIT's weight (McGuire & Bavoil 2013 eq. 7) is tuned for view depths in metres,
-    // 0.1 to 500: view depth * wboitDepthScale is what it sees.
-    float wboitDepthScale = 1.0f;
-    SsamPlusOptions ssamPlus;
 };
 
 // What the exact reference found in its last frame (Technique::referenceReport).
@@ -103,15 +86,22 @@ public:
     // draws the foliage, resolves, and leaves the final colour in opaque.color() and, in
     // opaque.depth(), the depth later passes test against (the foliage depth where the
     // technique writes one). No foliage in view: costs (almost) nothing.
-    virtual void render(ssam::OpaqueTargets& opaque, const FoliageFrame& frame) = 0;
+    virtual void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) = 0;
+    // The same work as frame-graph passes, after the opaque pass drew into `opaque`:
+    // `drawn` holds the versions it left in what it drew into (the MSAA targets, or the
+    // resolved ones when single-sampled), `resolved` the imported rt_opaque and rt_depth.
+    // Returns the versions of the resolved colour and depth the technique leaves. By default
+    // one pass named after the technique reads and writes all of them and calls render()
+    // (which may draw into the MSAA targets before resolving, as alpha testing does); SSAM
+    // declares its mask, colour and composite passes, which are empty with no foliage in view.
+    // `frame` and what it points to must outlive the graph's execute().
+    virtual engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, engine::render::FrameTargets& opaque,
+                                                 const engine::render::ColorDepth& drawn,
+                                                 const engine::render::ColorDepth& resolved, const FoliageFrame& frame);
     // The intermediate targets of the last frame, for captures; empty when there are none.
     virtual std::vector<NamedTarget> intermediates() const { return {}; }
     // The reference's report on its last frame; nullopt for every other technique.
     virtual std::optional<ReferenceReport> referenceReport() const { return std::nullopt; }
 };
-
-// Throws engine::Error when the backend cannot run the technique (the message says why).
-std::unique_ptr<Technique> createTechnique(TechniqueKind kind, engine::render::Backend& backend,
-                                           const TechniqueOptions& options);
 
 }  // namespace transparency

@@ -8,6 +8,7 @@
 #include <map>
 #include <vector>
 
+#include "engine/render/frame_buffer_pool.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "water/ripples.hpp"
 
@@ -21,7 +22,8 @@ public:
     std::string_view name() const override { return "water"; }
     void registerSystems(engine::ecs::Scheduler& scheduler) override;
     void beginFrame(const engine::scene::SimulationFrame& frame) override { frame_ = frame; }
-    void render(const engine::scene::FeatureFrame& frame) override;
+    bool prepare(const engine::scene::FeatureFrame& frame) override;
+    void draw(const engine::scene::FeatureFrame& frame) override;
 
     void setRipples(const Ripples& ripples);  // validated
     // The ripple system on its own (what the scheduler runs).
@@ -41,7 +43,7 @@ private:
     engine::scene::SimulationFrame frame_;
     std::map<engine::ecs::Entity, Surface> surfaces_;
     std::map<std::pair<engine::render::CompareFunc, bool>, engine::render::PipelineHandle> pipelines_;
-    std::vector<engine::render::BufferHandle> frameBuffers_;  // instance data of the last frame
+    engine::render::FrameBufferPool frameInstances_;  // instance data, reused frame after frame
 };
 
 }  // namespace water

@@ -18,6 +18,11 @@ public:
     std::string_view name() const override { return "wind"; }
     void registerSystems(engine::ecs::Scheduler& scheduler) override;
     void beginFrame(const engine::scene::SimulationFrame& frame) override;
+    // Wind only deforms (its system); it adds no pass to the frame.
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph&, const engine::scene::FeatureFrame&,
+                                         const engine::render::ColorDepth& targets) override {
+        return targets;
+    }
 
     WindSystem& system() { return system_; }
 

@@ -7,7 +7,9 @@
 // is in view and within Wind::activeRadius of the camera or near a Collider gets its own
 // copy of its mesh (a VertexOverride, which extraction draws instead of the shared mesh);
 // every other plant keeps the shared static mesh and costs nothing. A plant that stops
-// being active gives its buffers back and is drawn from the shared mesh again.
+// being active gives its buffers back and is drawn from the shared mesh again; the buffers
+// are kept for the next plant of the same part, so driving along the track creates no
+// buffer once as many plants as are ever active at once have been (racer's FramePooling test).
 //
 // Deterministic: the result is a function of the registry, the frame's time and dt, and
 // does not depend on the number of threads (plants are deformed independently, oneTBB).
@@ -36,7 +38,8 @@ struct WindStats {
     std::size_t plantsDeformed = 0;    // this update
     std::size_t verticesDeformed = 0;  // this update
     std::size_t buffersCreated = 0;    // since construction
-    std::size_t buffersReleased = 0;   // since construction
+    std::size_t buffersReused = 0;     // since construction: a spare of the same part, no create
+    std::size_t buffersReleased = 0;   // since construction: given back (kept as spares)
 };
 
 class WindSystem {
@@ -79,11 +82,15 @@ private:
     };
 
     void releasePlant(engine::ecs::Registry& registry, engine::ecs::Entity e, DeformedPlant& plant);
+    // A vertex buffer for a deformed copy of library part `part`: a spare one, or a new one.
+    engine::render::BufferHandle partBuffer(std::uint32_t part, std::span<const engine::render::Vertex> vertices);
+    void destroySpares();
 
     const engine::scene::MeshLibrary& library_;
     WindFrame frame_;
     WindStats stats_;
     std::map<engine::ecs::Entity, DeformedPlant> plants_;  // ordered: deterministic walks
+    std::map<std::uint32_t, std::vector<engine::render::BufferHandle>> spares_;  // by library part
 };
 
 }  // namespace wind

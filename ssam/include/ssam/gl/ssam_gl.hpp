@@ -19,7 +19,7 @@
 // in the same order both times (§3.8: only consistency of dispatch order is needed).
 //
 // Independent of our engine: no ECS, assets, windowing or render backend; only the GL-free
-// ssam core (Config, Bounds, screenRegion) and the current GL context (through libepoxy).
+// ssam core (Config) and the engine render layer (BoundingBox, screenBounds) and the current GL context (through libepoxy).
 #include <functional>
 #include <memory>
 #include <optional>
@@ -87,7 +87,7 @@ struct FrameDesc {
     // World-space bounds of what the callback draws. Given: no pass runs (and the callback is
     // not called) when none is in view, and the composite is scissored to their screen region.
     // Not given: every pass runs and the composite covers the whole target.
-    std::optional<std::span<const Bounds>> foliageBounds;
+    std::optional<std::span<const engine::render::BoundingBox>> foliageBounds;
 };
 
 struct FrameReport {

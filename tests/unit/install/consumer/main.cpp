@@ -10,11 +10,11 @@
 #include <cstring>
 
 #include <engine/core/error.hpp>
+#include <engine/render/frame_targets.hpp>
 #include <engine/render/gl/gl_backend.hpp>
 #include <engine/render/soft/soft_backend.hpp>
 #include <engine/render/vertex.hpp>
 #include <ssam/gl/ssam_gl.hpp>
-#include <ssam/opaque_targets.hpp>
 #include <ssam/ssam.hpp>
 #include <ssam/version.hpp>
 
@@ -24,7 +24,7 @@ namespace {
 
 // The centre pixel's red and blue after SSAM composites the leaf over the opaque scene.
 bool leafOverBlue(Backend& backend, const char* name) {
-    ssam::OpaqueTargets opaque(backend, {8, 8, 1, Format::RGBA8_UNORM, CompareFunc::Less});
+    engine::render::FrameTargets opaque(backend, {8, 8, 1, Format::RGBA8_UNORM, CompareFunc::Less});
     backend.beginPass(opaque.passDesc({0.0f, 0.0f, 1.0f, 1.0f}));  // opaque scene: blue
     backend.endPass();
 
@@ -35,7 +35,7 @@ bool leafOverBlue(Backend& backend, const char* name) {
         v[i].color = {1.0f, 0.0f, 0.0f, 0.5f};  // red leaf, alpha 0.5
     }
     const auto bytes = std::as_bytes(std::span(v));
-    ssam::FoliageBatch leaf;
+    engine::render::MaskedBatch leaf;
     leaf.vertices = backend.createBuffer({"leaf", BufferKind::Vertex, bytes.size()}, bytes);
     leaf.count = 6;
     leaf.worldBounds = {{-1, -1, 0.5f}, {1, 1, 0.5f}};

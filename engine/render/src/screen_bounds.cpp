@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: MIT
-#include "ssam/screen_region.hpp"
+#include "engine/render/screen_bounds.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace ssam {
+namespace engine::render {
 
-using engine::render::Rect;
-
-std::optional<Rect> screenRegion(const Bounds& b, const glm::mat4& viewProj, int width, int height) {
+std::optional<Rect> screenBounds(const BoundingBox& b, const glm::mat4& viewProj, int width, int height) {
     glm::vec4 corners[8];
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 p((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z);
@@ -51,4 +49,4 @@ Rect unite(const Rect& a, const Rect& b) {
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-}  // namespace ssam
+}  // namespace engine::render

@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "ssam/foliage.hpp"
+#include "engine/render/masked_batch.hpp"
 
-namespace ssam {
+namespace engine::render {
 
-using namespace engine::render;
-
-DrawDesc foliageDraw(const FoliageBatch& batch, PipelineHandle pipeline, DrawParams params) {
+DrawDesc maskedBatchDraw(const MaskedBatch& batch, PipelineHandle pipeline, DrawParams params) {
     DrawDesc d;
     d.pipeline = pipeline;
     d.params = std::move(params);
@@ -18,4 +16,4 @@ DrawDesc foliageDraw(const FoliageBatch& batch, PipelineHandle pipeline, DrawPar
     return d;
 }
 
-}  // namespace ssam
+}  // namespace engine::render

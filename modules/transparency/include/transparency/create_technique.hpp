@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Making a technique, and every technique's options. SSAM's knobs are among them (the SSAM
+// and SSAM+ adapters are the part of this module that uses ssam/), so this header, not
+// technique.hpp, is where the transparency module meets ssam/: code that only draws through
+// a Technique never includes ssam/.
+#include <cstddef>
+#include <memory>
+#include <optional>
+
+#include "ssam/config.hpp"
+#include "transparency/programs.hpp"
+#include "transparency/technique.hpp"
+
+namespace transparency {
+
+// SSAM+ (README "SSAM+"): SSAM's mask and colour passes, with a float mask and the
+// composite's coverage estimated from the MAX and ADD masks (transparency/programs.hpp
+// CoverageModel) instead of lerp(max, add, 0.85) squared.
+struct SsamPlusOptions {
+    CoverageModel coverage = CoverageModel::EqualLayers;
+    ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::RG16F;  // ADD must not saturate at 1
+    float colorAlphaReference = 64.0f / 255.0f;                        // the colour pass's ([Hathaway 2010] §3.5.3)
+};
+
+struct TechniqueOptions {
+    ssam::Config ssam;  // SSAM's knobs; ssam.depthFunc is the scene's depth function for all
+    // alpha-test's reference: unset, each material's own (FoliageDraw::alphaCutoff, glTF's
+    // alphaCutoff, 0.5 by default); set, one reference for every draw.
+    std::optional<float> alphaTestReference;
+    std::size_t referenceFragmentsPerPixel = 256;  // the exact reference's cap (reported, never truncated silently)
+    // WBOIT's weight (McGuire & Bavoil 2013 eq. 7) is tuned for view depths in metres,
+    // 0.1 to 500: view depth * wboitDepthScale is what it sees.
+    float wboitDepthScale = 1.0f;
+    SsamPlusOptions ssamPlus;
+};
+
+// Throws engine::Error when the backend cannot run the technique (the message says why).
+std::unique_ptr<Technique> createTechnique(TechniqueKind kind, engine::render::Backend& backend,
+                                           const TechniqueOptions& options);
+
+}  // namespace transparency
