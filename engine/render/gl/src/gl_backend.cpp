@@ -21,11 +21,13 @@
 #include "engine/core/log.hpp"
 #include "engine/render/gl/fail_mode_plan.hpp"
 #include "engine/render/gl/gl_program.hpp"
+#include "engine/render/memory_budget.hpp"
 #include "engine/render/resource_pool.hpp"
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
 #include "gl_shaders.hpp"
+#include "gl_texture_limits.hpp"
 #include "texel_codec.hpp"
 
 namespace engine::render::gl {
@@ -248,6 +250,7 @@ public:
         info_.glslVersion = reinterpret_cast<const char*>(glGetString(GL_SHADING_LANGUAGE_VERSION));
         info_.context = context_ ? context_->describe() : std::string("current context");
         glGetIntegerv(GL_MAX_SAMPLES, &info_.maxSamples);
+        textureLimits_ = queryGlTextureLimits(info_.renderer);
 
         if (options_.debugOutput && (major > 4 || minor >= 3 || epoxy_has_gl_extension("GL_KHR_debug"))) {
             glEnable(GL_DEBUG_OUTPUT);
@@ -325,6 +328,7 @@ public:
                 throw Error(what + ": initial data for a multisampled texture (the GL backend cannot upload samples)");
         }
         makeCurrent();
+        checkGlTextureFits(desc, what, textureLimits_);
         drainGlErrors();
         GlTexture t;
         t.desc = desc;
@@ -727,6 +731,7 @@ public:
         r.channels = info.channels;
         r.format = t.desc.format;
         const std::size_t values = std::size_t(r.width) * r.height * r.channels;
+        checkFitsInMemory(values * sizeof(float), "readback of " + quotedName(t.desc.name) + " as float", hostMemoryAvailable);
         r.values.resize(values);
         makeCurrent();
         drainGlErrors();
@@ -1280,6 +1285,7 @@ private:
     GlOptions options_;
     std::shared_ptr<GlContext> context_;
     GlInfo info_;
+    GlTextureLimits textureLimits_;
     int glMajor_ = 4, glMinor_ = 5;
     ResourcePool<TextureTag, GlTexture> textures_;
     ResourcePool<BufferTag, GlBuffer> buffers_;

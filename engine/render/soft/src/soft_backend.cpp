@@ -15,6 +15,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
+#include "engine/render/memory_budget.hpp"
 #include "engine/render/resource_pool.hpp"
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
@@ -109,6 +110,10 @@ public:
         const std::string what = "texture " + quotedName(desc.name);
         validateTexture(desc, what);
         const FormatInfo& info = formatInfo(desc.format);
+        // Texels, plus the float alpha plane copyAlpha keeps beside sampled RGBA8 textures.
+        const bool alphaPlane = (desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB) &&
+                                desc.samples == 1 && !(desc.usage & UsageRenderTarget);
+        checkFitsInMemory(textureBytes(desc) * (alphaPlane ? 2 : 1), what + ": " + describeSize(desc), hostMemoryAvailable);
 
         SoftTexture t;
         t.desc = desc;
@@ -302,6 +307,8 @@ public:
         r.height = t.desc.height;
         r.channels = info.channels;
         r.format = t.desc.format;
+        checkFitsInMemory(std::uint64_t(r.width) * r.height * r.channels * sizeof(float),
+                          "readback of " + quotedName(t.desc.name) + " as float", hostMemoryAvailable);
         r.values.resize(std::size_t(r.width) * r.height * r.channels);
         const ByteTables& tables = byteTables();
         for (int y = 0; y < r.height; ++y) {

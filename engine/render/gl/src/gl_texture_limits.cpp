@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#include "gl_texture_limits.hpp"
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+
+#include "engine/core/error.hpp"
+
+namespace engine::render::gl {
+
+namespace {
+
+// Extension enums, not in every GL header.
+constexpr GLenum kGpuMemoryCurrentAvailableNvx = 0x9049;  // GL_NVX_gpu_memory_info, KiB
+constexpr GLenum kTextureFreeMemoryAti = 0x87FC;          // GL_ATI_meminfo, KiB (4 values: the first is the total free)
+
+bool rendersOnTheCpu(const std::string& renderer) {
+    for (const char* name : {"llvmpipe", "softpipe", "swrast"})
+        if (renderer.find(name) != std::string::npos) return true;
+    return false;
+}
+
+MemoryProbe memoryProbe(const std::string& renderer) {
+    if (rendersOnTheCpu(renderer)) return hostMemoryAvailable;
+    if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info"))
+        return []() -> std::optional<AvailableMemory> {
+            GLint kib = 0;
+            glGetIntegerv(kGpuMemoryCurrentAvailableNvx, &kib);
+            if (kib <= 0) return std::nullopt;
+            return AvailableMemory{std::uint64_t(kib) << 10, "GL_NVX_gpu_memory_info's available video memory"};
+        };
+    if (epoxy_has_gl_extension("GL_ATI_meminfo"))
+        return []() -> std::optional<AvailableMemory> {
+            GLint kib[4] = {};
+            glGetIntegerv(kTextureFreeMemoryAti, kib);
+            if (kib[0] <= 0) return std::nullopt;
+            return AvailableMemory{std::uint64_t(kib[0]) << 10, "GL_ATI_meminfo's free texture memory"};
+        };
+    return {};
+}
+
+}  // namespace
+
+GlTextureLimits queryGlTextureLimits(const std::string& renderer) {
+    GlTextureLimits limits;
+    limits.renderer = renderer;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limits.maxTextureSize);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &limits.maxFramebufferWidth);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &limits.maxFramebufferHeight);
+    limits.memory = memoryProbe(renderer);
+    return limits;
+}
+
+void checkGlTextureFits(const TextureDesc& desc, const std::string& what, const GlTextureLimits& limits) {
+    const std::string by = " (" + limits.renderer + ")";
+    if (desc.width > limits.maxTextureSize || desc.height > limits.maxTextureSize)
+        throw Error(what + ": " + describeSize(desc) + " exceeds this GL implementation's GL_MAX_TEXTURE_SIZE of " +
+                    std::to_string(limits.maxTextureSize) + by);
+    if ((desc.usage & UsageRenderTarget) &&
+        (desc.width > limits.maxFramebufferWidth || desc.height > limits.maxFramebufferHeight))
+        throw Error(what + ": render target " + describeSize(desc) + " exceeds this GL implementation's framebuffer limit of " +
+                    std::to_string(limits.maxFramebufferWidth) + "x" + std::to_string(limits.maxFramebufferHeight) + by);
+    checkFitsInMemory(textureBytes(desc), what + ": " + describeSize(desc), limits.memory);
+}
+
+}  // namespace engine::render::gl
