@@ -2,6 +2,7 @@
 #include "oiio_input.hpp"
 
 #include "engine/capture/jpeg_metadata.hpp"
+#include "exr_header_sizes.hpp"
 #include "engine/core/error.hpp"
 
 #include <algorithm>
@@ -121,6 +122,11 @@ OpenedImage openImage(const std::filesystem::path& path, const ReadOptions& opti
         // OpenImageIO 2.4 takes the proxy from the config once a config is given.
         void* proxy = opened.jpegReader.get();
         config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    }
+    {
+        std::ifstream exr(path, std::ios::binary);
+        const std::string oversized = oversizedExrAttribute(exr, std::filesystem::file_size(path, ec));
+        if (!oversized.empty()) throwImageError(path, "corrupt EXR: " + oversized);
     }
     opened.input = OIIO::ImageInput::open(path.string(), &config);
     if (!opened.input) throwImageError(path, "cannot open as an image", OIIO::geterror());
