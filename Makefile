@@ -23,7 +23,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
 # which bundles npm and which Debian's npm package would try to replace).
 NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test demo bench readme-images readme-chart content clean node-tools fuzz
+.PHONY: all deps configure build test demo bench readme-images readme-chart content clean node-tools fuzz fuzz-campaign
 
 all: build
 
@@ -91,6 +91,14 @@ bench: build
 FUZZ_SECONDS ?= 60
 fuzz: deps
 	FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_BUILD_JOBS=$(JOBS) tests/fuzz/run_fuzzers.sh
+
+# The campaign tests/README.md reports: every target at once for FUZZ_SECONDS (default 1800),
+# niced, hangs at 30 s (the targets share the cores), then each grown corpus minimised into
+# out/fuzz/<target>/minimised.
+fuzz-campaign: deps
+	FUZZ_SECONDS=$(if $(filter command line,$(origin FUZZ_SECONDS)),$(FUZZ_SECONDS),1800) \
+	  FUZZ_CONCURRENT=1 FUZZ_NICE=19 FUZZ_TIMEOUT=30 FUZZ_MERGE=1 FUZZ_BUILD_JOBS=$(JOBS) \
+	  tests/fuzz/run_fuzzers.sh
 
 clean:
 	rm -rf $(BUILD_DIR)
