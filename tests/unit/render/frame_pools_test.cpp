@@ -32,9 +32,9 @@ TEST_F(Pools, BufferPoolReusesAcrossFramesAndGrowsInPowersOfTwo) {
     const BufferHandle b = pool.upload("instances", BufferKind::Instance, bytesOfInstances(20));
     EXPECT_NE(a, b);  // both in use in one frame
     EXPECT_EQ(backend.creates, 2);
-    // Capacities: the minimum of 16 elements, and 20 rounded up to a power of two.
-    backend.updateBuffer(a, 0, bytesOfInstances(16));
-    EXPECT_THROW(backend.updateBuffer(a, 0, bytesOfInstances(17)), engine::Error);
+    // Capacities: whole elements, rounded up to a power of two (3 -> 4, 20 -> 32).
+    backend.updateBuffer(a, 0, bytesOfInstances(4));
+    EXPECT_THROW(backend.updateBuffer(a, 0, bytesOfInstances(5)), engine::Error);
     backend.updateBuffer(b, 0, bytesOfInstances(32));
     EXPECT_THROW(backend.updateBuffer(b, 0, bytesOfInstances(33)), engine::Error);
 

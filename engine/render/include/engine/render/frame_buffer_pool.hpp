@@ -24,7 +24,7 @@ namespace engine::render {
 class FrameBufferPool {
 public:
     static constexpr std::uint64_t kRetireAfterFrames = 120;
-    static constexpr std::uint64_t kMinimumElements = 16;
+    static constexpr std::uint64_t kMinimumElements = 1;  // a one-instance batch costs one instance
 
     explicit FrameBufferPool(Backend& backend) : backend_(backend) {}
     ~FrameBufferPool();
