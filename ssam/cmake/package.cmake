@@ -17,6 +17,7 @@ include(CMakePackageConfigHelpers)
 set(_ssam_generated ${CMAKE_CURRENT_BINARY_DIR}/generated)
 configure_file(${CMAKE_CURRENT_LIST_DIR}/version.hpp.in ${_ssam_generated}/ssam/version.hpp @ONLY)
 target_include_directories(ssam PUBLIC $<BUILD_INTERFACE:${_ssam_generated}>)
+target_include_directories(ssam_gl PUBLIC $<BUILD_INTERFACE:${_ssam_generated}>)
 
 # The public headers use C++20 (std::span, designated initialisers): consumers get it from the targets.
 target_compile_features(engine_core PUBLIC cxx_std_20)

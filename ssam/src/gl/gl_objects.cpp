@@ -1,40 +1,40 @@
 // SPDX-License-Identifier: MIT
 #include "gl_objects.hpp"
 
-#include <dlfcn.h>
-#include <epoxy/gl.h>
-
 #include <algorithm>
 #include <cstdio>
 
-#include "engine/core/error.hpp"
+#include "failure.hpp"
+#include "gl_functions.hpp"
 
-namespace ssam::gl {
+namespace ssam::gl::detail {
 
 namespace {
 
-std::string infoLog(GLuint object, bool program) {
+std::string infoLog(const GlFunctions& gl, GLuint object, bool program) {
     GLint length = 0;
-    program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    program ? gl.GetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
+            : gl.GetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(std::size_t(std::max(length, 1)), '\0');
-    program ? glGetProgramInfoLog(object, length, nullptr, log.data())
-            : glGetShaderInfoLog(object, length, nullptr, log.data());
+    program ? gl.GetProgramInfoLog(object, length, nullptr, log.data())
+            : gl.GetShaderInfoLog(object, length, nullptr, log.data());
     while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
     return log;
 }
 
-GLuint compileStage(const std::string& name, GLenum stage, const char* source) {
-    const GLuint shader = glCreateShader(stage);
-    if (!shader) throw engine::Error("ssam_gl program '" + name + "': glCreateShader failed (no current context?)");
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
+GLuint compileStage(const GlFunctions& gl, const std::string& name, GLenum stage, const char* source) {
+    const GLuint shader = gl.CreateShader(stage);
+    if (!shader) throw Failure(Status::ShaderFailed, "ssam::gl program '" + name + "': glCreateShader failed");
+    gl.ShaderSource(shader, 1, &source, nullptr);
+    gl.CompileShader(shader);
     GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        const std::string log = infoLog(shader, false);
-        glDeleteShader(shader);
-        throw engine::Error("ssam_gl program '" + name + "': " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                            " shader does not compile:\n" + log);
+        const std::string log = infoLog(gl, shader, false);
+        gl.DeleteShader(shader);
+        throw Failure(Status::ShaderFailed, "ssam::gl program '" + name +
+                                                "': " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                                                " shader does not compile:\n" + log);
     }
     return shader;
 }
@@ -56,74 +56,63 @@ const char* framebufferStatusName(GLenum status) {
 
 }  // namespace
 
-bool hasCurrentContext() {
-    // RTLD_NOLOAD: only a library the host already uses can hold its current context.
-    auto current = [](const char* library, const char* function) {
-        void* handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
-        if (!handle) return false;
-        using GetCurrent = void* (*)();
-        const auto get = reinterpret_cast<GetCurrent>(dlsym(handle, function));
-        const bool found = get && get() != nullptr;
-        dlclose(handle);
-        return found;
-    };
-    return current("libEGL.so.1", "eglGetCurrentContext") || current("libGLX.so.0", "glXGetCurrentContext") ||
-           current("libGL.so.1", "glXGetCurrentContext");
-}
-
-unsigned int compileProgram(const std::string& name, const char* vertexSource, const char* fragmentSource) {
-    const GLuint vs = compileStage(name, GL_VERTEX_SHADER, vertexSource);
+unsigned int compileProgram(const GlFunctions& gl, const std::string& name, const char* vertexSource,
+                            const char* fragmentSource) {
+    const GLuint vs = compileStage(gl, name, GL_VERTEX_SHADER, vertexSource);
     GLuint fs = 0;
     try {
-        fs = compileStage(name, GL_FRAGMENT_SHADER, fragmentSource);
+        fs = compileStage(gl, name, GL_FRAGMENT_SHADER, fragmentSource);
     } catch (...) {
-        glDeleteShader(vs);
+        gl.DeleteShader(vs);
         throw;
     }
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    const GLuint program = gl.CreateProgram();
+    gl.AttachShader(program, vs);
+    gl.AttachShader(program, fs);
+    gl.LinkProgram(program);
+    gl.DeleteShader(vs);
+    gl.DeleteShader(fs);
     GLint ok = GL_FALSE;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
-        const std::string log = infoLog(program, true);
-        glDeleteProgram(program);
-        throw engine::Error("ssam_gl program '" + name + "' does not link:\n" + log);
+        const std::string log = infoLog(gl, program, true);
+        gl.DeleteProgram(program);
+        throw Failure(Status::ShaderFailed, "ssam::gl program '" + name + "' does not link:\n" + log);
     }
     return program;
 }
 
-TextureInfo inspectTexture2D(unsigned int texture, const char* what) {
-    if (texture == 0 || !glIsTexture(texture))
-        throw engine::Error(std::string("ssam_gl: ") + what + " " + std::to_string(texture) +
+TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what) {
+    if (texture == 0 || !gl.IsTexture(texture))
+        throw Failure(Status::InvalidTexture, std::string("ssam::gl: ") + what + " " + std::to_string(texture) +
                             " is not a GL texture name (0, deleted, or never bound)");
     GLint previous = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
-    while (glGetError() != GL_NO_ERROR) {
-    }  // errors the host left pending would be taken for ours
-    glBindTexture(GL_TEXTURE_2D, texture);
-    if (glGetError() != GL_NO_ERROR) {
-        glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
-        throw engine::Error(std::string("ssam_gl: ") + what + " " + std::to_string(texture) +
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
+    // An error the host left pending would be taken for ours (reported at the frame's start);
+    // bounded, as a lost context may answer GL_CONTEXT_LOST forever.
+    for (int i = 0; i < 16 && gl.GetError() != GL_NO_ERROR; ++i) {
+    }
+    gl.BindTexture(GL_TEXTURE_2D, texture);
+    if (gl.GetError() != GL_NO_ERROR) {
+        gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+        throw Failure(Status::InvalidTexture, std::string("ssam::gl: ") + what + " " + std::to_string(texture) +
                             " is not a GL_TEXTURE_2D (multisampled, array, cube... textures are not supported: "
                             "resolve to a single-sample 2D texture first)");
     }
     TextureInfo info;
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &info.width);
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &info.height);
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &info.internalFormat);
-    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &info.width);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &info.height);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &info.internalFormat);
+    gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
     return info;
 }
 
-void checkDrawFramebuffer(const char* what) {
-    const GLenum status = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
+void checkDrawFramebuffer(const GlFunctions& gl, const char* what) {
+    const GLenum status = gl.CheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw engine::Error(std::string("ssam_gl: the ") + what + " framebuffer is incomplete: " +
-                            framebufferStatusName(status));
+        throw Failure(
+            Status::IncompleteFramebuffer,
+            std::string("ssam::gl: the ") + what + " framebuffer is incomplete: " + framebufferStatusName(status));
 }
 
 const char* internalFormatName(int internalFormat) {
@@ -147,4 +136,4 @@ const char* internalFormatName(int internalFormat) {
     return hex;
 }
 
-}  // namespace ssam::gl
+}  // namespace ssam::gl::detail

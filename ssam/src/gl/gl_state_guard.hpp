@@ -1,19 +1,22 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Saves every piece of GL state ssam_gl changes and restores it on destruction (also when the
-// engine's callback throws), so SSAM can run in the middle of an engine's frame. The list is
-// the README's "Embedding with raw OpenGL": framebuffer bindings, viewport, scissor box and
-// test, blend enable / equations / factors (draw buffers 0 and 1), colour write masks (0 and 1),
-// depth test / write mask / function, face culling, stencil test, polygon offset fill,
-// alpha-to-coverage, GL_FRAMEBUFFER_SRGB, colour logic op, rasterizer discard, program, vertex array, GL_ARRAY_BUFFER, active texture
-// unit, the GL_TEXTURE_2D bindings of units 0-2 and generic vertex attributes 1-7.
+// Saves every piece of GL state ssam::gl changes and restores it on destruction (also when the
+// host's callback throws), so SSAM can run in the middle of a host's frame. The list is
+// ssam/README.md's "With raw OpenGL": framebuffer bindings, viewport, scissor box and test,
+// blend enable / equations / factors (draw buffers 0 and 1), colour write masks (0 and 1), depth
+// test / write mask / function, face culling, stencil test, polygon offset fill,
+// alpha-to-coverage, GL_FRAMEBUFFER_SRGB, colour logic op, rasterizer discard, program, vertex
+// array, GL_ARRAY_BUFFER, active texture unit, the GL_TEXTURE_2D bindings of units 0-2 and
+// generic vertex attributes 1-7.
 #include <array>
 
-namespace ssam::gl {
+namespace ssam::gl::detail {
+
+struct GlFunctions;
 
 class GlStateGuard {
 public:
-    explicit GlStateGuard(bool perBufferBlend);
+    explicit GlStateGuard(const GlFunctions& gl);
     ~GlStateGuard();
     GlStateGuard(const GlStateGuard&) = delete;
     GlStateGuard& operator=(const GlStateGuard&) = delete;
@@ -24,6 +27,7 @@ private:
         int equationRgb = 0, equationAlpha = 0, srcRgb = 0, dstRgb = 0, srcAlpha = 0, dstAlpha = 0;
         std::array<unsigned char, 4> colorMask{};
     };
+    const GlFunctions& gl_;
     bool perBufferBlend_;
     int drawFramebuffer_ = 0, readFramebuffer_ = 0;
     std::array<int, 4> viewport_{}, scissorBox_{};
@@ -37,4 +41,4 @@ private:
     std::array<std::array<float, 4>, 8> attributes_{};
 };
 
-}  // namespace ssam::gl
+}  // namespace ssam::gl::detail

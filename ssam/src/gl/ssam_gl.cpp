@@ -1,408 +1,577 @@
 // SPDX-License-Identifier: MIT
+// ssam::gl's public API: the pass state machine of a frame (way b), the built-in programs on top
+// of it (way a), and the boundary where every internal Failure becomes a Status + message.
 #include "ssam/gl/ssam_gl.hpp"
 
-#include <epoxy/gl.h>
-
-#include <glm/gtc/type_ptr.hpp>
+#include <cmath>
+#include <cstdio>
+#include <new>
+#include <optional>
+#include <string>
 
 #include "engine/core/error.hpp"
-#include "engine/render/screen_bounds.hpp"
+#include "failure.hpp"
+#include "frame_targets.hpp"
+#include "gl_functions.hpp"
 #include "gl_objects.hpp"
 #include "gl_state_guard.hpp"
 #include "shaders.hpp"
+#include "ssam/config.hpp"
 
 namespace ssam::gl {
 
-using engine::Error;
-using engine::render::Rect;
+using detail::Failure;
+using detail::GlFunctions;
+using detail::GlStateGuard;
 
-const char* foliagePassName(FoliagePass pass) { return pass == FoliagePass::Mask ? "mask" : "colour"; }
+const char* statusName(Status status) noexcept {
+    switch (status) {
+        case Status::Ok: return "ok";
+        case Status::InvalidArgument: return "invalid argument";
+        case Status::InvalidCall: return "invalid call";
+        case Status::NoContext: return "no context";
+        case Status::MissingEntryPoint: return "missing entry point";
+        case Status::UnsupportedFeature: return "unsupported feature";
+        case Status::InvalidTexture: return "invalid texture";
+        case Status::IncompleteFramebuffer: return "incomplete framebuffer";
+        case Status::ShaderFailed: return "shader failed";
+        case Status::CallbackFailed: return "callback failed";
+        case Status::OutOfMemory: return "out of memory";
+        case Status::Internal: return "internal error";
+    }
+    return "unknown status";
+}
 
-void FoliageProgram::setModel(const glm::mat4& model) const {
-    glUniformMatrix4fv(modelUniform, 1, GL_FALSE, glm::value_ptr(model));
+const char* severityName(Severity severity) noexcept {
+    switch (severity) {
+        case Severity::Info: return "info";
+        case Severity::Warning: return "warning";
+        case Severity::Error: return "error";
+    }
+    return "unknown severity";
 }
-void FoliageProgram::setBaseColorFactor(const glm::vec4& factor) const {
-    glUniform4fv(baseColorFactorUniform, 1, glm::value_ptr(factor));
+
+const char* foliagePassName(FoliagePass pass) noexcept { return pass == FoliagePass::Mask ? "mask" : "colour"; }
+
+void FoliageProgram::setModel(const float columnMajor[16]) const noexcept {
+    if (gl) gl->UniformMatrix4fv(modelUniform, 1, GL_FALSE, columnMajor);
 }
-void FoliageProgram::bindBaseColorTexture(unsigned int texture) const {
-    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(baseColorTextureUnit));
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glUniform1i(hasTextureUniform, texture != 0 ? 1 : 0);
+void FoliageProgram::setBaseColorFactor(float r, float g, float b, float a) const noexcept {
+    if (gl) gl->Uniform4f(baseColorFactorUniform, r, g, b, a);
+}
+void FoliageProgram::bindBaseColorTexture(unsigned int texture) const noexcept {
+    if (!gl) return;
+    gl->ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(baseColorTextureUnit));
+    gl->BindTexture(GL_TEXTURE_2D, texture);
+    gl->Uniform1i(hasTextureUniform, texture != 0 ? 1 : 0);
 }
 
 namespace {
 
-GLenum toGl(engine::render::CompareFunc f) {
-    using engine::render::CompareFunc;
-    switch (f) {
-        case CompareFunc::Never: return GL_NEVER;
-        case CompareFunc::Less: return GL_LESS;
-        case CompareFunc::Equal: return GL_EQUAL;
-        case CompareFunc::LessEqual: return GL_LEQUAL;
-        case CompareFunc::Greater: return GL_GREATER;
-        case CompareFunc::NotEqual: return GL_NOTEQUAL;
-        case CompareFunc::GreaterEqual: return GL_GEQUAL;
-        case CompareFunc::Always: return GL_ALWAYS;
+GLenum toGl(DepthTest test) {
+    switch (test) {
+        case DepthTest::Less: return GL_LESS;
+        case DepthTest::LessEqual: return GL_LEQUAL;
+        case DepthTest::Greater: return GL_GREATER;
+        case DepthTest::GreaterEqual: return GL_GEQUAL;
     }
     return GL_LESS;
 }
 
-bool isColorFormat(GLint f) { return f == GL_RGBA8 || f == GL_SRGB8_ALPHA8 || f == GL_RGBA16F || f == GL_RGBA32F; }
-bool isDepthFormat(GLint f) {
-    return f == GL_DEPTH_COMPONENT16 || f == GL_DEPTH_COMPONENT24 || f == GL_DEPTH_COMPONENT32F ||
-           f == GL_DEPTH24_STENCIL8 || f == GL_DEPTH32F_STENCIL8;
-}
-bool hasStencil(GLint f) { return f == GL_DEPTH24_STENCIL8 || f == GL_DEPTH32F_STENCIL8; }
-
-GLuint createTarget(GLint internalFormat, int width, int height) {
-    GLuint t = 0;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D, t);
-    const bool isFloat = internalFormat == GL_RGBA16F || internalFormat == GL_RGBA32F || internalFormat == GL_R16F;
-    const GLenum format = internalFormat == GL_R16F ? GL_RED : GL_RGBA;
-    // Immutable storage where there is (GL 4.2): hosts can then make views of SSAM's targets.
-    static const bool immutable = epoxy_gl_version() >= 42 || epoxy_has_gl_extension("GL_ARB_texture_storage");
-    if (immutable)
-        glTexStorage2D(GL_TEXTURE_2D, 1, static_cast<GLenum>(internalFormat), width, height);
-    else
-        glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, isFloat ? GL_FLOAT : GL_UNSIGNED_BYTE,
-                     nullptr);
-    // Sampled with texelFetch only; a non-mipmap filter makes the texture complete.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    return t;
+// Settings are checked by ssam::Config's rules, so both entry points accept the same knobs.
+void validate(const Settings& settings) {
+    const auto precision = static_cast<int>(settings.maskPrecision);
+    const auto depth = static_cast<int>(settings.depthTest);
+    if (precision < 0 || precision > static_cast<int>(MaskPrecision::Rg16f))
+        throw Failure(Status::InvalidArgument, "ssam::gl settings: maskPrecision " + std::to_string(precision) +
+                                                   " is not a MaskPrecision");
+    if (depth < 0 || depth > static_cast<int>(DepthTest::GreaterEqual))
+        throw Failure(Status::InvalidArgument,
+                      "ssam::gl settings: depthTest " + std::to_string(depth) + " is not a DepthTest");
+    Config config;
+    config.maskLerp = settings.maskLerp;
+    config.colorAlphaReference = settings.colorAlphaReference;
+    config.foliageClearColor = glm::vec4(settings.foliageClearColor[0], settings.foliageClearColor[1],
+                                         settings.foliageClearColor[2], settings.foliageClearColor[3]);
+    try {
+        config.validate();
+    } catch (const engine::Error& e) {
+        throw Failure(Status::InvalidArgument, std::string("ssam::gl settings: ") + e.what());
+    }
 }
 
+// A built-in foliage program and its uniforms.
 struct FoliageProgramObject {
     GLuint id = 0;
     GLint viewProj = -1, model = -1, factor = -1, hasTexture = -1, sampler = -1, alphaReference = -1,
           towardLight = -1, lightColor = -1, ambient = -1;
-    void locate() {
-        viewProj = glGetUniformLocation(id, "u_viewProj");
-        model = glGetUniformLocation(id, "u_model");
-        factor = glGetUniformLocation(id, "u_baseColorFactor");
-        hasTexture = glGetUniformLocation(id, "u_hasTexture");
-        sampler = glGetUniformLocation(id, "u_baseColor");
-        alphaReference = glGetUniformLocation(id, "u_alphaReference");
-        towardLight = glGetUniformLocation(id, "u_towardLight");
-        lightColor = glGetUniformLocation(id, "u_lightColor");
-        ambient = glGetUniformLocation(id, "u_ambient");
+    void locate(const GlFunctions& gl) {
+        viewProj = gl.GetUniformLocation(id, "u_viewProj");
+        model = gl.GetUniformLocation(id, "u_model");
+        factor = gl.GetUniformLocation(id, "u_baseColorFactor");
+        hasTexture = gl.GetUniformLocation(id, "u_hasTexture");
+        sampler = gl.GetUniformLocation(id, "u_baseColor");
+        alphaReference = gl.GetUniformLocation(id, "u_alphaReference");
+        towardLight = gl.GetUniformLocation(id, "u_towardLight");
+        lightColor = gl.GetUniformLocation(id, "u_lightColor");
+        ambient = gl.GetUniformLocation(id, "u_ambient");
     }
 };
+
+// Where a frame is: each public call of way (b) moves it one step, in this order only.
+enum class Phase { Idle, FrameBegun, InMaskPass, MaskDone, InColorPass, ColorDone };
+
+const char* phaseName(Phase phase) {
+    switch (phase) {
+        case Phase::Idle: return "no frame is open";
+        case Phase::FrameBegun: return "the frame is begun (beginMaskPass comes next)";
+        case Phase::InMaskPass: return "the mask pass is open (endMaskPass comes next)";
+        case Phase::MaskDone: return "the mask pass is done (beginColorPass comes next)";
+        case Phase::InColorPass: return "the colour pass is open (endColorPass comes next)";
+        case Phase::ColorDone: return "the colour pass is done (composite comes next)";
+    }
+    return "?";
+}
 
 }  // namespace
 
 struct ScreenSpaceAlphaMaskGl::Impl {
-    bool perBufferBlend = false;
-    bool clipControl = false;
+    GlFunctions gl;
+    bool initialized = false;
+    Settings settings;
+    MessageCallback onMessage = nullptr;
+    void* messageUser = nullptr;
+    std::string lastMessage;
+
     FoliageProgramObject mask, color;
     GLuint composite = 0;
     GLint compositeFoliage = -1, compositeMask = -1, compositeMaskAdd = -1, compositeHasMaskAdd = -1,
           compositeMaskLerp = -1, compositeSquare = -1;
     GLuint emptyVao = 0;
-    GLuint maskFbo = 0, foliageFbo = 0, compositeFbo = 0;
-    // SSAM's targets, (re)created when size, precision or colour format change.
-    GLuint maskTex = 0, maskAddTex = 0, foliageTex = 0;
-    int width = 0, height = 0;
-    GLint foliageFormat = 0;
-    std::optional<MaskPrecision> precision;
-    // The engine's textures currently attached.
-    GLuint attachedColor = 0, attachedDepth = 0;
-    bool attachedDepthStencil = false;
+    detail::FrameTargets targets;
 
-    ~Impl() {
-        // Nothing created yet (the constructor threw), or the host's context is already gone
-        // (its objects went with it): calling GL would abort inside libepoxy.
-        if (!emptyVao || !hasCurrentContext()) return;
-        for (GLuint p : {mask.id, color.id, composite})
-            if (p) glDeleteProgram(p);
-        destroyTargets();
-        const GLuint fbos[] = {maskFbo, foliageFbo, compositeFbo};
-        glDeleteFramebuffers(3, fbos);
-        glDeleteVertexArrays(1, &emptyVao);
-    }
-
-    void destroyTargets() {
-        const GLuint textures[] = {maskTex, maskAddTex, foliageTex};
-        glDeleteTextures(3, textures);
-        maskTex = maskAddTex = foliageTex = 0;
-        width = height = 0;
-        precision.reset();
-        foliageFormat = 0;
-    }
-};
-
-namespace {
-
-// Throws unless a GL 3.3+ core context is current; returns whether per-buffer blending exists.
-bool requireContext() {
-    if (!hasCurrentContext()) throw Error("ssam_gl: no OpenGL context is current on this thread (no current EGL or GLX context)");
-    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-    if (!version) throw Error("ssam_gl: no OpenGL context is current on this thread");
-    GLint major = 0, minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major < 3 || (major == 3 && minor < 3))
-        throw Error(std::string("ssam_gl: OpenGL 3.3 core or newer needed, the current context is ") + version);
-    return major >= 4 || epoxy_has_gl_extension("GL_ARB_draw_buffers_blend");
-}
-
-}  // namespace
-
-ScreenSpaceAlphaMaskGl::ScreenSpaceAlphaMaskGl(const Config& config) : impl_(std::make_unique<Impl>()) {
-    Impl& s = *impl_;
-    s.perBufferBlend = requireContext();
-    s.clipControl = epoxy_gl_version() >= 45 || epoxy_has_gl_extension("GL_ARB_clip_control");
-    setConfig(config);
-    // Objects first: ~Impl releases whatever exists if a program below does not compile.
-    glGenVertexArrays(1, &s.emptyVao);
-    glGenFramebuffers(1, &s.maskFbo);
-    glGenFramebuffers(1, &s.foliageFbo);
-    glGenFramebuffers(1, &s.compositeFbo);
-    s.mask.id = compileProgram("ssam_gl mask", shaders::kFoliageVertex, shaders::kMaskFragment);
-    s.mask.locate();
-    s.color.id = compileProgram("ssam_gl colour", shaders::kFoliageVertex, shaders::kColorFragment);
-    s.color.locate();
-    s.composite = compileProgram("ssam_gl composite", shaders::kFullscreenVertex, shaders::kCompositeFragment.c_str());
-    s.compositeFoliage = glGetUniformLocation(s.composite, "u_foliage");
-    s.compositeMask = glGetUniformLocation(s.composite, "u_mask");
-    s.compositeMaskAdd = glGetUniformLocation(s.composite, "u_maskAdd");
-    s.compositeHasMaskAdd = glGetUniformLocation(s.composite, "u_hasMaskAdd");
-    s.compositeMaskLerp = glGetUniformLocation(s.composite, "u_maskLerp");
-    s.compositeSquare = glGetUniformLocation(s.composite, "u_squareMask");
-}
-
-ScreenSpaceAlphaMaskGl::~ScreenSpaceAlphaMaskGl() = default;
-
-void ScreenSpaceAlphaMaskGl::setConfig(const Config& config) {
-    config.validate();
-    if (config.maskPrecision == MaskPrecision::RG16F && impl_ && !impl_->perBufferBlend)
-        throw Error("ssam_gl config: maskPrecision rg16f needs per-buffer blend equations (OpenGL 4.0 or "
-                    "GL_ARB_draw_buffers_blend); use rgba16f");
-    config_ = config;
-}
-
-GlIntermediates ScreenSpaceAlphaMaskGl::intermediates() const {
-    return {impl_->maskTex, impl_->maskAddTex, impl_->foliageTex};
-}
-
-namespace {
-
-// The composite's scissor in GL window coordinates, or nullopt when no bound is in view.
-// screenBounds() expects our backend's clip conventions (z in [0, w], NDC +y = row 0): the
-// engine's are read from glClipControl's state and mapped to them.
-std::optional<Rect> compositeRegion(const FrameDesc& frame, bool clipControl) {
-    if (!frame.foliageBounds) return Rect{0, 0, frame.width, frame.height};
-    GLint origin = GL_LOWER_LEFT, depthMode = GL_NEGATIVE_ONE_TO_ONE;
-    if (clipControl) {
-        glGetIntegerv(GL_CLIP_ORIGIN, &origin);
-        glGetIntegerv(GL_CLIP_DEPTH_MODE, &depthMode);
-    }
-    glm::mat4 viewProj = frame.viewProj;
-    if (depthMode == GL_NEGATIVE_ONE_TO_ONE) {
-        glm::mat4 toZeroToOne(1.0f);  // z' = (z + w) / 2
-        toZeroToOne[2][2] = 0.5f;
-        toZeroToOne[3][2] = 0.5f;
-        viewProj = toZeroToOne * viewProj;
-    }
+    // The open frame (way b, and way a through it).
+    Phase phase = Phase::Idle;
+    FrameDesc frame;
     Rect region;
-    bool any = false;
-    for (const engine::render::BoundingBox& b : *frame.foliageBounds) {
-        const std::optional<Rect> r = screenBounds(b, viewProj, frame.width, frame.height);
-        if (!r) continue;
-        region = unite(region, *r);
-        any = true;
-    }
-    if (!any) return std::nullopt;
-    // screenBounds's rows count from NDC +1; with GL_LOWER_LEFT that is the top window row.
-    if (origin == GL_LOWER_LEFT) region.y = frame.height - (region.y + region.height);
-    return region;
-}
+    std::optional<GlStateGuard> passState;  // the host's state while a pass is open
 
-void attachDepth(GLuint fbo, GLuint depth, bool depthStencil) {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, depthStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                           GL_TEXTURE_2D, depth, 0);
-}
-
-}  // namespace
-
-FrameReport ScreenSpaceAlphaMaskGl::render(const FrameDesc& frame, const DrawFoliage& drawFoliage) {
-    Impl& s = *impl_;
-    requireContext();
-    if (frame.width <= 0 || frame.height <= 0)
-        throw Error("ssam_gl: frame size " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-                    " is not positive");
-    if (!drawFoliage) throw Error("ssam_gl: no foliage callback given");
-    const GlStateGuard guard(s.perBufferBlend);
-
-    // The engine's textures: 2D, supported formats, the frame's size.
-    const TextureInfo color = inspectTexture2D(frame.colorTexture, "colour texture");
-    const TextureInfo depth = inspectTexture2D(frame.depthTexture, "depth texture");
-    if (!isColorFormat(color.internalFormat))
-        throw Error(std::string("ssam_gl: colour texture ") + std::to_string(frame.colorTexture) + " has format " +
-                    internalFormatName(color.internalFormat) +
-                    "; use GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F or GL_RGBA32F");
-    if (!isDepthFormat(depth.internalFormat))
-        throw Error(std::string("ssam_gl: depth texture ") + std::to_string(frame.depthTexture) + " has format " +
-                    internalFormatName(depth.internalFormat) + "; use a GL_DEPTH_COMPONENT* or depth-stencil format");
-    for (const auto& [info, what] : {std::pair{color, "colour"}, std::pair{depth, "depth"}})
-        if (info.width != frame.width || info.height != frame.height)
-            throw Error(std::string("ssam_gl: the ") + what + " texture is " + std::to_string(info.width) + "x" +
-                        std::to_string(info.height) + " but the frame is " + std::to_string(frame.width) + "x" +
-                        std::to_string(frame.height));
-
-    const std::optional<Rect> region = compositeRegion(frame, s.clipControl);
-    if (!region) return {};  // no foliage in view: SSAM costs nothing (not even its targets)
-
-    // SSAM's targets (§3.5): rt_mask in the configured precision, rt_foliage in the colour's format.
-    if (s.width != frame.width || s.height != frame.height || s.precision != config_.maskPrecision ||
-        s.foliageFormat != color.internalFormat) {
-        s.destroyTargets();
-        switch (config_.maskPrecision) {
-            case MaskPrecision::RGBA8: s.maskTex = createTarget(GL_RGBA8, frame.width, frame.height); break;
-            case MaskPrecision::RGBA16F: s.maskTex = createTarget(GL_RGBA16F, frame.width, frame.height); break;
-            case MaskPrecision::RG16F:
-                s.maskTex = createTarget(GL_R16F, frame.width, frame.height);
-                s.maskAddTex = createTarget(GL_R16F, frame.width, frame.height);
-                break;
+    void message(Severity severity, const std::string& text) noexcept {
+        if (!onMessage) return;
+        try {
+            onMessage(messageUser, severity, text.c_str());
+        } catch (...) {  // the host's callback must not unwind through SSAM
         }
-        s.foliageTex = createTarget(color.internalFormat, frame.width, frame.height);
-        s.width = frame.width, s.height = frame.height;
-        s.precision = config_.maskPrecision;
-        s.foliageFormat = color.internalFormat;
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.maskFbo);
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, s.maskTex, 0);
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, s.maskAddTex, 0);
-        const GLenum maskBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        glDrawBuffers(s.maskAddTex ? 2 : 1, maskBuffers);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.foliageFbo);
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, s.foliageTex, 0);
-        s.attachedDepth = 0;  // re-check completeness below
-    }
-    const bool depthStencil = hasStencil(depth.internalFormat);
-    if (s.attachedDepth != frame.depthTexture || s.attachedDepthStencil != depthStencil) {
-        attachDepth(s.maskFbo, frame.depthTexture, depthStencil);
-        checkDrawFramebuffer("mask pass");
-        attachDepth(s.foliageFbo, frame.depthTexture, depthStencil);
-        checkDrawFramebuffer("colour pass");
-        s.attachedDepth = frame.depthTexture;
-        s.attachedDepthStencil = depthStencil;
-    }
-    if (s.attachedColor != frame.colorTexture) {
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.compositeFbo);
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, frame.colorTexture, 0);
-        checkDrawFramebuffer("composite");
-        s.attachedColor = frame.colorTexture;
     }
 
-    // State shared by the foliage passes: full viewport, no scissor, both faces (§3.5.2-3),
-    // no stencil / polygon offset / alpha-to-coverage / logic op, sRGB targets blended in linear.
+    Status fail(Status status, const char* text) noexcept {
+        try {
+            lastMessage = text;
+        } catch (...) {
+            lastMessage.clear();
+        }
+        message(Severity::Error, text);
+        return status;
+    }
+
+    // Ends an open frame early: the host's state back, nothing half-done left for the next one.
+    void abandonFrame() noexcept {
+        passState.reset();
+        phase = Phase::Idle;
+    }
+
+    // Runs one public call: Ok, or the Failure's status with its message (the frame abandoned).
+    template <class Body>
+    Status run(Body&& body) noexcept {
+        try {
+            body();
+            return Status::Ok;
+        } catch (const Failure& e) {
+            abandonFrame();
+            return fail(e.status, e.what());
+        } catch (const std::bad_alloc&) {
+            abandonFrame();
+            return fail(Status::OutOfMemory, "ssam::gl: out of memory");
+        } catch (const std::exception& e) {
+            abandonFrame();
+            return fail(Status::Internal, (std::string("ssam::gl: unexpected error: ") + e.what()).c_str());
+        } catch (...) {
+            abandonFrame();
+            return fail(Status::Internal, "ssam::gl: unexpected error");
+        }
+    }
+
+    void expect(Phase expected, const char* call) const {
+        if (!initialized)
+            throw Failure(Status::InvalidCall, std::string("ssam::gl: ") + call + " before initialize()");
+        if (phase != expected)
+            throw Failure(Status::InvalidCall, std::string("ssam::gl: ") + call + " called when " + phaseName(phase));
+    }
+
+    void initialize(const detail::Loader& load, const Settings& wanted) {
+        if (phase != Phase::Idle) throw Failure(Status::InvalidCall, "ssam::gl: initialize() inside a frame");
+        release();
+        validate(wanted);
+        detail::loadFunctions(gl, load);
+        const std::string context = detail::checkContext(gl);
+        if (wanted.maskPrecision == MaskPrecision::Rg16f && !gl.perBufferBlend)
+            throw Failure(Status::UnsupportedFeature, kRg16fNeedsPerBufferBlend);
+        settings = wanted;
+        initialized = true;  // from here release() deletes what exists if a program does not compile
+        try {
+            gl.GenVertexArrays(1, &emptyVao);
+            targets.createFramebuffers(gl);
+            mask.id = detail::compileProgram(gl, "ssam::gl mask", shaders::kFoliageVertex, shaders::kMaskFragment);
+            mask.locate(gl);
+            color.id = detail::compileProgram(gl, "ssam::gl colour", shaders::kFoliageVertex, shaders::kColorFragment);
+            color.locate(gl);
+            composite = detail::compileProgram(gl, "ssam::gl composite", shaders::kFullscreenVertex,
+                                               shaders::kCompositeFragment.c_str());
+        } catch (...) {
+            release();
+            throw;
+        }
+        compositeFoliage = gl.GetUniformLocation(composite, "u_foliage");
+        compositeMask = gl.GetUniformLocation(composite, "u_mask");
+        compositeMaskAdd = gl.GetUniformLocation(composite, "u_maskAdd");
+        compositeHasMaskAdd = gl.GetUniformLocation(composite, "u_hasMaskAdd");
+        compositeMaskLerp = gl.GetUniformLocation(composite, "u_maskLerp");
+        compositeSquare = gl.GetUniformLocation(composite, "u_squareMask");
+        message(Severity::Info, "ssam::gl " SSAM_VERSION_STRING " initialised on " + context);
+    }
+
+    void release() noexcept {
+        abandonFrame();
+        // Without a current context the host's objects went with it (or cannot be reached):
+        // glGetString answers null then, and nothing is deleted.
+        if (initialized && gl.GetString(GL_VERSION)) {
+            for (GLuint p : {mask.id, color.id, composite})
+                if (p) gl.DeleteProgram(p);
+            targets.destroy(gl);
+            if (emptyVao) gl.DeleteVertexArrays(1, &emptyVao);
+        }
+        mask = {}, color = {};
+        composite = emptyVao = 0;
+        targets = {};
+        initialized = false;
+    }
+
+    static constexpr const char* kRg16fNeedsPerBufferBlend =
+        "ssam::gl settings: maskPrecision Rg16f needs per-buffer blend equations (OpenGL 4.0 or "
+        "GL_ARB_draw_buffers_blend), which this context has not; use Rgba16f";
+
+    // ---- The frame, one step at a time --------------------------------------------------
+
+    FrameReport beginFrame(const FrameDesc& desc) {
+        expect(Phase::Idle, "beginFrame");
+        if (!gl.GetString(GL_VERSION))
+            throw Failure(Status::NoContext, "ssam::gl: no OpenGL context is current on this thread");
+        if (desc.width <= 0 || desc.height <= 0)
+            throw Failure(Status::InvalidArgument, "ssam::gl: frame size " + std::to_string(desc.width) + "x" +
+                                                       std::to_string(desc.height) + " is not positive");
+        if (desc.foliageBoundsCount > 0 && !desc.foliageBounds)
+            throw Failure(Status::InvalidArgument, "ssam::gl: foliageBoundsCount is " +
+                                                       std::to_string(desc.foliageBoundsCount) +
+                                                       " but foliageBounds is null");
+        if (const GLenum pending = gl.GetError(); pending != GL_NO_ERROR) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "ssam::gl: a GL error (0x%04X) was pending when the frame began; it is the host's, "
+                          "cleared so it is not taken for SSAM's",
+                          pending);
+            message(Severity::Warning, text);
+        }
+        FrameReport report;
+        const std::optional<Rect> visible = detail::compositeRegion(gl, desc);
+        if (!visible) return report;  // no foliage in view: SSAM costs nothing (not even its targets)
+        {
+            const GlStateGuard hostState(gl);
+            targets.prepare(gl, desc, settings.maskPrecision);
+        }
+        frame = desc;
+        region = *visible;
+        phase = Phase::FrameBegun;
+        report.foliageInView = true;
+        report.passesRun = 3;
+        report.compositeRegion = region;
+        return report;
+    }
+
+    // State shared by the foliage passes: full viewport, no scissor, both faces (§3.5.2-3), no
+    // stencil / polygon offset / alpha-to-coverage / logic op, sRGB targets blended in linear.
     // Left as the host set them: clip control (its depth convention), polygon mode, depth clamp,
-    // sampler objects (they apply to the host's base-colour texture).
-    glViewport(0, 0, frame.width, frame.height);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-    glDisable(GL_COLOR_LOGIC_OP);  // a logic op would replace blending
-    glDisable(GL_RASTERIZER_DISCARD);
-    glEnable(GL_FRAMEBUFFER_SRGB);
-    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(toGl(config_.depthFunc));
-    // Generic values for attributes the engine's VAO leaves disabled (AttributeLocations).
-    glVertexAttrib3f(AttributeLocations::normal, 0.0f, 0.0f, 1.0f);
-    glVertexAttrib2f(AttributeLocations::uv, 0.0f, 0.0f);
-    glVertexAttrib4f(AttributeLocations::color, 1.0f, 1.0f, 1.0f, 1.0f);
-    for (unsigned int c = 0; c < 4; ++c)
-        glVertexAttrib4f(AttributeLocations::instanceModel + c, c == 0, c == 1, c == 2, c == 3);
+    // sampler objects (they apply to the host's textures).
+    void setFoliagePassState() {
+        gl.Viewport(0, 0, frame.width, frame.height);
+        gl.Disable(GL_SCISSOR_TEST);
+        gl.Disable(GL_CULL_FACE);
+        gl.Disable(GL_STENCIL_TEST);
+        gl.Disable(GL_POLYGON_OFFSET_FILL);
+        gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        gl.Disable(GL_COLOR_LOGIC_OP);  // a logic op would replace blending
+        gl.Disable(GL_RASTERIZER_DISCARD);
+        gl.Enable(GL_FRAMEBUFFER_SRGB);
+        gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl.Enable(GL_DEPTH_TEST);
+        gl.DepthFunc(toGl(settings.depthTest));
+    }
 
-    auto runFoliage = [&](const FoliageProgramObject& p, FoliagePass pass, float alphaReference) {
-        glUseProgram(p.id);
-        glUniformMatrix4fv(p.viewProj, 1, GL_FALSE, glm::value_ptr(frame.viewProj));
-        const glm::mat4 identity(1.0f);
-        glUniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(identity));
-        glUniform4f(p.factor, 1.0f, 1.0f, 1.0f, 1.0f);
-        glUniform1i(p.hasTexture, 0);
-        glUniform1i(p.sampler, 0);
+    // 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD, all ONE (Rg16f:
+    //    MAX into target 0, ADD into target 1); depth test without write; nothing rejected.
+    PassInfo beginMaskPass() {
+        expect(Phase::FrameBegun, "beginMaskPass");
+        passState.emplace(gl);
+        phase = Phase::InMaskPass;
+        setFoliagePassState();
+        gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.maskFramebuffer());
+        const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        gl.ClearBufferfv(GL_COLOR, 0, black);
+        if (targets.maskAdd()) gl.ClearBufferfv(GL_COLOR, 1, black);
+        gl.DepthMask(GL_FALSE);
+        gl.Enable(GL_BLEND);
+        gl.BlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+        if (targets.maskAdd()) {
+            gl.BlendEquationi(0, GL_MAX);
+            gl.BlendEquationi(1, GL_FUNC_ADD);
+        } else {
+            gl.BlendEquationSeparate(GL_MAX, GL_FUNC_ADD);
+        }
+        return {FoliagePass::Mask, targets.maskAdd() ? 2 : 1, 0.0f};
+    }
+
+    void endPass(Phase open, const char* call) {
+        expect(open, call);
+        passState.reset();  // the host's state back
+        phase = open == Phase::InMaskPass ? Phase::MaskDone : Phase::ColorDone;
+    }
+
+    // 2. Colour pass (§3.5.3): cleared to the clear colour (§3.6.1); alpha test at the colour
+    //    reference (the program's); depth test and write into the host's depth (§3.7); no blending.
+    PassInfo beginColorPass() {
+        expect(Phase::MaskDone, "beginColorPass");
+        passState.emplace(gl);
+        phase = Phase::InColorPass;
+        setFoliagePassState();
+        gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.foliageFramebuffer());
+        gl.ClearBufferfv(GL_COLOR, 0, settings.foliageClearColor);
+        gl.Disable(GL_BLEND);
+        gl.DepthMask(GL_TRUE);
+        return {FoliagePass::Color, 1, settings.colorAlphaReference};
+    }
+
+    // 3. Composite (§3.5.4, Listing 3.2): (foliage, mask') blended SRC_ALPHA / INV_SRC_ALPHA onto
+    //    the host's colour = lerp(opaque, foliage, mask'); its alpha kept; scissored.
+    void compositeFrame() {
+        expect(Phase::ColorDone, "composite");
+        const GlStateGuard hostState(gl);
+        gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.compositeFramebuffer());
+        gl.Viewport(0, 0, frame.width, frame.height);
+        gl.Disable(GL_DEPTH_TEST);
+        gl.DepthMask(GL_FALSE);
+        gl.Disable(GL_CULL_FACE);
+        gl.Disable(GL_STENCIL_TEST);
+        gl.Disable(GL_COLOR_LOGIC_OP);
+        gl.Disable(GL_RASTERIZER_DISCARD);
+        gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        gl.Enable(GL_FRAMEBUFFER_SRGB);
+        gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl.Enable(GL_BLEND);
+        gl.BlendEquation(GL_FUNC_ADD);
+        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        gl.Enable(GL_SCISSOR_TEST);
+        gl.Scissor(region.x, region.y, region.width, region.height);
+        gl.UseProgram(composite);
+        const GLuint inputs[3] = {targets.foliage(), targets.mask(), targets.maskAdd()};
+        for (GLuint unit = 0; unit < 3; ++unit) {
+            gl.ActiveTexture(GL_TEXTURE0 + unit);
+            gl.BindTexture(GL_TEXTURE_2D, inputs[unit] ? inputs[unit] : targets.mask());
+        }
+        gl.Uniform1i(compositeFoliage, 0);
+        gl.Uniform1i(compositeMask, 1);
+        gl.Uniform1i(compositeMaskAdd, 2);
+        gl.Uniform1i(compositeHasMaskAdd, targets.maskAdd() ? 1 : 0);
+        gl.Uniform1f(compositeMaskLerp, settings.maskLerp);
+        gl.Uniform1i(compositeSquare, settings.squareMask ? 1 : 0);
+        gl.BindVertexArray(emptyVao);
+        gl.DrawArrays(GL_TRIANGLES, 0, 3);
+        phase = Phase::Idle;
+    }
+
+    // ---- Way (a): the built-in programs inside the passes ---------------------------------
+
+    void drawBuiltIn(const FoliageProgramObject& p, const PassInfo& pass, DrawFoliage draw, void* user) {
+        // Generic values for attributes the host's VAO leaves disabled (AttributeLocations).
+        gl.VertexAttrib3f(AttributeLocations::normal, 0.0f, 0.0f, 1.0f);
+        gl.VertexAttrib2f(AttributeLocations::uv, 0.0f, 0.0f);
+        gl.VertexAttrib4f(AttributeLocations::color, 1.0f, 1.0f, 1.0f, 1.0f);
+        for (unsigned int c = 0; c < 4; ++c)
+            gl.VertexAttrib4f(AttributeLocations::instanceModel + c, c == 0, c == 1, c == 2, c == 3);
+        gl.UseProgram(p.id);
+        gl.UniformMatrix4fv(p.viewProj, 1, GL_FALSE, frame.viewProj);
+        const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        gl.UniformMatrix4fv(p.model, 1, GL_FALSE, identity);
+        gl.Uniform4f(p.factor, 1.0f, 1.0f, 1.0f, 1.0f);
+        gl.Uniform1i(p.hasTexture, 0);
+        gl.Uniform1i(p.sampler, 0);
+        if (pass.pass == FoliagePass::Color) {
+            const Light& light = frame.light;
+            const float length = std::sqrt(light.towardLight[0] * light.towardLight[0] +
+                                           light.towardLight[1] * light.towardLight[1] +
+                                           light.towardLight[2] * light.towardLight[2]);
+            float toward[3] = {0.0f, 0.0f, 0.0f};
+            if (length > 0.0f && std::isfinite(length))
+                for (int i = 0; i < 3; ++i) toward[i] = light.towardLight[i] / length;
+            gl.Uniform1f(p.alphaReference, pass.alphaReference);
+            gl.Uniform3fv(p.towardLight, 1, toward);
+            gl.Uniform3fv(p.lightColor, 1, light.color);
+            gl.Uniform3fv(p.ambient, 1, light.ambient);
+        }
         FoliageProgram program;
-        program.pass = pass;
+        program.pass = pass.pass;
         program.program = p.id;
         program.modelUniform = p.model;
         program.baseColorFactorUniform = p.factor;
         program.hasTextureUniform = p.hasTexture;
         program.baseColorTextureUnit = 0;
-        program.alphaReference = alphaReference;
-        glActiveTexture(GL_TEXTURE0);
-        drawFoliage(program);
-    };
-
-    // 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD, all ONE (RG16F:
-    //    MAX into target 0, ADD into target 1); depth test without write; nothing rejected.
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.maskFbo);
-    const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearBufferfv(GL_COLOR, 0, black);
-    if (s.maskAddTex) glClearBufferfv(GL_COLOR, 1, black);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    if (s.maskAddTex) {
-        glBlendEquationi(0, GL_MAX);
-        glBlendEquationi(1, GL_FUNC_ADD);
-    } else {
-        glBlendEquationSeparate(GL_MAX, GL_FUNC_ADD);
+        program.alphaReference = pass.alphaReference;
+        program.gl = &gl;
+        gl.ActiveTexture(GL_TEXTURE0);
+        try {
+            draw(user, program);
+        } catch (const std::exception& e) {
+            throw Failure(Status::CallbackFailed, std::string("ssam::gl: the draw callback threw in the ") +
+                                                      foliagePassName(pass.pass) + " pass: " + e.what());
+        } catch (...) {
+            throw Failure(Status::CallbackFailed, std::string("ssam::gl: the draw callback threw in the ") +
+                                                      foliagePassName(pass.pass) + " pass (not a std::exception)");
+        }
     }
-    runFoliage(s.mask, FoliagePass::Mask, 0.0f);
+};
 
-    // 2. Colour pass (§3.5.3): cleared to the clear colour (§3.6.1); alpha test at the colour
-    //    reference; depth test and write into the engine's depth (§3.7); no blending.
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.foliageFbo);
-    glClearBufferfv(GL_COLOR, 0, glm::value_ptr(config_.foliageClearColor));
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glUseProgram(s.color.id);
-    const float lightLength = glm::length(frame.light.towardLight);
-    const glm::vec3 towardLight = lightLength > 0.0f ? frame.light.towardLight / lightLength : glm::vec3(0.0f);
-    glUniform1f(s.color.alphaReference, config_.colorAlphaReference);
-    glUniform3fv(s.color.towardLight, 1, glm::value_ptr(towardLight));
-    glUniform3fv(s.color.lightColor, 1, glm::value_ptr(frame.light.color));
-    glUniform3fv(s.color.ambient, 1, glm::value_ptr(frame.light.ambient));
-    runFoliage(s.color, FoliagePass::Color, config_.colorAlphaReference);
+// ---- Public calls: each one Impl step inside run() -----------------------------------------
 
-    // 3. Composite (§3.5.4, Listing 3.2): (foliage, mask') blended SRC_ALPHA / INV_SRC_ALPHA onto
-    //    the engine's colour = lerp(opaque, foliage, mask'); its alpha kept; scissored.
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.compositeFbo);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(region->x, region->y, region->width, region->height);
-    glUseProgram(s.composite);
-    const GLuint inputs[3] = {s.foliageTex, s.maskTex, s.maskAddTex};
-    for (GLuint unit = 0; unit < 3; ++unit) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, inputs[unit] ? inputs[unit] : s.maskTex);
+namespace {
+constexpr const char* kMovedFrom = "ssam::gl: this ScreenSpaceAlphaMaskGl was moved from (or out of memory)";
+}
+
+ScreenSpaceAlphaMaskGl::ScreenSpaceAlphaMaskGl() noexcept : impl_(new (std::nothrow) Impl) {}
+ScreenSpaceAlphaMaskGl::~ScreenSpaceAlphaMaskGl() { release(); }
+ScreenSpaceAlphaMaskGl::ScreenSpaceAlphaMaskGl(ScreenSpaceAlphaMaskGl&&) noexcept = default;
+ScreenSpaceAlphaMaskGl& ScreenSpaceAlphaMaskGl::operator=(ScreenSpaceAlphaMaskGl&& other) noexcept {
+    if (this != &other) {
+        release();
+        impl_ = std::move(other.impl_);
     }
-    glUniform1i(s.compositeFoliage, 0);
-    glUniform1i(s.compositeMask, 1);
-    glUniform1i(s.compositeMaskAdd, 2);
-    glUniform1i(s.compositeHasMaskAdd, s.maskAddTex ? 1 : 0);
-    glUniform1f(s.compositeMaskLerp, config_.maskLerp);
-    glUniform1i(s.compositeSquare, config_.squareMask ? 1 : 0);
-    glBindVertexArray(s.emptyVao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return *this;
+}
 
-    FrameReport report;
-    report.passesRun = 3;
-    report.compositeRegion = *region;
-    return report;
+void ScreenSpaceAlphaMaskGl::setMessageCallback(MessageCallback callback, void* user) noexcept {
+    if (!impl_) return;
+    impl_->onMessage = callback;
+    impl_->messageUser = user;
+}
+
+const char* ScreenSpaceAlphaMaskGl::lastMessage() const noexcept {
+    return impl_ ? impl_->lastMessage.c_str() : kMovedFrom;
+}
+
+Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddress getProcAddress, const Settings& settings) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    if (!getProcAddress) return impl_->fail(Status::InvalidArgument, "ssam::gl: initialize() without a GL loader");
+    return impl_->run([&] { impl_->initialize({getProcAddress, nullptr}, settings); });
+}
+
+Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddressFunction getProcAddress, const Settings& settings) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    if (!getProcAddress) return impl_->fail(Status::InvalidArgument, "ssam::gl: initialize() without a GL loader");
+    return impl_->run([&] { impl_->initialize({nullptr, getProcAddress}, settings); });
+}
+
+void ScreenSpaceAlphaMaskGl::release() noexcept {
+    if (impl_) impl_->release();
+}
+
+Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    Impl& s = *impl_;
+    return s.run([&] {
+        if (s.phase != Phase::Idle) throw Failure(Status::InvalidCall, "ssam::gl: setSettings() inside a frame");
+        validate(settings);
+        if (s.initialized && settings.maskPrecision == MaskPrecision::Rg16f && !s.gl.perBufferBlend)
+            throw Failure(Status::UnsupportedFeature, Impl::kRg16fNeedsPerBufferBlend);
+        s.settings = settings;
+    });
+}
+
+const Settings& ScreenSpaceAlphaMaskGl::settings() const noexcept {
+    static const Settings defaults;
+    return impl_ ? impl_->settings : defaults;
+}
+
+Status ScreenSpaceAlphaMaskGl::render(const FrameDesc& frame, DrawFoliage draw, void* user,
+                                      FrameReport* report) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    Impl& s = *impl_;
+    if (report) *report = {};
+    if (!draw) return s.fail(Status::InvalidArgument, "ssam::gl: render() without a draw callback");
+    return s.run([&] {
+        const FrameReport begun = s.beginFrame(frame);
+        if (!begun.foliageInView) return;
+        const PassInfo maskPass = s.beginMaskPass();
+        s.drawBuiltIn(s.mask, maskPass, draw, user);
+        s.endPass(Phase::InMaskPass, "endMaskPass");
+        const PassInfo colorPass = s.beginColorPass();
+        s.drawBuiltIn(s.color, colorPass, draw, user);
+        s.endPass(Phase::InColorPass, "endColorPass");
+        s.compositeFrame();
+        if (report) *report = begun;
+    });
+}
+
+Status ScreenSpaceAlphaMaskGl::beginFrame(const FrameDesc& frame, FrameReport* report) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    if (report) *report = {};
+    return impl_->run([&] {
+        const FrameReport begun = impl_->beginFrame(frame);
+        if (report) *report = begun;
+    });
+}
+
+Status ScreenSpaceAlphaMaskGl::beginMaskPass(PassInfo* info) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] {
+        const PassInfo pass = impl_->beginMaskPass();
+        if (info) *info = pass;
+    });
+}
+
+Status ScreenSpaceAlphaMaskGl::endMaskPass() noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] { impl_->endPass(Phase::InMaskPass, "endMaskPass"); });
+}
+
+Status ScreenSpaceAlphaMaskGl::beginColorPass(PassInfo* info) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] {
+        const PassInfo pass = impl_->beginColorPass();
+        if (info) *info = pass;
+    });
+}
+
+Status ScreenSpaceAlphaMaskGl::endColorPass() noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] { impl_->endPass(Phase::InColorPass, "endColorPass"); });
+}
+
+Status ScreenSpaceAlphaMaskGl::composite() noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] { impl_->compositeFrame(); });
+}
+
+Intermediates ScreenSpaceAlphaMaskGl::intermediates() const noexcept {
+    if (!impl_) return {};
+    return {impl_->targets.mask(), impl_->targets.maskAdd(), impl_->targets.foliage()};
 }
 
 }  // namespace ssam::gl

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # cmake -P script: installs the library into a scratch prefix, checks the layout, then
 # configures (no warnings allowed), builds (-O3, warnings as errors) and runs the consumer with
-# find_package(ssam 0.2 COMPONENTS soft gl); then the raw-OpenGL example the same way.
+# find_package(ssam 0.2 COMPONENTS soft gl); then the raw-OpenGL examples the same way.
 #   -DBUILD_DIR= -DPREFIX= -DCONSUMER_SOURCE= -DCONSUMER_BUILD= [-DEXAMPLE_SOURCE= -DEXAMPLE_BUILD=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
 install_library(${BUILD_DIR} ${PREFIX})
@@ -38,17 +38,19 @@ if(NOT run_output MATCHES "soft: centre pixel[^\n]*: ok")
   message(FATAL_ERROR "the consumer did not check the soft backend's pixel:\n${run_output}")
 endif()
 
-# The raw-OpenGL example, stand-alone against the same prefix (find_package(ssam) + ssam::gl);
-# run headless when a context can be made (77 = none here, which is fine for this test).
+# The raw-OpenGL examples, stand-alone against the same prefix (find_package(ssam) + ssam::gl);
+# each run headless when a context can be made (77 = none here, which is fine for this test).
 if(EXAMPLE_SOURCE)
   file(REMOVE_RECURSE ${EXAMPLE_BUILD})
   run(${CMAKE_COMMAND} -S ${EXAMPLE_SOURCE} -B ${EXAMPLE_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
   expect_clean_configure("${run_output}")
   run(${CMAKE_COMMAND} --build ${EXAMPLE_BUILD})
-  execute_process(COMMAND ${EXAMPLE_BUILD}/ssam_gl_embedding --headless --out ${EXAMPLE_BUILD}/frame.png
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${out}")
-  if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)
-    message(FATAL_ERROR "the installed-package example failed (${rc}):\n${err}")
-  endif()
+  foreach(example ssam_gl_embedding)
+    execute_process(COMMAND ${EXAMPLE_BUILD}/${example} --headless --out ${EXAMPLE_BUILD}/${example}.png
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message("${out}")
+    if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)
+      message(FATAL_ERROR "the installed-package example ${example} failed (${rc}):\n${err}")
+    endif()
+  endforeach()
 endif()

@@ -1,45 +1,161 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// SSAM for engines that bring their own OpenGL ([Hathaway 2010] §3.5-3.7): the engine hands over the
-// GL names of its opaque colour and depth textures and a callback that draws its foliage; SSAM
-// runs the mask, colour and composite passes into its own framebuffers and composites onto the
-// engine's colour texture, writing the foliage depth into the engine's depth texture.
+// SSAM for engines that bring their own OpenGL ([Hathaway 2010] §3.5-3.7). The host hands over the
+// GL names of its opaque colour and depth textures; SSAM runs the mask, colour and composite
+// passes into its own framebuffers, composites onto the host's colour texture and writes the
+// foliage depth into the host's depth texture (for later transparent passes, §3.7).
 //
-//   ssam::gl::ScreenSpaceAlphaMaskGl ssam;                 // needs a current GL 3.3+ core context
-//   ssam.render({colorTex, depthTex, width, height, viewProj}, [&](const ssam::gl::FoliageProgram& p) {
-//       glBindVertexArray(leavesVao);                       // attributes at p's locations
-//       p.setModel(leafModel);
-//       p.bindBaseColorTexture(leafTexture);
-//       glDrawElements(GL_TRIANGLES, leafIndexCount, GL_UNSIGNED_INT, nullptr);
-//   });
+// Host-neutral: this header uses only standard C++ and <ssam/version.hpp>. SSAM calls GL through
+// entry points it resolves with the host's own loader (glfwGetProcAddress, SDL_GL_GetProcAddress,
+// eglGetProcAddress, wglGetProcAddress wrapped, ...); nothing throws into host code: every call
+// returns a Status, and the reason is passed to an optional message callback and kept for
+// lastMessage().
 //
-// The callback runs twice per frame (mask pass, then colour pass) with SSAM's program bound,
-// its framebuffer, blend, depth and cull state set; it should bind its VAO(s), set the per-draw
-// uniforms through FoliageProgram and draw, and change no other state. Draw the same geometry
-// in the same order both times (§3.8: only consistency of dispatch order is needed).
+// Two ways to draw the foliage:
+//  (a) SSAM's built-in foliage programs: render(frame, draw) calls `draw` twice (mask pass, then
+//      colour pass) with SSAM's program bound; the host binds its VAO at AttributeLocations and draws.
+//  (b) The host's own shaders: beginFrame(), then beginMaskPass() / draw / endMaskPass(),
+//      beginColorPass() / draw / endColorPass(), composite(). SSAM sets each pass's framebuffer,
+//      viewport, blend, depth and cull state; the host binds its own program, which must output
+//      what "The host-shader contract" below says.
 //
-// Independent of our engine: no ECS, assets, windowing or render backend; only the GL-free
-// ssam core (Config) and the engine render layer (BoundingBox, screenBounds) and the current GL context (through libepoxy).
-#include <functional>
+// The host-shader contract (way b; SSAM's built-in programs are written to it):
+//  Mask pass ([Hathaway 2010] §3.5.2, Table 3.1). Fragment output: the foliage's coverage alpha a,
+//    saturated to [0, 1], in EVERY channel of `layout(location = 0) out vec4` -- vec4(a) -- and,
+//    when PassInfo::drawBuffers is 2 (MaskPrecision::Rg16f), the same vec4(a) at location 1. No
+//    lighting or colour fetch is needed. Do not alpha-test (the mask pass's reference is 0: a
+//    fragment of alpha 0 adds nothing anyway). Do not write gl_FragDepth (the depth test
+//    against the opaque depth must be early and exact). SSAM's blend state makes RGB the MAX and
+//    A the SUM of the layers' alphas; depth is tested (Settings::depthTest), not written.
+//  Colour pass (§3.5.3). Fragment output at location 0: (colour.rgb, a), straight (not
+//    premultiplied) alpha, in the colour texture's space (linear for GL_SRGB8_ALPHA8: SSAM
+//    enables GL_FRAMEBUFFER_SRGB); discard every fragment with !(a >= PassInfo::alphaReference)
+//    (Settings::colorAlphaReference). Nothing is blended; depth is tested and written, so the
+//    nearest surviving fragment's colour wins and its depth reaches the host's depth texture.
+//  Both passes: draw the same geometry with the same vertex transform (wind, skinning, ...),
+//    in the same order (§3.8 only needs consistency); both faces are drawn (culling is off: a
+//    foliage card is seen from both sides) unless the host enables culling inside the pass.
+//
+// A GL context must be current on the calling thread for every call but the constructor,
+// setMessageCallback and lastMessage; the same context (or one sharing objects with it) for all.
+#include <cstddef>
 #include <memory>
-#include <optional>
-#include <span>
+#include <type_traits>
 
-#include <glm/glm.hpp>
-
-#include "engine/render/program.hpp"
-#include "engine/render/raster_state.hpp"
-#include "ssam/config.hpp"
-#include "ssam/foliage.hpp"
+#include "ssam/version.hpp"
 
 namespace ssam::gl {
 
-enum class FoliagePass { Mask, Color };
-const char* foliagePassName(FoliagePass pass);
+// ---- Results ---------------------------------------------------------------------------
 
-// Vertex attribute locations of SSAM's foliage programs. An attribute the engine's VAO does not
-// enable reads SSAM's generic value: normal (0,0,1), uv (0,0), colour (1,1,1,1), instance model
-// columns the identity, so a plain non-instanced mesh needs only position (+ uv for textures).
+enum class Status : int {
+    Ok = 0,
+    InvalidArgument,        // a bad setting, frame size, loader or callback (the message names it)
+    InvalidCall,            // out of order: not initialised, a pass not begun, a frame still open
+    NoContext,              // no GL context current, or not OpenGL 3.3 core or newer
+    MissingEntryPoint,      // the loader returned no address for a GL function SSAM needs (named)
+    UnsupportedFeature,     // e.g. MaskPrecision::Rg16f without per-buffer blend equations
+    InvalidTexture,         // not a 2D texture, an unsupported format, or the wrong size
+    IncompleteFramebuffer,  // the driver refused SSAM's framebuffer with the host's textures
+    ShaderFailed,           // one of SSAM's programs does not compile or link here
+    CallbackFailed,         // the host's draw callback threw (the exception is not rethrown)
+    OutOfMemory,
+    Internal,               // an unexpected error inside SSAM (a bug: the message says what)
+};
+const char* statusName(Status status) noexcept;  // "ok", "invalid argument", ...
+
+enum class Severity : int { Info, Warning, Error };
+const char* severityName(Severity severity) noexcept;
+
+// Called for every error (Status other than Ok), for warnings (a GL error the host left pending
+// and SSAM cleared) and once with what was initialised (Info). `message` is valid during the call
+// only. A callback that throws is ignored.
+using MessageCallback = void (*)(void* user, Severity severity, const char* message);
+
+// The host's GL loader. Both common shapes are taken: returning void* (SDL2's
+// SDL_GL_GetProcAddress, glad's GLADloadproc) or a function pointer (glfwGetProcAddress,
+// eglGetProcAddress, SDL3's SDL_GL_GetProcAddress).
+using GetProcAddress = void* (*)(const char* name);
+using GetProcAddressFunction = void (*(*)(const char* name))();
+
+// ---- Plain data ----------------------------------------------------------------------------
+
+struct Rect {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
+// An axis-aligned world-space box.
+struct Box {
+    float min[3] = {0.0f, 0.0f, 0.0f};
+    float max[3] = {0.0f, 0.0f, 0.0f};
+};
+
+// The directional light of SSAM's built-in colour program (way a; the host's own shaders light
+// as they like). The default is unlit: colour = base colour.
+struct Light {
+    float towardLight[3] = {0.0f, 0.0f, 1.0f};  // world space, need not be normalised
+    float color[3] = {0.0f, 0.0f, 0.0f};        // scales max(dot(n, towardLight), 0), double-sided
+    float ambient[3] = {1.0f, 1.0f, 1.0f};
+};
+
+// Storage of the mask (§3.5.2): Rgba8 as in the paper (the sum saturates at 1); Rgba16f unclamped;
+// Rg16f as two single-channel R16F targets (MAX and SUM), which needs GL 4.0 or
+// GL_ARB_draw_buffers_blend.
+enum class MaskPrecision : int { Rgba8, Rgba16f, Rg16f };
+// The host's depth convention: Less / LessEqual conventional, Greater / GreaterEqual reverse-Z.
+enum class DepthTest : int { Less, LessEqual, Greater, GreaterEqual };
+
+// The paper's knobs, with its values as defaults (the same as ssam::Config's).
+struct Settings {
+    float maskLerp = 0.85f;                      // mask = lerp(MAX, SUM, maskLerp) (§3.5.4, Listing 3.2)
+    float colorAlphaReference = 64.0f / 255.0f;  // colour-pass alpha test (§3.5.3)
+    float foliageClearColor[4] = {0.16f, 0.22f, 0.08f, 0.0f};  // where the mask covers but no colour (§3.6.1)
+    bool squareMask = true;                      // the squared alpha trick (§3.6.2)
+    MaskPrecision maskPrecision = MaskPrecision::Rgba8;
+    DepthTest depthTest = DepthTest::Less;
+};
+
+struct FrameDesc {
+    // The host's opaque colour: GL_RGBA8, GL_SRGB8_ALPHA8 (blended in linear, as
+    // GL_FRAMEBUFFER_SRGB does), GL_RGBA16F or GL_RGBA32F; a single-sample GL_TEXTURE_2D.
+    unsigned int colorTexture = 0;
+    // Its depth: GL_DEPTH_COMPONENT16 / 24 / 32F, GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, the
+    // same size. Receives the foliage depth.
+    unsigned int depthTexture = 0;
+    int width = 0;
+    int height = 0;
+    // Column-major (as GL and glm store it), in the host's clip conventions (SSAM reads
+    // glClipControl's state and never changes it). Used for the bounds below, and by the
+    // built-in programs.
+    float viewProj[16] = {1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f,
+                          0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+    Light light;  // the built-in colour program's (way a)
+    // World-space boxes around everything the host will draw. Given (count > 0): when none is in
+    // view no pass runs (SSAM costs nothing, the callback is not called) and the composite is
+    // scissored to their screen region. Not given: every pass runs over the whole frame.
+    const Box* foliageBounds = nullptr;
+    std::size_t foliageBoundsCount = 0;
+};
+
+struct FrameReport {
+    bool foliageInView = false;  // false: the frame is already over (way b: draw nothing, call nothing)
+    int passesRun = 0;           // 0 or 3
+    Rect compositeRegion;        // GL window coordinates (rows from the bottom unless GL_UPPER_LEFT)
+};
+
+enum class FoliagePass : int { Mask, Color };
+const char* foliagePassName(FoliagePass pass) noexcept;  // "mask", "colour"
+
+// What a pass of the host's own shaders must know (way b; see the contract above).
+struct PassInfo {
+    FoliagePass pass = FoliagePass::Mask;
+    int drawBuffers = 1;          // mask pass: write vec4(alpha) to locations 0 .. drawBuffers - 1
+    float alphaReference = 0.0f;  // colour pass: discard when !(alpha >= alphaReference); mask pass 0
+};
+
+// Vertex attribute locations of SSAM's built-in foliage programs (way a). An attribute the host's
+// VAO does not enable reads SSAM's generic value: normal (0,0,1), uv (0,0), colour (1,1,1,1),
+// instance model columns the identity; a plain mesh needs only position (+ uv for a texture).
 struct AttributeLocations {
     static constexpr unsigned int position = 0;       // vec3
     static constexpr unsigned int normal = 1;         // vec3, double-sided lighting (colour pass)
@@ -48,85 +164,100 @@ struct AttributeLocations {
     static constexpr unsigned int instanceModel = 4;  // mat4 as 4 vec4 columns at 4..7 (divisor 1)
 };
 
-// What the callback gets: which pass, which program is bound, where its inputs are.
-// clip position = viewProj (FrameDesc) * model (uniform) * instanceModel (attribute) * position.
+namespace detail {
+struct GlFunctions;
+}
+
+// What the built-in programs' draw callback gets (way a). Clip position = viewProj (FrameDesc) *
+// model (setModel) * instanceModel (attribute) * position. Alpha = factor.a * colour.a * texel.a;
+// the colour pass discards alpha < alphaReference and writes base rgb * (ambient + light * lambert).
 struct FoliageProgram {
     FoliagePass pass = FoliagePass::Mask;
-    unsigned int program = 0;           // bound with glUseProgram
-    AttributeLocations attributes;
-    int modelUniform = -1;              // mat4, identity until set
-    int baseColorFactorUniform = -1;    // vec4, (1,1,1,1) until set; alpha scales the mask too
-    int hasTextureUniform = -1;         // bool, false until bindBaseColorTexture(non-zero)
-    int baseColorTextureUnit = 0;       // the sampler reads GL_TEXTURE0 + this unit
-    // The colour pass discards fragments whose alpha is below this (Config::colorAlphaReference,
-    // §3.5.3); the mask pass rejects nothing (the paper's alpha reference 0, §3.5.2). An engine
-    // may bind its own program instead if it keeps these rules: mask pass writes vec4(alpha)
-    // to every draw buffer, colour pass writes (lit rgb, alpha) and discards alpha < reference.
-    float alphaReference = 0.0f;
+    unsigned int program = 0;  // bound with glUseProgram
+    int modelUniform = -1;             // mat4, identity until set
+    int baseColorFactorUniform = -1;   // vec4, (1,1,1,1) until set; its alpha scales the mask too
+    int hasTextureUniform = -1;        // bool, false until bindBaseColorTexture(non-zero)
+    int baseColorTextureUnit = 0;      // the sampler reads GL_TEXTURE0 + this unit
+    float alphaReference = 0.0f;       // colour pass: Settings::colorAlphaReference; mask pass: 0
 
-    void setModel(const glm::mat4& model) const;
-    void setBaseColorFactor(const glm::vec4& factor) const;
+    void setModel(const float columnMajor[16]) const noexcept;
+    void setBaseColorFactor(float r, float g, float b, float a) const noexcept;
     // Binds a GL_TEXTURE_2D (straight alpha) to the base-colour unit; 0 = no texture. SSAM
     // restores the unit's previous binding after the pass.
-    void bindBaseColorTexture(unsigned int texture) const;
-};
+    void bindBaseColorTexture(unsigned int texture) const noexcept;
 
-using DrawFoliage = std::function<void(const FoliageProgram&)>;
-
-struct FrameDesc {
-    // The engine's opaque colour: GL_RGBA8, GL_SRGB8_ALPHA8 (blended in linear, as
-    // GL_FRAMEBUFFER_SRGB does) or GL_RGBA16F / GL_RGBA32F; single-sample GL_TEXTURE_2D.
-    unsigned int colorTexture = 0;
-    // Its depth: GL_DEPTH_COMPONENT32F / 24 / 16 or GL_DEPTH24_STENCIL8 / GL_DEPTH32F_STENCIL8,
-    // same size. Receives the foliage depth (for later transparent passes, §3.7).
-    unsigned int depthTexture = 0;
-    int width = 0;
-    int height = 0;
-    glm::mat4 viewProj{1.0f};  // in the engine's clip-space conventions (SSAM never changes glClipControl)
-    engine::render::DirectionalLight light{{0.0f, 0.0f, 1.0f}, glm::vec3(0.0f), glm::vec3(1.0f)};  // default: unlit
-    // World-space bounds of what the callback draws. Given: no pass runs (and the callback is
-    // not called) when none is in view, and the composite is scissored to their screen region.
-    // Not given: every pass runs and the composite covers the whole target.
-    std::optional<std::span<const engine::render::BoundingBox>> foliageBounds;
-};
-
-struct FrameReport {
-    int passesRun = 0;                       // 0 (nothing in view) or 3
-    engine::render::Rect compositeRegion;    // GL window coordinates (y from the bottom row)
+    const detail::GlFunctions* gl = nullptr;  // SSAM's entry points (internal)
 };
 
 // GL names of SSAM's targets, e.g. to show the paper's Figures 3.6-3.8 (0 until first used).
-struct GlIntermediates {
-    unsigned int mask = 0;     // r = MAX mask, a = ADD mask (RGBA8 / RGBA16F)
-    unsigned int maskAdd = 0;  // RG16F precision: the ADD mask in r (mask then holds MAX in r)
-    unsigned int foliage = 0;  // rt_foliage, the colour format of the engine's colour texture
+struct Intermediates {
+    unsigned int mask = 0;     // r = MAX, a = SUM (RGBA8 / RGBA16F); Rg16f: MAX in r
+    unsigned int maskAdd = 0;  // Rg16f only: SUM in r
+    unsigned int foliage = 0;  // rt_foliage, the format of the host's colour texture
 };
+
+// ---- SSAM ----------------------------------------------------------------------------------
 
 class ScreenSpaceAlphaMaskGl {
 public:
-    // Needs a current OpenGL 3.3+ core context (engine::Error otherwise); MaskPrecision::RG16F
-    // needs per-buffer blend equations (GL 4.0 or ARB_draw_buffers_blend). GL objects are
-    // created in, and must be destroyed with, that context current.
-    explicit ScreenSpaceAlphaMaskGl(const Config& config = {});
+    ScreenSpaceAlphaMaskGl() noexcept;  // no GL yet
+    // Deletes SSAM's GL objects (release()); the context must be current then, or release()
+    // must have been called while it was.
     ~ScreenSpaceAlphaMaskGl();
+    ScreenSpaceAlphaMaskGl(ScreenSpaceAlphaMaskGl&&) noexcept;
+    ScreenSpaceAlphaMaskGl& operator=(ScreenSpaceAlphaMaskGl&&) noexcept;
     ScreenSpaceAlphaMaskGl(const ScreenSpaceAlphaMaskGl&) = delete;
     ScreenSpaceAlphaMaskGl& operator=(const ScreenSpaceAlphaMaskGl&) = delete;
 
-    void setConfig(const Config& config);  // validates (engine::Error naming the knob)
-    const Config& config() const { return config_; }
+    void setMessageCallback(MessageCallback callback, void* user) noexcept;
+    // The message of the last call that did not return Ok ("" before any).
+    const char* lastMessage() const noexcept;
 
-    // Runs the three passes. Every piece of GL state SSAM changes is restored before it returns
-    // (README "Embedding with raw OpenGL" lists it), also when the callback throws.
-    // engine::Error for bad textures, zero or mismatched sizes, incomplete framebuffers and no
-    // current context.
-    FrameReport render(const FrameDesc& frame, const DrawFoliage& drawFoliage);
+    // Resolves the GL entry points through the host's loader (MissingEntryPoint names the first
+    // one it has no address for), checks the current context (OpenGL 3.3 core or newer), compiles
+    // SSAM's programs. May be called again (e.g. after release()).
+    Status initialize(GetProcAddress getProcAddress, const Settings& settings = {}) noexcept;
+    Status initialize(GetProcAddressFunction getProcAddress, const Settings& settings = {}) noexcept;
+    // Deletes SSAM's GL objects; initialize() again to use it.
+    void release() noexcept;
 
-    GlIntermediates intermediates() const;
+    Status setSettings(const Settings& settings) noexcept;  // InvalidArgument naming the knob
+    const Settings& settings() const noexcept;
+
+    // Way (a): the three passes with SSAM's built-in programs. `draw(user, program)` runs twice,
+    // mask pass then colour pass, with SSAM's program, framebuffer and state set: it binds its
+    // VAO(s) at AttributeLocations, sets per-draw values through `program` and draws; it may
+    // instead bind its own program if that keeps the host-shader contract. Every piece of GL
+    // state SSAM changes is restored before this returns, also when `draw` throws.
+    using DrawFoliage = void (*)(void* user, const FoliageProgram& program);
+    Status render(const FrameDesc& frame, DrawFoliage draw, void* user, FrameReport* report = nullptr) noexcept;
+    // The same with any callable, e.g. a lambda: render(frame, [&](const FoliageProgram& p) {...}).
+    template <class Draw>
+    Status render(const FrameDesc& frame, Draw&& draw, FrameReport* report = nullptr) noexcept {
+        using Callable = std::remove_reference_t<Draw>;
+        return render(
+            frame, [](void* user, const FoliageProgram& p) { (*static_cast<Callable*>(user))(p); },
+            const_cast<void*>(static_cast<const void*>(std::addressof(draw))), report);
+    }
+
+    // Way (b): the host's own shaders, one pass at a time. beginFrame checks the frame and
+    // (re)creates SSAM's targets; when FrameReport::foliageInView is false the frame is over.
+    // Each begin...Pass saves the GL state it changes and sets the pass's; the matching end...Pass
+    // restores it (between them, the host binds its program, VAOs and textures and draws).
+    // composite() blends the foliage onto the host's colour, restores its state and ends the frame.
+    // Out of order: InvalidCall; the open frame is then abandoned and the host's state restored.
+    Status beginFrame(const FrameDesc& frame, FrameReport* report = nullptr) noexcept;
+    Status beginMaskPass(PassInfo* info = nullptr) noexcept;
+    Status endMaskPass() noexcept;
+    Status beginColorPass(PassInfo* info = nullptr) noexcept;
+    Status endColorPass() noexcept;
+    Status composite() noexcept;
+
+    Intermediates intermediates() const noexcept;
 
     struct Impl;
 
 private:
-    Config config_;
     std::unique_ptr<Impl> impl_;
 };
 

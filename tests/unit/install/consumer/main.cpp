@@ -3,8 +3,8 @@
 // soft gl), or pkg-config ssam ssam-soft ssam-gl): renders one half-transparent red leaf over a
 // blue opaque scene through SSAM on the soft backend, then on the GL backend when a headless
 // context can be made here, and checks the composited centre pixel. Also links ssam::gl (the
-// raw-OpenGL entry point; nothing it calls here needs a context). Exit 0 when every pixel checked
-// is the expected blend.
+// raw-OpenGL entry point) and checks that a call before initialize() is a Status, not a throw or
+// a crash (no context needed). Exit 0 when every check passes.
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -65,6 +65,11 @@ int main() {
         return 1;
     }
 #endif
+    ssam::gl::ScreenSpaceAlphaMaskGl rawGl;  // no GL until initialize(host's loader)
+    const ssam::gl::Status early = rawGl.beginMaskPass();
+    std::printf("ssam::gl before initialize(): %s (%s)\n", ssam::gl::statusName(early), rawGl.lastMessage());
+    if (early != ssam::gl::Status::InvalidCall) return 1;
+
     auto soft = soft::createSoftBackend({});
     bool ok = leafOverBlue(*soft, "soft");
 

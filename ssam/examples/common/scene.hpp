@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The example's scene, as data, so the test that checks its image (tests/capture/gl) computes
+// The examples' scene, as data, so the test that checks their images (tests/capture/gl) computes
 // the expected pixels from the same numbers. Orthographic front view: world x, y in [-1, 1] are
 // the screen (y up), z in [0, 1] is depth (0 nearest), mapped to OpenGL's default clip space.
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace gl_embedding {
+namespace gl_example {
 
 constexpr int kWidth = 512, kHeight = 512;
 constexpr std::array<float, 3> kSky{0.55f, 0.70f, 0.90f};
@@ -31,6 +31,21 @@ constexpr Rect3 kCardC{0.3f, 0.4f, 0.9f, 0.9f, 0.4f, 0.4f, {1.0f, 0.9f, 0.5f, 0.
 constexpr Rect3 kCardD{0.45f, -0.9f, 1.0f, -0.1f, 0.8f, 0.8f, {0.8f, 1.0f, 0.8f, 0.8f}};
 constexpr std::array<Rect3, 4> kCards{kCardA, kCardB, kCardC, kCardD};
 
+// Each card is a strip of kCardRows rows (two triangles each), texture v from 0 at its base (y0)
+// to 1 at its top (y1), so that a vertex shader can bend it: the host-shader example's wind moves
+// a vertex at height h = v by windOffset(amplitude, h) in x, a bend that grows with height as a
+// stem's does. Between rows the rasteriser interpolates: the offset inside a row is linear.
+constexpr int kCardRows = 8;
+constexpr float kDefaultWind = 0.3f;  // the host-shader example's amplitude (world units at the top)
+inline float windOffset(float amplitude, float h) { return amplitude * h * h; }
+inline float bentOffset(float amplitude, float v) {
+    const float row = std::clamp(v, 0.0f, 1.0f) * kCardRows;
+    const int below = std::min(static_cast<int>(row), kCardRows - 1);
+    const float t = row - static_cast<float>(below);
+    const float h0 = static_cast<float>(below) / kCardRows, h1 = static_cast<float>(below + 1) / kCardRows;
+    return windOffset(amplitude, h0) + (windOffset(amplitude, h1) - windOffset(amplitude, h0)) * t;
+}
+
 // The procedural leaf: a disc with a uniform core (r < 0.6), darkening towards the rim, alpha 1
 // inside r < 0.75 falling linearly to 0 at r = 1 (the soft edge SSAM blends), thin darker veins.
 constexpr int kLeafSize = 64;
@@ -51,4 +66,4 @@ inline std::array<int, 2> pixelAt(float x, float y) {
     return {static_cast<int>((x * 0.5f + 0.5f) * kWidth), static_cast<int>((0.5f - y * 0.5f) * kHeight)};
 }
 
-}  // namespace gl_embedding
+}  // namespace gl_example

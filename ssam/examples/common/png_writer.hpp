@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Writes the example's frame as a compressed PNG through libpng (Debian: libpng-dev).
+// Writes an example's frame as a compressed PNG through libpng (Debian: libpng-dev).
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace gl_embedding {
+namespace gl_example {
 
 // `rgba` holds height rows of width * 4 bytes, the first row the top of the image. The file is
 // written whole or not at all: to a temporary file beside `path`, renamed over it once
@@ -16,4 +16,4 @@ std::string writePng(const std::string& path, int width, int height, const std::
 // temporary file beside it: access() would answer yes to root even on /proc. Returns "" or why not.
 std::string checkWritable(const std::string& path);
 
-}  // namespace gl_embedding
+}  // namespace gl_example

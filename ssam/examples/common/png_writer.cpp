@@ -11,7 +11,7 @@
 
 #include <png.h>
 
-namespace gl_embedding {
+namespace gl_example {
 
 namespace {
 
@@ -73,4 +73,4 @@ std::string checkWritable(const std::string& path) {
     return {};
 }
 
-}  // namespace gl_embedding
+}  // namespace gl_example

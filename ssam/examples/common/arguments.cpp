@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+#include "arguments.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "scene.hpp"
+
+namespace gl_example {
+
+namespace {
+
+int parseFrames(const std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const long n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno == ERANGE || n < 1 || n > 1000000)
+        throw UsageError("--frames '" + text + "': expected a whole number of frames in 1..1000000");
+    return static_cast<int>(n);
+}
+
+float parseWind(const std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const float w = std::strtof(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(w) || w < -1.0f || w > 1.0f)
+        throw UsageError("--wind '" + text + "': expected an amplitude in -1..1 (world units at a card's top)");
+    return w;
+}
+
+void requirePng(const char* flag, const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png") throw UsageError(std::string(flag) + " '" + path + "': the name must end in .png");
+}
+
+}  // namespace
+
+Arguments parseArguments(const Tool& tool, int argc, char** argv) {
+    Arguments args;
+    args.out = std::string(tool.name) + ".png";
+    args.wind = tool.bendsInTheWind ? kDefaultWind : 0.0f;
+    const char* headlessFlag = nullptr;
+    bool framesGiven = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+            return argv[++i];
+        };
+        if (arg == "--help" || arg == "-h") args.help = true;
+        else if (arg == "--headless") args.headless = true, headlessFlag = headlessFlag ? headlessFlag : "--headless";
+        else if (arg == "--out") args.out = value(), args.headless = true, headlessFlag = "--out";
+        else if (arg == "--mask") args.mask = value(), args.headless = true, headlessFlag = "--mask";
+        else if (arg == "--frames") args.frames = parseFrames(value()), framesGiven = true;
+        else if (arg == "--wind" && tool.bendsInTheWind) args.wind = parseWind(value());
+        else throw UsageError("unknown argument '" + arg + "' (see --help)");
+    }
+    if (framesGiven && args.headless)
+        throw UsageError(std::string("--frames counts window frames; ") + headlessFlag + " renders one frame");
+    requirePng("--out", args.out);
+    if (!args.mask.empty()) requirePng("--mask", args.mask);
+    return args;
+}
+
+std::string usage(const Tool& tool) {
+    const std::string name = tool.name;
+    return "usage: " + name + " [--headless] [--out PATH.png] [--mask PATH.png]" +
+           (tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "") +
+           " [--frames N]\n"
+           "  --headless    render one frame offscreen (EGL surfaceless) and write it (the default without a display)\n"
+           "  --out PATH    the PNG to write (implies --headless; default " + name + ".png); its directory\n"
+           "                must exist, and is checked before rendering\n"
+           "  --mask PATH   also write SSAM's mask as a PNG: red = MAX of the layers' alphas, alpha = their\n"
+           "                SUM ([Hathaway 2010] §3.5.2; implies --headless)\n" +
+           (tool.bendsInTheWind
+                ? "  --wind A      the wind's bend in the host's vertex shader: a card's top moves A world units in x\n"
+                  "                (default 0.3; 0 draws exactly what SSAM's built-in programs draw)\n"
+                : "") +
+           "  --frames N    in a window: close after N frames (default: when the window is closed)\n"
+           "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 core context; messages are\n"
+           "'" + name + ": error: ...' on stderr.\n";
+}
+
+void printError(const Tool& tool, const std::string& message) {
+    std::fprintf(stderr, "%s: error: %s\n", tool.name, message.c_str());
+}
+
+}  // namespace gl_example

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The examples' command line, keeping the project's command-line contract (game/README.md
+// "Command-line contract") without the engine's helper, since the examples build against an
+// installed ssam alone: exit 0 done, 1 the work failed, 2 a usage error, each message
+// "<tool>: error: ..." on stderr -- and 77 when no OpenGL 3.3 core context can be made, which
+// the tests report as skipped.
+#include <stdexcept>
+#include <string>
+
+namespace gl_example {
+
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+
+// Which example is running: its name (messages, the default --out) and whether it bends its
+// foliage in the wind (then it takes --wind).
+struct Tool {
+    const char* name;
+    bool bendsInTheWind = false;
+};
+
+struct Arguments {
+    bool headless = false;
+    std::string out;   // headless only; default <tool>.png
+    std::string mask;  // headless only; "" = not written
+    int frames = 0;    // window only; 0: until closed
+    float wind = 0.0f;  // --wind (tools that bend in the wind; their default kDefaultWind)
+    bool help = false;
+};
+
+// Parses argv. Throws UsageError for an unknown flag, a missing or malformed value, an --out or
+// --mask name that is not .png, or --frames with --headless/--out/--mask (one frame is rendered there).
+Arguments parseArguments(const Tool& tool, int argc, char** argv);
+
+// The --help text.
+std::string usage(const Tool& tool);
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// "<tool>: error: <message>" on stderr.
+void printError(const Tool& tool, const std::string& message);
+
+}  // namespace gl_example

@@ -1,0 +1,363 @@
+// SPDX-License-Identifier: MIT
+#include "example_host.hpp"
+
+#include <epoxy/egl.h>
+#include <GLFW/glfw3.h>
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "png_writer.hpp"
+#include "scene.hpp"
+
+namespace gl_example {
+
+namespace {
+
+constexpr int kNoContext = 77;
+
+struct NoContext : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// ---- Contexts ---------------------------------------------------------------------------
+
+struct EglSurfaceless {
+    EGLDisplay display = EGL_NO_DISPLAY;
+    EGLContext context = EGL_NO_CONTEXT;
+    EglSurfaceless() {
+        // libepoxy aborts when libEGL cannot be loaded: check first.
+        if (!dlopen("libEGL.so.1", RTLD_LAZY | RTLD_LOCAL)) throw NoContext("libEGL.so.1 cannot be loaded");
+        const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+        if (!client || !std::strstr(client, "EGL_MESA_platform_surfaceless"))
+            throw NoContext("EGL has no EGL_MESA_platform_surfaceless");
+        display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
+            throw NoContext("the surfaceless EGL display does not initialise");
+        if (!eglBindAPI(EGL_OPENGL_API)) throw NoContext("eglBindAPI(EGL_OPENGL_API) failed");
+        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+        context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+        if (context == EGL_NO_CONTEXT) throw NoContext("no OpenGL 3.3 core context without a config");
+        if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
+            throw NoContext("eglMakeCurrent without a surface failed");
+    }
+    ~EglSurfaceless() {
+        eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(display, context);
+    }
+};
+
+struct GlfwWindow {
+    GLFWwindow* window = nullptr;
+    explicit GlfwWindow(const char* title) {
+        if (!glfwInit()) throw NoContext("GLFW cannot initialise (no display?)");
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        window = glfwCreateWindow(kWidth, kHeight, title, nullptr, nullptr);
+        if (!window) {
+            glfwTerminate();
+            throw NoContext("GLFW cannot create an OpenGL 3.3 core window");
+        }
+        glfwMakeContextCurrent(window);
+        glfwSwapInterval(1);
+    }
+    ~GlfwWindow() {
+        glfwDestroyWindow(window);
+        glfwTerminate();
+    }
+};
+
+// ---- The host program's own GL ------------------------------------------------------------
+
+GLuint compile(GLenum stage, const char* source) {
+    const GLuint s = glCreateShader(stage);
+    glShaderSource(s, 1, &source, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[1024];
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        throw std::runtime_error(std::string("opaque shader: ") + log);
+    }
+    return s;
+}
+
+constexpr const char* kOpaqueVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_viewProj;
+void main() { gl_Position = u_viewProj * vec4(a_position, 1.0); }
+)";
+constexpr const char* kOpaqueFragment = R"(#version 330 core
+uniform vec4 u_color;
+out vec4 o_color;
+void main() { o_color = u_color; }
+)";
+
+// World (x, y, z in [0, 1]) to OpenGL's default clip space (z in [-w, w]), column-major.
+constexpr float kViewProj[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, 0, 0, 0, -1, 1};
+
+struct Vertex {
+    float x, y, z, u, v;
+};
+
+// A quad as kCardRows rows of two triangles, v from 0 (y0) to 1 (y1); opaque quads use one row.
+void appendStrip(std::vector<Vertex>& out, const Rect3& r, int rows) {
+    for (int row = 0; row < rows; ++row) {
+        const float v0 = static_cast<float>(row) / rows, v1 = static_cast<float>(row + 1) / rows;
+        const float ya = r.y0 + (r.y1 - r.y0) * v0, yb = r.y0 + (r.y1 - r.y0) * v1;
+        const Vertex a{r.x0, ya, r.zLeft, 0, v0}, b{r.x1, ya, r.zRight, 1, v0}, c{r.x1, yb, r.zRight, 1, v1},
+            d{r.x0, yb, r.zLeft, 0, v1};
+        out.insert(out.end(), {a, b, c, a, c, d});
+    }
+}
+
+constexpr GLsizei kCardVertices = kCardRows * 6;
+
+}  // namespace
+
+HostScene::HostScene(float wind) {
+    opaqueProgram_ = glCreateProgram();
+    const GLuint vs = compile(GL_VERTEX_SHADER, kOpaqueVertex), fs = compile(GL_FRAGMENT_SHADER, kOpaqueFragment);
+    glAttachShader(opaqueProgram_, vs);
+    glAttachShader(opaqueProgram_, fs);
+    glLinkProgram(opaqueProgram_);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    viewProjUniform_ = glGetUniformLocation(opaqueProgram_, "u_viewProj");
+    colorUniform_ = glGetUniformLocation(opaqueProgram_, "u_color");
+
+    std::vector<Vertex> opaque, cards;
+    for (const Rect3& r : {kGround, kBox, kBoxTop}) appendStrip(opaque, r, 1);
+    for (const Rect3& r : kCards) {
+        appendStrip(cards, r, kCardRows);
+        // Bounds hold every pixel the card can reach, bent or not (or the composite's scissor
+        // would cut the bend off): the wind moves its top |wind| at most, in x.
+        cardBounds_.push_back({{r.x0 + std::min(wind, 0.0f), r.y0, std::min(r.zLeft, r.zRight)},
+                               {r.x1 + std::max(wind, 0.0f), r.y1, std::max(r.zLeft, r.zRight)}});
+    }
+    glGenBuffers(2, buffers_);
+    glGenVertexArrays(1, &opaqueVao_);
+    glBindVertexArray(opaqueVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(opaque.size() * sizeof(Vertex)), opaque.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
+    // The cards' VAO follows ssam::gl::AttributeLocations: position and uv; normal, colour and
+    // the instance matrix are left to SSAM's defaults.
+    glGenVertexArrays(1, &cardsVao_);
+    glBindVertexArray(cardsVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[1]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(cards.size() * sizeof(Vertex)), cards.data(), GL_STATIC_DRAW);
+    using Loc = ssam::gl::AttributeLocations;
+    glEnableVertexAttribArray(Loc::position);
+    glVertexAttribPointer(Loc::position, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
+    glEnableVertexAttribArray(Loc::uv);
+    glVertexAttribPointer(Loc::uv, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<const void*>(3 * sizeof(float)));
+    glBindVertexArray(0);
+
+    std::vector<std::uint8_t> leaf;
+    for (int y = 0; y < kLeafSize; ++y)
+        for (int x = 0; x < kLeafSize; ++x)
+            for (std::uint8_t c : leafTexel(x, y)) leaf.push_back(c);
+    glGenTextures(1, &leafTexture_);
+    glBindTexture(GL_TEXTURE_2D, leafTexture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kLeafSize, kLeafSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, leaf.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+
+    // The host's render targets: what SSAM gets as "the host's colour and depth".
+    glGenTextures(1, &colorTexture_);
+    glBindTexture(GL_TEXTURE_2D, colorTexture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kWidth, kHeight, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenTextures(1, &depthTexture_);
+    glBindTexture(GL_TEXTURE_2D, depthTexture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, kWidth, kHeight, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    for (GLuint t : {colorTexture_, depthTexture_}) {
+        glBindTexture(GL_TEXTURE_2D, t);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    }
+    glGenFramebuffers(1, &framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTexture_, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depthTexture_, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("the host framebuffer is incomplete");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+HostScene::~HostScene() {
+    glDeleteFramebuffers(1, &framebuffer_);
+    const GLuint textures[] = {colorTexture_, depthTexture_, leafTexture_};
+    glDeleteTextures(3, textures);
+    glDeleteBuffers(2, buffers_);
+    glDeleteVertexArrays(1, &opaqueVao_);
+    glDeleteVertexArrays(1, &cardsVao_);
+    glDeleteProgram(opaqueProgram_);
+}
+
+void HostScene::drawOpaque() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glViewport(0, 0, kWidth, kHeight);
+    glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
+    glClearDepth(1.0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glUseProgram(opaqueProgram_);
+    glUniformMatrix4fv(viewProjUniform_, 1, GL_FALSE, kViewProj);
+    glBindVertexArray(opaqueVao_);
+    const Rect3 quads[] = {kGround, kBox, kBoxTop};
+    for (int i = 0; i < 3; ++i) {
+        glUniform4fv(colorUniform_, 1, quads[i].color.data());
+        glDrawArrays(GL_TRIANGLES, i * 6, 6);
+    }
+}
+
+void HostScene::drawCards(const std::function<void(const float tint[4])>& setTint) const {
+    glBindVertexArray(cardsVao_);
+    for (std::size_t i = 0; i < kCards.size(); ++i) {
+        setTint(kCards[i].color.data());
+        glDrawArrays(GL_TRIANGLES, GLint(i) * kCardVertices, kCardVertices);
+    }
+}
+
+ssam::gl::FrameDesc HostScene::frame() const {
+    ssam::gl::FrameDesc frame;
+    frame.colorTexture = colorTexture_;
+    frame.depthTexture = depthTexture_;
+    frame.width = kWidth;
+    frame.height = kHeight;
+    std::copy(std::begin(kViewProj), std::end(kViewProj), frame.viewProj);
+    frame.foliageBounds = cardBounds_.data();
+    frame.foliageBoundsCount = cardBounds_.size();
+    return frame;
+}
+
+void check(const ssam::gl::ScreenSpaceAlphaMaskGl& ssam, ssam::gl::Status status, const char* call) {
+    if (status != ssam::gl::Status::Ok)
+        throw std::runtime_error(std::string(call) + ": " + ssam::gl::statusName(status) + ": " + ssam.lastMessage());
+}
+
+namespace {
+
+// A texture's RGBA8 pixels, top row first (GL's row 0 is the bottom; PNG's the top).
+std::vector<std::uint8_t> readTexture(GLuint texture) {
+    GLuint fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    std::vector<std::uint8_t> pixels(std::size_t(kWidth) * kHeight * 4), flipped(pixels.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    const std::size_t row = std::size_t(kWidth) * 4;
+    for (int y = 0; y < kHeight; ++y)
+        std::copy_n(pixels.begin() + std::ptrdiff_t((kHeight - 1 - y) * row), row,
+                    flipped.begin() + std::ptrdiff_t(y * row));
+    return flipped;
+}
+
+void writeOrThrow(const std::string& path, GLuint texture) {
+    if (const std::string why = writePng(path, kWidth, kHeight, readTexture(texture)); !why.empty())
+        throw std::runtime_error(why);
+    std::printf("wrote %s (%dx%d)\n", path.c_str(), kWidth, kHeight);
+}
+
+// SSAM's initialisation line on stdout, its warnings (a GL error the host left pending) on
+// stderr; its errors come back as a Status and are reported once, by check().
+void printSsamMessage(void* tool, ssam::gl::Severity severity, const char* message) {
+    if (severity == ssam::gl::Severity::Info) std::printf("%s\n", message);
+    else if (severity == ssam::gl::Severity::Warning)
+        std::fprintf(stderr, "%s: ssam warning: %s\n", static_cast<const Tool*>(tool)->name, message);
+}
+
+int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
+    EglSurfaceless context;
+    std::printf("OpenGL: %s, %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION));
+    HostScene scene(args.wind);
+    ssam::gl::ScreenSpaceAlphaMaskGl ssam;
+    ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
+    // SSAM resolves its GL functions through the host's loader: here EGL's. Settings{}: the paper's.
+    check(ssam, ssam.initialize(eglGetProcAddress), "ssam::gl initialize");
+    const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
+    scene.drawOpaque();
+    foliage->render(ssam, scene.frame());
+    writeOrThrow(args.out, scene.frame().colorTexture);
+    if (!args.mask.empty()) writeOrThrow(args.mask, ssam.intermediates().mask);
+    return 0;
+}
+
+int runWindow(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
+    GlfwWindow window(tool.name);
+    std::printf("OpenGL: %s, %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION));
+    HostScene scene(args.wind);
+    ssam::gl::ScreenSpaceAlphaMaskGl ssam;
+    ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
+    check(ssam, ssam.initialize(glfwGetProcAddress), "ssam::gl initialize");  // here GLFW's loader
+    const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
+    for (int frame = 0; !glfwWindowShouldClose(window.window) && (args.frames <= 0 || frame < args.frames); ++frame) {
+        scene.drawOpaque();
+        foliage->render(ssam, scene.frame());
+        int w = 0, h = 0;
+        glfwGetFramebufferSize(window.window, &w, &h);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.framebuffer());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, kWidth, kHeight, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glfwSwapBuffers(window.window);
+        glfwPollEvents();
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRenderer& makeRenderer) {
+    Arguments args;
+    try {
+        args = parseArguments(tool, argc, argv);
+    } catch (const UsageError& e) {
+        printError(tool, std::string(e.what()) + " (see --help)");
+        return kExitUsage;
+    }
+    if (args.help) {
+        std::fputs(usage(tool).c_str(), stdout);
+        return 0;
+    }
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) args.headless = true;
+    // The outputs are proven writable before a context is made or a frame drawn.
+    if (args.headless) {
+        for (const std::string& path : {args.out, args.mask}) {
+            if (path.empty()) continue;
+            if (const std::string why = checkWritable(path); !why.empty()) {
+                printError(tool, why);
+                return kExitFailure;
+            }
+        }
+    }
+    try {
+        return args.headless ? runHeadless(tool, args, makeRenderer) : runWindow(tool, args, makeRenderer);
+    } catch (const NoContext& e) {
+        std::printf("SKIPPED: no OpenGL 3.3 core context: %s\n", e.what());
+        return kNoContext;
+    } catch (const std::exception& e) {
+        printError(tool, e.what());
+        return kExitFailure;
+    }
+}
+
+}  // namespace gl_example

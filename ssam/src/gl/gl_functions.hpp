@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The OpenGL entry points ssam::gl calls, resolved once through the host's own loader into a
+// table (the adopted-context pattern: SSAM links no GL library and never looks for one; the
+// host's context and loader decide which driver answers). Only types and PFN... typedefs come
+// from the Khronos header: nothing here is a GL implementation.
+#include <GL/glcorearb.h>
+
+#include <string>
+
+#include "ssam/gl/ssam_gl.hpp"
+
+namespace ssam::gl::detail {
+
+// OpenGL 3.3 core: ssam::gl needs every one of these.
+#define SSAM_GL_REQUIRED_FUNCTIONS(X)                                        \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                 \
+    X(PFNGLATTACHSHADERPROC, AttachShader)                                   \
+    X(PFNGLBINDBUFFERPROC, BindBuffer)                                       \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                             \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                                     \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                             \
+    X(PFNGLBLENDEQUATIONPROC, BlendEquation)                                 \
+    X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate)                 \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                         \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)               \
+    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                 \
+    X(PFNGLCOLORMASKIPROC, ColorMaski)                                       \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)                                 \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                 \
+    X(PFNGLCREATESHADERPROC, CreateShader)                                   \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                       \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                 \
+    X(PFNGLDELETESHADERPROC, DeleteShader)                                   \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                               \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                       \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                         \
+    X(PFNGLDEPTHMASKPROC, DepthMask)                                         \
+    X(PFNGLDISABLEPROC, Disable)                                             \
+    X(PFNGLDISABLEIPROC, Disablei)                                           \
+    X(PFNGLDRAWARRAYSPROC, DrawArrays)                                       \
+    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                                     \
+    X(PFNGLENABLEPROC, Enable)                                               \
+    X(PFNGLENABLEIPROC, Enablei)                                             \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)                   \
+    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                             \
+    X(PFNGLGENTEXTURESPROC, GenTextures)                                     \
+    X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                             \
+    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                                 \
+    X(PFNGLGETBOOLEANVPROC, GetBooleanv)                                     \
+    X(PFNGLGETERRORPROC, GetError)                                           \
+    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                 \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                     \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                         \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                   \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                           \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                     \
+    X(PFNGLGETSTRINGPROC, GetString)                                         \
+    X(PFNGLGETSTRINGIPROC, GetStringi)                                       \
+    X(PFNGLGETTEXLEVELPARAMETERIVPROC, GetTexLevelParameteriv)               \
+    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                       \
+    X(PFNGLGETVERTEXATTRIBFVPROC, GetVertexAttribfv)                         \
+    X(PFNGLISENABLEDPROC, IsEnabled)                                         \
+    X(PFNGLISENABLEDIPROC, IsEnabledi)                                       \
+    X(PFNGLISTEXTUREPROC, IsTexture)                                         \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                     \
+    X(PFNGLSCISSORPROC, Scissor)                                             \
+    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                   \
+    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                       \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                 \
+    X(PFNGLUNIFORM1FPROC, Uniform1f)                                         \
+    X(PFNGLUNIFORM1IPROC, Uniform1i)                                         \
+    X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                       \
+    X(PFNGLUNIFORM4FPROC, Uniform4f)                                         \
+    X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                           \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                                       \
+    X(PFNGLVERTEXATTRIB2FPROC, VertexAttrib2f)                               \
+    X(PFNGLVERTEXATTRIB3FPROC, VertexAttrib3f)                               \
+    X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f)                               \
+    X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv)                             \
+    X(PFNGLVIEWPORTPROC, Viewport)
+
+// Newer than 3.3, used when the context has them: per-buffer blending (GL 4.0 or
+// GL_ARB_draw_buffers_blend, whose names end in ARB) for the Rg16f mask, immutable storage
+// (GL 4.2 or GL_ARB_texture_storage, same names).
+#define SSAM_GL_OPTIONAL_FUNCTIONS(X)                                        \
+    X(PFNGLBLENDEQUATIONIPROC, BlendEquationi)                               \
+    X(PFNGLBLENDEQUATIONSEPARATEIPROC, BlendEquationSeparatei)               \
+    X(PFNGLBLENDFUNCSEPARATEIPROC, BlendFuncSeparatei)                       \
+    X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)
+
+struct GlFunctions {
+#define SSAM_GL_DECLARE(type, name) type name = nullptr;
+    SSAM_GL_REQUIRED_FUNCTIONS(SSAM_GL_DECLARE)
+    SSAM_GL_OPTIONAL_FUNCTIONS(SSAM_GL_DECLARE)
+#undef SSAM_GL_DECLARE
+
+    // What the current context offers (set by checkContext()).
+    int version = 0;             // major * 10 + minor
+    bool perBufferBlend = false;  // BlendEquationi & co. are usable
+    bool textureStorage = false;  // TexStorage2D is usable
+    bool clipControl = false;     // GL_CLIP_ORIGIN / GL_CLIP_DEPTH_MODE can be queried
+
+    bool hasExtension(const char* name) const;
+};
+
+// The host's loader, in either of its shapes.
+struct Loader {
+    GetProcAddress returningPointer = nullptr;
+    GetProcAddressFunction returningFunction = nullptr;
+    using AnyFunction = void (*)();
+    AnyFunction operator()(const char* name) const;
+};
+
+// Resolves every entry point through the host's loader. Throws Failure(MissingEntryPoint) naming
+// the first required function without an address; optional ones are looked up under their core
+// and then their ARB name.
+void loadFunctions(GlFunctions& gl, const Loader& load);
+
+// Throws Failure(NoContext) unless a GL 3.3+ core context is current (glGetString answers);
+// fills version and the optional capabilities. Returns the context's description for the log.
+std::string checkContext(GlFunctions& gl);
+
+}  // namespace ssam::gl::detail
