@@ -45,7 +45,7 @@ if(EXAMPLE_SOURCE)
   run(${CMAKE_COMMAND} -S ${EXAMPLE_SOURCE} -B ${EXAMPLE_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
   expect_clean_configure("${run_output}")
   run(${CMAKE_COMMAND} --build ${EXAMPLE_BUILD})
-  foreach(example ssam_gl_embedding)
+  foreach(example ssam_gl_embedding ssam_gl_host_shaders)
     execute_process(COMMAND ${EXAMPLE_BUILD}/${example} --headless --out ${EXAMPLE_BUILD}/${example}.png
                     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message("${out}")
