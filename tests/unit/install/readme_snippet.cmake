@@ -1,9 +1,11 @@
 # SPDX-License-Identifier: MIT
 # cmake -P script: the README's embedding program (the ```cpp block that starts with
 # "// leaves.cpp"), taken from README.md unchanged, built against an installed prefix twice,
-# with find_package(ssam 0.2 COMPONENTS soft) and with pkg-config, at -O3 with warnings as
-# errors, and run. A README edit that breaks the snippet, or drops it, fails this test.
-#   -DBUILD_DIR= -DPREFIX= -DREADME= -DWORK= -DCXX= -DPKG_CONFIG=
+# with find_package(ssam 0.2 COMPONENTS soft gl) and with pkg-config, at -O3 with warnings as
+# errors, and run. The raw-OpenGL snippets ("// host_foliage.cpp" in README.md,
+# "// host_shaders.cpp" in ssam/README.md: functions a host calls, no main) are compiled the
+# same way against ssam::gl. A README edit that breaks a snippet, or drops it, fails this test.
+#   -DBUILD_DIR= -DPREFIX= -DREADME= -DSSAM_README= -DWORK= -DCXX= -DPKG_CONFIG=
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
 install_library(${BUILD_DIR} ${PREFIX})
 file(REMOVE_RECURSE ${WORK})
@@ -13,13 +15,30 @@ if(NOT readme MATCHES "```cpp\n(// leaves\\.cpp\n[^`]*)```")
   message(FATAL_ERROR "${README} has no ```cpp block starting with '// leaves.cpp'")
 endif()
 file(WRITE ${WORK}/src/leaves.cpp "${CMAKE_MATCH_1}")
+# The raw-OpenGL snippets, each from its README.
+foreach(pair "${README}:host_foliage" "${SSAM_README}:host_shaders")
+  string(REGEX MATCH "^(.*):([a-z_]+)$" _ "${pair}")
+  set(snippet_readme ${CMAKE_MATCH_1})
+  set(snippet ${CMAKE_MATCH_2})
+  file(READ ${snippet_readme} text)
+  if(NOT text MATCHES "```cpp\n(// ${snippet}\\.cpp\n[^`]*)```")
+    message(FATAL_ERROR "${snippet_readme} has no ```cpp block starting with '// ${snippet}.cpp'")
+  endif()
+  file(WRITE ${WORK}/src/${snippet}.cpp "${CMAKE_MATCH_1}")
+endforeach()
 file(WRITE ${WORK}/src/CMakeLists.txt [=[
 cmake_minimum_required(VERSION 3.25)
 project(leaves CXX)
-find_package(ssam 0.2 REQUIRED COMPONENTS soft)
+find_package(ssam 0.2 REQUIRED COMPONENTS soft gl)
 add_executable(leaves leaves.cpp)
 target_compile_options(leaves PRIVATE -Wall -Wextra -Werror)
 target_link_libraries(leaves PRIVATE ssam::ssam ssam::render_soft)
+# The raw-OpenGL snippets: compiled (they are functions a host calls), with the host's loader.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(HOST_EPOXY REQUIRED IMPORTED_TARGET epoxy)
+add_library(raw_gl_snippets OBJECT host_foliage.cpp host_shaders.cpp)
+target_compile_options(raw_gl_snippets PRIVATE -Wall -Wextra -Werror)
+target_link_libraries(raw_gl_snippets PRIVATE ssam::gl PkgConfig::HOST_EPOXY)
 ]=])
 
 run(${CMAKE_COMMAND} -S ${WORK}/src -B ${WORK}/cmake-build -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
@@ -41,3 +60,8 @@ run(${WORK}/leaves-pkg-config)
 if(NOT run_output MATCHES "centre: red")
   message(FATAL_ERROR "the README's program (pkg-config build) printed no centre pixel:\n${run_output}")
 endif()
+run(${PKG_CONFIG} --cflags ssam-gl epoxy)
+separate_arguments(flags UNIX_COMMAND "${run_output}")
+foreach(snippet host_foliage host_shaders)
+  run(${CXX} -std=c++20 -O3 -Wall -Wextra -Werror -c ${WORK}/src/${snippet}.cpp -o ${WORK}/${snippet}.o ${flags})
+endforeach()
