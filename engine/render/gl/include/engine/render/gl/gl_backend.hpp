@@ -30,7 +30,7 @@
 // float-to-half rounding, blending precision on 8-bit targets, sRGB conversion precision.
 // llvmpipe (Mesa 22.x) defects worked around: a TIME_ELAPSED query begun before the first draw
 // into a framebuffer, non-indexed draws of three triangles with a zero-area last one, and the
-// scissor of multisampled targets (gl_shaders.cpp, gl_backend.cpp say where).
+// scissor of multisampled targets (gl_shaders.cpp, gl_passes.cpp say where).
 #include <cstdint>
 #include <memory>
 #include <string>

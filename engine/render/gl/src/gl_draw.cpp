@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: MIT
+// GL backend: one draw. The effective state is worked out as the soft backend's drawStateFor
+// does, the alpha test's fail modes become steps (fail_mode_plan.hpp), and each step is
+// issued with the channels and depth it may write.
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+#include "engine/core/error.hpp"
+#include "engine/render/vertex.hpp"
+#include "gl_backend_impl.hpp"
+#include "gl_check.hpp"
+#include "gl_enums.hpp"
+#include "gl_shaders.hpp"
+
+namespace engine::render::gl {
+
+void GlBackendImpl::draw(const DrawDesc& d) {
+    if (!pass_) throw Error("draw outside a pass");
+    validateDraw(d, *pass_, {passWidth_, passHeight_, passSamples_}, lookup_);
+    makeCurrent();
+    execute(d);
+}
+
+void GlBackendImpl::drawRange(const DrawDesc& d, std::uint32_t first, std::uint32_t count,
+                              std::uint32_t baseInstance, std::uint32_t instances) {
+    if (d.indices)
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
+                                            reinterpret_cast<const void*>(std::uintptr_t(first) * 4),
+                                            GLsizei(instances), baseInstance);
+    else
+        glDrawArraysInstancedBaseInstance(GL_TRIANGLES, GLint(first), GLsizei(count), GLsizei(instances), baseInstance);
+}
+
+// Exact fail modes: a triangle's fragments never overlap, so its passing and failing steps
+// commute; triangles go in the soft backend's order (instance-major).
+template <typename ApplyStep>
+void GlBackendImpl::drawPerTriangle(const DrawDesc& d, const FailModePlan& plan, ApplyStep& applyStep) {
+    for (std::uint32_t instance = 0; instance < d.instanceCount; ++instance)
+        for (std::uint32_t tri = 0; tri < d.count / 3; ++tri)
+            for (const PlanStep& step : plan.steps)
+                if (applyStep(step)) drawRange(d, d.first + tri * 3, 3, instance, 1);
+}
+
+void GlBackendImpl::execute(const DrawDesc& d) {
+    const GlPipeline& pipeline = pipelines_.get(d.pipeline);
+    const PipelineDesc& desc = pipeline.desc;
+    const ProgramSlot& s = *pipeline.program;
+    const bool fullscreen = s.desc->vertexInput == VertexInput::Fullscreen;
+    const GLuint p = s.program.id();
+
+    // Effective state, as the soft backend's drawStateFor computes it.
+    const bool depthTest = desc.depth.test && pass_->depth.texture;
+    const bool depthWrite = depthTest && desc.depth.write;
+    std::array<std::uint8_t, kMaxColorTargets> masks{};
+    std::array<bool, kMaxColorTargets> blendNeeded{};
+    bool anyRgb = false, anyAlpha = false, readsDstAlpha = false;
+    for (std::size_t i = 0; i < targets_.size(); ++i) {
+        BlendState b = desc.blend[i];
+        const int channels = formatInfo(targets_[i].format).channels;
+        b.writeMask &= std::uint8_t((1u << channels) - 1u);  // channels the format lacks are not written
+        masks[i] = b.writeMask;
+        blendNeeded[i] = !b.isPlainWrite();
+        anyRgb = anyRgb || (b.writeMask & WriteRGB);
+        anyAlpha = anyAlpha || (b.writeMask & WriteA);
+        readsDstAlpha = readsDstAlpha || rgbReadsDstAlpha(b);
+    }
+    const FailModePlan plan = planFailMode({desc.alphaTest, depthTest, depthWrite, desc.depth.func, anyRgb, anyAlpha,
+                                            readsDstAlpha, options_.failModes == FailModeStrategy::PerTriangle});
+
+    // The base state was applied when the pass began; within a pass only this backend
+    // touches the context (a host sharing it changes state between passes, not inside one).
+    glBindFramebuffer(GL_FRAMEBUFFER, passFbo_);
+    glViewport(0, 0, passWidth_, passHeight_);
+    glUseProgram(p);
+    glBindVertexArray(fullscreen ? emptyVao_ : vao_);
+    setParams(s, d.params, textures_, samplers_);
+
+    // Alpha test and alpha-to-coverage uniforms.
+    glProgramUniform1i(p, s.alphaFunc, int(desc.alphaTest.func));
+    glProgramUniform1f(p, s.alphaRef, desc.alphaTest.reference);
+    const bool a2c = desc.alphaTest.alphaToCoverage && passSamples_ > 1;
+    if (a2c && options_.nativeAlphaToCoverage) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    else glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    const bool shaderA2c = a2c && !options_.nativeAlphaToCoverage;
+    glProgramUniform1i(p, s.a2cSamples, shaderA2c ? passSamples_ : 0);
+    glProgramUniform1i(p, s.a2cActual, passActualSamples_);
+
+    // Depth, culling, scissor.
+    if (depthTest) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(glCompare(desc.depth.func));
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
+    // Full-screen programs draw a triangle that the soft backend never culls.
+    if (!fullscreen && desc.raster.cull != CullMode::None) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(desc.raster.cull == CullMode::Back ? GL_BACK : GL_FRONT);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    // With an upper-left origin GL still decides facing on NDC winding (ARB_clip_control),
+    // so counter-clockwise as displayed is GL_CCW.
+    glFrontFace(desc.raster.frontFace == Winding::CounterClockwise ? GL_CCW : GL_CW);
+    glEnable(GL_SCISSOR_TEST);
+    Rect scissor{0, 0, passWidth_, passHeight_};
+    if (d.scissor) {
+        const int x0 = std::max(0, d.scissor->x), y0 = std::max(0, d.scissor->y);
+        const int x1 = std::min(passWidth_, d.scissor->x + d.scissor->width);
+        const int y1 = std::min(passHeight_, d.scissor->y + d.scissor->height);
+        scissor = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+    }
+    if (scissor.empty()) return;
+    glScissor(scissor.x, scissor.y, scissor.width, scissor.height);  // upper-left origin: y from the top
+    if (passActualSamples_ > 1)
+        glProgramUniform4i(p, s.scissor, scissor.x, scissor.y, scissor.x + scissor.width, scissor.y + scissor.height);
+    else
+        glProgramUniform4i(p, s.scissor, 0, 0, 0, 0);
+
+    // Blending per target.
+    for (std::size_t i = 0; i < targets_.size(); ++i) {
+        const BlendState& b = desc.blend[i];
+        if (!blendNeeded[i]) {
+            glDisablei(GL_BLEND, GLuint(i));
+            continue;
+        }
+        glEnablei(GL_BLEND, GLuint(i));
+        glBlendFuncSeparatei(GLuint(i), glBlendFactor(b.srcRgb), glBlendFactor(b.dstRgb), glBlendFactor(b.srcAlpha),
+                             glBlendFactor(b.dstAlpha));
+        glBlendEquationSeparatei(GLuint(i), glBlendOp(b.opRgb), glBlendOp(b.opAlpha));
+    }
+    glBlendColor(desc.blendConstant.r, desc.blendConstant.g, desc.blendConstant.b, desc.blendConstant.a);
+
+    // Vertex input.
+    if (!fullscreen) {
+        glVertexArrayVertexBuffer(vao_, 0, buffers_.get(d.vertices).id, 0, sizeof(Vertex));
+        glVertexArrayVertexBuffer(vao_, 1, d.instances ? buffers_.get(d.instances).id : identityInstance_, 0,
+                                  sizeof(Instance));
+        glVertexArrayElementBuffer(vao_, d.indices ? buffers_.get(d.indices).id : 0);
+    }
+
+    auto applyStep = [&](const PlanStep& step) {
+        // A step that writes nothing is not drawn, unless an occlusion query counts its samples.
+        bool writes = step.depthWrite || pass_->countSamplesInto;
+        for (std::size_t i = 0; i < targets_.size(); ++i) {
+            const std::uint8_t m = masks[i] & step.channels;
+            writes = writes || m;
+            glColorMaski(GLuint(i), (m & WriteR) != 0, (m & WriteG) != 0, (m & WriteB) != 0, (m & WriteA) != 0);
+        }
+        glDepthMask(step.depthWrite ? GL_TRUE : GL_FALSE);
+        glProgramUniform1i(p, s.alphaSelect, step.select == FragmentSelect::All       ? kSelectAll
+                                             : step.select == FragmentSelect::Passing ? kSelectPassing
+                                                                                      : kSelectFailing);
+        return writes;
+    };
+
+    if (fullscreen) {
+        for (const PlanStep& step : plan.steps)
+            if (applyStep(step)) glDrawArrays(GL_TRIANGLES, 0, 3);
+    } else if (d.count > 0) {
+        if (plan.perTriangle) drawPerTriangle(d, plan, applyStep);
+        else
+            for (const PlanStep& step : plan.steps)
+                if (applyStep(step)) drawRange(d, d.first, d.count, 0, d.instanceCount);
+    }
+    // glGetError stalls a threaded driver and the message costs a string per draw: errors
+    // are checked per draw only in debug builds or with debug output on, and always at the
+    // end of the pass (endPass), which names the pass.
+    if (kCheckEveryDraw || options_.debugOutput)
+        checkGl("draw with pipeline " + quotedName(desc.name) + " in pass " + quotedName(pass_->name));
+}
+
+}  // namespace engine::render::gl

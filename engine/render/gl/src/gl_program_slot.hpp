@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// A ProgramDesc compiled for GL: the program object, where its layout's uniforms live, and how
+// a draw's parameters (DrawParams, laid out as ProgramDesc::gl says) reach them.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <epoxy/gl.h>
+
+#include "engine/render/draw_params.hpp"
+#include "engine/render/gl/gl_program.hpp"
+#include "engine/render/program_desc.hpp"
+#include "gl_caches.hpp"
+#include "gl_objects.hpp"
+
+namespace engine::render::gl {
+
+struct ProgramSlot {
+    GlProgram program;
+    std::shared_ptr<const ProgramDesc> desc;  // null for the backend's internal programs
+    std::vector<GLint> uniforms;              // one per desc->gl.uniforms
+    struct TextureUniforms {
+        GLint present = -1, filter = -1, premultiplied = -1;
+    };
+    std::vector<TextureUniforms> textures;  // one per desc->gl.textures
+    // The shared fragment tail's (finish()).
+    GLint alphaSelect = -1, scissor = -1, alphaFunc = -1, alphaRef = -1, a2cSamples = -1, a2cActual = -1;
+};
+
+// The GLSL version of the context the sources are compiled for (withGlslVersion).
+struct GlslTarget {
+    int major = 4, minor = 5;
+};
+
+// Compiles a program's GLSL and locates its uniforms.
+std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc, GlslTarget target);
+
+// One of the backend's own full-screen programs (resolves, the framebuffer check), which have
+// no layout: their uniforms are looked up by name.
+ProgramSlot compileInternal(const char* name, const std::string& fragment, GlslTarget target);
+
+// The draw's parameters as the program's layout lays them out: uniforms, and textures bound
+// to their units with samplers from `samplers`.
+void setParams(const ProgramSlot& slot, const DrawParams& params, const GlTexturePool& textures,
+               GlSamplerCache& samplers);
+
+}  // namespace engine::render::gl

@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: MIT
+// GL backend: textures (storage, upload, clears to the soft backend's bits), buffers, programs,
+// pipelines (how each will emulate the alpha test's fail modes) and occlusion queries.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <utility>
+
+#include "engine/core/error.hpp"
+#include "engine/core/log.hpp"
+#include "gl_backend_impl.hpp"
+#include "gl_check.hpp"
+#include "gl_enums.hpp"
+#include "gl_shaders.hpp"
+#include "texel_codec.hpp"
+
+namespace engine::render::gl {
+
+TextureHandle GlBackendImpl::createTexture(const TextureDesc& desc, const TextureData* data) {
+    const std::string what = "texture " + quotedName(desc.name);
+    validateTexture(desc, what);
+    const GlFormat f = glFormat(desc.format);
+    if (desc.samples > 1) {
+        const int supported = maxSamplesFor(f.internal);
+        if (desc.samples > supported)
+            throw Error(what + ": " + std::to_string(desc.samples) + " samples exceed this GL implementation's " +
+                        std::to_string(supported) + " for " + std::string(formatName(desc.format)) + " (" +
+                        info_.renderer + ")");
+        if (data && !data->levels.empty())
+            throw Error(what + ": initial data for a multisampled texture (the GL backend cannot upload samples)");
+    }
+    makeCurrent();
+    checkGlTextureFits(desc, what, textureLimits_);
+    drainGlErrors();
+    GlTexture t;
+    t.desc = desc;
+    if (desc.samples > 1) {
+        glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &t.id);
+        glTextureStorage2DMultisample(t.id, desc.samples, f.internal, desc.width, desc.height, GL_TRUE);
+        GLint samples = 0;
+        glGetTextureLevelParameteriv(t.id, 0, GL_TEXTURE_SAMPLES, &samples);
+        t.actualSamples = std::max(1, int(samples));
+    } else {
+        glCreateTextures(GL_TEXTURE_2D, 1, &t.id);
+        glTextureStorage2D(t.id, desc.mipLevels, f.internal, desc.width, desc.height);
+    }
+    try {
+        checkGl(what + ": allocating " + std::to_string(desc.width) + "x" + std::to_string(desc.height) + " " +
+                std::string(formatName(desc.format)));
+        if (data && !data->levels.empty()) upload(t, *data, what);
+        else clearToZero(t);
+        checkGl(what + ": initialising");
+    } catch (...) {
+        glDeleteTextures(1, &t.id);
+        throw;
+    }
+    ownedTextures_.insert(t.id);
+    return textures_.add(std::move(t));
+}
+
+TextureHandle GlBackendImpl::importTexture(unsigned int id, const TextureDesc& desc) {
+    const std::string what = "imported texture " + quotedName(desc.name);
+    validateTexture(desc, what);
+    makeCurrent();
+    drainGlErrors();
+    if (!glIsTexture(id)) throw Error(what + ": GL name " + std::to_string(id) + " is not a texture");
+    GLint target = 0, width = 0, height = 0, samples = 0, internal = 0, levels = 0;
+    glGetTextureParameteriv(id, GL_TEXTURE_TARGET, &target);
+    glGetTextureLevelParameteriv(id, 0, GL_TEXTURE_WIDTH, &width);
+    glGetTextureLevelParameteriv(id, 0, GL_TEXTURE_HEIGHT, &height);
+    glGetTextureLevelParameteriv(id, 0, GL_TEXTURE_SAMPLES, &samples);
+    glGetTextureLevelParameteriv(id, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+    glGetTextureParameteriv(id, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    checkGl(what + ": querying GL texture " + std::to_string(id));
+    const GLenum expectedTarget = desc.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
+    if (GLenum(target) != expectedTarget)
+        throw Error(what + ": GL texture " + std::to_string(id) + " is not a " +
+                    (desc.samples > 1 ? "2D multisample" : "2D") + " texture");
+    if (width != desc.width || height != desc.height)
+        throw Error(what + ": GL texture is " + std::to_string(width) + "x" + std::to_string(height) + ", described as " +
+                    std::to_string(desc.width) + "x" + std::to_string(desc.height));
+    if (desc.samples > 1 && samples < desc.samples)
+        throw Error(what + ": GL texture has " + std::to_string(samples) + " samples, described with " +
+                    std::to_string(desc.samples));
+    if (GLenum(internal) != glFormat(desc.format).internal)
+        throw Error(what + ": GL internal format " + hex(unsigned(internal)) + " is not " +
+                    std::string(formatName(desc.format)));
+    GlTexture t;
+    t.desc = desc;
+    t.id = id;
+    t.actualSamples = desc.samples > 1 ? samples : 1;
+    t.imported = true;
+    return textures_.add(std::move(t));
+}
+
+BufferHandle GlBackendImpl::createBuffer(const BufferDesc& desc, std::span<const std::byte> data) {
+    const std::string what = "buffer " + quotedName(desc.name);
+    validateBuffer(desc, data, what);
+    if (desc.size > (std::uint64_t(1) << 32))
+        throw Error(what + ": " + std::to_string(desc.size >> 20) + " MiB exceeds the GL backend's 4 GiB limit");
+    makeCurrent();
+    drainGlErrors();
+    GlBuffer b;
+    b.desc = desc;
+    std::vector<std::byte> zeros;
+    if (data.empty()) zeros.assign(desc.size, std::byte{0});
+    const void* initial = data.empty() ? static_cast<const void*>(zeros.data()) : data.data();
+    glCreateBuffers(1, &b.id);
+    glNamedBufferStorage(b.id, GLsizeiptr(desc.size), initial, GL_DYNAMIC_STORAGE_BIT);
+    try {
+        checkGl(what + ": allocating " + std::to_string(desc.size) + " bytes");
+    } catch (...) {
+        glDeleteBuffers(1, &b.id);
+        throw;
+    }
+    if (desc.kind == BufferKind::Index) {
+        const auto* p = static_cast<const std::byte*>(initial);
+        b.shadow.assign(p, p + desc.size);
+        b.maxIndex = largestIndex(b.shadow);
+    }
+    ownedBuffers_.insert(b.id);
+    return buffers_.add(std::move(b));
+}
+
+void GlBackendImpl::updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) {
+    GlBuffer& b = buffers_.get(handle);
+    if (offset > b.desc.size || data.size() > b.desc.size - offset)
+        throw Error("buffer " + quotedName(b.desc.name) + ": update of " + std::to_string(data.size()) +
+                    " bytes at offset " + std::to_string(offset) + " overruns its " + std::to_string(b.desc.size) +
+                    " bytes");
+    if (data.empty()) return;
+    makeCurrent();
+    glNamedBufferSubData(b.id, GLintptr(offset), GLsizeiptr(data.size()), data.data());
+    if (!b.shadow.empty()) {
+        std::memcpy(b.shadow.data() + offset, data.data(), data.size());
+        b.maxIndex = largestIndex(b.shadow);
+    }
+}
+
+ProgramHandle GlBackendImpl::createProgram(const ProgramDesc& desc) {
+    if (desc.gl.fragment.empty()) throw Error("program " + quotedName(desc.name) + " has no GLSL for the GL backend");
+    makeCurrent();
+    return programs_.add(compileSlot(std::make_shared<const ProgramDesc>(desc), glsl()));
+}
+
+PipelineHandle GlBackendImpl::createPipeline(const PipelineDesc& desc) {
+    const std::string what = "pipeline " + quotedName(desc.name);
+    if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
+        throw Error(what + ": alpha reference is not finite");
+    std::shared_ptr<const ProgramSlot> program = programFor(desc.program);
+    if (program->desc->vertexInput == VertexInput::Fullscreen && desc.depth.test)
+        throw Error(what + ": full-screen program " + program->desc->name + " cannot depth-test");
+    GlPipeline p{desc, {}, std::move(program)};
+    bool anyRgb = false, anyAlpha = false, plain = true, readsDstAlpha = false;
+    for (const BlendState& b : desc.blend) {
+        anyRgb = anyRgb || (b.writeMask & WriteRGB);
+        anyAlpha = anyAlpha || (b.writeMask & WriteA);
+        plain = plain && b.isPlainWrite();
+        readsDstAlpha = readsDstAlpha || rgbReadsDstAlpha(b);
+    }
+    const FailModePlan plan = planFailMode({desc.alphaTest, desc.depth.test, desc.depth.write, desc.depth.func,
+                                            anyRgb, anyAlpha, readsDstAlpha,
+                                            options_.failModes == FailModeStrategy::PerTriangle});
+    p.info.alphaTestDropped = plan.alphaTestDropped;
+    p.info.blendIsPlainWrite = plain;
+    p.info.exact = plan.exact;
+    if (!plan.exact) p.info.note = plan.note;
+    if (desc.alphaTest.alphaToCoverage && options_.nativeAlphaToCoverage) {
+        p.info.exact = false;
+        p.info.note += std::string(p.info.note.empty() ? "" : "; ") +
+                       "native GL_SAMPLE_ALPHA_TO_COVERAGE: the coverage pattern is implementation-defined";
+    }
+    if (!p.info.exact) log::warn("GL ", what, ": inexact emulation: ", p.info.note);
+    else if (!plan.note.empty()) log::debug("GL ", what, ": ", plan.note);
+    return pipelines_.add(std::move(p));
+}
+
+void GlBackendImpl::destroy(TextureHandle h) {
+    GlTexture& t = textures_.get(h);
+    makeCurrent();
+    framebuffers_.forget(t.id);
+    if (!t.imported) {
+        glDeleteTextures(1, &t.id);
+        ownedTextures_.erase(t.id);
+    }
+    textures_.remove(h);
+}
+
+void GlBackendImpl::destroy(BufferHandle h) {
+    GlBuffer& b = buffers_.get(h);
+    makeCurrent();
+    glDeleteBuffers(1, &b.id);
+    ownedBuffers_.erase(b.id);
+    buffers_.remove(h);
+}
+
+void GlBackendImpl::destroy(ProgramHandle h) {
+    makeCurrent();
+    programs_.remove(h);
+}
+
+void GlBackendImpl::destroy(QueryHandle h) {
+    const GlQuery q = queries_.get(h);
+    checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, true);
+    queries_.remove(h);
+    if (q.id) {
+        makeCurrent();
+        releaseQueryObject(q.id);
+    }
+}
+
+bool GlBackendImpl::anySamplesPassed(QueryHandle h) {
+    const GlQuery& q = queries_.get(h);
+    checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, false);
+    if (!q.counted) throw uncountedQueryError(q.name);
+    makeCurrent();
+    GLuint any = 0;
+    glGetQueryObjectuiv(q.id, GL_QUERY_RESULT, &any);
+    return any != 0;
+}
+
+int GlBackendImpl::maxSamplesFor(GLenum internal) {
+    auto it = maxSamplesByFormat_.find(internal);
+    if (it != maxSamplesByFormat_.end()) return it->second;
+    makeCurrent();
+    GLint count = 0;
+    glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internal, GL_NUM_SAMPLE_COUNTS, 1, &count);
+    std::vector<GLint> counts(std::size_t(std::max(count, 0)));
+    if (count > 0) glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internal, GL_SAMPLES, count, counts.data());
+    int best = 1;
+    for (GLint c : counts) best = std::max(best, int(c));
+    return maxSamplesByFormat_[internal] = best;
+}
+
+void GlBackendImpl::upload(GlTexture& t, const TextureData& data, const std::string& what) {
+    const TextureDesc& desc = t.desc;
+    if (data.levels.size() > std::size_t(desc.mipLevels))
+        throw Error(what + ": " + std::to_string(data.levels.size()) + " levels of data for " +
+                    std::to_string(desc.mipLevels) + " mip levels");
+    const bool half = desc.format == Format::RGBA16F || desc.format == Format::RG16F || desc.format == Format::R16F;
+    const int channels = formatInfo(desc.format).channels;
+    const GlFormat f = glFormat(desc.format);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    std::vector<std::byte> previous;
+    int previousWidth = 0, previousHeight = 0;
+    for (int level = 0; level < desc.mipLevels; ++level) {
+        const int w = std::max(1, desc.width >> level), h = std::max(1, desc.height >> level);
+        const std::size_t pixels = std::size_t(w) * h;
+        std::vector<std::byte> stored;
+        if (std::size_t(level) < data.levels.size()) {
+            const std::size_t expected =
+                half ? pixels * channels * sizeof(float) : pixels * std::size_t(formatInfo(desc.format).bytesPerPixel);
+            if (data.levels[level].size() != expected)
+                throw Error(what + ": level " + std::to_string(level) + " has " +
+                            std::to_string(data.levels[level].size()) + " bytes, expected " + std::to_string(expected));
+            stored = toStored(desc.format, data.levels[level], pixels);
+        } else {
+            stored = generateMip(desc.format, previous, previousWidth, previousHeight, w, h);
+        }
+        glTextureSubImage2D(t.id, level, 0, 0, w, h, f.pixelFormat, f.storedType, stored.data());
+        previous = std::move(stored);
+        previousWidth = w, previousHeight = h;
+    }
+}
+
+void GlBackendImpl::clearTexture(const GlTexture& t, const glm::vec4& value) {
+    const GlFormat f = glFormat(t.desc.format);
+    const std::vector<std::byte> texel = encodeTexel(t.desc.format, value);
+    glClearTexImage(t.id, 0, f.pixelFormat, f.storedType, texel.data());
+}
+
+// GL leaves new storage undefined; the soft backend starts from zero bytes.
+void GlBackendImpl::clearToZero(const GlTexture& t) {
+    const GlFormat f = glFormat(t.desc.format);
+    const int levels = t.desc.samples > 1 ? 1 : t.desc.mipLevels;
+    for (int level = 0; level < levels; ++level) glClearTexImage(t.id, level, f.pixelFormat, f.storedType, nullptr);
+}
+
+std::shared_ptr<const ProgramSlot> GlBackendImpl::programFor(const ProgramRef& ref) {
+    if (ref.created) return programs_.get(ref.created);
+    const auto index = std::size_t(ref.standard);
+    if (index >= standardPrograms_.size()) throw Error("unknown standard program " + std::to_string(index));
+    std::shared_ptr<const ProgramSlot>& slot = standardPrograms_[index];
+    if (!slot) {
+        ProgramDesc desc = standardProgramDesc(ref.standard);
+        desc.gl.fragment = standardFragment(ref.standard);
+        makeCurrent();
+        slot = compileSlot(std::make_shared<const ProgramDesc>(std::move(desc)), glsl());
+    }
+    return slot;
+}
+
+ProgramSlot& GlBackendImpl::internalProgram(std::optional<ProgramSlot>& slot, const char* name,
+                                            const std::string& fragment) {
+    if (!slot) slot = compileInternal(name, fragment, glsl());
+    return *slot;
+}
+
+}  // namespace engine::render::gl
