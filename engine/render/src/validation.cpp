@@ -35,6 +35,23 @@ void validateTexture(const TextureDesc& desc, const std::string& what) {
         throw Error(what + ": " + std::to_string(bytes >> 20) + " MiB exceeds the 1 GiB texture limit");
 }
 
+void validateTextureData(const TextureDesc& desc, const TextureData& data, const std::string& what) {
+    if (data.levels.size() > std::size_t(desc.mipLevels))
+        throw Error(what + ": " + std::to_string(data.levels.size()) + " levels of data for " +
+                    std::to_string(desc.mipLevels) + " mip levels");
+    const FormatInfo& info = formatInfo(desc.format);
+    const bool half = info.isFloat && info.bytesPerPixel == 2 * info.channels;
+    for (std::size_t level = 0; level < data.levels.size(); ++level) {
+        const std::size_t pixels =
+            std::size_t(std::max(1, desc.width >> level)) * std::size_t(std::max(1, desc.height >> level));
+        const std::size_t expected = half ? pixels * info.channels * sizeof(float)
+                                          : pixels * std::size_t(desc.samples) * info.bytesPerPixel;
+        if (data.levels[level].size() != expected)
+            throw Error(what + ": level " + std::to_string(level) + " has " + std::to_string(data.levels[level].size()) +
+                        " bytes, expected " + std::to_string(expected));
+    }
+}
+
 void validateBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) {
     const std::uint64_t stride = elementSize(desc.kind);
     if (desc.size == 0 || desc.size % stride != 0)
@@ -43,6 +60,24 @@ void validateBuffer(const BufferDesc& desc, std::span<const std::byte> data, con
     if (!data.empty() && data.size() != desc.size)
         throw Error(what + ": " + std::to_string(data.size()) + " bytes given for a " + std::to_string(desc.size) +
                     "-byte buffer");
+}
+
+void validateBufferUpdate(const BufferDesc& desc, std::uint64_t offset, std::uint64_t size) {
+    if (offset > desc.size || size > desc.size - offset)
+        throw Error("buffer " + quotedName(desc.name) + ": update of " + std::to_string(size) + " bytes at offset " +
+                    std::to_string(offset) + " overruns its " + std::to_string(desc.size) + " bytes");
+}
+
+std::string validateResolve(const TextureDesc& source, const TextureDesc& destination) {
+    const std::string what = "resolve " + quotedName(source.name) + " -> " + quotedName(destination.name);
+    if (source.width != destination.width || source.height != destination.height || source.format != destination.format ||
+        destination.samples != 1)
+        throw Error(what + ": needs the same size and format and a single-sampled destination");
+    return what;
+}
+
+void validateReadback(const TextureDesc& desc) {
+    if (desc.samples != 1) throw Error("readback of " + quotedName(desc.name) + ": multisampled; resolve it first");
 }
 
 Error uncountedQueryError(const std::string& queryName) {

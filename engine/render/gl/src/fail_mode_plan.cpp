@@ -5,17 +5,6 @@
 
 namespace engine::render::gl {
 
-bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite, bool anyAlphaWrite) {
-    if (!test.enabled || test.func == CompareFunc::Always) return false;
-    switch (test.failMode) {
-        case AlphaFailMode::Keep: return true;
-        case AlphaFailMode::FbOnly: return depthWrite;
-        case AlphaFailMode::ZbOnly: return anyRgbWrite || anyAlphaWrite;
-        case AlphaFailMode::RgbOnly: return depthWrite || anyAlphaWrite;
-    }
-    return true;
-}
-
 namespace {
 
 // What a fragment class writes: ColorWrite bits plus kDepthBit.

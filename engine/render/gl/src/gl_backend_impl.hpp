@@ -90,7 +90,7 @@ private:
 
     // gl_resources.cpp
     int maxSamplesFor(GLenum internal);
-    void upload(GlTexture& t, const TextureData& data, const std::string& what);
+    void upload(GlTexture& t, const TextureData& data);  // data that validateTextureData accepted
     void clearTexture(const GlTexture& t, const glm::vec4& value);
     void clearToZero(const GlTexture& t);  // GL leaves new storage undefined; soft starts from zeros
     std::shared_ptr<const ProgramSlot> programFor(const ProgramRef& ref);
@@ -99,6 +99,7 @@ private:
 
     // gl_passes.cpp
     void applyBaseState();
+    void endPassQueries(bool counted);
     void validateFramebufferState();
     bool conditionPending(GLuint query) const;
     void releaseQueryObject(GLuint query);

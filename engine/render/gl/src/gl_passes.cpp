@@ -105,28 +105,29 @@ void GlBackendImpl::beginPass(const PassDesc& pass) {
 void GlBackendImpl::endPass() {
     if (!pass_) throw Error("endPass without beginPass");
     makeCurrent();
-    if (passCondition_) glEndConditionalRender();
-    if (pass_->countSamplesInto) {
-        glEndQuery(GL_ANY_SAMPLES_PASSED);
-        queries_.get(pass_->countSamplesInto).counted = true;
-    }
-    glEndQuery(GL_TIME_ELAPSED);
+    endPassQueries(true);
     pendingTimings_.push_back({pass_->name, std::exchange(passQuery_, 0u), std::exchange(passCondition_, 0u)});
     pass_.reset();
     targets_.clear();
     checkGl("pass: ending");
 }
 
+// Ends the open pass's conditional rendering, occlusion query (whose result then counts, or
+// not when the pass is aborted) and timer query.
+void GlBackendImpl::endPassQueries(bool counted) {
+    if (passCondition_) glEndConditionalRender();
+    if (pass_->countSamplesInto) {
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        queries_.get(pass_->countSamplesInto).counted = counted;
+    }
+    glEndQuery(GL_TIME_ELAPSED);
+}
+
 void GlBackendImpl::abortPass() noexcept {
     if (!pass_) return;
     try {
         makeCurrent();
-        if (passCondition_) glEndConditionalRender();
-        if (pass_->countSamplesInto) {
-            glEndQuery(GL_ANY_SAMPLES_PASSED);
-            queries_.get(pass_->countSamplesInto).counted = false;
-        }
-        glEndQuery(GL_TIME_ELAPSED);
+        endPassQueries(false);
         glDeleteQueries(1, &passQuery_);
     } catch (...) {  // no current context or a destroyed query: the pass is dropped all the same
     }
@@ -138,11 +139,7 @@ void GlBackendImpl::abortPass() noexcept {
 void GlBackendImpl::resolve(const ResolveDesc& r) {
     GlTexture& src = textures_.get(r.source);
     GlTexture& dst = textures_.get(r.destination);
-    if (src.desc.width != dst.desc.width || src.desc.height != dst.desc.height || src.desc.format != dst.desc.format ||
-        dst.desc.samples != 1)
-        throw Error("resolve " + quotedName(src.desc.name) + " -> " + quotedName(dst.desc.name) +
-                    ": needs the same size and format and a single-sampled destination");
-    const std::string what = "resolve " + quotedName(src.desc.name) + " -> " + quotedName(dst.desc.name);
+    const std::string what = validateResolve(src.desc, dst.desc);
     makeCurrent();
     drainGlErrors();
     const bool depth = formatInfo(src.desc.format).isDepth;
@@ -154,22 +151,7 @@ void GlBackendImpl::resolve(const ResolveDesc& r) {
     }
     ProgramSlot& program = depth ? internalProgram(resolveDepth_, "resolve depth", resolveDepthFragmentSource())
                                  : internalProgram(resolveColor_, "resolve colour", resolveColorFragmentSource());
-    GLuint fbo = 0;
-    glCreateFramebuffers(1, &fbo);
-    if (depth) {
-        glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, dst.id, 0);
-        glNamedFramebufferDrawBuffer(fbo, GL_NONE);
-    } else {
-        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, dst.id, 0);
-        glNamedFramebufferDrawBuffer(fbo, GL_COLOR_ATTACHMENT0);
-    }
-    glNamedFramebufferReadBuffer(fbo, GL_NONE);
-    try {
-        checkFramebuffer(fbo, what);
-    } catch (...) {
-        glDeleteFramebuffers(1, &fbo);
-        throw;
-    }
+    const GLuint fbo = depth ? framebuffers_.get({}, dst.id, what) : framebuffers_.get({dst.id}, 0, what);
     applyBaseState();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glViewport(0, 0, dst.desc.width, dst.desc.height);
@@ -196,13 +178,12 @@ void GlBackendImpl::resolve(const ResolveDesc& r) {
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
     checkGl(what);
 }
 
 Readback GlBackendImpl::readback(TextureHandle h) {
     const GlTexture& t = textures_.get(h);
-    if (t.desc.samples != 1) throw Error("readback of " + quotedName(t.desc.name) + ": multisampled; resolve it first");
+    validateReadback(t.desc);
     const FormatInfo& info = formatInfo(t.desc.format);
     const GlFormat f = glFormat(t.desc.format);
     Readback r;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 #include <epoxy/gl.h>
@@ -31,20 +32,18 @@ int GlProgram::uniform(const char* name) const { return glGetUniformLocation(id_
 
 namespace {
 
-std::string shaderLog(GLuint shader) {
+// A shader's or a program's info log when its `status` (GL_COMPILE_STATUS, GL_LINK_STATUS) is
+// false, without the NULs and newlines drivers end it with; nothing when the status is true.
+// getInteger/getLog: glGetShaderiv/glGetShaderInfoLog, or the program ones (same signatures).
+std::optional<std::string> failureLog(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getInteger,
+                                      PFNGLGETSHADERINFOLOGPROC getLog) {
+    GLint ok = GL_FALSE;
+    getInteger(object, status, &ok);
+    if (ok) return std::nullopt;
     GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    getInteger(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(std::size_t(std::max(length, 1)), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
-    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-    return log;
-}
-
-std::string programLog(GLuint program) {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
+    getLog(object, length, nullptr, log.data());
     while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
     return log;
 }
@@ -56,13 +55,10 @@ GLuint compileStage(const std::string& name, GLenum stage, std::string_view sour
     const GLint length = static_cast<GLint>(source.size());
     glShaderSource(shader, 1, &text, &length);
     glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        const std::string log = shaderLog(shader);
+    if (const auto log = failureLog(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog)) {
         glDeleteShader(shader);
         throw Error("GL program '" + name + "': " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                    " shader does not compile:\n" + log);
+                    " shader does not compile:\n" + *log);
     }
     return shader;
 }
@@ -86,12 +82,9 @@ GlProgram compileProgram(std::string name, std::string_view vertexSource, std::s
     glDetachShader(program, fs);
     glDeleteShader(vs);
     glDeleteShader(fs);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = programLog(program);
+    if (const auto log = failureLog(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog)) {
         glDeleteProgram(program);
-        throw Error("GL program '" + name + "' does not link:\n" + log);
+        throw Error("GL program '" + name + "' does not link:\n" + *log);
     }
     return GlProgram(std::move(name), program);
 }

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "gl_shaders.hpp"
 
@@ -34,31 +35,16 @@ void setUniform(GLuint p, GLint location, const UniformField& field, const std::
         case UniformType::Int: glProgramUniform1i(p, location, readAt<int>(at)); return;
         case UniformType::Bool: glProgramUniform1i(p, location, readAt<bool>(at) ? 1 : 0); return;
         case UniformType::Byte: glProgramUniform1i(p, location, int(readAt<std::uint8_t>(at))); return;
-        case UniformType::Vec2: {
-            const auto v = readAt<glm::vec2>(at);
-            glProgramUniform2fv(p, location, 1, &v[0]);
+        // value_ptr of the value read: the temporary lives until the call returns.
+        case UniformType::Vec2: glProgramUniform2fv(p, location, 1, glm::value_ptr(readAt<glm::vec2>(at))); return;
+        case UniformType::Vec3: glProgramUniform3fv(p, location, 1, glm::value_ptr(readAt<glm::vec3>(at))); return;
+        case UniformType::Direction:  // normalised, as the soft programs normalise it
+            glProgramUniform3fv(p, location, 1, glm::value_ptr(glm::normalize(readAt<glm::vec3>(at))));
             return;
-        }
-        case UniformType::Vec3: {
-            const auto v = readAt<glm::vec3>(at);
-            glProgramUniform3fv(p, location, 1, &v[0]);
+        case UniformType::Vec4: glProgramUniform4fv(p, location, 1, glm::value_ptr(readAt<glm::vec4>(at))); return;
+        case UniformType::Mat4:
+            glProgramUniformMatrix4fv(p, location, 1, GL_FALSE, glm::value_ptr(readAt<glm::mat4>(at)));
             return;
-        }
-        case UniformType::Direction: {
-            const glm::vec3 v = glm::normalize(readAt<glm::vec3>(at));  // as the soft programs normalise it
-            glProgramUniform3fv(p, location, 1, &v[0]);
-            return;
-        }
-        case UniformType::Vec4: {
-            const auto v = readAt<glm::vec4>(at);
-            glProgramUniform4fv(p, location, 1, &v[0]);
-            return;
-        }
-        case UniformType::Mat4: {
-            const auto v = readAt<glm::mat4>(at);
-            glProgramUniformMatrix4fv(p, location, 1, GL_FALSE, &v[0][0]);
-            return;
-        }
     }
 }
 

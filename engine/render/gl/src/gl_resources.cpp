@@ -30,6 +30,7 @@ TextureHandle GlBackendImpl::createTexture(const TextureDesc& desc, const Textur
         if (data && !data->levels.empty())
             throw Error(what + ": initial data for a multisampled texture (the GL backend cannot upload samples)");
     }
+    if (data) validateTextureData(desc, *data, what);
     makeCurrent();
     checkGlTextureFits(desc, what, textureLimits_);
     drainGlErrors();
@@ -48,7 +49,7 @@ TextureHandle GlBackendImpl::createTexture(const TextureDesc& desc, const Textur
     try {
         checkGl(what + ": allocating " + std::to_string(desc.width) + "x" + std::to_string(desc.height) + " " +
                 std::string(formatName(desc.format)));
-        if (data && !data->levels.empty()) upload(t, *data, what);
+        if (data && !data->levels.empty()) upload(t, *data);
         else clearToZero(t);
         checkGl(what + ": initialising");
     } catch (...) {
@@ -125,10 +126,7 @@ BufferHandle GlBackendImpl::createBuffer(const BufferDesc& desc, std::span<const
 
 void GlBackendImpl::updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) {
     GlBuffer& b = buffers_.get(handle);
-    if (offset > b.desc.size || data.size() > b.desc.size - offset)
-        throw Error("buffer " + quotedName(b.desc.name) + ": update of " + std::to_string(data.size()) +
-                    " bytes at offset " + std::to_string(offset) + " overruns its " + std::to_string(b.desc.size) +
-                    " bytes");
+    validateBufferUpdate(b.desc, offset, data.size());
     if (data.empty()) return;
     makeCurrent();
     glNamedBufferSubData(b.id, GLintptr(offset), GLsizeiptr(data.size()), data.data());
@@ -233,13 +231,8 @@ int GlBackendImpl::maxSamplesFor(GLenum internal) {
     return maxSamplesByFormat_[internal] = best;
 }
 
-void GlBackendImpl::upload(GlTexture& t, const TextureData& data, const std::string& what) {
+void GlBackendImpl::upload(GlTexture& t, const TextureData& data) {
     const TextureDesc& desc = t.desc;
-    if (data.levels.size() > std::size_t(desc.mipLevels))
-        throw Error(what + ": " + std::to_string(data.levels.size()) + " levels of data for " +
-                    std::to_string(desc.mipLevels) + " mip levels");
-    const bool half = desc.format == Format::RGBA16F || desc.format == Format::RG16F || desc.format == Format::R16F;
-    const int channels = formatInfo(desc.format).channels;
     const GlFormat f = glFormat(desc.format);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
@@ -253,11 +246,6 @@ void GlBackendImpl::upload(GlTexture& t, const TextureData& data, const std::str
         const std::size_t pixels = std::size_t(w) * h;
         std::vector<std::byte> stored;
         if (std::size_t(level) < data.levels.size()) {
-            const std::size_t expected =
-                half ? pixels * channels * sizeof(float) : pixels * std::size_t(formatInfo(desc.format).bytesPerPixel);
-            if (data.levels[level].size() != expected)
-                throw Error(what + ": level " + std::to_string(level) + " has " +
-                            std::to_string(data.levels[level].size()) + " bytes, expected " + std::to_string(expected));
             stored = toStored(desc.format, data.levels[level], pixels);
         } else {
             stored = generateMip(desc.format, previous, previousWidth, previousHeight, w, h);

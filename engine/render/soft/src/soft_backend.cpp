@@ -58,19 +58,6 @@ struct GeometryChunk {
 };
 
 
-// The alpha test can only matter when a failing fragment writes something different
-// from a passing one ([PCSX2] "Looking further").
-bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite, bool anyAlphaWrite) {
-    if (!test.enabled || test.func == CompareFunc::Always) return false;
-    switch (test.failMode) {
-        case AlphaFailMode::Keep: return true;
-        case AlphaFailMode::FbOnly: return depthWrite;
-        case AlphaFailMode::ZbOnly: return anyRgbWrite || anyAlphaWrite;
-        case AlphaFailMode::RgbOnly: return depthWrite || anyAlphaWrite;
-    }
-    return true;
-}
-
 // An occlusion query: what the last pass that counted into it found.
 struct SoftQuery {
     std::string name;
@@ -109,6 +96,7 @@ public:
     TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
         const std::string what = "texture " + quotedName(desc.name);
         validateTexture(desc, what);
+        if (data) validateTextureData(desc, *data, what);
         const FormatInfo& info = formatInfo(desc.format);
         // Texels, plus the float alpha plane copyAlpha keeps beside sampled RGBA8 textures.
         const bool alphaPlane = (desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB) &&
@@ -125,7 +113,7 @@ public:
             l.texels.assign(std::size_t(l.width) * l.height * desc.samples * info.bytesPerPixel, std::byte{0});
             t.levels.push_back(std::move(l));
         }
-        if (data) upload(t, *data, what);
+        if (data) upload(t, *data);
         t.copyAlpha();  // texels are final here unless the texture is a render target
         return textures_.add(std::move(t));
     }
@@ -141,10 +129,7 @@ public:
 
     void updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) override {
         SoftBuffer& b = buffers_.get(handle);
-        if (offset > b.bytes.size() || data.size() > b.bytes.size() - offset)
-            throw Error("buffer " + quotedName(b.desc.name) + ": update of " + std::to_string(data.size()) +
-                        " bytes at offset " + std::to_string(offset) + " overruns its " +
-                        std::to_string(b.bytes.size()) + " bytes");
+        validateBufferUpdate(b.desc, offset, data.size());
         if (data.empty()) return;
         // Recorded draws read their buffers when the pass executes; one that reads this buffer
         // must see it as it was when it was drawn (as on GL), so the draws so far run first.
@@ -268,10 +253,7 @@ public:
     void resolve(const ResolveDesc& r) override {
         SoftTexture& src = textures_.get(r.source);
         SoftTexture& dst = textures_.get(r.destination);
-        if (src.desc.width != dst.desc.width || src.desc.height != dst.desc.height || src.desc.format != dst.desc.format ||
-            dst.desc.samples != 1)
-            throw Error("resolve " + quotedName(src.desc.name) + " -> " + quotedName(dst.desc.name) +
-                        ": needs the same size and format and a single-sampled destination");
+        validateResolve(src.desc, dst.desc);
         const bool depth = formatInfo(src.desc.format).isDepth;
         const int n = src.desc.samples;
         arena_.execute([&] {
@@ -299,8 +281,7 @@ public:
 
     Readback readback(TextureHandle h) override {
         const SoftTexture& t = textures_.get(h);
-        if (t.desc.samples != 1)
-            throw Error("readback of " + quotedName(t.desc.name) + ": multisampled; resolve it first");
+        validateReadback(t.desc);
         const FormatInfo& info = formatInfo(t.desc.format);
         Readback r;
         r.width = t.desc.width;
@@ -329,21 +310,15 @@ public:
     std::vector<PassTiming> takeTimings() override { return std::exchange(timings_, {}); }
 
 private:
-    void upload(SoftTexture& t, const TextureData& data, const std::string& what) {
-        if (data.levels.size() > t.levels.size())
-            throw Error(what + ": " + std::to_string(data.levels.size()) + " levels of data for " +
-                        std::to_string(t.levels.size()) + " mip levels");
+    // Data that validateTextureData accepted.
+    void upload(SoftTexture& t, const TextureData& data) {
         const bool half = t.desc.format == Format::RGBA16F || t.desc.format == Format::RG16F || t.desc.format == Format::R16F;
         const int channels = formatInfo(t.desc.format).channels;
         for (std::size_t level = 0; level < data.levels.size(); ++level) {
             MipLevel& l = t.levels[level];
             const std::size_t pixels = std::size_t(l.width) * l.height;
-            const std::size_t expected = half ? pixels * channels * sizeof(float) : l.texels.size();
-            if (data.levels[level].size() != expected)
-                throw Error(what + ": level " + std::to_string(level) + " has " + std::to_string(data.levels[level].size()) +
-                            " bytes, expected " + std::to_string(expected));
             if (!half) {
-                std::memcpy(l.texels.data(), data.levels[level].data(), expected);
+                std::memcpy(l.texels.data(), data.levels[level].data(), l.texels.size());
                 continue;
             }
             const float* src = reinterpret_cast<const float*>(data.levels[level].data());

@@ -36,9 +36,23 @@ struct ResourceLookup {
 // Checked before anything is allocated; `what` names the texture in the message.
 void validateTexture(const TextureDesc& desc, const std::string& what);
 
+// Initial data: at most one level per mip level, each of exactly the level's size (16F formats
+// given as 32-bit floats; a multisampled level holds every sample).
+void validateTextureData(const TextureDesc& desc, const TextureData& data, const std::string& what);
+
 // A positive size that is a whole number of elements of its kind, and initial data (when
 // given) of exactly that size.
 void validateBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what);
+
+// An update of `size` bytes at `offset` that lies inside the buffer.
+void validateBufferUpdate(const BufferDesc& desc, std::uint64_t offset, std::uint64_t size);
+
+// A resolve between textures of one size and format into a single-sampled destination.
+// Returns how errors after it name the resolve ("resolve 'a' -> 'b'").
+std::string validateResolve(const TextureDesc& source, const TextureDesc& destination);
+
+// Readback and presenting read single-sampled textures.
+void validateReadback(const TextureDesc& desc);
 
 // Colour attachments are colour render targets, the depth attachment is D32F, all share one
 // size and sample count, and there is at least one. Returns that size.

@@ -34,7 +34,7 @@ struct PlanStep {
 
 struct FailModePlan {
     std::vector<PlanStep> steps;
-    bool alphaTestDropped = false;  // enabled but cannot change the result (soft's alphaTestCanMatter)
+    bool alphaTestDropped = false;  // enabled but cannot change the result (alphaTestCanMatter)
     bool perTriangle = false;       // issue the steps triangle by triangle
     bool exact = true;
     std::string note;               // how it was emulated / why it is inexact
@@ -50,10 +50,6 @@ struct FailModeInputs {
     bool rgbReadsDstAlpha = false;  // some blending target's RGB factors use destination alpha
     bool perTriangleAllowed = false;  // GlOptions::failModes == PerTriangle
 };
-
-// The alpha test can only matter when a failing fragment writes something different from a
-// passing one ([PCSX2] "Looking further"); the soft backend's rule, verbatim.
-bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite, bool anyAlphaWrite);
 
 FailModePlan planFailMode(const FailModeInputs& in);
 
