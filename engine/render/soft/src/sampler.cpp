@@ -40,19 +40,13 @@ glm::vec4 nearest(const SoftTexture& t, const SamplerState& s, int level, glm::v
 template <SampledChannels Channels>
 [[gnu::always_inline]] inline glm::vec4 bilinear(const SoftTexture& t, const SamplerState& s, int level, glm::vec2 uv) {
     const MipLevel& l = t.levels[level];
-    const float fx = safeCoord(uv.x) * l.width - 0.5f;
-    const float fy = safeCoord(uv.y) * l.height - 0.5f;
-    const float x0f = std::floor(fx), y0f = std::floor(fy);
-    const float ax = fx - x0f, ay = fy - y0f;
-    const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
-    const int xa = applyAddress(s.addressU, x0, l.width), xb = applyAddress(s.addressU, x0 + 1, l.width);
-    const int ya = applyAddress(s.addressV, y0, l.height), yb = applyAddress(s.addressV, y0 + 1, l.height);
+    const BilinearTaps b = bilinearTaps(s, l.width, l.height, uv);
     const ByteTables& tables = byteTables();
     const glm::vec4 top =
-        glm::mix(load<Channels>(t, tables, level, xa, ya), load<Channels>(t, tables, level, xb, ya), ax);
+        glm::mix(load<Channels>(t, tables, level, b.xa, b.ya), load<Channels>(t, tables, level, b.xb, b.ya), b.ax);
     const glm::vec4 bottom =
-        glm::mix(load<Channels>(t, tables, level, xa, yb), load<Channels>(t, tables, level, xb, yb), ax);
-    return glm::mix(top, bottom, ay);
+        glm::mix(load<Channels>(t, tables, level, b.xa, b.yb), load<Channels>(t, tables, level, b.xb, b.yb), b.ax);
+    return glm::mix(top, bottom, b.ay);
 }
 
 }  // namespace

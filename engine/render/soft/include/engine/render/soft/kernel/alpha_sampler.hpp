@@ -132,16 +132,10 @@ private:
 
     [[gnu::always_inline]] float bilinear(int level, glm::vec2 uv) const {
         const Level& l = levels_[level];
-        const float fx = safeCoord(uv.x) * l.width - 0.5f;
-        const float fy = safeCoord(uv.y) * l.height - 0.5f;
-        const float x0f = std::floor(fx), y0f = std::floor(fy);
-        const float ax = fx - x0f, ay = fy - y0f;
-        const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
-        const int xa = applyAddress(sampler_.addressU, x0, l.width), xb = applyAddress(sampler_.addressU, x0 + 1, l.width);
-        const int ya = applyAddress(sampler_.addressV, y0, l.height), yb = applyAddress(sampler_.addressV, y0 + 1, l.height);
-        const float top = load(l, xa, ya) * (1.0f - ax) + load(l, xb, ya) * ax;
-        const float bottom = load(l, xa, yb) * (1.0f - ax) + load(l, xb, yb) * ax;
-        return top * (1.0f - ay) + bottom * ay;
+        const BilinearTaps b = bilinearTaps(sampler_, l.width, l.height, uv);
+        const float top = load(l, b.xa, b.ya) * (1.0f - b.ax) + load(l, b.xb, b.ya) * b.ax;
+        const float bottom = load(l, b.xa, b.yb) * (1.0f - b.ax) + load(l, b.xb, b.yb) * b.ax;
+        return top * (1.0f - b.ay) + bottom * b.ay;
     }
 
 #if SOFT_SAMPLER_SSE2

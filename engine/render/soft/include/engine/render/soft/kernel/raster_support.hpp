@@ -156,6 +156,26 @@ DepthRowFn depthRowFunction(CompareFunc func) {
     return depthRow<CompareFunc::Always, Write>;
 }
 
+// What a shaded fragment still writes after the alpha test in the GS sense ([PCSX2]): a
+// passing fragment writes colour, alpha and (when the draw writes depth) depth; a failing one
+// what its fail mode keeps, nothing at all for Keep (`discard`).
+struct AlphaTestWrites {
+    bool discard;
+    std::uint8_t channels;  // ColorWrite bits
+    bool depth;
+};
+
+inline AlphaTestWrites alphaTestWrites(const AlphaTest& test, float alpha, bool depthWrite) {
+    if (test.passes(alpha)) return {false, WriteAll, depthWrite};
+    switch (test.failMode) {
+        case AlphaFailMode::Keep: return {true, 0, false};
+        case AlphaFailMode::FbOnly: return {false, WriteAll, false};
+        case AlphaFailMode::ZbOnly: return {false, 0, depthWrite};
+        case AlphaFailMode::RgbOnly: return {false, WriteRGB, false};
+    }
+    return {false, WriteAll, depthWrite};
+}
+
 // Where a single-sampled target's pixels are, and how a draw writes them.
 struct TargetView {
     std::byte* base = nullptr;

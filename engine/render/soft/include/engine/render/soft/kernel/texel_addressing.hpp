@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/glm.hpp>
+
 #include "engine/render/texture.hpp"
 
 namespace engine::render::soft {
@@ -41,6 +43,22 @@ namespace engine::render::soft {
 inline float safeCoord(float v) {
     if (!std::isfinite(v)) return 0.0f;
     return std::clamp(v, -1.0e6f, 1.0e6f);
+}
+
+// The 2x2 texels bilinear filtering reads at uv in a width x height level (columns xa, xb,
+// rows ya, yb, addressed) and the weights ax, ay of the second column and row.
+struct BilinearTaps {
+    int xa, xb, ya, yb;
+    float ax, ay;
+};
+
+[[gnu::always_inline]] inline BilinearTaps bilinearTaps(const SamplerState& s, int width, int height, glm::vec2 uv) {
+    const float fx = safeCoord(uv.x) * width - 0.5f;
+    const float fy = safeCoord(uv.y) * height - 0.5f;
+    const float x0f = std::floor(fx), y0f = std::floor(fy);
+    const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
+    return {applyAddress(s.addressU, x0, width), applyAddress(s.addressU, x0 + 1, width),
+            applyAddress(s.addressV, y0, height), applyAddress(s.addressV, y0 + 1, height), fx - x0f, fy - y0f};
 }
 
 }  // namespace engine::render::soft

@@ -50,21 +50,12 @@ inline void TriangleRasterizer<Program>::prepareConstant(const SetupTriangle& t,
     constant_ = true;
     const glm::vec4 color = program_.shade(interpolate(t, 0, 0, 0.0f, 0.0f));
     constantColor_ = color;
-    bool writeRgb = true, writeAlpha = true;
-    constantDepthWrite_ = draw_.depthWrite;
-    constantDiscard_ = false;
-    if (!draw_.alphaTest.passes(color.a)) {
-        switch (draw_.alphaTest.failMode) {
-            case AlphaFailMode::Keep: constantDiscard_ = true; break;
-            case AlphaFailMode::FbOnly: constantDepthWrite_ = false; break;
-            case AlphaFailMode::ZbOnly: writeRgb = writeAlpha = false; break;
-            case AlphaFailMode::RgbOnly: writeAlpha = constantDepthWrite_ = false; break;
-        }
-    }
-    const std::uint8_t allowed = std::uint8_t((writeRgb ? WriteRGB : 0) | (writeAlpha ? WriteA : 0));
+    const AlphaTestWrites writes = alphaTestWrites(draw_.alphaTest, color.a, draw_.depthWrite);
+    constantDiscard_ = writes.discard;
+    constantDepthWrite_ = writes.depth;
     for (int i = 0; i < draw_.colorTargetCount; ++i) {
         const TargetView& target = color_[i];
-        constantMask_[i] = draw_.blend[i].writeMask & allowed;
+        constantMask_[i] = draw_.blend[i].writeMask & writes.channels;
         if (target.rgba8Plain) {
             std::byte bytes[4];
             storeRgba8Unorm(bytes, color);

@@ -96,19 +96,11 @@ inline void TriangleRasterizer<Program>::writeShaded(const glm::vec4& color, int
         return;
     }
 
-    bool writeRgb = true, writeAlpha = true, writeDepth = draw_.depthWrite;
-    if (!draw_.alphaTest.passes(color.a)) {
-        switch (draw_.alphaTest.failMode) {
-            case AlphaFailMode::Keep: return;
-            case AlphaFailMode::FbOnly: writeDepth = false; break;
-            case AlphaFailMode::ZbOnly: writeRgb = writeAlpha = false; break;
-            case AlphaFailMode::RgbOnly: writeAlpha = writeDepth = false; break;
-        }
-    }
-    if (writeDepth) std::memcpy(depthAt, &z, sizeof z);
-    const std::uint8_t allowed = std::uint8_t((writeRgb ? WriteRGB : 0) | (writeAlpha ? WriteA : 0));
+    const AlphaTestWrites writes = alphaTestWrites(draw_.alphaTest, color.a, draw_.depthWrite);
+    if (writes.discard) return;
+    if (writes.depth) std::memcpy(depthAt, &z, sizeof z);
     for (int i = 0; i < draw_.colorTargetCount; ++i) {
-        const std::uint8_t mask = draw_.blend[i].writeMask & allowed;
+        const std::uint8_t mask = draw_.blend[i].writeMask & writes.channels;
         if (mask) writeColor(i, color_[i].at(px, py), color, mask);
     }
 }
@@ -158,22 +150,13 @@ inline void TriangleRasterizer<Program>::shadePixel(const SetupTriangle& t, int 
         if (!live) return;
     }
 
-    // Alpha test in the GS sense ([PCSX2]): on failure the fail mode decides what
-    // is still written.
-    bool writeRgb = true, writeAlpha = true, writeDepth = draw_.depthWrite;
-    if (!draw_.alphaTest.passes(color.a)) {
-        switch (draw_.alphaTest.failMode) {
-            case AlphaFailMode::Keep: return;
-            case AlphaFailMode::FbOnly: writeDepth = false; break;
-            case AlphaFailMode::ZbOnly: writeRgb = writeAlpha = false; break;
-            case AlphaFailMode::RgbOnly: writeAlpha = writeDepth = false; break;
-        }
-    }
-    if (writeDepth) storeDepth(px, py, live, z);
-    const std::uint8_t allowed = std::uint8_t((writeRgb ? WriteRGB : 0) | (writeAlpha ? WriteA : 0));
-    if (!allowed) return;
+    // The alpha test in the GS sense ([PCSX2]): a failing fragment writes what its fail mode keeps.
+    const AlphaTestWrites writes = alphaTestWrites(draw_.alphaTest, color.a, draw_.depthWrite);
+    if (writes.discard) return;
+    if (writes.depth) storeDepth(px, py, live, z);
+    if (!writes.channels) return;
     for (int i = 0; i < draw_.colorTargetCount; ++i) {
-        const std::uint8_t mask = draw_.blend[i].writeMask & allowed;
+        const std::uint8_t mask = draw_.blend[i].writeMask & writes.channels;
         if (!mask) continue;
         SoftTexture& target = *draw_.colorTargets[i];
         const Format format = target.desc.format;
