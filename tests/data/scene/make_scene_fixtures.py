@@ -11,23 +11,15 @@ half of the quad. Draco files are made by the test itself with the Draco encoder
 import base64
 import json
 import pathlib
+import sys
 import struct
-import zlib
 
 HERE = pathlib.Path(__file__).resolve().parent
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, str(HERE.parent))
+from png_bytes import png  # noqa: E402 (after the path)
 NEAREST, CLAMP = 9728, 33071
 FLOAT, USHORT, SHORT, UBYTE = 5126, 5123, 5122, 5121
-
-
-def png(width, height, pixels):
-    """RGBA8 PNG; pixels is a list of rows of (r, g, b, a)."""
-    def chunk(tag, data):
-        body = tag + data
-        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
-    raw = b"".join(b"\x00" + bytes(c for px in row for c in px) for row in pixels)
-    ihdr = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw, 9)) +
-            chunk(b"IEND", b""))
 
 
 class Doc:
