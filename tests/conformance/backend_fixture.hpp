@@ -18,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include "draws.hpp"         // tests/support
 #include "expect_error.hpp"  // tests/support
 #include "engine/core/error.hpp"
 #include "engine/render/backend.hpp"
@@ -26,6 +27,17 @@
 namespace ssam::test {
 
 namespace render = engine::render;
+// The vocabulary every suite uses.
+using render::AlphaFailMode;
+using render::AlphaTest;
+using render::BlendFactor;
+using render::BlendOp;
+using render::BlendState;
+using render::CompareFunc;
+using render::DepthState;
+using render::Format;
+using ssam::testing::fullscreenDraw;
+using ssam::testing::meshDraw;
 
 struct BackendCase {
     std::string name;  // a valid gtest name: letters, digits and '_'
@@ -63,6 +75,16 @@ inline render::Vertex pixelVertex(int width, int height, double x, double y, flo
     return v;
 }
 
+// `incoming <func> stored` as the depth and alpha test suites expect it, from the outcomes
+// each function accepts rather than by calling render::compare, so a wrong mapping there
+// would show. Bits: 1 less, 2 equal, 4 greater, 8 unordered (a NaN: only NOTEQUAL and ALWAYS
+// pass, as IEEE != does), in CompareFunc's order from Never to Always.
+inline bool referenceCompare(render::CompareFunc func, float incoming, float stored) {
+    constexpr std::uint8_t kAccepted[] = {0b0000, 0b0001, 0b0010, 0b0011, 0b0100, 0b1101, 0b0110, 0b1111};
+    const int outcome = incoming < stored ? 1 : incoming == stored ? 2 : incoming > stored ? 4 : 8;
+    return (kAccepted[std::size_t(func)] & outcome) != 0;
+}
+
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& v) {
     return std::as_bytes(std::span<const T>(v));
@@ -82,14 +104,7 @@ protected:
 
     render::TextureHandle renderTarget(int width, int height, render::Format format, int samples = 1,
                                        const std::string& name = "target") {
-        render::TextureDesc desc;
-        desc.name = name;
-        desc.width = width;
-        desc.height = height;
-        desc.format = format;
-        desc.samples = samples;
-        desc.usage = render::UsageRenderTarget | (samples == 1 ? render::UsageSampled : 0);
-        return gfx().createTexture(desc);
+        return gfx().createTexture(render::renderTargetDesc(name, width, height, format, samples));
     }
 
     render::TextureHandle depthTarget(int width, int height, int samples = 1, const std::string& name = "depth") {
@@ -121,12 +136,8 @@ protected:
     // Draws `count` vertices from `first` of a non-indexed vertex buffer with the Flat program.
     void drawFlat(render::PipelineHandle pipeline, render::BufferHandle vertices, std::uint32_t count,
                   glm::vec4 color = glm::vec4(1.0f), std::uint32_t first = 0, glm::mat4 viewProj = glm::mat4(1.0f)) {
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = render::FlatParams{viewProj, color};
-        d.vertices = vertices;
+        auto d = meshDraw(pipeline, render::FlatParams{viewProj, color}, vertices, count);
         d.first = first;
-        d.count = count;
         gfx().draw(d);
     }
 

@@ -26,12 +26,6 @@ namespace ssam::test {
 namespace {
 
 namespace gl = engine::render::gl;
-using render::AlphaFailMode;
-using render::BlendFactor;
-using render::BlendOp;
-using render::BlendState;
-using render::CompareFunc;
-using render::Format;
 
 std::unique_ptr<render::Backend> softBackend() { return engine::render::soft::createSoftBackend({.threads = 1}); }
 std::unique_ptr<render::Backend> glBackend(gl::FailModeStrategy failModes = gl::FailModeStrategy::TwoPass) {
@@ -97,14 +91,7 @@ void compareOn(render::Backend& soft, render::Backend& glb, const Scenario& scen
 }
 
 render::TextureHandle target(render::Backend& b, int w, int h, Format f, int samples = 1, const std::string& name = "t") {
-    render::TextureDesc d;
-    d.name = name;
-    d.width = w;
-    d.height = h;
-    d.format = f;
-    d.samples = samples;
-    d.usage = render::UsageRenderTarget | (samples == 1 ? render::UsageSampled : 0);
-    return b.createTexture(d);
+    return b.createTexture(render::renderTargetDesc(name, w, h, f, samples));
 }
 
 render::BufferHandle vertices(render::Backend& b, const std::vector<render::Vertex>& v) {
@@ -238,12 +225,7 @@ TEST(GlVsSoft, SsamMaskBlend) {
                 pass.name = "mask";
                 pass.color[0] = {t, render::LoadOp::Clear, glm::vec4(0.0f)};
                 b.beginPass(pass);
-                render::DrawDesc d;
-                d.pipeline = p;
-                d.params = render::AlphaOnlyParams{glm::mat4(1.0f), 0.9f, {}};
-                d.vertices = vb;
-                d.count = std::uint32_t(v.size());
-                b.draw(d);
+                b.draw(meshDraw(p, render::AlphaOnlyParams{glm::mat4(1.0f), 0.9f, {}}, vb, std::uint32_t(v.size())));
                 b.endPass();
                 return std::vector<render::Readback>{b.readback(t)};
             },
@@ -281,12 +263,7 @@ Scenario alphaTestScenario(const render::PipelineDesc& desc, bool withDepth, flo
         if (withDepth) pass.depth = {depth, render::LoadOp::Clear, depthClear};
         b.beginPass(pass);
         for (auto [p, vb, n] : {std::tuple{p1, vb1, first.size()}, std::tuple{p2, vb2, second.size()}}) {
-            render::DrawDesc d;
-            d.pipeline = p;
-            d.params = render::FlatParams{};
-            d.vertices = vb;
-            d.count = std::uint32_t(n);
-            b.draw(d);
+            b.draw(meshDraw(p, render::FlatParams{}, vb, std::uint32_t(n)));
         }
         b.endPass();
         std::vector<render::Readback> out{b.readback(color)};
@@ -388,12 +365,7 @@ TEST(GlVsSoft, AlphaToCoverageSampleCounts) {
                 pass.name = "a2c";
                 pass.color[0] = {color, render::LoadOp::Clear, glm::vec4(0.0f)};
                 b.beginPass(pass);
-                render::DrawDesc d;
-                d.pipeline = p;
-                d.params = render::FlatParams{};
-                d.vertices = vb;
-                d.count = std::uint32_t(v.size());
-                b.draw(d);
+                b.draw(meshDraw(p, render::FlatParams{}, vb, std::uint32_t(v.size())));
                 b.endPass();
                 const auto resolved = target(b, 11, 1, Format::RGBA32F, 1, "resolved");
                 b.resolve({color, resolved});
@@ -439,12 +411,7 @@ TEST(GlVsSoft, MsaaColourAndClosestDepthResolve) {
                     pass.color[0] = {color, render::LoadOp::Clear, {0.25f, 0.5f, 0.75f, 1.0f}};
                     pass.depth = {depth, render::LoadOp::Clear, func == CompareFunc::Less ? 1.0f : 0.0f};
                     b.beginPass(pass);
-                    render::DrawDesc d;
-                    d.pipeline = p;
-                    d.params = render::FlatParams{};
-                    d.vertices = vb;
-                    d.count = 6;
-                    b.draw(d);
+                    b.draw(meshDraw(p, render::FlatParams{}, vb, 6));
                     b.endPass();
                     const auto c1 = target(b, 16, 16, f, 1, "resolved");
                     const auto d1 = target(b, 16, 16, Format::D32F, 1, "resolved_depth");

@@ -9,28 +9,7 @@
 namespace ssam::test {
 namespace {
 
-using render::AlphaFailMode;
-using render::AlphaTest;
-using render::CompareFunc;
-using render::Format;
-
 constexpr int kSize = 4;
-
-// Written out again here rather than calling render::compare, so a wrong enum mapping there
-// would show.
-bool referenceCompare(CompareFunc func, float incoming, float reference) {
-    switch (func) {
-        case CompareFunc::Never: return false;
-        case CompareFunc::Less: return incoming < reference;
-        case CompareFunc::Equal: return incoming == reference;
-        case CompareFunc::LessEqual: return incoming <= reference;
-        case CompareFunc::Greater: return incoming > reference;
-        case CompareFunc::NotEqual: return incoming != reference;
-        case CompareFunc::GreaterEqual: return incoming >= reference;
-        case CompareFunc::Always: return true;
-    }
-    return false;
-}
 
 int code(float v) { return int(std::lround(v * 255.0f)); }
 
@@ -139,6 +118,12 @@ TEST_P(AlphaTestConformance, DroppedTestRendersTheSame) {
         }
 }
 
+render::AlphaTest alphaToCoverage() {
+    render::AlphaTest test;
+    test.alphaToCoverage = true;
+    return test;
+}
+
 // Alpha-to-coverage: white with alpha a over black covers round(a * samples) samples, so the
 // resolved value is that count / samples (RGB) and count * a / samples (alpha).
 TEST_P(AlphaToCoverageConformance, CoveredSampleCount) {
@@ -148,9 +133,7 @@ TEST_P(AlphaToCoverageConformance, CoveredSampleCount) {
     for (int samples : {2, 4, 8}) {
         const render::TextureHandle target = renderTarget(kSize, kSize, Format::RGBA32F, samples);
         const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize));
-        render::AlphaTest a2c;
-        a2c.alphaToCoverage = true;
-        const render::PipelineHandle pipeline = flatPipeline({}, {}, a2c);
+        const render::PipelineHandle pipeline = flatPipeline({}, {}, alphaToCoverage());
         for (float alpha : alphas) {
             pass(target, glm::vec4(0.0f), [&] { drawFlat(pipeline, quad, 6, {1.0f, 1.0f, 1.0f, alpha}); });
             const render::Readback r = gfx().readback(resolved(target));
@@ -170,9 +153,7 @@ TEST_P(AlphaToCoverageConformance, CoveredSampleCountRgba8) {
     for (int samples : {2, 4, 8}) {
         const render::TextureHandle target = renderTarget(kSize, kSize, Format::RGBA8_UNORM, samples);
         const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize));
-        render::AlphaTest a2c;
-        a2c.alphaToCoverage = true;
-        const render::PipelineHandle pipeline = flatPipeline({}, {}, a2c);
+        const render::PipelineHandle pipeline = flatPipeline({}, {}, alphaToCoverage());
         for (float alpha : {0.1f, 0.3f, 0.7f, 0.9f}) {
             pass(target, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f),
                  [&] { drawFlat(pipeline, quad, 6, {1.0f, 1.0f, 1.0f, alpha}); });
@@ -188,9 +169,7 @@ TEST_P(AlphaToCoverageConformance, CoveredSampleCountRgba8) {
 TEST_P(AlphaToCoverageConformance, IgnoredAtOneSample) {
     const render::TextureHandle target = renderTarget(kSize, kSize, Format::RGBA32F);
     const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize));
-    render::AlphaTest a2c;
-    a2c.alphaToCoverage = true;
-    const render::PipelineHandle pipeline = flatPipeline({}, {}, a2c);
+    const render::PipelineHandle pipeline = flatPipeline({}, {}, alphaToCoverage());
     pass(target, glm::vec4(0.0f), [&] { drawFlat(pipeline, quad, 6, {1.0f, 1.0f, 1.0f, 0.1f}); });
     const render::Readback r = gfx().readback(target);
     EXPECT_EQ(r.at(2, 2, 0), 1.0f);

@@ -17,10 +17,6 @@
 namespace ssam::test {
 namespace {
 
-using render::BlendFactor;
-using render::BlendOp;
-using render::BlendState;
-using render::Format;
 namespace ref = reference;
 
 constexpr int kSize = 4;
@@ -136,11 +132,7 @@ private:
         gfx_.beginPass(pass);
         if (pipeline) {
             for (int q = 0; q < 4; ++q) {
-                render::DrawDesc d;
-                d.pipeline = *pipeline;
-                d.params = render::FlatParams{glm::mat4(1.0f), kSources[q]};
-                d.vertices = triangle_;
-                d.count = 3;
+                auto d = meshDraw(*pipeline, render::FlatParams{glm::mat4(1.0f), kSources[q]}, triangle_, 3);
                 d.scissor = render::Rect{2 * (q % 2), 2 * (q / 2), 2, 2};
                 gfx_.draw(d);
             }

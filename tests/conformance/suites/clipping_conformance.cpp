@@ -14,12 +14,6 @@
 namespace ssam::test {
 namespace {
 
-using render::BlendFactor;
-using render::BlendState;
-using render::CompareFunc;
-using render::DepthState;
-using render::Format;
-
 constexpr int kSize = 32;
 constexpr double kNear = 1.0, kFar = 100.0;
 
@@ -81,12 +75,7 @@ public:
         pass.color[0] = {color, render::LoadOp::Clear, glm::vec4(0.0f)};
         pass.depth = {depth, render::LoadOp::Clear, 1.0f};
         gfx_.beginPass(pass);
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = render::FlatParams{projection(), glm::vec4(1.0f)};
-        d.vertices = vb;
-        d.count = 3;
-        gfx_.draw(d);
+        gfx_.draw(meshDraw(pipeline, render::FlatParams{projection(), glm::vec4(1.0f)}, vb, 3));
         gfx_.endPass();
         const render::Readback c = gfx_.readback(color);
         const render::Readback z = gfx_.readback(depth);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Depth test and write: the eight compare functions with writes on and off, the test off,
 // reverse-Z, interpolation of a sloped depth, and exact repeatability across passes.
+#include <array>
 #include <cmath>
 
 #include "../backend_fixture.hpp"
@@ -8,25 +9,7 @@
 namespace ssam::test {
 namespace {
 
-using render::CompareFunc;
-using render::DepthState;
-using render::Format;
-
 constexpr int kSize = 8;
-
-bool referenceCompare(CompareFunc func, float incoming, float stored) {
-    switch (func) {
-        case CompareFunc::Never: return false;
-        case CompareFunc::Less: return incoming < stored;
-        case CompareFunc::Equal: return incoming == stored;
-        case CompareFunc::LessEqual: return incoming <= stored;
-        case CompareFunc::Greater: return incoming > stored;
-        case CompareFunc::NotEqual: return incoming != stored;
-        case CompareFunc::GreaterEqual: return incoming >= stored;
-        case CompareFunc::Always: return true;
-    }
-    return false;
-}
 
 TEST_P(DepthConformance, EveryFuncWithWriteOnAndOff) {
     const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
@@ -72,32 +55,26 @@ TEST_P(DepthConformance, ReverseZ) {
     const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
     const render::TextureHandle depth = depthTarget(kSize, kSize);
     const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Greater));
-    const render::BufferHandle nearQuad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.8f));
-    const render::BufferHandle middleQuad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.5f));
-    const render::BufferHandle farQuad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.2f));
-    // Near first: the others are hidden.
-    pass(color, {0, 0, 0, 0}, [&] {
-        drawFlat(pipeline, nearQuad, 6, {1, 0, 0, 1});
-        drawFlat(pipeline, farQuad, 6, {0, 1, 0, 1});
-        drawFlat(pipeline, middleQuad, 6, {0, 0, 1, 1});
-    }, depth, 0.0f);
-    render::Readback c = gfx().readback(color);
-    EXPECT_EQ(c.at(4, 4, 0), 1.0f);
-    EXPECT_EQ(c.at(4, 4, 1), 0.0f);
-    EXPECT_EQ(c.at(4, 4, 2), 0.0f);
-    EXPECT_EQ(gfx().readback(depth).at(4, 4, 0), 0.8f);
-    // Far first: each nearer one replaces it.
-    pass(color, {0, 0, 0, 0}, [&] {
-        drawFlat(pipeline, farQuad, 6, {0, 1, 0, 1});
-        drawFlat(pipeline, middleQuad, 6, {0, 0, 1, 1});
-        drawFlat(pipeline, nearQuad, 6, {1, 0, 0, 1});
-    }, depth, 0.0f);
-    c = gfx().readback(color);
-    EXPECT_EQ(c.at(4, 4, 0), 1.0f);
-    EXPECT_EQ(c.at(4, 4, 2), 0.0f);
-    EXPECT_EQ(gfx().readback(depth).at(4, 4, 0), 0.8f);
+    auto fullQuadAt = [&](float z) { return vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, z)); };
+    struct Surface {
+        render::BufferHandle quad;
+        glm::vec4 color;
+    };
+    const Surface nearest{fullQuadAt(0.8f), {1, 0, 0, 1}}, middle{fullQuadAt(0.5f), {0, 0, 1, 1}},
+        farthest{fullQuadAt(0.2f), {0, 1, 0, 1}};
+    // Near first (the others are hidden), then far first (each nearer one replaces it).
+    for (const auto& order : {std::array{nearest, farthest, middle}, std::array{farthest, middle, nearest}}) {
+        pass(color, {0, 0, 0, 0}, [&] {
+            for (const Surface& s : order) drawFlat(pipeline, s.quad, 6, s.color);
+        }, depth, 0.0f);
+        const render::Readback c = gfx().readback(color);
+        EXPECT_EQ(c.at(4, 4, 0), 1.0f);
+        EXPECT_EQ(c.at(4, 4, 1), 0.0f);
+        EXPECT_EQ(c.at(4, 4, 2), 0.0f);
+        EXPECT_EQ(gfx().readback(depth).at(4, 4, 0), 0.8f);
+    }
     // A surface at the cleared depth 0 (the far plane) fails Greater.
-    const render::BufferHandle atFar = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.0f));
+    const render::BufferHandle atFar = fullQuadAt(0.0f);
     pass(color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, atFar, 6); }, depth, 0.0f);
     EXPECT_EQ(gfx().readback(color).at(4, 4, 0), 0.0f);
 }

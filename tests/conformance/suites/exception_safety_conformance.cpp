@@ -14,8 +14,6 @@
 namespace ssam::test {
 namespace {
 
-using render::Format;
-
 constexpr int kSize = 8;
 
 // The centre pixel of `target` after a pass that clears it to `clear` and draws `draws`.
@@ -39,11 +37,7 @@ TEST_P(ExceptionSafetyConformance, ARefusedDrawLeavesNoPassOpen) {
     EXPECT_THROW(
         {
             render::PassScope scope(gfx(), p);
-            render::DrawDesc d;
-            d.pipeline = pipeline;
-            d.params = render::FlatParams{};
-            d.count = 3;  // no vertex buffer: refused
-            gfx().draw(d);
+            gfx().draw(meshDraw(pipeline, render::FlatParams{}, {}, 3));  // no vertex buffer: refused
             scope.end();
         },
         engine::Error);
@@ -128,10 +122,7 @@ TEST_P(ExceptionSafetyConformance, AProgramOutlivesItsHandleWhileAPipelineUsesIt
     gfx().destroy(program);
     expectError([&] { gfx().destroy(program); }, "program");  // the handle is gone
     pass(target, glm::vec4(0.0f), [&] {
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = CompositeParams{foliage, mask, {}, 0.0f, false};
-        gfx().draw(d);
+        gfx().draw(fullscreenDraw(pipeline, CompositeParams{foliage, mask, {}, 0.0f, false}));
     });
     const render::Readback r = gfx().readback(target);
     EXPECT_EQ(r.at(1, 1, 0), 1.0f);  // the foliage colour, written as is (no blend)

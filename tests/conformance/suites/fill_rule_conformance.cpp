@@ -17,11 +17,6 @@
 namespace ssam::test {
 namespace {
 
-using render::BlendFactor;
-using render::BlendOp;
-using render::BlendState;
-using render::Format;
-
 struct Mesh {
     std::vector<render::Vertex> vertices;
     std::vector<std::uint32_t> indices;
@@ -185,14 +180,7 @@ public:
 
 private:
     render::TextureHandle makeTarget(render::Backend& gfx, int width, int height, Format format, int samples) {
-        render::TextureDesc desc;
-        desc.name = "fill";
-        desc.width = width;
-        desc.height = height;
-        desc.format = format;
-        desc.samples = samples;
-        desc.usage = render::UsageRenderTarget;
-        return gfx.createTexture(desc);
+        return gfx.createTexture(render::renderTargetDesc("fill", width, height, format, samples));
     }
 
     void draw(render::Backend& gfx, render::TextureHandle target, const Mesh& m, const BlendState& blend, glm::vec4 color) {

@@ -12,10 +12,6 @@
 namespace ssam::test {
 namespace {
 
-using render::CompareFunc;
-using render::DepthState;
-using render::Format;
-
 constexpr int kWide = 6, kHigh = 4;
 constexpr float kEdge = 2.5f;  // pixel centre of column 2
 

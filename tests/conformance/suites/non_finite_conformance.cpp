@@ -13,8 +13,6 @@
 namespace ssam::test {
 namespace {
 
-using render::Format;
-
 constexpr int kSize = 4;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -52,10 +50,7 @@ public:
         pass.name = "non-finite";
         pass.color[0] = {target, render::LoadOp::Load};
         gfx_.beginPass(pass);
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = params;
-        gfx_.draw(d);
+        gfx_.draw(fullscreenDraw(pipeline, params));
         gfx_.endPass();
         gfx_.destroy(pipeline);
         gfx_.destroy(handle);

@@ -9,10 +9,6 @@
 namespace ssam::test {
 namespace {
 
-using render::CompareFunc;
-using render::DepthState;
-using render::Format;
-
 constexpr int kSize = 16;
 
 // A depth-only pass drawing a quad at clip depth z over a depth target holding `stored`,
@@ -24,12 +20,7 @@ void countQuad(render::Backend& gfx, render::TextureHandle depth, render::Pipeli
     p.depth = {depth, render::LoadOp::Load};
     p.countSamplesInto = query;
     gfx.beginPass(p);
-    render::DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = render::FlatParams{};
-    d.vertices = quad;
-    d.count = 6;
-    gfx.draw(d);
+    gfx.draw(meshDraw(pipeline, render::FlatParams{}, quad, 6));
     gfx.endPass();
 }
 

@@ -11,10 +11,7 @@
 namespace ssam::test {
 namespace {
 
-using render::BlendFactor;
-using render::BlendState;
 using render::CullMode;
-using render::Format;
 using render::Winding;
 
 constexpr int kSize = 8;
@@ -72,11 +69,7 @@ TEST_P(RasterConformance, Scissor) {
     const render::Rect rects[] = {{1, 2, 3, 2}, {-3, 5, 5, 10}, {6, 6, 0, 2}, {9, 0, 4, 4}};
     for (const render::Rect& rect : rects) {
         pass(target, glm::vec4(0.0f), [&] {
-            render::DrawDesc d;
-            d.pipeline = pipeline;
-            d.params = render::FlatParams{};
-            d.vertices = quad;
-            d.count = 6;
+            auto d = meshDraw(pipeline, render::FlatParams{}, quad, 6);
             d.scissor = rect;
             gfx().draw(d);
         });
@@ -106,11 +99,7 @@ TEST_P(RasterConformance, InstancesTransformAndTint) {
         {"instances", render::BufferKind::Instance, instances.size() * sizeof(render::Instance)}, bytesOf(instances));
     const render::PipelineHandle pipeline = flatPipeline();
     pass(target, glm::vec4(0.0f), [&] {
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = render::FlatParams{glm::mat4(1.0f), {1.0f, 1.0f, 0.5f, 1.0f}};
-        d.vertices = quad;
-        d.count = 6;
+        auto d = meshDraw(pipeline, render::FlatParams{glm::mat4(1.0f), {1.0f, 1.0f, 0.5f, 1.0f}}, quad, 6);
         d.instances = ib;
         d.instanceCount = 3;
         gfx().draw(d);

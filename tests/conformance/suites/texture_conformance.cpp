@@ -21,7 +21,6 @@ namespace {
 using render::AddressMode;
 using render::AlphaMode;
 using render::Filter;
-using render::Format;
 using render::ProgramKind;
 using render::SamplerState;
 
@@ -106,12 +105,7 @@ public:
         pass.name = "textured";
         pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(-1.0f)};
         gfx_.beginPass(pass);
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = params;
-        d.vertices = vb;
-        d.count = 6;
-        gfx_.draw(d);
+        gfx_.draw(meshDraw(pipeline, params, vb, 6));
         gfx_.endPass();
         render::Readback r = gfx_.readback(target);
         gfx_.destroy(target);

@@ -26,14 +26,7 @@ std::unique_ptr<render::Backend> makeGl(gl::GlOptions options = {}) { return gl:
 std::unique_ptr<render::Backend> makeSoft() { return engine::render::soft::createSoftBackend({.threads = 1}); }
 
 render::TextureHandle target(render::Backend& b, int w, int h, Format f, int samples = 1, const std::string& name = "t") {
-    render::TextureDesc d;
-    d.name = name;
-    d.width = w;
-    d.height = h;
-    d.format = f;
-    d.samples = samples;
-    d.usage = render::UsageRenderTarget | (samples == 1 ? render::UsageSampled : 0);
-    return b.createTexture(d);
+    return b.createTexture(render::renderTargetDesc(name, w, h, f, samples));
 }
 
 render::BufferHandle vertices(render::Backend& b, const std::vector<render::Vertex>& v) {
@@ -47,11 +40,7 @@ render::PipelineHandle flat(render::Backend& b, render::PipelineDesc desc = {}) 
 
 void drawFlatOn(render::Backend& b, render::PipelineHandle p, render::BufferHandle vb, std::uint32_t count,
                 glm::vec4 color = glm::vec4(1.0f), std::optional<render::Rect> scissor = std::nullopt) {
-    render::DrawDesc d;
-    d.pipeline = p;
-    d.params = render::FlatParams{glm::mat4(1.0f), color};
-    d.vertices = vb;
-    d.count = count;
+    auto d = meshDraw(p, render::FlatParams{glm::mat4(1.0f), color}, vb, count);
     d.scissor = scissor;
     b.draw(d);
 }
@@ -174,12 +163,7 @@ TEST_F(GlBackendTest, UvOriginIsTheFirstStoredRow) {
         render::SurfaceParams params;
         params.baseColor = {tex, {render::Filter::Nearest}};
         params.light = {{0, 0, 1}, glm::vec3(0.0f), glm::vec3(1.0f)};  // ambient only: the texel itself
-        render::DrawDesc d;
-        d.pipeline = p;
-        d.params = params;
-        d.vertices = vb;
-        d.count = 6;
-        gfx().draw(d);
+        gfx().draw(meshDraw(p, params, vb, 6));
     });
     const render::Readback r = gfx().readback(t);
     EXPECT_EQ(r.at(1, 0, 0), 1.0f);
@@ -208,12 +192,7 @@ TEST_F(GlBackendTest, WindingAndCullingMatchSoft) {
                 onePass(*b, t, glm::vec4(0.0f), [&] {
                     render::SurfaceParams params;
                     params.light = {{0, 0, 1}, glm::vec3(1.0f), glm::vec3(0.0f)};
-                    render::DrawDesc d;
-                    d.pipeline = p;
-                    d.params = params;
-                    d.vertices = vb;
-                    d.count = 6;
-                    b->draw(d);
+                    b->draw(meshDraw(p, params, vb, 6));
                 });
                 results.push_back(b->readback(t));
             }
@@ -342,9 +321,7 @@ TEST_F(GlBackendTest, CompositeMatchesSoft) {
         pass.name = "composite";
         pass.color[0] = {out, render::LoadOp::Clear, {0.3f, 0.6f, 0.2f, 1.0f}};
         b->beginPass(pass);
-        render::DrawDesc d;
-        d.pipeline = p;
-        d.params = ssam::CompositeParams{foliage, mask, {}, 0.85f, true};
+        auto d = fullscreenDraw(p, ssam::CompositeParams{foliage, mask, {}, 0.85f, true});
         d.scissor = render::Rect{0, 0, 6, 3};
         b->draw(d);
         d.params = ssam::CompositeParams{foliage, mask, maskAdd, 0.5f, false};

@@ -153,19 +153,30 @@ void beginColorPass(Rig& r, render::TextureHandle color = {}) {
     r.backend->beginPass(p);
 }
 
-render::DrawDesc flatDraw(const Rig& r) {
-    render::DrawDesc d;
-    d.pipeline = r.flat;
-    d.params = render::FlatParams{};
-    d.vertices = r.vertices;
-    d.count = 6;
-    return d;
-}
+render::DrawDesc flatDraw(const Rig& r) { return meshDraw(r.flat, render::FlatParams{}, r.vertices, 6); }
 
 struct Misuse {
     const char* name;
     std::function<void(Rig&)> run;
 };
+
+// A misuse that draws flatDraw(r) in a colour pass after `edit` has changed it.
+std::function<void(Rig&)> badDraw(void (*edit)(Rig&, render::DrawDesc&)) {
+    return [edit](Rig& r) {
+        beginColorPass(r);
+        render::DrawDesc d = flatDraw(r);
+        edit(r, d);
+        r.backend->draw(d);
+    };
+}
+
+// The lit program sampling `texture`.
+void sampleWithLit(Rig& r, render::DrawDesc& d, render::TextureHandle texture) {
+    d.pipeline = r.lit;
+    render::SurfaceParams params;
+    params.baseColor.texture = texture;
+    d.params = params;
+}
 
 const Misuse kMisuses[] = {
     {"empty texture", [](Rig& r) { r.backend->createTexture({"zero", 0, 4}); }},
@@ -248,91 +259,17 @@ const Misuse kMisuses[] = {
      }},
     {"draw outside pass", [](Rig& r) { r.backend->draw(flatDraw(r)); }},
     {"end without begin", [](Rig& r) { r.backend->endPass(); }},
-    {"params mismatch",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.params = render::AlphaOnlyParams{};
-         r.backend->draw(d);
-     }},
-    {"depth test without depth",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.pipeline = r.depthTested;
-         r.backend->draw(d);
-     }},
-    {"count not multiple of 3",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.count = 4;
-         r.backend->draw(d);
-     }},
-    {"vertices out of range",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.first = 3;
-         r.backend->draw(d);
-     }},
-    {"index out of range",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.indices = r.indices;
-         r.backend->draw(d);
-     }},
-    {"indices past the buffer",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.indices = r.indices;
-         d.first = 3;
-         r.backend->draw(d);
-     }},
-    {"index buffer as vertices",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.vertices = r.indices;
-         r.backend->draw(d);
-     }},
-    {"too many instances",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.instances = r.instances;
-         d.instanceCount = 3;
-         r.backend->draw(d);
-     }},
-    {"instances without buffer",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.instanceCount = 2;
-         r.backend->draw(d);
-     }},
-    {"sampling the target",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.pipeline = r.lit;
-         render::SurfaceParams params;
-         params.baseColor.texture = r.color;
-         d.params = params;
-         r.backend->draw(d);
-     }},
-    {"sampling msaa",
-     [](Rig& r) {
-         beginColorPass(r);
-         render::DrawDesc d = flatDraw(r);
-         d.pipeline = r.lit;
-         render::SurfaceParams params;
-         params.baseColor.texture = r.msaa;
-         d.params = params;
-         r.backend->draw(d);
-     }},
+    {"params mismatch", badDraw([](Rig&, render::DrawDesc& d) { d.params = render::AlphaOnlyParams{}; })},
+    {"depth test without depth", badDraw([](Rig& r, render::DrawDesc& d) { d.pipeline = r.depthTested; })},
+    {"count not multiple of 3", badDraw([](Rig&, render::DrawDesc& d) { d.count = 4; })},
+    {"vertices out of range", badDraw([](Rig&, render::DrawDesc& d) { d.first = 3; })},
+    {"index out of range", badDraw([](Rig& r, render::DrawDesc& d) { d.indices = r.indices; })},
+    {"indices past the buffer", badDraw([](Rig& r, render::DrawDesc& d) { d.indices = r.indices; d.first = 3; })},
+    {"index buffer as vertices", badDraw([](Rig& r, render::DrawDesc& d) { d.vertices = r.indices; })},
+    {"too many instances", badDraw([](Rig& r, render::DrawDesc& d) { d.instances = r.instances; d.instanceCount = 3; })},
+    {"instances without buffer", badDraw([](Rig&, render::DrawDesc& d) { d.instanceCount = 2; })},
+    {"sampling the target", badDraw([](Rig& r, render::DrawDesc& d) { sampleWithLit(r, d, r.color); })},
+    {"sampling msaa", badDraw([](Rig& r, render::DrawDesc& d) { sampleWithLit(r, d, r.msaa); })},
     {"resolve mismatch", [](Rig& r) { r.backend->resolve({r.msaa, r.colorSmall}); }},
     {"readback msaa", [](Rig& r) { r.backend->readback(r.msaa); }},
 };

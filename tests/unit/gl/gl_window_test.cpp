@@ -11,6 +11,7 @@
 
 #include <epoxy/gl.h>
 
+#include "draws.hpp"  // tests/support
 #include "engine/core/error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/vertex.hpp"
@@ -19,6 +20,7 @@ namespace {
 
 namespace render = engine::render;
 namespace gl = engine::render::gl;
+using ssam::testing::meshDraw;
 
 int failures = 0;
 
@@ -43,12 +45,7 @@ bool frame(gl::GlBackend& backend, gl::GlfwWindowContext& window, render::Textur
     pass.name = "frame";
     pass.color[0] = {color, render::LoadOp::Clear, {0.1f, 0.2f, 0.3f + 0.01f * float(index % 10), 1.0f}};
     backend.beginPass(pass);
-    render::DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = render::FlatParams{glm::mat4(1.0f), {1.0f, 0.5f, 0.0f, 1.0f}};
-    d.vertices = triangle;
-    d.count = 3;
-    backend.draw(d);
+    backend.draw(meshDraw(pipeline, render::FlatParams{glm::mat4(1.0f), {1.0f, 0.5f, 0.0f, 1.0f}}, triangle, 3));
     backend.endPass();
     return backend.present(color);
 }

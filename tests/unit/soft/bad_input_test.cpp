@@ -10,9 +10,7 @@
 namespace ssam::test::soft {
 namespace {
 
-using engine::render::soft::createSoftBackend;
 using engine::render::soft::SoftBackend;
-using render::Format;
 
 class SoftBadInput : public ::testing::Test {
 protected:

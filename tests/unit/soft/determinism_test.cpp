@@ -13,12 +13,6 @@
 namespace ssam::test::soft {
 namespace {
 
-using engine::render::soft::createSoftBackend;
-using engine::render::soft::SoftOptions;
-using render::BlendFactor;
-using render::BlendState;
-using render::Format;
-
 struct Images {
     std::vector<render::Readback> images;
 };

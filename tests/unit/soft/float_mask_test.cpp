@@ -25,7 +25,8 @@
 #include <memory>
 #include <vector>
 
-#include "lcg.hpp"  // tests/support
+#include "draws.hpp"  // tests/support
+#include "lcg.hpp"    // tests/support
 #include "engine/render/pixel_codec.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
@@ -44,6 +45,7 @@ using render::Format;
 constexpr int kW = 83, kH = 61;  // no multiple of 8
 
 using ssam::testing::Lcg;
+using ssam::testing::meshDraw;
 
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& v) {
@@ -89,13 +91,8 @@ HalfImage randomHalfImage(Lcg& rng, Format format, int w, int h) {
 
 render::TextureHandle texture(render::Backend& b, const char* name, Format format, bool target,
                               std::span<const std::byte> data, int mipLevels = 1, int w = kW, int h = kH) {
-    render::TextureDesc d;
-    d.name = name;
-    d.width = w;
-    d.height = h;
-    d.format = format;
-    d.mipLevels = mipLevels;
-    d.usage = std::uint8_t(render::UsageSampled | (target ? render::UsageRenderTarget : 0));
+    const auto usage = std::uint8_t(render::UsageSampled | (target ? render::UsageRenderTarget : 0));
+    const render::TextureDesc d{name, w, h, format, 1, mipLevels, usage};
     if (data.empty()) return b.createTexture(d);
     render::TextureData td;
     td.levels.push_back(data);
@@ -205,11 +202,7 @@ MaskRun runMaskScene(const MaskSetup& setup, const std::vector<HalfImage>& initi
     b.beginPass(pre);
     render::PipelineDesc dp;
     dp.depth = render::DepthState::testAndWrite();
-    render::DrawDesc d;
-    d.pipeline = b.createPipeline(dp);
-    d.params = render::FlatParams{viewProj(), glm::vec4(1.0f)};
-    d.vertices = opaqueVb;
-    d.count = std::uint32_t(opaque.size());
+    auto d = meshDraw(b.createPipeline(dp), render::FlatParams{viewProj(), glm::vec4(1.0f)}, opaqueVb, std::uint32_t(opaque.size()));
     b.draw(d);
     b.endPass();
 

@@ -9,13 +9,7 @@
 namespace ssam::test::soft {
 namespace {
 
-using engine::render::soft::createSoftBackend;
 using engine::render::soft::SoftStats;
-using render::AlphaFailMode;
-using render::BlendFactor;
-using render::BlendState;
-using render::CompareFunc;
-using render::Format;
 
 TEST(SoftBackend, NameAndOptions) {
     auto gfx = createSoftBackend({.threads = 2, .tileSize = 32, .debugChecks = true});

@@ -22,7 +22,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lcg.hpp"  // tests/support
+#include "draws.hpp"  // tests/support
+#include "lcg.hpp"    // tests/support
 #include "engine/render/soft/soft_backend.hpp"
 #include "ssam/composite_program.hpp"
 #include "engine/render/vertex.hpp"
@@ -34,6 +35,8 @@ namespace soft = engine::render::soft;
 using render::Format;
 
 using ssam::testing::Lcg;
+using ssam::testing::fullscreenDraw;
+using ssam::testing::meshDraw;
 
 struct Hasher {
     std::uint64_t h = 1469598103934665603ull;
@@ -56,14 +59,7 @@ std::span<const std::byte> bytesOf(const std::vector<T>& v) {
 constexpr int kW = 203, kH = 141;  // not multiples of any tile size
 
 render::TextureHandle target(render::Backend& b, Format f, int samples = 1, int w = kW, int h = kH) {
-    render::TextureDesc d;
-    d.name = "target";
-    d.width = w;
-    d.height = h;
-    d.format = f;
-    d.samples = samples;
-    d.usage = render::UsageRenderTarget | (samples == 1 && f != Format::D32F ? render::UsageSampled : 0);
-    return b.createTexture(d);
+    return b.createTexture(render::renderTargetDesc("target", w, h, f, samples));
 }
 
 // A 64x64 RGBA8 texture with a full mip chain, colour noise and alpha from 0 to 1.
@@ -112,11 +108,7 @@ glm::mat4 perspectiveViewProj() {
 
 void drawTriangles(render::Backend& b, render::PipelineHandle p, render::BufferHandle vb, std::uint32_t count,
                    render::DrawParams params, std::optional<render::Rect> scissor = std::nullopt) {
-    render::DrawDesc d;
-    d.pipeline = p;
-    d.params = params;
-    d.vertices = vb;
-    d.count = count;
+    auto d = meshDraw(p, params, vb, count);
     d.scissor = scissor;
     b.draw(d);
 }
@@ -345,9 +337,7 @@ void sceneComposite(render::Backend& b, Hasher& h) {
     const auto cp = b.createPipeline(cd);
     b.beginPass(comp);
     for (int i = 0; i < 2; ++i) {
-        render::DrawDesc d;
-        d.pipeline = cp;
-        d.params = ssam::CompositeParams{foliage, mask, i == 1 ? maskAdd : render::TextureHandle{}, 0.85f, i == 0};
+        auto d = fullscreenDraw(cp, ssam::CompositeParams{foliage, mask, i == 1 ? maskAdd : render::TextureHandle{}, 0.85f, i == 0});
         d.scissor = render::Rect{10 + 40 * i, 5, 120, 130};
         b.draw(d);
     }
@@ -375,11 +365,7 @@ void sceneTinyInstanced(render::Backend& b, Hasher& h) {
     pass.color[0] = {color, render::LoadOp::Clear, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)};
     pass.depth = {depth, render::LoadOp::Clear, 1.0f};
     b.beginPass(pass);
-    render::DrawDesc d;
-    d.pipeline = b.createPipeline(pd);
-    d.params = render::FlatParams{glm::mat4(1.0f), glm::vec4(1.0f)};
-    d.vertices = vb;
-    d.count = 9000;
+    auto d = meshDraw(b.createPipeline(pd), render::FlatParams{glm::mat4(1.0f), glm::vec4(1.0f)}, vb, 9000);
     d.instances = ib;
     d.instanceCount = 3;
     b.draw(d);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "draws.hpp"         // tests/support
 #include "expect_error.hpp"  // tests/support
 #include "engine/core/error.hpp"
 #include "engine/render/soft/soft_backend.hpp"
@@ -16,6 +17,16 @@
 namespace ssam::test::soft {
 
 namespace render = engine::render;
+// The vocabulary every soft test uses.
+using render::AlphaFailMode;
+using render::BlendFactor;
+using render::BlendState;
+using render::CompareFunc;
+using render::Format;
+using engine::render::soft::createSoftBackend;
+using engine::render::soft::SoftOptions;
+using ssam::testing::fullscreenDraw;
+using ssam::testing::meshDraw;
 
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& v) {
@@ -25,14 +36,7 @@ std::span<const std::byte> bytesOf(const std::vector<T>& v) {
 inline render::TextureHandle makeTarget(render::Backend& gfx, int width, int height,
                                         render::Format format = render::Format::RGBA8_UNORM, int samples = 1,
                                         const std::string& name = "target") {
-    render::TextureDesc desc;
-    desc.name = name;
-    desc.width = width;
-    desc.height = height;
-    desc.format = format;
-    desc.samples = samples;
-    desc.usage = render::UsageRenderTarget | (samples == 1 ? render::UsageSampled : 0);
-    return gfx.createTexture(desc);
+    return gfx.createTexture(render::renderTargetDesc(name, width, height, format, samples));
 }
 
 inline render::BufferHandle makeVertices(render::Backend& gfx, const std::vector<render::Vertex>& v,
@@ -58,12 +62,7 @@ inline std::vector<render::Vertex> fullQuad(float z = 0.5f) {
 
 inline render::DrawDesc flatDraw(render::PipelineHandle pipeline, render::BufferHandle vertices, std::uint32_t count,
                                  glm::vec4 color = glm::vec4(1.0f)) {
-    render::DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = render::FlatParams{glm::mat4(1.0f), color};
-    d.vertices = vertices;
-    d.count = count;
-    return d;
+    return meshDraw(pipeline, render::FlatParams{glm::mat4(1.0f), color}, vertices, count);
 }
 
 inline render::PassDesc onePass(render::TextureHandle color, render::TextureHandle depth = {},
