@@ -267,28 +267,29 @@ TEST(RacerScene, SceneIndexWithoutCameraUsesTheAutomaticCamera) {
     EXPECT_PIXEL(run, 1, 1, srgb(kBackground));
 }
 
-TEST(RacerScene, BadCameraIndexGivesTheValidRange) {
-    const RacerRun run = racer(sceneFile("cameras.gltf"), "--camera-index 3");
+// racer refuses the scene file with these flags: a non-zero exit and the message saying why.
+void expectRefused(const char* file, const std::string& flags, const std::string& message) {
+    const RacerRun run = racer(sceneFile(file), flags);
     EXPECT_NE(run.exitCode, 0);
-    EXPECT_THAT(run.output, HasSubstr("cameras.gltf: --camera-index 3 is out of range: the file has 3 cameras (valid: 0..2)"));
+    EXPECT_THAT(run.output, HasSubstr(message));
+}
+
+TEST(RacerScene, BadCameraIndexGivesTheValidRange) {
+    expectRefused("cameras.gltf", "--camera-index 3",
+                  "cameras.gltf: --camera-index 3 is out of range: the file has 3 cameras (valid: 0..2)");
 }
 
 TEST(RacerScene, CameraNotInTheSceneIsRefused) {
-    const RacerRun run = racer(sceneFile("cameras.gltf"), "--scene-index 1 --camera-index 0");
-    EXPECT_NE(run.exitCode, 0);
-    EXPECT_THAT(run.output, HasSubstr("no node of scene 1 carries cameras[0]"));
+    expectRefused("cameras.gltf", "--scene-index 1 --camera-index 0", "no node of scene 1 carries cameras[0]");
 }
 
 TEST(RacerScene, BadSceneIndexGivesTheValidRange) {
-    const RacerRun run = racer(sceneFile("cameras.gltf"), "--scene-index 2");
-    EXPECT_NE(run.exitCode, 0);
-    EXPECT_THAT(run.output, HasSubstr("cameras.gltf: scene: LoadOptions::scene 2 is out of range: the file has 2 scenes (valid: 0..1)"));
+    expectRefused("cameras.gltf", "--scene-index 2",
+                  "cameras.gltf: scene: LoadOptions::scene 2 is out of range: the file has 2 scenes (valid: 0..1)");
 }
 
 TEST(RacerScene, CameraIndexWithoutCamerasSaysSo) {
-    const RacerRun run = racer(sceneFile("mask_cutoff.gltf"), "--camera-index 0");
-    EXPECT_NE(run.exitCode, 0);
-    EXPECT_THAT(run.output, HasSubstr("--camera-index 0 is out of range: the file has no cameras"));
+    expectRefused("mask_cutoff.gltf", "--camera-index 0", "--camera-index 0 is out of range: the file has no cameras");
 }
 
 // ---------------------------------------------------------------------------------------

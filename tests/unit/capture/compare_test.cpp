@@ -5,16 +5,10 @@
 #include <limits>
 
 #include "engine/capture/compare.hpp"
+#include "flat_image.hpp"
 
 using namespace engine::capture;
-
-namespace {
-Image flat(int width, int height, std::initializer_list<float> value) {
-    Image image = Image::make(width, height, static_cast<int>(value.size()));
-    image.fill(value);
-    return image;
-}
-}  // namespace
+using capture_test::flat;
 
 TEST(CaptureCompare, IdenticalImagesHaveNoErrorAndPass) {
     const Image a = flat(4, 4, {0.2f, 0.4f, 0.6f});

@@ -8,16 +8,12 @@
 
 #include "engine/capture/metrics.hpp"
 #include "engine/core/error.hpp"
+#include "flat_image.hpp"
 
 using namespace engine::capture;
+using capture_test::flat;
 
 namespace {
-
-Image flat(int width, int height, std::initializer_list<float> value) {
-    Image image = Image::make(width, height, static_cast<int>(value.size()));
-    image.fill(value);
-    return image;
-}
 
 Image randomImage(int width, int height, unsigned seed) {
     std::mt19937 rng(seed);

@@ -13,16 +13,12 @@
 #include "engine/capture/metrics.hpp"
 #include "engine/capture/srgb.hpp"
 #include "engine/core/error.hpp"
+#include "flat_image.hpp"
 
 using namespace engine::capture;
+using capture_test::flat;
 
 namespace {
-
-Image flat(int width, int height, std::initializer_list<float> value) {
-    Image image = Image::make(width, height, static_cast<int>(value.size()));
-    image.fill(value);
-    return image;
-}
 
 // A smooth colour gradient with some structure, RGB in [0,1] linear.
 Image pattern(int width, int height) {
