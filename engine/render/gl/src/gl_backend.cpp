@@ -106,7 +106,7 @@ GlBackendImpl::~GlBackendImpl() {
     // GL program objects are deleted while the context is current.
     pipelines_ = ResourcePool<PipelineTag, GlPipeline>("pipeline");
     programs_ = ResourcePool<ProgramTag, std::shared_ptr<const ProgramSlot>>("program");
-    for (auto& p : standardPrograms_) p.reset();
+    standardPrograms_.clear();
     resolveColor_.reset();
     resolveDepth_.reset();
     nothing_.reset();

@@ -126,7 +126,7 @@ private:
     std::map<GLenum, int> maxSamplesByFormat_;
     GlFramebufferCache framebuffers_;
     GlSamplerCache samplers_;
-    std::array<std::shared_ptr<const ProgramSlot>, kStandardProgramCount> standardPrograms_;  // made on first use
+    StandardProgramSlots<ProgramSlot> standardPrograms_;
     std::optional<ProgramSlot> resolveColor_, resolveDepth_, nothing_;
     GLuint vao_ = 0, emptyVao_ = 0, identityInstance_ = 0;
 

@@ -54,19 +54,15 @@ GLenum glBlendOp(BlendOp op) {
     return GL_FUNC_ADD;
 }
 
-GLenum glCompare(CompareFunc func) {
-    switch (func) {
-        case CompareFunc::Never: return GL_NEVER;
-        case CompareFunc::Less: return GL_LESS;
-        case CompareFunc::Equal: return GL_EQUAL;
-        case CompareFunc::LessEqual: return GL_LEQUAL;
-        case CompareFunc::Greater: return GL_GREATER;
-        case CompareFunc::NotEqual: return GL_NOTEQUAL;
-        case CompareFunc::GreaterEqual: return GL_GEQUAL;
-        case CompareFunc::Always: return GL_ALWAYS;
-    }
-    return GL_ALWAYS;
-}
+static_assert(glCompareFunc(CompareFunc::Never) == GL_NEVER && glCompareFunc(CompareFunc::Less) == GL_LESS &&
+                  glCompareFunc(CompareFunc::Equal) == GL_EQUAL && glCompareFunc(CompareFunc::LessEqual) == GL_LEQUAL &&
+                  glCompareFunc(CompareFunc::Greater) == GL_GREATER &&
+                  glCompareFunc(CompareFunc::NotEqual) == GL_NOTEQUAL &&
+                  glCompareFunc(CompareFunc::GreaterEqual) == GL_GEQUAL &&
+                  glCompareFunc(CompareFunc::Always) == GL_ALWAYS,
+              "CompareFunc is in GL's order");
+
+GLenum glCompare(CompareFunc func) { return glCompareFunc(func); }
 
 GLenum glWrap(AddressMode mode) {
     switch (mode) {

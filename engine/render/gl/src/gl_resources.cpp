@@ -271,16 +271,11 @@ void GlBackendImpl::clearToZero(const GlTexture& t) {
 
 std::shared_ptr<const ProgramSlot> GlBackendImpl::programFor(const ProgramRef& ref) {
     if (ref.created) return programs_.get(ref.created);
-    const auto index = std::size_t(ref.standard);
-    if (index >= standardPrograms_.size()) throw Error("unknown standard program " + std::to_string(index));
-    std::shared_ptr<const ProgramSlot>& slot = standardPrograms_[index];
-    if (!slot) {
-        ProgramDesc desc = standardProgramDesc(ref.standard);
+    return standardPrograms_.get(ref.standard, [&](ProgramDesc desc) {
         desc.gl.fragment = standardFragment(ref.standard);
         makeCurrent();
-        slot = compileSlot(std::make_shared<const ProgramDesc>(std::move(desc)), glsl());
-    }
-    return slot;
+        return compileSlot(std::make_shared<const ProgramDesc>(std::move(desc)), glsl());
+    });
 }
 
 ProgramSlot& GlBackendImpl::internalProgram(std::optional<ProgramSlot>& slot, const char* name,

@@ -407,15 +407,10 @@ private:
 
     std::shared_ptr<const ProgramDesc> programFor(const ProgramRef& ref) {
         if (ref.created) return programs_.get(ref.created);
-        const auto index = std::size_t(ref.standard);
-        if (index >= standardPrograms_.size()) throw Error("unknown standard program " + std::to_string(index));
-        std::shared_ptr<const ProgramDesc>& slot = standardPrograms_[index];
-        if (!slot) {
-            ProgramDesc desc = standardProgramDesc(ref.standard);
+        return standardPrograms_.get(ref.standard, [&](ProgramDesc desc) {
             desc.soft = standardKernel(ref.standard);
-            slot = std::make_shared<const ProgramDesc>(std::move(desc));
-        }
-        return slot;
+            return std::make_shared<const ProgramDesc>(std::move(desc));
+        });
     }
 
     // Vertex stage + clipping + setup + binning for one draw, in parallel over fixed chunks
@@ -570,7 +565,7 @@ private:
     ResourcePool<PipelineTag, SoftPipeline> pipelines_;
     ResourcePool<QueryTag, SoftQuery> queries_;
     ResourcePool<ProgramTag, std::shared_ptr<const ProgramDesc>> programs_;
-    std::array<std::shared_ptr<const ProgramDesc>, kStandardProgramCount> standardPrograms_;  // made on first use
+    StandardProgramSlots<ProgramDesc> standardPrograms_;
     ResourceLookup lookup_;  // what the shared validation reads
     // How bound programs resolve texture handles.
     struct Textures final : TextureLookup {

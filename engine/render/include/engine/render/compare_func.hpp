@@ -30,4 +30,9 @@ constexpr bool compare(CompareFunc func, float incoming, float reference) {
 
 const char* compareFuncName(CompareFunc func);
 
+// The GL enum of a function: CompareFunc lists them in GL's order, GL_NEVER (0x0200) to
+// GL_ALWAYS (0x0207), so the GL backend and a GL host (ssam::gl) need no table; the GL backend
+// checks the correspondence at compile time (gl_enums.cpp).
+constexpr unsigned glCompareFunc(CompareFunc func) { return 0x0200u + static_cast<unsigned>(func); }
+
 }  // namespace engine::render
