@@ -44,6 +44,13 @@ ImageT makeZeroed(int width, int height, std::vector<std::string> channelNames, 
     return image;
 }
 
+// make(width, height, channels): zeros, the channels named as a file would name them.
+template <typename ImageT>
+ImageT makeWithDefaultNames(int width, int height, int channels, AlphaMode alpha) {
+    requireSize(width, height, static_cast<std::size_t>(std::max(channels, 0)));
+    return ImageT::make(width, height, defaultChannelNames(channels), alpha);
+}
+
 }  // namespace
 
 const char* alphaModeName(AlphaMode mode) {
@@ -74,8 +81,7 @@ Image Image::make(int width, int height, std::vector<std::string> channelNames, 
 }
 
 Image Image::make(int width, int height, int channels, AlphaMode alpha) {
-    requireSize(width, height, static_cast<std::size_t>(std::max(channels, 0)));
-    return make(width, height, defaultChannelNames(channels), alpha);
+    return makeWithDefaultNames<Image>(width, height, channels, alpha);
 }
 
 void Image::fill(std::span<const float> value) { fillPixels(pixels, channels, value); }
@@ -91,8 +97,7 @@ Image8 Image8::make(int width, int height, std::vector<std::string> channelNames
 }
 
 Image8 Image8::make(int width, int height, int channels, AlphaMode alpha) {
-    requireSize(width, height, static_cast<std::size_t>(std::max(channels, 0)));
-    return make(width, height, defaultChannelNames(channels), alpha);
+    return makeWithDefaultNames<Image8>(width, height, channels, alpha);
 }
 
 void Image8::fill(std::span<const std::uint8_t> value) { fillPixels(pixels, channels, value); }

@@ -21,16 +21,22 @@ void forEachColourWithAlpha(Image& image, Op op) {
     }
 }
 
+// out's values from in's, sample by sample: the alpha channel (alphaIndex) through `alpha`,
+// every other channel through `colour`. Both images have in's size and channels.
+template <typename In, typename Out, typename Alpha, typename Colour>
+void convertSamples(const In& in, Out& out, int alphaIndex, Alpha alpha, Colour colour) {
+    const auto channels = static_cast<std::size_t>(in.channels);
+    for (std::size_t i = 0; i < in.pixels.size(); ++i) {
+        const bool isAlpha = static_cast<int>(i % channels) == alphaIndex;
+        out.pixels[i] = isAlpha ? alpha(in.pixels[i]) : colour(in.pixels[i]);
+    }
+}
+
 }  // namespace
 
 Image decodeSrgbImage(const Image8& image) {
     Image out = Image::make(image.width, image.height, image.channelNames, image.alpha);
-    const int alphaIndex = image.alphaChannel();
-    const auto channels = static_cast<std::size_t>(image.channels);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        const bool isAlpha = static_cast<int>(i % channels) == alphaIndex;
-        out.pixels[i] = isAlpha ? decodeUnorm8(image.pixels[i]) : decodeSrgb8(image.pixels[i]);
-    }
+    convertSamples(image, out, image.alphaChannel(), decodeUnorm8, decodeSrgb8);
     return out;
 }
 
@@ -38,12 +44,7 @@ Image8 encodeSrgbImage(const Image& image) {
     Image straight = image;
     unpremultiply(straight);
     Image8 out = Image8::make(image.width, image.height, image.channelNames, AlphaMode::Straight);
-    const int alphaIndex = image.alphaChannel();
-    const auto channels = static_cast<std::size_t>(image.channels);
-    for (std::size_t i = 0; i < straight.pixels.size(); ++i) {
-        const bool isAlpha = static_cast<int>(i % channels) == alphaIndex;
-        out.pixels[i] = isAlpha ? encodeUnorm8(straight.pixels[i]) : encodeSrgb8(straight.pixels[i]);
-    }
+    convertSamples(straight, out, image.alphaChannel(), encodeUnorm8, encodeSrgb8);
     return out;
 }
 

@@ -26,6 +26,13 @@ std::vector<std::string> defaultChannelNames(int channels);
 // Index of the alpha channel ("A", or a layer's ".A"; also "alpha"), or -1 when there is none.
 int findAlphaChannel(std::span<const std::string> channelNames);
 
+// Where sample (x, y, c) of an interleaved width x ... x channels image is.
+inline std::size_t interleavedIndex(int width, int channels, int x, int y, int c) {
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) *
+               static_cast<std::size_t>(channels) +
+           static_cast<std::size_t>(c);
+}
+
 struct Image {
     int width = 0;
     int height = 0;
@@ -39,11 +46,7 @@ struct Image {
                       AlphaMode alpha = AlphaMode::Premultiplied);
     static Image make(int width, int height, int channels, AlphaMode alpha = AlphaMode::Premultiplied);
 
-    std::size_t index(int x, int y, int c) const {
-        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) *
-                   static_cast<std::size_t>(channels) +
-               static_cast<std::size_t>(c);
-    }
+    std::size_t index(int x, int y, int c) const { return interleavedIndex(width, channels, x, y, c); }
     float& at(int x, int y, int c) { return pixels[index(x, y, c)]; }
     float at(int x, int y, int c) const { return pixels[index(x, y, c)]; }
 
@@ -71,11 +74,7 @@ struct Image8 {
                        AlphaMode alpha = AlphaMode::Straight);
     static Image8 make(int width, int height, int channels, AlphaMode alpha = AlphaMode::Straight);
 
-    std::size_t index(int x, int y, int c) const {
-        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) *
-                   static_cast<std::size_t>(channels) +
-               static_cast<std::size_t>(c);
-    }
+    std::size_t index(int x, int y, int c) const { return interleavedIndex(width, channels, x, y, c); }
     std::uint8_t& at(int x, int y, int c) { return pixels[index(x, y, c)]; }
     std::uint8_t at(int x, int y, int c) const { return pixels[index(x, y, c)]; }
 
