@@ -111,6 +111,14 @@ protected:
         return renderTarget(width, height, render::Format::D32F, samples, name);
     }
 
+    // An RGBA8 colour target and a depth target of one size: what depth-tested suites draw into.
+    struct ColorAndDepth {
+        render::TextureHandle color, depth;
+    };
+    ColorAndDepth colorAndDepthTargets(int width, int height, int samples = 1) {
+        return {renderTarget(width, height, render::Format::RGBA8_UNORM, samples), depthTarget(width, height, samples)};
+    }
+
     render::BufferHandle vertexBuffer(const std::vector<render::Vertex>& vertices, const std::string& name = "vertices") {
         render::BufferDesc desc{name, render::BufferKind::Vertex, vertices.size() * sizeof(render::Vertex)};
         return gfx().createBuffer(desc, bytesOf(vertices));
@@ -167,34 +175,26 @@ protected:
 
 using ssam::testing::expectError;
 
-// The suites, one fixture class each so their names say what they test.
-class BlendConformance : public BackendTest {};
-class AlphaTestConformance : public BackendTest {};
-class AlphaToCoverageConformance : public BackendTest {};
-class DepthConformance : public BackendTest {};
-class FillRuleConformance : public BackendTest {};
-class ClippingConformance : public BackendTest {};
-class MsaaResolveConformance : public BackendTest {};
-class TextureConformance : public BackendTest {};
-class RasterConformance : public BackendTest {};
-class OcclusionQueryConformance : public BackendTest {};
-class ExceptionSafetyConformance : public BackendTest {};
-class NonFiniteConformance : public BackendTest {};
+// The suites, one fixture class each so their names say what they test; listed once here
+// for both their declaration and their instantiation (SSAM_INSTANTIATE_CONFORMANCE_SUITES).
+#define SSAM_CONFORMANCE_SUITES(X, ...)                                                                    \
+    X(BlendConformance, __VA_ARGS__) X(AlphaTestConformance, __VA_ARGS__)                                 \
+    X(AlphaToCoverageConformance, __VA_ARGS__) X(DepthConformance, __VA_ARGS__)                           \
+    X(FillRuleConformance, __VA_ARGS__) X(ClippingConformance, __VA_ARGS__)                               \
+    X(MsaaResolveConformance, __VA_ARGS__) X(TextureConformance, __VA_ARGS__)                             \
+    X(RasterConformance, __VA_ARGS__) X(OcclusionQueryConformance, __VA_ARGS__)                           \
+    X(ExceptionSafetyConformance, __VA_ARGS__) X(NonFiniteConformance, __VA_ARGS__)
+
+#define SSAM_DECLARE_CONFORMANCE_SUITE(suite, ...) \
+    class suite : public BackendTest {};
+SSAM_CONFORMANCE_SUITES(SSAM_DECLARE_CONFORMANCE_SUITE)
+#undef SSAM_DECLARE_CONFORMANCE_SUITE
 
 }  // namespace ssam::test
 
 // Instantiates every suite for the backend cases `generator` yields (a gtest generator such
 // as ::testing::Values(case...)). Use once per conformance executable.
-#define SSAM_INSTANTIATE_CONFORMANCE_SUITES(prefix, generator)                                                  \
-    INSTANTIATE_TEST_SUITE_P(prefix, BlendConformance, generator, ::ssam::test::BackendCaseName());           \
-    INSTANTIATE_TEST_SUITE_P(prefix, AlphaTestConformance, generator, ::ssam::test::BackendCaseName());       \
-    INSTANTIATE_TEST_SUITE_P(prefix, AlphaToCoverageConformance, generator, ::ssam::test::BackendCaseName()); \
-    INSTANTIATE_TEST_SUITE_P(prefix, DepthConformance, generator, ::ssam::test::BackendCaseName());           \
-    INSTANTIATE_TEST_SUITE_P(prefix, FillRuleConformance, generator, ::ssam::test::BackendCaseName());        \
-    INSTANTIATE_TEST_SUITE_P(prefix, ClippingConformance, generator, ::ssam::test::BackendCaseName());        \
-    INSTANTIATE_TEST_SUITE_P(prefix, MsaaResolveConformance, generator, ::ssam::test::BackendCaseName());     \
-    INSTANTIATE_TEST_SUITE_P(prefix, TextureConformance, generator, ::ssam::test::BackendCaseName());       \
-    INSTANTIATE_TEST_SUITE_P(prefix, RasterConformance, generator, ::ssam::test::BackendCaseName());        \
-    INSTANTIATE_TEST_SUITE_P(prefix, OcclusionQueryConformance, generator, ::ssam::test::BackendCaseName());    \
-    INSTANTIATE_TEST_SUITE_P(prefix, ExceptionSafetyConformance, generator, ::ssam::test::BackendCaseName());   \
-    INSTANTIATE_TEST_SUITE_P(prefix, NonFiniteConformance, generator, ::ssam::test::BackendCaseName())
+#define SSAM_INSTANTIATE_CONFORMANCE_SUITE(suite, prefix, generator) \
+    INSTANTIATE_TEST_SUITE_P(prefix, suite, generator, ::ssam::test::BackendCaseName());
+#define SSAM_INSTANTIATE_CONFORMANCE_SUITES(prefix, generator) \
+    SSAM_CONFORMANCE_SUITES(SSAM_INSTANTIATE_CONFORMANCE_SUITE, prefix, generator) static_assert(true)

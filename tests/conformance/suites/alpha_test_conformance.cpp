@@ -17,8 +17,7 @@ TEST_P(AlphaTestConformance, EveryFuncAndFailMode) {
     const glm::vec4 clearColor{0.1f, 0.2f, 0.3f, 0.9f};
     const glm::vec3 sourceRgb{0.8f, 0.6f, 0.4f};
     const float clearDepth = 1.0f, fragmentDepth = 0.5f, reference = 0.5f;
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, fragmentDepth));
     int cases = 0;
     for (CompareFunc func : render::kAllCompareFuncs) {
@@ -101,8 +100,7 @@ TEST_P(AlphaTestConformance, DroppedWhereItCannotMatter) {
 // A dropped test still renders what the test would have: FbOnly without depth writes
 // writes colour for failing fragments too.
 TEST_P(AlphaTestConformance, DroppedTestRendersTheSame) {
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.25f));
     const render::PipelineHandle pipeline = flatPipeline(
         {}, render::DepthState::testOnly(), {true, CompareFunc::GreaterEqual, 0.5f, AlphaFailMode::FbOnly, false});

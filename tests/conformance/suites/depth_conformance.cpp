@@ -12,8 +12,7 @@ namespace {
 constexpr int kSize = 8;
 
 TEST_P(DepthConformance, EveryFuncWithWriteOnAndOff) {
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const float stored = 0.5f;
     for (CompareFunc func : render::kAllCompareFuncs) {
         for (bool write : {false, true}) {
@@ -41,8 +40,7 @@ TEST_P(DepthConformance, EveryFuncWithWriteOnAndOff) {
 // With the test off nothing is tested and nothing is written, whatever `write` says (GL:
 // depth writes need GL_DEPTH_TEST enabled).
 TEST_P(DepthConformance, TestOffNeitherTestsNorWrites) {
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::PipelineHandle pipeline = flatPipeline({}, {false, true, CompareFunc::Never});
     const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.75f));
     pass(color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, quad, 6); }, depth, 0.5f);
@@ -52,8 +50,7 @@ TEST_P(DepthConformance, TestOffNeitherTestsNorWrites) {
 
 // Reverse-Z: clear to 0, Greater; the nearest surface (largest depth) wins whatever the order.
 TEST_P(DepthConformance, ReverseZ) {
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Greater));
     auto fullQuadAt = [&](float z) { return vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, z)); };
     struct Surface {
@@ -82,8 +79,7 @@ TEST_P(DepthConformance, ReverseZ) {
 // A quad whose depth runs from 0 (left edge) to 1 (right edge) against a flat one at 0.5:
 // depth at pixel centre x is (x + 0.5) / width, so exactly the left half is in front.
 TEST_P(DepthConformance, SlopedDepthInterpolation) {
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Less));
     const render::BufferHandle flat = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.5f));
     std::vector<render::Vertex> slope = pixelRect(kSize, kSize, 0, 0, kSize, kSize);
@@ -108,8 +104,7 @@ TEST_P(DepthConformance, SlopedDepthInterpolation) {
 // pass over a depth pre-pass covers exactly the same pixels, and NotEqual none.
 TEST_P(DepthConformance, RepeatedGeometryIsInvariant) {
     constexpr int kWide = 37, kHigh = 23;  // odd sizes: not multiples of any tile size
-    const render::TextureHandle color = renderTarget(kWide, kHigh, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kWide, kHigh);
+    const auto [color, depth] = colorAndDepthTargets(kWide, kHigh);
     std::vector<render::Vertex> tri = {pixelVertex(kWide, kHigh, 1.3, 2.7, 0.1f),
                                        pixelVertex(kWide, kHigh, 35.1, 5.2, 0.9f),
                                        pixelVertex(kWide, kHigh, 9.7, 21.9, 0.37f)};
@@ -137,8 +132,7 @@ TEST_P(DepthConformance, RepeatedGeometryIsInvariant) {
 
 // Depth loaded (not cleared) carries over between passes.
 TEST_P(DepthConformance, LoadKeepsDepthAcrossPasses) {
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Less));
     const render::BufferHandle left = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize / 2, kSize, 0.3f));
     const render::BufferHandle full = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.6f));

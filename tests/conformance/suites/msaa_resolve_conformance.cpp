@@ -63,8 +63,7 @@ TEST_P(MsaaResolveConformance, UncoveredSamplesKeepTheClear) {
 // and LessEqual, 0.7 under Greater and GreaterEqual; whole pixels resolve to their one value.
 TEST_P(MsaaResolveConformance, DepthKeepsTheClosestSample) {
     for (int samples : {2, 4, 8}) {
-        const render::TextureHandle color = renderTarget(kWide, kHigh, Format::RGBA8_UNORM, samples);
-        const render::TextureHandle depth = depthTarget(kWide, kHigh, samples);
+        const auto [color, depth] = colorAndDepthTargets(kWide, kHigh, samples);
         const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Always));
         const render::BufferHandle l = vertexBuffer(pixelRect(kWide, kHigh, 0, 0, kEdge, kHigh, 0.3f));
         const render::BufferHandle r = vertexBuffer(pixelRect(kWide, kHigh, kEdge, 0, kWide, kHigh, 0.7f));
@@ -89,8 +88,7 @@ TEST_P(MsaaResolveConformance, DepthKeepsTheClosestSample) {
 // in the split column; Less would keep the far clear.
 TEST_P(MsaaResolveConformance, DepthReverseZWithUncoveredSamples) {
     for (int samples : {2, 4, 8}) {
-        const render::TextureHandle color = renderTarget(kWide, kHigh, Format::RGBA8_UNORM, samples);
-        const render::TextureHandle depth = depthTarget(kWide, kHigh, samples);
+        const auto [color, depth] = colorAndDepthTargets(kWide, kHigh, samples);
         const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Greater));
         const render::BufferHandle l = vertexBuffer(pixelRect(kWide, kHigh, 0, 0, kEdge, kHigh, 0.6f));
         pass(color, glm::vec4(0.0f), [&] { drawFlat(pipeline, l, 6); }, depth, 0.0f);

@@ -25,8 +25,7 @@ void countQuad(render::Backend& gfx, render::TextureHandle depth, render::Pipeli
 }
 
 TEST_P(OcclusionQueryConformance, CountsSamplesThatPassTheDepthTest) {
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     pass(color, {0, 0, 0, 0}, [] {}, depth, 0.5f);  // every pixel at depth 0.5
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::QueryHandle query = gfx().createQuery("q");
@@ -51,8 +50,7 @@ TEST_P(OcclusionQueryConformance, CountsSamplesThatPassTheDepthTest) {
 }
 
 TEST_P(OcclusionQueryConformance, ConditionalPassSkipsItsDrawsButNotItsClears) {
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     pass(color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::PipelineHandle plain = flatPipeline();
@@ -87,8 +85,7 @@ TEST_P(OcclusionQueryConformance, ConditionalPassSkipsItsDrawsButNotItsClears) {
 // The query keeps the last count while another pass reuses it before timings are taken
 // (GL keeps a query object per pending read).
 TEST_P(OcclusionQueryConformance, ReusedBeforeTimingsAreTaken) {
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     pass(color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::QueryHandle query = gfx().createQuery("q");
@@ -117,8 +114,7 @@ TEST_P(OcclusionQueryConformance, ReusedBeforeTimingsAreTaken) {
 }
 
 TEST_P(OcclusionQueryConformance, MisuseIsRefused) {
-    const render::TextureHandle depth = depthTarget(kSize, kSize);
-    const render::TextureHandle color = renderTarget(kSize, kSize, Format::RGBA8_UNORM);
+    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::QueryHandle query = gfx().createQuery("sun");
     expectError([&] { gfx().anySamplesPassed(query); }, "before any pass counted into it");
     render::PassDesc conditional;
