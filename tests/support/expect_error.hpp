@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Expects `fn` to throw engine::Error whose message contains `substring` (bad input must be
-// refused with a message that says what was wrong).
+// refused with a message that says what was wrong), or returns the message for a test to
+// examine itself.
 #include <gtest/gtest.h>
 
 #include <exception>
@@ -22,6 +23,22 @@ void expectError(Fn&& fn, const std::string& substring) {
     } catch (const std::exception& e) {
         ADD_FAILURE() << "expected engine::Error, got another exception: " << e.what();
     }
+}
+
+// The message of the engine::Error `fn` throws; a test failure (and "") when it throws
+// nothing or another exception.
+template <typename Fn>
+std::string errorOf(Fn&& fn) {
+    try {
+        fn();
+    } catch (const engine::Error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "expected engine::Error, got another exception: " << e.what();
+        return {};
+    }
+    ADD_FAILURE() << "expected engine::Error, nothing was thrown";
+    return {};
 }
 
 }  // namespace ssam::testing

@@ -11,10 +11,12 @@
 #include <vector>
 
 #include "engine/core/error.hpp"
-#include "temp_dir.hpp"  // tests/support
+#include "expect_error.hpp"  // tests/support
+#include "temp_dir.hpp"      // tests/support
 
 namespace assets_test {
 
+using ssam::testing::errorOf;
 using ssam::testing::TempDir;
 
 inline std::filesystem::path fixture(const std::string& name) {
@@ -30,18 +32,5 @@ inline void writeFile(const std::filesystem::path& path, const std::string& text
     writeFile(path, text.data(), text.size());
 }
 
-// The message of the engine::Error `load` throws; fails the test if it throws nothing.
-inline std::string errorOf(const std::function<void()>& load) {
-    try {
-        load();
-    } catch (const engine::Error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "threw a non-engine exception: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "expected an engine::Error, nothing was thrown";
-    return {};
-}
 
 }  // namespace assets_test

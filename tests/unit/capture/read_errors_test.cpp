@@ -9,7 +9,8 @@
 #include "engine/capture/image_read.hpp"
 #include "engine/capture/image_write.hpp"
 #include "engine/core/error.hpp"
-#include "temp_dir.hpp"
+#include "expect_error.hpp"  // tests/support
+#include "temp_dir.hpp"      // tests/support
 
 using namespace engine::capture;
 
@@ -25,17 +26,7 @@ extern "C" const char* __lsan_default_suppressions() {
 
 namespace {
 
-// Runs `read` and returns the engine::Error message, failing the test when nothing is thrown.
-template <typename Read>
-std::string errorOf(Read read) {
-    try {
-        read();
-    } catch (const engine::Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected engine::Error";
-    return {};
-}
+using ssam::testing::errorOf;
 
 void expectContains(const std::string& text, const std::string& part) {
     EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in: " << text;

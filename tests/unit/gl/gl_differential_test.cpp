@@ -53,6 +53,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -104,6 +105,18 @@ struct PassSpec {
     // Resolves after the pass: (source target, destination target, depth func).
     std::vector<std::tuple<int, int, CompareFunc>> resolves;
 };
+
+// A pass that depth-tests against `depth` as an earlier pass left it, its colour targets
+// cleared to `clear`.
+PassSpec passOverDepth(std::string name, std::vector<int> colors, int depth, glm::vec4 clear) {
+    PassSpec pass;
+    pass.name = std::move(name);
+    pass.colors = std::move(colors);
+    pass.depth = depth;
+    pass.clearDepth = false;
+    pass.clearValues = {clear};
+    return pass;
+}
 
 struct TargetSpec {
     std::string name;
@@ -204,12 +217,7 @@ public:
         s.passes.push_back(opaque);
 
         // 2. SSAM mask: AlphaOnly, RGB MAX + A ADD, depth tested against the opaque depth.
-        PassSpec mask;
-        mask.name = "mask";
-        mask.colors = {kMask};
-        mask.depth = kDepth;
-        mask.clearDepth = false;
-        mask.clearValues = {glm::vec4(0.0f)};
+        PassSpec mask = passOverDepth("mask", {kMask}, kDepth, glm::vec4(0.0f));
         std::vector<DrawSpec> foliageDraws;
         for (int i = 0; i < 4; ++i) {
             const float depth = nextDepth();
@@ -243,12 +251,7 @@ public:
         s.passes.push_back(mask);
 
         // 3. Foliage colour: alpha-tested, writes depth.
-        PassSpec foliage;
-        foliage.name = "foliage";
-        foliage.colors = {kFoliageColor};
-        foliage.depth = kDepth;
-        foliage.clearDepth = false;
-        foliage.clearValues = {glm::vec4(0.0f)};
+        PassSpec foliage = passOverDepth("foliage", {kFoliageColor}, kDepth, glm::vec4(0.0f));
         foliage.draws = foliageDraws;
         if (msaa) {
             foliage.resolves = {{kColor, kColorResolved, CompareFunc::Less},
@@ -275,12 +278,7 @@ public:
 
         // 5. The zoo, in its own target (so its differences are not compounded with the frame's)
         // over the frame's depth.
-        PassSpec zoo;
-        zoo.name = "zoo";
-        zoo.colors = {kZoo};
-        zoo.depth = depthTarget;
-        zoo.clearValues = {randomColour(true)};
-        zoo.clearDepth = false;
+        PassSpec zoo = passOverDepth("zoo", {kZoo}, depthTarget, randomColour(true));
         for (int i = 0; i < 24; ++i) {
             DrawSpec d;
             d.pipeline.name = "zoo" + std::to_string(i);

@@ -5,6 +5,7 @@
 #include "engine/render/frame_graph.hpp"
 
 #include "engine/core/error.hpp"
+#include "expect_error.hpp"  // tests/support
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -24,6 +25,7 @@ using engine::render::PassStatus;
 using engine::render::ResourceLifetime;
 using engine::render::TextureAllocator;
 using engine::render::FrameGraphTextureDesc;
+using ssam::testing::errorOf;
 using testing::ElementsAre;
 using testing::HasSubstr;
 using testing::IsEmpty;
@@ -96,17 +98,6 @@ TextureAllocator recordingAllocator(Events& events) {
     };
 }
 
-// The engine::Error message `action` throws, or a test failure if it throws none.
-template <typename Action>
-std::string errorFrom(Action&& action) {
-    try {
-        action();
-    } catch (const engine::Error& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "expected an engine::Error";
-    return {};
-}
 
 // --- culling -------------------------------------------------------------------------
 
@@ -314,7 +305,7 @@ TEST(FrameGraphEmptyPass, SsamWithFoliageRunsEveryPass) {
 
 TEST(FrameGraphErrors, ReadingATextureNothingWroteNamesPassAndTexture) {
     FrameGraph fg;
-    const std::string message = errorFrom([&] {
+    const std::string message = errorOf([&] {
         fg.addPass<Output>(
             "blur",
             [](FrameGraph::Builder& builder, Output&) {
@@ -330,7 +321,7 @@ TEST(FrameGraphErrors, ReadingATextureNothingWroteNamesPassAndTexture) {
 
 TEST(FrameGraphErrors, ReadingOwnOutputIsACycle) {
     FrameGraph fg;
-    const std::string message = errorFrom([&] {
+    const std::string message = errorOf([&] {
         fg.addPass<Output>(
             "feedback",
             [](FrameGraph::Builder& builder, Output&) {
@@ -349,7 +340,7 @@ TEST(FrameGraphErrors, StaleVersionIsRejectedNamingTheNewerWriter) {
     Events events;
     const FrameGraphTexture v1 = produce(fg, events, "opaque", "color");
     modify(fg, events, "fog", v1);  // color is now at version 2
-    const std::string message = errorFrom([&] { present(fg, events, "present", {v1}); });
+    const std::string message = errorOf([&] { present(fg, events, "present", {v1}); });
     EXPECT_THAT(message, HasSubstr("'present'"));
     EXPECT_THAT(message, HasSubstr("'color' version 1"));
     EXPECT_THAT(message, HasSubstr("'fog'"));
@@ -358,14 +349,14 @@ TEST(FrameGraphErrors, StaleVersionIsRejectedNamingTheNewerWriter) {
 TEST(FrameGraphErrors, InvalidHandleAndDuplicateNamesAndLateChangesAreRejected) {
     FrameGraph fg;
     Events events;
-    EXPECT_THAT(errorFrom([&] { present(fg, events, "present", {FrameGraphTexture{}}); }), HasSubstr("invalid"));
+    EXPECT_THAT(errorOf([&] { present(fg, events, "present", {FrameGraphTexture{}}); }), HasSubstr("invalid"));
     produce(fg, events, "opaque", "color");
-    EXPECT_THAT(errorFrom([&] { produce(fg, events, "opaque", "color2"); }),
+    EXPECT_THAT(errorOf([&] { produce(fg, events, "opaque", "color2"); }),
                 HasSubstr("already a pass named 'opaque'"));
     fg.compile();
-    EXPECT_THAT(errorFrom([&] { produce(fg, events, "late", "x"); }), HasSubstr("after compile()"));
-    EXPECT_THAT(errorFrom([&] { fg.importTexture("late import", kDesc, 1); }), HasSubstr("after compile()"));
-    EXPECT_THAT(errorFrom([&] { (void)fg.passStatus("nope"); }), HasSubstr("no pass named 'nope'"));
+    EXPECT_THAT(errorOf([&] { produce(fg, events, "late", "x"); }), HasSubstr("after compile()"));
+    EXPECT_THAT(errorOf([&] { fg.importTexture("late import", kDesc, 1); }), HasSubstr("after compile()"));
+    EXPECT_THAT(errorOf([&] { (void)fg.passStatus("nope"); }), HasSubstr("no pass named 'nope'"));
 }
 
 TEST(FrameGraphErrors, FailedSetupLeavesTheGraphAsItWas) {
@@ -413,7 +404,7 @@ TEST(FrameGraphErrors, ExecuteMayOnlyUseDeclaredTextures) {
             builder.sideEffect();
         },
         [&](const FrameGraph::Resources& resources, const Output&) { (void)resources.get(color); });
-    const std::string message = errorFrom([&] { fg.execute(recordingAllocator(events)); });
+    const std::string message = errorOf([&] { fg.execute(recordingAllocator(events)); });
     EXPECT_THAT(message, HasSubstr("'present'"));
     EXPECT_THAT(message, HasSubstr("'color'"));
     // The failed frame still released everything it allocated.
@@ -424,7 +415,7 @@ TEST(FrameGraphErrors, MissingAllocatorFailsBeforeAnyPassRuns) {
     FrameGraph fg;
     Events events;
     present(fg, events, "present", {produce(fg, events, "opaque", "color")});
-    EXPECT_THAT(errorFrom([&] { fg.execute(); }), HasSubstr("'color'"));
+    EXPECT_THAT(errorOf([&] { fg.execute(); }), HasSubstr("'color'"));
     EXPECT_THAT(events, IsEmpty());
 }
 
@@ -522,11 +513,19 @@ TEST(FrameGraphLifetime, QueriesNeedCompile) {
     FrameGraph fg;
     Events events;
     const FrameGraphTexture t = produce(fg, events, "A", "t");
-    EXPECT_THAT(errorFrom([&] { (void)fg.lifetime(t); }), HasSubstr("after compile()"));
-    EXPECT_THAT(errorFrom([&] { (void)fg.executionOrder(); }), HasSubstr("after compile()"));
+    EXPECT_THAT(errorOf([&] { (void)fg.lifetime(t); }), HasSubstr("after compile()"));
+    EXPECT_THAT(errorOf([&] { (void)fg.executionOrder(); }), HasSubstr("after compile()"));
 }
 
 // --- graphviz ------------------------------------------------------------------------
+
+// The graph compiled, as dumpGraphviz writes it.
+std::string compiledGraphviz(FrameGraph& fg) {
+    fg.compile();
+    std::ostringstream dot;
+    fg.dumpGraphviz(dot);
+    return dot.str();
+}
 
 TEST(FrameGraphGraphviz, DrawsPassesTexturesAndEdgesWithCulledGrey) {
     FrameGraph fg;
@@ -542,11 +541,7 @@ TEST(FrameGraphGraphviz, DrawsPassesTexturesAndEdgesWithCulledGrey) {
             builder.sideEffect();
         },
         [](const FrameGraph::Resources&, const Output&) {});
-    fg.compile();
-
-    std::ostringstream dot;
-    fg.dumpGraphviz(dot);
-    const std::string text = dot.str();
+    const std::string text = compiledGraphviz(fg);
 
     EXPECT_THAT(text, HasSubstr("digraph frame_graph {"));
     EXPECT_THAT(text, HasSubstr("P0 [label=\"opaque\", shape=box, style=filled"));
@@ -577,11 +572,7 @@ TEST(FrameGraphGraphviz, LinksAVersionAnEmptyPassWroteToTheContentsItHolds) {
         },
         [](const FrameGraph::Resources&, const Output&) {});
     present(fg, events, "present", {composite.texture});  // P2
-    fg.compile();
-
-    std::ostringstream dot;
-    fg.dumpGraphviz(dot);
-    const std::string text = dot.str();
+    const std::string text = compiledGraphviz(fg);
 
     EXPECT_THAT(text, HasSubstr("P1 [label=\"composite\\n(empty)\", shape=box, style=dashed, color=gray"));
     EXPECT_THAT(text, HasSubstr("R0_1 -> P1 [color=gray];"));
