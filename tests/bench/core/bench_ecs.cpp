@@ -68,6 +68,16 @@ void report(benchmark::State& state) {
         static_cast<double>(kEntities), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// Times `pass` (one pass over every entity) and reports the rate per entity.
+template <typename Pass>
+void measure(benchmark::State& state, Pass&& pass) {
+    for (auto _ : state) {
+        pass();
+        benchmark::ClobberMemory();
+    }
+    report(state);
+}
+
 template <class... Components>
 void populate(Registry& registry) {
     for (std::size_t i = 0, n = entityCount(); i < n; ++i) {
@@ -83,11 +93,7 @@ void Plain1(benchmark::State& state) {
         Position p;
     };
     std::vector<Body> bodies(entityCount());
-    for (auto _ : state) {
-        for (Body& b : bodies) drift(b.p);
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { for (Body& b : bodies) drift(b.p); });
 }
 
 void Plain2(benchmark::State& state) {
@@ -96,11 +102,7 @@ void Plain2(benchmark::State& state) {
         Velocity v;
     };
     std::vector<Body> bodies(entityCount());
-    for (auto _ : state) {
-        for (Body& b : bodies) integrate(b.p, b.v);
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { for (Body& b : bodies) integrate(b.p, b.v); });
 }
 
 void Plain3(benchmark::State& state) {
@@ -110,11 +112,7 @@ void Plain3(benchmark::State& state) {
         Acceleration a;
     };
     std::vector<Body> bodies(entityCount());
-    for (auto _ : state) {
-        for (Body& b : bodies) integrate(b.p, b.v, b.a);
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { for (Body& b : bodies) integrate(b.p, b.v, b.a); });
 }
 
 // --- ECS ---------------------------------------------------------------------
@@ -123,44 +121,28 @@ void Ecs1_Each(benchmark::State& state) {
     Registry registry;
     populate<Position>(registry);
     auto view = registry.view<Position>();
-    for (auto _ : state) {
-        view.each([](Position& p) { drift(p); });
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { view.each([](Position& p) { drift(p); }); });
 }
 
 void Ecs1_RangeFor(benchmark::State& state) {
     Registry registry;
     populate<Position>(registry);
     auto view = registry.view<Position>();
-    for (auto _ : state) {
-        for (auto [e, p] : view) drift(p);
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { for (auto [e, p] : view) drift(p); });
 }
 
 void Ecs2_Each(benchmark::State& state) {
     Registry registry;
     populate<Position, Velocity>(registry);
     auto view = registry.view<Position, const Velocity>();
-    for (auto _ : state) {
-        view.each([](Position& p, const Velocity& v) { integrate(p, v); });
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { view.each([](Position& p, const Velocity& v) { integrate(p, v); }); });
 }
 
 void Ecs2_RangeFor(benchmark::State& state) {
     Registry registry;
     populate<Position, Velocity>(registry);
     auto view = registry.view<Position, const Velocity>();
-    for (auto _ : state) {
-        for (auto [e, p, v] : view) integrate(p, v);
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { for (auto [e, p, v] : view) integrate(p, v); });
 }
 
 void Ecs2_Each_Shuffled(benchmark::State& state) {
@@ -173,33 +155,21 @@ void Ecs2_Each_Shuffled(benchmark::State& state) {
     std::shuffle(entities.begin(), entities.end(), std::mt19937(42));
     for (Entity e : entities) registry.add<Velocity>(e);
     auto view = registry.view<Position, const Velocity>();
-    for (auto _ : state) {
-        view.each([](Position& p, const Velocity& v) { integrate(p, v); });
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { view.each([](Position& p, const Velocity& v) { integrate(p, v); }); });
 }
 
 void Ecs3_Each(benchmark::State& state) {
     Registry registry;
     populate<Position, Velocity, Acceleration>(registry);
     auto view = registry.view<Position, Velocity, const Acceleration>();
-    for (auto _ : state) {
-        view.each([](Position& p, Velocity& v, const Acceleration& a) { integrate(p, v, a); });
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { view.each([](Position& p, Velocity& v, const Acceleration& a) { integrate(p, v, a); }); });
 }
 
 void Ecs3_RangeFor(benchmark::State& state) {
     Registry registry;
     populate<Position, Velocity, Acceleration>(registry);
     auto view = registry.view<Position, Velocity, const Acceleration>();
-    for (auto _ : state) {
-        for (auto [e, p, v, a] : view) integrate(p, v, a);
-        benchmark::ClobberMemory();
-    }
-    report(state);
+    measure(state, [&] { for (auto [e, p, v, a] : view) integrate(p, v, a); });
 }
 
 }  // namespace

@@ -324,6 +324,38 @@ render::TextureHandle screenTexture(render::Backend& b, const char* name, render
     return b.createTexture(d, &data);
 }
 
+// The foliage colour the composite benchmarks blend over the frame: an opaque sRGB pattern.
+render::TextureHandle compositeFoliage(render::Backend& b) {
+    return screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [](int x, int y, std::uint8_t* t) {
+        t[0] = std::uint8_t(40 + x % 64);
+        t[1] = std::uint8_t(120 + y % 96);
+        t[2] = std::uint8_t(30 + (x ^ y) % 32);
+        t[3] = 255;
+    });
+}
+
+// A full-screen composite of `program` with `params` over `target`, blended as SSAM's
+// composite is drawn: SRC_ALPHA / INV_SRC_ALPHA on RGB, the target's alpha kept.
+void runComposite(benchmark::State& state, soft::SoftBackend& b, render::TextureHandle target,
+                  const render::ProgramDesc& program, const render::DrawParams& params, const char* name) {
+    render::PipelineDesc pd;
+    pd.program = b.createProgram(program);
+    pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
+                   render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
+    const auto pipeline = b.createPipeline(pd);
+    render::PassDesc pass;
+    pass.name = name;
+    pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(0.3f, 0.5f, 0.8f, 1.0f)};
+    runPasses(state, b, [&] {
+        b.beginPass(pass);
+        render::DrawDesc d;
+        d.pipeline = pipeline;
+        d.params = params;
+        b.draw(d);
+        b.endPass();
+    });
+}
+
 void BM_SsamComposite(benchmark::State& state) {
     auto backend = makeBackend(state);
     render::Backend& b = *backend;
@@ -336,31 +368,10 @@ void BM_SsamComposite(benchmark::State& state) {
         t[0] = t[1] = t[2] = std::uint8_t(255.0f * m);
         t[3] = std::uint8_t(std::min(255.0f, 400.0f * m));
     });
-    const auto foliage = screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [](int x, int y, std::uint8_t* t) {
-        t[0] = std::uint8_t(40 + x % 64);
-        t[1] = std::uint8_t(120 + y % 96);
-        t[2] = std::uint8_t(30 + (x ^ y) % 32);
-        t[3] = 255;
-    });
-    render::PipelineDesc pd;
-    pd.program = b.createProgram(ssam::compositeProgram());
-    pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
-                   render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
-    const auto pipeline = b.createPipeline(pd);
     ssam::CompositeParams params;
-    params.foliage = foliage;
+    params.foliage = compositeFoliage(b);
     params.mask = mask;
-    render::PassDesc pass;
-    pass.name = "ssam composite";
-    pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(0.3f, 0.5f, 0.8f, 1.0f)};
-    runPasses(state, *backend, [&] {
-        b.beginPass(pass);
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = params;
-        b.draw(d);
-        b.endPass();
-    });
+    runComposite(state, *backend, target, ssam::compositeProgram(), params, "ssam composite");
 }
 
 // A screen-sized R16F texture holding value(x, y).
@@ -390,28 +401,10 @@ void BM_SsamPlusComposite(benchmark::State& state) {
     };
     const auto mask = screenHalfTexture(b, "mask max", leaf);
     const auto maskAdd = screenHalfTexture(b, "mask add", [&](int x, int y) { return leaf(x, y) * (1.0f + float(x % 7) * 0.5f); });
-    const auto foliage = screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [](int x, int y, std::uint8_t* t) {
-        t[0] = std::uint8_t(40 + x % 64);
-        t[1] = std::uint8_t(120 + y % 96);
-        t[2] = std::uint8_t(30 + (x ^ y) % 32);
-        t[3] = 255;
-    });
-    render::PipelineDesc pd;
-    pd.program = b.createProgram(transparency::coverageCompositeProgram());
-    pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
-                   render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
-    const auto pipeline = b.createPipeline(pd);
-    render::PassDesc pass;
-    pass.name = "ssam+ composite";
-    pass.color[0] = {target, render::LoadOp::Clear, glm::vec4(0.3f, 0.5f, 0.8f, 1.0f)};
-    runPasses(state, *backend, [&] {
-        b.beginPass(pass);
-        render::DrawDesc d;
-        d.pipeline = pipeline;
-        d.params = transparency::CoverageCompositeParams{foliage, mask, maskAdd, transparency::CoverageModel::EqualLayers};
-        b.draw(d);
-        b.endPass();
-    });
+    const auto foliage = compositeFoliage(b);
+    runComposite(state, *backend, target, transparency::coverageCompositeProgram(),
+                 transparency::CoverageCompositeParams{foliage, mask, maskAdd, transparency::CoverageModel::EqualLayers},
+                 "ssam+ composite");
 }
 
 // 100k right triangles with 4.5 px legs (~10 px each) on a 400 x 250 grid over the screen.
