@@ -11,6 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "png_writer.hpp"
 #include "scene.hpp"
@@ -77,7 +78,7 @@ struct GlfwWindow {
 
 // ---- The host program's own GL ------------------------------------------------------------
 
-GLuint compile(GLenum stage, const char* source) {
+GLuint compileStage(GLenum stage, const char* source, const std::string& what) {
     const GLuint s = glCreateShader(stage);
     glShaderSource(s, 1, &source, nullptr);
     glCompileShader(s);
@@ -86,7 +87,8 @@ GLuint compile(GLenum stage, const char* source) {
     if (!ok) {
         char log[1024];
         glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        throw std::runtime_error(std::string("opaque shader: ") + log);
+        glDeleteShader(s);
+        throw std::runtime_error(what + ": " + log);
     }
     return s;
 }
@@ -124,14 +126,26 @@ constexpr GLsizei kCardVertices = kCardRows * 6;
 
 }  // namespace
 
+GLuint linkProgram(const char* vertexSource, const char* fragmentSource, const std::string& what) {
+    const GLuint program = glCreateProgram();
+    try {
+        const std::pair<GLenum, const char*> stages[] = {{GL_VERTEX_SHADER, vertexSource},
+                                                         {GL_FRAGMENT_SHADER, fragmentSource}};
+        for (const auto& [stage, source] : stages) {
+            const GLuint shader = compileStage(stage, source, what);
+            glAttachShader(program, shader);
+            glDeleteShader(shader);  // goes with the program
+        }
+    } catch (...) {
+        glDeleteProgram(program);
+        throw;
+    }
+    glLinkProgram(program);
+    return program;
+}
+
 HostScene::HostScene(float wind) {
-    opaqueProgram_ = glCreateProgram();
-    const GLuint vs = compile(GL_VERTEX_SHADER, kOpaqueVertex), fs = compile(GL_FRAGMENT_SHADER, kOpaqueFragment);
-    glAttachShader(opaqueProgram_, vs);
-    glAttachShader(opaqueProgram_, fs);
-    glLinkProgram(opaqueProgram_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    opaqueProgram_ = linkProgram(kOpaqueVertex, kOpaqueFragment, "opaque shader");
     viewProjUniform_ = glGetUniformLocation(opaqueProgram_, "u_viewProj");
     colorUniform_ = glGetUniformLocation(opaqueProgram_, "u_color");
 

@@ -10,6 +10,7 @@
 // (eglGetProcAddress headless, glfwGetProcAddress in a window), as an engine would pass its own.
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -61,6 +62,10 @@ using MakeFoliageRenderer = std::function<std::unique_ptr<FoliageRenderer>(const
 
 // Throws std::runtime_error naming the call and SSAM's message unless `status` is Ok.
 void check(const ssam::gl::ScreenSpaceAlphaMaskGl& ssam, ssam::gl::Status status, const char* call);
+
+// The host's own shader program from its vertex and fragment sources; throws
+// std::runtime_error "<what>: <compile log>" when a stage does not compile.
+GLuint linkProgram(const char* vertexSource, const char* fragmentSource, const std::string& what);
 
 // The whole program: arguments, context (EGL surfaceless headless, else a GLFW window), the host
 // scene, SSAM initialised with the platform's loader, frames, PNGs. Returns the exit status.

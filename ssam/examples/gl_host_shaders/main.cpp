@@ -68,33 +68,11 @@ void main() {
 }
 )";
 
-GLuint compileStage(GLenum stage, const char* source) {
-    const GLuint s = glCreateShader(stage);
-    glShaderSource(s, 1, &source, nullptr);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024];
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        glDeleteShader(s);
-        throw std::runtime_error(std::string("foliage shader: ") + log);
-    }
-    return s;
-}
-
 struct FoliageProgram {
     GLuint id = 0;
     GLint viewProj = -1, wind = -1, tint = -1, leaf = -1, alphaReference = -1;
     explicit FoliageProgram(const char* fragment) {
-        const GLuint vs = compileStage(GL_VERTEX_SHADER, kFoliageVertex);
-        const GLuint fs = compileStage(GL_FRAGMENT_SHADER, fragment);
-        id = glCreateProgram();
-        glAttachShader(id, vs);
-        glAttachShader(id, fs);
-        glLinkProgram(id);
-        glDeleteShader(vs);
-        glDeleteShader(fs);
+        id = linkProgram(kFoliageVertex, fragment, "foliage shader");
         viewProj = glGetUniformLocation(id, "u_viewProj");
         wind = glGetUniformLocation(id, "u_wind");
         tint = glGetUniformLocation(id, "u_tint");
