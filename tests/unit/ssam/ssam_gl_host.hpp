@@ -29,6 +29,13 @@ inline const engine::render::DirectionalLight kUnlit{{0.0f, 0.0f, 1.0f}, glm::ve
 inline const Quad kQuadA{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.4f}};
 inline const Quad kQuadB{-0.25f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 0.2f}};
 
+// One setting a comparison runs: SSAM's configuration and the host's colour format.
+struct ConfigCase {
+    const char* name;
+    Config config;
+    engine::render::Format colorFormat = engine::render::Format::RGBA8_UNORM;
+};
+
 // ssam::Config's knobs as ssam::gl::Settings (the same values, the host-neutral types).
 inline ssam::gl::Settings settingsOf(const Config& c) {
     ssam::gl::Settings s;
@@ -136,6 +143,14 @@ struct GlHost {
         backend->destroy(h);
         return r;
     }
+};
+
+// Where most ssam::gl tests start: a host with its opaque frame drawn and ssam::gl initialised,
+// made in that order. `auto&& [host, targets, ssam] = HostWithSsam{};` names the three.
+struct HostWithSsam {
+    GlHost host;
+    std::unique_ptr<engine::render::FrameTargets> targets = host.opaque();
+    std::unique_ptr<ssam::gl::ScreenSpaceAlphaMaskGl> ssam = initializedSsam();
 };
 
 // A host GL state unlike anything SSAM sets; expectRestored() checks that every piece is back.

@@ -9,38 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "engine/render/gl/gl_program.hpp"
 #include "ssam_gl_host.hpp"
 
 namespace {
 
 using namespace engine::render;
 using namespace ssam::testing;
+using engine::render::gl::compileProgram;
+using engine::render::gl::GlProgram;
 using ssam::gl::Status;
-
-GLuint compile(GLenum stage, const char* source) {
-    const GLuint s = glCreateShader(stage);
-    glShaderSource(s, 1, &source, nullptr);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = {};
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        ADD_FAILURE() << "host shader: " << log;
-    }
-    return s;
-}
-
-GLuint link(const char* vertex, const char* fragment) {
-    const GLuint p = glCreateProgram();
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
-    glAttachShader(p, vs);
-    glAttachShader(p, fs);
-    glLinkProgram(p);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    return p;
-}
 
 // The host's foliage shaders, written to the contract: the vertex colour's alpha is the coverage.
 constexpr const char* kHostVertex = R"(#version 330 core
@@ -75,16 +53,13 @@ void main() {
 }
 )";
 
+// Compiled as any GL program of ours is (a compile or link error throws with the log).
 struct HostPrograms {
-    GLuint mask = link(kHostVertex, kHostMask);
-    GLuint color = link(kHostVertex, kHostColor);
-    ~HostPrograms() {
-        glDeleteProgram(mask);
-        glDeleteProgram(color);
-    }
-    void use(GLuint program, const ssam::gl::FrameDesc& frame) const {
-        glUseProgram(program);
-        glUniformMatrix4fv(glGetUniformLocation(program, "viewProj"), 1, GL_FALSE, frame.viewProj);
+    GlProgram mask = compileProgram("host mask", kHostVertex, kHostMask);
+    GlProgram color = compileProgram("host colour", kHostVertex, kHostColor);
+    void use(const GlProgram& program, const ssam::gl::FrameDesc& frame) const {
+        glUseProgram(program.id());
+        glUniformMatrix4fv(program.uniform("viewProj"), 1, GL_FALSE, frame.viewProj);
     }
 };
 
@@ -100,19 +75,14 @@ Status renderWithHostShaders(ssam::gl::ScreenSpaceAlphaMaskGl& ssam, const ssam:
     if (Status s = ssam.endMaskPass(); s != Status::Ok) return s;
     if (Status s = ssam.beginColorPass(&pass); s != Status::Ok) return s;
     programs.use(programs.color, frame);
-    glUniform1f(glGetUniformLocation(programs.color, "alphaReference"), pass.alphaReference);
+    glUniform1f(programs.color.uniform("alphaReference"), pass.alphaReference);
     foliage.draw();
     if (Status s = ssam.endColorPass(); s != Status::Ok) return s;
     return ssam.composite();
 }
 
 TEST(SsamGlHostShaders, MimickingTheBuiltInProgramsGivesTheSameImage) {
-    struct Case {
-        const char* name;
-        ssam::Config config;
-        Format colorFormat = Format::RGBA8_UNORM;
-    };
-    std::vector<Case> cases;
+    std::vector<ConfigCase> cases;
     cases.push_back({"defaults", {}});
     ssam::Config c;
     c.maskPrecision = ssam::MaskPrecision::RG16F;  // two draw buffers in the mask pass
@@ -131,7 +101,7 @@ TEST(SsamGlHostShaders, MimickingTheBuiltInProgramsGivesTheSameImage) {
 
     GlHost host;
     const HostPrograms programs;
-    for (const Case& k : cases) {
+    for (const ConfigCase& k : cases) {
         SCOPED_TRACE(k.name);
         std::vector<Quad> quads{kQuadA, kQuadB};
         if (k.config.depthFunc == CompareFunc::Greater)
@@ -174,9 +144,7 @@ TEST(SsamGlHostShaders, MimickingTheBuiltInProgramsGivesTheSameImage) {
 
 // What a host shader can rely on: each pass's framebuffer, blend, depth and cull state.
 TEST(SsamGlHostShaders, EachPassSetsItsStateAndGivesTheHostsBack) {
-    GlHost host;
-    auto targets = host.opaque();
-    auto ssam = initializedSsam();
+    auto&& [host, targets, ssam] = HostWithSsam{};
     const HostGlState hostState;
     hostState.set();
     ssam::gl::FrameReport report;
@@ -249,9 +217,7 @@ TEST(SsamGlHostShaders, EachPassSetsItsStateAndGivesTheHostsBack) {
 // Calls out of order are InvalidCall naming what comes next; the open frame is abandoned with the
 // host's state restored, and the next frame starts cleanly.
 TEST(SsamGlHostShaders, CallsOutOfOrderAreInvalidAndLeaveNothingOpen) {
-    GlHost host;
-    auto targets = host.opaque();
-    auto ssam = initializedSsam();
+    auto&& [host, targets, ssam] = HostWithSsam{};
     const HostGlState hostState;
     hostState.set();
     const ssam::gl::FrameDesc frame = host.frameOf(*targets);
@@ -284,9 +250,7 @@ TEST(SsamGlHostShaders, CallsOutOfOrderAreInvalidAndLeaveNothingOpen) {
 }
 
 TEST(SsamGlHostShaders, NothingInViewEndsTheFrameAtBeginFrame) {
-    GlHost host;
-    auto targets = host.opaque();
-    auto ssam = initializedSsam();
+    auto&& [host, targets, ssam] = HostWithSsam{};
     const ssam::gl::Box behind{{-1, -1, -0.5f}, {1, 1, -0.5f}};
     ssam::gl::FrameDesc frame = host.frameOf(*targets);
     frame.foliageBounds = &behind;

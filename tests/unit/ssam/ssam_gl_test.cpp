@@ -25,12 +25,7 @@ using ssam::gl::Status;
 // gives on the GL backend for the same scene. Same GPU, same blending: masks and depth exact; the
 // composite within 1 code (the two composite shaders round their arithmetic differently).
 TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
-    struct Case {
-        const char* name;
-        ssam::Config config;
-        Format colorFormat = Format::RGBA8_UNORM;
-    };
-    std::vector<Case> cases;
+    std::vector<ConfigCase> cases;
     cases.push_back({"defaults", {}});
     ssam::Config c;
     c.squareMask = false;
@@ -58,7 +53,7 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
     cases.push_back({"rgba16f colour", {}, Format::RGBA16F});
 
     GlHost host;
-    for (const Case& k : cases) {
+    for (const ConfigCase& k : cases) {
         SCOPED_TRACE(k.name);
         const bool reversed = k.config.depthFunc == CompareFunc::Greater;
         std::vector<Quad> quads{kQuadA, kQuadB};
@@ -118,9 +113,7 @@ TEST(SsamGl, SettingsDefaultToTheConfigDefaults) {
 }
 
 TEST(SsamGl, CallbackSeesTheMaskPassThenTheColourPass) {
-    GlHost host;
-    auto targets = host.opaque();
-    auto ssam = initializedSsam();
+    auto&& [host, targets, ssam] = HostWithSsam{};
     HostFoliage foliage({kQuadA});
     std::vector<ssam::gl::FoliageProgram> seen;
     EXPECT_EQ(ssam->render(host.frameOf(*targets),
@@ -147,9 +140,7 @@ void drawHostFoliage(void* user, const ssam::gl::FoliageProgram&) { static_cast<
 
 TEST(SsamGl, ModelMatrixAndBaseColourFactorApply) {
     // A quad drawn at x in [-1, 0] moved right by the model matrix; its alpha halved by the factor.
-    GlHost host;
-    auto targets = host.opaque();
-    auto ssam = initializedSsam();
+    auto&& [host, targets, ssam] = HostWithSsam{};
     HostFoliage foliage({{-1.0f, -1.0f, 0.0f, 1.0f, 0.5f, {1, 1, 1, 0.8f}}});
     const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, 0.0f));
     EXPECT_EQ(ssam->render(host.frameOf(*targets),
@@ -193,9 +184,7 @@ TEST(SsamGl, NothingInViewRunsNoPassAndNeverCallsBack) {
 TEST(SsamGl, CompositeIsScissoredToTheFoliage) {
     // The foliage quad covers the top half, but its bounds say the top-left 4x4 pixels:
     // outside the scissor the composite must not touch the colour.
-    GlHost host;
-    auto targets = host.opaque();
-    auto ssam = initializedSsam();
+    auto&& [host, targets, ssam] = HostWithSsam{};
     HostFoliage foliage({{-1.0f, 0.0f, 0.0f, 1.0f, 0.5f, {1, 1, 1, 1.0f}}});
     const ssam::gl::Box bounds{{-1.0f, 0.5f, 0.5f}, {-0.5f, 1.0f, 0.5f}};
     ssam::gl::FrameDesc frame = host.frameOf(*targets);
@@ -215,9 +204,7 @@ TEST(SsamGl, CompositeIsScissoredToTheFoliage) {
 // Every piece of state ssam::gl changes is back afterwards, also when the callback throws (which
 // becomes Status::CallbackFailed with the exception's message: nothing unwinds into the host).
 TEST(SsamGl, RestoresTheHostsGlState) {
-    GlHost host;
-    auto targets = host.opaque();
-    auto ssam = initializedSsam();
+    auto&& [host, targets, ssam] = HostWithSsam{};
     HostFoliage foliage({kQuadA, kQuadB});
     const HostGlState hostState;
     for (const bool throwing : {false, true}) {
