@@ -25,3 +25,10 @@ function(expect_clean_configure output)
     message(FATAL_ERROR "the consumer's configure printed a warning:\n${output}")
   endif()
 endfunction()
+
+# The installing build's flags (-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=, empty unless given; the
+# sanitizers in the asan preset): a program linked against its static libraries needs the same
+# runtimes. `consumer_cmake_flags` for a CMake configure, `consumer_compile_flags` for a compiler
+# run by hand.
+set(consumer_cmake_flags "-DCMAKE_CXX_FLAGS=${BUILD_CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${BUILD_LINKER_FLAGS}")
+separate_arguments(consumer_compile_flags UNIX_COMMAND "${BUILD_CXX_FLAGS} ${BUILD_LINKER_FLAGS}")

@@ -2,6 +2,7 @@
 # cmake -P script: the consumer built without CMake, from `pkg-config ssam ssam-soft ssam-gl`
 # against an installed prefix, at -O3 with warnings as errors, then run.
 #   -DBUILD_DIR= -DPREFIX= -DCONSUMER_SOURCE= -DOUT= -DCXX= -DPKG_CONFIG=
+#   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
 install_library(${BUILD_DIR} ${PREFIX})
 file(GLOB_RECURSE pc_files ${PREFIX}/ssam.pc)
@@ -26,7 +27,7 @@ separate_arguments(flags UNIX_COMMAND "${run_output}")
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 run(${CXX} -std=c++20 -O3 -Wall -Wextra -Wpedantic -Werror "-DEXPECTED_SSAM_VERSION=\"${version}\""
-    ${CONSUMER_SOURCE}/main.cpp -o ${OUT}/ssam_consumer ${flags})
+    ${CONSUMER_SOURCE}/main.cpp -o ${OUT}/ssam_consumer ${flags} ${consumer_compile_flags})
 run(${OUT}/ssam_consumer)
 if(NOT run_output MATCHES "soft: centre pixel[^\n]*: ok")
   message(FATAL_ERROR "the consumer did not check the soft backend's pixel:\n${run_output}")

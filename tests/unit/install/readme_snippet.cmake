@@ -6,6 +6,7 @@
 # "// host_shaders.cpp" in ssam/README.md: functions a host calls, no main) are compiled the
 # same way against ssam::gl. A README edit that breaks a snippet, or drops it, fails this test.
 #   -DBUILD_DIR= -DPREFIX= -DREADME= -DSSAM_README= -DWORK= -DCXX= -DPKG_CONFIG=
+#   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
 install_library(${BUILD_DIR} ${PREFIX})
 file(REMOVE_RECURSE ${WORK})
@@ -41,7 +42,8 @@ target_compile_options(raw_gl_snippets PRIVATE -Wall -Wextra -Werror)
 target_link_libraries(raw_gl_snippets PRIVATE ssam::gl PkgConfig::HOST_EPOXY)
 ]=])
 
-run(${CMAKE_COMMAND} -S ${WORK}/src -B ${WORK}/cmake-build -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} -S ${WORK}/src -B ${WORK}/cmake-build -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release
+    ${consumer_cmake_flags})
 expect_clean_configure("${run_output}")
 run(${CMAKE_COMMAND} --build ${WORK}/cmake-build)
 run(${WORK}/cmake-build/leaves)
@@ -55,7 +57,8 @@ get_filename_component(pc_dir ${pc_file} DIRECTORY)
 set(ENV{PKG_CONFIG_PATH} ${pc_dir})
 run(${PKG_CONFIG} --static --cflags --libs ssam ssam-soft)
 separate_arguments(flags UNIX_COMMAND "${run_output}")
-run(${CXX} -std=c++20 -O3 -Wall -Wextra -Werror ${WORK}/src/leaves.cpp -o ${WORK}/leaves-pkg-config ${flags})
+run(${CXX} -std=c++20 -O3 -Wall -Wextra -Werror ${WORK}/src/leaves.cpp -o ${WORK}/leaves-pkg-config ${flags}
+    ${consumer_compile_flags})
 run(${WORK}/leaves-pkg-config)
 if(NOT run_output MATCHES "centre: red")
   message(FATAL_ERROR "the README's program (pkg-config build) printed no centre pixel:\n${run_output}")

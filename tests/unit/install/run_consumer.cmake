@@ -3,6 +3,7 @@
 # configures (no warnings allowed), builds (-O3, warnings as errors) and runs the consumer with
 # find_package(ssam 0.2 COMPONENTS soft gl); then the raw-OpenGL examples the same way.
 #   -DBUILD_DIR= -DPREFIX= -DCONSUMER_SOURCE= -DCONSUMER_BUILD= [-DEXAMPLE_SOURCE= -DEXAMPLE_BUILD=]
+#   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
 install_library(${BUILD_DIR} ${PREFIX})
 
@@ -30,7 +31,8 @@ foreach(archive IN LISTS archives)
 endforeach()
 
 file(REMOVE_RECURSE ${CONSUMER_BUILD})
-run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release
+    ${consumer_cmake_flags})
 expect_clean_configure("${run_output}")
 run(${CMAKE_COMMAND} --build ${CONSUMER_BUILD})
 run(${CONSUMER_BUILD}/ssam_consumer)
@@ -42,7 +44,8 @@ endif()
 # each run headless when a context can be made (77 = none here, which is fine for this test).
 if(EXAMPLE_SOURCE)
   file(REMOVE_RECURSE ${EXAMPLE_BUILD})
-  run(${CMAKE_COMMAND} -S ${EXAMPLE_SOURCE} -B ${EXAMPLE_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release)
+  run(${CMAKE_COMMAND} -S ${EXAMPLE_SOURCE} -B ${EXAMPLE_BUILD} -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release
+    ${consumer_cmake_flags})
   expect_clean_configure("${run_output}")
   run(${CMAKE_COMMAND} --build ${EXAMPLE_BUILD})
   foreach(example ssam_gl_embedding ssam_gl_host_shaders)
