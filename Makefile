@@ -2,6 +2,7 @@
 # The two set-up commands of the README:
 #   make demo   install what is missing, build, run the racer demo
 #   make test   install what is missing, build, run ctest --preset default
+# CI (.ci/run) runs `make test`, then `make test-asan` (the sanitizer pass, below).
 # `make deps` alone installs the Debian packages; it skips apt entirely when they are all present.
 
 SHELL := /bin/bash
@@ -23,7 +24,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
 # which bundles npm and which Debian's npm package would try to replace).
 NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test demo bench readme-images readme-chart content clean node-tools fuzz fuzz-campaign
+.PHONY: all deps configure build test test-asan demo bench readme-images readme-chart content clean node-tools fuzz fuzz-campaign
 
 all: build
 
@@ -50,6 +51,16 @@ node-tools: deps
 
 test: build node-tools
 	ctest --preset $(PRESET) -j $(JOBS)
+
+# The sanitizer pass CI runs after `make test` (tests/README.md "What CI runs"): the asan preset
+# (Debug, AddressSanitizer + UndefinedBehaviorSanitizer, no recovery) built in build-asan, then
+# these ctest labels under it. Left out: the glTF validator (Node.js, none of our code runs).
+ASAN_LABELS ?= unit|conformance|stress|capture|gl
+ASAN_EXCLUDE ?= ^Content\.GltfValidatorFindsNoErrors$$
+test-asan: deps
+	@[ -f build-asan/CMakeCache.txt ] || cmake --preset asan
+	cmake --build --preset asan -j $(JOBS)
+	UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j $(JOBS) -L '^($(ASAN_LABELS))$$' -E '$(ASAN_EXCLUDE)'
 
 # The demo: with a display, the racing scene in a window (GL) until it is closed (keys:
 # 1-8 / T technique, C camera, P pause, Esc quit); without one, a few seconds at a fixed time
