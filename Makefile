@@ -56,13 +56,14 @@ test: build node-tools
 # (Debug, AddressSanitizer + UndefinedBehaviorSanitizer, no recovery) built in build-asan, then
 # these ctest labels under it. Left out: tests that also carry the label `slow` (too long under
 # the sanitizers; `make test` still runs them) and the glTF validator (Node.js, none of our code
-# runs).
+# runs). The asan test preset sets ASAN_OPTIONS and UBSAN_OPTIONS (CMakePresets.json; why:
+# tests/README.md "What CI runs").
 ASAN_LABELS ?= unit|conformance|stress|capture|gl
 ASAN_EXCLUDE ?= ^Content\.GltfValidatorFindsNoErrors$$
 test-asan: deps
 	@[ -f build-asan/CMakeCache.txt ] || cmake --preset asan
 	cmake --build --preset asan -j $(JOBS)
-	UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j $(JOBS) -L '^($(ASAN_LABELS))$$' -LE '^slow$$' \
+	ctest --preset asan -j $(JOBS) -L '^($(ASAN_LABELS))$$' -LE '^slow$$' \
 	  -E '$(ASAN_EXCLUDE)'
 
 # The demo: with a display, the racing scene in a window (GL) until it is closed (keys:
