@@ -18,7 +18,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
             libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libpng-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
-            libepoxy-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
+            libepoxy-dev libstb-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
             $(NODE_PACKAGES)
 # Debian's nodejs + npm, unless an npm is already on the PATH (e.g. a NodeSource nodejs,
 # which bundles npm and which Debian's npm package would try to replace).
