@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -33,9 +34,9 @@ namespace {
 using namespace racer;
 namespace gl = engine::render::gl;
 
-std::string passTimings(engine::render::Backend& backend) {
+std::string passTimings(const std::vector<engine::render::PassTiming>& timings) {
     std::string passes;
-    for (const auto& t : backend.takeTimings()) {
+    for (const auto& t : timings) {
         char buf[96];
         if (t.skipped) std::snprintf(buf, sizeof buf, " %s skipped", t.pass.c_str());
         else std::snprintf(buf, sizeof buf, " %s %.1f", t.pass.c_str(), t.milliseconds);
@@ -48,14 +49,16 @@ std::string passTimings(engine::render::Backend& backend) {
 void runHeadless(const Options& o, engine::render::Backend& backend, FrameRenderer& frame, const FrameSource& source,
                  CameraMode camera, float aspect) {
     double totalMs = 0.0;
+    std::vector<engine::render::PassTiming> lastTimings;
     SceneFrame last;
     for (int i = 0; i < o.frames; ++i) {
         const auto start = std::chrono::steady_clock::now();
-        last = source(float(i * o.fixedDt), float(o.fixedDt), camera, FreeCamera{}, aspect);
+        last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
         frame.render(last.lists, last.camera);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         totalMs += ms;
-        const std::string passes = passTimings(backend);
+        lastTimings = backend.takeTimings();
+        const std::string passes = passTimings(lastTimings);
         if (i == 0 || (i + 1) % 10 == 0 || i + 1 == o.frames)
             std::printf("frame %d/%d  %.1f ms  (ms:%s)\n", i + 1, o.frames, ms, passes.c_str());
     }
@@ -137,10 +140,16 @@ int run(const CLI::App& app, const Options& o) {
                                &racing->track()});
         frame.setLivingScene(living.get());
     }
-    const FrameSource source = [&](float time, float dt, CameraMode camera, const FreeCamera& free, float frameAspect) {
-        if (racing) racing->update(dt);
+    const FrameSource source = [&](float time, float dt, CameraMode camera, const PlayerInput& input, float frameAspect) {
+        if (racing) {
+            if (input.autopilot) racing->engageAutopilot();
+            // The first drive key takes the wheel; once driven, released keys coast.
+            if (input.drive.any || racing->registry().get<Car>(racing->car()).driven)
+                racing->takeWheel(input.drive.controls);
+            racing->update(dt);
+        }
         const CameraView view =
-            gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, free);
+            gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, input.free);
         if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };
@@ -163,7 +172,7 @@ int run(const CLI::App& app, const Options& o) {
         ws.fixedDt = o.fixedDtGiven ? o.fixedDt : 0.0;
         ws.camera = cameraMode;
         ws.script = o.script;
-        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, Esc quit\n");
+        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, R autopilot, Esc quit\n");
         const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());
@@ -171,6 +180,13 @@ int run(const CLI::App& app, const Options& o) {
         if (!o.script.empty()) throw engine::UsageError("--script needs a window (a display and no --headless)");
         std::printf("racer: %d frames at dt %.4f s\n", o.frames, o.fixedDt);
         runHeadless(o, backend, frame, source, cameraMode, aspect);
+    }
+
+    if (racing) {
+        const Car& car = racing->registry().get<Car>(racing->car());
+        std::printf("racer: car at (%.2f, %.2f, %.2f), heading %.1f deg, speed %.2f m/s, %s\n", car.position.x,
+                    car.position.y, car.position.z, glm::degrees(std::atan2(car.forward.x, car.forward.z)),
+                    car.driven ? car.motion.speed : car.speed, car.driven ? "driven by the player" : "on the autopilot");
     }
 
     const SceneCamera planes = gltf ? gltf->camera(float(frame.width()) / float(frame.height())) : SceneCamera{};

@@ -59,8 +59,10 @@ struct TitleStats {
             text += buf;
         }
         if (camera == CameraMode::Free) text += std::string(" | ") + flyKeysHelp();
+        if (camera == CameraMode::Chase) text += std::string(" | ") + driveKeysHelp();
         return text;
     }
+
 };
 
 bool trySetTechnique(FrameRenderer& frame, TechniqueKind kind) {
@@ -228,7 +230,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
     std::map<int, bool> wasDown;
     const bool uploads = static_cast<engine::render::Backend*>(&presenter) != &renderer;
     CameraMode camera = settings.camera;
-    FreeCamera flyer;  // starts at the overview a headless --camera free run renders
+    PlayerInput input;  // the free camera starts at the overview a headless --camera free run renders
     MouseLook mouse(window.window());
     RenderSize size(frame);
     MinimisedWait minimised;
@@ -238,6 +240,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
     Clock::time_point last = Clock::now(), titleShown = last;
     WindowLoopResult result;
     if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
+    if (camera == CameraMode::Chase) std::printf("racer: drive: %s\n", driveKeysHelp());
 
     while (settings.frames == 0 || result.frames < settings.frames) {
         window.pollEvents();
@@ -264,6 +267,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
         for (; nextKey < script.keys.size() && script.keys[nextKey].frame <= result.frames; ++nextKey)
             actions.push_back(actionForKey(script.keys[nextKey].key, script.keys[nextKey].shift));
         bool quit = false;
+        input.autopilot = false;
         for (const KeyAction& a : actions) {
             switch (a.action) {
                 case WindowAction::Quit: quit = true; break;
@@ -276,6 +280,11 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
                     camera = nextCamera(camera);
                     std::printf("racer: camera %s\n", cameraName(camera));
                     if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
+                    if (camera == CameraMode::Chase) std::printf("racer: drive: %s\n", driveKeysHelp());
+                    break;
+                case WindowAction::Autopilot:
+                    input.autopilot = true;
+                    std::printf("racer: autopilot\n");
                     break;
                 case WindowAction::TogglePause:
                     paused = !paused;
@@ -295,20 +304,23 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
         const double step = settings.fixedDt > 0.0 ? settings.fixedDt : std::min(wall, kMaxWallStep);
         const double dt = paused ? 0.0 : step;
         // The free camera flies by the frame's step, paused or not (a paused frame can be
-        // looked around); its keys do nothing with the other cameras.
+        // looked around); the chase camera's keys drive the car. Each camera's keys do
+        // nothing with the others.
+        const auto held = [&](int key) {
+            return glfwGetKey(window.window(), key) == GLFW_PRESS || scriptHolds(script.keys, result.frames, key);
+        };
         const glm::vec2 look = mouse.motion(camera == CameraMode::Free);
         if (camera == CameraMode::Free) {
-            FlyControls controls = flyControls([&](int key) {
-                return glfwGetKey(window.window(), key) == GLFW_PRESS || scriptHolds(script.keys, result.frames, key);
-            });
+            FlyControls controls = flyControls(held);
             controls.look = look;
-            flyer = flyStep(flyer, controls, float(step));
+            input.free = flyStep(input.free, controls, float(step));
         }
+        input.drive = camera == CameraMode::Chase ? driveControls(held) : HeldDriveKeys{};
         // As the headless loop: frame i steps the world by dt and sees the camera at i * dt,
         // so a window with --fixed-dt shows the frames a headless run captures.
         const FrameSize rendering = size.current();
         const SceneFrame scene =
-            source(float(time), float(dt), camera, flyer, float(rendering.width) / float(rendering.height));
+            source(float(time), float(dt), camera, input, float(rendering.width) / float(rendering.height));
         time += dt;
         try {
             frame.render(scene.lists, scene.camera);
@@ -336,7 +348,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
             titleShown = Clock::now();
         }
     }
-    if (camera == CameraMode::Free) printPose(flyer);
+    if (camera == CameraMode::Free) printPose(input.free);
     result.meanFrameMs = totalMs / std::max(1, result.frames);
     return result;
 }

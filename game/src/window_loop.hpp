@@ -7,7 +7,7 @@
 // aspect; a minimised window renders nothing and waits for events. Keys: window_keys.hpp;
 // with the free camera they (and the mouse, right button held) fly it from the headless
 // overview pose, and its final pose is printed ("racer: free camera at (x, y, z), ...").
-// The title bar shows technique, camera (and the fly keys), render size, fps and per-pass
+// The title bar shows technique, camera (and its keys), render size, fps and per-pass
 // milliseconds, four times a second.
 #include <string>
 
