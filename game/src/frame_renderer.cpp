@@ -23,7 +23,7 @@ constexpr CompareFunc kDepthFunc = CompareFunc::Greater;  // reverse-Z
 
 FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary& library, const RendererOptions& options)
     : backend_(backend), library_(library), options_(options), foliage_(backend), instances_(backend),
-      transients_(backend) {
+      transients_(backend), overlay_(backend) {
     options_.techniqueOptions.ssam.depthFunc = kDepthFunc;
     setTechnique(options.technique);
     opaqueCulled_ = opaquePipeline(false);
@@ -131,6 +131,7 @@ void FrameRenderer::captureIntermediates() {
 void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraView& camera) {
     layers_.clear();
     instances_.beginFrame();
+    overlay_.beginFrame();
     auto graph = std::make_unique<FrameGraph>();
     const FrameTargets::InGraph in = opaque_->importInto(*graph);
 
@@ -173,7 +174,18 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
                                                camera.viewProj, camera.eye, options_.sun, 0.0f, kDepthFunc};
     frame = living_ ? living_->addPasses(*graph, features, frame) : addBlendPass(*graph, frame, features, camera);
 
-    // 4. The frame leaves the graph: presented by the caller, captured here.
+    // 4. The HUD over the finished frame (modules/hud), at its top-left corner.
+    hudBox_ = {};
+    if (!hudLines_.empty()) {
+        const int scale = hud::textScaleFor(options_.height);
+        hud::OverlayContent hud;
+        hud.text.push_back(hud::layoutText(hudLines_, glm::ivec2(4 * scale), scale));
+        hudBox_ = hud.text.back().box;
+        frame.color = overlay_.addPass(*graph, "hud", frame.color, opaque_->color(), options_.width, options_.height,
+                                       std::move(hud));
+    }
+
+    // 5. The frame leaves the graph: presented by the caller, captured here.
     addSideEffectPass(*graph, "present", frame, [this] { capture(opaque_->color(), "result"); });
 
     graph->execute(transients_.allocator());

@@ -21,6 +21,7 @@
 #include "engine/scene/draw_lists.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "foliage_upload.hpp"
+#include "hud/overlay.hpp"
 #include "transparency/create_technique.hpp"
 
 namespace racer {
@@ -67,6 +68,13 @@ public:
 
     void render(const engine::scene::DrawLists& lists, const CameraView& camera);
 
+    // The HUD (modules/hud): these lines in a panel at the frame's top-left corner, drawn by
+    // a pass "hud" after everything else; no lines (the default), no HUD. Kept until changed.
+    void setHud(std::vector<std::string> lines) { hudLines_ = std::move(lines); }
+    bool hudShown() const { return !hudLines_.empty(); }
+    // Where the last frame's HUD panel was (empty without one).
+    hud::PixelRect hudBox() const { return hudBox_; }
+
     // The living scene's features (modules/water, ...) draw after the technique, replacing
     // the built-in BLEND step; null (the default) keeps that step.
     void setLivingScene(LivingScene* living) { living_ = living; }
@@ -103,6 +111,9 @@ private:
     std::unique_ptr<engine::render::FrameGraph> lastGraph_;  // for dumpGraph()
     std::vector<engine::capture::CapturedLayer> layers_;
     LivingScene* living_ = nullptr;
+    hud::Overlay overlay_;
+    std::vector<std::string> hudLines_;
+    hud::PixelRect hudBox_;
 };
 
 }  // namespace racer

@@ -22,6 +22,7 @@
 #include "frame_renderer.hpp"
 #include "frame_source.hpp"
 #include "gltf_scene.hpp"
+#include "hud_text.hpp"
 #include "living_scene.hpp"
 #include "racer_options.hpp"
 #include "racer_outputs.hpp"
@@ -48,15 +49,20 @@ std::string passTimings(const std::vector<engine::render::PassTiming>& timings) 
 // Offscreen: `frames` frames at the fixed step, a progress line with per-pass times every 10.
 void runHeadless(const Options& o, engine::render::Backend& backend, FrameRenderer& frame, const FrameSource& source,
                  CameraMode camera, float aspect) {
-    double totalMs = 0.0;
+    double totalMs = 0.0, lastMs = -1.0;
     std::vector<engine::render::PassTiming> lastTimings;
     SceneFrame last;
     for (int i = 0; i < o.frames; ++i) {
+        // The HUD shows the frame before (a frame cannot time itself before it is drawn).
+        if (o.hud)
+            frame.setHud(hudLines({transparency::techniqueName(frame.technique()), backend.name(), frame.width(),
+                                   frame.height(), "previous frame", lastMs, lastTimings, ""}));
         const auto start = std::chrono::steady_clock::now();
         last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
         frame.render(last.lists, last.camera);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         totalMs += ms;
+        lastMs = ms;
         lastTimings = backend.takeTimings();
         const std::string passes = passTimings(lastTimings);
         if (i == 0 || (i + 1) % 10 == 0 || i + 1 == o.frames)
@@ -172,7 +178,8 @@ int run(const CLI::App& app, const Options& o) {
         ws.fixedDt = o.fixedDtGiven ? o.fixedDt : 0.0;
         ws.camera = cameraMode;
         ws.script = o.script;
-        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, R autopilot, Esc quit\n");
+        ws.hud = o.hud;
+        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, R autopilot, Esc quit\n");
         const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());

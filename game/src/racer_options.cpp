@@ -56,6 +56,9 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--dump-graph", o.dumpGraphPath,
                    "write the last frame's compiled frame graph to this Graphviz .dot file (passes culled or "
                    "skipped as empty are marked so; checked before the first frame)");
+    app.add_flag("--hud", o.hud,
+                 "draw the HUD into the frame (and so into --capture): technique, backend, size, frame and pass "
+                 "times; in a window H toggles it");
     // Hidden (empty group): drives the window from tests, e.g. "2:3,4:C,5:size=400x300,9:Esc".
     app.add_option("--script", o.script, "keys pressed and window changes at given frames")->group("");
     app.add_option("--scene", o.scenePath, "render this glTF 2.0 file (.gltf or .glb) instead of the racing scene");

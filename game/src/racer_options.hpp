@@ -33,6 +33,7 @@ struct Options {
     int msaa = 1;
     std::string layerPictures;
     std::string dumpGraphPath;  // --dump-graph: Graphviz dot of the last frame's graph
+    bool hud = false;       // --hud: the HUD in the frame (the window's H toggles it)
     std::string script;     // --script (hidden): keys and window changes at given frames, for tests
     std::string scenePath;  // --scene: a glTF file instead of the racing scene
     int sceneIndex = -1;

@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/core/error.hpp"
+#include "hud_text.hpp"
 #include "racer_options.hpp"
 #include "render_size.hpp"
 #include "window_keys.hpp"
@@ -62,7 +63,14 @@ struct TitleStats {
         if (camera == CameraMode::Chase) text += std::string(" | ") + driveKeysHelp();
         return text;
     }
-
+    // The same means for the HUD (technique, backend and size filled in when it is drawn).
+    HudFacts hudFacts() const {
+        HudFacts f;
+        f.timeSpan = "mean of " + std::to_string(frames) + " frames";
+        f.frameMs = frames ? frameMs / frames : -1.0;
+        for (const auto& [name, ms] : passes) f.passes.push_back({name, ms / std::max(1, frames), false});
+        return f;
+    }
 };
 
 bool trySetTechnique(FrameRenderer& frame, TechniqueKind kind) {
@@ -234,7 +242,8 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
     MouseLook mouse(window.window());
     RenderSize size(frame);
     MinimisedWait minimised;
-    bool paused = false;
+    bool paused = false, hudShown = settings.hud;
+    HudFacts hud;  // the last title update's means
     double time = 0.0, totalMs = 0.0;
     TitleStats stats;
     Clock::time_point last = Clock::now(), titleShown = last;
@@ -282,6 +291,10 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
                     if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
                     if (camera == CameraMode::Chase) std::printf("racer: drive: %s\n", driveKeysHelp());
                     break;
+                case WindowAction::ToggleHud:
+                    hudShown = !hudShown;
+                    std::printf("racer: HUD %s\n", hudShown ? "on" : "off");
+                    break;
                 case WindowAction::Autopilot:
                     input.autopilot = true;
                     std::printf("racer: autopilot\n");
@@ -322,6 +335,16 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
         const SceneFrame scene =
             source(float(time), float(dt), camera, input, float(rendering.width) / float(rendering.height));
         time += dt;
+        if (hudShown) {
+            hud.technique = transparency::techniqueName(frame.technique());
+            hud.backend = renderer.name();
+            hud.width = rendering.width;
+            hud.height = rendering.height;
+            hud.extra = std::string("camera ") + cameraName(camera) + (paused ? " (paused)" : "");
+            frame.setHud(hudLines(hud));
+        } else {
+            frame.setHud({});
+        }
         try {
             frame.render(scene.lists, scene.camera);
         } catch (const engine::Error& e) {
@@ -344,6 +367,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
         stats.add(ms, renderer.takeTimings());
         if (std::chrono::duration<double>(Clock::now() - titleShown).count() >= kTitleInterval) {
             glfwSetWindowTitle(window.window(), stats.title(frame.technique(), camera, paused, size.current()).c_str());
+            hud = stats.hudFacts();
             stats = {};
             titleShown = Clock::now();
         }

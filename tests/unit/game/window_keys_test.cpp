@@ -32,6 +32,7 @@ TEST(WindowKeys, LettersAndEscape) {
     EXPECT_EQ(actionForKey(GLFW_KEY_C, false).action, WindowAction::NextCamera);
     EXPECT_EQ(actionForKey(GLFW_KEY_P, false).action, WindowAction::TogglePause);
     EXPECT_EQ(actionForKey(GLFW_KEY_R, false).action, WindowAction::Autopilot);
+    EXPECT_EQ(actionForKey(GLFW_KEY_H, false).action, WindowAction::ToggleHud);
     EXPECT_EQ(actionForKey(GLFW_KEY_ESCAPE, false).action, WindowAction::Quit);
     EXPECT_EQ(actionForKey(GLFW_KEY_X, false).action, WindowAction::None);
 }
@@ -62,6 +63,7 @@ TEST(WindowKeys, DriveKeysAccelerateBrakeAndSteer) {
         EXPECT_EQ(actionForKey(key, false).action, WindowAction::None) << key;  // driving never switches anything
     }
     EXPECT_EQ(parseWindowScript("3:r").keys[0].key, GLFW_KEY_R);
+    EXPECT_EQ(parseWindowScript("3:H").keys[0].key, GLFW_KEY_H);
 }
 
 TEST(WindowKeys, ScriptParsesAndSortsByFrame) {
