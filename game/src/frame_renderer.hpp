@@ -9,6 +9,7 @@
 // steady-state frame creates no buffer or texture.
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "camera_rig.hpp"
@@ -26,6 +27,7 @@
 
 namespace racer {
 
+class CompareView;
 class LivingScene;
 
 struct RendererOptions {
@@ -68,6 +70,16 @@ public:
 
     void render(const engine::scene::DrawLists& lists, const CameraView& camera);
 
+    // Side by side (compare_view.hpp): the current technique on the left, `right` on the
+    // right; nullopt ends it. Throws engine::Error, keeping the current state, when `right`
+    // cannot run here.
+    void setCompare(std::optional<transparency::TechniqueKind> right);
+    std::optional<transparency::TechniqueKind> comparedTechnique() const;
+    // The last frame's compare overlay outside the plain halves (labels, insets, the crop's
+    // outline) and the crop the insets show; empty when not comparing.
+    std::vector<hud::PixelRect> compareMarks() const;
+    hud::PixelRect compareCrop() const;
+
     // The HUD (modules/hud): these lines in a panel at the frame's top-left corner, drawn by
     // a pass "hud" after everything else; no lines (the default), no HUD. Kept until changed.
     void setHud(std::vector<std::string> lines) { hudLines_ = std::move(lines); }
@@ -77,7 +89,7 @@ public:
 
     // The living scene's features (modules/water, ...) draw after the technique, replacing
     // the built-in BLEND step; null (the default) keeps that step.
-    void setLivingScene(LivingScene* living) { living_ = living; }
+    void setLivingScene(LivingScene* living);
 
     // Graphviz dot of the last frame's compiled graph (racer --dump-graph): culled passes
     // and passes skipped as empty are marked so. Throws engine::Error before any frame.
@@ -112,6 +124,7 @@ private:
     std::vector<engine::capture::CapturedLayer> layers_;
     LivingScene* living_ = nullptr;
     hud::Overlay overlay_;
+    std::unique_ptr<CompareView> compare_;
     std::vector<std::string> hudLines_;
     hud::PixelRect hudBox_;
 };

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "camera_rig.hpp"
@@ -88,6 +89,12 @@ int run(const CLI::App& app, const Options& o) {
     renderer.width = size.width;
     renderer.height = size.height;
     renderer.technique = parseTechniqueName(o.technique);
+    std::optional<transparency::TechniqueKind> comparedWith;
+    if (!o.compare.empty()) {
+        const ComparedPair pair = parseCompare(o.compare);
+        renderer.technique = pair.left;
+        comparedWith = pair.right;
+    }
     renderer.msaa = o.msaa;
     renderer.captureLayers = o.captureLayers;
     const CameraMode cameraMode = parseCamera(o.camera);
@@ -137,6 +144,7 @@ int run(const CLI::App& app, const Options& o) {
     engine::ecs::Registry& registry = gltf ? gltf->registry() : racing->registry();
     engine::scene::MeshLibrary& library = gltf ? gltf->library() : racing->library();
     FrameRenderer frame(backend, library, renderer);
+    frame.setCompare(comparedWith);
     // The living scene (wind, water, ...; living_scene.hpp) on the racing scene.
     std::unique_ptr<LivingScene> living;
     if (racing) {
@@ -169,6 +177,9 @@ int run(const CLI::App& app, const Options& o) {
         for (const std::string& n : living->missing()) names += " (" + n + ": not built)";
         std::printf("racer: living scene:%s\n", names.empty() ? " off" : names.c_str());
     }
+    if (comparedWith)
+        std::printf("racer: compare %s (left) | %s (right)\n", transparency::techniqueName(frame.technique()),
+                    transparency::techniqueName(*comparedWith));
     if (gltf)
         std::printf("racer: scene %s (scene %d), camera %s\n", o.scenePath.c_str(), gltf->model().scene,
                     gltf->camera(aspect).description.c_str());
@@ -179,7 +190,8 @@ int run(const CLI::App& app, const Options& o) {
         ws.camera = cameraMode;
         ws.script = o.script;
         ws.hud = o.hud;
-        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, R autopilot, Esc quit\n");
+        if (comparedWith) ws.compareWith = *comparedWith;
+        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, V compare, B compared technique, R autopilot, Esc quit\n");
         const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());
@@ -194,6 +206,12 @@ int run(const CLI::App& app, const Options& o) {
         std::printf("racer: car at (%.2f, %.2f, %.2f), heading %.1f deg, speed %.2f m/s, %s\n", car.position.x,
                     car.position.y, car.position.z, glm::degrees(std::atan2(car.forward.x, car.forward.z)),
                     car.driven ? car.motion.speed : car.speed, car.driven ? "driven by the player" : "on the autopilot");
+    }
+
+    if (frame.comparedTechnique()) {
+        const hud::PixelRect crop = frame.compareCrop();
+        std::printf("racer: compare insets: the %dx%d crop at (%d, %d), where the two differ most\n", crop.width,
+                    crop.height, crop.x, crop.y);
     }
 
     const SceneCamera planes = gltf ? gltf->camera(float(frame.width()) / float(frame.height())) : SceneCamera{};

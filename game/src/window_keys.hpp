@@ -3,7 +3,8 @@
 // The window's keys, as pure functions of GLFW key codes so they are unit-tested without a
 // window: 1-8 pick a technique (transparency::allTechniques() order), T / Shift+T step to
 // the next / previous one, C cycles the camera (chase, pan, free), P pauses the simulation,
-// H shows or hides the HUD, R gives the car back to the autopilot, Esc quits. With the chase camera, held keys drive
+// H shows or hides the HUD, V the side-by-side compare, B steps the compared (right)
+// technique, R gives the car back to the autopilot, Esc quits. With the chase camera, held keys drive
 // the car (driveControls; the first one takes it over from the autopilot): W/Up accelerate,
 // S/Down brake and reverse, A/Left and D/Right steer. With the free camera, held keys fly
 // it (flyControls): W/S forward/back, A/D strafe, Q/E or Ctrl/Space down/up, the arrows
@@ -28,6 +29,8 @@ enum class WindowAction {
     TogglePause,
     Autopilot,  // the autopilot drives the car again
     ToggleHud,
+    ToggleCompare,
+    NextCompared,
 };
 
 struct KeyAction {
@@ -87,7 +90,7 @@ struct WindowScript {
 };
 
 // "FRAME:ENTRY,FIRST-LAST:KEY..." with ENTRY a KEY, size=WxH (each side 1..32767) or
-// minimize=MS (1..60000 ms), and KEY one of 1-8, T, C, P, R, H, Esc, W, A, S, D, Q, E, Space, Ctrl,
+// minimize=MS (1..60000 ms), and KEY one of 1-8, T, C, P, R, H, V, B, Esc, W, A, S, D, Q, E, Space, Ctrl,
 // Left, Right, Up, Down, each optionally "shift+"-prefixed; FIRST-LAST holds the key for those
 // frames (inclusive), e.g. "2:3,4:C,0-9:W,10-14:shift+D,5:size=400x300,8:minimize=200,20:Esc".
 // Throws engine::Error naming the bad entry.

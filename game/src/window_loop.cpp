@@ -85,6 +85,55 @@ bool trySetTechnique(FrameRenderer& frame, TechniqueKind kind) {
     }
 }
 
+void printCompare(const FrameRenderer& frame) {
+    if (const auto right = frame.comparedTechnique())
+        std::printf("racer: compare %s (left) | %s (right)\n", transparency::techniqueName(frame.technique()),
+                    transparency::techniqueName(*right));
+    else
+        std::printf("racer: compare off\n");
+}
+
+// V: compare with `with` (or the next technique that runs here after it), or stop comparing.
+void toggleCompare(FrameRenderer& frame, TechniqueKind with) {
+    if (frame.comparedTechnique()) {
+        frame.setCompare(std::nullopt);
+        printCompare(frame);
+        return;
+    }
+    const auto all = transparency::allTechniques();
+    const int n = int(all.size());
+    const int first = int(std::find(all.begin(), all.end(), with) - all.begin());
+    for (int k = 0; k < n; ++k) {
+        try {
+            frame.setCompare(all[std::size_t((first + k) % n)]);
+            printCompare(frame);
+            return;
+        } catch (const engine::Error& e) {
+            std::printf("racer: cannot compare with %s: %s\n", transparency::techniqueName(all[std::size_t((first + k) % n)]),
+                        e.what());
+        }
+    }
+}
+
+// B: the next compared technique that runs here (while comparing).
+void stepCompared(FrameRenderer& frame) {
+    const auto current = frame.comparedTechnique();
+    if (!current) return;
+    const auto all = transparency::allTechniques();
+    const int n = int(all.size());
+    const int at = int(std::find(all.begin(), all.end(), *current) - all.begin());
+    for (int k = 1; k < n; ++k) {
+        const TechniqueKind next = all[std::size_t((at + k) % n)];
+        try {
+            frame.setCompare(next);
+            printCompare(frame);
+            return;
+        } catch (const engine::Error& e) {
+            std::printf("racer: cannot compare with %s: %s\n", transparency::techniqueName(next), e.what());
+        }
+    }
+}
+
 // T / Shift+T: the next (previous) technique in allTechniques() order that can be created.
 void stepTechnique(FrameRenderer& frame, int step) {
     const auto all = transparency::allTechniques();
@@ -295,6 +344,8 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
                     hudShown = !hudShown;
                     std::printf("racer: HUD %s\n", hudShown ? "on" : "off");
                     break;
+                case WindowAction::ToggleCompare: toggleCompare(frame, settings.compareWith); break;
+                case WindowAction::NextCompared: stepCompared(frame); break;
                 case WindowAction::Autopilot:
                     input.autopilot = true;
                     std::printf("racer: autopilot\n");

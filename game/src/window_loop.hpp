@@ -24,6 +24,9 @@ struct WindowLoopSettings {
     CameraMode camera = CameraMode::Chase;
     std::string script;      // parseWindowScript's format (racer --script)
     bool hud = false;        // the HUD shown from the first frame (H toggles it)
+    // V turns the compare on with this technique on the right (B steps it); the frame may
+    // start comparing (FrameRenderer::setCompare).
+    transparency::TechniqueKind compareWith = transparency::TechniqueKind::AlphaTest;
 };
 
 struct WindowLoopResult {

@@ -29,6 +29,12 @@ void addQuad(OverlayMesh& mesh, const PixelRect& r, const glm::vec4& color) {
 
 }  // namespace
 
+OverlayMesh fillMesh(const std::vector<Fill>& fills) {
+    OverlayMesh mesh;
+    for (const Fill& f : fills) addQuad(mesh, f.rect, f.color);
+    return mesh;
+}
+
 OverlayMesh textMesh(const OverlayContent& content) {
     OverlayMesh mesh;
     for (const TextPanel& panel : content.text) {
@@ -88,6 +94,22 @@ FrameGraphTexture Overlay::addPass(FrameGraph& graph, const std::string& name, F
         .out;
 }
 
+void Overlay::drawMesh(const OverlayMesh& mesh, int width, int height, const char* name) {
+    if (mesh.indices.empty()) return;
+    std::vector<Vertex> vertices(mesh.positions.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        vertices[i].position = mesh.positions[i];
+        vertices[i].color = mesh.colors[i];
+    }
+    DrawDesc d;
+    d.pipeline = fill_;
+    d.params = OverlayFillParams{pixelToClip(width, height)};
+    d.vertices = buffers_.upload(std::string(name) + " vertices", BufferKind::Vertex, std::as_bytes(std::span(vertices)));
+    d.indices = buffers_.upload(std::string(name) + " indices", BufferKind::Index, std::as_bytes(std::span(mesh.indices)));
+    d.count = std::uint32_t(mesh.indices.size());
+    backend_.draw(d);
+}
+
 void Overlay::draw(TextureHandle target, int width, int height, const OverlayContent& content, const std::string& name) {
     PassDesc pass;
     pass.name = name;
@@ -105,21 +127,8 @@ void Overlay::draw(TextureHandle target, int width, int height, const OverlayCon
         d.scissor = Rect{x0, y0, x1 - x0, y1 - y0};
         backend_.draw(d);
     }
-    const OverlayMesh mesh = textMesh(content);
-    if (!mesh.indices.empty()) {
-        std::vector<Vertex> vertices(mesh.positions.size());
-        for (std::size_t i = 0; i < vertices.size(); ++i) {
-            vertices[i].position = mesh.positions[i];
-            vertices[i].color = mesh.colors[i];
-        }
-        DrawDesc d;
-        d.pipeline = fill_;
-        d.params = OverlayFillParams{pixelToClip(width, height)};
-        d.vertices = buffers_.upload("overlay vertices", BufferKind::Vertex, std::as_bytes(std::span(vertices)));
-        d.indices = buffers_.upload("overlay indices", BufferKind::Index, std::as_bytes(std::span(mesh.indices)));
-        d.count = std::uint32_t(mesh.indices.size());
-        backend_.draw(d);
-    }
+    drawMesh(fillMesh(content.fills), width, height, "overlay fills");
+    drawMesh(textMesh(content), width, height, "overlay text");
     scope.end();
 }
 

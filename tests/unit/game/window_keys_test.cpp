@@ -33,6 +33,8 @@ TEST(WindowKeys, LettersAndEscape) {
     EXPECT_EQ(actionForKey(GLFW_KEY_P, false).action, WindowAction::TogglePause);
     EXPECT_EQ(actionForKey(GLFW_KEY_R, false).action, WindowAction::Autopilot);
     EXPECT_EQ(actionForKey(GLFW_KEY_H, false).action, WindowAction::ToggleHud);
+    EXPECT_EQ(actionForKey(GLFW_KEY_V, false).action, WindowAction::ToggleCompare);
+    EXPECT_EQ(actionForKey(GLFW_KEY_B, false).action, WindowAction::NextCompared);
     EXPECT_EQ(actionForKey(GLFW_KEY_ESCAPE, false).action, WindowAction::Quit);
     EXPECT_EQ(actionForKey(GLFW_KEY_X, false).action, WindowAction::None);
 }
@@ -64,6 +66,7 @@ TEST(WindowKeys, DriveKeysAccelerateBrakeAndSteer) {
     }
     EXPECT_EQ(parseWindowScript("3:r").keys[0].key, GLFW_KEY_R);
     EXPECT_EQ(parseWindowScript("3:H").keys[0].key, GLFW_KEY_H);
+    EXPECT_EQ(parseWindowScript("3:v,4:B").keys[1].key, GLFW_KEY_B);
 }
 
 TEST(WindowKeys, ScriptParsesAndSortsByFrame) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Overlays on a finished frame, drawn by the backend as a frame-graph pass: image panels
-// (a region of another texture, copied or zoomed: the compare's split and insets), then
-// text panels (a translucent box, the glyphs with a one-pixel shadow: the HUD and labels).
+// Overlays on a finished frame, drawn by the backend as a frame-graph pass: image panels (a
+// region of another texture, copied or zoomed: the compare's split and insets), then filled
+// rectangles (frames, outlines), then text panels (a translucent box, the glyphs with a one-pixel shadow: the HUD and labels).
 // Nothing outside the panels' rectangles is touched, so a frame with an overlay equals the
 // frame without it everywhere else, bit for bit.
 #include <string>
@@ -27,14 +27,31 @@ struct ImagePanel {
     PixelRect target() const { return {at.x, at.y, region.width * zoom, region.height * zoom}; }
 };
 
+// A rectangle of one colour (straight alpha over the frame).
+struct Fill {
+    PixelRect rect;
+    glm::vec4 color{1.0f};
+};
+
 struct OverlayContent {
+    std::vector<Fill> fills;
     std::vector<ImagePanel> images;
     std::vector<TextPanel> text;
     glm::vec4 boxColor{0.01f, 0.012f, 0.02f, 0.8f};  // straight alpha over the frame
     glm::vec4 textColor{1.0f, 0.97f, 0.85f, 1.0f};
     glm::vec4 shadowColor{0.0f, 0.0f, 0.0f, 1.0f};
-    bool empty() const { return images.empty() && text.empty(); }
+    bool empty() const { return fills.empty() && images.empty() && text.empty(); }
 };
+
+// The quads of `content`'s fills or text (boxes, shadows, glyphs, in drawing order) as
+// triangles in pixel coordinates: what Overlay draws with OverlayFill.
+struct OverlayMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec4> colors;
+    std::vector<std::uint32_t> indices;
+};
+OverlayMesh fillMesh(const std::vector<Fill>& fills);
+OverlayMesh textMesh(const OverlayContent& content);
 
 class Overlay {
 public:
@@ -60,20 +77,13 @@ public:
               const std::string& name = "overlay");
 
 private:
+    void drawMesh(const OverlayMesh& mesh, int width, int height, const char* name);
+
     engine::render::Backend& backend_;
     // Pipelines after their programs, so they are destroyed first.
     engine::render::Owned<engine::render::ProgramHandle> fillProgram_, panelProgram_;
     engine::render::Owned<engine::render::PipelineHandle> fill_, panel_;
     engine::render::FrameBufferPool buffers_;
 };
-
-// The quads of `content`'s text (boxes, shadows, glyphs, in drawing order) as triangles in
-// pixel coordinates: what Overlay draws, for tests.
-struct OverlayMesh {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec4> colors;
-    std::vector<std::uint32_t> indices;
-};
-OverlayMesh textMesh(const OverlayContent& content);
 
 }  // namespace hud
