@@ -37,4 +37,8 @@ std::vector<std::string> hudLines(const HudFacts& f) {
     return lines;
 }
 
+std::string compareHudLine(const std::string& left, const std::string& right) {
+    return "side by side: " + left + " | " + right + " (passes: " + right + "'s frame, then " + left + "'s)";
+}
+
 }  // namespace racer

@@ -25,4 +25,8 @@ struct HudFacts {
 
 std::vector<std::string> hudLines(const HudFacts& facts);
 
+// The compare's line for HudFacts::extra: which technique is on which side, and that the
+// pass list holds both frames' passes (B's, rendered first, then A's).
+std::string compareHudLine(const std::string& left, const std::string& right);
+
 }  // namespace racer

@@ -55,9 +55,12 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
     SceneFrame last;
     for (int i = 0; i < o.frames; ++i) {
         // The HUD shows the frame before (a frame cannot time itself before it is drawn).
-        if (o.hud)
-            frame.setHud(hudLines({transparency::techniqueName(frame.technique()), backend.name(), frame.width(),
-                                   frame.height(), "previous frame", lastMs, lastTimings, ""}));
+        if (o.hud) {
+            const std::string technique = transparency::techniqueName(frame.technique());
+            const auto right = frame.comparedTechnique();
+            frame.setHud(hudLines({technique, backend.name(), frame.width(), frame.height(), "previous frame", lastMs,
+                                   lastTimings, right ? compareHudLine(technique, transparency::techniqueName(*right)) : ""}));
+        }
         const auto start = std::chrono::steady_clock::now();
         last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
         frame.render(last.lists, last.camera);

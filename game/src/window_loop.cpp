@@ -392,6 +392,8 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
             hud.width = rendering.width;
             hud.height = rendering.height;
             hud.extra = std::string("camera ") + cameraName(camera) + (paused ? " (paused)" : "");
+            if (const auto right = frame.comparedTechnique())
+                hud.extra += "; " + compareHudLine(hud.technique, transparency::techniqueName(*right));
             frame.setHud(hudLines(hud));
         } else {
             frame.setHud({});

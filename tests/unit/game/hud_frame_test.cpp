@@ -25,6 +25,8 @@ TEST(HudText, SaysTechniqueBackendSizeAndWhatTheTimesAre) {
     f.extra = "camera chase";
     EXPECT_EQ(racer::hudLines(f)[1], "camera chase");
     EXPECT_EQ(racer::hudLines(f)[3], "passes, ms: GPU time of each pass (GL_TIME_ELAPSED)");
+    EXPECT_EQ(racer::compareHudLine("ssam", "alpha-test"),
+              "side by side: ssam | alpha-test (passes: alpha-test's frame, then ssam's)");
     f.frameMs = -1.0;
     EXPECT_EQ(racer::hudLines(f).back(), "frame time: none yet (first frame)");
 }
