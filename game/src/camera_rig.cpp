@@ -45,7 +45,7 @@ CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float asp
     switch (mode) {
         case CameraMode::Chase: {
             const Car& car = scene.registry().get<Car>(scene.car());
-            const glm::vec3 p = scene.track().position(car.distance), f = scene.track().forward(car.distance);
+            const glm::vec3 p = car.position, f = car.forward;  // the track's, or the player's car's
             eye = p - f * 11.0f + up * 3.8f;
             target = p + f * 10.0f + up * 1.2f;
             break;
