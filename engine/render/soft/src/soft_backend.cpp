@@ -24,6 +24,7 @@
 #include "engine/render/pixel_codec.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/soft_texture.hpp"
+#include "instance_culling.hpp"
 #include "standard_kernels.hpp"
 #include "tile_rasterizer.hpp"
 #include "engine/render/soft/kernel/triangle_setup.hpp"
@@ -37,6 +38,8 @@ struct SoftBuffer {
     BufferDesc desc;
     std::vector<std::byte> bytes;
     std::uint32_t maxIndex = 0;  // index buffers: the largest index (validation's fast accept)
+    // Vertex buffers: the box of the positions, found at the first draw after a write.
+    std::optional<PositionBounds> bounds;
 };
 
 struct SoftPipeline {
@@ -121,7 +124,7 @@ public:
     BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
         const std::string what = "buffer " + quotedName(desc.name);
         validateBuffer(desc, data, what);
-        SoftBuffer b{desc, std::vector<std::byte>(desc.size)};
+        SoftBuffer b{desc, std::vector<std::byte>(desc.size), 0, std::nullopt};
         if (!data.empty()) std::memcpy(b.bytes.data(), data.data(), data.size());
         if (desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
         return buffers_.add(std::move(b));
@@ -144,6 +147,7 @@ public:
         }
         std::memcpy(b.bytes.data() + offset, data.data(), data.size());
         if (b.desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
+        b.bounds.reset();
     }
 
     ProgramHandle createProgram(const ProgramDesc& desc) override {
@@ -427,8 +431,10 @@ private:
             binTriangle(chunk.triangles.back(), 0, grid, chunk.bins);
             return;
         }
-        const SoftBuffer& vb = buffers_.get(d.vertices);
+        SoftBuffer& vb = buffers_.get(d.vertices);
         const auto* vertices = reinterpret_cast<const Vertex*>(vb.bytes.data());
+        if (!vb.bounds) vb.bounds = positionBounds({vertices, vb.bytes.size() / sizeof(Vertex)});
+        const PositionBounds& bounds = *vb.bounds;
         const std::uint32_t* indices =
             d.indices ? reinterpret_cast<const std::uint32_t*>(buffers_.get(d.indices).bytes.data()) + d.first : nullptr;
         const Instance identity{};
@@ -457,6 +463,14 @@ private:
                         mvp = viewProj * inst.model;
                         normalMatrix = glm::mat3(inst.model);
                         cachedInstance = instance;
+                        // An instance wholly beyond a clip plane: each of its triangles (those
+                        // in this chunk) would be rejected, and counted, by setupTriangle.
+                        if (instanceOutsideOnePlane(mvp, bounds, vp)) {
+                            const std::uint64_t instanceEnd = std::min(end, (instance + 1) * trianglesPerInstance);
+                            out.counters.dropped += instanceEnd - t;
+                            t = instanceEnd - 1;
+                            continue;
+                        }
                     }
                     ClipVertex cv[3];
                     for (int k = 0; k < 3; ++k) {

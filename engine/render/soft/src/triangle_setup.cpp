@@ -175,10 +175,29 @@ bool finite(const ClipVertex& v) {
 
 }  // namespace
 
+bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp) {
+    const ClipVertex* v[3] = {&v0, &v1, &v2};
+    double magnitude = 0.0;
+    for (const ClipVertex* p : v)
+        magnitude = std::max(magnitude, double(std::fabs(p->position.x)) + std::fabs(p->position.y) +
+                                            std::fabs(p->position.z) + std::fabs(p->position.w));
+    const double margin = kFrustumRejectMargin * magnitude;
+    const double kx = 1.0 + 2.0 / vp.width, ky = 1.0 + 2.0 / vp.height;
+    // Each test: the signed distance beyond one plane, for all three vertices.
+    auto all = [&](auto beyond) { return beyond(v0.position) && beyond(v1.position) && beyond(v2.position); };
+    return all([&](const glm::vec4& p) { return double(p.x) - kx * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.x) - kx * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return double(p.y) - ky * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.y) - ky * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.z) > margin; }) ||
+           all([&](const glm::vec4& p) { return double(p.z) - p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.w) > margin; });
+}
+
 void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp,
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                    SetupCounters& counters) {
-    if (!finite(v0) || !finite(v1) || !finite(v2)) {
+    if (!finite(v0) || !finite(v1) || !finite(v2) || outsideOnePlane(v0, v1, v2, vp)) {
         ++counters.dropped;
         return;
     }

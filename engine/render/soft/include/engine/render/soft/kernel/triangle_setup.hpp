@@ -54,6 +54,19 @@ struct SetupCounters {
     std::uint64_t dropped = 0;  // degenerate, NaN, fully clipped or culled
 };
 
+// Relative margin of the frustum rejects below: far above the rounding of the double
+// clipping and projection (~1e-15) and of a float vertex transform (~1e-6, for callers that
+// bound transformed boxes), so a reject never disagrees with the exact pipeline.
+inline constexpr double kFrustumRejectMargin = 1e-5;
+
+// Whether all three (finite) vertices lie beyond one clip plane by the margin: beyond the
+// far/near planes or w = 0, or more than a pixel outside the viewport's sides. Such a
+// triangle is one setupTriangle would clip away or drop by its pixel box anyway (every
+// point of its clipped polygon is a convex combination of its vertices, so it stays beyond
+// the plane, and a point a pixel outside the viewport snaps outside it), so rejecting it
+// first changes no pixel; it skips the double-precision clipping and projection.
+bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport);
+
 // Clips, culls and sets up one triangle, appending 0..7 triangles to `out`.
 void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport,
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
