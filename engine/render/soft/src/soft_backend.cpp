@@ -53,6 +53,11 @@ struct RecordedDraw {
     FragmentSink* sink = nullptr;  // set: the draw's fragments are captured, not written
 };
 
+// Triangles per chunk of a draw's geometry work, and how many chunks' storage the backend
+// keeps when a pass needs fewer (up to 128k triangles' worth, about 30 MiB).
+constexpr std::uint64_t kChunk = 2048;
+constexpr std::size_t kKeptChunks = 64;
+
 // One chunk of a draw's triangles after setup, with the tiles each may cover.
 struct GeometryChunk {
     std::vector<SetupTriangle> triangles;
@@ -368,7 +373,7 @@ private:
     }
 
     Viewport viewportFor(const DrawDesc& d) const {
-        Viewport vp{passWidth_, passHeight_, {0, 0, passWidth_, passHeight_}};
+        Viewport vp{passWidth_, passHeight_, {0, 0, passWidth_, passHeight_}, &samplePattern(passSamples_)};
         if (d.scissor) {
             const int x0 = std::max(0, d.scissor->x), y0 = std::max(0, d.scissor->y);
             const int x1 = std::min(passWidth_, d.scissor->x + d.scissor->width);
@@ -446,7 +451,6 @@ private:
         const std::uint64_t total = trianglesPerInstance * d.instanceCount;
         stats_.trianglesIn += total;
         if (total == 0 || vp.scissor.empty()) return;
-        constexpr std::uint64_t kChunk = 2048;
         const std::uint64_t chunks = (total + kChunk - 1) / kChunk;
         GeometryChunk* const chunkOut = nextChunks(chunks);
         arena_.execute([&] {
@@ -549,8 +553,10 @@ private:
         stats_.pixelsShaded += shaded;
         stats_.pixelsTouched += touched;
         passTouched_ += touched;
-        // Storage this pass did not need is given back; what it used is kept for the next.
-        chunks_.resize(chunksUsed_);
+        // Storage this pass did not need is given back beyond a frame's worth (passes of one
+        // frame need different amounts: freeing it each pass reallocated it each frame);
+        // what it used is kept for the next.
+        chunks_.resize(std::max(chunksUsed_, std::min(chunks_.size(), kKeptChunks)));
         if (options_.debugChecks) checkNonFinite();
     }
 

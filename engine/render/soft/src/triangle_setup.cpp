@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tile_rasterizer.hpp"
+
 namespace engine::render::soft {
 namespace {
 
@@ -156,6 +158,11 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
         // runs up. Other edges exclude samples exactly on them.
         const bool topLeft = (dy == 0 && dx > 0) || dy < 0;
         if (!topLeft) t.c[i] -= 1;
+    }
+    if (vp.pattern && isTinyTriangle(t) && !coversAnySample(t, *vp.pattern)) {
+        out.pop_back();
+        ++counters.dropped;
+        return;
     }
 
     const double originX = double(v[0]->x) / kSubpixelScale, originY = double(v[0]->y) / kSubpixelScale;

@@ -45,9 +45,14 @@ struct SetupTriangle {
     std::array<Plane, kAttributeCount> attributeOverW;  // attribute/w
 };
 
+struct SamplePattern;
+
 struct Viewport {
     int width = 0, height = 0;
     Rect scissor;  // already intersected with the target
+    // Set: a triangle whose pixel box is at most 2x2 pixels and that covers no sample of
+    // this pattern is dropped before its depth and attribute planes are set up.
+    const SamplePattern* pattern = nullptr;
 };
 
 struct SetupCounters {
