@@ -519,15 +519,25 @@ private:
                 }
             }
             ClipVertex cv[3];
+            const Vertex* v[3];
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t index = g.indices ? g.indices[tri * 3 + k] : g.first + std::uint32_t(tri * 3 + k);
-                const Vertex& v = g.vertices[index];
-                cv[k].position = mvp * glm::vec4(v.position, 1.0f);
-                const glm::vec3 n = normalMatrix * v.normal;
-                const glm::vec4 c = v.color * inst.tint;
-                cv[k].attributes = {v.uv.x, v.uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
+                v[k] = &g.vertices[index];
+                cv[k].position = mvp * glm::vec4(v[k]->position, 1.0f);
             }
-            setupTriangle(cv[0], cv[1], cv[2], g.viewport, g.raster, g.drawIndex, out.triangles, out.counters);
+            // Positions first: a triangle setupTriangle would reject at once (NaN, or beyond one
+            // plane) needs no normals or colours (most of the terrain, off to the sides).
+            if (rejectedBeforeSetup(cv[0], cv[1], cv[2], g.viewport)) {
+                ++out.counters.dropped;
+                continue;
+            }
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 n = normalMatrix * v[k]->normal;
+                const glm::vec4 c = v[k]->color * inst.tint;
+                cv[k].attributes = {v[k]->uv.x, v[k]->uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
+            }
+            setupUnrejectedTriangle(cv[0], cv[1], cv[2], g.viewport, g.raster, g.drawIndex, out.triangles,
+                                    out.counters);
         }
     }
 

@@ -182,6 +182,10 @@ bool finite(const ClipVertex& v) {
 
 }  // namespace
 
+bool rejectedBeforeSetup(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp) {
+    return !finite(v0) || !finite(v1) || !finite(v2) || outsideOnePlane(v0, v1, v2, vp);
+}
+
 bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp) {
     const ClipVertex* v[3] = {&v0, &v1, &v2};
     double magnitude = 0.0;
@@ -204,10 +208,16 @@ bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVerte
 void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp,
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                    SetupCounters& counters) {
-    if (!finite(v0) || !finite(v1) || !finite(v2) || outsideOnePlane(v0, v1, v2, vp)) {
+    if (rejectedBeforeSetup(v0, v1, v2, vp)) {
         ++counters.dropped;
         return;
     }
+    setupUnrejectedTriangle(v0, v1, v2, vp, raster, drawIndex, out, counters);
+}
+
+void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp,
+                             const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                             SetupCounters& counters) {
     // Guard band in NDC: |x_ndc| <= gx keeps |x_pixels| <= 2^20 for this viewport.
     const double gx = kGuardBandPixels / vp.width - 1.0;
     const double gy = kGuardBandPixels / vp.height - 1.0;

@@ -72,10 +72,20 @@ inline constexpr double kFrustumRejectMargin = 1e-5;
 // first changes no pixel; it skips the double-precision clipping and projection.
 bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport);
 
+// What setupTriangle drops before any other work, from the positions alone (attributes
+// are not read): a non-finite position, or outsideOnePlane. Such a triangle counts one dropped.
+bool rejectedBeforeSetup(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport);
+
 // Clips, culls and sets up one triangle, appending 0..7 triangles to `out`.
 void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport,
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                    SetupCounters& counters);
+
+// setupTriangle for a triangle rejectedBeforeSetup has already kept (the vertex stage tests
+// positions before it computes attributes).
+void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport,
+                             const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                             SetupCounters& counters);
 
 // A triangle whose bounding box is the scissor and whose edges accept everything: for
 // full-screen programs, which need no geometry.
