@@ -92,21 +92,42 @@ inline std::int64_t roundHalfAway(double v) {
     return i;
 }
 
-// Whether emit() would keep the triangle: the area, culling and box tests it starts with,
-// from the snapped positions alone (so dropped triangles skip the rest of the setup).
+// The edge functions of a triangle stored clockwise as displayed (v[0], v[1], v[2]), with the
+// top-left rule folded into c.
+void setEdges(SetupTriangle& t, const ScreenVertex* const v[3]) {
+    for (int i = 0; i < 3; ++i) {
+        const ScreenVertex& p = *v[i];
+        const ScreenVertex& q = *v[(i + 1) % 3];
+        const std::int64_t dx = q.x - p.x, dy = q.y - p.y;
+        t.a[i] = -dy;
+        t.b[i] = dx;
+        t.c[i] = dy * p.x - dx * p.y;
+        // Top-left rule (y down, clockwise as stored): a top edge runs right, a left edge
+        // runs up. Other edges exclude samples exactly on them.
+        const bool topLeft = (dy == 0 && dx > 0) || dy < 0;
+        if (!topLeft) t.c[i] -= 1;
+    }
+}
+
+// Whether emit() would keep the triangle: the area, culling, box and tiny-coverage tests it
+// starts with, from the snapped positions alone (so dropped triangles skip the rest of the setup).
 bool survivesEmit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Viewport& vp,
                   const RasterState& raster) {
     const std::int64_t area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     if (area == 0) return false;
     const bool frontFacing = (raster.frontFace == Winding::CounterClockwise) == (area < 0);
     if ((raster.cull == CullMode::Back && !frontFacing) || (raster.cull == CullMode::Front && frontFacing)) return false;
-    const std::int64_t minX = std::max<std::int64_t>(vp.scissor.x, std::min({a.x, b.x, c.x}) >> kSubpixelBits);
-    const std::int64_t minY = std::max<std::int64_t>(vp.scissor.y, std::min({a.y, b.y, c.y}) >> kSubpixelBits);
-    const std::int64_t maxX =
-        std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, std::max({a.x, b.x, c.x}) >> kSubpixelBits);
-    const std::int64_t maxY =
-        std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, std::max({a.y, b.y, c.y}) >> kSubpixelBits);
-    return minX <= maxX && minY <= maxY;
+    SetupTriangle t;  // only the box and the edges, as emit() makes them
+    t.minX = int(std::max<std::int64_t>(vp.scissor.x, std::min({a.x, b.x, c.x}) >> kSubpixelBits));
+    t.minY = int(std::max<std::int64_t>(vp.scissor.y, std::min({a.y, b.y, c.y}) >> kSubpixelBits));
+    t.maxX = int(std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, std::max({a.x, b.x, c.x}) >> kSubpixelBits));
+    t.maxY = int(std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, std::max({a.y, b.y, c.y}) >> kSubpixelBits));
+    if (t.minX > t.maxX || t.minY > t.maxY) return false;
+    if (!vp.pattern || !isTinyTriangle(t)) return true;
+    const ScreenVertex* v[3] = {&a, &b, &c};
+    if (area < 0) std::swap(v[1], v[2]);
+    setEdges(t, v);
+    return coversAnySample(t, *vp.pattern);
 }
 
 void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
@@ -147,18 +168,7 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
     t.drawIndex = drawIndex;
     t.frontFacing = frontFacing;
     t.minX = minX, t.minY = minY, t.maxX = maxX, t.maxY = maxY;
-    for (int i = 0; i < 3; ++i) {
-        const ScreenVertex& p = *v[i];
-        const ScreenVertex& q = *v[(i + 1) % 3];
-        const std::int64_t dx = q.x - p.x, dy = q.y - p.y;
-        t.a[i] = -dy;
-        t.b[i] = dx;
-        t.c[i] = dy * p.x - dx * p.y;
-        // Top-left rule (y down, clockwise as stored): a top edge runs right, a left edge
-        // runs up. Other edges exclude samples exactly on them.
-        const bool topLeft = (dy == 0 && dx > 0) || dy < 0;
-        if (!topLeft) t.c[i] -= 1;
-    }
+    setEdges(t, v);
     if (vp.pattern && isTinyTriangle(t) && !coversAnySample(t, *vp.pattern)) {
         out.pop_back();
         ++counters.dropped;
