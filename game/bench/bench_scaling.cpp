@@ -181,7 +181,7 @@ void writeScalingCsv(std::ostream& out, const std::vector<ScalingRow>& rows) {
 void writeScalingSvg(std::ostream& out, const std::vector<ScalingRow>& rows) {
     // Two panels side by side; each plots time (ms) against the axis's measure on linear scales,
     // so a straight line through the points is linear cost.
-    constexpr double kPanelW = 460, kPanelH = 320, kLeft = 60, kTop = 40, kPlotW = 370, kPlotH = 230;
+    constexpr double kPanelW = 460, kPanelH = 320, kLeft = 70, kTop = 40, kPlotW = 370, kPlotH = 230;
     const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"};
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * kPanelW << "\" height=\"" << kPanelH + 40
         << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -214,7 +214,7 @@ void writeScalingSvg(std::ostream& out, const std::vector<ScalingRow>& rows) {
             const double xv = xMax * t / 4, yv = yMax * t / 4;
             out << "<text x=\"" << sx(xv) << "\" y=\"" << y0 + 16 << "\" text-anchor=\"middle\">" << num(xv, "%.3g")
                 << "</text>\n<text x=\"" << x0 - 6 << "\" y=\"" << sy(yv) + 4 << "\" text-anchor=\"end\">"
-                << num(yv, "%.4g") << "</text>\n";
+                << num(yv, yv >= 1000.0 ? "%.0f" : "%.4g") << "</text>\n";
         }
         out << "<text x=\"" << x0 + kPlotW / 2 << "\" y=\"" << y0 + 34 << "\" text-anchor=\"middle\">"
             << (axis == "pixels" ? "megapixels" : "full-view leaf layers") << "</text>\n<text x=\"" << ox + 14
