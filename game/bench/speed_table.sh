@@ -68,19 +68,22 @@ for round in $(seq "$ROUNDS"); do
   echo "speed_table: round $round of $ROUNDS done" >&2
 done
 
-# ssam-bench: SSAM and alpha test on both backends (new binary), SSAM and alpha test on soft (old).
+# ssam-bench: SSAM and alpha test on both backends (new binary) and on soft (old binary), one
+# scene at a time, the binaries alternated scene by scene.
 echo "speed_table: ssam-bench tree, forest, vista" >&2
 declare -A bench
-bench_csv() {  # bench_csv BIN DIR BACKENDS
-  "$1/ssam-bench" --content "$CONTENT" --scenes tree,forest,vista --techniques ssam,alpha-test --backend "$3" \
+bench_csv() {  # bench_csv BIN DIR BACKENDS SCENE
+  "$1/ssam-bench" --content "$CONTENT" --scenes "$4" --techniques ssam,alpha-test --backend "$3" \
     --threads "$THREADS" --reps 3 --pan-frames 2 --out "$2" >> "$LOG" 2>&1 || die "ssam-bench ($1) failed; see $LOG"
   # scene,technique,backend -> time_ms_median (column 6)
   awk -F, 'NR > 1 && $6 != "" {print $1 "," $2 "," $3, $6}' "$2/bench.csv"
 }
-while read -r key ms; do bench[$key|$BIN]=$ms; done < <(bench_csv "$BIN" "$OUT/ssam-bench" soft,gl)
-if [[ -n "$OLD_BIN" ]]; then
-  while read -r key ms; do bench[$key|$OLD_BIN]=$ms; done < <(bench_csv "$OLD_BIN" "$OUT/ssam-bench-old" soft)
-fi
+for scene in tree forest vista; do
+  if [[ -n "$OLD_BIN" ]]; then
+    while read -r key ms; do bench[$key|$OLD_BIN]=$ms; done < <(bench_csv "$OLD_BIN" "$OUT/ssam-bench-old/$scene" soft "$scene")
+  fi
+  while read -r key ms; do bench[$key|$BIN]=$ms; done < <(bench_csv "$BIN" "$OUT/ssam-bench/$scene" soft,gl "$scene")
+done
 
 med() { median <<< "${t[$1]}"; }
 row() {  # row MEASURE GOAL VALUE_FOR_BIN...
