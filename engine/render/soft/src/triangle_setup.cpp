@@ -190,6 +190,44 @@ bool finite(const ClipVertex& v) {
            std::isfinite(v.position.w);
 }
 
+// The clipped polygon (`count` vertices: position(i), attribute(i, k)) to screen space, then
+// its fan of triangles emitted. Vertices reach it as doubles of the clip-space floats, or
+// clipped in double: the same arithmetic either way.
+template <typename Position, typename Attribute>
+void projectAndEmit(int count, Position position, Attribute attribute, const Viewport& vp, const RasterState& raster,
+                    std::uint32_t drawIndex, std::vector<SetupTriangle>& out, SetupCounters& counters) {
+    std::array<ScreenVertex, 12> screen;
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec4& c = position(i);
+        if (!(c.w > 0.0)) {  // on the w = 0 plane exactly: nothing visible
+            ++counters.dropped;
+            return;
+        }
+        const double inverseW = 1.0 / c.w;
+        const double x = (c.x * inverseW * 0.5 + 0.5) * vp.width;
+        const double y = (0.5 - c.y * inverseW * 0.5) * vp.height;  // NDC +y is the top row
+        ScreenVertex& s = screen[i];
+        s.x = roundHalfAway(x * kSubpixelScale);
+        s.y = roundHalfAway(y * kSubpixelScale);
+        s.inverseW = inverseW;
+    }
+    // Most dropped triangles (culled, off-screen, degenerate) are known from the snapped
+    // positions: they skip depth and attribute set-up.
+    bool anySurvives = false;
+    for (int i = 1; i + 1 < count && !anySurvives; ++i)
+        anySurvives = survivesEmit(screen[0], screen[i], screen[i + 1], vp, raster);
+    if (!anySurvives) {
+        counters.dropped += std::uint64_t(count - 2);
+        return;
+    }
+    for (int i = 0; i < count; ++i) {
+        ScreenVertex& s = screen[i];
+        s.z = std::clamp(position(i).z * s.inverseW, 0.0, 1.0);
+        for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(i, k) * s.inverseW;
+    }
+    for (int i = 1; i + 1 < count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
+}
+
 }  // namespace
 
 bool rejectedBeforeSetup(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp) {
@@ -238,6 +276,20 @@ void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const C
         {-1.0, 0.0, 0.0, gx}, {1.0, 0.0, 0.0, gx}, {0.0, -1.0, 0.0, gy}, {0.0, 1.0, 0.0, gy},
     };
 
+    // Inside every plane (most triangles that get here): no polygon to build, and the same
+    // values as the clipping loop below, which would leave the three vertices as they are.
+    const glm::dvec4 positions[3] = {glm::dvec4(v0.position), glm::dvec4(v1.position), glm::dvec4(v2.position)};
+    bool inside = true;
+    for (const ClipPlane& plane : planes)
+        for (const glm::dvec4& p : positions) inside = inside && glm::dot(plane, p) >= 0.0;
+    if (inside) {
+        const ClipVertex* v[3] = {&v0, &v1, &v2};
+        projectAndEmit(
+            3, [&](int i) -> const glm::dvec4& { return positions[i]; },
+            [&](int i, int k) { return double(v[i]->attributes[k]); }, vp, raster, drawIndex, out, counters);
+        return;
+    }
+
     Polygon poly;
     poly.vertices[0] = toClipPoint(v0);
     poly.vertices[1] = toClipPoint(v1);
@@ -254,37 +306,9 @@ void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const C
         }
     }
 
-    std::array<ScreenVertex, 12> screen;
-    for (int i = 0; i < poly.count; ++i) {
-        const ClipPoint& c = poly.vertices[i];
-        if (!(c.position.w > 0.0)) {  // on the w = 0 plane exactly: nothing visible
-            ++counters.dropped;
-            return;
-        }
-        const double inverseW = 1.0 / c.position.w;
-        const double x = (c.position.x * inverseW * 0.5 + 0.5) * vp.width;
-        const double y = (0.5 - c.position.y * inverseW * 0.5) * vp.height;  // NDC +y is the top row
-        ScreenVertex& s = screen[i];
-        s.x = roundHalfAway(x * kSubpixelScale);
-        s.y = roundHalfAway(y * kSubpixelScale);
-        s.inverseW = inverseW;
-    }
-    // Most dropped triangles (culled, off-screen, degenerate) are known from the snapped
-    // positions: they skip depth and attribute set-up.
-    bool anySurvives = false;
-    for (int i = 1; i + 1 < poly.count && !anySurvives; ++i)
-        anySurvives = survivesEmit(screen[0], screen[i], screen[i + 1], vp, raster);
-    if (!anySurvives) {
-        counters.dropped += std::uint64_t(poly.count - 2);
-        return;
-    }
-    for (int i = 0; i < poly.count; ++i) {
-        const ClipPoint& c = poly.vertices[i];
-        ScreenVertex& s = screen[i];
-        s.z = std::clamp(c.position.z * s.inverseW, 0.0, 1.0);
-        for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = c.attributes[k] * s.inverseW;
-    }
-    for (int i = 1; i + 1 < poly.count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
+    projectAndEmit(
+        poly.count, [&](int i) -> const glm::dvec4& { return poly.vertices[i].position; },
+        [&](int i, int k) { return poly.vertices[i].attributes[k]; }, vp, raster, drawIndex, out, counters);
 }
 
 SetupTriangle fullscreenTriangle(const Viewport& vp, std::uint32_t drawIndex) {
