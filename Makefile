@@ -101,10 +101,14 @@ readme-chart: build
 content: build
 	$(BUILD_DIR)/bin/content-generator --out content
 
+# The benchmarks, then issue 16's table (game/bench/speed_table.sh): the soft backend against
+# Mesa llvmpipe with the same threads, measured in this one run. OLD_BIN=<dir of an older racer
+# and ssam-bench> adds a "before" column, old and new binaries run alternately.
 bench: build
 	$(BUILD_DIR)/bin/bench_ecs
 	$(BUILD_DIR)/bin/ssam_bench
 	$(BUILD_DIR)/bin/ssam-bench --out out/bench
+	BIN=$(BUILD_DIR)/bin OUT=out/bench OLD_BIN=$(OLD_BIN) game/bench/speed_table.sh
 
 # Fuzzing, outside CI (tests/fuzz/run_fuzzers.sh): the fuzz targets built with Clang as
 # libFuzzer binaries (ASan + UBSan) in build-fuzz, each run FUZZ_SECONDS on a copy of its

@@ -52,6 +52,7 @@ const std::vector<SceneKind>& allScenes() {
 }
 
 const char* sceneName(SceneKind kind) {
+    if (kind == SceneKind::Layers) return "layers";  // not in kScenes: --scenes does not offer it
     for (const SceneEntry& s : kScenes)
         if (s.kind == kind) return s.name;
     return "?";
@@ -145,6 +146,8 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             target_ = onGround(0.0f, 600.0f) + glm::vec3(0.0f, 10.0f, 0.0f);
             break;
         }
+        case SceneKind::Layers:
+            throw Error("the layers scene is built from its layer count, not by kind");
         case SceneKind::Empty: {
             // Foliage exists but only behind the camera: extraction culls it, so every
             // technique should cost what the opaque frame costs (DESIGN.md data flow, step 3).
@@ -157,6 +160,40 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             target_ = onGround(0.0f, 80.0f) + glm::vec3(0.0f, 2.0f, 0.0f);
             break;
         }
+    }
+}
+
+BenchScene::BenchScene(Backend& backend, int cardLayers, const std::filesystem::path& contentDir)
+    : kind_(SceneKind::Layers), library_(backend) {
+    if (cardLayers < 1) throw Error("layers scene: " + std::to_string(cardLayers) + " card layers (at least 1)");
+    // The fern's leaf material (alpha-masked, its texture with the library's coverage-keeping mips).
+    const scene::ModelId fern = racer::loadContentModel(library_, contentDir / "models" / "bush_fern.glb");
+    const scene::PartMaterial* leaves = nullptr;
+    for (std::uint32_t part : library_.partsOf(fern))
+        if (library_.part(part).material.surface == scene::SurfaceClass::Mask) leaves = &library_.part(part).material;
+    if (!leaves) throw Error("layers scene: bush_fern.glb has no alpha-masked part");
+    // A unit card in the XY plane facing the camera, its texture repeated 4 x 4 times.
+    std::vector<Vertex> vertices(4);
+    const glm::vec2 corners[4] = {{-0.5f, -0.5f}, {0.5f, -0.5f}, {0.5f, 0.5f}, {-0.5f, 0.5f}};
+    for (int i = 0; i < 4; ++i) {
+        vertices[i].position = {corners[i].x, corners[i].y, 0.0f};
+        vertices[i].normal = {0.0f, 0.0f, -1.0f};
+        vertices[i].uv = {4.0f * (corners[i].x + 0.5f), 4.0f * (0.5f - corners[i].y)};
+    }
+    const std::vector<std::uint32_t> indices{0, 1, 2, 0, 2, 3};
+    scene::PartMaterial card = *leaves;
+    card.doubleSided = true;
+    const scene::ModelId model = library_.add("leaf card", vertices, indices, card);
+    // Cards from 3 m away, 0.25 m apart, each scaled to cover the widest (21:9) view at its
+    // distance, shifted sideways so the leaves of successive cards do not line up.
+    eye_ = {0.0f, 0.0f, 0.0f};
+    target_ = {0.0f, 0.0f, 1.0f};
+    racer::Random random(0x1A7E5u);
+    for (int i = 0; i < cardLayers; ++i) {
+        const float distance = 3.0f + 0.25f * float(i);
+        const float shift = random.uniform(-0.5f, 0.5f) * distance;
+        const float size = 2.5f * distance * 2.0f * halfFovTangent() + 2.0f * std::abs(shift);
+        racer::placeModel(registry_, model, {shift, 0.0f, distance}, 0.0f, size);
     }
 }
 

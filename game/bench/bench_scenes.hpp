@@ -8,6 +8,8 @@
 //   forest  a dense stand seen from inside its edge: many overlapping trees and bushes
 //   vista   a distant view over hundreds of trees ([Hathaway 2010] §3.1: Pure's vistas)
 //   empty   trees only behind the camera: no foliage in view, the opaque frame alone
+//   layers  (--scaling only) N full-view cards of fern leaves stacked in front of the camera:
+//           foliage depth complexity N where the leaves cover
 // Projection: reverse-Z, 60° vertical field of view, 0.1 m to 30 km, depth test Greater —
 // the racer's conventions (game/src/camera_rig.cpp, frame_renderer.cpp).
 #include <filesystem>
@@ -23,7 +25,7 @@
 
 namespace bench {
 
-enum class SceneKind { Tree, Forest, Vista, Empty };
+enum class SceneKind { Tree, Forest, Vista, Empty, Layers };
 
 // tree, forest, vista, empty: in the order tables list them.
 const std::vector<SceneKind>& allScenes();
@@ -39,6 +41,8 @@ class BenchScene {
 public:
     // Throws engine::Error when a content file is missing or bad.
     BenchScene(engine::render::Backend& backend, SceneKind kind, const std::filesystem::path& contentDir);
+    // The `layers` scene: `cardLayers` (>= 1) leaf cards, each covering the whole view.
+    BenchScene(engine::render::Backend& backend, int cardLayers, const std::filesystem::path& contentDir);
     ~BenchScene();
     BenchScene(const BenchScene&) = delete;
     BenchScene& operator=(const BenchScene&) = delete;

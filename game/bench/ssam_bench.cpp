@@ -2,7 +2,8 @@
 // ssam-bench: every transparency technique's run time against its error from the exact
 // reference (DESIGN.md "Accuracy and the ground truth", issue #6). Writes bench.csv,
 // bench_passes.csv, bench.md and bench.svg into --out; with --sweep, SSAM under a grid of its
-// knobs instead, into sweep.csv and sweep.md. Keeps the command-line contract (game/README.md):
+// knobs instead, into sweep.csv and sweep.md; with --scaling, each backend's SSAM and
+// alpha-test frame time against pixels and foliage layers, into scaling.csv and scaling.svg. Keeps the command-line contract (game/README.md):
 // exit 2 for a bad flag, 1 for a failed run; --out is checked before the first frame.
 #include <CLI/CLI.hpp>
 
@@ -17,6 +18,7 @@
 #include "bench_chart.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
+#include "bench_scaling.hpp"
 #include "bench_sweep.hpp"
 #include "bench_chart.hpp"
 #include "content_dir.hpp"
@@ -44,6 +46,7 @@ struct Options {
     bool images = false;
     bool sweep = false;
     bool sweepFull = false;
+    bool scaling = false;
     std::string sweepLerp = "0,0.25,0.5,0.85,1";
     std::string sweepSquare = "on,off";
     std::string sweepReference = "16,64,128";
@@ -194,9 +197,10 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
     if (!std::filesystem::is_directory(o.contentDir))
         throw engine::Error("--content '" + o.contentDir + "': no such directory");
     const std::filesystem::path out(o.out);
-    const std::vector<const char*> reports = o.sweep ? std::vector<const char*>{"sweep.csv", "sweep.md"}
-                                                     : std::vector<const char*>{"bench.csv", "bench_passes.csv",
-                                                                                "bench.md", "bench.svg"};
+    const std::vector<const char*> reports =
+        o.scaling ? std::vector<const char*>{"scaling.csv", "scaling.svg"}
+        : o.sweep ? std::vector<const char*>{"sweep.csv", "sweep.md"}
+                  : std::vector<const char*>{"bench.csv", "bench_passes.csv", "bench.md", "bench.svg"};
     engine::requireWritableDirectory(out, /*create=*/true);
     for (const char* name : reports) engine::requireWritableFile(out / name, /*createDirectory=*/false);
     BenchOptions run = options;
@@ -209,6 +213,22 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
     for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
     const RunInfo info{command, resolvedThreads(options.threads), options.reps, options.warmup, options.panFrames};
     engine::PendingFiles files;  // the reports appear together, each whole, or none does
+    if (o.scaling) {
+        ScalingOptions scaling = defaultScaling(o.quick);
+        scaling.backends = options.backends;
+        scaling.threads = options.threads;
+        scaling.contentDir = options.contentDir;
+        if (app.count("--reps")) scaling.reps = o.reps;
+        if (app.count("--warmup")) scaling.warmup = o.warmup;
+        std::printf("ssam-bench --scaling: %zu sizes and %zu layer counts per backend, %d rep(s) after %d warm-up\n",
+                    scaling.sizes.size(), scaling.layers.size(), scaling.reps, scaling.warmup);
+        const std::vector<ScalingRow> rows = runScaling(scaling);
+        stageReport(files, out / "scaling.csv", [&](std::ostream& s) { writeScalingCsv(s, rows); });
+        stageReport(files, out / "scaling.svg", [&](std::ostream& s) { writeScalingSvg(s, rows); });
+        files.commit();
+        std::printf("ssam-bench: wrote %s/scaling.csv, scaling.svg (%zu rows)\n", out.string().c_str(), rows.size());
+        return 0;
+    }
     if (o.sweep) {
         std::printf("ssam-bench --sweep: %zu setting(s) per scene\n", settings.size());
         const SweepRun sweepRun = runSweep(run, settings, options.subjects);
@@ -277,6 +297,14 @@ int main(int argc, char** argv) {
     app.add_option("--sweep-precision", o.sweepPrecision, "maskPrecision values (§3.5.2): rgba8, rgba16f, rg16f")
         ->capture_default_str()
         ->needs(sweep);
+    CLI::Option* scaling =
+        app.add_flag("--scaling", o.scaling,
+                     "instead of comparing techniques: each backend's SSAM and alpha-test frame time against "
+                     "resolution (forest, 360p..2160p) and foliage depth complexity (1..64 full-view leaf layers "
+                     "at 720p); --quick: 160x90..320x180 and 1..4 layers; writes scaling.csv, scaling.svg");
+    scaling->excludes(sweep);
+    for (const char* flag : {"--scenes", "--techniques", "--size", "--pan-frames", "--images"})
+        scaling->excludes(app.get_option(flag));
     app.add_option("--out", o.out, "output directory (created if missing; checked before the first frame)")
         ->capture_default_str();
     app.add_option("--content", o.contentDir, "content directory")->capture_default_str();

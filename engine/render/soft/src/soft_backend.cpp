@@ -24,6 +24,7 @@
 #include "engine/render/pixel_codec.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/soft_texture.hpp"
+#include "instance_culling.hpp"
 #include "standard_kernels.hpp"
 #include "tile_rasterizer.hpp"
 #include "engine/render/soft/kernel/triangle_setup.hpp"
@@ -37,6 +38,8 @@ struct SoftBuffer {
     BufferDesc desc;
     std::vector<std::byte> bytes;
     std::uint32_t maxIndex = 0;  // index buffers: the largest index (validation's fast accept)
+    // Vertex buffers: the box of the positions, found at the first draw after a write.
+    std::optional<PositionBounds> bounds;
 };
 
 struct SoftPipeline {
@@ -50,11 +53,34 @@ struct RecordedDraw {
     FragmentSink* sink = nullptr;  // set: the draw's fragments are captured, not written
 };
 
+// Triangles per chunk of a draw's geometry work, and how many chunks' storage the backend
+// keeps when a pass needs fewer (up to 128k triangles' worth, about 30 MiB).
+constexpr std::uint64_t kChunk = 2048;
+constexpr std::size_t kKeptChunks = 64;
+
+// What the vertex stage of one draw reads, resolved once per draw.
+struct DrawGeometry {
+    const Vertex* vertices;
+    const std::uint32_t* indices;  // from the draw's first index; null: non-indexed
+    std::uint32_t first;
+    const Instance* instances;
+    const PositionBounds* bounds;  // of the vertex buffer's positions
+    glm::mat4 viewProj;
+    Viewport viewport;
+    RasterState raster;
+    std::uint32_t drawIndex;
+    std::uint64_t trianglesPerInstance, total;
+};
+
+constexpr std::size_t kNoGeometry = ~std::size_t(0);
+
 // One chunk of a draw's triangles after setup, with the tiles each may cover.
 struct GeometryChunk {
     std::vector<SetupTriangle> triangles;
     std::vector<BinEntry> bins;  // in submission order
     SetupCounters counters;
+    std::size_t geometry = kNoGeometry;  // the DrawGeometry it sets up triangles [begin, end) of
+    std::uint64_t begin = 0, end = 0;
 };
 
 
@@ -121,7 +147,7 @@ public:
     BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
         const std::string what = "buffer " + quotedName(desc.name);
         validateBuffer(desc, data, what);
-        SoftBuffer b{desc, std::vector<std::byte>(desc.size)};
+        SoftBuffer b{desc, std::vector<std::byte>(desc.size), 0, std::nullopt};
         if (!data.empty()) std::memcpy(b.bytes.data(), data.data(), data.size());
         if (desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
         return buffers_.add(std::move(b));
@@ -144,6 +170,7 @@ public:
         }
         std::memcpy(b.bytes.data() + offset, data.data(), data.size());
         if (b.desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
+        b.bounds.reset();
     }
 
     ProgramHandle createProgram(const ProgramDesc& desc) override {
@@ -364,7 +391,7 @@ private:
     }
 
     Viewport viewportFor(const DrawDesc& d) const {
-        Viewport vp{passWidth_, passHeight_, {0, 0, passWidth_, passHeight_}};
+        Viewport vp{passWidth_, passHeight_, {0, 0, passWidth_, passHeight_}, &samplePattern(passSamples_)};
         if (d.scissor) {
             const int x0 = std::max(0, d.scissor->x), y0 = std::max(0, d.scissor->y);
             const int x1 = std::min(passWidth_, d.scissor->x + d.scissor->width);
@@ -413,77 +440,118 @@ private:
         });
     }
 
-    // Vertex stage + clipping + setup + binning for one draw, in parallel over fixed chunks
-    // of triangles; each chunk keeps its triangles and their (tile, triangle) bin entries
-    // in submission order, and chunks are merged into the tile bins in order, so the result
-    // is independent of the thread count. Chunk storage is reused from pass to pass.
-    void processGeometry(const DrawDesc& d, const DrawState& state, std::uint32_t drawIndex, const Viewport& vp,
-                         const RasterState& raster, const TileGrid& grid) {
+    // Vertex stage + clipping + setup + binning for one draw, in fixed chunks of triangles;
+    // each chunk keeps its triangles and their (tile, triangle) bin entries in submission
+    // order, and chunks are merged into the tile bins in order, so the result is independent
+    // of the thread count. Chunk storage is reused from pass to pass. Here the draw's chunks
+    // are only planned: runGeometry() runs every chunk of the pass in one parallel loop, so a
+    // pass of many small draws (foliage batches of a chunk or two each) uses every thread.
+    void planGeometry(const DrawDesc& d, const DrawState& state, std::uint32_t drawIndex, const Viewport& vp,
+                      const RasterState& raster, const TileGrid& grid) {
         const SoftPipeline& p = pipelines_.get(d.pipeline);
         if (p.program->vertexInput == VertexInput::Fullscreen) {
             if (vp.scissor.empty()) return;
-            GeometryChunk& chunk = nextChunks(1)[0];
+            GeometryChunk& chunk = chunks_[nextChunks(1)];
             chunk.triangles.push_back(fullscreenTriangle(vp, drawIndex));
             binTriangle(chunk.triangles.back(), 0, grid, chunk.bins);
             return;
         }
-        const SoftBuffer& vb = buffers_.get(d.vertices);
+        SoftBuffer& vb = buffers_.get(d.vertices);
         const auto* vertices = reinterpret_cast<const Vertex*>(vb.bytes.data());
-        const std::uint32_t* indices =
-            d.indices ? reinterpret_cast<const std::uint32_t*>(buffers_.get(d.indices).bytes.data()) + d.first : nullptr;
-        const Instance identity{};
-        const Instance* instances =
-            d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity;
-        const glm::mat4 viewProj = state.program->viewProj();
+        if (!vb.bounds) vb.bounds = positionBounds({vertices, vb.bytes.size() / sizeof(Vertex)});
+        static const Instance identity{};
+        DrawGeometry g{vertices,
+                       d.indices ? reinterpret_cast<const std::uint32_t*>(buffers_.get(d.indices).bytes.data()) + d.first
+                                 : nullptr,
+                       d.first,
+                       d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity,
+                       &*vb.bounds,
+                       state.program->viewProj(),
+                       vp,
+                       raster,
+                       drawIndex,
+                       d.count / 3,
+                       0};
+        g.total = g.trianglesPerInstance * d.instanceCount;
+        stats_.trianglesIn += g.total;
+        if (g.total == 0 || vp.scissor.empty()) return;
+        const std::uint64_t chunks = (g.total + kChunk - 1) / kChunk;
+        const std::size_t first = nextChunks(chunks);
+        for (std::uint64_t c = 0; c < chunks; ++c) {
+            GeometryChunk& chunk = chunks_[first + c];
+            chunk.geometry = geometry_.size();
+            chunk.begin = c * kChunk;
+            chunk.end = std::min(g.total, chunk.begin + kChunk);
+        }
+        geometry_.push_back(g);
+    }
 
-        const std::uint64_t trianglesPerInstance = d.count / 3;
-        const std::uint64_t total = trianglesPerInstance * d.instanceCount;
-        stats_.trianglesIn += total;
-        if (total == 0 || vp.scissor.empty()) return;
-        constexpr std::uint64_t kChunk = 2048;
-        const std::uint64_t chunks = (total + kChunk - 1) / kChunk;
-        GeometryChunk* const chunkOut = nextChunks(chunks);
+    void runGeometry(const TileGrid& grid) {
         arena_.execute([&] {
-            tbb::parallel_for(std::uint64_t(0), chunks, [&](std::uint64_t chunk) {
-                GeometryChunk& out = chunkOut[chunk];
-                const std::uint64_t begin = chunk * kChunk, end = std::min(total, begin + kChunk);
-                std::uint64_t cachedInstance = ~0ull;
-                glm::mat4 mvp(1.0f);
-                glm::mat3 normalMatrix(1.0f);
-                for (std::uint64_t t = begin; t < end; ++t) {
-                    const std::uint64_t instance = t / trianglesPerInstance, tri = t % trianglesPerInstance;
-                    const Instance& inst = instances[instance];
-                    if (instance != cachedInstance) {
-                        mvp = viewProj * inst.model;
-                        normalMatrix = glm::mat3(inst.model);
-                        cachedInstance = instance;
-                    }
-                    ClipVertex cv[3];
-                    for (int k = 0; k < 3; ++k) {
-                        const std::uint32_t index = indices ? indices[tri * 3 + k] : d.first + std::uint32_t(tri * 3 + k);
-                        const Vertex& v = vertices[index];
-                        cv[k].position = mvp * glm::vec4(v.position, 1.0f);
-                        const glm::vec3 n = normalMatrix * v.normal;
-                        const glm::vec4 c = v.color * inst.tint;
-                        cv[k].attributes = {v.uv.x, v.uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
-                    }
-                    setupTriangle(cv[0], cv[1], cv[2], vp, raster, drawIndex, out.triangles, out.counters);
-                }
+            tbb::parallel_for(std::size_t(0), chunksUsed_, [&](std::size_t c) {
+                GeometryChunk& out = chunks_[c];
+                if (out.geometry == kNoGeometry) return;  // a full-screen triangle, already binned
+                processChunk(geometry_[out.geometry], out);
                 for (std::size_t i = 0; i < out.triangles.size(); ++i)
                     binTriangle(out.triangles[i], std::uint32_t(i), grid, out.bins);
             });
         });
     }
 
-    // `count` cleared chunks after those already used in this pass.
-    GeometryChunk* nextChunks(std::uint64_t count) {
-        if (chunks_.size() < chunksUsed_ + count) chunks_.resize(chunksUsed_ + count);
-        GeometryChunk* first = chunks_.data() + chunksUsed_;
-        for (std::uint64_t i = 0; i < count; ++i) {
-            first[i].triangles.clear();
-            first[i].bins.clear();
-            first[i].counters = {};
+    static void processChunk(const DrawGeometry& g, GeometryChunk& out) {
+        std::uint64_t cachedInstance = ~0ull;
+        glm::mat4 mvp(1.0f);
+        glm::mat3 normalMatrix(1.0f);
+        for (std::uint64_t t = out.begin; t < out.end; ++t) {
+            const std::uint64_t instance = t / g.trianglesPerInstance, tri = t % g.trianglesPerInstance;
+            const Instance& inst = g.instances[instance];
+            if (instance != cachedInstance) {
+                mvp = g.viewProj * inst.model;
+                normalMatrix = glm::mat3(inst.model);
+                cachedInstance = instance;
+                // An instance wholly beyond a clip plane: each of its triangles (those in this
+                // chunk) would be rejected, and counted, by setupTriangle.
+                if (instanceOutsideOnePlane(mvp, *g.bounds, g.viewport)) {
+                    const std::uint64_t instanceEnd = std::min(out.end, (instance + 1) * g.trianglesPerInstance);
+                    out.counters.dropped += instanceEnd - t;
+                    t = instanceEnd - 1;
+                    continue;
+                }
+            }
+            ClipVertex cv[3];
+            const Vertex* v[3];
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t index = g.indices ? g.indices[tri * 3 + k] : g.first + std::uint32_t(tri * 3 + k);
+                v[k] = &g.vertices[index];
+                cv[k].position = mvp * glm::vec4(v[k]->position, 1.0f);
+            }
+            // Positions first: a triangle setupTriangle would reject at once (NaN, or beyond one
+            // plane) needs no normals or colours (most of the terrain, off to the sides).
+            if (rejectedBeforeSetup(cv[0], cv[1], cv[2], g.viewport)) {
+                ++out.counters.dropped;
+                continue;
+            }
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 n = normalMatrix * v[k]->normal;
+                const glm::vec4 c = v[k]->color * inst.tint;
+                cv[k].attributes = {v[k]->uv.x, v[k]->uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
+            }
+            setupUnrejectedTriangle(cv[0], cv[1], cv[2], g.viewport, g.raster, g.drawIndex, out.triangles,
+                                    out.counters);
         }
+    }
+
+    // `count` cleared chunks after those already used in this pass; the index of the first.
+    std::size_t nextChunks(std::uint64_t count) {
+        if (chunks_.size() < chunksUsed_ + count) chunks_.resize(chunksUsed_ + count);
+        for (std::size_t i = chunksUsed_; i < chunksUsed_ + count; ++i) {
+            GeometryChunk& c = chunks_[i];
+            c.triangles.clear();
+            c.bins.clear();
+            c.counters = {};
+            c.geometry = kNoGeometry;
+        }
+        const std::size_t first = chunksUsed_;
         chunksUsed_ += count;
         return first;
     }
@@ -496,6 +564,7 @@ private:
         std::vector<DrawState> drawStates;
         drawStates.reserve(draws_.size());
         chunksUsed_ = 0;
+        geometry_.clear();
         for (std::uint32_t i = 0; i < draws_.size(); ++i) {
             const DrawDesc& d = draws_[i].desc;
             drawStates.push_back(drawStateFor(d));
@@ -505,8 +574,9 @@ private:
                 s.shade = true;
                 s.depthWrite = false;
             }
-            processGeometry(d, drawStates.back(), i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, grid);
+            planGeometry(d, drawStates.back(), i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, grid);
         }
+        runGeometry(grid);
         stats_.draws += draws_.size();
 
         // Merging the chunks' bins in submission order keeps each tile's list ordered.
@@ -535,8 +605,10 @@ private:
         stats_.pixelsShaded += shaded;
         stats_.pixelsTouched += touched;
         passTouched_ += touched;
-        // Storage this pass did not need is given back; what it used is kept for the next.
-        chunks_.resize(chunksUsed_);
+        // Storage this pass did not need is given back beyond a frame's worth (passes of one
+        // frame need different amounts: freeing it each pass reallocated it each frame);
+        // what it used is kept for the next.
+        chunks_.resize(std::max(chunksUsed_, std::min(chunks_.size(), kKeptChunks)));
         if (options_.debugChecks) checkNonFinite();
     }
 
@@ -581,6 +653,7 @@ private:
     std::vector<RecordedDraw> draws_;
     FragmentSink* sink_ = nullptr;
     std::vector<GeometryChunk> chunks_;  // setup output of the pass being executed
+    std::vector<DrawGeometry> geometry_;  // the vertex input of its draws
     std::size_t chunksUsed_ = 0;
     std::vector<std::vector<const SetupTriangle*>> bins_;  // per tile, in submission order
     std::vector<PassTiming> timings_;

@@ -39,23 +39,26 @@ void rasterizeTile(const Rect& tile, std::span<const SetupTriangle* const> trian
     }
 }
 
+bool isTinyTriangle(const SetupTriangle& t) { return (t.maxX - t.minX) < 2 && (t.maxY - t.minY) < 2; }
+
+bool coversAnySample(const SetupTriangle& t, const SamplePattern& pattern) {
+    for (int py = t.minY; py <= t.maxY; ++py)
+        for (int px = t.minX; px <= t.maxX; ++px)
+            for (int s = 0; s < pattern.count; ++s) {
+                const std::int64_t x = std::int64_t(px) * kPixelStep + kHalfPixel + pattern.dx[s] * kSampleOffsetScale;
+                const std::int64_t y = std::int64_t(py) * kPixelStep + kHalfPixel + pattern.dy[s] * kSampleOffsetScale;
+                bool inside = true;
+                for (int i = 0; i < 3; ++i) inside = inside && (t.a[i] * x + t.b[i] * y + t.c[i] >= 0);
+                if (inside) return true;
+            }
+    return false;
+}
+
 void binTriangle(const SetupTriangle& t, std::uint32_t triangle, const TileGrid& grid, std::vector<BinEntry>& out) {
-    if ((t.maxX - t.minX) < 2 && (t.maxY - t.minY) < 2 && grid.pattern) {
-        // Tiny triangles often cover no sample: found here, while the triangle is in cache,
-        // with the rasterizer's own per-sample edge test (sampleCoverage).
-        const SamplePattern& pattern = *grid.pattern;
-        bool any = false;
-        for (int py = t.minY; py <= t.maxY && !any; ++py)
-            for (int px = t.minX; px <= t.maxX && !any; ++px)
-                for (int s = 0; s < pattern.count && !any; ++s) {
-                    const std::int64_t x = std::int64_t(px) * kPixelStep + kHalfPixel + pattern.dx[s] * kSampleOffsetScale;
-                    const std::int64_t y = std::int64_t(py) * kPixelStep + kHalfPixel + pattern.dy[s] * kSampleOffsetScale;
-                    bool inside = true;
-                    for (int i = 0; i < 3; ++i) inside = inside && (t.a[i] * x + t.b[i] * y + t.c[i] >= 0);
-                    any = inside;
-                }
-        if (!any) return;
-    }
+    // Tiny triangles often cover no sample: found here, while the triangle is in cache,
+    // with the rasterizer's own per-sample edge test (sampleCoverage). (Set-up given the
+    // pattern has already dropped such triangles; full-screen ones come here directly.)
+    if (isTinyTriangle(t) && grid.pattern && !coversAnySample(t, *grid.pattern)) return;
     const int ts = grid.tileSize;
     const int tx0 = t.minX / ts, tx1 = t.maxX / ts, ty0 = t.minY / ts, ty1 = t.maxY / ts;
     if (tx0 == tx1 && ty0 == ty1) {  // the common small triangle: its box is in one tile

@@ -31,6 +31,12 @@ struct BinEntry {
     std::uint32_t triangle;
 };
 
+// Whether a triangle's pixel box is at most 2x2 pixels, and whether such a triangle covers a
+// sample of `pattern` (the rasterizer's own per-sample edge test, sampleCoverage): many tiny
+// triangles cover none, and are best dropped before any more work is spent on them.
+bool isTinyTriangle(const SetupTriangle& t);
+bool coversAnySample(const SetupTriangle& t, const SamplePattern& pattern);
+
 // Appends an entry for each tile that the triangle's bounding box meets and no edge
 // rejects as a whole (the block test of the rasterizer over the tile: a skipped tile is
 // one the rasterizer would find no covered sample in). A triangle whose box is at most

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tile_rasterizer.hpp"
+
 namespace engine::render::soft {
 namespace {
 
@@ -90,21 +92,42 @@ inline std::int64_t roundHalfAway(double v) {
     return i;
 }
 
-// Whether emit() would keep the triangle: the area, culling and box tests it starts with,
-// from the snapped positions alone (so dropped triangles skip the rest of the setup).
+// The edge functions of a triangle stored clockwise as displayed (v[0], v[1], v[2]), with the
+// top-left rule folded into c.
+void setEdges(SetupTriangle& t, const ScreenVertex* const v[3]) {
+    for (int i = 0; i < 3; ++i) {
+        const ScreenVertex& p = *v[i];
+        const ScreenVertex& q = *v[(i + 1) % 3];
+        const std::int64_t dx = q.x - p.x, dy = q.y - p.y;
+        t.a[i] = -dy;
+        t.b[i] = dx;
+        t.c[i] = dy * p.x - dx * p.y;
+        // Top-left rule (y down, clockwise as stored): a top edge runs right, a left edge
+        // runs up. Other edges exclude samples exactly on them.
+        const bool topLeft = (dy == 0 && dx > 0) || dy < 0;
+        if (!topLeft) t.c[i] -= 1;
+    }
+}
+
+// Whether emit() would keep the triangle: the area, culling, box and tiny-coverage tests it
+// starts with, from the snapped positions alone (so dropped triangles skip the rest of the setup).
 bool survivesEmit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Viewport& vp,
                   const RasterState& raster) {
     const std::int64_t area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     if (area == 0) return false;
     const bool frontFacing = (raster.frontFace == Winding::CounterClockwise) == (area < 0);
     if ((raster.cull == CullMode::Back && !frontFacing) || (raster.cull == CullMode::Front && frontFacing)) return false;
-    const std::int64_t minX = std::max<std::int64_t>(vp.scissor.x, std::min({a.x, b.x, c.x}) >> kSubpixelBits);
-    const std::int64_t minY = std::max<std::int64_t>(vp.scissor.y, std::min({a.y, b.y, c.y}) >> kSubpixelBits);
-    const std::int64_t maxX =
-        std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, std::max({a.x, b.x, c.x}) >> kSubpixelBits);
-    const std::int64_t maxY =
-        std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, std::max({a.y, b.y, c.y}) >> kSubpixelBits);
-    return minX <= maxX && minY <= maxY;
+    SetupTriangle t;  // only the box and the edges, as emit() makes them
+    t.minX = int(std::max<std::int64_t>(vp.scissor.x, std::min({a.x, b.x, c.x}) >> kSubpixelBits));
+    t.minY = int(std::max<std::int64_t>(vp.scissor.y, std::min({a.y, b.y, c.y}) >> kSubpixelBits));
+    t.maxX = int(std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, std::max({a.x, b.x, c.x}) >> kSubpixelBits));
+    t.maxY = int(std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, std::max({a.y, b.y, c.y}) >> kSubpixelBits));
+    if (t.minX > t.maxX || t.minY > t.maxY) return false;
+    if (!vp.pattern || !isTinyTriangle(t)) return true;
+    const ScreenVertex* v[3] = {&a, &b, &c};
+    if (area < 0) std::swap(v[1], v[2]);
+    setEdges(t, v);
+    return coversAnySample(t, *vp.pattern);
 }
 
 void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
@@ -145,17 +168,11 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
     t.drawIndex = drawIndex;
     t.frontFacing = frontFacing;
     t.minX = minX, t.minY = minY, t.maxX = maxX, t.maxY = maxY;
-    for (int i = 0; i < 3; ++i) {
-        const ScreenVertex& p = *v[i];
-        const ScreenVertex& q = *v[(i + 1) % 3];
-        const std::int64_t dx = q.x - p.x, dy = q.y - p.y;
-        t.a[i] = -dy;
-        t.b[i] = dx;
-        t.c[i] = dy * p.x - dx * p.y;
-        // Top-left rule (y down, clockwise as stored): a top edge runs right, a left edge
-        // runs up. Other edges exclude samples exactly on them.
-        const bool topLeft = (dy == 0 && dx > 0) || dy < 0;
-        if (!topLeft) t.c[i] -= 1;
+    setEdges(t, v);
+    if (vp.pattern && isTinyTriangle(t) && !coversAnySample(t, *vp.pattern)) {
+        out.pop_back();
+        ++counters.dropped;
+        return;
     }
 
     const double originX = double(v[0]->x) / kSubpixelScale, originY = double(v[0]->y) / kSubpixelScale;
@@ -173,15 +190,82 @@ bool finite(const ClipVertex& v) {
            std::isfinite(v.position.w);
 }
 
+// The clipped polygon (`count` vertices: position(i), attribute(i, k)) to screen space, then
+// its fan of triangles emitted. Vertices reach it as doubles of the clip-space floats, or
+// clipped in double: the same arithmetic either way.
+template <typename Position, typename Attribute>
+void projectAndEmit(int count, Position position, Attribute attribute, const Viewport& vp, const RasterState& raster,
+                    std::uint32_t drawIndex, std::vector<SetupTriangle>& out, SetupCounters& counters) {
+    std::array<ScreenVertex, 12> screen;
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec4& c = position(i);
+        if (!(c.w > 0.0)) {  // on the w = 0 plane exactly: nothing visible
+            ++counters.dropped;
+            return;
+        }
+        const double inverseW = 1.0 / c.w;
+        const double x = (c.x * inverseW * 0.5 + 0.5) * vp.width;
+        const double y = (0.5 - c.y * inverseW * 0.5) * vp.height;  // NDC +y is the top row
+        ScreenVertex& s = screen[i];
+        s.x = roundHalfAway(x * kSubpixelScale);
+        s.y = roundHalfAway(y * kSubpixelScale);
+        s.inverseW = inverseW;
+    }
+    // Most dropped triangles (culled, off-screen, degenerate) are known from the snapped
+    // positions: they skip depth and attribute set-up.
+    bool anySurvives = false;
+    for (int i = 1; i + 1 < count && !anySurvives; ++i)
+        anySurvives = survivesEmit(screen[0], screen[i], screen[i + 1], vp, raster);
+    if (!anySurvives) {
+        counters.dropped += std::uint64_t(count - 2);
+        return;
+    }
+    for (int i = 0; i < count; ++i) {
+        ScreenVertex& s = screen[i];
+        s.z = std::clamp(position(i).z * s.inverseW, 0.0, 1.0);
+        for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(i, k) * s.inverseW;
+    }
+    for (int i = 1; i + 1 < count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
+}
+
 }  // namespace
+
+bool rejectedBeforeSetup(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp) {
+    return !finite(v0) || !finite(v1) || !finite(v2) || outsideOnePlane(v0, v1, v2, vp);
+}
+
+bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp) {
+    const ClipVertex* v[3] = {&v0, &v1, &v2};
+    double magnitude = 0.0;
+    for (const ClipVertex* p : v)
+        magnitude = std::max(magnitude, double(std::fabs(p->position.x)) + std::fabs(p->position.y) +
+                                            std::fabs(p->position.z) + std::fabs(p->position.w));
+    const double margin = kFrustumRejectMargin * magnitude;
+    const double kx = 1.0 + 2.0 / vp.width, ky = 1.0 + 2.0 / vp.height;
+    // Each test: the signed distance beyond one plane, for all three vertices.
+    auto all = [&](auto beyond) { return beyond(v0.position) && beyond(v1.position) && beyond(v2.position); };
+    return all([&](const glm::vec4& p) { return double(p.x) - kx * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.x) - kx * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return double(p.y) - ky * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.y) - ky * p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.z) > margin; }) ||
+           all([&](const glm::vec4& p) { return double(p.z) - p.w > margin; }) ||
+           all([&](const glm::vec4& p) { return -double(p.w) > margin; });
+}
 
 void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp,
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                    SetupCounters& counters) {
-    if (!finite(v0) || !finite(v1) || !finite(v2)) {
+    if (rejectedBeforeSetup(v0, v1, v2, vp)) {
         ++counters.dropped;
         return;
     }
+    setupUnrejectedTriangle(v0, v1, v2, vp, raster, drawIndex, out, counters);
+}
+
+void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp,
+                             const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                             SetupCounters& counters) {
     // Guard band in NDC: |x_ndc| <= gx keeps |x_pixels| <= 2^20 for this viewport.
     const double gx = kGuardBandPixels / vp.width - 1.0;
     const double gy = kGuardBandPixels / vp.height - 1.0;
@@ -191,6 +275,20 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
         {0.0, 0.0, 0.0, 1.0},   // w >= 0 (with the two above, only w = 0 edge cases)
         {-1.0, 0.0, 0.0, gx}, {1.0, 0.0, 0.0, gx}, {0.0, -1.0, 0.0, gy}, {0.0, 1.0, 0.0, gy},
     };
+
+    // Inside every plane (most triangles that get here): no polygon to build, and the same
+    // values as the clipping loop below, which would leave the three vertices as they are.
+    const glm::dvec4 positions[3] = {glm::dvec4(v0.position), glm::dvec4(v1.position), glm::dvec4(v2.position)};
+    bool inside = true;
+    for (const ClipPlane& plane : planes)
+        for (const glm::dvec4& p : positions) inside = inside && glm::dot(plane, p) >= 0.0;
+    if (inside) {
+        const ClipVertex* v[3] = {&v0, &v1, &v2};
+        projectAndEmit(
+            3, [&](int i) -> const glm::dvec4& { return positions[i]; },
+            [&](int i, int k) { return double(v[i]->attributes[k]); }, vp, raster, drawIndex, out, counters);
+        return;
+    }
 
     Polygon poly;
     poly.vertices[0] = toClipPoint(v0);
@@ -208,37 +306,9 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
         }
     }
 
-    std::array<ScreenVertex, 12> screen;
-    for (int i = 0; i < poly.count; ++i) {
-        const ClipPoint& c = poly.vertices[i];
-        if (!(c.position.w > 0.0)) {  // on the w = 0 plane exactly: nothing visible
-            ++counters.dropped;
-            return;
-        }
-        const double inverseW = 1.0 / c.position.w;
-        const double x = (c.position.x * inverseW * 0.5 + 0.5) * vp.width;
-        const double y = (0.5 - c.position.y * inverseW * 0.5) * vp.height;  // NDC +y is the top row
-        ScreenVertex& s = screen[i];
-        s.x = roundHalfAway(x * kSubpixelScale);
-        s.y = roundHalfAway(y * kSubpixelScale);
-        s.inverseW = inverseW;
-    }
-    // Most dropped triangles (culled, off-screen, degenerate) are known from the snapped
-    // positions: they skip depth and attribute set-up.
-    bool anySurvives = false;
-    for (int i = 1; i + 1 < poly.count && !anySurvives; ++i)
-        anySurvives = survivesEmit(screen[0], screen[i], screen[i + 1], vp, raster);
-    if (!anySurvives) {
-        counters.dropped += std::uint64_t(poly.count - 2);
-        return;
-    }
-    for (int i = 0; i < poly.count; ++i) {
-        const ClipPoint& c = poly.vertices[i];
-        ScreenVertex& s = screen[i];
-        s.z = std::clamp(c.position.z * s.inverseW, 0.0, 1.0);
-        for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = c.attributes[k] * s.inverseW;
-    }
-    for (int i = 1; i + 1 < poly.count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
+    projectAndEmit(
+        poly.count, [&](int i) -> const glm::dvec4& { return poly.vertices[i].position; },
+        [&](int i, int k) { return poly.vertices[i].attributes[k]; }, vp, raster, drawIndex, out, counters);
 }
 
 SetupTriangle fullscreenTriangle(const Viewport& vp, std::uint32_t drawIndex) {

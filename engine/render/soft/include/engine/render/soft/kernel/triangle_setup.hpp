@@ -45,19 +45,47 @@ struct SetupTriangle {
     std::array<Plane, kAttributeCount> attributeOverW;  // attribute/w
 };
 
+struct SamplePattern;
+
 struct Viewport {
     int width = 0, height = 0;
     Rect scissor;  // already intersected with the target
+    // Set: a triangle whose pixel box is at most 2x2 pixels and that covers no sample of
+    // this pattern is dropped before its depth and attribute planes are set up.
+    const SamplePattern* pattern = nullptr;
 };
 
 struct SetupCounters {
     std::uint64_t dropped = 0;  // degenerate, NaN, fully clipped or culled
 };
 
+// Relative margin of the frustum rejects below: far above the rounding of the double
+// clipping and projection (~1e-15) and of a float vertex transform (~1e-6, for callers that
+// bound transformed boxes), so a reject never disagrees with the exact pipeline.
+inline constexpr double kFrustumRejectMargin = 1e-5;
+
+// Whether all three (finite) vertices lie beyond one clip plane by the margin: beyond the
+// far/near planes or w = 0, or more than a pixel outside the viewport's sides. Such a
+// triangle is one setupTriangle would clip away or drop by its pixel box anyway (every
+// point of its clipped polygon is a convex combination of its vertices, so it stays beyond
+// the plane, and a point a pixel outside the viewport snaps outside it), so rejecting it
+// first changes no pixel; it skips the double-precision clipping and projection.
+bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport);
+
+// What setupTriangle drops before any other work, from the positions alone (attributes
+// are not read): a non-finite position, or outsideOnePlane. Such a triangle counts one dropped.
+bool rejectedBeforeSetup(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport);
+
 // Clips, culls and sets up one triangle, appending 0..7 triangles to `out`.
 void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport,
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                    SetupCounters& counters);
+
+// setupTriangle for a triangle rejectedBeforeSetup has already kept (the vertex stage tests
+// positions before it computes attributes).
+void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport,
+                             const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                             SetupCounters& counters);
 
 // A triangle whose bounding box is the scissor and whose edges accept everything: for
 // full-screen programs, which need no geometry.

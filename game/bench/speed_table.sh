@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The soft backend's speed against Mesa llvmpipe (issue 16), from one run on this machine:
+#   racer's whole frame, pan and chase, 1280x720, every module on: soft / llvmpipe
+#   ssam-bench tree, forest, vista: SSAM frame soft / llvmpipe (and the worst of the three)
+#   forest: SSAM / alpha test on soft
+#   racer's 160x90 chase frame (the fixed per-frame cost), ms
+#   2 threads / 1 thread: racer's 720p chase frame on soft, speed-up
+# Both backends get the same threads: soft --threads, llvmpipe LP_NUM_THREADS (EGL, headless).
+# Times are racer's "mean frame" (every frame of the run, as issue 16 measured them) and
+# ssam-bench's median frame. Each racer measure runs ROUNDS times, alternating backends (and
+# binaries), and the median is kept.
+#
+# With OLD_BIN set (a directory holding an older racer and ssam-bench), every soft measure is
+# taken with both, alternately in the same run (old, new, old, new, ...), and the table gets a
+# "before" column. llvmpipe is measured with BIN's binaries (the same Mesa either way).
+#
+# Usage: game/bench/speed_table.sh   (env: BIN=build/bin OUT=out/bench OLD_BIN= ROUNDS=3 THREADS=2)
+set -euo pipefail
+BIN=${BIN:-build/bin}
+OUT=${OUT:-out/bench}
+OLD_BIN=${OLD_BIN:-}
+ROUNDS=${ROUNDS:-3}
+THREADS=${THREADS:-2}
+CONTENT=${CONTENT:-content}
+
+die() { echo "speed_table: error: $*" >&2; exit 2; }
+[[ "$ROUNDS" =~ ^[1-9][0-9]*$ ]] || die "ROUNDS='$ROUNDS' is not a positive integer"
+[[ "$THREADS" =~ ^[1-9][0-9]*$ ]] || die "THREADS='$THREADS' is not a positive integer"
+for b in "$BIN" ${OLD_BIN:+"$OLD_BIN"}; do
+  for tool in racer ssam-bench; do [[ -x "$b/$tool" ]] || die "no executable $b/$tool"; done
+done
+mkdir -p "$OUT" || die "cannot create '$OUT'"
+export DISPLAY=  # headless: llvmpipe through EGL
+LOG="$OUT/speed_table.log"
+: > "$LOG"
+
+bins=("$BIN")
+[[ -n "$OLD_BIN" ]] && bins=("$OLD_BIN" "$BIN")
+
+# racer's mean frame in ms: racer_ms BIN BACKEND THREADS ARGS...
+racer_ms() {
+  local bin=$1 backend=$2 threads=$3; shift 3
+  local line
+  local threadFlag=(--threads "$threads")
+  [[ $backend == gl ]] && threadFlag=()  # llvmpipe takes LP_NUM_THREADS; racer refuses --threads with gl
+  line=$(LP_NUM_THREADS=$threads "$bin/racer" --headless --content "$CONTENT" --backend "$backend" \
+           "${threadFlag[@]}" --fixed-dt 0.0333 "$@" 2>&1 | tee -a "$LOG" | grep 'racer: mean frame') \
+    || die "racer ($bin, $backend $*) failed; see $LOG"
+  awk '{print $4}' <<< "$line"
+}
+median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{v[NR]=$1} END {print (NR%2) ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2}'; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
+
+declare -A t  # t[key] = space-separated samples; key = measure|binary (or |gl)
+echo "speed_table: racer frames, $ROUNDS round(s), $THREADS thread(s); log in $LOG" >&2
+for round in $(seq "$ROUNDS"); do
+  for camera in pan chase; do
+    for b in "${bins[@]}"; do
+      t[$camera|$b]+=" $(racer_ms "$b" soft "$THREADS" --size 1280x720 --frames 12 --camera "$camera")"
+    done
+    t[$camera|gl]+=" $(racer_ms "$BIN" gl "$THREADS" --size 1280x720 --frames 12 --camera "$camera")"
+  done
+  for b in "${bins[@]}"; do
+    t[small|$b]+=" $(racer_ms "$b" soft "$THREADS" --size 160x90 --frames 60 --camera chase)"
+    t[one|$b]+=" $(racer_ms "$b" soft 1 --size 1280x720 --frames 12 --camera chase)"
+  done
+  echo "speed_table: round $round of $ROUNDS done" >&2
+done
+
+# ssam-bench: SSAM and alpha test on both backends (new binary) and on soft (old binary), one
+# scene at a time, the binaries alternated scene by scene.
+echo "speed_table: ssam-bench tree, forest, vista" >&2
+declare -A bench
+bench_csv() {  # bench_csv BIN DIR BACKENDS SCENE
+  "$1/ssam-bench" --content "$CONTENT" --scenes "$4" --techniques ssam,alpha-test --backend "$3" \
+    --threads "$THREADS" --reps 3 --pan-frames 2 --out "$2" >> "$LOG" 2>&1 || die "ssam-bench ($1) failed; see $LOG"
+  # scene,technique,backend -> time_ms_median (column 6)
+  awk -F, 'NR > 1 && $6 != "" {print $1 "," $2 "," $3, $6}' "$2/bench.csv"
+}
+for scene in tree forest vista; do
+  if [[ -n "$OLD_BIN" ]]; then
+    while read -r key ms; do bench[$key|$OLD_BIN]=$ms; done < <(bench_csv "$OLD_BIN" "$OUT/ssam-bench-old/$scene" soft "$scene")
+  fi
+  while read -r key ms; do bench[$key|$BIN]=$ms; done < <(bench_csv "$BIN" "$OUT/ssam-bench/$scene" soft,gl "$scene")
+done
+
+med() { median <<< "${t[$1]}"; }
+row() {  # row MEASURE GOAL VALUE_FOR_BIN...
+  local measure=$1 goal=$2; shift 2
+  if [[ -n "$OLD_BIN" ]]; then printf '| %s | %s | %s | %s |\n' "$measure" "$1" "$2" "$goal"
+  else printf '| %s | %s | %s |\n' "$measure" "$1" "$goal"; fi
+}
+values() {  # values FUNCTION: the function's value for each binary, one line each, in bins order
+  local b; for b in "${bins[@]}"; do "$1" "$b"; echo; done
+}
+pan_ratio() { ratio "$(med "pan|$1")" "$(med pan\|gl)"; }
+chase_ratio() { ratio "$(med "chase|$1")" "$(med chase\|gl)"; }
+ssam_ratio() {
+  local worst=0 scene r
+  for scene in tree forest vista; do
+    r=$(ratio "${bench[$scene,ssam,soft|$1]}" "${bench[$scene,ssam,gl|$BIN]}")
+    worst=$(awk -v a="$worst" -v b="$r" 'BEGIN {print (b > a) ? b : a}')
+    printf '%s %s; ' "$scene" "$r"
+  done
+  printf 'worst %s' "$worst"
+}
+ssam_over_alpha() { ratio "${bench[forest,ssam,soft|$1]}" "${bench[forest,alpha-test,soft|$1]}"; }
+small_ms() { printf '%.1f ms' "$(med "small|$1")"; }
+speedup() { ratio "$(med "one|$1")" "$(med "chase|$1")"; }
+
+{
+  echo
+  echo "Issue 16 on this machine ($(nproc) cores; $THREADS thread(s) each: soft --threads, llvmpipe LP_NUM_THREADS)"
+  echo
+  if [[ -n "$OLD_BIN" ]]; then
+    echo "| measure | before ($OLD_BIN) | after ($BIN) | goal |"; echo "|---|---:|---:|---|"
+  else
+    echo "| measure | $BIN | goal |"; echo "|---|---:|---|"
+  fi
+  local_row() { local measure=$1 goal=$2 fn=$3 v; mapfile -t v < <(values "$fn"); row "$measure" "$goal" "${v[@]}"; }
+  local_row "racer whole frame 1280x720 pan: soft / llvmpipe" "≤ 0.5" pan_ratio
+  local_row "racer whole frame 1280x720 chase: soft / llvmpipe" "≤ 0.5" chase_ratio
+  local_row "ssam-bench SSAM frame soft / llvmpipe" "≤ 0.5 (worst)" ssam_ratio
+  local_row "forest: SSAM / alpha test on soft" "≤ 1.5" ssam_over_alpha
+  local_row "racer 160x90 chase frame" "≤ 5 ms" small_ms
+  local_row "2 threads / 1 thread (racer 720p chase, speed-up)" "≥ 1.8" speedup
+  echo
+  echo "ms (median of $ROUNDS): pan soft $(for b in "${bins[@]}"; do printf '%s ' "$(med "pan|$b")"; done)gl $(med pan\|gl);" \
+       "chase soft $(for b in "${bins[@]}"; do printf '%s ' "$(med "chase|$b")"; done)gl $(med chase\|gl);" \
+       "chase 1 thread $(for b in "${bins[@]}"; do printf '%s ' "$(med "one|$b")"; done)"
+  echo "ssam-bench medians (ms): $(for k in "${!bench[@]}"; do printf '%s=%s ' "$k" "${bench[$k]}"; done | tr ' ' '\n' | sort | tr '\n' ' ')"
+} | tee "$OUT/speed_table.md"
