@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <numbers>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -33,8 +31,7 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     const std::filesystem::path& content = options.contentDir;
     Random random(options.seed);
 
-    // The ground in chunks (each culled on its own), the road and its gravel shoulders. The
-    // ground far out, on the hills, is darker: seen from the track it reads as more forest.
+    // The ground in chunks (each culled on its own), the road and its gravel shoulders.
     scene::PartMaterial groundMaterial;
     groundMaterial.doubleSided = true;
     groundMaterial.baseColor = loadContentTexture(backend, content / "textures" / "ground.png");
@@ -70,6 +67,9 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     std::vector<scene::ModelId> trees, bushes;
     for (const auto& f : treeFiles) trees.push_back(loadContentModel(library_, f));
     for (const auto& f : bushFiles) bushes.push_back(loadContentModel(library_, f));
+    // Every draw from `random` (here and in plantForest) is a statement of its own: C++ leaves
+    // the evaluation order of a call's arguments unspecified (GCC right to left, Clang left to
+    // right), so two draws in one expression would grow a different scene per compiler.
     plantForest(registry_, track_, ground_, trees, bushes, random, options.forest);
 
     // Water pools (glTF BLEND material): one among the grove's trees, the rest in the infield.
