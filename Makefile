@@ -67,12 +67,15 @@ test-asan: deps
 	  -E '$(ASAN_EXCLUDE)'
 
 # The demo: with a display, the racing scene in a window (GL) until it is closed (keys:
-# 1-8 / T technique, C camera, P pause, Esc quit); without one, a few seconds at a fixed time
-# step, headless on the soft backend, written to out/racer.png and out/racer.exr (every layer).
+# game/README.md "Keys": drive, HUD, compare, ...); without one, a few seconds at a fixed time
+# step, headless on the soft backend, written to out/racer.png and out/racer.exr (every layer),
+# and the same frame side by side, SSAM against alpha testing with zoomed insets, to
+# out/compare.png.
 DEMO_FLAGS ?= --frames 90 --fixed-dt 0.0333333 --size 1280x720
 demo: build
 	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then $(BUILD_DIR)/bin/racer --size 1280x720; \
-	else $(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --capture out/racer.png --capture-layers; fi
+	else $(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --capture out/racer.png --capture-layers && \
+	  $(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --compare ssam,alpha-test --capture out/compare.png; fi
 
 # The README's pictures, rendered by the project itself (small PNGs in content/readme/):
 # the default demo's chase view in the forest, the pre-race pan with SSAM (and each of its intermediate targets) and with alpha testing.
@@ -86,6 +89,9 @@ readme-images: build
 	# The living scene: the pan when the car passes the start line (55.9 s at 0.1 s steps).
 	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 559 --fixed-dt 0.1 --camera pan \
 	  --capture content/readme/living_scene.png
+	# SSAM against alpha testing side by side, with 4x insets where they differ most.
+	$(BUILD_DIR)/bin/racer --headless --size 640x360 --frames 90 --fixed-dt 0.0333333 \
+	  --compare ssam,alpha-test --capture content/readme/compare.png
 
 # The README's chart: the full ssam-bench run on both backends with 2 threads (soft tiles and
 # llvmpipe's LP_NUM_THREADS), as the README's measured figures; its tables are in out/readme-bench/bench.md.

@@ -45,7 +45,7 @@ CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float asp
     switch (mode) {
         case CameraMode::Chase: {
             const Car& car = scene.registry().get<Car>(scene.car());
-            const glm::vec3 p = scene.track().position(car.distance), f = scene.track().forward(car.distance);
+            const glm::vec3 p = car.position, f = car.forward;  // the track's, or the player's car's
             // High enough that the line of sight to the car passes over the dust its wheels
             // throw up behind it (modules/particles), low enough to look down the forest road.
             eye = p - f * 9.5f + up * 5.8f;

@@ -9,6 +9,7 @@
 #include "engine/render/frame_graph.hpp"
 #include "engine/render/frame_graph/side_effect_pass.hpp"
 #include "engine/render/pass_scope.hpp"
+#include "compare_view.hpp"
 #include "living_scene.hpp"
 
 namespace racer {
@@ -23,7 +24,7 @@ constexpr CompareFunc kDepthFunc = CompareFunc::Greater;  // reverse-Z
 
 FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary& library, const RendererOptions& options)
     : backend_(backend), library_(library), options_(options), foliage_(backend), instances_(backend),
-      transients_(backend) {
+      transients_(backend), overlay_(backend) {
     options_.techniqueOptions.ssam.depthFunc = kDepthFunc;
     setTechnique(options.technique);
     opaqueCulled_ = opaquePipeline(false);
@@ -40,6 +41,7 @@ FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary&
 }
 
 FrameRenderer::~FrameRenderer() {
+    compare_.reset();  // its renderer and texture before this one's pipelines
     for (PipelineHandle p : {opaqueCulled_, opaqueTwoSided_, water_, waterCulled_}) backend_.destroy(p);
 }
 
@@ -51,7 +53,41 @@ void FrameRenderer::setTechnique(transparency::TechniqueKind kind) {
     options_.technique = kind;
 }
 
-void FrameRenderer::resize(int width, int height) { ensureOpaqueTargets(width, height, opaqueSamples()); }
+void FrameRenderer::resize(int width, int height) {
+    ensureOpaqueTargets(width, height, opaqueSamples());
+    if (compare_) compare_->right().resize(width, height);
+}
+
+void FrameRenderer::setCompare(std::optional<transparency::TechniqueKind> right) {
+    if (!right) {
+        compare_.reset();
+        return;
+    }
+    if (compare_) {
+        compare_->right().setTechnique(*right);
+        return;
+    }
+    RendererOptions options = options_;
+    options.technique = *right;
+    options.captureLayers = false;
+    auto next = std::make_unique<CompareView>(backend_, library_, options);
+    next->right().setLivingScene(living_);
+    compare_ = std::move(next);
+}
+
+void FrameRenderer::setLivingScene(LivingScene* living) {
+    living_ = living;
+    if (compare_) compare_->right().setLivingScene(living);
+}
+
+std::optional<transparency::TechniqueKind> FrameRenderer::comparedTechnique() const {
+    if (!compare_) return std::nullopt;
+    return compare_->right().technique();
+}
+
+std::vector<hud::PixelRect> FrameRenderer::compareMarks() const { return compare_ ? compare_->marks() : std::vector<hud::PixelRect>{}; }
+
+hud::PixelRect FrameRenderer::compareCrop() const { return compare_ ? compare_->crop() : hud::PixelRect{}; }
 
 void FrameRenderer::ensureOpaqueTargets(int width, int height, int samples) {
     if (opaque_ && width == options_.width && height == options_.height && opaque_->desc().samples == samples) return;
@@ -129,8 +165,11 @@ void FrameRenderer::captureIntermediates() {
 }
 
 void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraView& camera) {
+    // B's frame first, by its own renderer and graph (the compare passes below read it).
+    if (compare_) compare_->right().render(lists, camera);
     layers_.clear();
     instances_.beginFrame();
+    overlay_.beginFrame();
     auto graph = std::make_unique<FrameGraph>();
     const FrameTargets::InGraph in = opaque_->importInto(*graph);
 
@@ -173,7 +212,26 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
                                                camera.viewProj, camera.eye, options_.sun, 0.0f, kDepthFunc};
     frame = living_ ? living_->addPasses(*graph, features, frame) : addBlendPass(*graph, frame, features, camera);
 
-    // 4. The frame leaves the graph: presented by the caller, captured here.
+    // 4. Side by side: B's right half, the insets and labels over A's frame (compare_view.hpp).
+    const int scale = hud::textScaleFor(options_.height);
+    int hudTop = 4 * scale;
+    if (compare_) {
+        frame.color = compare_->addPasses(*graph, frame.color, opaque_->color(), options_.width, options_.height,
+                                          transparency::techniqueName(technique()), overlay_);
+        hudTop += 24 * scale;  // below the labels
+    }
+
+    // 5. The HUD over the finished frame (modules/hud), at its top-left corner.
+    hudBox_ = {};
+    if (!hudLines_.empty()) {
+        hud::OverlayContent hud;
+        hud.text.push_back(hud::layoutText(hudLines_, glm::ivec2(4 * scale, hudTop), scale));
+        hudBox_ = hud.text.back().box;
+        frame.color = overlay_.addPass(*graph, "hud", frame.color, opaque_->color(), options_.width, options_.height,
+                                       std::move(hud));
+    }
+
+    // 6. The frame leaves the graph: presented by the caller, captured here.
     addSideEffectPass(*graph, "present", frame, [this] { capture(opaque_->color(), "result"); });
 
     graph->execute(transients_.allocator());

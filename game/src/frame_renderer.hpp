@@ -9,6 +9,7 @@
 // steady-state frame creates no buffer or texture.
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "camera_rig.hpp"
@@ -21,10 +22,12 @@
 #include "engine/scene/draw_lists.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "foliage_upload.hpp"
+#include "hud/overlay.hpp"
 #include "transparency/create_technique.hpp"
 
 namespace racer {
 
+class CompareView;
 class LivingScene;
 
 struct RendererOptions {
@@ -67,9 +70,26 @@ public:
 
     void render(const engine::scene::DrawLists& lists, const CameraView& camera);
 
+    // Side by side (compare_view.hpp): the current technique on the left, `right` on the
+    // right; nullopt ends it. Throws engine::Error, keeping the current state, when `right`
+    // cannot run here.
+    void setCompare(std::optional<transparency::TechniqueKind> right);
+    std::optional<transparency::TechniqueKind> comparedTechnique() const;
+    // The last frame's compare overlay outside the plain halves (labels, insets, the crop's
+    // outline) and the crop the insets show; empty when not comparing.
+    std::vector<hud::PixelRect> compareMarks() const;
+    hud::PixelRect compareCrop() const;
+
+    // The HUD (modules/hud): these lines in a panel at the frame's top-left corner, drawn by
+    // a pass "hud" after everything else; no lines (the default), no HUD. Kept until changed.
+    void setHud(std::vector<std::string> lines) { hudLines_ = std::move(lines); }
+    bool hudShown() const { return !hudLines_.empty(); }
+    // Where the last frame's HUD panel was (empty without one).
+    hud::PixelRect hudBox() const { return hudBox_; }
+
     // The living scene's features (modules/water, ...) draw after the technique, replacing
     // the built-in BLEND step; null (the default) keeps that step.
-    void setLivingScene(LivingScene* living) { living_ = living; }
+    void setLivingScene(LivingScene* living);
 
     // Graphviz dot of the last frame's compiled graph (racer --dump-graph): culled passes
     // and passes skipped as empty are marked so. Throws engine::Error before any frame.
@@ -103,6 +123,10 @@ private:
     std::unique_ptr<engine::render::FrameGraph> lastGraph_;  // for dumpGraph()
     std::vector<engine::capture::CapturedLayer> layers_;
     LivingScene* living_ = nullptr;
+    hud::Overlay overlay_;
+    std::unique_ptr<CompareView> compare_;
+    std::vector<std::string> hudLines_;
+    hud::PixelRect hudBox_;
 };
 
 }  // namespace racer

@@ -7,6 +7,7 @@
 
 #include "camera_rig.hpp"
 #include "engine/scene/draw_lists.hpp"
+#include "window_keys.hpp"
 
 namespace racer {
 
@@ -15,10 +16,16 @@ struct SceneFrame {
     engine::scene::DrawLists lists;
 };
 
-// time: simulated seconds at this frame; dt: the step just taken (0 while paused); free: the
-// free camera's pose, used when `camera` is CameraMode::Free (the window flies it; headless
-// runs pass the default, the overview).
+// What the player does in the window this frame (headless runs pass the default: the
+// overview, the autopilot driving).
+struct PlayerInput {
+    FreeCamera free;      // the free camera's pose, used when `camera` is CameraMode::Free
+    HeldDriveKeys drive;  // the drive keys held (chase camera only): any takes the wheel
+    bool autopilot = false;  // R was pressed: the autopilot drives again
+};
+
+// time: simulated seconds at this frame; dt: the step just taken (0 while paused).
 using FrameSource =
-    std::function<SceneFrame(float time, float dt, CameraMode camera, const FreeCamera& free, float aspect)>;
+    std::function<SceneFrame(float time, float dt, CameraMode camera, const PlayerInput& input, float aspect)>;
 
 }  // namespace racer

@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "camera_rig.hpp"
@@ -21,6 +23,7 @@
 #include "frame_renderer.hpp"
 #include "frame_source.hpp"
 #include "gltf_scene.hpp"
+#include "hud_text.hpp"
 #include "living_scene.hpp"
 #include "racer_options.hpp"
 #include "racer_outputs.hpp"
@@ -33,9 +36,9 @@ namespace {
 using namespace racer;
 namespace gl = engine::render::gl;
 
-std::string passTimings(engine::render::Backend& backend) {
+std::string passTimings(const std::vector<engine::render::PassTiming>& timings) {
     std::string passes;
-    for (const auto& t : backend.takeTimings()) {
+    for (const auto& t : timings) {
         char buf[96];
         if (t.skipped) std::snprintf(buf, sizeof buf, " %s skipped", t.pass.c_str());
         else std::snprintf(buf, sizeof buf, " %s %.1f", t.pass.c_str(), t.milliseconds);
@@ -47,15 +50,25 @@ std::string passTimings(engine::render::Backend& backend) {
 // Offscreen: `frames` frames at the fixed step, a progress line with per-pass times every 10.
 void runHeadless(const Options& o, engine::render::Backend& backend, FrameRenderer& frame, const FrameSource& source,
                  CameraMode camera, float aspect) {
-    double totalMs = 0.0;
+    double totalMs = 0.0, lastMs = -1.0;
+    std::vector<engine::render::PassTiming> lastTimings;
     SceneFrame last;
     for (int i = 0; i < o.frames; ++i) {
+        // The HUD shows the frame before (a frame cannot time itself before it is drawn).
+        if (o.hud) {
+            const std::string technique = transparency::techniqueName(frame.technique());
+            const auto right = frame.comparedTechnique();
+            frame.setHud(hudLines({technique, backend.name(), frame.width(), frame.height(), "previous frame", lastMs,
+                                   lastTimings, right ? compareHudLine(technique, transparency::techniqueName(*right)) : ""}));
+        }
         const auto start = std::chrono::steady_clock::now();
-        last = source(float(i * o.fixedDt), float(o.fixedDt), camera, FreeCamera{}, aspect);
+        last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
         frame.render(last.lists, last.camera);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         totalMs += ms;
-        const std::string passes = passTimings(backend);
+        lastMs = ms;
+        lastTimings = backend.takeTimings();
+        const std::string passes = passTimings(lastTimings);
         if (i == 0 || (i + 1) % 10 == 0 || i + 1 == o.frames)
             std::printf("frame %d/%d  %.1f ms  (ms:%s)\n", i + 1, o.frames, ms, passes.c_str());
     }
@@ -79,6 +92,12 @@ int run(const CLI::App& app, const Options& o) {
     renderer.width = size.width;
     renderer.height = size.height;
     renderer.technique = parseTechniqueName(o.technique);
+    std::optional<transparency::TechniqueKind> comparedWith;
+    if (!o.compare.empty()) {
+        const ComparedPair pair = parseCompare(o.compare);
+        renderer.technique = pair.left;
+        comparedWith = pair.right;
+    }
     renderer.msaa = o.msaa;
     renderer.captureLayers = o.captureLayers;
     const CameraMode cameraMode = parseCamera(o.camera);
@@ -128,6 +147,7 @@ int run(const CLI::App& app, const Options& o) {
     engine::ecs::Registry& registry = gltf ? gltf->registry() : racing->registry();
     engine::scene::MeshLibrary& library = gltf ? gltf->library() : racing->library();
     FrameRenderer frame(backend, library, renderer);
+    frame.setCompare(comparedWith);
     // The living scene (wind, water, ...; living_scene.hpp) on the racing scene.
     std::unique_ptr<LivingScene> living;
     if (racing) {
@@ -137,10 +157,16 @@ int run(const CLI::App& app, const Options& o) {
                                &racing->track()});
         frame.setLivingScene(living.get());
     }
-    const FrameSource source = [&](float time, float dt, CameraMode camera, const FreeCamera& free, float frameAspect) {
-        if (racing) racing->update(dt);
+    const FrameSource source = [&](float time, float dt, CameraMode camera, const PlayerInput& input, float frameAspect) {
+        if (racing) {
+            if (input.autopilot) racing->engageAutopilot();
+            // The first drive key takes the wheel; once driven, released keys coast.
+            if (input.drive.any || racing->registry().get<Car>(racing->car()).driven)
+                racing->takeWheel(input.drive.controls);
+            racing->update(dt);
+        }
         const CameraView view =
-            gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, free);
+            gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, input.free);
         if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };
@@ -154,6 +180,9 @@ int run(const CLI::App& app, const Options& o) {
         for (const std::string& n : living->missing()) names += " (" + n + ": not built)";
         std::printf("racer: living scene:%s\n", names.empty() ? " off" : names.c_str());
     }
+    if (comparedWith)
+        std::printf("racer: compare %s (left) | %s (right)\n", transparency::techniqueName(frame.technique()),
+                    transparency::techniqueName(*comparedWith));
     if (gltf)
         std::printf("racer: scene %s (scene %d), camera %s\n", o.scenePath.c_str(), gltf->model().scene,
                     gltf->camera(aspect).description.c_str());
@@ -163,7 +192,9 @@ int run(const CLI::App& app, const Options& o) {
         ws.fixedDt = o.fixedDtGiven ? o.fixedDt : 0.0;
         ws.camera = cameraMode;
         ws.script = o.script;
-        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, Esc quit\n");
+        ws.hud = o.hud;
+        if (comparedWith) ws.compareWith = *comparedWith;
+        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, V compare, B compared technique, R autopilot, Esc quit\n");
         const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());
@@ -171,6 +202,19 @@ int run(const CLI::App& app, const Options& o) {
         if (!o.script.empty()) throw engine::UsageError("--script needs a window (a display and no --headless)");
         std::printf("racer: %d frames at dt %.4f s\n", o.frames, o.fixedDt);
         runHeadless(o, backend, frame, source, cameraMode, aspect);
+    }
+
+    if (racing) {
+        const Car& car = racing->registry().get<Car>(racing->car());
+        std::printf("racer: car at (%.2f, %.2f, %.2f), heading %.1f deg, speed %.2f m/s, %s\n", car.position.x,
+                    car.position.y, car.position.z, glm::degrees(std::atan2(car.forward.x, car.forward.z)),
+                    car.driven ? car.motion.speed : car.speed, car.driven ? "driven by the player" : "on the autopilot");
+    }
+
+    if (frame.comparedTechnique()) {
+        const hud::PixelRect crop = frame.compareCrop();
+        std::printf("racer: compare insets: the %dx%d crop at (%d, %d), where the two differ most\n", crop.width,
+                    crop.height, crop.x, crop.y);
     }
 
     const SceneCamera planes = gltf ? gltf->camera(float(frame.width()) / float(frame.height())) : SceneCamera{};

@@ -56,6 +56,13 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--dump-graph", o.dumpGraphPath,
                    "write the last frame's compiled frame graph to this Graphviz .dot file (passes culled or "
                    "skipped as empty are marked so; checked before the first frame)");
+    app.add_option("--compare", o.compare,
+                   "A,B: render the frame with technique A and with B, side by side (A left, B right), labelled, "
+                   "with 4x insets of the crop where they differ most, e.g. ssam,alpha-test; in a window V toggles "
+                   "it and B steps B");
+    app.add_flag("--hud", o.hud,
+                 "draw the HUD into the frame (and so into --capture): technique, backend, size, frame and pass "
+                 "times; in a window H toggles it");
     // Hidden (empty group): drives the window from tests, e.g. "2:3,4:C,5:size=400x300,9:Esc".
     app.add_option("--script", o.script, "keys pressed and window changes at given frames")->group("");
     app.add_option("--scene", o.scenePath, "render this glTF 2.0 file (.gltf or .glb) instead of the racing scene");
@@ -89,6 +96,12 @@ void checkCombinations(const CLI::App& app, const Options& o) {
         for (const char* flag : {"--no-wind", "--no-water", "--no-grass", "--no-particles", "--no-lightshafts"})
             if (given(flag)) refuse(std::string(flag) + " turns off part of the racing scene's life; a --scene file has none");
     }
+    if (given("--compare")) {
+        parseCompare(o.compare);
+        if (given("--technique")) refuse("--compare A,B sets the technique (A, on the left): drop --technique");
+        if (given("--capture-layers"))
+            refuse("--capture-layers captures one technique's layers; --compare shows two: drop one of them");
+    }
     if (given("--script") && o.headless) refuse("--script drives a window; --headless has none");
     if (given("--threads") && o.backend == "gl")
         refuse("--threads sets the soft backend's threads; --backend gl does not use them");
@@ -121,6 +134,19 @@ const char* cameraName(CameraMode mode) {
         case CameraMode::Sky: return "sky";
     }
     return "?";
+}
+
+ComparedPair parseCompare(const std::string& pair) {
+    const std::size_t comma = pair.find(',');
+    auto bad = [&](const std::string& why) {
+        return engine::UsageError("--compare '" + pair + "': " + why + " (expected A,B, two of the techniques, e.g. ssam,alpha-test)");
+    };
+    if (comma == std::string::npos || pair.find(',', comma + 1) != std::string::npos) throw bad("not two names");
+    const std::string left = pair.substr(0, comma), right = pair.substr(comma + 1);
+    const auto a = transparency::parseTechnique(left), b = transparency::parseTechnique(right);
+    if (!a) throw bad("unknown technique '" + left + "'");
+    if (!b) throw bad("unknown technique '" + right + "'");
+    return {*a, *b};
 }
 
 transparency::TechniqueKind parseTechniqueName(const std::string& name) {

@@ -33,6 +33,8 @@ struct Options {
     int msaa = 1;
     std::string layerPictures;
     std::string dumpGraphPath;  // --dump-graph: Graphviz dot of the last frame's graph
+    std::string compare;    // --compare A,B: A on the left, B on the right
+    bool hud = false;       // --hud: the HUD in the frame (the window's H toggles it)
     std::string script;     // --script (hidden): keys and window changes at given frames, for tests
     std::string scenePath;  // --scene: a glTF file instead of the racing scene
     int sceneIndex = -1;
@@ -59,6 +61,13 @@ FrameSize parseFrameSize(const std::string& size);
 
 CameraMode parseCamera(const std::string& name);                  // chase, pan, free
 transparency::TechniqueKind parseTechniqueName(const std::string& name);  // allTechniques()' names
+
+// --compare's "A,B": two of allTechniques()' names (they may be the same); throws
+// engine::UsageError quoting the flag otherwise.
+struct ComparedPair {
+    transparency::TechniqueKind left, right;
+};
+ComparedPair parseCompare(const std::string& pair);
 const char* cameraName(CameraMode mode);
 
 }  // namespace racer

@@ -13,6 +13,7 @@
 #include "engine/core/log.hpp"
 #include "engine/scene/components.hpp"
 #include "content_files.hpp"
+#include "track_ground.hpp"
 
 namespace racer {
 
@@ -108,11 +109,37 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
 
 void RacingScene::update(float dt) {
     Car& car = registry_.get<Car>(car_);
-    car.distance += car.speed * dt;
     Transform& t = registry_.get<Transform>(car_);
-    t.position = track_.position(car.distance);
-    const glm::vec3 f = track_.forward(car.distance);
+    if (car.driven) {
+        car.motion = driveStep(car.motion, controls_, dt,
+                               [this](float x, float z) { return groundHeight(track_, ground_, x, z); });
+        car.position = t.position = car.motion.position;
+        car.forward = headingDirection(car.motion.heading);
+        // Pitched about its own x axis, nose up on a rising slope.
+        t.rotation = yaw(car.motion.heading) * glm::angleAxis(-car.motion.pitch, glm::vec3(1.0f, 0.0f, 0.0f));
+        return;
+    }
+    car.distance += car.speed * dt;
+    t.position = car.position = track_.position(car.distance);
+    const glm::vec3 f = car.forward = track_.forward(car.distance);
     t.rotation = yaw(std::atan2(f.x, f.z));
+}
+
+void RacingScene::takeWheel(const DriveControls& controls) {
+    Car& car = registry_.get<Car>(car_);
+    controls_ = controls;
+    if (car.driven) return;
+    car.driven = true;
+    car.motion = CarMotion{car.position, std::atan2(car.forward.x, car.forward.z), car.speed, 0.0f};
+}
+
+void RacingScene::engageAutopilot() {
+    Car& car = registry_.get<Car>(car_);
+    if (!car.driven) return;
+    car.driven = false;
+    controls_ = {};
+    car.distance = nearestTrackDistance(track_, car.position.x, car.position.z);
+    update(0.0f);
 }
 
 }  // namespace racer

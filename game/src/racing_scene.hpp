@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/core/ecs/registry.hpp"
+#include "car_driver.hpp"
 #include "engine/scene/mesh_library.hpp"
 #include "forest.hpp"
 #include "ground.hpp"
@@ -19,6 +20,12 @@ namespace racer {
 struct Car {
     float distance = 60.0f;  // along the track, metres (starts past the grove at the start line)
     float speed = 28.0f;    // m/s
+    // Where the car is and which way it faces, for the chase camera: on the autopilot the
+    // track's point and tangent at `distance`; driven by the player, its own (car_driver.hpp).
+    glm::vec3 position{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, 1.0f};
+    bool driven = false;  // by the player: `motion` moves it, the autopilot waits
+    CarMotion motion;
 };
 
 struct SceneOptions {
@@ -40,8 +47,15 @@ public:
     // its leaves are backlit and the light shafts fall through them towards the camera.
     const engine::render::DirectionalLight& sun() const { return sun_; }
 
-    // Advances the simulation by dt seconds (the car drives along the track).
+    // Advances the simulation by dt seconds: the autopilot drives the car along the track
+    // at its speed, or the player's last controls drive it (takeWheel).
     void update(float dt);
+
+    // The player drives from the next update on with these controls (taking over from the
+    // autopilot where the car is, at its speed); called again each frame with that frame's.
+    void takeWheel(const DriveControls& controls);
+    // The autopilot drives again, from the track's point nearest the car, at its speed.
+    void engageAutopilot();
 
 private:
     engine::render::DirectionalLight sun_;
@@ -50,6 +64,7 @@ private:
     Track track_;
     Ground ground_;
     engine::ecs::Entity car_;
+    DriveControls controls_;
 };
 
 }  // namespace racer

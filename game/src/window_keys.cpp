@@ -21,6 +21,10 @@ KeyAction actionForKey(int key, bool shift) {
         case GLFW_KEY_T: return {shift ? WindowAction::PreviousTechnique : WindowAction::NextTechnique};
         case GLFW_KEY_C: return {WindowAction::NextCamera};
         case GLFW_KEY_P: return {WindowAction::TogglePause};
+        case GLFW_KEY_R: return {WindowAction::Autopilot};
+        case GLFW_KEY_H: return {WindowAction::ToggleHud};
+        case GLFW_KEY_V: return {WindowAction::ToggleCompare};
+        case GLFW_KEY_B: return {WindowAction::NextCompared};
         case GLFW_KEY_ESCAPE: return {WindowAction::Quit};
         default: return {};
     }
@@ -28,7 +32,7 @@ KeyAction actionForKey(int key, bool shift) {
 
 const std::vector<int>& watchedKeys() {
     static const std::vector<int> keys = [] {
-        std::vector<int> k{GLFW_KEY_T, GLFW_KEY_C, GLFW_KEY_P, GLFW_KEY_ESCAPE};
+        std::vector<int> k{GLFW_KEY_T, GLFW_KEY_C, GLFW_KEY_P, GLFW_KEY_R, GLFW_KEY_H, GLFW_KEY_V, GLFW_KEY_B, GLFW_KEY_ESCAPE};
         for (int i = 0; i < 8; ++i) {
             k.push_back(GLFW_KEY_1 + i);
             k.push_back(GLFW_KEY_KP_1 + i);
@@ -37,6 +41,25 @@ const std::vector<int>& watchedKeys() {
     }();
     return keys;
 }
+
+HeldDriveKeys driveControls(const std::function<bool(int key)>& held) {
+    auto either = [&](int a, int b) { return held(a) || held(b); };
+    const bool gas = either(GLFW_KEY_W, GLFW_KEY_UP), brake = either(GLFW_KEY_S, GLFW_KEY_DOWN);
+    const bool left = either(GLFW_KEY_A, GLFW_KEY_LEFT), right = either(GLFW_KEY_D, GLFW_KEY_RIGHT);
+    HeldDriveKeys k;
+    k.controls.throttle = float(gas) - float(brake);
+    k.controls.steer = float(left) - float(right);
+    k.any = gas || brake || left || right;
+    return k;
+}
+
+const std::vector<int>& driveKeys() {
+    static const std::vector<int> keys{GLFW_KEY_W, GLFW_KEY_UP,   GLFW_KEY_S,     GLFW_KEY_DOWN,
+                                       GLFW_KEY_A, GLFW_KEY_LEFT, GLFW_KEY_D,     GLFW_KEY_RIGHT};
+    return keys;
+}
+
+const char* driveKeysHelp() { return "W/Up accelerate, S/Down brake/reverse, A/D or Left/Right steer, R autopilot"; }
 
 FlyControls flyControls(const std::function<bool(int key)>& held) {
     auto axis = [&](int negative, int positive) { return float(held(positive)) - float(held(negative)); };
@@ -77,6 +100,10 @@ int keyNamed(const std::string& name) {
     if (name == "t") return GLFW_KEY_T;
     if (name == "c") return GLFW_KEY_C;
     if (name == "p") return GLFW_KEY_P;
+    if (name == "r") return GLFW_KEY_R;
+    if (name == "h") return GLFW_KEY_H;
+    if (name == "v") return GLFW_KEY_V;
+    if (name == "b") return GLFW_KEY_B;
     if (name == "esc") return GLFW_KEY_ESCAPE;
     static const std::pair<const char*, int> fly[] = {
         {"w", GLFW_KEY_W},         {"a", GLFW_KEY_A},     {"s", GLFW_KEY_S},          {"d", GLFW_KEY_D},
@@ -131,7 +158,7 @@ WindowScript parseWindowScript(const std::string& script) {
         auto bad = [&](const char* why) {
             return engine::UsageError("--script entry '" + entry + "': " + why +
                                  " (expected FRAME:KEY, FIRST-LAST:KEY, FRAME:size=WxH or FRAME:minimize=MS, KEY one "
-                                 "of 1-8 T C P Esc W A S D Q E Space Ctrl Left Right Up Down, optionally shift+)");
+                                 "of 1-8 T C P R H V B Esc W A S D Q E Space Ctrl Left Right Up Down, optionally shift+)");
         };
         if (colon == std::string::npos) throw bad("no ':'");
         ScriptedKey k;

@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/core/error.hpp"
+#include "hud_text.hpp"
 #include "racer_options.hpp"
 #include "render_size.hpp"
 #include "window_keys.hpp"
@@ -59,7 +60,16 @@ struct TitleStats {
             text += buf;
         }
         if (camera == CameraMode::Free) text += std::string(" | ") + flyKeysHelp();
+        if (camera == CameraMode::Chase) text += std::string(" | ") + driveKeysHelp();
         return text;
+    }
+    // The same means for the HUD (technique, backend and size filled in when it is drawn).
+    HudFacts hudFacts() const {
+        HudFacts f;
+        f.timeSpan = "mean of " + std::to_string(frames) + " frames";
+        f.frameMs = frames ? frameMs / frames : -1.0;
+        for (const auto& [name, ms] : passes) f.passes.push_back({name, ms / std::max(1, frames), false});
+        return f;
     }
 };
 
@@ -72,6 +82,55 @@ bool trySetTechnique(FrameRenderer& frame, TechniqueKind kind) {
         std::printf("racer: technique %s unavailable, keeping %s: %s\n", transparency::techniqueName(kind),
                     transparency::techniqueName(frame.technique()), e.what());
         return false;
+    }
+}
+
+void printCompare(const FrameRenderer& frame) {
+    if (const auto right = frame.comparedTechnique())
+        std::printf("racer: compare %s (left) | %s (right)\n", transparency::techniqueName(frame.technique()),
+                    transparency::techniqueName(*right));
+    else
+        std::printf("racer: compare off\n");
+}
+
+// V: compare with `with` (or the next technique that runs here after it), or stop comparing.
+void toggleCompare(FrameRenderer& frame, TechniqueKind with) {
+    if (frame.comparedTechnique()) {
+        frame.setCompare(std::nullopt);
+        printCompare(frame);
+        return;
+    }
+    const auto all = transparency::allTechniques();
+    const int n = int(all.size());
+    const int first = int(std::find(all.begin(), all.end(), with) - all.begin());
+    for (int k = 0; k < n; ++k) {
+        try {
+            frame.setCompare(all[std::size_t((first + k) % n)]);
+            printCompare(frame);
+            return;
+        } catch (const engine::Error& e) {
+            std::printf("racer: cannot compare with %s: %s\n", transparency::techniqueName(all[std::size_t((first + k) % n)]),
+                        e.what());
+        }
+    }
+}
+
+// B: the next compared technique that runs here (while comparing).
+void stepCompared(FrameRenderer& frame) {
+    const auto current = frame.comparedTechnique();
+    if (!current) return;
+    const auto all = transparency::allTechniques();
+    const int n = int(all.size());
+    const int at = int(std::find(all.begin(), all.end(), *current) - all.begin());
+    for (int k = 1; k < n; ++k) {
+        const TechniqueKind next = all[std::size_t((at + k) % n)];
+        try {
+            frame.setCompare(next);
+            printCompare(frame);
+            return;
+        } catch (const engine::Error& e) {
+            std::printf("racer: cannot compare with %s: %s\n", transparency::techniqueName(next), e.what());
+        }
     }
 }
 
@@ -228,16 +287,18 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
     std::map<int, bool> wasDown;
     const bool uploads = static_cast<engine::render::Backend*>(&presenter) != &renderer;
     CameraMode camera = settings.camera;
-    FreeCamera flyer;  // starts at the overview a headless --camera free run renders
+    PlayerInput input;  // the free camera starts at the overview a headless --camera free run renders
     MouseLook mouse(window.window());
     RenderSize size(frame);
     MinimisedWait minimised;
-    bool paused = false;
+    bool paused = false, hudShown = settings.hud;
+    HudFacts hud;  // the last title update's means
     double time = 0.0, totalMs = 0.0;
     TitleStats stats;
     Clock::time_point last = Clock::now(), titleShown = last;
     WindowLoopResult result;
     if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
+    if (camera == CameraMode::Chase) std::printf("racer: drive: %s\n", driveKeysHelp());
 
     while (settings.frames == 0 || result.frames < settings.frames) {
         window.pollEvents();
@@ -264,6 +325,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
         for (; nextKey < script.keys.size() && script.keys[nextKey].frame <= result.frames; ++nextKey)
             actions.push_back(actionForKey(script.keys[nextKey].key, script.keys[nextKey].shift));
         bool quit = false;
+        input.autopilot = false;
         for (const KeyAction& a : actions) {
             switch (a.action) {
                 case WindowAction::Quit: quit = true; break;
@@ -276,6 +338,17 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
                     camera = nextCamera(camera);
                     std::printf("racer: camera %s\n", cameraName(camera));
                     if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
+                    if (camera == CameraMode::Chase) std::printf("racer: drive: %s\n", driveKeysHelp());
+                    break;
+                case WindowAction::ToggleHud:
+                    hudShown = !hudShown;
+                    std::printf("racer: HUD %s\n", hudShown ? "on" : "off");
+                    break;
+                case WindowAction::ToggleCompare: toggleCompare(frame, settings.compareWith); break;
+                case WindowAction::NextCompared: stepCompared(frame); break;
+                case WindowAction::Autopilot:
+                    input.autopilot = true;
+                    std::printf("racer: autopilot\n");
                     break;
                 case WindowAction::TogglePause:
                     paused = !paused;
@@ -295,21 +368,36 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
         const double step = settings.fixedDt > 0.0 ? settings.fixedDt : std::min(wall, kMaxWallStep);
         const double dt = paused ? 0.0 : step;
         // The free camera flies by the frame's step, paused or not (a paused frame can be
-        // looked around); its keys do nothing with the other cameras.
+        // looked around); the chase camera's keys drive the car. Each camera's keys do
+        // nothing with the others.
+        const auto held = [&](int key) {
+            return glfwGetKey(window.window(), key) == GLFW_PRESS || scriptHolds(script.keys, result.frames, key);
+        };
         const glm::vec2 look = mouse.motion(camera == CameraMode::Free);
         if (camera == CameraMode::Free) {
-            FlyControls controls = flyControls([&](int key) {
-                return glfwGetKey(window.window(), key) == GLFW_PRESS || scriptHolds(script.keys, result.frames, key);
-            });
+            FlyControls controls = flyControls(held);
             controls.look = look;
-            flyer = flyStep(flyer, controls, float(step));
+            input.free = flyStep(input.free, controls, float(step));
         }
+        input.drive = camera == CameraMode::Chase ? driveControls(held) : HeldDriveKeys{};
         // As the headless loop: frame i steps the world by dt and sees the camera at i * dt,
         // so a window with --fixed-dt shows the frames a headless run captures.
         const FrameSize rendering = size.current();
         const SceneFrame scene =
-            source(float(time), float(dt), camera, flyer, float(rendering.width) / float(rendering.height));
+            source(float(time), float(dt), camera, input, float(rendering.width) / float(rendering.height));
         time += dt;
+        if (hudShown) {
+            hud.technique = transparency::techniqueName(frame.technique());
+            hud.backend = renderer.name();
+            hud.width = rendering.width;
+            hud.height = rendering.height;
+            hud.extra = std::string("camera ") + cameraName(camera) + (paused ? " (paused)" : "");
+            if (const auto right = frame.comparedTechnique())
+                hud.extra += "; " + compareHudLine(hud.technique, transparency::techniqueName(*right));
+            frame.setHud(hudLines(hud));
+        } else {
+            frame.setHud({});
+        }
         try {
             frame.render(scene.lists, scene.camera);
         } catch (const engine::Error& e) {
@@ -332,11 +420,12 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
         stats.add(ms, renderer.takeTimings());
         if (std::chrono::duration<double>(Clock::now() - titleShown).count() >= kTitleInterval) {
             glfwSetWindowTitle(window.window(), stats.title(frame.technique(), camera, paused, size.current()).c_str());
+            hud = stats.hudFacts();
             stats = {};
             titleShown = Clock::now();
         }
     }
-    if (camera == CameraMode::Free) printPose(flyer);
+    if (camera == CameraMode::Free) printPose(input.free);
     result.meanFrameMs = totalMs / std::max(1, result.frames);
     return result;
 }

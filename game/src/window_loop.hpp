@@ -7,8 +7,8 @@
 // aspect; a minimised window renders nothing and waits for events. Keys: window_keys.hpp;
 // with the free camera they (and the mouse, right button held) fly it from the headless
 // overview pose, and its final pose is printed ("racer: free camera at (x, y, z), ...").
-// The title bar shows technique, camera (and the fly keys), render size, fps and per-pass
-// milliseconds, four times a second.
+// The title bar (and the HUD, key H) show technique, camera (and its keys), render size,
+// fps and per-pass milliseconds, averaged over a quarter of a second.
 #include <string>
 
 #include "engine/render/gl/gl_backend.hpp"
@@ -23,6 +23,10 @@ struct WindowLoopSettings {
     double fixedDt = 0.0;    // 0: the wall clock's step (at most 0.1 s)
     CameraMode camera = CameraMode::Chase;
     std::string script;      // parseWindowScript's format (racer --script)
+    bool hud = false;        // the HUD shown from the first frame (H toggles it)
+    // V turns the compare on with this technique on the right (B steps it); the frame may
+    // start comparing (FrameRenderer::setCompare).
+    transparency::TechniqueKind compareWith = transparency::TechniqueKind::AlphaTest;
 };
 
 struct WindowLoopResult {

@@ -31,6 +31,10 @@ TEST(WindowKeys, LettersAndEscape) {
     EXPECT_EQ(actionForKey(GLFW_KEY_T, true).action, WindowAction::PreviousTechnique);
     EXPECT_EQ(actionForKey(GLFW_KEY_C, false).action, WindowAction::NextCamera);
     EXPECT_EQ(actionForKey(GLFW_KEY_P, false).action, WindowAction::TogglePause);
+    EXPECT_EQ(actionForKey(GLFW_KEY_R, false).action, WindowAction::Autopilot);
+    EXPECT_EQ(actionForKey(GLFW_KEY_H, false).action, WindowAction::ToggleHud);
+    EXPECT_EQ(actionForKey(GLFW_KEY_V, false).action, WindowAction::ToggleCompare);
+    EXPECT_EQ(actionForKey(GLFW_KEY_B, false).action, WindowAction::NextCompared);
     EXPECT_EQ(actionForKey(GLFW_KEY_ESCAPE, false).action, WindowAction::Quit);
     EXPECT_EQ(actionForKey(GLFW_KEY_X, false).action, WindowAction::None);
 }
@@ -41,6 +45,28 @@ TEST(WindowKeys, EveryMappedKeyIsWatched) {
         const bool watched = std::find(watchedKeys().begin(), watchedKeys().end(), key) != watchedKeys().end();
         EXPECT_EQ(mapped, watched) << "GLFW key " << key;
     }
+}
+
+TEST(WindowKeys, DriveKeysAccelerateBrakeAndSteer) {
+    auto holding = [](std::initializer_list<int> keys) {
+        return driveControls([keys](int key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); });
+    };
+    EXPECT_FALSE(holding({}).any);
+    EXPECT_EQ(holding({}).controls, DriveControls{});
+    EXPECT_EQ(holding({GLFW_KEY_W}).controls, (DriveControls{1.0f, 0.0f}));
+    EXPECT_EQ(holding({GLFW_KEY_UP, GLFW_KEY_LEFT}).controls, (DriveControls{1.0f, 1.0f}));
+    EXPECT_EQ(holding({GLFW_KEY_S, GLFW_KEY_D}).controls, (DriveControls{-1.0f, -1.0f}));
+    EXPECT_EQ(holding({GLFW_KEY_DOWN, GLFW_KEY_RIGHT}).controls, (DriveControls{-1.0f, -1.0f}));
+    EXPECT_EQ(holding({GLFW_KEY_W, GLFW_KEY_S, GLFW_KEY_A, GLFW_KEY_D}).controls, DriveControls{});  // cancel
+    EXPECT_TRUE(holding({GLFW_KEY_W, GLFW_KEY_S}).any);  // still a hand on the wheel
+    EXPECT_FALSE(holding({GLFW_KEY_Q, GLFW_KEY_SPACE, GLFW_KEY_R}).any);
+    for (int key : driveKeys()) {
+        EXPECT_TRUE(holding({key}).any) << key;
+        EXPECT_EQ(actionForKey(key, false).action, WindowAction::None) << key;  // driving never switches anything
+    }
+    EXPECT_EQ(parseWindowScript("3:r").keys[0].key, GLFW_KEY_R);
+    EXPECT_EQ(parseWindowScript("3:H").keys[0].key, GLFW_KEY_H);
+    EXPECT_EQ(parseWindowScript("3:v,4:B").keys[1].key, GLFW_KEY_B);
 }
 
 TEST(WindowKeys, ScriptParsesAndSortsByFrame) {

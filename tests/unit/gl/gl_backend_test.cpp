@@ -3,6 +3,7 @@
 // winding, scissor), formats, resolves, programs, timings and pipeline info. Where the
 // soft backend is the reference, the same calls run on both and the results are compared.
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -134,6 +135,38 @@ TEST_F(GlBackendTest, ClearsMatchSoftForEveryFormat) {
     const render::Readback r = gfx().readback(depth);
     EXPECT_EQ(r.channels, 1);
     EXPECT_EQ(r.at(1, 1, 0), 0.375f);
+}
+
+// A readback is read in bands of whole rows (GlOptions::readbackBandBytes: a 16384x16384 float
+// readback would wrap the GLsizei byte count of one call). Bands of 3 rows over 11 rows, the
+// last one short, read exactly what one call reads, for 8-bit (through one band-sized byte
+// buffer, sRGB through its view) and float formats.
+TEST(GlReadbackTest, BandsOfRowsReadWhatOneCallReads) {
+    constexpr int w = 7, h = 11;
+    for (Format f : {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::R8_UNORM, Format::RGBA32F, Format::R32F}) {
+        const render::FormatInfo& info = render::formatInfo(f);
+        const std::size_t texelBytes = info.isNormalized() ? info.channels : info.channels * sizeof(float);
+        std::vector<std::byte> texels(w * h * texelBytes);
+        if (info.isNormalized()) {
+            for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = std::byte(i * 37 % 251);
+        } else {
+            for (std::size_t i = 0; i < texels.size(); i += sizeof(float)) {
+                const float v = float(i) * 0.25f - 7.0f;
+                std::memcpy(&texels[i], &v, sizeof v);
+            }
+        }
+        gl::GlOptions banded;
+        banded.readbackBandBytes = 3 * w * texelBytes;
+        auto whole = makeGl(), bands = makeGl(banded);
+        const render::TextureDesc desc{"bands", w, h, f};
+        const render::TextureData data{{std::span<const std::byte>(texels)}};
+        const render::Readback expected = whole->readback(whole->createTexture(desc, &data));
+        const render::Readback got = bands->readback(bands->createTexture(desc, &data));
+        expectSame(got, expected, std::string(render::formatName(f)) + " in bands of 3 rows");
+        if (info.isNormalized()) {
+            EXPECT_EQ(got.at(w - 1, h - 1, info.channels - 1), float(texels.back()) / 255.0f) << render::formatName(f);
+        }
+    }
 }
 
 // NDC +y is row 0, which is the top of a Readback; a rect of the top-left quadrant lands there.

@@ -3,7 +3,8 @@
 // The OpenGL 4.5 core backend's class, whose members are defined by concern:
 //   gl_backend.cpp    the context check, the vertex layout, tear-down
 //   gl_resources.cpp  textures, buffers, programs, pipelines and occlusion queries
-//   gl_passes.cpp     passes (framebuffer, clears, queries), resolve, readback, present
+//   gl_passes.cpp     passes (framebuffer, clears, queries), resolve, present
+//   gl_readback.cpp   readback, in row bands
 //   gl_draw.cpp       one draw: its fixed-function state, the fail-mode steps, the GL calls
 // Draws execute as they are recorded (GL queues them); every piece of fixed-function state a
 // draw depends on is set for that pass or draw, so a host engine sharing the context may

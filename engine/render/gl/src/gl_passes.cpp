@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 // GL backend: a pass's framebuffer, clears, timer and occlusion queries and conditional
-// rendering; resolves, readbacks and presenting to a window.
+// rendering; resolves and presenting to a window (readbacks: gl_readback.cpp).
 #include <algorithm>
 #include <string>
 #include <utility>
 
 #include "engine/core/error.hpp"
-#include "engine/render/memory_budget.hpp"
 #include "gl_backend_impl.hpp"
 #include "gl_check.hpp"
 #include "gl_enums.hpp"
@@ -179,48 +178,6 @@ void GlBackendImpl::resolve(const ResolveDesc& r) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl(what);
-}
-
-Readback GlBackendImpl::readback(TextureHandle h) {
-    const GlTexture& t = textures_.get(h);
-    validateReadback(t.desc);
-    const FormatInfo& info = formatInfo(t.desc.format);
-    const GlFormat f = glFormat(t.desc.format);
-    Readback r;
-    r.width = t.desc.width;
-    r.height = t.desc.height;
-    r.channels = info.channels;
-    r.format = t.desc.format;
-    const std::size_t values = std::size_t(r.width) * r.height * r.channels;
-    checkFitsInMemory(values * sizeof(float), "readback of " + quotedName(t.desc.name) + " as float", hostMemoryAvailable);
-    r.values.resize(values);
-    makeCurrent();
-    drainGlErrors();
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
-    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    const std::string what = "readback of " + quotedName(t.desc.name);
-    if (info.isNormalized()) {
-        // Stored codes / 255; sRGB is not decoded (a texture view as RGBA8 reads the codes).
-        std::vector<std::uint8_t> bytes(values);
-        GLuint source = t.id, view = 0;
-        if (info.isSrgb) {
-            glGenTextures(1, &view);
-            glTextureView(view, GL_TEXTURE_2D, t.id, GL_RGBA8, 0, 1, 0, 1);
-            checkGl(what + ": viewing the sRGB texture as RGBA8");
-            source = view;
-        }
-        glGetTextureImage(source, 0, f.pixelFormat, GL_UNSIGNED_BYTE, GLsizei(bytes.size()), bytes.data());
-        if (view) glDeleteTextures(1, &view);
-        checkGl(what);
-        for (std::size_t i = 0; i < values; ++i) r.values[i] = float(bytes[i]) / 255.0f;
-    } else {
-        glGetTextureImage(t.id, 0, f.pixelFormat, GL_FLOAT, GLsizei(values * sizeof(float)), r.values.data());
-        checkGl(what);
-    }
-    return r;
 }
 
 std::vector<PassTiming> GlBackendImpl::takeTimings() {

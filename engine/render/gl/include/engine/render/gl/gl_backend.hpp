@@ -31,6 +31,7 @@
 // llvmpipe (Mesa 22.x) defects worked around: a TIME_ELAPSED query begun before the first draw
 // into a framebuffer, non-indexed draws of three triangles with a zero-area last one, and the
 // scissor of multisampled targets (gl_shaders.cpp, gl_passes.cpp say where).
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -57,6 +58,10 @@ struct GlOptions {
     bool debugOutput = false;  // KHR_debug messages (errors, performance) to the log
     FailModeStrategy failModes = FailModeStrategy::TwoPass;
     bool nativeAlphaToCoverage = false;
+    // readback() reads at most this many bytes per GL call (whole rows, at least one; never
+    // over GLsizei's 2 GiB - 1, which a 16384x16384 float readback would wrap). Smaller bands
+    // only cost calls; tests set it small to read in many bands.
+    std::size_t readbackBandBytes = std::size_t(1) << 30;
 };
 
 struct GlInfo {

@@ -1,0 +1,35 @@
+# SPDX-License-Identifier: MIT
+# racer --backend soft --camera chase in a window (under xvfb-run): left to the autopilot,
+# its capture is byte-identical to the headless capture; with DRIVE_SCRIPT (drive keys
+# held, e.g. "0-5:W,0-5:A") the player takes the wheel, racer says so at exit and the
+# capture differs (the driven car, and the chase camera behind it, reach the renderer).
+include(${CMAKE_CURRENT_LIST_DIR}/run_with_display_retry.cmake)
+separate_arguments(args UNIX_COMMAND "${ARGS}")
+set(autopilot ${OUT}/drive_autopilot.png)
+set(driven ${OUT}/drive_driven.png)
+set(headless ${OUT}/drive_headless.png)
+file(REMOVE ${autopilot} ${driven} ${headless})
+function(run_window capture expect)
+  run_with_display_retry(rc log ${XVFB} -a ${RACER} ${args} ${ARGN} --capture ${capture})
+  if(NOT rc EQUAL 0 OR NOT log MATCHES "camera chase, backend soft.*, window")
+    message(FATAL_ERROR "windowed racer ${ARGN} exited with ${rc} or did not open a window")
+  endif()
+  if(NOT log MATCHES "${expect}")
+    message(FATAL_ERROR "windowed racer ${ARGN}: no '${expect}' in its output:\n${log}")
+  endif()
+endfunction()
+run_window(${autopilot} "on the autopilot")
+run_window(${driven} "driven by the player" --script ${DRIVE_SCRIPT})
+execute_process(COMMAND ${CMAKE_COMMAND} -E env DISPLAY= ${RACER} --headless ${args} --capture ${headless}
+                RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "headless racer exited with ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${autopilot} ${headless} RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "the autopilot's window frame differs from the headless capture")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${driven} ${autopilot} RESULT_VARIABLE same)
+if(same EQUAL 0)
+  message(FATAL_ERROR "driving (--script ${DRIVE_SCRIPT}) left the chase camera's frame unchanged")
+endif()
