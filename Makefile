@@ -78,9 +78,11 @@ demo: build
 	  $(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --compare ssam,alpha-test --capture out/compare.png; fi
 
 # The README's pictures, rendered by the project itself (small PNGs in content/readme/):
-# the pre-race pan with SSAM (and each of its intermediate targets) and with alpha testing.
+# the default demo's chase view in the forest, the pre-race pan with SSAM (and each of its intermediate targets) and with alpha testing.
 README_FLAGS := --headless --size 480x270 --frames 2 --camera pan
 readme-images: build
+	# The first picture: the default demo's last frame in the forest (make demo, at 480x270).
+	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 90 --fixed-dt 0.0333333 --capture content/readme/racer.png
 	$(BUILD_DIR)/bin/racer $(README_FLAGS) --technique ssam --capture out/readme/ssam.png \
 	  --capture-layers --layer-pictures content/readme
 	$(BUILD_DIR)/bin/racer $(README_FLAGS) --technique alpha-test --capture content/readme/alpha_test.png

@@ -46,8 +46,10 @@ CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float asp
         case CameraMode::Chase: {
             const Car& car = scene.registry().get<Car>(scene.car());
             const glm::vec3 p = car.position, f = car.forward;  // the track's, or the player's car's
-            eye = p - f * 11.0f + up * 3.8f;
-            target = p + f * 10.0f + up * 1.2f;
+            // High enough that the line of sight to the car passes over the dust its wheels
+            // throw up behind it (modules/particles), low enough to look down the forest road.
+            eye = p - f * 9.5f + up * 5.8f;
+            target = p + f * 14.0f + up * 0.5f;
             break;
         }
         case CameraMode::Pan: {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "living_scene.hpp"
 
+#include "ground.hpp"
 #include "track.hpp"
 
 #if SSAM_HAS_WIND
@@ -24,17 +25,19 @@ namespace racer {
 
 #if SSAM_HAS_GRASS
 namespace {
-// Tufts in a band on both sides of the track, clear of the road, every ~0.8 m along it.
+// Tufts in a band on both sides of the track, clear of the road, every ~0.8 m along it, on
+// the racing scene's ground (the same function of the track the scene builds).
 std::vector<grass::Tuft> tuftsAlong(const Track& track, std::uint32_t seed) {
+    const Ground ground(track);
     Random random(seed * 31u + 7u);
     std::vector<grass::Tuft> tufts;
     for (float d = 0.0f; d < track.length(); d += 0.8f) {
         const glm::vec3 p = track.position(d), f = track.forward(d);
         const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
         for (int row = 0; row < 6; ++row) {
-            const float offset = track.width() * 0.5f + 0.6f + float(row) * 1.6f + random.uniform(0.0f, 1.2f);
+            const float offset = track.width() * 0.5f + Track::kShoulderWidth + 0.3f + float(row) * 1.6f + random.uniform(0.0f, 1.2f);
             glm::vec3 q = p + side * (row % 2 ? offset : -offset) + f * random.uniform(-0.4f, 0.4f);
-            q.y = terrainHeight(q.x, q.z);
+            q.y = ground.height(q.x, q.z);
             tufts.push_back({q, random.uniform(0.0f, 6.2832f), random.uniform(0.7f, 1.3f)});
         }
     }

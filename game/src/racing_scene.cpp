@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <numbers>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -30,25 +28,31 @@ glm::quat yaw(float radians) { return glm::angleAxis(radians, glm::vec3(0.0f, 1.
 }  // namespace
 
 RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
-    : library_(backend), track_(options.seed) {
+    : library_(backend), track_(options.seed), ground_(track_) {
     const std::filesystem::path& content = options.contentDir;
     Random random(options.seed);
 
-    // Ground and road, built from the same height field the track follows.
+    // The ground in chunks (each culled on its own), the road and its gravel shoulders.
+    scene::PartMaterial groundMaterial;
+    groundMaterial.doubleSided = true;
+    groundMaterial.baseColor = loadContentTexture(backend, content / "textures" / "ground.png");
+    const std::vector<GroundChunk> chunks = ground_.buildChunks();
+    for (std::size_t i = 0; i < chunks.size(); ++i)
+        placeModel(registry_, library_.add("ground " + std::to_string(i), chunks[i].vertices, chunks[i].indices, groundMaterial),
+                   {}, 0.0f, 1.0f);
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
-    buildTerrain(2000.0f, 160, vertices, indices);
-    scene::PartMaterial ground;
-    ground.doubleSided = true;
-    ground.baseColor = loadContentTexture(backend, content / "textures" / "ground.png");
-    placeModel(registry_, library_.add("terrain", vertices, indices, ground), {}, 0.0f, 1.0f);
-    vertices.clear();
-    indices.clear();
     track_.buildRoad(vertices, indices);
     scene::PartMaterial road;
     road.doubleSided = true;
     road.baseColor = loadContentTexture(backend, content / "textures" / "track.png");
     placeModel(registry_, library_.add("road", vertices, indices, road), {}, 0.0f, 1.0f);
+    vertices.clear();
+    indices.clear();
+    track_.buildShoulders(Ground::kCorridorDrop, vertices, indices);
+    scene::PartMaterial shoulder = road;  // the asphalt's grit, tinted to gravel
+    shoulder.baseColorFactor = {1.45f, 1.2f, 0.85f, 1.0f};
+    placeModel(registry_, library_.add("shoulders", vertices, indices, shoulder), {}, 0.0f, 1.0f);
 
     // Foliage models: every tree_*/bush_* file in content/models, in name order.
     std::vector<std::filesystem::path> treeFiles, bushFiles;
@@ -64,57 +68,10 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     std::vector<scene::ModelId> trees, bushes;
     for (const auto& f : treeFiles) trees.push_back(loadContentModel(library_, f));
     for (const auto& f : bushFiles) bushes.push_back(loadContentModel(library_, f));
-
-    // Each draw from `random` is sequenced on its own: C++ leaves the evaluation order of a
-    // call's arguments (and of most operators' operands) unspecified, GCC goes right to left
-    // and Clang left to right, so two draws in one expression grow a different forest per
-    // compiler. The order kept is the one GCC gave the goldens: scale, heading, then position.
-    // Trees and bushes line the track on both sides, clear of the road.
-    auto besideTrack = [&](float minOffset, float maxOffset) {
-        const float d = random.uniform(0.0f, track_.length());
-        const glm::vec3 p = track_.position(d), f = track_.forward(d);
-        const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
-        const float distance = random.uniform(minOffset, maxOffset);
-        const float offset = random.next() & 1 ? distance : -distance;
-        glm::vec3 q = p + side * offset;
-        q.y = terrainHeight(q.x, q.z);
-        return q;
-    };
-    for (int i = 0; i < options.trees; ++i) {
-        const scene::ModelId m = trees[random.next() % trees.size()];
-        const float scale = random.uniform(0.8f, 1.3f), heading = random.uniform(0.0f, 6.2832f);
-        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 3.0f, 45.0f), heading, scale);
-    }
-    for (int i = 0; i < options.bushes; ++i) {
-        const scene::ModelId m = bushes[random.next() % bushes.size()];
-        const float scale = random.uniform(0.7f, 1.4f), heading = random.uniform(0.0f, 6.2832f);
-        placeModel(registry_, m, besideTrack(track_.width() * 0.5f + 1.0f, 25.0f), heading, scale);
-    }
-    // A grove across the track from the start line, where the pre-race pan camera looks:
-    // overlapping trees close up, the case where alpha testing sparkles ([Hathaway 2010] §3.4).
-    {
-        const glm::vec3 start = track_.position(0.0f), f = track_.forward(0.0f);
-        const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
-        for (int i = 0; i < options.groveTrees; ++i) {
-            const float along = random.uniform(-30.0f, 30.0f);
-            const float across = random.uniform(track_.width() * 0.5f + 6.0f, 40.0f);
-            glm::vec3 p = start + side * across + f * along;
-            p.y = terrainHeight(p.x, p.z);
-            const bool tree = (random.next() % 3) != 0;
-            const auto& models = tree ? trees : bushes;
-            const float scale = random.uniform(0.9f, 1.4f), heading = random.uniform(0.0f, 6.2832f);
-            placeModel(registry_, models[random.next() % models.size()], p, heading, scale);
-        }
-    }
-    // The vista: a ring of forest out to a few kilometres ([Hathaway 2010] §3.1).
-    for (int i = 0; i < options.vistaTrees; ++i) {
-        const float angle = random.uniform(0.0f, 2.0f * std::numbers::pi_v<float>);
-        const float radius = random.uniform(450.0f, 1900.0f);
-        glm::vec3 p(radius * std::cos(angle), 0.0f, radius * std::sin(angle));
-        p.y = terrainHeight(p.x, p.z);
-        const float scale = random.uniform(1.5f, 2.5f), heading = random.uniform(0.0f, 6.2832f);
-        placeModel(registry_, trees[random.next() % trees.size()], p, heading, scale);
-    }
+    // Every draw from `random` (here and in plantForest) is a statement of its own: C++ leaves
+    // the evaluation order of a call's arguments unspecified (GCC right to left, Clang left to
+    // right), so two draws in one expression would grow a different scene per compiler.
+    plantForest(registry_, track_, ground_, trees, bushes, random, options.forest);
 
     // Water pools (glTF BLEND material): one among the grove's trees, the rest in the infield.
     const scene::ModelId water = loadContentModel(library_, content / "models" / "water.glb");
@@ -122,7 +79,7 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
         const glm::vec3 start = track_.position(0.0f), f = track_.forward(0.0f);
         const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
         glm::vec3 p = start + side * (track_.width() * 0.5f + 9.0f) - f * 4.0f;
-        p.y = terrainHeight(p.x, p.z) + 0.3f;
+        p.y = ground_.height(p.x, p.z) + 0.3f;
         placeModel(registry_, water, p, 0.0f, 2.2f);
 
         // The sun 17 degrees above the horizon, straight behind the grove from the start line.
@@ -134,7 +91,7 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     for (int i = 0; i < 4; ++i) {
         const float angle = float(i) * 1.5708f + 0.4f;
         glm::vec3 p(95.0f * std::cos(angle), 0.0f, 95.0f * std::sin(angle));
-        p.y = terrainHeight(p.x, p.z) + 0.3f;
+        p.y = ground_.height(p.x, p.z) + 0.3f;
         const float scale = random.uniform(2.0f, 3.5f), heading = random.uniform(0.0f, 6.2832f);
         placeModel(registry_, water, p, heading, scale);
     }
@@ -155,7 +112,7 @@ void RacingScene::update(float dt) {
     Transform& t = registry_.get<Transform>(car_);
     if (car.driven) {
         car.motion = driveStep(car.motion, controls_, dt,
-                               [this](float x, float z) { return groundHeight(track_, x, z); });
+                               [this](float x, float z) { return groundHeight(track_, ground_, x, z); });
         car.position = t.position = car.motion.position;
         car.forward = headingDirection(car.motion.heading);
         // Pitched about its own x axis, nose up on a rising slope.

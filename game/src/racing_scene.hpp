@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The racing scene on the ECS: terrain and road built in code from the track, models from
-// content/ (trees, bushes, the car, water pools) placed with a seeded PRNG, and the car
-// driving laps. Everything is a function of the seed and the simulated time.
+// The racing scene on the ECS: the ground, road and shoulders built in code from the track
+// (ground.hpp), models from content/ (trees, bushes, the car, water pools) placed with a
+// seeded PRNG (forest.hpp), and the car driving laps. Everything is a function of the seed and
+// the simulated time.
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -10,6 +11,8 @@
 #include "engine/core/ecs/registry.hpp"
 #include "car_driver.hpp"
 #include "engine/scene/mesh_library.hpp"
+#include "forest.hpp"
+#include "ground.hpp"
 #include "track.hpp"
 
 namespace racer {
@@ -28,10 +31,7 @@ struct Car {
 struct SceneOptions {
     std::filesystem::path contentDir;
     std::uint32_t seed = 1;
-    int trees = 260;   // instances along the track
-    int bushes = 160;
-    int vistaTrees = 400;  // far away, towards the horizon
-    int groveTrees = 40;   // across from the start line, framed by the pan camera
+    ForestOptions forest{};
 };
 
 class RacingScene {
@@ -41,6 +41,7 @@ public:
     engine::ecs::Registry& registry() { return registry_; }
     engine::scene::MeshLibrary& library() { return library_; }
     const Track& track() const { return track_; }
+    const Ground& ground() const { return ground_; }
     engine::ecs::Entity car() const { return car_; }
     // A low late-afternoon sun behind the start-line grove as the pre-race pan sees it, so
     // its leaves are backlit and the light shafts fall through them towards the camera.
@@ -61,6 +62,7 @@ private:
     engine::ecs::Registry registry_;
     engine::scene::MeshLibrary library_;
     Track track_;
+    Ground ground_;
     engine::ecs::Entity car_;
     DriveControls controls_;
 };

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace racer {
@@ -45,9 +46,23 @@ Track::Track(std::uint32_t seed) {
         const auto& p3 = control[(i + 2) % kControlPoints];
         for (int s = 0; s < kSamplesPerSegment; ++s) {
             glm::vec3 p = catmullRom(p0, p1, p2, p3, float(s) / kSamplesPerSegment);
-            p.y = terrainHeight(p.x, p.z) + 0.05f;
+            p.y = terrainHeight(p.x, p.z);
             samples_.push_back(p);
         }
+    }
+    // The road's height: the land under the centre line, box-filtered three times along the
+    // loop (close to a Gaussian of sigma 30 m), so grades are gentle and the road does not follow
+    // every bump; the ground is cut down to it (ground.hpp).
+    constexpr int kHalfWindow = 16;
+    const int n = static_cast<int>(samples_.size());
+    for (int pass = 0; pass < 3; ++pass) {
+        std::vector<float> smoothed(samples_.size());
+        for (int i = 0; i < n; ++i) {
+            float sum = 0.0f;
+            for (int k = -kHalfWindow; k <= kHalfWindow; ++k) sum += samples_[std::size_t((i + k + n) % n)].y;
+            smoothed[std::size_t(i)] = sum / float(2 * kHalfWindow + 1);
+        }
+        for (int i = 0; i < n; ++i) samples_[std::size_t(i)].y = smoothed[std::size_t(i)];
     }
     samples_.push_back(samples_.front());  // closed
     cumulative_.push_back(0.0f);
@@ -66,6 +81,18 @@ glm::vec3 Track::position(float distance) const {
     return glm::mix(samples_[i - 1], samples_[i], t);
 }
 
+Track::Nearest Track::nearest(const glm::vec3& p) const {
+    Nearest best{0.0f, std::numeric_limits<float>::infinity()};
+    const glm::vec2 q(p.x, p.z);
+    for (std::size_t i = 0; i + 1 < samples_.size(); ++i) {
+        const glm::vec2 a(samples_[i].x, samples_[i].z), b(samples_[i + 1].x, samples_[i + 1].z), ab = b - a;
+        const float t = std::clamp(glm::dot(q - a, ab) / std::max(glm::dot(ab, ab), 1e-12f), 0.0f, 1.0f);
+        const float offset = glm::length(q - (a + ab * t));
+        if (offset < best.offset) best = {cumulative_[i] + t * (cumulative_[i + 1] - cumulative_[i]), offset};
+    }
+    return best;
+}
+
 glm::vec3 Track::forward(float distance) const {
     const glm::vec3 d = position(distance + 1.0f) - position(distance - 1.0f);
     return glm::normalize(d);
@@ -79,8 +106,7 @@ void Track::buildRoad(std::vector<engine::render::Vertex>& vertices, std::vector
         const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
         for (int s = 0; s < 2; ++s) {
             engine::render::Vertex v;
-            v.position = p + side * (s == 0 ? -0.5f : 0.5f) * width();
-            v.position.y = terrainHeight(v.position.x, v.position.z) + 0.08f;
+            v.position = p + side * (s == 0 ? -0.5f : 0.5f) * width();  // level across: p.y
             v.normal = {0.0f, 1.0f, 0.0f};
             v.uv = {float(s), d / 10.0f};
             vertices.push_back(v);
@@ -88,6 +114,37 @@ void Track::buildRoad(std::vector<engine::render::Vertex>& vertices, std::vector
         if (i < steps) {
             const std::uint32_t b = std::uint32_t(2 * i);
             indices.insert(indices.end(), {b, b + 2, b + 1, b + 1, b + 2, b + 3});
+        }
+    }
+}
+
+void Track::buildShoulders(float drop, std::vector<engine::render::Vertex>& vertices,
+                           std::vector<std::uint32_t>& indices) const {
+    const int steps = static_cast<int>(length_ / 4.0f);
+    const float halfWidth = 0.5f * width();
+    // Across one side: under the asphalt's edge (10 cm in, 2 cm down: hidden, no gap), then
+    // out and down into the ground beside the road.
+    const float across[2] = {halfWidth - 0.1f, halfWidth + kShoulderWidth};
+    const float down[2] = {0.02f, drop + 0.05f};
+    const glm::vec3 slopeNormal = glm::normalize(glm::vec3(down[1] - down[0], across[1] - across[0], 0.0f));
+    for (int side = -1; side <= 1; side += 2) {
+        const std::uint32_t first = std::uint32_t(vertices.size());
+        for (int i = 0; i <= steps; ++i) {
+            const float d = length_ * float(i) / float(steps);
+            const glm::vec3 p = position(d), f = forward(d);
+            const glm::vec3 out = float(side) * glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
+            for (int k = 0; k < 2; ++k) {
+                engine::render::Vertex v;
+                v.position = p + out * across[k] - glm::vec3(0.0f, down[k], 0.0f);
+                // The slope's normal: tilted outwards, in the plane of `out` and up.
+                v.normal = glm::normalize(out * slopeNormal.x + glm::vec3(0.0f, slopeNormal.y, 0.0f));
+                v.uv = {0.2f + 0.2f * float(k), d / 10.0f};
+                vertices.push_back(v);
+            }
+            if (i < steps) {
+                const std::uint32_t b = first + std::uint32_t(2 * i);
+                indices.insert(indices.end(), {b, b + 2, b + 1, b + 1, b + 2, b + 3});
+            }
         }
     }
 }

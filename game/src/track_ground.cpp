@@ -35,19 +35,14 @@ float nearestTrackDistance(const Track& track, float x, float z) {
     return d < 0.0f ? d + track.length() : d;
 }
 
-float groundHeight(const Track& track, float x, float z) {
-    const float terrain = terrainHeight(x, z);
+float groundHeight(const Track& track, const Ground& ground, float x, float z) {
+    const float below = ground.height(x, z);
     const float d = nearestTrackDistance(track, x, z);
     const glm::vec3 p = track.position(d), f = track.forward(d);
     const glm::vec3 side = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
     const float across = glm::dot(glm::vec3(x, 0.0f, z) - glm::vec3(p.x, 0.0f, p.z), side);
-    const float half = 0.5f * track.width();
-    if (std::abs(across) > half) return terrain;
-    // The road mesh's two edge vertices here (Track::buildRoad): 8 cm above the terrain at each.
-    const glm::vec3 left = p - side * half, right = p + side * half;
-    const float leftY = terrainHeight(left.x, left.z) + 0.08f, rightY = terrainHeight(right.x, right.z) + 0.08f;
-    const float road = leftY + (rightY - leftY) * ((across + half) / (2.0f * half));
-    return std::max(terrain, road);
+    if (std::abs(across) > 0.5f * track.width()) return below;
+    return std::max(below, p.y);  // the road mesh is level across at the centre line's height
 }
 
 }  // namespace racer

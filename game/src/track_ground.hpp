@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The racing scene's ground as the player's car feels it (car_driver.hpp): the terrain's
-// height field, and on the road the road's surface, which lies a little above the terrain
-// (track.cpp builds it 8 cm over the terrain at its edges).
+// The racing scene's ground as the player's car feels it (car_driver.hpp): the ground mesh's
+// height (ground.hpp), and on the road the road's surface, level across at the centre line's
+// height (Track::buildRoad), which the ground stays below.
 #include <glm/glm.hpp>
 
+#include "ground.hpp"
 #include "track.hpp"
 
 namespace racer {
@@ -14,9 +15,8 @@ namespace racer {
 // autopilot takes the car back.
 float nearestTrackDistance(const Track& track, float x, float z);
 
-// The height of whatever the car stands on at (x, z): the road's surface within its width
-// (linear across it between its edges, as the road mesh is), else the terrain; never below
-// the terrain.
-float groundHeight(const Track& track, float x, float z);
+// The height of whatever the car stands on at (x, z): the road's surface within its width,
+// else the ground; never below the ground.
+float groundHeight(const Track& track, const Ground& ground, float x, float z);
 
 }  // namespace racer

@@ -76,7 +76,6 @@ bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
     // (program.hpp ParticleParams). Particles behind the eye are skipped.
     const glm::vec3 right(frame.view[0][0], frame.view[1][0], frame.view[2][0]);
     const glm::vec3 up(frame.view[0][1], frame.view[1][1], frame.view[2][1]);
-    const ParticleOptions& o = simulation_.options();
     std::vector<Vertex>& vertices = vertices_;
     std::vector<std::uint32_t>& indices = indices_;
     engine::scene::Aabb bounds;  // of every quad: both passes are scissored to its screen region
@@ -86,7 +85,7 @@ bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
         const float distance = -(frame.view * glm::vec4(p.position, 1.0f)).z;
         const float size = simulation_.sizeOf(p);
         if (!(distance > 0.0f) || !std::isfinite(distance)) continue;
-        const float fadeOut = 1.0f - std::clamp(p.age / o.lifetime, 0.0f, 1.0f);
+        const float opacity = simulation_.opacityOf(p);  // fades with age, thins along its trail
         const std::uint32_t base = std::uint32_t(vertices.size());
         const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
         for (const glm::vec2& c : corners) {
@@ -94,7 +93,7 @@ bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
             v.position = p.position + (right * c.x + up * c.y) * size;
             v.normal = {distance, p.additive, 0.0f};
             v.uv = c * 0.5f + 0.5f;
-            v.color = glm::vec4(glm::vec3(p.color), p.color.a * fadeOut);
+            v.color = glm::vec4(glm::vec3(p.color), p.color.a * opacity);
             vertices.push_back(v);
             bounds.add(v.position);
         }

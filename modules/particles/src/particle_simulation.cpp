@@ -26,6 +26,7 @@ void validate(const ParticleOptions& o) {
     positive(o.startSize, "startSize");
     positive(o.endSize, "endSize");
     positive(o.softness, "softness");
+    positive(o.thinning, "thinning");
     finite(o.drag, "drag");
     finite(o.gravity, "gravity");
     if (o.drag < 0.0f) throw engine::Error("ParticleOptions.drag must be >= 0");
@@ -68,6 +69,11 @@ float ParticleSimulation::sizeOf(const Particle& p) const {
     return options_.startSize + (options_.endSize - options_.startSize) * t;
 }
 
+float ParticleSimulation::opacityOf(const Particle& p) const {
+    const float fadeOut = 1.0f - std::clamp(p.age / options_.lifetime, 0.0f, 1.0f);
+    return fadeOut * std::exp(-std::max(p.travelled, 0.0f) / options_.thinning);
+}
+
 bool ParticleSimulation::emit(const Particle& p) {
     if (particles_.size() >= options_.maxParticles) {
         ++refused_;
@@ -90,6 +96,7 @@ void ParticleSimulation::update(engine::ecs::Registry& registry, float dt) {
         if (p.age >= options_.lifetime) continue;
         p.velocity = p.velocity * damping - glm::vec3(0.0f, options_.gravity * dt, 0.0f);
         p.position += p.velocity * dt;
+        p.travelled += glm::length(p.velocity) * dt;
         particles_[kept++] = p;
     }
     particles_.resize(kept);

@@ -22,6 +22,10 @@ struct ParticleOptions {
     float drag = 1.2f;                 // 1/s
     float gravity = 1.5f;              // m/s^2 (dust settles slowly)
     float softness = 0.6f;             // metres of soft fade into the scene behind, > 0
+    // Metres a particle travels from the wheel over which its opacity falls to 1/e, > 0: the
+    // dust is thick at the wheels and thins along its trail, so a camera behind sees the car
+    // through it rather than a wall of dust.
+    float thinning = 2.5f;
     bool halfResolution = true;        // the layer at half size, upsampled by depth
 };
 
@@ -47,6 +51,7 @@ struct Particle {
     float age = 0.0f;
     float additive = 0.0f;  // 0 dust (alpha-blended), 1 spray (additive)
     glm::vec4 color{1.0f};
+    float travelled = 0.0f;  // metres moved since it was spawned (update() adds each step's path)
 };
 
 class ParticleSimulation {
@@ -64,6 +69,9 @@ public:
 
     const std::vector<Particle>& particles() const { return particles_; }
     float sizeOf(const Particle& p) const;
+    // What its colour's alpha is multiplied by: 1 at birth, fading linearly to 0 over the
+    // lifetime and by exp(-travelled / thinning) along its path from the wheel.
+    float opacityOf(const Particle& p) const;
     // How many spawns the cap refused since construction.
     std::size_t refused() const { return refused_; }
 
