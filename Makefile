@@ -85,7 +85,6 @@ readme-images: build
 	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 90 --fixed-dt 0.0333333 --capture content/readme/racer.png
 	$(BUILD_DIR)/bin/racer $(README_FLAGS) --technique ssam --capture out/readme/ssam.png \
 	  --capture-layers --layer-pictures content/readme
-	$(BUILD_DIR)/bin/racer $(README_FLAGS) --technique alpha-test --capture content/readme/alpha_test.png
 	# The living scene: the pan when the car passes the start line (55.9 s at 0.1 s steps).
 	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 559 --fixed-dt 0.1 --camera pan \
 	  --capture content/readme/living_scene.png
