@@ -10,8 +10,6 @@
 #include <optional>
 #include <thread>
 
-#include <time.h>
-
 #include "bench_frame.hpp"
 #include "counting_backend.hpp"
 #include "engine/capture/image_write.hpp"
@@ -20,6 +18,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "frame_timing.hpp"
 #include "rss_peak.hpp"
 
 namespace bench {
@@ -29,18 +28,6 @@ using engine::capture::Image;
 using transparency::TechniqueKind;
 
 namespace {
-
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // The exact reference of one scene: the still frame and the pan, on the soft backend.
 struct ReferenceFrames {

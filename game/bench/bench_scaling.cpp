@@ -10,9 +10,8 @@
 #include <map>
 #include <memory>
 
-#include <time.h>
-
 #include "bench_frame.hpp"
+#include "frame_timing.hpp"
 #include "bench_runner.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
@@ -27,18 +26,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr TechniqueKind kTechniques[] = {TechniqueKind::Ssam, TechniqueKind::AlphaTest};
-
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // Times one technique's frame of `view` at one size: warm-up frames, then the median of the
 // timed ones (wall and process CPU time, as ssam-bench's rows).
