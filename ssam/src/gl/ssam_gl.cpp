@@ -452,8 +452,18 @@ struct ScreenSpaceAlphaMaskGl::Impl {
 // ---- Public calls: each one Impl step inside run() -----------------------------------------
 
 namespace {
+
 constexpr const char* kMovedFrom = "ssam::gl: this ScreenSpaceAlphaMaskGl was moved from (or out of memory)";
+
+// A public call's frame: InvalidCall on a moved-from object, else `step(impl)` inside
+// Impl::run, which turns a Failure (or any exception) into its Status and message.
+template <class ImplPointer, class Step>
+Status runStep(ImplPointer& impl, Step&& step) noexcept {
+    if (!impl) return Status::InvalidCall;
+    return impl->run([&] { step(*impl); });
 }
+
+}  // namespace
 
 ScreenSpaceAlphaMaskGl::ScreenSpaceAlphaMaskGl() noexcept : impl_(new (std::nothrow) Impl) {}
 ScreenSpaceAlphaMaskGl::~ScreenSpaceAlphaMaskGl() { release(); }
@@ -493,9 +503,7 @@ void ScreenSpaceAlphaMaskGl::release() noexcept {
 }
 
 Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    Impl& s = *impl_;
-    return s.run([&] {
+    return runStep(impl_, [&](Impl& s) {
         if (s.phase != Phase::Idle) throw Failure(Status::InvalidCall, "ssam::gl: setSettings() inside a frame");
         validate(settings);
         if (s.initialized && settings.maskPrecision == MaskPrecision::Rg16f && !s.gl.perBufferBlend)
@@ -539,34 +547,29 @@ Status ScreenSpaceAlphaMaskGl::beginFrame(const FrameDesc& frame, FrameReport* r
 }
 
 Status ScreenSpaceAlphaMaskGl::beginMaskPass(PassInfo* info) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] {
-        const PassInfo pass = impl_->beginMaskPass();
+    return runStep(impl_, [&](Impl& s) {
+        const PassInfo pass = s.beginMaskPass();
         if (info) *info = pass;
     });
 }
 
 Status ScreenSpaceAlphaMaskGl::endMaskPass() noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->endPass(Phase::InMaskPass, "endMaskPass"); });
+    return runStep(impl_, [](Impl& s) { s.endPass(Phase::InMaskPass, "endMaskPass"); });
 }
 
 Status ScreenSpaceAlphaMaskGl::beginColorPass(PassInfo* info) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] {
-        const PassInfo pass = impl_->beginColorPass();
+    return runStep(impl_, [&](Impl& s) {
+        const PassInfo pass = s.beginColorPass();
         if (info) *info = pass;
     });
 }
 
 Status ScreenSpaceAlphaMaskGl::endColorPass() noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->endPass(Phase::InColorPass, "endColorPass"); });
+    return runStep(impl_, [](Impl& s) { s.endPass(Phase::InColorPass, "endColorPass"); });
 }
 
 Status ScreenSpaceAlphaMaskGl::composite() noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->compositeFrame(); });
+    return runStep(impl_, [](Impl& s) { s.compositeFrame(); });
 }
 
 Intermediates ScreenSpaceAlphaMaskGl::intermediates() const noexcept {
