@@ -213,7 +213,7 @@ int resolvedThreads(int threads) {
 std::vector<BenchRow> runBench(const BenchOptions& o) {
     const float aspect = float(o.width) / float(o.height);
     const int threads = resolvedThreads(o.threads);
-    auto soft = soft::createSoftBackend({threads, 64, false});
+    auto soft = soft::createSoftBackend({.threads = threads, .tileSize = 64, .simd = o.simd});
     std::unique_ptr<gl::GlBackend> glBackend;
     std::string glError;
     if (std::find(o.backends.begin(), o.backends.end(), "gl") != o.backends.end()) {

@@ -11,6 +11,7 @@
 
 #include "bench_result.hpp"
 #include "bench_scenes.hpp"
+#include "engine/render/soft/simd_isa.hpp"
 #include "transparency/create_technique.hpp"
 
 namespace bench {
@@ -35,6 +36,7 @@ struct BenchOptions {
     int reps = 5, warmup = 1;
     int panFrames = 8;  // frames of the flicker pan (at least 2)
     int threads = 0;    // soft backend threads, and LP_NUM_THREADS for llvmpipe; 0: all
+    std::optional<engine::render::soft::SimdIsa> simd;  // the soft kernels' instruction set; unset: the widest
     std::filesystem::path contentDir;
     // When set: each still frame as <scene>_<technique>_<backend>.png, and its per-pixel ꟻLIP
     // error against the reference as <scene>_<technique>_<backend>_flip.png.

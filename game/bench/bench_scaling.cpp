@@ -102,7 +102,7 @@ std::vector<ScalingRow> runScaling(const ScalingOptions& o) {
                 unavailable = std::string("gl backend unavailable: ") + e.what();
             }
         } else {
-            backend = soft::createSoftBackend({threads, 64, false});
+            backend = soft::createSoftBackend({.threads = threads, .tileSize = 64, .simd = o.simd});
         }
         if (!backend) {
             std::printf("[ssam-bench --scaling] %s\n", unavailable.c_str());

@@ -4,9 +4,12 @@
 // frame's pixels (the forest scene from 360p to 2160p) and with foliage depth complexity (the
 // layers scene, 1 to 64 full-view leaf cards at one size). Timings only: no reference, no error.
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "engine/render/soft/simd_isa.hpp"
 
 namespace bench {
 
@@ -17,6 +20,7 @@ struct ScalingSize {
 struct ScalingOptions {
     std::vector<std::string> backends;  // "soft", "gl"
     int threads = 0;                    // soft threads and LP_NUM_THREADS; 0: all
+    std::optional<engine::render::soft::SimdIsa> simd;  // the soft kernels' instruction set; unset: the widest
     int reps = 2, warmup = 1;
     std::vector<ScalingSize> sizes;  // the resolution axis (forest)
     std::vector<int> layers;         // the depth-complexity axis (layers scene)

@@ -42,6 +42,7 @@ struct Options {
     int warmup = 1;
     int panFrames = 8;
     int threads = 0;
+    std::string simd = "auto";
     bool quick = false;
     bool images = false;
     bool sweep = false;
@@ -177,6 +178,10 @@ BenchOptions parse(const Options& o) {
     b.warmup = o.warmup;
     b.panFrames = o.panFrames;
     b.threads = o.threads;
+    b.simd = engine::render::soft::parseSimdIsa(o.simd);
+    if (b.simd && !engine::render::soft::simdIsaSupported(*b.simd))
+        throw engine::UsageError("--simd " + o.simd + ": this CPU does not run it (it runs " +
+                                 engine::render::soft::simdIsaName(engine::render::soft::bestSimdIsa()) + " at most)");
     b.contentDir = o.contentDir;
     return b;
 }
@@ -217,6 +222,7 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         ScalingOptions scaling = defaultScaling(o.quick);
         scaling.backends = options.backends;
         scaling.threads = options.threads;
+        scaling.simd = options.simd;
         scaling.contentDir = options.contentDir;
         if (app.count("--reps")) scaling.reps = o.reps;
         if (app.count("--warmup")) scaling.warmup = o.warmup;
@@ -273,6 +279,11 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--threads", o.threads, "soft backend threads and LP_NUM_THREADS for gl (0: all)")
         ->check(CLI::Range(0, 256))
+        ->capture_default_str();
+    app.add_option("--simd", o.simd,
+                   "soft backend kernels' instruction set (auto: the widest this CPU runs); images are the same bits "
+                   "with each")
+        ->check(CLI::IsMember({"auto", "sse2", "avx2"}))
         ->capture_default_str();
     app.add_flag("--quick", o.quick, "CI mode: 160x90, 1 rep, no warm-up, 3 pan frames (explicit flags win)");
     app.add_flag("--images", o.images,

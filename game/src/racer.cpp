@@ -131,7 +131,13 @@ int run(const CLI::App& app, const Options& o) {
     } else if (backendName == "gl") {
         glBackend = gl::createGlBackend({});  // headless through EGL (Mesa llvmpipe without a GPU)
     }
-    if (backendName == "soft") softBackend = engine::render::soft::createSoftBackend({o.threads, 64, false});
+    std::string kernels;  // the soft backend's instruction set, for the first line
+    if (backendName == "soft") {
+        auto soft = engine::render::soft::createSoftBackend(
+            {.threads = o.threads, .tileSize = 64, .simd = engine::render::soft::parseSimdIsa(o.simd)});
+        kernels = std::string(", ") + engine::render::soft::simdIsaName(*soft->options().simd);
+        softBackend = std::move(soft);
+    }
     engine::render::Backend& backend = softBackend ? *softBackend : *glBackend;
 
     // --scene FILE: the file's scene and camera replace the racing scene (gltf_scene.hpp).
@@ -171,9 +177,9 @@ int run(const CLI::App& app, const Options& o) {
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };
 
-    std::printf("racer: %s, %dx%d, camera %s, backend %s (%d threads), %s\n",
+    std::printf("racer: %s, %dx%d, camera %s, backend %s (%d threads%s), %s\n",
                 transparency::techniqueName(renderer.technique), renderer.width, renderer.height, o.camera.c_str(),
-                backend.name().c_str(), o.threads, windowed ? "window" : "headless");
+                backend.name().c_str(), o.threads, kernels.c_str(), windowed ? "window" : "headless");
     if (living) {
         std::string names;
         for (const std::string& n : living->names()) names += " " + n;

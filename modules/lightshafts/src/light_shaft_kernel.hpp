@@ -9,9 +9,18 @@
 
 #include "engine/render/soft/kernel/fragment.hpp"
 #include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/soft/simd_isa.hpp"
 #include "lightshafts/light_shaft_program.hpp"
 
 namespace lightshafts {
+
+struct LightShaftKernel;
+namespace sse2 {
+void marchRow(const LightShaftKernel& kernel, int bx, int py, std::uint32_t live, glm::vec4* out);
+}
+namespace avx2 {
+void marchRow(const LightShaftKernel& kernel, int bx, int py, std::uint32_t live, glm::vec4* out);
+}
 
 // The march of light_shaft_program.hpp, written so the GLSL computes the same sample points.
 struct LightShaftKernel {
@@ -42,7 +51,7 @@ struct LightShaftKernel {
 
     glm::vec4 shade(const engine::render::soft::Fragment& f) const {
         const int w = depth->desc.width, h = depth->desc.height;
-        const int samples = std::clamp(params.samples, 1, 128);
+        const int samples = sampleCount();
         const glm::vec2 p(float(f.x) + 0.5f, float(f.y) + 0.5f);
         const glm::vec2 step = (params.sunPixel - p) * (params.density / float(samples));
         // Skipping samples that add 0 leaves every bit as it was: their weights still multiply
@@ -63,10 +72,38 @@ struct LightShaftKernel {
             if (sky) sum += weight * sunGlow(q);
             weight *= params.decay;
         }
-        glm::vec3 c = params.color * (params.intensity * sum / float(samples));
+        return colorOf(sum);
+    }
+
+    int sampleCount() const { return std::clamp(params.samples, 1, 128); }
+    // What a pixel adds, from its march's sum.
+    glm::vec4 colorOf(float sum) const {
+        glm::vec3 c = params.color * (params.intensity * sum / float(sampleCount()));
         for (int i = 0; i < 3; ++i)
             if (!std::isfinite(c[i])) c[i] = 0.0f;
         return {c, 0.0f};
+    }
+
+    // The rasterizer's row hook (raster::hasRowShader): shade() of pixel (bx + i, py) into
+    // out[i] for each lane i set in `live`, a block row's 8 pixels marched together
+    // (light_shaft_march.inl), with the same bits.
+    void shadeRow(engine::render::soft::SimdIsa isa, int bx, int py, std::uint32_t live, glm::vec4* out) const {
+#if defined(__SSE2__) && !defined(SOFT_RASTER_SCALAR)
+        // The wide march indexes texels with 32-bit ints.
+        if (std::size_t(depth->desc.width) * std::size_t(depth->desc.height) < (std::size_t(1) << 31)) {
+            if (isa == engine::render::soft::SimdIsa::Avx2) avx2::marchRow(*this, bx, py, live, out);
+            else sse2::marchRow(*this, bx, py, live, out);
+            return;
+        }
+#endif
+        (void)isa;
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            engine::render::soft::Fragment f;
+            f.x = bx + i;
+            f.y = py;
+            out[i] = shade(f);
+        }
     }
 };
 

@@ -21,7 +21,7 @@ using namespace engine::render;
 std::vector<std::byte> bytesOfInstances(std::size_t count) { return std::vector<std::byte>(count * sizeof(Instance)); }
 
 struct Pools : ::testing::Test {
-    std::unique_ptr<Backend> soft = soft::createSoftBackend({1, 64, false});
+    std::unique_ptr<Backend> soft = soft::createSoftBackend({.threads = 1, .tileSize = 64});
     ssam::testing::FailingBackend backend{*soft};  // never fails: counts creates and live resources
 };
 

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 
 #include "draws.hpp"  // tests/support
 #include "lcg.hpp"    // tests/support
+#include "engine/core/error.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "ssam/composite_program.hpp"
 #include "engine/render/vertex.hpp"
@@ -569,8 +571,9 @@ const std::vector<GoldenScene>& scenes() {
     return k;
 }
 
-std::uint64_t renderScene(const Scene& scene, int threads, int tileSize, bool print = false) {
-    auto backend = soft::createSoftBackend({threads, tileSize, false});
+std::uint64_t renderScene(const Scene& scene, int threads, int tileSize, bool print = false,
+                          std::optional<soft::SimdIsa> isa = std::nullopt) {
+    auto backend = soft::createSoftBackend({.threads = threads, .tileSize = tileSize, .simd = isa});
     Hasher h;
     scene(*backend, h);
     if (print) {
@@ -596,6 +599,34 @@ TEST(SoftGoldenHash, ScenesAreBitExactAndIndependentOfThreadsAndTiles) {
                                          << " differs from the pinned 0x" << s.hash;
         }
     }
+}
+
+// The wide kernels run in the instruction set the backend picks at run time
+// (engine/render/soft/simd_isa.hpp): each one this CPU runs must draw the pinned bits.
+TEST(SoftGoldenHash, EveryInstructionSetDrawsTheSameBits) {
+    for (soft::SimdIsa isa : soft::supportedSimdIsas()) {
+        for (const GoldenScene& s : scenes()) {
+            const std::uint64_t hash = renderScene(s.render, 2, 64, false, isa);
+            EXPECT_EQ(hash, s.hash) << s.name << " with " << soft::simdIsaName(isa) << std::hex << ": hash 0x" << hash
+                                    << " differs from the pinned 0x" << s.hash;
+        }
+    }
+}
+
+TEST(SoftGoldenHash, InstructionSetNamesParseAndOneTheCpuLacksIsRefused) {
+    for (soft::SimdIsa isa : {soft::SimdIsa::Sse2, soft::SimdIsa::Avx2}) {
+        if (soft::simdIsaSupported(isa)) continue;
+        try {
+            soft::createSoftBackend({.simd = isa});
+            ADD_FAILURE() << soft::simdIsaName(isa) << " was accepted on a CPU that does not run it";
+        } catch (const engine::Error& e) {
+            EXPECT_NE(std::string(e.what()).find("does not run"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_TRUE(soft::simdIsaSupported(soft::SimdIsa::Sse2)) << "x86-64's baseline";
+    EXPECT_EQ(soft::parseSimdIsa("avx2"), soft::SimdIsa::Avx2);
+    EXPECT_EQ(soft::parseSimdIsa("sse2"), soft::SimdIsa::Sse2);
+    EXPECT_FALSE(soft::parseSimdIsa("avx512"));
 }
 
 }  // namespace

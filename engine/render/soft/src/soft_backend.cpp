@@ -112,6 +112,10 @@ public:
         if (options.tileSize < 8 || options.tileSize % 8 != 0 || options.tileSize > 1024)
             throw Error("soft backend: tileSize " + std::to_string(options.tileSize) +
                         " must be a multiple of 8 in [8, 1024]");
+        if (!options_.simd) options_.simd = bestSimdIsa();
+        if (!simdIsaSupported(*options_.simd))
+            throw Error(std::string("soft backend: this CPU does not run ") + simdIsaName(*options_.simd) +
+                        " (it runs " + simdIsaName(bestSimdIsa()) + " at most)");
     }
 
     std::string name() const override { return "soft"; }
@@ -429,6 +433,7 @@ private:
         s.alphaTest.enabled = alphaTestCanMatter(p.desc.alphaTest, s.depthWrite, anyRgb, anyAlpha);
         s.shade = anyRgb || anyAlpha || s.alphaTest.enabled || (s.alphaToCoverage && s.samples > 1);
         s.program = p.program->soft->bind(d.params, textureLookup_);
+        s.isa = *options_.simd;
         return s;
     }
 

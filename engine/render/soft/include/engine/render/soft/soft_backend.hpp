@@ -6,10 +6,12 @@
 // order inside each tile, so images are bit-identical for any thread count.
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include <glm/glm.hpp>
 
 #include "engine/render/backend.hpp"
+#include "engine/render/soft/simd_isa.hpp"
 
 namespace engine::render::soft {
 
@@ -17,6 +19,9 @@ struct SoftOptions {
     int threads = 0;      // 0: all hardware threads
     int tileSize = 64;    // pixels, a multiple of 8 (llvmpipe's choice by default)
     bool debugChecks = false;  // count NaN/Inf stored into float targets and log them per pass
+    // The wide kernels' instruction set; unset: the widest this CPU runs (bestSimdIsa()). One
+    // this CPU does not run is refused at creation. Images are the same bits with any.
+    std::optional<SimdIsa> simd = std::nullopt;
 };
 
 // Work counters since creation, for tests and the benchmark (what was skipped is visible).

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "engine/render/pipeline.hpp"
+#include "engine/render/soft/simd_isa.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "soft_texture.hpp"
 
@@ -40,6 +41,7 @@ struct DrawState {
     glm::vec4 blendConstant{0.0f};
     bool shade = true;  // false: depth-only, the program is never run
     FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (SoftBackend::setFragmentSink)
+    SimdIsa isa = SimdIsa::Sse2;      // the wide kernels' instruction set (SoftOptions::simd)
 };
 
 }  // namespace engine::render::soft

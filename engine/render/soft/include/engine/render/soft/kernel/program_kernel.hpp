@@ -10,7 +10,11 @@
 //   - optionally `static constexpr bool kReadsPixels = true` when shade() reads textures
 //     at the fragment's pixel (full-screen programs): the output then varies across a
 //     triangle even when every interpolant is constant;
-//   - optionally the fast-path hooks kernel/programs.hpp documents (alpha4, compositeFactor).
+//   - optionally the fast-path hooks kernel/programs.hpp documents (alpha4, compositeFactor);
+//   - optionally the row hook `void shadeRow(SimdIsa, int bx, int py, std::uint32_t live,
+//     glm::vec4* out) const`: shade() of the live pixels of an 8-pixel block row at once, for
+//     programs whose per-pixel work is worth vectorising across pixels (raster::hasRowShader;
+//     kernel/simd/ has the lane types and the way to build one kernel for each SimdIsa).
 // makeKernel<Program, Params>() instantiates the tile rasterizer for it in the calling
 // translation unit: one virtual call per run of a draw's triangles in a tile, none per pixel.
 #include <memory>

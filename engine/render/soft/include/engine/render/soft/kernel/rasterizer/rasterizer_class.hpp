@@ -34,6 +34,14 @@ constexpr bool hasCompositeHooks() {
     };
 }
 
+// Whether the program shades a block row's pixels at once (program_kernel.hpp's row hook):
+// shadeRow(isa, bx, py, live, out) puts shade() of pixel (bx + i, py) into out[i] for each lane
+// i set in `live`, with the same bits, in wide kernels of the draw's instruction set.
+template <typename Program>
+constexpr bool hasRowShader() {
+    return requires(const Program& p, glm::vec4* out) { p.shadeRow(SimdIsa::Sse2, 0, 0, 0u, out); };
+}
+
 // Whether the program's shade() reads textures at the fragment's pixel (program_kernel.hpp).
 template <typename Program>
 constexpr bool readsPixels() {

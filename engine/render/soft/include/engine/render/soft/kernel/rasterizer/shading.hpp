@@ -49,6 +49,15 @@ inline void TriangleRasterizer<Program>::shadeRow(const SetupTriangle& t, int bx
             return;
         }
     }
+    if constexpr (hasRowShader<Program>()) {
+        alignas(16) glm::vec4 colors[kBlockSize];
+        program_.shadeRow(draw_.isa, bx, py, live, colors);
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            writeShaded(colors[i], bx + i, py, z[i], depthAt + i * sizeof(float));
+        }
+        return;
+    }
 #if SOFT_RASTER_SSE2
     if constexpr (std::is_same_v<Program, AlphaOnlyProgram>) {
         if (alphaRow_) {

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+// LightShaftKernel's row hook, one march per instruction set (light_shaft_march.inl).
+#include <algorithm>
+#include <cstdint>
+
+#include "engine/render/soft/kernel/simd/lanes_avx2.hpp"
+#include "engine/render/soft/kernel/simd/lanes_sse2.hpp"
+#include "light_shaft_kernel.hpp"
+
+namespace lightshafts {
+
+namespace sse2 {
+using namespace engine::render::soft::simd::sse2;
+#include "light_shaft_march.inl"
+}  // namespace sse2
+
+SOFT_AVX2_BEGIN
+namespace avx2 {
+using namespace engine::render::soft::simd::avx2;
+#include "light_shaft_march.inl"
+}  // namespace avx2
+SOFT_AVX2_END
+
+}  // namespace lightshafts
