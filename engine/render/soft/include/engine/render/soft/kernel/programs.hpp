@@ -61,20 +61,22 @@ struct SurfaceProgram {
     SurfaceParams params;
     const SoftTexture* texture = nullptr;  // null: white
     glm::vec3 towardLight;                 // hoisted out of the pixel loop
-    AlphaSampler alphaSampler;             // AlphaMasked, RGBA8 texture: the alpha alone (alpha4)
+    AlphaSampler alphaSampler;             // RGBA8 texture: its alpha alone (alpha4), or all four channels (rgba4)
 
     SurfaceProgram(const SurfaceParams& p, const TextureLookup& textures)
         : SurfaceProgram(p, textures.texture(p.baseColor.texture)) {}
     SurfaceProgram(const SurfaceParams& p, const SoftTexture* t)
         : params(p), texture(t), towardLight(glm::normalize(params.light.towardLight)) {
-        if constexpr (AlphaMasked)
-            if (texture) alphaSampler = AlphaSampler(*texture, params.baseColor.sampler);
+        if (texture) alphaSampler = AlphaSampler(*texture, params.baseColor.sampler);
     }
 
 #if SOFT_SAMPLER_SSE2
     // The alpha shade() outputs for 4 fragments (see alphaTimes4), with the same bits: the
     // rasterizer alpha-tests with it before shading the colour.
     bool hasAlpha4() const { return AlphaMasked && (!texture || alphaSampler.simd4()); }
+    // The texture is sampled four fragments at a time (AlphaSampler::rgba4, the general
+    // sampler's bits), for shadeSampled().
+    bool hasRgba4() const { return texture && alphaSampler.simd4(); }
     __m128 alpha4(const float* colorA, const float* u, const float* v, const float* const* duv,
                   std::uint32_t lanes) const {
         // base.a = (baseColorFactor.a * vertex alpha) * texel alpha; toStraight keeps alpha.

@@ -207,15 +207,43 @@ inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle
             if (draw_.alphaTest.passes(factorAlpha * row_.color[3][o + k] * texelAlpha[k])) passing |= 1u << k;
         }
         counters_.pixelsShaded += kBitCount[lanes & ~passing];  // shaded as far as their alpha
-        if (!passing) continue;
-        alignas(16) float texels[4][4];
-        sampler.rgba4(lookup, passing, texels);
-        for (std::uint32_t bits = passing; bits; bits &= bits - 1) {
-            const int k = __builtin_ctz(bits), i = o + k;
-            const glm::vec4 texel(texels[k][0], texels[k][1], texels[k][2], texels[k][3]);
-            writeShaded(program_.shadeSampled(rowFragment(t, bx + i, py, i), texel), bx + i, py, z[i],
-                        depthAt + i * sizeof(float));
-        }
+        if (passing) shadeTexels(t, lookup, bx, py, o, passing, z, depthAt);
+    }
+}
+
+// A Surface program's row with its texture sampled four lanes at a time (sampledRow_): the
+// general path's shade() of each live lane, its sampleTexture() taken from rgba4 (the same
+// bits), which finds each lane's level and texels in SIMD and reads no format per texel.
+template <typename Program>
+inline void TriangleRasterizer<Program>::shadeSampledRow(const SetupTriangle& t, int bx, int py, std::uint32_t live,
+                                                         float centerX0, float fy, const float* z,
+                                                         std::byte* depthAt) {
+    interpolateRow(t, centerX0, fy, live);
+    const AlphaSampler& sampler = program_.alphaSampler;
+    for (int h = 0; h < 2; ++h) {
+        const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
+        if (!lanes) continue;
+        const int o = 4 * h;
+        shadeTexels(t,
+                    sampler.lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o, row_.duv[1] + o,
+                                    row_.duv[2] + o, row_.duv[3] + o, lanes),
+                    bx, py, o, lanes, z, depthAt);
+    }
+}
+
+// shadeSampled() and the writes of lanes o + k (k set in `lanes`) of a block row, their
+// texels those `lookup` finds.
+template <typename Program>
+inline void TriangleRasterizer<Program>::shadeTexels(const SetupTriangle& t, const AlphaSampler::Lookup4& lookup,
+                                                     int bx, int py, int o, std::uint32_t lanes, const float* z,
+                                                     std::byte* depthAt) {
+    alignas(16) float texels[4][4];
+    program_.alphaSampler.rgba4(lookup, lanes, texels);
+    for (std::uint32_t bits = lanes; bits; bits &= bits - 1) {
+        const int k = __builtin_ctz(bits), i = o + k;
+        const glm::vec4 texel(texels[k][0], texels[k][1], texels[k][2], texels[k][3]);
+        writeShaded(program_.shadeSampled(rowFragment(t, bx + i, py, i), texel), bx + i, py, z[i],
+                    depthAt + i * sizeof(float));
     }
 }
 

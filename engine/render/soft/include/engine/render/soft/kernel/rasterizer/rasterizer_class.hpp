@@ -85,6 +85,8 @@ public:
         if constexpr (std::is_same_v<Program, MaskedLitProgram>)
             alphaFirst_ = !draw.capture && draw.shade && draw.alphaTest.enabled &&
                           draw.alphaTest.failMode == AlphaFailMode::Keep && program.hasAlpha4();
+        if constexpr (std::is_same_v<Program, MaskedLitProgram> || std::is_same_v<Program, OpaqueLitProgram>)
+            sampledRow_ = !alphaFirst_ && draw.shade && program.hasRgba4();
         if constexpr (std::is_same_v<Program, AlphaOnlyProgram>) {
             // The mask path (shadeAlphaRow) covers what the mask pass is: no capture, no alpha
             // test, no depth write. Anything else takes the general path.
@@ -167,6 +169,10 @@ private:
     __m128 alpha4(int h, std::uint32_t lanes) const;
     void shadeAlphaTestedRow(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy,
                              const float* z, std::byte* depthAt);
+    void shadeSampledRow(const SetupTriangle& t, int bx, int py, std::uint32_t live, float centerX0, float fy,
+                         const float* z, std::byte* depthAt);
+    void shadeTexels(const SetupTriangle& t, const AlphaSampler::Lookup4& lookup, int bx, int py, int o,
+                     std::uint32_t lanes, const float* z, std::byte* depthAt);
     void interpolateRow(const SetupTriangle& t, float centerX0, float fy, std::uint32_t lanes);
     void interpolateHalf(const SetupTriangle& t, float centerX0, float fy, int h);
     Fragment rowFragment(const SetupTriangle& t, int px, int py, int i) const;
@@ -203,6 +209,7 @@ private:
     std::array<bool, kMaxColorTargets> useLut_{};
     bool compositeRow_ = false;  // CompositeProgram, CoverageCompositeProgram: compositeRow
     bool alphaFirst_ = false;    // MaskedLit: alpha-test (Keep) on the alpha alone before shading
+    bool sampledRow_ = false;    // Surface programs otherwise: the texture sampled 4 lanes at a time
     // AlphaOnly's row path (shadeAlphaRow).
     bool alphaRow_ = false;
     bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha

@@ -71,6 +71,12 @@ inline void TriangleRasterizer<Program>::shadeRow(const SetupTriangle& t, int bx
             return;
         }
     }
+    if constexpr (std::is_same_v<Program, MaskedLitProgram> || std::is_same_v<Program, OpaqueLitProgram>) {
+        if (sampledRow_) {
+            shadeSampledRow(t, bx, py, live, centerX0, fy, z, depthAt);
+            return;
+        }
+    }
     if (kBitCount[live] >= 2) {  // the attributes of 4 lanes at a time
         interpolateRow(t, centerX0, fy, live);
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
