@@ -185,6 +185,15 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
         t.attributeOverW[k] = makePlane(basis, v[0]->attributeOverW[k], v[1]->attributeOverW[k], v[2]->attributeOverW[k]);
 }
 
+// glm::dot(plane, p) >= 0 for each of setupUnrejectedTriangle's planes, without the products
+// with their zero components: for finite p those are +-0, which change neither the sum's value
+// nor its sign test (x + +-0 is x, or +-0 where x is 0, and +-0 >= 0 holds), and -z + w is the
+// same IEEE operation as w - z. Every test is made (& rather than &&): no branch per plane.
+bool insideEveryPlane(const glm::dvec4& p, double gx, double gy) {
+    return (p.z >= 0.0) & (p.w - p.z >= 0.0) & (p.w >= 0.0) & (gx * p.w - p.x >= 0.0) & (p.x + gx * p.w >= 0.0) &
+           (gy * p.w - p.y >= 0.0) & (p.y + gy * p.w >= 0.0);
+}
+
 bool finite(const ClipVertex& v) {
     return std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z) &&
            std::isfinite(v.position.w);
@@ -279,9 +288,8 @@ void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const C
     // Inside every plane (most triangles that get here): no polygon to build, and the same
     // values as the clipping loop below, which would leave the three vertices as they are.
     const glm::dvec4 positions[3] = {glm::dvec4(v0.position), glm::dvec4(v1.position), glm::dvec4(v2.position)};
-    bool inside = true;
-    for (const ClipPlane& plane : planes)
-        for (const glm::dvec4& p : positions) inside = inside && glm::dot(plane, p) >= 0.0;
+    const bool inside = insideEveryPlane(positions[0], gx, gy) & insideEveryPlane(positions[1], gx, gy) &
+                        insideEveryPlane(positions[2], gx, gy);
     if (inside) {
         const ClipVertex* v[3] = {&v0, &v1, &v2};
         projectAndEmit(
