@@ -27,6 +27,7 @@
 #include "engine/core/output_file.hpp"
 #include "engine/core/usage_error.hpp"
 #include "report_text.hpp"
+#include "simd_flag.hpp"
 #include "sweep_report.hpp"
 
 namespace {
@@ -178,10 +179,7 @@ BenchOptions parse(const Options& o) {
     b.warmup = o.warmup;
     b.panFrames = o.panFrames;
     b.threads = o.threads;
-    b.simd = engine::render::soft::parseSimdIsa(o.simd);
-    if (b.simd && !engine::render::soft::simdIsaSupported(*b.simd))
-        throw engine::UsageError("--simd " + o.simd + ": this CPU does not run it (it runs " +
-                                 engine::render::soft::simdIsaName(engine::render::soft::bestSimdIsa()) + " at most)");
+    b.simd = racer::simdFromFlag(o.simd);
     b.contentDir = o.contentDir;
     return b;
 }
@@ -280,11 +278,7 @@ int main(int argc, char** argv) {
     app.add_option("--threads", o.threads, "soft backend threads and LP_NUM_THREADS for gl (0: all)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
-    app.add_option("--simd", o.simd,
-                   "soft backend kernels' instruction set (auto: the widest this CPU runs); images are the same bits "
-                   "with each")
-        ->check(CLI::IsMember({"auto", "sse2", "avx2"}))
-        ->capture_default_str();
+    racer::addSimdOption(app, o.simd);
     app.add_flag("--quick", o.quick, "CI mode: 160x90, 1 rep, no warm-up, 3 pan frames (explicit flags win)");
     app.add_flag("--images", o.images,
                  "also write each still frame, and its per-pixel FLIP error (_flip), as a PNG into OUT/images");

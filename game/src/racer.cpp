@@ -28,6 +28,7 @@
 #include "racer_options.hpp"
 #include "racer_outputs.hpp"
 #include "racing_scene.hpp"
+#include "simd_flag.hpp"
 #include "window_keys.hpp"
 #include "window_loop.hpp"
 
@@ -134,7 +135,7 @@ int run(const CLI::App& app, const Options& o) {
     std::string kernels;  // the soft backend's instruction set, for the first line
     if (backendName == "soft") {
         auto soft = engine::render::soft::createSoftBackend(
-            {.threads = o.threads, .tileSize = 64, .simd = engine::render::soft::parseSimdIsa(o.simd)});
+            {.threads = o.threads, .tileSize = 64, .simd = racer::simdFromFlag(o.simd)});
         kernels = std::string(", ") + engine::render::soft::simdIsaName(*soft->options().simd);
         softBackend = std::move(soft);
     }

@@ -8,7 +8,7 @@
 
 #include "engine/cli/command_line.hpp"
 #include "engine/core/usage_error.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "simd_flag.hpp"
 
 namespace racer {
 
@@ -42,11 +42,7 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--camera", o.camera, "camera")->check(CLI::IsMember({"chase", "pan", "free", "sky"}))->capture_default_str();
     app.add_option("--seed", o.seed, "scene seed (track shape, placement)")->capture_default_str();
     app.add_option("--threads", o.threads, "soft backend threads (0: all)")->check(CLI::Range(0, 256))->capture_default_str();
-    app.add_option("--simd", o.simd,
-                   "soft backend kernels' instruction set (auto: the widest this CPU runs); images are the same bits "
-                   "with each")
-        ->check(CLI::IsMember({"auto", "sse2", "avx2"}))
-        ->capture_default_str();
+    addSimdOption(app, o.simd);
     app.add_option("--capture", o.capturePath,
                    "write the last frame to this image: .png (8-bit sRGB) or .exr (linear float); checked before "
                    "the first frame, its directory created if missing");
@@ -112,9 +108,7 @@ void checkCombinations(const CLI::App& app, const Options& o) {
     if (given("--threads") && o.backend == "gl")
         refuse("--threads sets the soft backend's threads; --backend gl does not use them");
     if (given("--simd") && o.backend == "gl") refuse("--simd picks the soft backend's kernels; --backend gl has none");
-    if (const auto isa = engine::render::soft::parseSimdIsa(o.simd); isa && !engine::render::soft::simdIsaSupported(*isa))
-        refuse("--simd " + o.simd + ": this CPU does not run it (it runs " +
-               engine::render::soft::simdIsaName(engine::render::soft::bestSimdIsa()) + " at most)");
+    simdFromFlag(o.simd);  // refuses a set this CPU does not run
 }
 
 FrameSize parseFrameSize(const std::string& size) {

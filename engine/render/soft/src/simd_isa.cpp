@@ -30,6 +30,11 @@ bool simdIsaSupported(SimdIsa isa) {
     return false;
 }
 
+std::string simdIsaRefusal(SimdIsa isa) {
+    return std::string("this CPU does not run ") + simdIsaName(isa) + " (it runs " + simdIsaName(bestSimdIsa()) +
+           " at most)";
+}
+
 SimdIsa bestSimdIsa() { return simdIsaSupported(SimdIsa::Avx2) ? SimdIsa::Avx2 : SimdIsa::Sse2; }
 
 std::vector<SimdIsa> supportedSimdIsas() {

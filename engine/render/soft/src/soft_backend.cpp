@@ -114,8 +114,7 @@ public:
                         " must be a multiple of 8 in [8, 1024]");
         if (!options_.simd) options_.simd = bestSimdIsa();
         if (!simdIsaSupported(*options_.simd))
-            throw Error(std::string("soft backend: this CPU does not run ") + simdIsaName(*options_.simd) +
-                        " (it runs " + simdIsaName(bestSimdIsa()) + " at most)");
+            throw Error("soft backend: " + simdIsaRefusal(*options_.simd));
     }
 
     std::string name() const override { return "soft"; }

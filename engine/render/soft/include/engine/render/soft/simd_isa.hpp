@@ -12,6 +12,7 @@
 // would need two rows in flight, and the CPUs this was measured on execute 512-bit
 // operations as two 256-bit halves.
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -28,6 +29,8 @@ std::optional<SimdIsa> parseSimdIsa(std::string_view name);
 // Whether this CPU runs it (and this build has its kernels: a SOFT_RASTER_SCALAR build runs
 // its portable code whatever is chosen, and reports only sse2).
 bool simdIsaSupported(SimdIsa isa);
+// Why `isa` cannot be used here: "this CPU does not run avx2 (it runs sse2 at most)".
+std::string simdIsaRefusal(SimdIsa isa);
 // The widest one this CPU runs: the soft backend's default.
 SimdIsa bestSimdIsa();
 // Every one this CPU runs, narrowest first.
