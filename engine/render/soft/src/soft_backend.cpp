@@ -24,6 +24,7 @@
 #include "engine/render/pixel_codec.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/soft_texture.hpp"
+#include "geometry_key.hpp"
 #include "instance_culling.hpp"
 #include "standard_kernels.hpp"
 #include "tile_rasterizer.hpp"
@@ -40,6 +41,7 @@ struct SoftBuffer {
     std::uint32_t maxIndex = 0;  // index buffers: the largest index (validation's fast accept)
     // Vertex buffers: the box of the positions, found at the first draw after a write.
     std::optional<PositionBounds> bounds;
+    std::uint64_t stamp = 0;  // of these contents (geometry_key.hpp): new at creation and each update
 };
 
 struct SoftPipeline {
@@ -79,8 +81,18 @@ struct GeometryChunk {
     std::vector<SetupTriangle> triangles;
     std::vector<BinEntry> bins;  // in submission order
     SetupCounters counters;
-    std::size_t geometry = kNoGeometry;  // the DrawGeometry it sets up triangles [begin, end) of
+    // The DrawGeometry it sets up triangles [begin, end) of; kNoGeometry: already set up and
+    // binned when planned (a full-screen triangle, or a draw's chunks kept from the last pass).
+    std::size_t geometry = kNoGeometry;
     std::uint64_t begin = 0, end = 0;
+};
+
+// A draw's chunks in a pass, found by what they were set up from.
+struct PlannedGeometry {
+    GeometryKey key;
+    std::size_t firstChunk = 0, chunkCount = 0;
+    std::uint32_t drawIndex = 0;
+    bool taken = false;  // moved into a later pass
 };
 
 
@@ -150,7 +162,7 @@ public:
     BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
         const std::string what = "buffer " + quotedName(desc.name);
         validateBuffer(desc, data, what);
-        SoftBuffer b{desc, std::vector<std::byte>(desc.size), 0, std::nullopt};
+        SoftBuffer b{desc, std::vector<std::byte>(desc.size), 0, std::nullopt, ++lastStamp_};
         if (!data.empty()) std::memcpy(b.bytes.data(), data.data(), data.size());
         if (desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
         return buffers_.add(std::move(b));
@@ -174,6 +186,7 @@ public:
         std::memcpy(b.bytes.data() + offset, data.data(), data.size());
         if (b.desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
         b.bounds.reset();
+        b.stamp = ++lastStamp_;
     }
 
     ProgramHandle createProgram(const ProgramDesc& desc) override {
@@ -481,6 +494,20 @@ private:
         if (g.total == 0 || vp.scissor.empty()) return;
         const std::uint64_t chunks = (g.total + kChunk - 1) / kChunk;
         const std::size_t first = nextChunks(chunks);
+        const GeometryKey key{vb.stamp,
+                              d.indices ? buffers_.get(d.indices).stamp : 0,
+                              d.instances ? buffers_.get(d.instances).stamp : 0,
+                              d.first,
+                              d.count,
+                              d.instanceCount,
+                              g.viewProj,
+                              vp,
+                              raster};
+        planned_.push_back({key, first, chunks, drawIndex, false});
+        if (options_.reuseGeometry && takeKeptGeometry(key, first, drawIndex)) {
+            stats_.trianglesReused += g.total;
+            return;
+        }
         for (std::uint64_t c = 0; c < chunks; ++c) {
             GeometryChunk& chunk = chunks_[first + c];
             chunk.geometry = geometry_.size();
@@ -488,6 +515,26 @@ private:
             chunk.end = std::min(g.total, chunk.begin + kChunk);
         }
         geometry_.push_back(g);
+    }
+
+    // Moves the chunks of the last pass's draw with this key, if there is one, into this
+    // pass's chunks from `first` on, as set up and binned for `drawIndex`: the same triangles
+    // and bins the geometry work would make again (geometry_key.hpp); only the index of the
+    // draw they belong to may differ. Each kept draw is taken once.
+    bool takeKeptGeometry(const GeometryKey& key, std::size_t first, std::uint32_t drawIndex) {
+        for (PlannedGeometry& kept : kept_) {
+            if (kept.taken || !sameGeometry(kept.key, key)) continue;
+            kept.taken = true;
+            for (std::size_t c = 0; c < kept.chunkCount; ++c) {
+                GeometryChunk& chunk = chunks_[first + c];
+                std::swap(chunk, keptChunks_[kept.firstChunk + c]);
+                chunk.geometry = kNoGeometry;  // set up and binned already
+                if (kept.drawIndex != drawIndex)
+                    for (SetupTriangle& t : chunk.triangles) t.drawIndex = drawIndex;
+            }
+            return true;
+        }
+        return false;
     }
 
     void runGeometry(const TileGrid& grid) {
@@ -567,6 +614,11 @@ private:
         const TileGrid grid{tileSize, tilesX, tilesY, &samplePattern(passSamples_)};
         std::vector<DrawState> drawStates;
         drawStates.reserve(draws_.size());
+        // The last execution's chunks are kept for this one's draws to take (takeKeptGeometry);
+        // their storage, and the older one's, is reused for the chunks set up here.
+        std::swap(chunks_, keptChunks_);
+        std::swap(planned_, kept_);
+        planned_.clear();
         chunksUsed_ = 0;
         geometry_.clear();
         for (std::uint32_t i = 0; i < draws_.size(); ++i) {
@@ -613,6 +665,8 @@ private:
         // frame need different amounts: freeing it each pass reallocated it each frame);
         // what it used is kept for the next.
         chunks_.resize(std::max(chunksUsed_, std::min(chunks_.size(), kKeptChunks)));
+        keptChunks_.resize(std::min(keptChunks_.size(), kKeptChunks));
+        kept_.clear();
         if (options_.debugChecks) checkNonFinite();
     }
 
@@ -659,6 +713,10 @@ private:
     std::vector<GeometryChunk> chunks_;  // setup output of the pass being executed
     std::vector<DrawGeometry> geometry_;  // the vertex input of its draws
     std::size_t chunksUsed_ = 0;
+    std::vector<PlannedGeometry> planned_;   // which of chunks_ each draw's are
+    std::vector<GeometryChunk> keptChunks_;  // the last execution's chunks, while this one plans
+    std::vector<PlannedGeometry> kept_;      // which of keptChunks_ each of its draws' are
+    std::uint64_t lastStamp_ = 0;            // the last buffer content stamp given
     std::vector<std::vector<const SetupTriangle*>> bins_;  // per tile, in submission order
     std::vector<PassTiming> timings_;
     SoftStats stats_;

@@ -22,6 +22,11 @@ struct SoftOptions {
     // The wide kernels' instruction set; unset: the widest this CPU runs (bestSimdIsa()). One
     // this CPU does not run is refused at creation. Images are the same bits with any.
     std::optional<SimdIsa> simd = std::nullopt;
+    // A draw whose geometry input equals one of the last pass's draws (same buffer contents,
+    // camera, viewport, scissor, sample pattern and raster state: src/geometry_key.hpp) takes
+    // that draw's set-up triangles and bins instead of making them again (SSAM's colour pass
+    // after its mask pass). Off only to measure what it saves; images are the same bits.
+    bool reuseGeometry = true;
 };
 
 // Work counters since creation, for tests and the benchmark (what was skipped is visible).
@@ -31,6 +36,7 @@ struct SoftStats {
     std::uint64_t trianglesIn = 0;       // primitives submitted
     std::uint64_t trianglesRasterized = 0;  // after clipping, culling, dropping degenerate/NaN ones
     std::uint64_t trianglesDropped = 0;  // degenerate, NaN or fully clipped
+    std::uint64_t trianglesReused = 0;   // of trianglesIn: set up in the pass before (reuseGeometry)
     std::uint64_t pixelsShaded = 0;      // program invocations
     std::uint64_t pixelsTouched = 0;     // pixels for which any sample passed coverage + depth
     std::uint64_t nonFiniteStores = 0;   // NaN/Inf written to float targets (debugChecks only)
