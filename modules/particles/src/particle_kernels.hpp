@@ -3,12 +3,15 @@
 // The soft backend's kernels of the particle module's programs (particle_programs.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include <glm/glm.hpp>
 
 #include "engine/render/soft/kernel/fragment.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/soft/simd_isa.hpp"
 #include "particles/particle_programs.hpp"
 
 namespace particles {
@@ -101,11 +104,46 @@ struct LayerCompositeKernel {
         return finiteLayerTexel(soft::fetchTexel(*layer, lx, ly));
     }
 
+    // The rasterizer's row hook (program_kernel.hpp): shade() of the live pixels of a block
+    // row. Most of the composite's region has no particle: where every layer texel shade()
+    // would read there is all zero bits, its result is (0, 0, 0, 0) (they are equal, so no
+    // depth is read, and each channel decodes to +0), found from the stored halves without
+    // decoding them; the rest take shade(). The blend then skips those zeros (the soft
+    // backend's zeroSourceKeeps).
+    void shadeRow(engine::render::soft::SimdIsa, int bx, int py, std::uint32_t live, glm::vec4* out) const {
+        soft::Fragment f;
+        f.y = py;
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            f.x = bx + i;
+            out[i] = layerZeroAround(f.x, py) ? glm::vec4(0.0f) : shade(f);
+        }
+    }
+
     static glm::vec4 finiteLayerTexel(glm::vec4 c) {
         for (int i = 0; i < 4; ++i)
             if (!std::isfinite(c[i])) c[i] = 0.0f;
         c.a = saturateOrZero(c.a);
         return c;
+    }
+
+private:
+    // Whether the layer is RGBA16F and every texel shade() reads for pixel (x, y) has all its
+    // bits zero. Other formats answer false (a format without alpha loads alpha 1).
+    bool layerZeroAround(int x, int y) const {
+        if (layer->desc.format != engine::render::Format::RGBA16F) return false;
+        const int lw = layer->desc.width, lh = layer->desc.height;
+        const int scale = std::clamp(params.layerScale, 1, 4);
+        auto zero = [&](int lx, int ly) {
+            std::uint64_t stored;
+            std::memcpy(&stored, layer->texel(0, lx, ly), sizeof stored);
+            return stored == 0;
+        };
+        if (!(scale > 1 && depth)) return zero(std::min(x / scale, lw - 1), std::min(y / scale, lh - 1));
+        // shade()'s four candidates; where they agree it returns the first.
+        const int x0 = std::clamp((x - 1) / 2, 0, lw - 1), y0 = std::clamp((y - 1) / 2, 0, lh - 1);
+        const int x1 = std::min(x0 + 1, lw - 1), y1 = std::min(y0 + 1, lh - 1);
+        return zero(x0, y0) && zero(x1, y0) && zero(x0, y1) && zero(x1, y1);
     }
 };
 

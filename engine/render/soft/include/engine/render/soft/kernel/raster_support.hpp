@@ -187,6 +187,7 @@ struct TargetView {
     bool rgba8Plain = false;  // RGBA8_UNORM, all four channels, no blending: a 4-byte store
     bool srgb8Plain = false;  // RGBA8_SRGB, all four channels, no blending: storeRgba8Srgb
     bool byteLut = false;     // RGBA8 blend whose every stored byte is a function of that byte alone
+    bool zeroKeeps = false;   // blended so that a (0, 0, 0, 0) source stores back what is there (zeroSourceKeeps)
     std::byte* at(int x, int y) const { return base + std::size_t(y) * rowBytes + std::size_t(x) * pixelBytes; }
 };
 
@@ -250,6 +251,24 @@ inline bool bytesRoundTrip() {
         return true;
     }();
     return roundTrip;
+}
+
+// Whether blending a source of (0, 0, 0, 0) (either zero's sign) onto an 8-bit target leaves
+// every stored byte as it is, so the blend can be skipped. Normalized targets clamp source,
+// destination and constant to [0, 1] (blend.hpp), so every factor is finite and the source
+// terms are +-0. ADD: +-0 + d * df = d when the destination factors are exactly 1 for a zero
+// source (ONE, INV_SRC_ALPHA, INV_SRC_COLOR); MAX ignores the factors: max(+-0, d) = d, or
+// -0 where d is +0, which encodes as the same byte. The decoded byte then encodes back to
+// itself (bytesRoundTrip: checked for every byte, UNORM and sRGB).
+inline bool zeroSourceKeeps(Format format, const BlendState& b) {
+    const bool eightBit = format == Format::RGBA8_UNORM || format == Format::RGBA8_SRGB ||
+                          format == Format::R8_UNORM || format == Format::RG8_UNORM;
+    auto keeps = [](BlendOp op, BlendFactor dst) {
+        if (op == BlendOp::Max) return true;
+        return op == BlendOp::Add &&
+               (dst == BlendFactor::One || dst == BlendFactor::InvSrcAlpha || dst == BlendFactor::InvSrcColor);
+    };
+    return eightBit && bytesRoundTrip() && keeps(b.opRgb, b.dstRgb) && keeps(b.opAlpha, b.dstAlpha);
 }
 
 // The SSAM composite's blend ([Hathaway 2010] §3.5.4): colour SRC_ALPHA / INV_SRC_ALPHA ADD, alpha

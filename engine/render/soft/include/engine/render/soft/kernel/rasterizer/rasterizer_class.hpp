@@ -73,6 +73,7 @@ public:
             v.srgb8Plain = v.format == Format::RGBA8_SRGB && !v.blend && draw.blend[i].writeMask == WriteAll;
             v.byteLut = (v.format == Format::RGBA8_UNORM || v.format == Format::RGBA8_SRGB) && v.blend &&
                         blendIsPerChannel(draw.blend[i]);
+            v.zeroKeeps = v.blend && zeroSourceKeeps(v.format, draw.blend[i]);
         }
         if constexpr (hasCompositeHooks<Program>()) {
             // A mask composite (SSAM's, SSAM+'s) as they are drawn: onto an 8-bit target,

@@ -128,6 +128,8 @@ inline void TriangleRasterizer<Program>::writeColor(int i, std::byte* p, const g
         else if (target.srgb8Plain && mask == WriteAll) storeRgba8Srgb(p, color);
         else storeTexel(p, target.format, color, mask);
     } else {
+        // Most of a composite layer is empty: (0, 0, 0, 0) blended there stores what is there.
+        if (target.zeroKeeps && color == glm::vec4(0.0f)) return;
         storeTexel(p, target.format,
                    blend(draw_.blend[i], color, loadTexel(p, target.format), draw_.blendConstant, target.normalized),
                    mask);
