@@ -4,7 +4,6 @@
 // are mostly empty (all-zero texels, the case the hook answers without decoding) with puffs,
 // +-0 and NaN texels, random scene depth, both depth conventions, full-resolution layers, and
 // rows whose lanes are partly live.
-#include <bit>
 #include <cstring>
 #include <limits>
 
@@ -13,6 +12,8 @@
 #include "engine/render/pixel_codec.hpp"
 #include "lcg.hpp"  // tests/support
 #include "particle_kernels.hpp"
+#include "row_hook_check.hpp"  // tests/support
+#include "soft_image.hpp"  // tests/support
 
 namespace {
 
@@ -20,19 +21,9 @@ namespace soft = engine::render::soft;
 using engine::render::Format;
 using ssam::testing::Lcg;
 
-soft::SoftTexture image(int w, int h, Format format, int bytes) {
-    soft::SoftTexture t;
-    t.desc.width = w;
-    t.desc.height = h;
-    t.desc.format = format;
-    t.bytesPerSample = bytes;
-    t.levels.push_back({w, h, std::vector<std::byte>(std::size_t(w) * std::size_t(h) * std::size_t(bytes)), {}});
-    return t;
-}
-
 // Mostly zero bits; some texels a puff colour, -0 or NaN.
 soft::SoftTexture layerImage(int w, int h, Lcg& rng) {
-    soft::SoftTexture t = image(w, h, Format::RGBA16F, 8);
+    soft::SoftTexture t = ssam::testing::softImage(w, h, Format::RGBA16F, 8);
     for (int i = 0; i < w * h; ++i) {
         const float u = rng.unit();
         if (u < 0.7f) continue;
@@ -46,17 +37,6 @@ soft::SoftTexture layerImage(int w, int h, Lcg& rng) {
     return t;
 }
 
-soft::SoftTexture depthImage(int w, int h, Lcg& rng) {
-    soft::SoftTexture t = image(w, h, Format::D32F, 4);
-    for (int i = 0; i < w * h; ++i) {
-        const float z = 0.05f + 0.9f * rng.unit();
-        std::memcpy(t.levels[0].texels.data() + 4 * std::size_t(i), &z, 4);
-    }
-    return t;
-}
-
-std::uint32_t bitsOf(float x) { return std::bit_cast<std::uint32_t>(x); }
-
 TEST(LayerCompositeRows, RowHookShadesTheBitsOfShade) {
     Lcg rng{20261127};
     constexpr int kW = 61, kH = 37;  // rows end in partial blocks
@@ -64,7 +44,7 @@ TEST(LayerCompositeRows, RowHookShadesTheBitsOfShade) {
     for (int trial = 0; trial < 12; ++trial) {
         const int scale = trial % 3 == 2 ? 1 : 2;
         const soft::SoftTexture layer = layerImage((kW + scale - 1) / scale, (kH + scale - 1) / scale, rng);
-        const soft::SoftTexture depth = depthImage(kW, kH, rng);
+        const soft::SoftTexture depth = ssam::testing::depthImage(kW, kH, [&](int) { return 0.05f + 0.9f * rng.unit(); });
         particles::LayerCompositeParams params;
         params.layerScale = scale;
         params.depthScale = 0.1f;
@@ -80,26 +60,10 @@ TEST(LayerCompositeRows, RowHookShadesTheBitsOfShade) {
         params.layer = {1, 1};
         params.sceneDepth = {2, 1};
         const particles::LayerCompositeKernel kernel(params, Textures(&layer, &depth));
-        for (int y = 0; y < kH; ++y) {
-            for (int bx = 0; bx < kW; bx += 8) {
-                std::uint32_t live = bx + 8 <= kW ? 0xFFu : (1u << (kW - bx)) - 1u;
-                if ((y + bx) % 3 == 0) live &= std::uint32_t(rng.unit() * 256.0f);  // gaps in the row
-                glm::vec4 out[8];
-                kernel.shadeRow(soft::SimdIsa::Sse2, bx, y, live, out);
-                for (int i = 0; i < 8; ++i) {
-                    if (!((live >> i) & 1u)) continue;
-                    soft::Fragment f;
-                    f.x = bx + i;
-                    f.y = y;
-                    const glm::vec4 expected = kernel.shade(f);
-                    (expected == glm::vec4(0.0f) ? zeros : others) += 1;
-                    for (int c = 0; c < 4; ++c)
-                        ASSERT_EQ(bitsOf(out[i][c]), bitsOf(expected[c]))
-                            << "trial " << trial << ", pixel (" << bx + i << ", " << y << "), channel " << c << ": "
-                            << out[i][c] << " != " << expected[c];
-                }
-            }
-        }
+        ASSERT_TRUE(ssam::testing::rowHookMatchesShade(
+            kernel, soft::SimdIsa::Sse2, kW, kH, rng,
+            [&](const glm::vec4& e) { (e == glm::vec4(0.0f) ? zeros : others) += 1; }))
+            << "trial " << trial;
     }
     // Both kinds of pixel occur often enough for the comparison to mean something.
     EXPECT_GT(zeros, 1000);
