@@ -9,6 +9,7 @@
 // Buffers are named by their content stamp, not their handle: a stamp is given to a buffer's
 // contents at creation and at every update, from one counter that never repeats, so a buffer
 // written in between, or destroyed and replaced by another at the same handle, never matches.
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -35,6 +36,23 @@ inline bool sameGeometry(const GeometryKey& a, const GeometryKey& b) {
            a.viewport.scissor.y == b.viewport.scissor.y && a.viewport.scissor.width == b.viewport.scissor.width &&
            a.viewport.scissor.height == b.viewport.scissor.height && a.viewport.pattern == b.viewport.pattern &&
            a.raster.cull == b.raster.cull && a.raster.frontFace == b.raster.frontFace;
+}
+
+// A hash of every field sameGeometry compares (FNV-1a over their values' bytes), so that a pass
+// of many draws finds its kept draws without comparing each against each.
+inline std::uint64_t geometryHash(const GeometryKey& k) {
+    std::uint64_t h = 14695981039346656037ull;
+    auto mix = [&h](const void* p, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) h = (h ^ static_cast<const unsigned char*>(p)[i]) * 1099511628211ull;
+    };
+    const std::uint64_t words[] = {k.vertices, k.indices, k.instances, k.first, k.count, k.instanceCount};
+    mix(words, sizeof words);
+    mix(&k.viewProj, sizeof k.viewProj);
+    const int ints[] = {k.viewport.width, k.viewport.height, k.viewport.scissor.x, k.viewport.scissor.y,
+                        k.viewport.scissor.width, k.viewport.scissor.height, int(k.raster.cull), int(k.raster.frontFace)};
+    mix(ints, sizeof ints);
+    mix(&k.viewport.pattern, sizeof k.viewport.pattern);
+    return h;
 }
 
 }  // namespace engine::render::soft

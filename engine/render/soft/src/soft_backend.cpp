@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -529,7 +530,11 @@ private:
     // and bins the geometry work would make again (geometry_key.hpp); only the index of the
     // draw they belong to may differ. Each kept draw is taken once.
     bool takeKeptGeometry(const GeometryKey& key, std::size_t first, std::uint32_t drawIndex) {
-        for (PlannedGeometry& kept : kept_) {
+        const std::uint64_t hash = geometryHash(key);
+        const auto byHash = [](const std::pair<std::uint64_t, std::size_t>& e, std::uint64_t h) { return e.first < h; };
+        for (auto it = std::lower_bound(keptByHash_.begin(), keptByHash_.end(), hash, byHash);
+             it != keptByHash_.end() && it->first == hash; ++it) {
+            PlannedGeometry& kept = kept_[it->second];
             if (kept.taken || !sameGeometry(kept.key, key)) continue;
             kept.taken = true;
             for (std::size_t c = 0; c < kept.chunkCount; ++c) {
@@ -626,6 +631,11 @@ private:
         std::swap(chunks_, keptChunks_);
         std::swap(planned_, kept_);
         planned_.clear();
+        keptByHash_.clear();
+        if (options_.reuseGeometry) {
+            for (std::size_t i = 0; i < kept_.size(); ++i) keptByHash_.emplace_back(geometryHash(kept_[i].key), i);
+            std::sort(keptByHash_.begin(), keptByHash_.end());
+        }
         // Chunks of an execution that threw may not have been set up: none is offered then.
         struct ForgetUnlessDone {
             std::vector<PlannedGeometry>& planned;
@@ -682,6 +692,7 @@ private:
         chunks_.resize(std::max(chunksUsed_, std::min(chunks_.size(), kKeptChunks)));
         keptChunks_.resize(std::min(keptChunks_.size(), kKeptChunks));
         kept_.clear();
+        keptByHash_.clear();
         forget.done = true;
         if (options_.debugChecks) checkNonFinite();
     }
@@ -732,6 +743,8 @@ private:
     std::vector<PlannedGeometry> planned_;   // which of chunks_ each draw's are
     std::vector<GeometryChunk> keptChunks_;  // the last execution's chunks, while this one plans
     std::vector<PlannedGeometry> kept_;      // which of keptChunks_ each of its draws' are
+    // (geometryHash, index in kept_), sorted: a pass of many draws finds its kept ones by search.
+    std::vector<std::pair<std::uint64_t, std::size_t>> keptByHash_;
     std::uint64_t lastStamp_ = 0;            // the last buffer content stamp given
     std::vector<std::vector<const SetupTriangle*>> bins_;  // per tile, in submission order
     std::vector<PassTiming> timings_;
