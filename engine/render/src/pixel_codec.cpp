@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "engine/render/pixel_codec.hpp"
 
+#include <algorithm>
+
 namespace engine::render {
 
 ByteTables::ByteTables() {
@@ -34,17 +36,18 @@ SrgbEncodeTables::SrgbEncodeTables() {
         }
         threshold[k] = floatOf(lo);
     }
+    threshold[256] = INFINITY;
     unsigned code = 0;
-    for (std::uint32_t bucket = 0; bucket < 0x3F80; ++bucket) {
+    for (std::uint32_t bucket = 0; bucket < kSrgbEncodeBuckets; ++bucket) {
         const float first = floatOf(bucket << 16);
         while (code < 255 && first >= threshold[code + 1]) ++code;
         start[bucket] = static_cast<std::uint8_t>(code);
+        // Steps up to the bucket's last pattern (1.0f's bucket holds only 1.0f in [0, 1]).
+        const float last = bucket == kSrgbEncodeBuckets - 1 ? first : floatOf(bucket << 16 | 0xFFFFu);
+        unsigned lastCode = code;
+        while (lastCode < 255 && last >= threshold[lastCode + 1]) ++lastCode;
+        maxBucketSteps = std::max(maxBucketSteps, int(lastCode - code));
     }
-}
-
-const SrgbEncodeTables& srgbEncodeTables() {
-    static const SrgbEncodeTables tables;
-    return tables;
 }
 
 }  // namespace engine::render

@@ -2,6 +2,7 @@
 // The soft backend's table-driven sRGB encode (engine/render/pixel_codec.hpp) against
 // the exact curve it replaces: every stored byte of an sRGB target depends on it.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -45,6 +46,16 @@ TEST(SoftSrgbEncode, TableMatchesExactCurve) {
                             0x7FFFFFFFu})
         check(b);
     EXPECT_EQ(mismatches, 0);
+}
+
+// encodeSrgb8 makes one comparison after its bucket's start code: that is right only while
+// no bucket of 2^16 float patterns holds two steps of the curve.
+TEST(SoftSrgbEncode, NoBucketHoldsTwoSteps) {
+    const codec::SrgbEncodeTables& tables = codec::srgbEncodeTables();
+    EXPECT_LE(tables.maxBucketSteps, 1);
+    EXPECT_EQ(tables.start[codec::kSrgbEncodeBuckets - 1], 255);  // 1.0f's bucket
+    EXPECT_EQ(codec::encodeSrgb8(1.0f), 255);
+    EXPECT_EQ(codec::encodeSrgb8(std::nextafter(1.0f, 0.0f)), codec::encodeSrgb8Exact(std::nextafter(1.0f, 0.0f)));
 }
 
 }  // namespace

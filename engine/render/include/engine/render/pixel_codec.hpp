@@ -47,24 +47,34 @@ inline std::uint8_t encodeSrgb8Exact(float linear) {
 // encodeSrgb8Exact without the pow per call. It is a non-decreasing step function of the
 // float, so it is fixed by the 255 floats where it steps: threshold[k] is the least float
 // it encodes to k or more. `start` holds the code at the least float of each bucket of
-// 2^16 consecutive float bit patterns in [0, 1); a bucket holds at most a couple of steps.
-// Equality with encodeSrgb8Exact for every float in (0, 1) was checked exhaustively.
+// 2^16 consecutive float bit patterns in [0, 1]; no bucket holds more than one step
+// (`maxBucketSteps`, counted when the tables are made and checked by the tests), so one
+// comparison finishes the code, with no loop and no branch: the colour writes of every
+// sRGB target call this three times a pixel, and the loop's exit, as unpredictable as the
+// colour, was a mispredicted branch per channel. Equality with encodeSrgb8Exact for every
+// float in (0, 1) was checked exhaustively.
+inline constexpr int kSrgbEncodeBuckets = 0x3F81;  // through 1.0f's bucket (0x3F800000 >> 16)
 struct SrgbEncodeTables {
-    float threshold[256];  // [0] unused
-    std::uint8_t start[0x3F80];
+    float threshold[257];  // [0] unused; [256] = +infinity, never reached
+    std::uint8_t start[kSrgbEncodeBuckets];
+    int maxBucketSteps = 0;  // the most steps within one bucket
     SrgbEncodeTables();
 };
-const SrgbEncodeTables& srgbEncodeTables();
+// Defined here so the encode below inlines whole; the tables are made in pixel_codec.cpp.
+inline const SrgbEncodeTables& srgbEncodeTables() {
+    static const SrgbEncodeTables tables;
+    return tables;
+}
 
 inline std::uint8_t encodeSrgb8(float linear) {
-    if (!(linear > 0.0f)) return 0;
-    if (linear >= 1.0f) return 255;
+    // Clamped to [0, 1], NaN to 0, as two compare-selects (maxss/minss), no branch.
+    float clamped = linear > 0.0f ? linear : 0.0f;
+    clamped = clamped < 1.0f ? clamped : 1.0f;
     const SrgbEncodeTables& t = srgbEncodeTables();
     std::uint32_t bits;
-    std::memcpy(&bits, &linear, sizeof bits);
-    unsigned code = t.start[bits >> 16];
-    while (code < 255 && linear >= t.threshold[code + 1]) ++code;
-    return static_cast<std::uint8_t>(code);
+    std::memcpy(&bits, &clamped, sizeof bits);
+    const unsigned code = t.start[bits >> 16];
+    return static_cast<std::uint8_t>(code + unsigned(clamped >= t.threshold[code + 1]));
 }
 
 inline float decodeHalf(std::uint16_t bits) {
