@@ -594,15 +594,30 @@ private:
                 ++out.counters.dropped;
                 continue;
             }
-            for (int k = 0; k < 3; ++k) {
-                const glm::vec3 n = normalMatrix * v[k]->normal;
-                const glm::vec4 c = v[k]->color * inst.tint;
-                cv[k].attributes = {v[k]->uv.x, v[k]->uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
-            }
-            setupUnrejectedTriangle(cv[0], cv[1], cv[2], g.viewport, g.raster, g.drawIndex, out.triangles,
-                                    out.counters);
+            setupUnrejectedTriangle(cv, VertexAttributes(v, normalMatrix, inst.tint), g.viewport, g.raster,
+                                    g.drawIndex, out.triangles, out.counters);
         }
     }
+
+    // A triangle's normals (by the instance's model matrix) and colours (tinted), computed
+    // when set-up asks: not for the triangles it culls or finds covering no sample.
+    class VertexAttributes final : public AttributeSource {
+    public:
+        VertexAttributes(const Vertex* const (&v)[3], const glm::mat3& normalMatrix, const glm::vec4& tint)
+            : v_(v), normalMatrix_(normalMatrix), tint_(tint) {}
+        void fill(ClipVertex (&cv)[3]) const override {
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 n = normalMatrix_ * v_[k]->normal;
+                const glm::vec4 c = v_[k]->color * tint_;
+                cv[k].attributes = {v_[k]->uv.x, v_[k]->uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
+            }
+        }
+
+    private:
+        const Vertex* const (&v_)[3];
+        const glm::mat3& normalMatrix_;
+        const glm::vec4& tint_;
+    };
 
     // `count` cleared chunks after those already used in this pass; the index of the first.
     std::size_t nextChunks(std::uint64_t count) {
@@ -623,7 +638,7 @@ private:
         if (passSkipped_) return;  // drawOnlyIfSamplesIn found none: the draws do not run
         const int tileSize = options_.tileSize;
         const int tilesX = (passWidth_ + tileSize - 1) / tileSize, tilesY = (passHeight_ + tileSize - 1) / tileSize;
-        const TileGrid grid{tileSize, tilesX, tilesY, &samplePattern(passSamples_)};
+        const TileGrid grid{tileSize, tilesX, tilesY};
         std::vector<DrawState> drawStates;
         drawStates.reserve(draws_.size());
         // The last execution's chunks are kept for this one's draws to take (takeKeptGeometry);

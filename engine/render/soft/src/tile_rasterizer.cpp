@@ -55,10 +55,8 @@ bool coversAnySample(const SetupTriangle& t, const SamplePattern& pattern) {
 }
 
 void binTriangle(const SetupTriangle& t, std::uint32_t triangle, const TileGrid& grid, std::vector<BinEntry>& out) {
-    // Tiny triangles often cover no sample: found here, while the triangle is in cache,
-    // with the rasterizer's own per-sample edge test (sampleCoverage). (Set-up given the
-    // pattern has already dropped such triangles; full-screen ones come here directly.)
-    if (isTinyTriangle(t) && grid.pattern && !coversAnySample(t, *grid.pattern)) return;
+    // A tiny triangle that covers no sample never gets here: set-up, given the pass's sample
+    // pattern (Viewport::pattern), has dropped it (and a full-screen one covers every sample).
     const int ts = grid.tileSize;
     const int tx0 = t.minX / ts, tx1 = t.maxX / ts, ty0 = t.minY / ts, ty1 = t.maxY / ts;
     if (tx0 == tx1 && ty0 == ty1) {  // the common small triangle: its box is in one tile

@@ -18,11 +18,10 @@ namespace engine::render::soft {
 void rasterizeTile(const Rect& tile, std::span<const SetupTriangle* const> triangles,
                    const std::vector<DrawState>& draws, TileCounters& counters);
 
-// Tiles of the pass's grid, and the pass's sample positions.
+// Tiles of the pass's grid.
 struct TileGrid {
     int tileSize = 64;
     int tilesX = 0, tilesY = 0;
-    const SamplePattern* pattern = nullptr;
 };
 
 // One binned triangle: tile index (y * tilesX + x) and the triangle's index in its chunk.

@@ -131,8 +131,10 @@ bool survivesEmit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVert
     return coversAnySample(t, *vp.pattern);
 }
 
+// `coversSample`: survivesEmit has kept this very triangle, so its tiny-coverage test is not
+// made twice.
 void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
-          const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+          const RasterState& raster, std::uint32_t drawIndex, bool coversSample, std::vector<SetupTriangle>& out,
           SetupCounters& counters) {
     const ScreenVertex* v[3] = {&s0, &s1, &s2};  // swapped as pointers, not copied
     std::int64_t area = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
@@ -170,7 +172,7 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
     t.frontFacing = frontFacing;
     t.minX = minX, t.minY = minY, t.maxX = maxX, t.maxY = maxY;
     setEdges(t, v);
-    if (vp.pattern && isTinyTriangle(t) && !coversAnySample(t, *vp.pattern)) {
+    if (!coversSample && vp.pattern && isTinyTriangle(t) && !coversAnySample(t, *vp.pattern)) {
         out.pop_back();
         ++counters.dropped;
         return;
@@ -202,10 +204,12 @@ bool finite(const ClipVertex& v) {
 
 // The clipped polygon (`count` vertices: position(i), attribute(i, k)) to screen space, then
 // its fan of triangles emitted. Vertices reach it as doubles of the clip-space floats, or
-// clipped in double: the same arithmetic either way.
-template <typename Position, typename Attribute>
-void projectAndEmit(int count, Position position, Attribute attribute, const Viewport& vp, const RasterState& raster,
-                    std::uint32_t drawIndex, std::vector<SetupTriangle>& out, SetupCounters& counters) {
+// clipped in double: the same arithmetic either way. `prepare()` runs once before the first
+// attribute is read, and only if a triangle of the fan survives.
+template <typename Position, typename Attribute, typename Prepare>
+void projectAndEmit(int count, Position position, Attribute attribute, Prepare prepare, const Viewport& vp,
+                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                    SetupCounters& counters) {
     std::array<ScreenVertex, 12> screen;
     for (int i = 0; i < count; ++i) {
         const glm::dvec4& c = position(i);
@@ -230,12 +234,15 @@ void projectAndEmit(int count, Position position, Attribute attribute, const Vie
         counters.dropped += std::uint64_t(count - 2);
         return;
     }
+    prepare();
     for (int i = 0; i < count; ++i) {
         ScreenVertex& s = screen[i];
         s.z = std::clamp(position(i).z * s.inverseW, 0.0, 1.0);
         for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(i, k) * s.inverseW;
     }
-    for (int i = 1; i + 1 < count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
+    // A lone triangle reached here because survivesEmit kept it.
+    for (int i = 1; i + 1 < count; ++i)
+        emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, count == 3, out, counters);
 }
 
 }  // namespace
@@ -263,6 +270,14 @@ bool outsideOnePlane(const ClipVertex& v0, const ClipVertex& v1, const ClipVerte
            all([&](const glm::vec4& p) { return -double(p.w) > margin; });
 }
 
+namespace {
+// For setupTriangle's callers, whose vertices come with their attributes.
+class GivenAttributes final : public AttributeSource {
+public:
+    void fill(ClipVertex (&)[3]) const override {}
+};
+}  // namespace
+
 void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp,
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                    SetupCounters& counters) {
@@ -270,10 +285,11 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
         ++counters.dropped;
         return;
     }
-    setupUnrejectedTriangle(v0, v1, v2, vp, raster, drawIndex, out, counters);
+    ClipVertex vertices[3] = {v0, v1, v2};
+    setupUnrejectedTriangle(vertices, GivenAttributes{}, vp, raster, drawIndex, out, counters);
 }
 
-void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& vp,
+void setupUnrejectedTriangle(ClipVertex (&v)[3], const AttributeSource& attributes, const Viewport& vp,
                              const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                              SetupCounters& counters) {
     // Guard band in NDC: |x_ndc| <= gx keeps |x_pixels| <= 2^20 for this viewport.
@@ -288,21 +304,22 @@ void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const C
 
     // Inside every plane (most triangles that get here): no polygon to build, and the same
     // values as the clipping loop below, which would leave the three vertices as they are.
-    const glm::dvec4 positions[3] = {glm::dvec4(v0.position), glm::dvec4(v1.position), glm::dvec4(v2.position)};
+    const glm::dvec4 positions[3] = {glm::dvec4(v[0].position), glm::dvec4(v[1].position), glm::dvec4(v[2].position)};
     const bool inside = insideEveryPlane(positions[0], gx, gy) & insideEveryPlane(positions[1], gx, gy) &
                         insideEveryPlane(positions[2], gx, gy);
     if (inside) {
-        const ClipVertex* v[3] = {&v0, &v1, &v2};
         projectAndEmit(
             3, [&](int i) -> const glm::dvec4& { return positions[i]; },
-            [&](int i, int k) { return double(v[i]->attributes[k]); }, vp, raster, drawIndex, out, counters);
+            [&](int i, int k) { return double(v[i].attributes[k]); }, [&] { attributes.fill(v); }, vp, raster,
+            drawIndex, out, counters);
         return;
     }
 
+    attributes.fill(v);
     Polygon poly;
-    poly.vertices[0] = toClipPoint(v0);
-    poly.vertices[1] = toClipPoint(v1);
-    poly.vertices[2] = toClipPoint(v2);
+    poly.vertices[0] = toClipPoint(v[0]);
+    poly.vertices[1] = toClipPoint(v[1]);
+    poly.vertices[2] = toClipPoint(v[2]);
     poly.count = 3;
     for (const ClipPlane& plane : planes) {
         const double d0 = glm::dot(plane, poly.vertices[0].position), d1 = glm::dot(plane, poly.vertices[1].position),
@@ -317,7 +334,7 @@ void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const C
 
     projectAndEmit(
         poly.count, [&](int i) -> const glm::dvec4& { return poly.vertices[i].position; },
-        [&](int i, int k) { return poly.vertices[i].attributes[k]; }, vp, raster, drawIndex, out, counters);
+        [&](int i, int k) { return poly.vertices[i].attributes[k]; }, [] {}, vp, raster, drawIndex, out, counters);
 }
 
 SetupTriangle fullscreenTriangle(const Viewport& vp, std::uint32_t drawIndex) {

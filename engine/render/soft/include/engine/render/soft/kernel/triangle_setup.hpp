@@ -81,9 +81,22 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                    SetupCounters& counters);
 
+// Where set-up finds the attributes of a triangle's vertices when it needs them: the vertex
+// stage computes normals and colours only for the triangles set-up keeps or clips (most of
+// those it drops, culled or covering no sample, never need them).
+class AttributeSource {
+public:
+    // Writes the attributes of the triangle's three vertices (positions are already there).
+    virtual void fill(ClipVertex (&vertices)[3]) const = 0;
+
+protected:
+    ~AttributeSource() = default;
+};
+
 // setupTriangle for a triangle rejectedBeforeSetup has already kept (the vertex stage tests
-// positions before it computes attributes).
-void setupUnrejectedTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, const Viewport& viewport,
+// positions before it computes attributes), its attributes filled from `attributes` when they
+// are first needed, at most once.
+void setupUnrejectedTriangle(ClipVertex (&vertices)[3], const AttributeSource& attributes, const Viewport& viewport,
                              const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                              SetupCounters& counters);
 
