@@ -82,6 +82,43 @@ struct SurfaceProgram {
         // base.a = (baseColorFactor.a * vertex alpha) * texel alpha; toStraight keeps alpha.
         return alphaTimes4(alphaSampler, texture != nullptr, params.baseColorFactor.a, colorA, u, v, duv, lanes);
     }
+
+    // shadeSampled() of 4 fragments, lane i = fragment i, in vectors of one channel: the
+    // texel's channels texel[c], the interpolated vertex colour color[c][0..3] and normal
+    // normal[k][0..3], into out[c]. Lane by lane the IEEE operations of shadeSampled() in
+    // glm's order: componentwise products, dot as (x*x + y*y) + z*z, glm::max(x, 0) as
+    // x < 0 ? 0 : x (NaN kept), the normal over its length by division.
+    void shadeSampled4(const __m128 (&texel)[4], const float* const (&color)[4], const float* const (&normal)[3],
+                       bool frontFacing, __m128 (&out)[4]) const {
+        __m128 straight[4] = {texel[0], texel[1], texel[2], texel[3]};
+        if (texture->desc.alpha != AlphaMode::Straight) {  // toStraight: rgb / a where a > 0
+            const __m128 divide = _mm_cmpgt_ps(texel[3], _mm_setzero_ps());
+            for (int c = 0; c < 3; ++c)
+                straight[c] = _mm_or_ps(_mm_and_ps(divide, _mm_div_ps(texel[c], texel[3])),
+                                        _mm_andnot_ps(divide, texel[c]));
+        }
+        __m128 base[4];
+        for (int c = 0; c < 4; ++c)
+            base[c] = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(params.baseColorFactor[c]), _mm_loadu_ps(color[c])), straight[c]);
+        __m128 n[3];
+        const bool flip = AlphaMasked && !frontFacing;  // a back face of a card: its flipped normal
+        for (int k = 0; k < 3; ++k) {
+            n[k] = _mm_loadu_ps(normal[k]);
+            if (flip) n[k] = _mm_xor_ps(n[k], _mm_set1_ps(-0.0f));  // -x, as glm's unary minus
+        }
+        // lambert(): 0 where !(len > 0), else max(dot(n / len, towardLight), 0).
+        const __m128 len = _mm_sqrt_ps(
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(n[0], n[0]), _mm_mul_ps(n[1], n[1])), _mm_mul_ps(n[2], n[2])));
+        const __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(n[0], len), _mm_set1_ps(towardLight.x)),
+                                               _mm_mul_ps(_mm_div_ps(n[1], len), _mm_set1_ps(towardLight.y))),
+                                    _mm_mul_ps(_mm_div_ps(n[2], len), _mm_set1_ps(towardLight.z)));
+        const __m128 below = _mm_cmplt_ps(d, _mm_setzero_ps());
+        const __m128 lit = _mm_and_ps(_mm_cmpgt_ps(len, _mm_setzero_ps()), _mm_andnot_ps(below, d));
+        for (int c = 0; c < 3; ++c)
+            out[c] = _mm_mul_ps(base[c], _mm_add_ps(_mm_set1_ps(params.light.ambient[c]),
+                                                    _mm_mul_ps(_mm_set1_ps(params.light.color[c]), lit)));
+        out[3] = AlphaMasked ? base[3] : _mm_set1_ps(1.0f);
+    }
 #endif
 
     glm::vec4 shade(const Fragment& f) const {

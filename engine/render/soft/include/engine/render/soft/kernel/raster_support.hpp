@@ -312,6 +312,22 @@ inline __m128i encodeUnorm8x4(__m128 v) {
     return _mm_or_si128(_mm_and_si128(full, _mm_set1_epi32(255)), _mm_andnot_si128(full, _mm_and_si128(positive, rounded)));
 }
 
+// encodeSrgb8 of each lane, as a 32-bit integer: the same clamp (maxps and minps are its
+// compare-selects, NaN to 0), bucket and one threshold comparison.
+inline __m128i encodeSrgb8x4(__m128 v) {
+    const __m128 clamped = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+    const SrgbEncodeTables& t = srgbEncodeTables();
+    alignas(16) std::uint32_t bucket[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(bucket), _mm_srli_epi32(_mm_castps_si128(clamped), 16));
+    const __m128i start = _mm_setr_epi32(t.start[bucket[0]], t.start[bucket[1]], t.start[bucket[2]], t.start[bucket[3]]);
+    alignas(16) std::int32_t code[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(code), start);
+    const __m128 next = _mm_setr_ps(t.threshold[code[0] + 1], t.threshold[code[1] + 1], t.threshold[code[2] + 1],
+                                    t.threshold[code[3] + 1]);
+    // The comparison's all-ones lanes are -1: subtracting adds the step.
+    return _mm_sub_epi32(start, _mm_castps_si128(_mm_cmpge_ps(clamped, next)));
+}
+
 // Lanes (bit i: pixel i of the 4 RGBA8 pixels at p) whose stored bytes, with the bytes a
 // write mask leaves set to 0xFF in `unwritten`, are all 0xFF.
 inline std::uint32_t saturatedLanes(const std::byte* p, std::uint32_t unwritten) {

@@ -86,8 +86,11 @@ public:
         if constexpr (std::is_same_v<Program, MaskedLitProgram>)
             alphaFirst_ = !draw.capture && draw.shade && draw.alphaTest.enabled &&
                           draw.alphaTest.failMode == AlphaFailMode::Keep && program.hasAlpha4();
-        if constexpr (std::is_same_v<Program, MaskedLitProgram> || std::is_same_v<Program, OpaqueLitProgram>)
+        if constexpr (std::is_same_v<Program, MaskedLitProgram> || std::is_same_v<Program, OpaqueLitProgram>) {
             sampledRow_ = !alphaFirst_ && draw.shade && program.hasRgba4();
+            // One plain 8-bit target (no blend, every channel written): shadePacked4.
+            packedWrite_ = !draw.capture && draw.colorTargetCount == 1 && (color_[0].srgb8Plain || color_[0].rgba8Plain);
+        }
         if constexpr (std::is_same_v<Program, AlphaOnlyProgram>) {
             // The mask path (shadeAlphaRow) covers what the mask pass is: no capture, no alpha
             // test, no depth write. Anything else takes the general path.
@@ -174,6 +177,8 @@ private:
                          const float* z, std::byte* depthAt);
     void shadeTexels(const SetupTriangle& t, const AlphaSampler::Lookup4& lookup, int bx, int py, int o,
                      std::uint32_t lanes, const float* z, std::byte* depthAt);
+    void shadePacked4(const float (&texels)[4][4], bool frontFacing, int bx, int py, int o, std::uint32_t lanes,
+                      const float* z, std::byte* depthAt);
     void interpolateRow(const SetupTriangle& t, float centerX0, float fy, std::uint32_t lanes);
     void interpolateHalf(const SetupTriangle& t, float centerX0, float fy, int h);
     Fragment rowFragment(const SetupTriangle& t, int px, int py, int i) const;
@@ -211,6 +216,7 @@ private:
     bool compositeRow_ = false;  // CompositeProgram, CoverageCompositeProgram: compositeRow
     bool alphaFirst_ = false;    // MaskedLit: alpha-test (Keep) on the alpha alone before shading
     bool sampledRow_ = false;    // Surface programs otherwise: the texture sampled 4 lanes at a time
+    bool packedWrite_ = false;   // Surface programs onto one plain RGBA8 target: shadePacked4
     // AlphaOnly's row path (shadeAlphaRow).
     bool alphaRow_ = false;
     bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha
