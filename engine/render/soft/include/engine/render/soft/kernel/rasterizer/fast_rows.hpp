@@ -166,14 +166,15 @@ inline __m128 TriangleRasterizer<Program>::alpha4(int h, std::uint32_t lanes) co
 // MaskedLit's row under a Keep alpha test (alphaFirst_): the texel alpha four lanes
 // at a time (the general sampler's bits), then the alpha test on the alpha shade()
 // would output, (baseColorFactor.a * vertex alpha) * texel alpha (toStraight keeps
-// alpha), and the texel's colour and shade() for the fragments that pass only: a
-// discarded fragment writes nothing, so neither is ever needed.
+// alpha), and the texel's colour, the normals and colours and shade() for the fragments
+// that pass only, in the halves that hold one: a discarded fragment writes nothing, so
+// none of them is ever needed.
 template <typename Program>
 inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle& t, int bx, int py, std::uint32_t live,
                                                              float centerX0, float fy, const float* z,
                                                              std::byte* depthAt) {
-    interpolateRow(t, centerX0, fy, live);
     if (!program_.texture) {  // alpha4 without a texture: factor * vertex alpha
+        interpolateRow(t, centerX0, fy, live);
         alignas(16) float alpha[kBlockSize];
         std::uint32_t passing = 0;
         for (int h = 0; h < 2; ++h) {
@@ -197,6 +198,7 @@ inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle
         const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
         if (!lanes) continue;
         const int o = 4 * h;
+        interpolateHalf(t, centerX0, fy, h, RowInputs::AlphaInputs);
         const AlphaSampler::Lookup4 lookup = sampler.lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o,
                                                              row_.duv[1] + o, row_.duv[2] + o, row_.duv[3] + o, lanes);
         alignas(16) float texelAlpha[4];
@@ -207,7 +209,9 @@ inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle
             if (draw_.alphaTest.passes(factorAlpha * row_.color[3][o + k] * texelAlpha[k])) passing |= 1u << k;
         }
         counters_.pixelsShaded += kBitCount[lanes & ~passing];  // shaded as far as their alpha
-        if (passing) shadeTexels(t, lookup, bx, py, o, passing, z, depthAt);
+        if (!passing) continue;
+        interpolateHalf(t, centerX0, fy, h, RowInputs::Rest);  // normals and colours for the passing
+        shadeTexels(t, lookup, bx, py, o, passing, z, depthAt);
     }
 }
 
@@ -301,7 +305,8 @@ inline void TriangleRasterizer<Program>::interpolateRow(const SetupTriangle& t, 
 }
 
 template <typename Program>
-inline void TriangleRasterizer<Program>::interpolateHalf(const SetupTriangle& t, float centerX0, float fy, int h) {
+inline void TriangleRasterizer<Program>::interpolateHalf(const SetupTriangle& t, float centerX0, float fy, int h,
+                                                         RowInputs inputs) {
     constexpr ProgramNeeds needs = Program::kNeeds;
     if constexpr (needs.anyAttribute()) {
         const __m128 fx = _mm_sub_ps(
@@ -312,30 +317,44 @@ inline void TriangleRasterizer<Program>::interpolateHalf(const SetupTriangle& t,
             return _mm_add_ps(_mm_add_ps(_mm_set1_ps(p.value), _mm_mul_ps(_mm_set1_ps(p.dx), fx)),
                               _mm_set1_ps(p.dy * fy));
         };
-        const __m128 w = _mm_div_ps(_mm_set1_ps(1.0f), evaluateLanes(t.inverseW));
-        _mm_store_ps(row_.w + 4 * h, w);
+        const bool alphaInputs = inputs != RowInputs::Rest, rest = inputs != RowInputs::AlphaInputs;
+        __m128 w;
+        if (alphaInputs) {
+            w = _mm_div_ps(_mm_set1_ps(1.0f), evaluateLanes(t.inverseW));
+            _mm_store_ps(row_.w + 4 * h, w);
+        } else {
+            w = _mm_load_ps(row_.w + 4 * h);  // the AlphaInputs call's
+        }
         auto attribute = [&](int k) { return _mm_mul_ps(evaluateLanes(t.attributeOverW[k]), w); };
         if constexpr (needs.uv) {
-            const __m128 u = attribute(kAttrU), v = attribute(kAttrV);
-            _mm_store_ps(row_.uv[0] + 4 * h, u);
-            _mm_store_ps(row_.uv[1] + 4 * h, v);
-            if constexpr (needs.derivatives) {
-                const Plane& pu = t.attributeOverW[kAttrU];
-                const Plane& pv = t.attributeOverW[kAttrV];
-                auto derivative = [&](float slope, __m128 value, float inverseWSlope) {
-                    return _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(slope), _mm_mul_ps(value, _mm_set1_ps(inverseWSlope))), w);
-                };
-                _mm_store_ps(row_.duv[0] + 4 * h, derivative(pu.dx, u, t.inverseW.dx));
-                _mm_store_ps(row_.duv[1] + 4 * h, derivative(pv.dx, v, t.inverseW.dx));
-                _mm_store_ps(row_.duv[2] + 4 * h, derivative(pu.dy, u, t.inverseW.dy));
-                _mm_store_ps(row_.duv[3] + 4 * h, derivative(pv.dy, v, t.inverseW.dy));
+            if (alphaInputs) {
+                const __m128 u = attribute(kAttrU), v = attribute(kAttrV);
+                _mm_store_ps(row_.uv[0] + 4 * h, u);
+                _mm_store_ps(row_.uv[1] + 4 * h, v);
+                if constexpr (needs.derivatives) {
+                    const Plane& pu = t.attributeOverW[kAttrU];
+                    const Plane& pv = t.attributeOverW[kAttrV];
+                    auto derivative = [&](float slope, __m128 value, float inverseWSlope) {
+                        return _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(slope), _mm_mul_ps(value, _mm_set1_ps(inverseWSlope))),
+                                          w);
+                    };
+                    _mm_store_ps(row_.duv[0] + 4 * h, derivative(pu.dx, u, t.inverseW.dx));
+                    _mm_store_ps(row_.duv[1] + 4 * h, derivative(pv.dx, v, t.inverseW.dx));
+                    _mm_store_ps(row_.duv[2] + 4 * h, derivative(pu.dy, u, t.inverseW.dy));
+                    _mm_store_ps(row_.duv[3] + 4 * h, derivative(pv.dy, v, t.inverseW.dy));
+                }
             }
         }
         if constexpr (needs.normal)
-            for (int k = 0; k < 3; ++k) _mm_store_ps(row_.normal[k] + 4 * h, attribute(kAttrNormal + k));
-        if constexpr (needs.color)
-            for (int k = 0; k < 4; ++k) _mm_store_ps(row_.color[k] + 4 * h, attribute(kAttrColor + k));
-        if constexpr (needs.colorAlpha) _mm_store_ps(row_.color[3] + 4 * h, attribute(kAttrColor + 3));
+            if (rest)
+                for (int k = 0; k < 3; ++k) _mm_store_ps(row_.normal[k] + 4 * h, attribute(kAttrNormal + k));
+        if constexpr (needs.color) {
+            if (rest)
+                for (int k = 0; k < 3; ++k) _mm_store_ps(row_.color[k] + 4 * h, attribute(kAttrColor + k));
+            if (alphaInputs) _mm_store_ps(row_.color[3] + 4 * h, attribute(kAttrColor + 3));
+        }
+        if constexpr (needs.colorAlpha)
+            if (alphaInputs) _mm_store_ps(row_.color[3] + 4 * h, attribute(kAttrColor + 3));
     }
 }
 

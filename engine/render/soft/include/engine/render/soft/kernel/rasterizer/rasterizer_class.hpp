@@ -180,7 +180,10 @@ private:
     void shadePacked4(const float (&texels)[4][4], bool frontFacing, int bx, int py, int o, std::uint32_t lanes,
                       const float* z, std::byte* depthAt);
     void interpolateRow(const SetupTriangle& t, float centerX0, float fy, std::uint32_t lanes);
-    void interpolateHalf(const SetupTriangle& t, float centerX0, float fy, int h);
+    // What interpolateHalf computes: everything, or first what an alpha test reads (1/w, uv and
+    // their derivatives, the vertex alpha), then the rest (normals, colour) for the lanes that pass.
+    enum class RowInputs { All, AlphaInputs, Rest };
+    void interpolateHalf(const SetupTriangle& t, float centerX0, float fy, int h, RowInputs inputs = RowInputs::All);
     Fragment rowFragment(const SetupTriangle& t, int px, int py, int i) const;
 #endif
 
