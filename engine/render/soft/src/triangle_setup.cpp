@@ -110,8 +110,9 @@ void setEdges(SetupTriangle& t, const ScreenVertex* const v[3]) {
     }
 }
 
-// Whether emit() would keep the triangle: the area, culling, box and tiny-coverage tests it
-// starts with, from the snapped positions alone (so dropped triangles skip the rest of the setup).
+// Whether beginTriangle() would keep the triangle (the same area, culling, box and
+// tiny-coverage tests), without appending it: for the fans of clipped polygons, whose
+// attributes are needed only if one of their triangles is kept.
 bool survivesEmit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, const Viewport& vp,
                   const RasterState& raster) {
     const std::int64_t area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
@@ -131,16 +132,25 @@ bool survivesEmit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVert
     return coversAnySample(t, *vp.pattern);
 }
 
-// `coversSample`: survivesEmit has kept this very triangle, so its tiny-coverage test is not
-// made twice.
-void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
-          const RasterState& raster, std::uint32_t drawIndex, bool coversSample, std::vector<SetupTriangle>& out,
-          SetupCounters& counters) {
+// A triangle appended to `out` with its facing, box and edges (beginTriangle): its vertices
+// in the stored (clockwise) order and twice its area in sub-pixel units, for its planes.
+struct BegunTriangle {
+    std::size_t index = 0;  // in `out`
+    const ScreenVertex* v[3] = {};
+    std::int64_t area = 0;
+};
+
+// The area, culling, box and tiny-coverage tests, from the snapped positions alone: a
+// triangle that passes them is appended to `out` with its facing, box and edges (its
+// vertices' depth and attributes are not read yet); one that fails is counted dropped.
+bool beginTriangle(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
+                   const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                   SetupCounters& counters, BegunTriangle& begun) {
     const ScreenVertex* v[3] = {&s0, &s1, &s2};  // swapped as pointers, not copied
     std::int64_t area = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
     if (area == 0) {
         ++counters.dropped;
-        return;
+        return false;
     }
     // y points down on screen, so a triangle counter-clockwise as displayed (GL's front
     // face by default) has a negative area here.
@@ -148,7 +158,7 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
     const bool frontFacing = (raster.frontFace == Winding::CounterClockwise) == counterClockwise;
     if ((raster.cull == CullMode::Back && !frontFacing) || (raster.cull == CullMode::Front && frontFacing)) {
         ++counters.dropped;
-        return;
+        return false;
     }
     if (area < 0) {
         std::swap(v[1], v[2]);
@@ -164,7 +174,7 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
     const int maxY = int(std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, maxYf >> kSubpixelBits));
     if (minX > maxX || minY > maxY) {
         ++counters.dropped;
-        return;
+        return false;
     }
 
     SetupTriangle& t = out.emplace_back();  // built in place
@@ -172,20 +182,34 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
     t.frontFacing = frontFacing;
     t.minX = minX, t.minY = minY, t.maxX = maxX, t.maxY = maxY;
     setEdges(t, v);
-    if (!coversSample && vp.pattern && isTinyTriangle(t) && !coversAnySample(t, *vp.pattern)) {
+    if (vp.pattern && isTinyTriangle(t) && !coversAnySample(t, *vp.pattern)) {
         out.pop_back();
         ++counters.dropped;
-        return;
+        return false;
     }
+    begun = {out.size() - 1, {v[0], v[1], v[2]}, area};
+    return true;
+}
 
+// The begun triangle's depth and attribute planes, from its vertices' z and attributes.
+void finishTriangle(const BegunTriangle& begun, std::vector<SetupTriangle>& out) {
+    SetupTriangle& t = out[begun.index];
+    const ScreenVertex* const* v = begun.v;
     const double originX = double(v[0]->x) / kSubpixelScale, originY = double(v[0]->y) / kSubpixelScale;
     t.originX = static_cast<float>(originX);
     t.originY = static_cast<float>(originY);
-    const PlaneBasis basis(*v[0], *v[1], *v[2], double(kSubpixelScale) * kSubpixelScale / double(area));
+    const PlaneBasis basis(*v[0], *v[1], *v[2], double(kSubpixelScale) * kSubpixelScale / double(begun.area));
     t.depth = makePlane(basis, v[0]->z, v[1]->z, v[2]->z);
     t.inverseW = makePlane(basis, v[0]->inverseW, v[1]->inverseW, v[2]->inverseW);
     for (int k = 0; k < kAttributeCount; ++k)
         t.attributeOverW[k] = makePlane(basis, v[0]->attributeOverW[k], v[1]->attributeOverW[k], v[2]->attributeOverW[k]);
+}
+
+void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
+          const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+          SetupCounters& counters) {
+    BegunTriangle begun;
+    if (beginTriangle(s0, s1, s2, vp, raster, drawIndex, out, counters, begun)) finishTriangle(begun, out);
 }
 
 // glm::dot(plane, p) >= 0 for each of setupUnrejectedTriangle's planes, without the products
@@ -225,8 +249,23 @@ void projectAndEmit(int count, Position position, Attribute attribute, Prepare p
         s.y = roundHalfAway(y * kSubpixelScale);
         s.inverseW = inverseW;
     }
-    // Most dropped triangles (culled, off-screen, degenerate) are known from the snapped
-    // positions: they skip depth and attribute set-up.
+    // Most dropped triangles (culled, off-screen, degenerate, covering no sample) are known from
+    // the snapped positions: they skip depth and attribute set-up, and never ask for attributes.
+    auto depthAndAttributes = [&] {
+        prepare();
+        for (int i = 0; i < count; ++i) {
+            ScreenVertex& s = screen[i];
+            s.z = std::clamp(position(i).z * s.inverseW, 0.0, 1.0);
+            for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(i, k) * s.inverseW;
+        }
+    };
+    if (count == 3) {  // a lone triangle (unclipped, or clipped to three vertices): begun once
+        BegunTriangle begun;
+        if (!beginTriangle(screen[0], screen[1], screen[2], vp, raster, drawIndex, out, counters, begun)) return;
+        depthAndAttributes();
+        finishTriangle(begun, out);
+        return;
+    }
     bool anySurvives = false;
     for (int i = 1; i + 1 < count && !anySurvives; ++i)
         anySurvives = survivesEmit(screen[0], screen[i], screen[i + 1], vp, raster);
@@ -234,15 +273,8 @@ void projectAndEmit(int count, Position position, Attribute attribute, Prepare p
         counters.dropped += std::uint64_t(count - 2);
         return;
     }
-    prepare();
-    for (int i = 0; i < count; ++i) {
-        ScreenVertex& s = screen[i];
-        s.z = std::clamp(position(i).z * s.inverseW, 0.0, 1.0);
-        for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(i, k) * s.inverseW;
-    }
-    // A lone triangle reached here because survivesEmit kept it.
-    for (int i = 1; i + 1 < count; ++i)
-        emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, count == 3, out, counters);
+    depthAndAttributes();
+    for (int i = 1; i + 1 < count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
 }
 
 }  // namespace
