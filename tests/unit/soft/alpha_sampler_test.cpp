@@ -46,7 +46,7 @@ SoftTexture texture(int w, int h, int levels, Format format, bool sampledOnly, L
             m.texels[i] = std::byte(i % 4 == 3 && rng.next() % 3 == 0 ? 0 : rng.next() & 0xFF);
         t.levels.push_back(std::move(m));
     }
-    t.copyAlpha();
+    t.copyDecoded();
     return t;
 }
 

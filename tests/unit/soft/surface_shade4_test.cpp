@@ -52,7 +52,7 @@ SoftTexture oneTexel(AlphaMode mode) {
     m.width = m.height = 1;
     m.texels.resize(4);
     t.levels.push_back(std::move(m));
-    t.copyAlpha();
+    t.copyDecoded();
     return t;
 }
 

@@ -147,10 +147,12 @@ public:
         validateTexture(desc, what);
         if (data) validateTextureData(desc, *data, what);
         const FormatInfo& info = formatInfo(desc.format);
-        // Texels, plus the float alpha plane copyAlpha keeps beside sampled RGBA8 textures.
-        const bool alphaPlane = (desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB) &&
-                                desc.samples == 1 && !(desc.usage & UsageRenderTarget);
-        checkFitsInMemory(textureBytes(desc) * (alphaPlane ? 2 : 1), what + ": " + describeSize(desc), hostMemoryAvailable);
+        // Texels, plus the decoded float copies copyDecoded keeps beside sampled RGBA8 textures
+        // (alpha: 4 bytes a texel, all four channels: 16).
+        const bool decodedCopies = (desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB) &&
+                                   desc.samples == 1 && !(desc.usage & UsageRenderTarget);
+        checkFitsInMemory(textureBytes(desc) * (decodedCopies ? 6 : 1), what + ": " + describeSize(desc),
+                          hostMemoryAvailable);
 
         SoftTexture t;
         t.desc = desc;
@@ -163,7 +165,7 @@ public:
             t.levels.push_back(std::move(l));
         }
         if (data) upload(t, *data);
-        t.copyAlpha();  // texels are final here unless the texture is a render target
+        t.copyDecoded();  // texels are final here unless the texture is a render target
         return textures_.add(std::move(t));
     }
 

@@ -50,7 +50,7 @@ public:
             const MipLevel& l = texture.levels[i];
             decoded = decoded && !l.alpha.empty();
             levels_[i] = {reinterpret_cast<const std::uint8_t*>(l.texels.data()), l.alpha.empty() ? nullptr : l.alpha.data(),
-                          l.width, l.height};
+                          l.rgba.empty() ? nullptr : l.rgba.data(), l.width, l.height};
         }
         size0_ = glm::vec2(texture.levels[0].width, texture.levels[0].height);
         // lookup4 addresses clamp-to-edge and power-of-two wrap (a mask) in SIMD, and reads
@@ -116,6 +116,7 @@ private:
     struct Level {
         const std::uint8_t* rgba = nullptr;  // texel (0, 0)
         const float* alpha = nullptr;        // its decoded alpha (MipLevel::alpha), if the texture has them
+        const float* decoded = nullptr;      // its four decoded channels (MipLevel::rgba), likewise
         int width = 0, height = 0;
     };
 
@@ -313,8 +314,10 @@ private:
             out[i] = _mm_add_ps(_mm_mul_ps(top, ry), _mm_mul_ps(bottom, wy));
         }
     }
-    // The general sampler's load of an RGBA8 texel: colour through the sRGB table for sRGB.
+    // The general sampler's load of an RGBA8 texel: colour through the sRGB table for sRGB;
+    // the decoded copy holds those values.
     [[gnu::always_inline]] __m128 loadRgba(const Level& l, int x, int y) const {
+        if (l.decoded) return _mm_loadu_ps(l.decoded + 4 * (std::size_t(y) * l.width + x));
         const std::uint8_t* p = l.rgba + (std::size_t(y) * l.width + x) * stride_;
         return _mm_setr_ps(color_[p[0]], color_[p[1]], color_[p[2]], unorm_[p[3]]);
     }

@@ -15,10 +15,14 @@ struct MipLevel {
     int height = 0;
     std::vector<std::byte> texels;
     // The alpha of each RGBA8 texel, decoded (byteTables().unorm: code / 255), for textures
-    // that are only sampled (see SoftTexture::copyAlpha); empty otherwise. The mask pass and
+    // that are only sampled (see SoftTexture::copyDecoded); empty otherwise. The mask pass and
     // the colour pass's alpha test sample alpha alone ([Hathaway 2010] §3.5.2): with the values
     // ready, a bilinear tap pair is one 8-byte load and nothing to decode.
     std::vector<float> alpha;
+    // The four channels of each such texel, decoded as the general sampler's load decodes them
+    // (colour through the sRGB table for RGBA8_SRGB, byteTables()): the colour pass's filtered
+    // colour reads a tap as one 16-byte load instead of four bytes and four table lookups.
+    std::vector<float> rgba;
 };
 
 struct SoftTexture {
@@ -35,16 +39,23 @@ struct SoftTexture {
         return l.texels.data() + (std::size_t(y) * l.width + x) * desc.samples * bytesPerSample;
     }
 
-    // Fills each level's `alpha` for a single-sampled RGBA8 texture that is no render target:
-    // nothing writes such a texture after its creation, so the copy never goes stale. Called
-    // once its texels are final.
-    void copyAlpha() {
+    // Fills each level's `alpha` and `rgba` for a single-sampled RGBA8 texture that is no render
+    // target: nothing writes such a texture after its creation, so the copies never go stale.
+    // Called once its texels are final.
+    void copyDecoded() {
         const bool rgba8 = desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB;
         if (!rgba8 || desc.samples != 1 || (desc.usage & UsageRenderTarget)) return;
+        const float* unorm = byteTables().unorm;
+        const float* color = desc.format == Format::RGBA8_SRGB ? byteTables().srgb : unorm;
         for (MipLevel& l : levels) {
-            l.alpha.resize(std::size_t(l.width) * std::size_t(l.height));
-            for (std::size_t i = 0; i < l.alpha.size(); ++i)
-                l.alpha[i] = byteTables().unorm[std::to_integer<std::uint8_t>(l.texels[4 * i + 3])];
+            const std::size_t texels = std::size_t(l.width) * std::size_t(l.height);
+            l.alpha.resize(texels);
+            l.rgba.resize(4 * texels);
+            for (std::size_t i = 0; i < texels; ++i) {
+                auto byte = [&](int c) { return std::to_integer<std::uint8_t>(l.texels[4 * i + c]); };
+                for (int c = 0; c < 3; ++c) l.rgba[4 * i + c] = color[byte(c)];
+                l.alpha[i] = l.rgba[4 * i + 3] = unorm[byte(3)];
+            }
         }
     }
 };
