@@ -62,6 +62,31 @@ inline void TriangleRasterizer<Program>::rasterizeSingle(const SetupTriangle& t,
                 e[i] = t.a[i] * x + t.b[i] * (ys0 + kHalfPixel) + t.c[i];
                 step[i] = t.a[i] * kPixelStep;
             }
+#if SOFT_RASTER_SSE2
+            // The row's pixels two to a vector of 64-bit edge values (pair j: pixels 2j, 2j + 1),
+            // stepped down a row by b * kPixelStep; a pixel is covered where the OR of its three
+            // values has a clear sign bit, which movemask_pd reads. The integers of the scalar walk
+            // below; a lane past the row's n pixels is masked off.
+            const int pairs = (n + 1) / 2;
+            __m128i pair[3][4], down[3];
+            for (int i = 0; i < 3; ++i) {
+                const __m128i twoSteps = _mm_set1_epi64x(2 * step[i]);
+                pair[i][0] = _mm_set_epi64x(e[i] + step[i], e[i]);
+                for (int j = 1; j < pairs; ++j) pair[i][j] = _mm_add_epi64(pair[i][j - 1], twoSteps);
+                down[i] = _mm_set1_epi64x(t.b[i] * kPixelStep);
+            }
+            const std::uint32_t inRow = (1u << n) - 1u;
+            for (int py = py0; py <= py1; ++py) {
+                std::uint32_t outside = 0;
+                for (int j = 0; j < pairs; ++j) {
+                    const __m128i any = _mm_or_si128(_mm_or_si128(pair[0][j], pair[1][j]), pair[2][j]);
+                    outside |= std::uint32_t(_mm_movemask_pd(_mm_castsi128_pd(any))) << (2 * j);
+                    for (int i = 0; i < 3; ++i) pair[i][j] = _mm_add_epi64(pair[i][j], down[i]);
+                }
+                const std::uint32_t mask = ~outside & inRow;
+                if (mask) shadeRow(t, bx, py, mask << shift);
+            }
+#else
             for (int py = py0; py <= py1; ++py) {
                 std::uint32_t mask = 0;
                 std::int64_t e0 = e[0], e1 = e[1], e2 = e[2];
@@ -72,6 +97,7 @@ inline void TriangleRasterizer<Program>::rasterizeSingle(const SetupTriangle& t,
                 if (mask) shadeRow(t, bx, py, mask << shift);
                 for (int i = 0; i < 3; ++i) e[i] += t.b[i] * kPixelStep;
             }
+#endif
         }
     }
 }
