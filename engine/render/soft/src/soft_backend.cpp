@@ -567,6 +567,7 @@ private:
         std::uint64_t cachedInstance = ~0ull;
         glm::mat4 mvp(1.0f);
         glm::mat3 normalMatrix(1.0f);
+        PreparedVertices prepared;
         for (std::uint64_t t = out.begin; t < out.end; ++t) {
             const std::uint64_t instance = t / g.trianglesPerInstance, tri = t % g.trianglesPerInstance;
             const Instance& inst = g.instances[instance];
@@ -574,6 +575,7 @@ private:
                 mvp = g.viewProj * inst.model;
                 normalMatrix = glm::mat3(inst.model);
                 cachedInstance = instance;
+                prepared.clear();
                 // An instance wholly beyond a clip plane: each of its triangles (those in this
                 // chunk) would be rejected, and counted, by setupTriangle.
                 if (instanceOutsideOnePlane(mvp, *g.bounds, g.viewport)) {
@@ -583,23 +585,67 @@ private:
                     continue;
                 }
             }
-            ClipVertex cv[3];
             const Vertex* v[3];
+            std::uint32_t index[3];
             for (int k = 0; k < 3; ++k) {
-                const std::uint32_t index = g.indices ? g.indices[tri * 3 + k] : g.first + std::uint32_t(tri * 3 + k);
-                v[k] = &g.vertices[index];
-                cv[k].position = transformPosition(mvp, v[k]->position);
+                index[k] = g.indices ? g.indices[tri * 3 + k] : g.first + std::uint32_t(tri * 3 + k);
+                v[k] = &g.vertices[index[k]];
             }
+            const VertexAttributes attributes(v, normalMatrix, inst.tint);
+            if (g.indices && prepared.distinctSlots(index)) {
+                PreparedVertex* const p[3] = {&prepared.get(index[0], *v[0], mvp, g.viewport),
+                                              &prepared.get(index[1], *v[1], mvp, g.viewport),
+                                              &prepared.get(index[2], *v[2], mvp, g.viewport)};
+                // rejectedBeforeSetup, from what the vertices hold.
+                if (!(p[0]->finite && p[1]->finite && p[2]->finite) ||
+                    outsideOnePlane(p[0]->clip, p[1]->clip, p[2]->clip, g.viewport)) {
+                    ++out.counters.dropped;
+                    continue;
+                }
+                setupPreparedTriangle(p, attributes, g.viewport, g.raster, g.drawIndex, out.triangles, out.counters);
+                continue;
+            }
+            ClipVertex cv[3];
+            for (int k = 0; k < 3; ++k) cv[k].position = transformPosition(mvp, v[k]->position);
             // Positions first: a triangle setupTriangle would reject at once (NaN, or beyond one
             // plane) needs no normals or colours (most of the terrain, off to the sides).
             if (rejectedBeforeSetup(cv[0], cv[1], cv[2], g.viewport)) {
                 ++out.counters.dropped;
                 continue;
             }
-            setupUnrejectedTriangle(cv, VertexAttributes(v, normalMatrix, inst.tint), g.viewport, g.raster,
-                                    g.drawIndex, out.triangles, out.counters);
+            setupUnrejectedTriangle(cv, attributes, g.viewport, g.raster, g.drawIndex, out.triangles, out.counters);
         }
     }
+
+    // The vertices of the current instance an indexed draw's triangles share (a card's two
+    // triangles two of their three, a terrain grid's six triangles each vertex), each
+    // transformed, tested and projected once (prepareVertex): a small cache by vertex index,
+    // one entry per index modulo its size, emptied when the instance changes.
+    class PreparedVertices {
+    public:
+        void clear() { tags_.fill(0); }
+        // Whether the three indices take three different entries (or share one by being equal).
+        bool distinctSlots(const std::uint32_t (&index)[3]) const {
+            auto clash = [&](int a, int b) { return index[a] != index[b] && slot(index[a]) == slot(index[b]); };
+            return !clash(0, 1) && !clash(0, 2) && !clash(1, 2);
+        }
+        PreparedVertex& get(std::uint32_t index, const Vertex& vertex, const glm::mat4& mvp, const Viewport& vp) {
+            const std::size_t s = slot(index);
+            PreparedVertex& p = entries_[s];
+            if (tags_[s] != index + 1u) {  // 0: empty (an index of 2^32 - 1 never reaches here)
+                tags_[s] = index + 1u;
+                p.clip.position = transformPosition(mvp, vertex.position);
+                prepareVertex(p, vp);
+            }
+            return p;
+        }
+
+    private:
+        static constexpr std::size_t kEntries = 64;
+        static std::size_t slot(std::uint32_t index) { return index % kEntries; }
+        std::array<std::uint32_t, kEntries> tags_{};
+        std::array<PreparedVertex, kEntries> entries_;
+    };
 
     // A triangle's normals (by the instance's model matrix) and colours (tinted), computed
     // when set-up asks: not for the triangles it culls or finds covering no sample.
@@ -607,12 +653,10 @@ private:
     public:
         VertexAttributes(const Vertex* const (&v)[3], const glm::mat3& normalMatrix, const glm::vec4& tint)
             : v_(v), normalMatrix_(normalMatrix), tint_(tint) {}
-        void fill(ClipVertex (&cv)[3]) const override {
-            for (int k = 0; k < 3; ++k) {
-                const glm::vec3 n = normalMatrix_ * v_[k]->normal;
-                const glm::vec4 c = v_[k]->color * tint_;
-                cv[k].attributes = {v_[k]->uv.x, v_[k]->uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
-            }
+        void fillVertex(int k, ClipVertex& cv) const override {
+            const glm::vec3 n = normalMatrix_ * v_[k]->normal;
+            const glm::vec4 c = v_[k]->color * tint_;
+            cv.attributes = {v_[k]->uv.x, v_[k]->uv.y, n.x, n.y, n.z, c.r, c.g, c.b, c.a};
         }
 
     private:

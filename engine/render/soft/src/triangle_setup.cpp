@@ -58,12 +58,6 @@ Polygon clip(const Polygon& in, const ClipPlane& plane) {
     return out;
 }
 
-struct ScreenVertex {
-    std::int64_t x, y;  // 24.8 fixed point, y down
-    double z, inverseW;
-    std::array<double, kAttributeCount> attributeOverW;
-};
-
 // Vertex 1 and 2 relative to vertex 0 in pixels, shared by all of a triangle's planes.
 struct PlaneBasis {
     double x1, y1, x2, y2, inverseDenominator;
@@ -221,9 +215,30 @@ bool insideEveryPlane(const glm::dvec4& p, double gx, double gy) {
            (gy * p.w - p.y >= 0.0) & (p.y + gy * p.w >= 0.0);
 }
 
+// Guard band in NDC: |x_ndc| <= gx keeps |x_pixels| <= 2^20 for this viewport.
+double guardBandX(const Viewport& vp) { return kGuardBandPixels / vp.width - 1.0; }
+double guardBandY(const Viewport& vp) { return kGuardBandPixels / vp.height - 1.0; }
+
 bool finite(const ClipVertex& v) {
     return std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z) &&
            std::isfinite(v.position.w);
+}
+
+// A vertex (w > 0) to the sub-pixel grid, with its 1/w.
+void project(const glm::dvec4& c, const Viewport& vp, ScreenVertex& s) {
+    const double inverseW = 1.0 / c.w;
+    const double x = (c.x * inverseW * 0.5 + 0.5) * vp.width;
+    const double y = (0.5 - c.y * inverseW * 0.5) * vp.height;  // NDC +y is the top row
+    s.x = roundHalfAway(x * kSubpixelScale);
+    s.y = roundHalfAway(y * kSubpixelScale);
+    s.inverseW = inverseW;
+}
+
+// A projected vertex's depth and attributes over w, for the planes of a kept triangle.
+template <typename Attribute>
+void finishProjection(const glm::dvec4& c, Attribute attribute, ScreenVertex& s) {
+    s.z = std::clamp(c.z * s.inverseW, 0.0, 1.0);
+    for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(k) * s.inverseW;
 }
 
 // The clipped polygon (`count` vertices: position(i), attribute(i, k)) to screen space, then
@@ -241,23 +256,13 @@ void projectAndEmit(int count, Position position, Attribute attribute, Prepare p
             ++counters.dropped;
             return;
         }
-        const double inverseW = 1.0 / c.w;
-        const double x = (c.x * inverseW * 0.5 + 0.5) * vp.width;
-        const double y = (0.5 - c.y * inverseW * 0.5) * vp.height;  // NDC +y is the top row
-        ScreenVertex& s = screen[i];
-        s.x = roundHalfAway(x * kSubpixelScale);
-        s.y = roundHalfAway(y * kSubpixelScale);
-        s.inverseW = inverseW;
+        project(c, vp, screen[i]);
     }
     // Most dropped triangles (culled, off-screen, degenerate, covering no sample) are known from
     // the snapped positions: they skip depth and attribute set-up, and never ask for attributes.
     auto depthAndAttributes = [&] {
         prepare();
-        for (int i = 0; i < count; ++i) {
-            ScreenVertex& s = screen[i];
-            s.z = std::clamp(position(i).z * s.inverseW, 0.0, 1.0);
-            for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(i, k) * s.inverseW;
-        }
+        for (int i = 0; i < count; ++i) finishProjection(position(i), [&](int k) { return attribute(i, k); }, screen[i]);
     };
     if (count == 3) {  // a lone triangle (unclipped, or clipped to three vertices): begun once
         BegunTriangle begun;
@@ -306,7 +311,7 @@ namespace {
 // For setupTriangle's callers, whose vertices come with their attributes.
 class GivenAttributes final : public AttributeSource {
 public:
-    void fill(ClipVertex (&)[3]) const override {}
+    void fillVertex(int, ClipVertex&) const override {}
 };
 }  // namespace
 
@@ -321,12 +326,44 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
     setupUnrejectedTriangle(vertices, GivenAttributes{}, vp, raster, drawIndex, out, counters);
 }
 
+void prepareVertex(PreparedVertex& v, const Viewport& vp) {
+    v.finite = finite(v.clip);
+    v.finished = false;
+    const glm::dvec4 c(v.clip.position);
+    v.inside = v.finite && insideEveryPlane(c, guardBandX(vp), guardBandY(vp));
+    v.projectable = v.inside && c.w > 0.0;
+    if (v.projectable) project(c, vp, v.screen);
+}
+
+void setupPreparedTriangle(PreparedVertex* const (&v)[3], const AttributeSource& attributes, const Viewport& vp,
+                           const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                           SetupCounters& counters) {
+    if (!(v[0]->inside && v[1]->inside && v[2]->inside)) {  // clipped: setupUnrejectedTriangle's polygon
+        ClipVertex clip[3] = {v[0]->clip, v[1]->clip, v[2]->clip};
+        setupUnrejectedTriangle(clip, attributes, vp, raster, drawIndex, out, counters);
+        return;
+    }
+    // projectAndEmit's steps for three vertices inside every plane.
+    if (!(v[0]->projectable && v[1]->projectable && v[2]->projectable)) {
+        ++counters.dropped;
+        return;
+    }
+    BegunTriangle begun;
+    if (!beginTriangle(v[0]->screen, v[1]->screen, v[2]->screen, vp, raster, drawIndex, out, counters, begun)) return;
+    for (int k = 0; k < 3; ++k) {
+        PreparedVertex& p = *v[k];
+        if (p.finished) continue;
+        attributes.fillVertex(k, p.clip);
+        finishProjection(glm::dvec4(p.clip.position), [&](int a) { return double(p.clip.attributes[a]); }, p.screen);
+        p.finished = true;
+    }
+    finishTriangle(begun, out);
+}
+
 void setupUnrejectedTriangle(ClipVertex (&v)[3], const AttributeSource& attributes, const Viewport& vp,
                              const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                              SetupCounters& counters) {
-    // Guard band in NDC: |x_ndc| <= gx keeps |x_pixels| <= 2^20 for this viewport.
-    const double gx = kGuardBandPixels / vp.width - 1.0;
-    const double gy = kGuardBandPixels / vp.height - 1.0;
+    const double gx = guardBandX(vp), gy = guardBandY(vp);
     const ClipPlane planes[] = {
         {0.0, 0.0, 1.0, 0.0},   // z >= 0 (depth 0: the far plane under reverse-Z)
         {0.0, 0.0, -1.0, 1.0},  // z <= w

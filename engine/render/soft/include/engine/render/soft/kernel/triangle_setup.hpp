@@ -86,12 +86,46 @@ void setupTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex&
 // those it drops, culled or covering no sample, never need them).
 class AttributeSource {
 public:
-    // Writes the attributes of the triangle's three vertices (positions are already there).
-    virtual void fill(ClipVertex (&vertices)[3]) const = 0;
+    // Writes the attributes of vertex k (0, 1, 2) of the triangle (its position is already there).
+    virtual void fillVertex(int k, ClipVertex& vertex) const = 0;
+    void fill(ClipVertex (&vertices)[3]) const {
+        for (int k = 0; k < 3; ++k) fillVertex(k, vertices[k]);
+    }
 
 protected:
     ~AttributeSource() = default;
 };
+
+// A vertex snapped to the sub-pixel grid: 24.8 fixed point, y down, with its depth, 1/w and
+// attributes over w in double for the planes.
+struct ScreenVertex {
+    std::int64_t x = 0, y = 0;
+    double z = 0.0, inverseW = 0.0;
+    std::array<double, kAttributeCount> attributeOverW{};
+};
+
+// A vertex of an indexed draw worked out once for every triangle of an instance that uses it
+// (prepareVertex): the per-vertex half of setupTriangle, whose per-triangle half
+// (setupPreparedTriangle) then reads it. Each value is the one setupTriangle computes for that
+// vertex, so sharing it changes no bit.
+struct PreparedVertex {
+    ClipVertex clip;          // position; attributes once `finished`
+    bool finite = false;      // every position component finite (rejectedBeforeSetup)
+    bool inside = false;      // inside every clip plane: no clipping needed
+    bool projectable = false; // inside, with w > 0: `screen` holds x, y and 1/w
+    bool finished = false;    // attributes filled, `screen` holds z and attributes over w
+    ScreenVertex screen;
+};
+
+// Fills everything of `v` but its attributes from v.clip.position.
+void prepareVertex(PreparedVertex& v, const Viewport& viewport);
+
+// setupUnrejectedTriangle for three prepared vertices (finite, the triangle not beyond one
+// clip plane): vertex k's attributes are filled from `attributes` (fillVertex(k, ...)) the
+// first time a kept triangle needs them.
+void setupPreparedTriangle(PreparedVertex* const (&vertices)[3], const AttributeSource& attributes,
+                           const Viewport& viewport, const RasterState& raster, std::uint32_t drawIndex,
+                           std::vector<SetupTriangle>& out, SetupCounters& counters);
 
 // setupTriangle for a triangle rejectedBeforeSetup has already kept (the vertex stage tests
 // positions before it computes attributes), its attributes filled from `attributes` when they
