@@ -124,4 +124,31 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
 #endif
 }
 
+// The four-channel decoded copy is kept up to kDecodedCopyMaxTexels texels and not beyond; the
+// alpha copy always. (Both paths of the colour taps are compared with the general sampler above.)
+TEST(SoftAlphaSampler, FourChannelCopyOnlyUpToItsSize) {
+    auto levelsOf = [](int w, int h) {
+        SoftTexture t;
+        t.desc.width = w;
+        t.desc.height = h;
+        t.desc.format = Format::RGBA8_SRGB;
+        t.desc.usage = UsageSampled;
+        t.bytesPerSample = 4;
+        MipLevel m;
+        m.width = w;
+        m.height = h;
+        m.texels.assign(std::size_t(w) * h * 4, std::byte{0x80});
+        t.levels.push_back(std::move(m));
+        t.copyDecoded();
+        return t;
+    };
+    const SoftTexture atCap = levelsOf(2048, 2048), beyond = levelsOf(2049, 2048);
+    EXPECT_EQ(atCap.levels[0].rgba.size(), std::size_t(4) * 2048 * 2048);
+    EXPECT_EQ(atCap.levels[0].alpha.size(), std::size_t(2048) * 2048);
+    EXPECT_TRUE(beyond.levels[0].rgba.empty());
+    EXPECT_EQ(beyond.levels[0].alpha.size(), std::size_t(2049) * 2048);
+    EXPECT_EQ(atCap.levels[0].rgba[4], byteTables().srgb[0x80]);
+    EXPECT_EQ(atCap.levels[0].rgba[7], byteTables().unorm[0x80]);
+}
+
 }  // namespace

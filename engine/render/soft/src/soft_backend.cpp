@@ -148,11 +148,11 @@ public:
         if (data) validateTextureData(desc, *data, what);
         const FormatInfo& info = formatInfo(desc.format);
         // Texels, plus the decoded float copies copyDecoded keeps beside sampled RGBA8 textures
-        // (alpha: 4 bytes a texel, all four channels: 16).
+        // (alpha: 4 bytes a texel; all four channels, up to kDecodedCopyMaxTexels: 16).
         const bool decodedCopies = (desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB) &&
                                    desc.samples == 1 && !(desc.usage & UsageRenderTarget);
-        checkFitsInMemory(textureBytes(desc) * (decodedCopies ? 6 : 1), what + ": " + describeSize(desc),
-                          hostMemoryAvailable);
+        const std::uint64_t copies = !decodedCopies ? 0 : SoftTexture::keepsFourChannelCopy(desc) ? 5 : 1;
+        checkFitsInMemory(textureBytes(desc) * (1 + copies), what + ": " + describeSize(desc), hostMemoryAvailable);
 
         SoftTexture t;
         t.desc = desc;

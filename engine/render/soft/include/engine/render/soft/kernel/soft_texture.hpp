@@ -22,8 +22,14 @@ struct MipLevel {
     // The four channels of each such texel, decoded as the general sampler's load decodes them
     // (colour through the sRGB table for RGBA8_SRGB, byteTables()): the colour pass's filtered
     // colour reads a tap as one 16-byte load instead of four bytes and four table lookups.
+    // Kept for textures of at most kDecodedCopyMaxTexels texels only (see there).
     std::vector<float> rgba;
 };
+
+// The largest texture (level 0 texels) that keeps the four-channel copy: 2048 x 2048, a 64 MiB
+// copy beside 16 MiB of texels. Larger textures would spend four times their size again for a
+// speed-up of the colour taps alone; they are sampled from their bytes, the same values.
+inline constexpr std::size_t kDecodedCopyMaxTexels = std::size_t(2048) * 2048;
 
 struct SoftTexture {
     TextureDesc desc;
@@ -39,22 +45,30 @@ struct SoftTexture {
         return l.texels.data() + (std::size_t(y) * l.width + x) * desc.samples * bytesPerSample;
     }
 
-    // Fills each level's `alpha` and `rgba` for a single-sampled RGBA8 texture that is no render
-    // target: nothing writes such a texture after its creation, so the copies never go stale.
-    // Called once its texels are final.
+    // Whether copyDecoded keeps the four-channel copy for a texture of this description.
+    static bool keepsFourChannelCopy(const TextureDesc& d) {
+        return std::size_t(d.width) * std::size_t(d.height) <= kDecodedCopyMaxTexels;
+    }
+
+    // Fills each level's `alpha` (and `rgba`, up to kDecodedCopyMaxTexels) for a single-sampled
+    // RGBA8 texture that is no render target: nothing writes such a texture after its creation,
+    // so the copies never go stale. Called once its texels are final.
     void copyDecoded() {
         const bool rgba8 = desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB;
         if (!rgba8 || desc.samples != 1 || (desc.usage & UsageRenderTarget)) return;
         const float* unorm = byteTables().unorm;
         const float* color = desc.format == Format::RGBA8_SRGB ? byteTables().srgb : unorm;
+        const bool fourChannels = keepsFourChannelCopy(desc);
         for (MipLevel& l : levels) {
             const std::size_t texels = std::size_t(l.width) * std::size_t(l.height);
             l.alpha.resize(texels);
-            l.rgba.resize(4 * texels);
+            if (fourChannels) l.rgba.resize(4 * texels);
             for (std::size_t i = 0; i < texels; ++i) {
                 auto byte = [&](int c) { return std::to_integer<std::uint8_t>(l.texels[4 * i + c]); };
+                l.alpha[i] = unorm[byte(3)];
+                if (!fourChannels) continue;
                 for (int c = 0; c < 3; ++c) l.rgba[4 * i + c] = color[byte(c)];
-                l.alpha[i] = l.rgba[4 * i + 3] = unorm[byte(3)];
+                l.rgba[4 * i + 3] = l.alpha[i];
             }
         }
     }
