@@ -206,7 +206,7 @@ void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2
     if (beginTriangle(s0, s1, s2, vp, raster, drawIndex, out, counters, begun)) finishTriangle(begun, out);
 }
 
-// glm::dot(plane, p) >= 0 for each of setupUnrejectedTriangle's planes, without the products
+// glm::dot(plane, p) >= 0 for each of setupClippedTriangle's planes, without the products
 // with their zero components: for finite p those are +-0, which change neither the sum's value
 // nor its sign test (x + +-0 is x, or +-0 where x is 0, and +-0 >= 0 holds), and -z + w is the
 // same IEEE operation as w - z. Every test is made (& rather than &&): no branch per plane.
@@ -241,35 +241,20 @@ void finishProjection(const glm::dvec4& c, Attribute attribute, ScreenVertex& s)
     for (int k = 0; k < kAttributeCount; ++k) s.attributeOverW[k] = attribute(k) * s.inverseW;
 }
 
-// The clipped polygon (`count` vertices: position(i), attribute(i, k)) to screen space, then
-// its fan of triangles emitted. Vertices reach it as doubles of the clip-space floats, or
-// clipped in double: the same arithmetic either way. `prepare()` runs once before the first
-// attribute is read, and only if a triangle of the fan survives.
-template <typename Position, typename Attribute, typename Prepare>
-void projectAndEmit(int count, Position position, Attribute attribute, Prepare prepare, const Viewport& vp,
-                    const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
-                    SetupCounters& counters) {
+// A clipped polygon (`count` vertices, attributes filled) to screen space, then its fan of
+// triangles emitted: the triangles of a fan none of which survives make no depth or
+// attribute planes.
+void projectAndEmit(const Polygon& poly, const Viewport& vp, const RasterState& raster, std::uint32_t drawIndex,
+                    std::vector<SetupTriangle>& out, SetupCounters& counters) {
+    const int count = poly.count;
     std::array<ScreenVertex, 12> screen;
     for (int i = 0; i < count; ++i) {
-        const glm::dvec4& c = position(i);
+        const glm::dvec4& c = poly.vertices[i].position;
         if (!(c.w > 0.0)) {  // on the w = 0 plane exactly: nothing visible
             ++counters.dropped;
             return;
         }
         project(c, vp, screen[i]);
-    }
-    // Most dropped triangles (culled, off-screen, degenerate, covering no sample) are known from
-    // the snapped positions: they skip depth and attribute set-up, and never ask for attributes.
-    auto depthAndAttributes = [&] {
-        prepare();
-        for (int i = 0; i < count; ++i) finishProjection(position(i), [&](int k) { return attribute(i, k); }, screen[i]);
-    };
-    if (count == 3) {  // a lone triangle (unclipped, or clipped to three vertices): begun once
-        BegunTriangle begun;
-        if (!beginTriangle(screen[0], screen[1], screen[2], vp, raster, drawIndex, out, counters, begun)) return;
-        depthAndAttributes();
-        finishTriangle(begun, out);
-        return;
     }
     bool anySurvives = false;
     for (int i = 1; i + 1 < count && !anySurvives; ++i)
@@ -278,8 +263,40 @@ void projectAndEmit(int count, Position position, Attribute attribute, Prepare p
         counters.dropped += std::uint64_t(count - 2);
         return;
     }
-    depthAndAttributes();
+    for (int i = 0; i < count; ++i)
+        finishProjection(poly.vertices[i].position, [&](int k) { return poly.vertices[i].attributes[k]; }, screen[i]);
     for (int i = 1; i + 1 < count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
+}
+
+// A triangle that crosses a clip plane (not every vertex inside every plane): its attributes
+// filled, clipped in homogeneous space into a polygon, and the polygon's fan set up.
+void setupClippedTriangle(ClipVertex (&v)[3], const AttributeSource& attributes, const Viewport& vp,
+                          const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
+                          SetupCounters& counters) {
+    const double gx = guardBandX(vp), gy = guardBandY(vp);
+    const ClipPlane planes[] = {
+        {0.0, 0.0, 1.0, 0.0},   // z >= 0 (depth 0: the far plane under reverse-Z)
+        {0.0, 0.0, -1.0, 1.0},  // z <= w
+        {0.0, 0.0, 0.0, 1.0},   // w >= 0 (with the two above, only w = 0 edge cases)
+        {-1.0, 0.0, 0.0, gx}, {1.0, 0.0, 0.0, gx}, {0.0, -1.0, 0.0, gy}, {0.0, 1.0, 0.0, gy},
+    };
+    attributes.fill(v);
+    Polygon poly;
+    poly.vertices[0] = toClipPoint(v[0]);
+    poly.vertices[1] = toClipPoint(v[1]);
+    poly.vertices[2] = toClipPoint(v[2]);
+    poly.count = 3;
+    for (const ClipPlane& plane : planes) {
+        const double d0 = glm::dot(plane, poly.vertices[0].position), d1 = glm::dot(plane, poly.vertices[1].position),
+                     d2 = glm::dot(plane, poly.vertices[2].position);
+        if (poly.count == 3 && d0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0) continue;  // trivially inside
+        poly = clip(poly, plane);
+        if (poly.count < 3) {
+            ++counters.dropped;
+            return;
+        }
+    }
+    projectAndEmit(poly, vp, raster, drawIndex, out, counters);
 }
 
 }  // namespace
@@ -338,12 +355,14 @@ void prepareVertex(PreparedVertex& v, const Viewport& vp) {
 void setupPreparedTriangle(PreparedVertex* const (&v)[3], const AttributeSource& attributes, const Viewport& vp,
                            const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                            SetupCounters& counters) {
-    if (!(v[0]->inside && v[1]->inside && v[2]->inside)) {  // clipped: setupUnrejectedTriangle's polygon
+    if (!(v[0]->inside && v[1]->inside && v[2]->inside)) {
         ClipVertex clip[3] = {v[0]->clip, v[1]->clip, v[2]->clip};
-        setupUnrejectedTriangle(clip, attributes, vp, raster, drawIndex, out, counters);
+        setupClippedTriangle(clip, attributes, vp, raster, drawIndex, out, counters);
         return;
     }
-    // projectAndEmit's steps for three vertices inside every plane.
+    // Inside every plane (most triangles): no polygon to build. A vertex on the w = 0 plane
+    // exactly makes nothing visible; most dropped triangles (culled, off-screen, degenerate,
+    // covering no sample) are known from the snapped positions and never ask for attributes.
     if (!(v[0]->projectable && v[1]->projectable && v[2]->projectable)) {
         ++counters.dropped;
         return;
@@ -363,47 +382,13 @@ void setupPreparedTriangle(PreparedVertex* const (&v)[3], const AttributeSource&
 void setupUnrejectedTriangle(ClipVertex (&v)[3], const AttributeSource& attributes, const Viewport& vp,
                              const RasterState& raster, std::uint32_t drawIndex, std::vector<SetupTriangle>& out,
                              SetupCounters& counters) {
-    const double gx = guardBandX(vp), gy = guardBandY(vp);
-    const ClipPlane planes[] = {
-        {0.0, 0.0, 1.0, 0.0},   // z >= 0 (depth 0: the far plane under reverse-Z)
-        {0.0, 0.0, -1.0, 1.0},  // z <= w
-        {0.0, 0.0, 0.0, 1.0},   // w >= 0 (with the two above, only w = 0 edge cases)
-        {-1.0, 0.0, 0.0, gx}, {1.0, 0.0, 0.0, gx}, {0.0, -1.0, 0.0, gy}, {0.0, 1.0, 0.0, gy},
-    };
-
-    // Inside every plane (most triangles that get here): no polygon to build, and the same
-    // values as the clipping loop below, which would leave the three vertices as they are.
-    const glm::dvec4 positions[3] = {glm::dvec4(v[0].position), glm::dvec4(v[1].position), glm::dvec4(v[2].position)};
-    const bool inside = insideEveryPlane(positions[0], gx, gy) & insideEveryPlane(positions[1], gx, gy) &
-                        insideEveryPlane(positions[2], gx, gy);
-    if (inside) {
-        projectAndEmit(
-            3, [&](int i) -> const glm::dvec4& { return positions[i]; },
-            [&](int i, int k) { return double(v[i].attributes[k]); }, [&] { attributes.fill(v); }, vp, raster,
-            drawIndex, out, counters);
-        return;
+    PreparedVertex prepared[3];
+    for (int k = 0; k < 3; ++k) {
+        prepared[k].clip = v[k];
+        prepareVertex(prepared[k], vp);
     }
-
-    attributes.fill(v);
-    Polygon poly;
-    poly.vertices[0] = toClipPoint(v[0]);
-    poly.vertices[1] = toClipPoint(v[1]);
-    poly.vertices[2] = toClipPoint(v[2]);
-    poly.count = 3;
-    for (const ClipPlane& plane : planes) {
-        const double d0 = glm::dot(plane, poly.vertices[0].position), d1 = glm::dot(plane, poly.vertices[1].position),
-                     d2 = glm::dot(plane, poly.vertices[2].position);
-        if (poly.count == 3 && d0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0) continue;  // trivially inside
-        poly = clip(poly, plane);
-        if (poly.count < 3) {
-            ++counters.dropped;
-            return;
-        }
-    }
-
-    projectAndEmit(
-        poly.count, [&](int i) -> const glm::dvec4& { return poly.vertices[i].position; },
-        [&](int i, int k) { return poly.vertices[i].attributes[k]; }, [] {}, vp, raster, drawIndex, out, counters);
+    PreparedVertex* const p[3] = {&prepared[0], &prepared[1], &prepared[2]};
+    setupPreparedTriangle(p, attributes, vp, raster, drawIndex, out, counters);
 }
 
 SetupTriangle fullscreenTriangle(const Viewport& vp, std::uint32_t drawIndex) {
