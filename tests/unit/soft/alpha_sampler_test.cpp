@@ -7,6 +7,7 @@
 // texel edges, non-finite values). The golden hashes only see the few cases their scenes
 // hit; this walks the whole space of the sampler's branches.
 // The samplers come from the soft backend's program-authoring headers.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -14,7 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lcg.hpp"  // tests/support
+#include "lcg.hpp"         // tests/support
+#include "soft_image.hpp"  // tests/support
 #include "engine/render/soft/kernel/alpha_sampler.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 
@@ -128,17 +130,9 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
 // alpha copy always. (Both paths of the colour taps are compared with the general sampler above.)
 TEST(SoftAlphaSampler, FourChannelCopyOnlyUpToItsSize) {
     auto levelsOf = [](int w, int h) {
-        SoftTexture t;
-        t.desc.width = w;
-        t.desc.height = h;
-        t.desc.format = Format::RGBA8_SRGB;
+        SoftTexture t = ssam::testing::softImage(w, h, Format::RGBA8_SRGB, 4);
         t.desc.usage = UsageSampled;
-        t.bytesPerSample = 4;
-        MipLevel m;
-        m.width = w;
-        m.height = h;
-        m.texels.assign(std::size_t(w) * h * 4, std::byte{0x80});
-        t.levels.push_back(std::move(m));
+        std::fill(t.levels[0].texels.begin(), t.levels[0].texels.end(), std::byte{0x80});
         t.copyDecoded();
         return t;
     };

@@ -14,7 +14,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lcg.hpp"  // tests/support
+#include "lcg.hpp"         // tests/support
+#include "soft_image.hpp"  // tests/support
 #include "engine/render/soft/kernel/programs.hpp"
 #include "engine/render/soft/kernel/raster_support.hpp"
 
@@ -43,15 +44,8 @@ float attribute(Lcg& rng, float lo, float hi) {
 }
 
 SoftTexture oneTexel(AlphaMode mode) {
-    SoftTexture t;
-    t.desc.width = t.desc.height = 1;
-    t.desc.format = Format::RGBA8_SRGB;
+    SoftTexture t = ssam::testing::softImage(1, 1, Format::RGBA8_SRGB, 4);
     t.desc.alpha = mode;
-    t.bytesPerSample = 4;
-    MipLevel m;
-    m.width = m.height = 1;
-    m.texels.resize(4);
-    t.levels.push_back(std::move(m));
     t.copyDecoded();
     return t;
 }
