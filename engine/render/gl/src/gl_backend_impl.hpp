@@ -21,8 +21,8 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "engine/render/gl/fail_mode_plan.hpp"
 #include "engine/render/gl/gl_backend.hpp"
+#include "engine/render/resolved_draw_state.hpp"
 #include "engine/render/resource_pool.hpp"
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
@@ -107,6 +107,12 @@ private:
 
     // gl_draw.cpp
     void execute(const DrawDesc& d);
+    // GlOptions::failModes in the resolver's terms: GL has only `discard`, so fail modes are
+    // always emulated.
+    FailModeEmulation failModeEmulation() const {
+        return options_.failModes == FailModeStrategy::PerTriangle ? FailModeEmulation::PerTriangle
+                                                                   : FailModeEmulation::TwoPass;
+    }
     void drawRange(const DrawDesc& d, std::uint32_t first, std::uint32_t count, std::uint32_t baseInstance,
                    std::uint32_t instances);
     template <typename ApplyStep>

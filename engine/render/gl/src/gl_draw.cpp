@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// GL backend: one draw. The effective state is worked out as the soft backend's drawStateFor
-// does, the alpha test's fail modes become steps (fail_mode_plan.hpp), and each step is
-// issued with the channels and depth it may write.
+// GL backend: one draw. Its state is resolved by the front end (resolved_draw_state.hpp),
+// the alpha test's fail modes included as a plan of steps (fail_mode_plan.hpp); here each step
+// is issued with the channels and depth it may write.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -49,24 +49,10 @@ void GlBackendImpl::execute(const DrawDesc& d) {
     const bool fullscreen = s.desc->vertexInput == VertexInput::Fullscreen;
     const GLuint p = s.program.id();
 
-    // Effective state, as the soft backend's drawStateFor computes it.
-    const bool depthTest = desc.depth.test && pass_->depth.texture;
-    const bool depthWrite = depthTest && desc.depth.write;
-    std::array<std::uint8_t, kMaxColorTargets> masks{};
-    std::array<bool, kMaxColorTargets> blendNeeded{};
-    bool anyRgb = false, anyAlpha = false, readsDstAlpha = false;
-    for (std::size_t i = 0; i < targets_.size(); ++i) {
-        BlendState b = desc.blend[i];
-        const int channels = formatInfo(targets_[i].format).channels;
-        b.writeMask &= std::uint8_t((1u << channels) - 1u);  // channels the format lacks are not written
-        masks[i] = b.writeMask;
-        blendNeeded[i] = !b.isPlainWrite();
-        anyRgb = anyRgb || (b.writeMask & WriteRGB);
-        anyAlpha = anyAlpha || (b.writeMask & WriteA);
-        readsDstAlpha = readsDstAlpha || rgbReadsDstAlpha(b);
-    }
-    const FailModePlan plan = planFailMode({desc.alphaTest, depthTest, depthWrite, desc.depth.func, anyRgb, anyAlpha,
-                                            readsDstAlpha, options_.failModes == FailModeStrategy::PerTriangle});
+    DrawTargets targets{{}, int(targets_.size()), pass_->depth.texture.valid(), passSamples_, passWidth_, passHeight_};
+    for (std::size_t i = 0; i < targets_.size(); ++i) targets.colorFormats[i] = targets_[i].format;
+    const ResolvedDrawState state = resolveDrawState(desc, targets, d.scissor, failModeEmulation());
+    const FailModePlan& plan = state.failModes;
 
     // The base state was applied when the pass began; within a pass only this backend
     // touches the context (a host sharing it changes state between passes, not inside one).
@@ -79,7 +65,7 @@ void GlBackendImpl::execute(const DrawDesc& d) {
     // Alpha test and alpha-to-coverage uniforms.
     glProgramUniform1i(p, s.alphaFunc, int(desc.alphaTest.func));
     glProgramUniform1f(p, s.alphaRef, desc.alphaTest.reference);
-    const bool a2c = desc.alphaTest.alphaToCoverage && passSamples_ > 1;
+    const bool a2c = state.alphaToCoverage;
     if (a2c && options_.nativeAlphaToCoverage) glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     else glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     const bool shaderA2c = a2c && !options_.nativeAlphaToCoverage;
@@ -87,9 +73,9 @@ void GlBackendImpl::execute(const DrawDesc& d) {
     glProgramUniform1i(p, s.a2cActual, passActualSamples_);
 
     // Depth, culling, scissor.
-    if (depthTest) {
+    if (state.depthTest) {
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(glCompare(desc.depth.func));
+        glDepthFunc(glCompare(state.depthFunc));
     } else {
         glDisable(GL_DEPTH_TEST);
     }
@@ -104,13 +90,7 @@ void GlBackendImpl::execute(const DrawDesc& d) {
     // so counter-clockwise as displayed is GL_CCW.
     glFrontFace(desc.raster.frontFace == Winding::CounterClockwise ? GL_CCW : GL_CW);
     glEnable(GL_SCISSOR_TEST);
-    Rect scissor{0, 0, passWidth_, passHeight_};
-    if (d.scissor) {
-        const int x0 = std::max(0, d.scissor->x), y0 = std::max(0, d.scissor->y);
-        const int x1 = std::min(passWidth_, d.scissor->x + d.scissor->width);
-        const int y1 = std::min(passHeight_, d.scissor->y + d.scissor->height);
-        scissor = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
-    }
+    const Rect& scissor = state.scissor;
     if (scissor.empty()) return;
     glScissor(scissor.x, scissor.y, scissor.width, scissor.height);  // upper-left origin: y from the top
     if (passActualSamples_ > 1)
@@ -120,8 +100,8 @@ void GlBackendImpl::execute(const DrawDesc& d) {
 
     // Blending per target.
     for (std::size_t i = 0; i < targets_.size(); ++i) {
-        const BlendState& b = desc.blend[i];
-        if (!blendNeeded[i]) {
+        const BlendState& b = state.blend[i];
+        if (!state.blendNeeded[i]) {
             glDisablei(GL_BLEND, GLuint(i));
             continue;
         }
@@ -130,7 +110,7 @@ void GlBackendImpl::execute(const DrawDesc& d) {
                              glBlendFactor(b.dstAlpha));
         glBlendEquationSeparatei(GLuint(i), glBlendOp(b.opRgb), glBlendOp(b.opAlpha));
     }
-    glBlendColor(desc.blendConstant.r, desc.blendConstant.g, desc.blendConstant.b, desc.blendConstant.a);
+    glBlendColor(state.blendConstant.r, state.blendConstant.g, state.blendConstant.b, state.blendConstant.a);
 
     // Vertex input.
     if (!fullscreen) {
@@ -144,7 +124,7 @@ void GlBackendImpl::execute(const DrawDesc& d) {
         // A step that writes nothing is not drawn, unless an occlusion query counts its samples.
         bool writes = step.depthWrite || pass_->countSamplesInto;
         for (std::size_t i = 0; i < targets_.size(); ++i) {
-            const std::uint8_t m = masks[i] & step.channels;
+            const std::uint8_t m = state.blend[i].writeMask & step.channels;
             writes = writes || m;
             glColorMaski(GLuint(i), (m & WriteR) != 0, (m & WriteG) != 0, (m & WriteB) != 0, (m & WriteA) != 0);
         }

@@ -73,18 +73,4 @@ GLenum glWrap(AddressMode mode) {
     return GL_REPEAT;
 }
 
-namespace {
-
-bool readsDstAlpha(BlendFactor factor) {
-    return factor == BlendFactor::DstAlpha || factor == BlendFactor::InvDstAlpha || factor == BlendFactor::SrcAlphaSat;
-}
-
-}  // namespace
-
-bool rgbReadsDstAlpha(const BlendState& blend) {
-    if (blend.isPlainWrite() || !(blend.writeMask & WriteRGB)) return false;
-    if (blend.opRgb == BlendOp::Min || blend.opRgb == BlendOp::Max) return false;
-    return readsDstAlpha(blend.srcRgb) || readsDstAlpha(blend.dstRgb);
-}
-
 }  // namespace engine::render::gl

@@ -23,7 +23,4 @@ GLenum glBlendOp(BlendOp op);
 GLenum glCompare(CompareFunc func);
 GLenum glWrap(AddressMode mode);
 
-// Blending whose RGB result depends on the destination alpha (FailModeInputs::rgbReadsDstAlpha).
-bool rgbReadsDstAlpha(const BlendState& blend);
-
 }  // namespace engine::render::gl

@@ -149,21 +149,9 @@ PipelineHandle GlBackendImpl::createPipeline(const PipelineDesc& desc) {
     std::shared_ptr<const ProgramSlot> program = programFor(desc.program);
     if (program->desc->vertexInput == VertexInput::Fullscreen && desc.depth.test)
         throw Error(what + ": full-screen program " + program->desc->name + " cannot depth-test");
-    GlPipeline p{desc, {}, std::move(program)};
-    bool anyRgb = false, anyAlpha = false, plain = true, readsDstAlpha = false;
-    for (const BlendState& b : desc.blend) {
-        anyRgb = anyRgb || (b.writeMask & WriteRGB);
-        anyAlpha = anyAlpha || (b.writeMask & WriteA);
-        plain = plain && b.isPlainWrite();
-        readsDstAlpha = readsDstAlpha || rgbReadsDstAlpha(b);
-    }
-    const FailModePlan plan = planFailMode({desc.alphaTest, desc.depth.test, desc.depth.write, desc.depth.func,
-                                            anyRgb, anyAlpha, readsDstAlpha,
-                                            options_.failModes == FailModeStrategy::PerTriangle});
-    p.info.alphaTestDropped = plan.alphaTestDropped;
-    p.info.blendIsPlainWrite = plain;
-    p.info.exact = plan.exact;
-    if (!plan.exact) p.info.note = plan.note;
+    const ResolvedPipeline resolved = resolvePipeline(desc, failModeEmulation());
+    GlPipeline p{desc, resolved.info, std::move(program)};
+    const FailModePlan& plan = resolved.failModes;
     if (desc.alphaTest.alphaToCoverage && options_.nativeAlphaToCoverage) {
         p.info.exact = false;
         p.info.note += std::string(p.info.note.empty() ? "" : "; ") +

@@ -17,6 +17,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/render/memory_budget.hpp"
+#include "engine/render/resolved_draw_state.hpp"
 #include "engine/render/resource_pool.hpp"
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
@@ -211,17 +212,7 @@ public:
         std::shared_ptr<const ProgramDesc> program = programFor(desc.program);
         if (program->vertexInput == VertexInput::Fullscreen && desc.depth.test)
             throw Error(what + ": full-screen program " + program->name + " cannot depth-test");
-        SoftPipeline p{desc, {}, std::move(program)};
-        const bool depthWrite = desc.depth.test && desc.depth.write;
-        bool anyRgb = false, anyAlpha = false, plain = true;
-        for (const BlendState& b : desc.blend) {
-            anyRgb = anyRgb || (b.writeMask & WriteRGB);
-            anyAlpha = anyAlpha || (b.writeMask & WriteA);
-            plain = plain && b.isPlainWrite();
-        }
-        p.info.alphaTestDropped = desc.alphaTest.enabled && !alphaTestCanMatter(desc.alphaTest, depthWrite, anyRgb, anyAlpha);
-        p.info.blendIsPlainWrite = plain;
-        return pipelines_.add(std::move(p));
+        return pipelines_.add(SoftPipeline{desc, resolvePipeline(desc, FailModeEmulation::None).info, std::move(program)});
     }
 
     void destroy(TextureHandle h) override { textures_.remove(h); }
@@ -416,44 +407,37 @@ private:
         if (filled < size) std::memcpy(out + filled, out, size - filled);
     }
 
-    Viewport viewportFor(const DrawDesc& d) const {
-        Viewport vp{passWidth_, passHeight_, {0, 0, passWidth_, passHeight_}, &samplePattern(passSamples_)};
-        if (d.scissor) {
-            const int x0 = std::max(0, d.scissor->x), y0 = std::max(0, d.scissor->y);
-            const int x1 = std::min(passWidth_, d.scissor->x + d.scissor->width);
-            const int y1 = std::min(passHeight_, d.scissor->y + d.scissor->height);
-            vp.scissor = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
-        }
-        return vp;
+    Viewport viewportFor(const Rect& scissor) const {
+        return {passWidth_, passHeight_, scissor, &samplePattern(passSamples_)};
     }
 
-    DrawState drawStateFor(const DrawDesc& d) {
+    // The draw's state as the front end resolves it (resolved_draw_state.hpp), translated into
+    // the tile loop's terms; fail modes are the kernel's own, so no emulation plan is made.
+    DrawState drawStateFor(const DrawDesc& d, Rect& scissor) {
         const SoftPipeline& p = pipelines_.get(d.pipeline);
         DrawState s;
-        for (const ColorAttachment& c : pass_->color)
-            if (c.texture) s.colorTargets[s.colorTargetCount++] = &textures_.get(c.texture);
+        DrawTargets targets{{}, 0, pass_->depth.texture.valid(), passSamples_, passWidth_, passHeight_};
+        for (const ColorAttachment& c : pass_->color) {
+            if (!c.texture) continue;
+            SoftTexture& t = textures_.get(c.texture);
+            targets.colorFormats[s.colorTargetCount] = t.desc.format;
+            s.colorTargets[s.colorTargetCount++] = &t;
+        }
+        targets.colorTargetCount = s.colorTargetCount;
         s.depthTarget = pass_->depth.texture ? &textures_.get(pass_->depth.texture) : nullptr;
         s.samples = passSamples_;
         s.pattern = &samplePattern(passSamples_);
-        s.depthTest = p.desc.depth.test && s.depthTarget;
-        s.depthWrite = s.depthTest && p.desc.depth.write;
-        s.depthFunc = p.desc.depth.func;
-        s.alphaToCoverage = p.desc.alphaTest.alphaToCoverage;
-        s.blendConstant = p.desc.blendConstant;
-        bool anyRgb = false, anyAlpha = false;
-        for (int i = 0; i < s.colorTargetCount; ++i) {
-            s.blend[i] = p.desc.blend[i];
-            // A fully masked target is not touched; channels the format lacks are not written.
-            const int channels = formatInfo(s.colorTargets[i]->desc.format).channels;
-            const std::uint8_t present = std::uint8_t((1u << channels) - 1u);
-            s.blend[i].writeMask &= present;
-            s.blendNeeded[i] = !s.blend[i].isPlainWrite();
-            anyRgb = anyRgb || (s.blend[i].writeMask & WriteRGB);
-            anyAlpha = anyAlpha || (s.blend[i].writeMask & WriteA);
-        }
-        s.alphaTest = p.desc.alphaTest;
-        s.alphaTest.enabled = alphaTestCanMatter(p.desc.alphaTest, s.depthWrite, anyRgb, anyAlpha);
-        s.shade = anyRgb || anyAlpha || s.alphaTest.enabled || (s.alphaToCoverage && s.samples > 1);
+        const ResolvedDrawState r = resolveDrawState(p.desc, targets, d.scissor, FailModeEmulation::None);
+        s.depthTest = r.depthTest;
+        s.depthWrite = r.depthWrite;
+        s.depthFunc = r.depthFunc;
+        s.alphaToCoverage = r.alphaToCoverage;
+        s.blendConstant = r.blendConstant;
+        s.blend = r.blend;
+        s.blendNeeded = r.blendNeeded;
+        s.alphaTest = r.alphaTest;
+        s.shade = r.shade;
+        scissor = r.scissor;
         s.program = p.program->soft->bind(d.params, textureLookup_);
         s.isa = *options_.simd;
         return s;
@@ -709,14 +693,15 @@ private:
         geometry_.clear();
         for (std::uint32_t i = 0; i < draws_.size(); ++i) {
             const DrawDesc& d = draws_[i].desc;
-            drawStates.push_back(drawStateFor(d));
+            Rect scissor;
+            drawStates.push_back(drawStateFor(d, scissor));
             if (FragmentSink* sink = draws_[i].sink) {
                 DrawState& s = drawStates.back();
                 s.capture = sink;
                 s.shade = true;
                 s.depthWrite = false;
             }
-            planGeometry(d, drawStates.back(), i, viewportFor(d), pipelines_.get(d.pipeline).desc.raster, grid);
+            planGeometry(d, drawStates.back(), i, viewportFor(scissor), pipelines_.get(d.pipeline).desc.raster, grid);
         }
         runGeometry(grid);
         stats_.draws += draws_.size();

@@ -33,20 +33,6 @@ struct AlphaTest {
     static AlphaTest discardBelow(float ref) { return {true, CompareFunc::GreaterEqual, ref, AlphaFailMode::Keep, false}; }
 };
 
-// Whether the test can change what a draw writes: only when a failing fragment writes
-// something different from a passing one ([PCSX2] "Looking further"). Backends drop a test
-// that cannot (PipelineInfo::alphaTestDropped).
-constexpr bool alphaTestCanMatter(const AlphaTest& test, bool depthWrite, bool anyRgbWrite, bool anyAlphaWrite) {
-    if (!test.enabled || test.func == CompareFunc::Always) return false;
-    switch (test.failMode) {
-        case AlphaFailMode::Keep: return true;
-        case AlphaFailMode::FbOnly: return depthWrite;
-        case AlphaFailMode::ZbOnly: return anyRgbWrite || anyAlphaWrite;
-        case AlphaFailMode::RgbOnly: return depthWrite || anyAlphaWrite;
-    }
-    return true;
-}
-
 const char* alphaFailModeName(AlphaFailMode mode);
 
 }  // namespace engine::render

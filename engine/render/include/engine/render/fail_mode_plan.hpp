@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// How the GL backend turns a GS-style alpha test ([PCSX2]) into GL draws: a list of steps,
-// each drawing the whole draw with the fragments that pass, fail or all of them, writing only
-// some channels and maybe depth. Pure logic, no GL, so it is unit-tested on its own.
+// How a backend without fail modes of its own (GL: only `discard`) turns a GS-style alpha test
+// ([PCSX2]) into draws: a list of steps, each drawing the whole draw with the fragments that
+// pass, fail or all of them, writing only some channels and maybe depth. Pure logic, no API,
+// so it is unit-tested on its own; the draw-state resolver (resolved_draw_state.hpp) makes the
+// plan, drivers only issue its steps.
 //
 // Which fragments write what (soft backend, tile_rasterizer.cpp):
 //   pass: RGB, A, Z          fail: KEEP -, FB_ONLY RGB A, ZB_ONLY Z, RGB_ONLY RGB
@@ -22,7 +24,7 @@
 #include "engine/render/alpha_test.hpp"
 #include "engine/render/depth_state.hpp"
 
-namespace engine::render::gl {
+namespace engine::render {
 
 enum class FragmentSelect : std::uint8_t { All, Passing, Failing };
 
@@ -34,23 +36,22 @@ struct PlanStep {
 
 struct FailModePlan {
     std::vector<PlanStep> steps;
-    bool alphaTestDropped = false;  // enabled but cannot change the result (alphaTestCanMatter)
     bool perTriangle = false;       // issue the steps triangle by triangle
     bool exact = true;
     std::string note;               // how it was emulated / why it is inexact
 };
 
 struct FailModeInputs {
-    AlphaTest alphaTest;
+    AlphaTest alphaTest;  // effective: enabled only where it can change the result (the resolver's rule)
     bool depthTest = false;
     bool depthWrite = false;  // effective: only with the test on
     CompareFunc depthFunc = CompareFunc::Less;
     bool anyRgbWrite = true;
     bool anyAlphaWrite = true;
     bool rgbReadsDstAlpha = false;  // some blending target's RGB factors use destination alpha
-    bool perTriangleAllowed = false;  // GlOptions::failModes == PerTriangle
+    bool perTriangleAllowed = false;  // FailModeEmulation::PerTriangle
 };
 
 FailModePlan planFailMode(const FailModeInputs& in);
 
-}  // namespace engine::render::gl
+}  // namespace engine::render

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "engine/render/gl/fail_mode_plan.hpp"
+#include "engine/render/fail_mode_plan.hpp"
 
 #include "engine/render/blend_state.hpp"
 
-namespace engine::render::gl {
+namespace engine::render {
 
 namespace {
 
@@ -32,8 +32,7 @@ FailModePlan planFailMode(const FailModeInputs& in) {
     const std::uint8_t passWrites = std::uint8_t(WriteAll | (depthWrite ? kDepthBit : 0));
     const AlphaTest& test = in.alphaTest;
 
-    if (!alphaTestCanMatter(test, depthWrite, in.anyRgbWrite, in.anyAlphaWrite)) {
-        plan.alphaTestDropped = test.enabled;
+    if (!test.enabled) {  // off, or dropped by the resolver: it cannot change the result
         plan.steps.push_back(step(FragmentSelect::All, passWrites));
         return plan;
     }
@@ -87,4 +86,4 @@ FailModePlan planFailMode(const FailModeInputs& in) {
     return plan;
 }
 
-}  // namespace engine::render::gl
+}  // namespace engine::render

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The fail-mode emulation plan (no GL): which steps each GS fail mode becomes, and which
-// combinations are reported inexact.
+// The fail-mode emulation plan (no API): which steps each GS fail mode becomes, and which
+// combinations are reported inexact. Its input is the resolved alpha test (enabled only where
+// it can matter), so whether a test is dropped is resolved_draw_state_test's.
 #include <gtest/gtest.h>
 
 #include "engine/render/blend_state.hpp"
-#include "engine/render/gl/fail_mode_plan.hpp"
+#include "engine/render/fail_mode_plan.hpp"
 
-namespace engine::render::gl {
+namespace engine::render {
 namespace {
 
 FailModeInputs inputs(AlphaFailMode mode, bool test, bool write, CompareFunc func = CompareFunc::Less) {
@@ -18,23 +19,19 @@ FailModeInputs inputs(AlphaFailMode mode, bool test, bool write, CompareFunc fun
     return in;
 }
 
-TEST(FailModePlan, OffOrUselessTestIsOneStepOverAllFragments) {
+TEST(FailModePlan, OffTestIsOneStepOverAllFragments) {
     FailModeInputs in = inputs(AlphaFailMode::Keep, true, true);
     in.alphaTest.enabled = false;
     FailModePlan plan = planFailMode(in);
     ASSERT_EQ(plan.steps.size(), 1u);
     EXPECT_EQ(plan.steps[0].select, FragmentSelect::All);
-    EXPECT_FALSE(plan.alphaTestDropped);
-    // FB_ONLY without depth writes cannot matter ([PCSX2] "Looking further").
-    plan = planFailMode(inputs(AlphaFailMode::FbOnly, true, false));
-    EXPECT_TRUE(plan.alphaTestDropped);
+    EXPECT_EQ(plan.steps[0].channels, WriteAll);
+    EXPECT_TRUE(plan.steps[0].depthWrite);
+    in.depthWrite = false;
+    plan = planFailMode(in);
     ASSERT_EQ(plan.steps.size(), 1u);
-    EXPECT_EQ(plan.steps[0].select, FragmentSelect::All);
     EXPECT_FALSE(plan.steps[0].depthWrite);
-    // ALWAYS passes everything.
-    in = inputs(AlphaFailMode::Keep, false, false);
-    in.alphaTest.func = CompareFunc::Always;
-    EXPECT_TRUE(planFailMode(in).alphaTestDropped);
+    EXPECT_TRUE(plan.exact);
 }
 
 TEST(FailModePlan, KeepIsADiscard) {
@@ -122,4 +119,4 @@ TEST(FailModePlan, DepthTestedAndWrittenIsTwoPassAndInexact) {
 }
 
 }  // namespace
-}  // namespace engine::render::gl
+}  // namespace engine::render
