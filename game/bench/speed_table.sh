@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The soft backend's speed against Mesa llvmpipe (issue 16), from one run on this machine:
+# The soft backend's speed against Mesa llvmpipe, from one run on this machine:
 #   racer's whole frame, pan and chase, 1280x720, every module on: soft / llvmpipe
 #   ssam-bench tree, forest, vista: SSAM frame soft / llvmpipe (and the worst of the three)
 #   forest: SSAM / alpha test on soft
 #   racer's 160x90 chase frame (the fixed per-frame cost), ms
 #   2 threads / 1 thread: racer's 720p chase frame on soft, speed-up
 # Both backends get the same threads: soft --threads, llvmpipe LP_NUM_THREADS (EGL, headless).
-# Times are racer's "mean frame" (every frame of the run, as issue 16 measured them) and
+# Times are racer's "mean frame" (every frame of the run, start-up frames included) and
 # ssam-bench's median frame. Each racer measure runs ROUNDS times, alternating backends (and
 # binaries), and the median is kept.
 #

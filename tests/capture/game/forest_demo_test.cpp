@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The default demo shows what SSAM is for (issue 17): `make demo` without a display runs
+// The default demo shows what SSAM is for: `make demo` without a display runs
 // racer --headless --frames 90 --fixed-dt 0.0333333 (chase camera, SSAM, every living-scene
 // module). This test runs the same 90 frames the way racer's headless loop does (racer.cpp),
 // at 320x180 (the demo's 16:9 at a quarter of its width, so it is quick), and checks, frame by
