@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The racing scene's ground (game/src/ground.hpp) fits the road: nowhere on the lap does the
-// ground mesh rise above the asphalt (a ground that does pokes through along the inside of
-// the road, plainly so at 1280x720), the shoulders reach down into the ground on both sides,
+// ground mesh rise above the asphalt (were it to, at 1280x720 it would poke through along the
+// inside of the road), the shoulders reach down into the ground on both sides,
 // and Ground::height() is the height the mesh draws, so what is placed on the ground stands
 // on it.
 #include <gtest/gtest.h>
