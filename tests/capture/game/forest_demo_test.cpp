@@ -14,7 +14,7 @@
 //     two (at least kMinCarPixels: it is in view); on at least kMinCarClear of its pixels the
 //     demo's frame may differ from the bare car by at most kVeilCodes (of 255, sRGB) in every
 //     channel. Dust or foliage veiling the car, or a camera that loses it, fails here.
-// It prints every frame's figures. game/README.md ("The scene") gives the 1280x720 figures.
+// It prints every frame's figures. game/bench/FIGURES.md gives the 1280x720 figures.
 #include <gtest/gtest.h>
 
 #include <algorithm>
