@@ -102,7 +102,7 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
         out << "\n";
     }
 
-    // Goal ratios (issue #6), from this run.
+    // Goal ratios (SSAM against its rivals, game/bench/FIGURES.md), from this run.
     const std::string primary = primaryBackend(rows);
     auto value = [&](const std::string& scene, const std::string& technique, double BenchRow::*field,
                      const std::string& backend) -> std::optional<double> {

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // `ssam-bench`'s outputs: bench.csv (one row per scene x technique x backend),
-// bench_passes.csv (median time of each pass), bench.md (tables and the goal ratios of
-// issue #6); bench.svg is bench_chart.hpp's. Each is written to a stream; ssam-bench stages
-// the files and puts them in place together (report_text.hpp stageReport).
+// bench_passes.csv (median time of each pass), bench.md (tables and the goal ratios of SSAM
+// against its rivals); bench.svg is bench_chart.hpp's. Each is written to a stream; ssam-bench
+// stages the files and puts them in place together (report_text.hpp stageReport).
 #include <ostream>
 #include <string>
 #include <vector>

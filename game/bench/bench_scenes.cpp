@@ -150,7 +150,7 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             throw Error("the layers scene is built from its layer count, not by kind");
         case SceneKind::Empty: {
             // Foliage exists but only behind the camera: extraction culls it, so every
-            // technique should cost what the opaque frame costs (DESIGN.md data flow, step 3).
+            // technique should cost what the opaque frame costs (its passes are empty).
             for (int i = 0; i < 40; ++i) {
                 const float x = random.uniform(-60.0f, 60.0f), z = random.uniform(-90.0f, -25.0f);
                 const float scale = random.uniform(0.9f, 1.4f), heading = randomYaw();

@@ -7,7 +7,7 @@
 #   racer's 160x90 chase frame (the fixed per-frame cost), ms
 #   2 threads / 1 thread: racer's 720p chase frame on soft, speed-up
 # Both backends get the same threads: soft --threads, llvmpipe LP_NUM_THREADS (EGL, headless).
-# Times are racer's "mean frame" (every frame of the run) and
+# Times are racer's "mean frame" (every frame of the run, start-up frames included) and
 # ssam-bench's median frame. Each racer measure runs ROUNDS times, alternating backends (and
 # binaries), and the median is kept.
 #

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ssam-bench: every transparency technique's run time against its error from the exact
-// reference (DESIGN.md "Accuracy and the ground truth", issue #6). Writes bench.csv,
+// reference (modules/transparency: every fragment sorted and composited). Writes bench.csv,
 // bench_passes.csv, bench.md and bench.svg into --out; with --sweep, SSAM under a grid of its
 // knobs instead, into sweep.csv and sweep.md; with --scaling, each backend's SSAM and
 // alpha-test frame time against pixels and foliage layers, into scaling.csv and scaling.svg. Keeps the command-line contract (game/README.md):

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The living scene (issue #8): the enabled modules' features in frame order (grass ->
+// The living scene: the enabled modules' features in frame order (grass ->
 // water -> particles -> light shafts after the foliage technique; wind has systems only),
 // their systems in one ECS scheduler, run each frame after the simulation step and before
 // extraction. A module left out of the build (-DSSAM_MODULE_<NAME>=OFF) or switched off by

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Shared by the fuzz targets (DESIGN.md "Testing layers": fuzz): what a target may accept as
+// Shared by the fuzz targets (libFuzzer, tests/README.md "Fuzzing"): what a target may accept as
 // the outcome of hostile input, and a scratch directory for the loaders that take paths.
 //
 // The contract every target checks: bad input ends in engine::Error whose message names what

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The exact ground truth (DESIGN.md "Accuracy and the ground truth"): every foliage fragment
+// The exact ground truth every technique is judged against: every foliage fragment
 // that passes the opaque depth test, none alpha-tested, sorted per pixel by depth and
 // composited front to back with straight-alpha "over" ([Hargreaves 2009]) onto the opaque colour.
 //

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// SSAM as a frame-graph pass group (DESIGN.md "Data flow of one frame", Falcor-style
+// SSAM as a frame-graph pass group (declared reads and writes: Falcor-style
 // reflection of inputs and outputs): reads the opaque colour and depth, writes the
 // composited colour and the foliage depth that later passes (grass, water, particles,
 // light shafts) depth-test against ([Hathaway 2010] §3.7).

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Runs `ssam-bench --quick` twice (BENCH, OUT) and checks its outputs (issue #6):
+# Runs `ssam-bench --quick` twice (BENCH, OUT) and checks its outputs:
 #   - both runs exit 0;
 #   - bench.csv has every required column and one row per scene x technique (+ opaque-only);
 #   - where the exact reference exists, a row that ran has finite error columns; where it does

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The default demo shows what SSAM is for (issue 17): `make demo` without a display runs
+// The default demo shows what SSAM is for: `make demo` without a display runs
 // racer --headless --frames 90 --fixed-dt 0.0333333 (chase camera, SSAM, every living-scene
 // module). This test runs the same 90 frames the way racer's headless loop does (racer.cpp),
 // at 320x180 (the demo's 16:9 at a quarter of its width, so it is quick), and checks, frame by
@@ -14,7 +14,7 @@
 //     two (at least kMinCarPixels: it is in view); on at least kMinCarClear of its pixels the
 //     demo's frame may differ from the bare car by at most kVeilCodes (of 255, sRGB) in every
 //     channel. Dust or foliage veiling the car, or a camera that loses it, fails here.
-// It prints every frame's figures. game/README.md ("The scene") gives the 1280x720 figures.
+// It prints every frame's figures. game/bench/FIGURES.md gives the 1280x720 figures.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Long runs (issue 18 item 7): racer's real frame (the racing scene, every living-scene module,
+// Long runs: racer's real frame (the racing scene, every living-scene module,
 // SSAM, the chase camera) rendered for 2,000 small frames on each backend, through a backend
 // decorator that counts live textures, buffers, programs, pipelines and queries
 // (support/counting_backend.hpp). After a warm-up, nothing may accumulate.

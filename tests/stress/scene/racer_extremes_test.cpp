@@ -8,7 +8,7 @@
 //  - the largest size, 16384x16384, where there is not the memory for it (an address-space
 //    limit on the child): refused before the first frame with what a target needs and what
 //    is available, exit 1, no capture, never a kill. Whether it renders where there is the
-//    memory is a benchmark (tests/README.md "Extremes"), too heavy for every CI run.
+//    memory is a benchmark (tests/docs/stress.md "Extremes"), too heavy for every CI run.
 #include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The player's car bends the bushes it drives through (issue 17 item 4): it keeps the
+// The player's car bends the bushes it drives through: it keeps the
 // autopilot's Collider, so modules/wind pushes foliage out of its sphere. Two identical racing
 // scenes, seen from the same camera at the same times: in one the player drives the car
 // through a bush, in the other away from it; the bush's deformed vertices (its own buffer's

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The racing scene's forest (game/src/forest.hpp, issue 17): woodland lines the road for most
+// The racing scene's forest (game/src/forest.hpp): woodland lines the road for most
 // of the lap, a tree line a few metres off the asphalt, canopy reaching over it in places, bushes
 // on the verges, clearings without trees near the road; nothing grows on the road or its
 // shoulders; the same seed grows the same forest.

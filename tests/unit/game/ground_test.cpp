@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The racing scene's ground (game/src/ground.hpp) fits the road: nowhere on the lap does the
-// ground mesh rise above the asphalt (issue 17: at 1280x720 it used to poke through along the
-// inside of the road), the shoulders reach down into the ground on both sides, and
-// Ground::height() is the height the mesh draws, so what is placed on the ground stands on it.
+// ground mesh rise above the asphalt (were it to, at 1280x720 it would poke through along the
+// inside of the road), the shoulders reach down into the ground on both sides,
+// and Ground::height() is the height the mesh draws, so what is placed on the ground stands
+// on it.
 #include <gtest/gtest.h>
 
 #include <cmath>

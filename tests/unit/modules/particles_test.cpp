@@ -186,7 +186,7 @@ TEST(Particles, CapsAndBadInput) {
     EXPECT_THROW(particles::ParticleSimulation{o}, Error);
 }
 
-// Dust is thick at the wheels and thins along its trail (issue 17: the chase camera sees the
+// Dust is thick at the wheels and thins along its trail (so the chase camera sees the
 // car, not a wall of dust): opacity falls by 1/e per `thinning` metres travelled, on top of the
 // fade with age. A car driving at 28 m/s for a second: the particles within 2 m of a wheel are
 // several times as opaque as those over 6 m behind.

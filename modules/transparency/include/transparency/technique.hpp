@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // How the foliage of a frame is drawn: SSAM and the rivals it is judged against
-// (DESIGN.md "Accuracy and the ground truth"). Every technique draws the same foliage over
+// and the exact reference that judges them. Every technique draws the same foliage over
 // the same opaque frame, so `ssam-bench` and `racer --technique` can swap them freely.
 #include <cstdint>
 #include <memory>

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Extraction (DESIGN.md "Data flow of one frame", step 2): visible entities become draw
-// batches — one per mesh part, with every visible instance of it — split by surface class.
+// Extraction, the frame's second step (after the systems, before the frame graph): visible
+// entities become draw batches — one per mesh part, with every visible instance of it — split
+// by surface class.
 #include <vector>
 
 #include "engine/core/ecs/registry.hpp"

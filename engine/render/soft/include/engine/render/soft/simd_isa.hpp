@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Which instruction set the soft backend's wide kernels run (issue 16): chosen once per
+// Which instruction set the soft backend's wide kernels run: chosen once per
 // backend at run time, never at build time, so one binary runs on any x86-64 and uses the
 // widest vectors the CPU has. Every choice gives the same images, bit for bit: each lane does
 // the IEEE single-precision operations of the scalar code in the same order, and nothing is
