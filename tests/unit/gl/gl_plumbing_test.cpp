@@ -75,13 +75,19 @@ class GlPlumbing : public ::testing::Test {
 protected:
     void SetUp() override { fake = &gl_; }
     void TearDown() override { fake = nullptr; }
-    BuiltProgram build() { return buildProgram(table_, "GL program 'p'", "vertex source", "fragment source"); }
     // Nothing of a build is left but its program (on success).
     void expectOnly(std::set<GLuint> programs) const {
         EXPECT_TRUE(gl_.shaders.empty());
         EXPECT_TRUE(gl_.attached.empty());
         EXPECT_FALSE(gl_.deletedAttachedShader);
         EXPECT_EQ(gl_.programs, programs);
+    }
+    // A build fails with exactly `error` and leaves nothing behind.
+    void expectFailure(const std::string& error) {
+        const BuiltProgram built = buildProgram(table_, "GL program 'p'", "vertex source", "fragment source");
+        EXPECT_EQ(built.id, 0u);
+        EXPECT_EQ(built.error, error);
+        expectOnly({});
     }
 
     FakeGl gl_;
@@ -114,34 +120,21 @@ TEST_F(GlPlumbing, BuildsAndKeepsOnlyTheProgram) {
 TEST_F(GlPlumbing, AStageThatDoesNotCompileIsNamedWithItsLog) {
     gl_.shaderLog = "0:1(1): error: syntax error\n\n";
     gl_.vertexCompiles = GL_FALSE;
-    BuiltProgram built = build();
-    EXPECT_EQ(built.id, 0u);
-    EXPECT_EQ(built.error, "GL program 'p': vertex shader does not compile:\n0:1(1): error: syntax error");
-    expectOnly({});
-
+    expectFailure("GL program 'p': vertex shader does not compile:\n0:1(1): error: syntax error");
     gl_.vertexCompiles = GL_TRUE;
     gl_.fragmentCompiles = GL_FALSE;
-    built = build();
-    EXPECT_EQ(built.id, 0u);
-    EXPECT_EQ(built.error, "GL program 'p': fragment shader does not compile:\n0:1(1): error: syntax error");
-    expectOnly({});  // the vertex shader went too
+    expectFailure("GL program 'p': fragment shader does not compile:\n0:1(1): error: syntax error");
 }
 
 TEST_F(GlPlumbing, AProgramThatDoesNotLinkIsNamedWithItsLog) {
     gl_.programLog = "error: v_never_written not written\n";
     gl_.links = GL_FALSE;
-    const BuiltProgram built = build();
-    EXPECT_EQ(built.id, 0u);
-    EXPECT_EQ(built.error, "GL program 'p' does not link:\nerror: v_never_written not written");
-    expectOnly({});
+    expectFailure("GL program 'p' does not link:\nerror: v_never_written not written");
 }
 
 TEST_F(GlPlumbing, NoShaderObjectIsAnError) {
     gl_.createShaderFails = true;
-    const BuiltProgram built = build();
-    EXPECT_EQ(built.id, 0u);
-    EXPECT_EQ(built.error, "GL program 'p': glCreateShader failed (no current context?)");
-    expectOnly({});
+    expectFailure("GL program 'p': glCreateShader failed (no current context?)");
 }
 
 TEST(GlPlumbingNames, FramebufferStatusNames) {
