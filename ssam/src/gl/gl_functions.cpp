@@ -22,6 +22,7 @@ void loadFunctions(GlFunctions& gl, const Loader& load) {
         throw Failure(Status::MissingEntryPoint, "ssam::gl: the host's GL loader has no address for gl" #name \
                                                  " (an OpenGL 3.3 core function SSAM needs)");
     SSAM_GL_REQUIRED_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
+    ENGINE_GL_PROGRAM_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
 #undef SSAM_GL_LOAD_REQUIRED
     // Optional: the core name, then the ARB extension's; null when neither resolves.
 #define SSAM_GL_LOAD_OPTIONAL(type, name)                                    \

@@ -8,14 +8,15 @@
 
 #include <string>
 
+#include "engine/render/gl/plumbing/build_program.hpp"
 #include "ssam/gl/ssam_gl.hpp"
 
 namespace ssam::gl::detail {
 
-// OpenGL 3.3 core: ssam::gl needs every one of these.
+// OpenGL 3.3 core: ssam::gl needs every one of these, and those of ENGINE_GL_PROGRAM_FUNCTIONS
+// (GlFunctions' base, which the engine's shared program builder takes).
 #define SSAM_GL_REQUIRED_FUNCTIONS(X)                                        \
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                 \
-    X(PFNGLATTACHSHADERPROC, AttachShader)                                   \
     X(PFNGLBINDBUFFERPROC, BindBuffer)                                       \
     X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                             \
     X(PFNGLBINDTEXTUREPROC, BindTexture)                                     \
@@ -26,12 +27,7 @@ namespace ssam::gl::detail {
     X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)               \
     X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                 \
     X(PFNGLCOLORMASKIPROC, ColorMaski)                                       \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)                                 \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                 \
-    X(PFNGLCREATESHADERPROC, CreateShader)                                   \
     X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                       \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                 \
-    X(PFNGLDELETESHADERPROC, DeleteShader)                                   \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                               \
     X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                       \
     X(PFNGLDEPTHFUNCPROC, DepthFunc)                                         \
@@ -51,10 +47,6 @@ namespace ssam::gl::detail {
     X(PFNGLGETERRORPROC, GetError)                                           \
     X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                 \
     X(PFNGLGETINTEGERVPROC, GetIntegerv)                                     \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                         \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                   \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                           \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                     \
     X(PFNGLGETSTRINGPROC, GetString)                                         \
     X(PFNGLGETSTRINGIPROC, GetStringi)                                       \
     X(PFNGLGETTEXLEVELPARAMETERIVPROC, GetTexLevelParameteriv)               \
@@ -63,9 +55,7 @@ namespace ssam::gl::detail {
     X(PFNGLISENABLEDPROC, IsEnabled)                                         \
     X(PFNGLISENABLEDIPROC, IsEnabledi)                                       \
     X(PFNGLISTEXTUREPROC, IsTexture)                                         \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                     \
     X(PFNGLSCISSORPROC, Scissor)                                             \
-    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                   \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                       \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                 \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                                         \
@@ -89,7 +79,7 @@ namespace ssam::gl::detail {
     X(PFNGLBLENDFUNCSEPARATEIPROC, BlendFuncSeparatei)                       \
     X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)
 
-struct GlFunctions {
+struct GlFunctions : engine::render::gl::plumbing::ProgramFunctions {
 #define SSAM_GL_DECLARE(type, name) type name = nullptr;
     SSAM_GL_REQUIRED_FUNCTIONS(SSAM_GL_DECLARE)
     SSAM_GL_OPTIONAL_FUNCTIONS(SSAM_GL_DECLARE)

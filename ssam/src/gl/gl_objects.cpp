@@ -1,85 +1,22 @@
 // SPDX-License-Identifier: MIT
 #include "gl_objects.hpp"
 
-#include <algorithm>
 #include <cstdio>
 
+#include <GL/glcorearb.h>
+
+#include "engine/render/gl/plumbing/framebuffer_status_name.hpp"
 #include "failure.hpp"
 #include "gl_functions.hpp"
 
 namespace ssam::gl::detail {
 
-namespace {
-
-std::string infoLog(const GlFunctions& gl, GLuint object, bool program) {
-    GLint length = 0;
-    program ? gl.GetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
-            : gl.GetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    program ? gl.GetProgramInfoLog(object, length, nullptr, log.data())
-            : gl.GetShaderInfoLog(object, length, nullptr, log.data());
-    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-    return log;
-}
-
-GLuint compileStage(const GlFunctions& gl, const std::string& name, GLenum stage, const char* source) {
-    const GLuint shader = gl.CreateShader(stage);
-    if (!shader) throw Failure(Status::ShaderFailed, "ssam::gl program '" + name + "': glCreateShader failed");
-    gl.ShaderSource(shader, 1, &source, nullptr);
-    gl.CompileShader(shader);
-    GLint ok = GL_FALSE;
-    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        const std::string log = infoLog(gl, shader, false);
-        gl.DeleteShader(shader);
-        throw Failure(Status::ShaderFailed, "ssam::gl program '" + name +
-                                                "': " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                                                " shader does not compile:\n" + log);
-    }
-    return shader;
-}
-
-const char* framebufferStatusName(GLenum status) {
-    switch (status) {
-        case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
-        case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-        case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS: return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-        default: return "unknown framebuffer status";
-    }
-}
-
-}  // namespace
-
 unsigned int compileProgram(const GlFunctions& gl, const std::string& name, const char* vertexSource,
                             const char* fragmentSource) {
-    const GLuint vs = compileStage(gl, name, GL_VERTEX_SHADER, vertexSource);
-    GLuint fs = 0;
-    try {
-        fs = compileStage(gl, name, GL_FRAGMENT_SHADER, fragmentSource);
-    } catch (...) {
-        gl.DeleteShader(vs);
-        throw;
-    }
-    const GLuint program = gl.CreateProgram();
-    gl.AttachShader(program, vs);
-    gl.AttachShader(program, fs);
-    gl.LinkProgram(program);
-    gl.DeleteShader(vs);
-    gl.DeleteShader(fs);
-    GLint ok = GL_FALSE;
-    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = infoLog(gl, program, true);
-        gl.DeleteProgram(program);
-        throw Failure(Status::ShaderFailed, "ssam::gl program '" + name + "' does not link:\n" + log);
-    }
-    return program;
+    auto built = engine::render::gl::plumbing::buildProgram(gl, "ssam::gl program '" + name + "'", vertexSource,
+                                                            fragmentSource);
+    if (!built.id) throw Failure(Status::ShaderFailed, built.error);
+    return built.id;
 }
 
 TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what) {
@@ -112,7 +49,8 @@ void checkDrawFramebuffer(const GlFunctions& gl, const char* what) {
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw Failure(
             Status::IncompleteFramebuffer,
-            std::string("ssam::gl: the ") + what + " framebuffer is incomplete: " + framebufferStatusName(status));
+            std::string("ssam::gl: the ") + what + " framebuffer is incomplete: " +
+                engine::render::gl::plumbing::framebufferStatusName(status));
 }
 
 const char* internalFormatName(int internalFormat) {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Small GL helpers of ssam::gl: program compilation, texture inspection, framebuffer checks.
-// ssam::gl has its own (rather than engine/render/gl's) so it depends on nothing but the host's
-// entry points. Errors throw Failure (caught at the public API).
+// They call GL only through the host's entry points (program building and status names are the
+// engine backend's header-only ones, over that table). Errors throw Failure (caught at the
+// public API).
 #include <string>
 
 namespace ssam::gl::detail {

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "engine/render/gl/gl_program.hpp"
 
-#include <algorithm>
 #include <cstdio>
-#include <optional>
 #include <utility>
 
 #include <epoxy/gl.h>
 
 #include "engine/core/error.hpp"
+#include "engine/render/gl/plumbing/build_program.hpp"
+#include "engine/render/gl/plumbing/framebuffer_status_name.hpp"
 
 namespace engine::render::gl {
 
@@ -32,77 +32,23 @@ int GlProgram::uniform(const char* name) const { return glGetUniformLocation(id_
 
 namespace {
 
-// A shader's or a program's info log when its `status` (GL_COMPILE_STATUS, GL_LINK_STATUS) is
-// false, without the NULs and newlines drivers end it with; nothing when the status is true.
-// getInteger/getLog: glGetShaderiv/glGetShaderInfoLog, or the program ones (same signatures).
-std::optional<std::string> failureLog(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getInteger,
-                                      PFNGLGETSHADERINFOLOGPROC getLog) {
-    GLint ok = GL_FALSE;
-    getInteger(object, status, &ok);
-    if (ok) return std::nullopt;
-    GLint length = 0;
-    getInteger(object, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    getLog(object, length, nullptr, log.data());
-    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-    return log;
-}
-
-GLuint compileStage(const std::string& name, GLenum stage, std::string_view source) {
-    const GLuint shader = glCreateShader(stage);
-    if (!shader) throw Error("GL program '" + name + "': glCreateShader failed (no current context?)");
-    const GLchar* text = source.data();
-    const GLint length = static_cast<GLint>(source.size());
-    glShaderSource(shader, 1, &text, &length);
-    glCompileShader(shader);
-    if (const auto log = failureLog(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog)) {
-        glDeleteShader(shader);
-        throw Error("GL program '" + name + "': " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                    " shader does not compile:\n" + *log);
-    }
-    return shader;
+// libepoxy's entry points (resolved on first call) as the table the shared builder takes.
+plumbing::ProgramFunctions epoxyProgramFunctions() {
+#define ENGINE_GL_FROM_EPOXY(type, name) gl##name,
+    return {ENGINE_GL_PROGRAM_FUNCTIONS(ENGINE_GL_FROM_EPOXY)};
+#undef ENGINE_GL_FROM_EPOXY
 }
 
 }  // namespace
 
 GlProgram compileProgram(std::string name, std::string_view vertexSource, std::string_view fragmentSource) {
-    const GLuint vs = compileStage(name, GL_VERTEX_SHADER, vertexSource);
-    GLuint fs = 0;
-    try {
-        fs = compileStage(name, GL_FRAGMENT_SHADER, fragmentSource);
-    } catch (...) {
-        glDeleteShader(vs);
-        throw;
-    }
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    glDetachShader(program, vs);
-    glDetachShader(program, fs);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    if (const auto log = failureLog(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog)) {
-        glDeleteProgram(program);
-        throw Error("GL program '" + name + "' does not link:\n" + *log);
-    }
-    return GlProgram(std::move(name), program);
+    auto built = plumbing::buildProgram(epoxyProgramFunctions(), "GL program '" + name + "'", vertexSource,
+                                        fragmentSource);
+    if (!built.id) throw Error(built.error);
+    return GlProgram(std::move(name), built.id);
 }
 
-const char* framebufferStatusName(unsigned int status) {
-    switch (status) {
-        case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
-        case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-        case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS: return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-        default: return "unknown framebuffer status";
-    }
-}
+const char* framebufferStatusName(unsigned int status) { return plumbing::framebufferStatusName(status); }
 
 void checkFramebuffer(unsigned int framebuffer, const std::string& what) {
     const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_DRAW_FRAMEBUFFER);
