@@ -6,7 +6,6 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/raster_support.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/texture_lookup.hpp"
 #include "ssam/composite_program.hpp"
@@ -46,7 +45,7 @@ struct CompositeKernel {
     // channel by channel.
     const engine::render::soft::SoftTexture* compositeColor() const { return foliage; }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
-        using engine::render::soft::raster::texelChannel;
+        using engine::render::soft::texelChannel;
         const float maxMask = texelChannel(*mask, x, y, 0);
         const float addMask = maskAdd ? texelChannel(*maskAdd, x, y, 0) : texelChannel(*mask, x, y, 3);
         float blend = maxMask + (addMask - maxMask) * params.maskLerp;

@@ -7,7 +7,6 @@
 
 #include "engine/render/soft/kernel/fragment.hpp"
 #include "engine/render/soft/kernel/programs.hpp"
-#include "engine/render/soft/kernel/raster_support.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/texture_lookup.hpp"
 #include "transparency/programs.hpp"
@@ -96,8 +95,8 @@ struct CoverageCompositeKernel {
 
     const soft::SoftTexture* compositeColor() const { return foliage; }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
-        const float maxMask = soft::raster::texelChannel(*mask, x, y, 0);
-        const float addMask = maskAdd ? soft::raster::texelChannel(*maskAdd, x, y, 0) : soft::raster::texelChannel(*mask, x, y, 3);
+        const float maxMask = soft::texelChannel(*mask, x, y, 0);
+        const float addMask = maskAdd ? soft::texelChannel(*maskAdd, x, y, 0) : soft::texelChannel(*mask, x, y, 3);
         return layerCoverage(model, maxMask, addMask);
     }
 

@@ -12,7 +12,7 @@
 // it passed when the code was written).
 // Program-authoring headers of the soft backend.
 #include "lcg.hpp"  // tests/support
-#include "engine/render/soft/kernel/half_float4.hpp"
+#include "engine/render/soft/kernel/detail/half_float4.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,8 +21,8 @@
 #include <cstring>
 #include <vector>
 
-#include "engine/render/soft/kernel/blend.hpp"
-#include "engine/render/soft/kernel/one_one_half_blend.hpp"
+#include "engine/render/soft/kernel/detail/blend.hpp"
+#include "engine/render/soft/kernel/detail/one_one_half_blend.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "lcg.hpp"  // tests/support
-#include "engine/render/soft/kernel/triangle_setup.hpp"
+#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 #include "tile_rasterizer.hpp"
 
 namespace {

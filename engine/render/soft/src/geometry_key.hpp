@@ -16,7 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/raster_state.hpp"
-#include "engine/render/soft/kernel/triangle_setup.hpp"
+#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "engine/render/pixel_codec.hpp"
-#include "engine/render/soft/kernel/texel_addressing.hpp"
+#include "engine/render/soft/kernel/detail/texel_addressing.hpp"
 
 namespace engine::render::soft {
 namespace {

@@ -22,7 +22,7 @@
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
-#include "engine/render/soft/kernel/draw_state.hpp"
+#include "engine/render/soft/kernel/detail/draw_state.hpp"
 #include "engine/render/pixel_codec.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/soft_texture.hpp"
@@ -30,7 +30,7 @@
 #include "instance_culling.hpp"
 #include "standard_kernels.hpp"
 #include "tile_rasterizer.hpp"
-#include "engine/render/soft/kernel/triangle_setup.hpp"
+#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
 namespace {

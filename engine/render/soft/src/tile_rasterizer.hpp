@@ -8,10 +8,10 @@
 #include <span>
 #include <vector>
 
-#include "engine/render/soft/kernel/draw_state.hpp"
-#include "engine/render/soft/kernel/triangle_rasterizer.hpp"
+#include "engine/render/soft/kernel/detail/draw_state.hpp"
+#include "engine/render/soft/kernel/detail/triangle_rasterizer.hpp"
 #include "engine/render/raster_state.hpp"
-#include "engine/render/soft/kernel/triangle_setup.hpp"
+#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
 

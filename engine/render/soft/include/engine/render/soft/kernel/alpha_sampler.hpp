@@ -25,7 +25,7 @@
 #include "engine/render/pixel_codec.hpp"
 #include "sampler.hpp"
 #include "soft_texture.hpp"
-#include "texel_addressing.hpp"
+#include "detail/texel_addressing.hpp"
 
 namespace engine::render::soft {
 

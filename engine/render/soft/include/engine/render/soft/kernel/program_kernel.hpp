@@ -10,7 +10,12 @@
 //   - optionally `static constexpr bool kReadsPixels = true` when shade() reads textures
 //     at the fragment's pixel (full-screen programs): the output then varies across a
 //     triangle even when every interpolant is constant;
-//   - optionally the fast-path hooks kernel/programs.hpp documents (alpha4, compositeFactor);
+//   - optionally fast-path hooks, each taken by the rasterizer for any program that declares
+//     it (rasterizer/rasterizer_class.hpp defines each contract; the built-in programs of
+//     kernel/programs.hpp use the same): the composite hooks (compositeColor, compositeFactor),
+//     sampled rows (rowSampler, shadeSampled, shadeSampled4), four-lane alpha (hasAlpha4,
+//     alpha4), alpha-first rows (those plus alphaTestFactor) and replicated-alpha mask rows
+//     (kShadesReplicatedAlpha, alpha);
 //   - optionally the row hook `void shadeRow(SimdIsa, int bx, int py, std::uint32_t live,
 //     glm::vec4* out) const`: shade() of the live pixels of an 8-pixel block row at once, for
 //     programs whose per-pixel work is worth vectorising across pixels (raster::hasRowShader;
@@ -24,7 +29,7 @@
 
 #include "engine/render/draw_params.hpp"
 #include "engine/render/soft/kernel/texture_lookup.hpp"
-#include "engine/render/soft/kernel/triangle_rasterizer.hpp"
+#include "engine/render/soft/kernel/detail/triangle_rasterizer.hpp"
 
 namespace engine::render::soft {
 

@@ -10,7 +10,7 @@
 
 #include "alpha_sampler.hpp"
 #include "fragment.hpp"
-#include "raster_support.hpp"
+#include "detail/raster_support.hpp"
 #include "engine/render/program.hpp"
 #include "sampler.hpp"
 #include "soft_texture.hpp"
@@ -74,9 +74,11 @@ struct SurfaceProgram {
     // The alpha shade() outputs for 4 fragments (see alphaTimes4), with the same bits: the
     // rasterizer alpha-tests with it before shading the colour.
     bool hasAlpha4() const { return AlphaMasked && (!texture || alphaSampler.simd4()); }
+    // shade().a == (baseColorFactor.a * vertex alpha) * texel alpha: toStraight keeps alpha.
+    float alphaTestFactor() const { return params.baseColorFactor.a; }
     // The texture is sampled four fragments at a time (AlphaSampler::rgba4, the general
     // sampler's bits), for shadeSampled().
-    bool hasRgba4() const { return texture && alphaSampler.simd4(); }
+    const AlphaSampler* rowSampler() const { return texture && alphaSampler.simd4() ? &alphaSampler : nullptr; }
     __m128 alpha4(const float* colorA, const float* u, const float* v, const float* const* duv,
                   std::uint32_t lanes) const {
         // base.a = (baseColorFactor.a * vertex alpha) * texel alpha; toStraight keeps alpha.
@@ -144,6 +146,7 @@ using MaskedLitProgram = SurfaceProgram<true>;
 
 struct AlphaOnlyProgram {
     static constexpr ProgramNeeds kNeeds{true, true, false, false, true};
+    static constexpr bool kShadesReplicatedAlpha = true;  // shade() == vec4(alpha()): the mask rows
     AlphaOnlyParams params;
     const SoftTexture* texture = nullptr;
     AlphaSampler alphaSampler;  // valid for RGBA8 textures: the same alpha, read alone

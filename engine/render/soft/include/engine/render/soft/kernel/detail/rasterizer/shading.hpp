@@ -3,7 +3,7 @@
 // TriangleRasterizer's per-pixel stages after coverage: the depth test, shade(),
 // alpha-to-coverage, the alpha test with the GS fail modes ([PCSX2]), blending and the writes;
 // the row dispatch that picks a program's fast path; perspective-correct interpolation.
-#include "engine/render/soft/kernel/rasterizer/rasterizer_class.hpp"
+#include "engine/render/soft/kernel/detail/rasterizer/rasterizer_class.hpp"
 
 namespace engine::render::soft {
 namespace raster {
@@ -59,19 +59,19 @@ inline void TriangleRasterizer<Program>::shadeRow(const SetupTriangle& t, int bx
         return;
     }
 #if SOFT_RASTER_SSE2
-    if constexpr (std::is_same_v<Program, AlphaOnlyProgram>) {
+    if constexpr (hasReplicatedAlphaHooks<Program>()) {
         if (alphaRow_) {
             shadeAlphaRow(t, bx, py, live, centerX0, fy);
             return;
         }
     }
-    if constexpr (std::is_same_v<Program, MaskedLitProgram>) {
+    if constexpr (hasAlphaFirstHooks<Program>()) {
         if (alphaFirst_) {
             shadeAlphaTestedRow(t, bx, py, live, centerX0, fy, z, depthAt);
             return;
         }
     }
-    if constexpr (std::is_same_v<Program, MaskedLitProgram> || std::is_same_v<Program, OpaqueLitProgram>) {
+    if constexpr (hasSampledRowHooks<Program>()) {
         if (sampledRow_) {
             shadeSampledRow(t, bx, py, live, centerX0, fy, z, depthAt);
             return;

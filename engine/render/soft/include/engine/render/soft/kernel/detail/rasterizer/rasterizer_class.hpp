@@ -10,7 +10,7 @@
 #include <type_traits>
 
 #include "engine/render/soft/kernel/programs.hpp"
-#include "engine/render/soft/kernel/raster_support.hpp"
+#include "engine/render/soft/kernel/detail/raster_support.hpp"
 
 namespace engine::render::soft {
 
@@ -41,6 +41,62 @@ template <typename Program>
 constexpr bool hasRowShader() {
     return requires(const Program& p, glm::vec4* out) { p.shadeRow(SimdIsa::Sse2, 0, 0, 0u, out); };
 }
+
+#if SOFT_RASTER_SSE2
+// The row hooks below are what any program may declare (program_kernel.hpp lists them); the
+// rasterizer takes a fast path for the programs that have its hooks, the built-in ones
+// included, and never asks which program it is.
+
+// Sampled rows: the texture is sampled four lanes at a time. rowSampler() is the RGBA8 sampler
+// when it can be (null otherwise); shadeSampled(f, texel) is shade(f) with the texture's sample
+// at f given, shadeSampled4 the same for four lanes in vectors of one channel, with the bits of
+// shadeSampled lane by lane.
+template <typename Program>
+constexpr bool hasSampledRowHooks() {
+    return requires(const Program& p, const Fragment& f, const __m128 (&texel)[4], const float* const (&color)[4],
+                    const float* const (&normal)[3], __m128 (&out)[4]) {
+        { p.rowSampler() } -> std::same_as<const AlphaSampler*>;
+        { p.shadeSampled(f, glm::vec4(0.0f)) } -> std::same_as<glm::vec4>;
+        p.shadeSampled4(texel, color, normal, true, out);
+    };
+}
+
+// Four lanes of the alpha shade() outputs: hasAlpha4() says when alpha4 may be used, and
+// alpha4(vertex alpha, u, v, duv, lanes) gives it, the same bits as shade().a.
+template <typename Program>
+constexpr bool hasAlpha4Hooks() {
+    return requires(const Program& p, const float* in, const float* const* duv) {
+        { p.hasAlpha4() } -> std::same_as<bool>;
+        { p.alpha4(in, in, in, duv, 0u) } -> std::same_as<__m128>;
+    };
+}
+
+// Alpha-first rows under a discarding alpha test: the sampled-row and alpha4 hooks, and
+// alphaTestFactor(), the factor f for which shade().a == (f * vertex alpha) * texel alpha
+// where a texture is bound (rowSampler() non-null); without one alpha4 gives the alpha.
+// Only the fragments that pass are then shaded whole.
+template <typename Program>
+constexpr bool hasAlphaFirstHooks() {
+    return hasSampledRowHooks<Program>() && hasAlpha4Hooks<Program>() && requires(const Program& p) {
+        { p.alphaTestFactor() } -> std::same_as<float>;
+    };
+}
+
+// Mask rows: a program whose shade() is vec4(alpha(f)), alpha(f) saturated to [0, 1] (NaN as
+// 0), says so with `static constexpr bool kShadesReplicatedAlpha = true` and offers alpha(f)
+// and the alpha4 hooks; the rasterizer then blends the alpha straight into ONE/ONE targets.
+template <typename Program>
+constexpr bool hasReplicatedAlphaHooks() {
+    if constexpr (requires { Program::kShadesReplicatedAlpha; }) {
+        return Program::kShadesReplicatedAlpha && hasAlpha4Hooks<Program>() &&
+               requires(const Program& p, const Fragment& f) {
+                   { p.alpha(f) } -> std::same_as<float>;
+               };
+    } else {
+        return false;
+    }
+}
+#endif
 
 // Whether the program's shade() reads textures at the fragment's pixel (program_kernel.hpp).
 template <typename Program>
@@ -83,15 +139,15 @@ public:
                             isAlphaOverKeepingAlpha(draw.blend[0]) && isRgba8(program.compositeColor());
         }
 #if SOFT_RASTER_SSE2
-        if constexpr (std::is_same_v<Program, MaskedLitProgram>)
+        if constexpr (hasAlphaFirstHooks<Program>())
             alphaFirst_ = !draw.capture && draw.shade && draw.alphaTest.enabled &&
                           draw.alphaTest.failMode == AlphaFailMode::Keep && program.hasAlpha4();
-        if constexpr (std::is_same_v<Program, MaskedLitProgram> || std::is_same_v<Program, OpaqueLitProgram>) {
-            sampledRow_ = !alphaFirst_ && draw.shade && program.hasRgba4();
+        if constexpr (hasSampledRowHooks<Program>()) {
+            sampledRow_ = !alphaFirst_ && draw.shade && program.rowSampler() != nullptr;
             // One plain 8-bit target (no blend, every channel written): shadePacked4.
             packedWrite_ = !draw.capture && draw.colorTargetCount == 1 && (color_[0].srgb8Plain || color_[0].rgba8Plain);
         }
-        if constexpr (std::is_same_v<Program, AlphaOnlyProgram>) {
+        if constexpr (hasReplicatedAlphaHooks<Program>()) {
             // The mask path (shadeAlphaRow) covers what the mask pass is: no capture, no alpha
             // test, no depth write. Anything else takes the general path.
             alphaRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite;
@@ -217,10 +273,10 @@ private:
     std::array<std::uint32_t, kMaxColorTargets> constantPacked_{};
     std::array<bool, kMaxColorTargets> useLut_{};
     bool compositeRow_ = false;  // CompositeProgram, CoverageCompositeProgram: compositeRow
-    bool alphaFirst_ = false;    // MaskedLit: alpha-test (Keep) on the alpha alone before shading
-    bool sampledRow_ = false;    // Surface programs otherwise: the texture sampled 4 lanes at a time
-    bool packedWrite_ = false;   // Surface programs onto one plain RGBA8 target: shadePacked4
-    // AlphaOnly's row path (shadeAlphaRow).
+    bool alphaFirst_ = false;    // hasAlphaFirstHooks: alpha-test (Keep) on the alpha alone before shading
+    bool sampledRow_ = false;    // hasSampledRowHooks otherwise: the texture sampled 4 lanes at a time
+    bool packedWrite_ = false;   // hasSampledRowHooks onto one plain RGBA8 target: shadePacked4
+    // The mask row path (shadeAlphaRow, hasReplicatedAlphaHooks).
     bool alphaRow_ = false;
     bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha
     std::array<bool, kMaxColorTargets> oneOneBytes_{};  // blendOneOneRgba8 applies

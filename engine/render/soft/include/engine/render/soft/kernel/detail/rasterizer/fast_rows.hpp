@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// TriangleRasterizer's row paths for programs that offer fast-path hooks (kernel/programs.hpp):
-// the mask composites' byte row, the alpha-only mask rows, MaskedLit's alpha-first row, and the
+// TriangleRasterizer's row paths for programs that offer fast-path hooks (rasterizer_class.hpp):
+// the mask composites' byte row, the replicated-alpha mask rows, the alpha-first row, and the
 // SSE2 interpolation of a block row they share; each writes what the general path would, bit
 // for bit.
-#include "engine/render/soft/kernel/rasterizer/rasterizer_class.hpp"
+#include "engine/render/soft/kernel/detail/rasterizer/rasterizer_class.hpp"
 
 namespace engine::render::soft {
 namespace raster {
@@ -163,7 +163,7 @@ inline __m128 TriangleRasterizer<Program>::alpha4(int h, std::uint32_t lanes) co
     return program_.alpha4(row_.color[3] + o, row_.uv[0] + o, row_.uv[1] + o, duv, lanes);
 }
 
-// MaskedLit's row under a Keep alpha test (alphaFirst_): the texel alpha four lanes
+// The alpha-first row under a Keep alpha test (alphaFirst_, hasAlphaFirstHooks): the texel alpha four lanes
 // at a time (the general sampler's bits), then the alpha test on the alpha shade()
 // would output, (baseColorFactor.a * vertex alpha) * texel alpha (toStraight keeps
 // alpha), and the texel's colour, the normals and colours and shade() for the fragments
@@ -173,7 +173,8 @@ template <typename Program>
 inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle& t, int bx, int py, std::uint32_t live,
                                                              float centerX0, float fy, const float* z,
                                                              std::byte* depthAt) {
-    if (!program_.texture) {  // alpha4 without a texture: factor * vertex alpha
+    const AlphaSampler* sampler = program_.rowSampler();
+    if (!sampler) {  // alpha4 without a texture: factor * vertex alpha
         interpolateRow(t, centerX0, fy, live);
         alignas(16) float alpha[kBlockSize];
         std::uint32_t passing = 0;
@@ -192,17 +193,16 @@ inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle
         }
         return;
     }
-    const AlphaSampler& sampler = program_.alphaSampler;
-    const float factorAlpha = program_.params.baseColorFactor.a;
+    const float factorAlpha = program_.alphaTestFactor();
     for (int h = 0; h < 2; ++h) {
         const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
         if (!lanes) continue;
         const int o = 4 * h;
         interpolateHalf(t, centerX0, fy, h, RowInputs::AlphaInputs);
-        const AlphaSampler::Lookup4 lookup = sampler.lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o,
+        const AlphaSampler::Lookup4 lookup = sampler->lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o,
                                                              row_.duv[1] + o, row_.duv[2] + o, row_.duv[3] + o, lanes);
         alignas(16) float texelAlpha[4];
-        _mm_store_ps(texelAlpha, sampler.alpha4(lookup));
+        _mm_store_ps(texelAlpha, sampler->alpha4(lookup));
         std::uint32_t passing = 0;
         for (std::uint32_t bits = lanes; bits; bits &= bits - 1) {
             const int k = __builtin_ctz(bits);
@@ -215,7 +215,7 @@ inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle
     }
 }
 
-// A Surface program's row with its texture sampled four lanes at a time (sampledRow_): the
+// A row with the texture sampled four lanes at a time (sampledRow_, hasSampledRowHooks): the
 // general path's shade() of each live lane, its sampleTexture() taken from rgba4 (the same
 // bits), which finds each lane's level and texels in SIMD and reads no format per texel.
 template <typename Program>
@@ -223,7 +223,7 @@ inline void TriangleRasterizer<Program>::shadeSampledRow(const SetupTriangle& t,
                                                          float centerX0, float fy, const float* z,
                                                          std::byte* depthAt) {
     interpolateRow(t, centerX0, fy, live);
-    const AlphaSampler& sampler = program_.alphaSampler;
+    const AlphaSampler& sampler = *program_.rowSampler();
     for (int h = 0; h < 2; ++h) {
         const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
         if (!lanes) continue;
@@ -242,7 +242,7 @@ inline void TriangleRasterizer<Program>::shadeTexels(const SetupTriangle& t, con
                                                      int bx, int py, int o, std::uint32_t lanes, const float* z,
                                                      std::byte* depthAt) {
     alignas(16) float texels[4][4] = {};
-    program_.alphaSampler.rgba4(lookup, lanes, texels);
+    program_.rowSampler()->rgba4(lookup, lanes, texels);
     if (packedWrite_ && kBitCount[lanes] >= 2) {  // a lone lane is shaded faster by itself
         shadePacked4(texels, t.frontFacing, bx, py, o, lanes, z, depthAt);
         return;

@@ -9,7 +9,7 @@
 #include "engine/render/pipeline.hpp"
 #include "engine/render/soft/simd_isa.hpp"
 #include "engine/render/soft/soft_backend.hpp"
-#include "soft_texture.hpp"
+#include "engine/render/soft/kernel/soft_texture.hpp"
 
 namespace engine::render::soft {
 

@@ -16,11 +16,11 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/pixel_codec.hpp"
-#include "engine/render/soft/kernel/blend.hpp"
-#include "engine/render/soft/kernel/draw_state.hpp"
-#include "engine/render/soft/kernel/one_one_half_blend.hpp"
+#include "engine/render/soft/kernel/detail/blend.hpp"
+#include "engine/render/soft/kernel/detail/draw_state.hpp"
+#include "engine/render/soft/kernel/detail/one_one_half_blend.hpp"
 #include "engine/render/soft/kernel/soft_texture.hpp"
-#include "engine/render/soft/kernel/triangle_setup.hpp"
+#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft::raster {
 // Internal linkage in every translation unit that instantiates the rasterizer, as when these
@@ -277,26 +277,6 @@ inline bool isAlphaOverKeepingAlpha(const BlendState& b) {
     return b.enabled && b.srcRgb == BlendFactor::SrcAlpha && b.dstRgb == BlendFactor::InvSrcAlpha &&
            b.opRgb == BlendOp::Add && b.srcAlpha == BlendFactor::Zero && b.dstAlpha == BlendFactor::One &&
            b.opAlpha == BlendOp::Add && b.writeMask == WriteAll;
-}
-// fetchTexel(t, x, y)[c] (loadTexel's channel c), with the formats SSAM's masks come in
-// read without decoding the other channels: RGBA8_UNORM through the table, half floats
-// through decodeHalf (a channel the format lacks takes loadTexel's default).
-inline float texelChannel(const SoftTexture& t, int x, int y, int c) {
-    const std::byte* p = t.texel(0, x, y);
-    std::uint16_t half;
-    switch (t.desc.format) {
-        case Format::RGBA8_UNORM: return byteTables().unorm[std::to_integer<std::uint8_t>(p[c])];
-        case Format::R16F:
-        case Format::RG16F:
-        case Format::RGBA16F: {
-            const int channels = t.desc.format == Format::R16F ? 1 : t.desc.format == Format::RG16F ? 2 : 4;
-            if (c >= channels) break;
-            std::memcpy(&half, p + 2 * c, sizeof half);
-            return decodeHalf(half);
-        }
-        default: break;
-    }
-    return loadTexel(p, t.desc.format)[c];
 }
 inline bool isRgba8(const SoftTexture* t) {
     return t && t->desc.samples == 1 && (t->desc.format == Format::RGBA8_UNORM || t->desc.format == Format::RGBA8_SRGB);
