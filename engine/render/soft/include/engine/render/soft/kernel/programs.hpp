@@ -75,7 +75,12 @@ struct SurfaceProgram {
     // rasterizer alpha-tests with it before shading the colour.
     bool hasAlpha4() const { return AlphaMasked && (!texture || alphaSampler.simd4()); }
     // shade().a == (baseColorFactor.a * vertex alpha) * texel alpha: toStraight keeps alpha.
-    float alphaTestFactor() const { return params.baseColorFactor.a; }
+    // Only an alpha-masked surface has an alpha worth testing first (hasAlphaFirstHooks).
+    float alphaTestFactor() const
+        requires AlphaMasked
+    {
+        return params.baseColorFactor.a;
+    }
     // The texture is sampled four fragments at a time (AlphaSampler::rgba4, the general
     // sampler's bits), for shadeSampled().
     const AlphaSampler* rowSampler() const { return texture && alphaSampler.simd4() ? &alphaSampler : nullptr; }

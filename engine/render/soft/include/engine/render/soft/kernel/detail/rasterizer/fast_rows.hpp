@@ -173,7 +173,7 @@ template <typename Program>
 inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle& t, int bx, int py, std::uint32_t live,
                                                              float centerX0, float fy, const float* z,
                                                              std::byte* depthAt) {
-    const AlphaSampler* sampler = program_.rowSampler();
+    const AlphaSampler* sampler = rowSampler_;
     if (!sampler) {  // alpha4 without a texture: factor * vertex alpha
         interpolateRow(t, centerX0, fy, live);
         alignas(16) float alpha[kBlockSize];
@@ -223,7 +223,7 @@ inline void TriangleRasterizer<Program>::shadeSampledRow(const SetupTriangle& t,
                                                          float centerX0, float fy, const float* z,
                                                          std::byte* depthAt) {
     interpolateRow(t, centerX0, fy, live);
-    const AlphaSampler& sampler = *program_.rowSampler();
+    const AlphaSampler& sampler = *rowSampler_;
     for (int h = 0; h < 2; ++h) {
         const std::uint32_t lanes = (live >> (4 * h)) & 0xFu;
         if (!lanes) continue;
@@ -242,7 +242,7 @@ inline void TriangleRasterizer<Program>::shadeTexels(const SetupTriangle& t, con
                                                      int bx, int py, int o, std::uint32_t lanes, const float* z,
                                                      std::byte* depthAt) {
     alignas(16) float texels[4][4] = {};
-    program_.rowSampler()->rgba4(lookup, lanes, texels);
+    rowSampler_->rgba4(lookup, lanes, texels);
     if (packedWrite_ && kBitCount[lanes] >= 2) {  // a lone lane is shaded faster by itself
         shadePacked4(texels, t.frontFacing, bx, py, o, lanes, z, depthAt);
         return;

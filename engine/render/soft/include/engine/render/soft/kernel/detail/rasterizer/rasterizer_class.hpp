@@ -143,7 +143,8 @@ public:
             alphaFirst_ = !draw.capture && draw.shade && draw.alphaTest.enabled &&
                           draw.alphaTest.failMode == AlphaFailMode::Keep && program.hasAlpha4();
         if constexpr (hasSampledRowHooks<Program>()) {
-            sampledRow_ = !alphaFirst_ && draw.shade && program.rowSampler() != nullptr;
+            rowSampler_ = program.rowSampler();
+            sampledRow_ = !alphaFirst_ && draw.shade && rowSampler_ != nullptr;
             // One plain 8-bit target (no blend, every channel written): shadePacked4.
             packedWrite_ = !draw.capture && draw.colorTargetCount == 1 && (color_[0].srgb8Plain || color_[0].rgba8Plain);
         }
@@ -275,6 +276,7 @@ private:
     bool compositeRow_ = false;  // CompositeProgram, CoverageCompositeProgram: compositeRow
     bool alphaFirst_ = false;    // hasAlphaFirstHooks: alpha-test (Keep) on the alpha alone before shading
     bool sampledRow_ = false;    // hasSampledRowHooks otherwise: the texture sampled 4 lanes at a time
+    const AlphaSampler* rowSampler_ = nullptr;  // the program's rowSampler(), asked once per draw
     bool packedWrite_ = false;   // hasSampledRowHooks onto one plain RGBA8 target: shadePacked4
     // The mask row path (shadeAlphaRow, hasReplicatedAlphaHooks).
     bool alphaRow_ = false;
