@@ -20,7 +20,6 @@ WaterFeature::~WaterFeature() {
     for (auto& [e, s] : surfaces_)
         for (BufferHandle b : s.buffers)
             if (b) backend.destroy(b);
-    for (auto& [f, p] : pipelines_) backend.destroy(p);
 }
 
 void WaterFeature::setRipples(const Ripples& ripples) {
@@ -90,17 +89,16 @@ void WaterFeature::updateRipples(ecs::Registry& registry) {
 }
 
 PipelineHandle WaterFeature::pipeline(CompareFunc depthFunc, bool doubleSided) {
-    auto [it, fresh] = pipelines_.try_emplace({depthFunc, doubleSided});
-    if (fresh) {
-        PipelineDesc p;
-        p.name = doubleSided ? "water (blend over)" : "water (blend over, culled)";
-        p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;  // glTF doubleSided (§3.9.6)
-        p.program = ProgramKind::MaskedLit;  // double-sided lit, straight alpha out
-        p.blend[0] = BlendState::alphaOver();
-        p.depth = DepthState::testOnly(depthFunc);
-        it->second = library_.backend().createPipeline(p);
-    }
-    return it->second;
+    // Made before it is entered, so a create that throws leaves no empty entry behind.
+    if (const auto it = pipelines_.find({depthFunc, doubleSided}); it != pipelines_.end()) return it->second;
+    PipelineDesc p;
+    p.name = doubleSided ? "water (blend over)" : "water (blend over, culled)";
+    p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;  // glTF doubleSided (§3.9.6)
+    p.program = ProgramKind::MaskedLit;  // double-sided lit, straight alpha out
+    p.blend[0] = BlendState::alphaOver();
+    p.depth = DepthState::testOnly(depthFunc);
+    Owned<PipelineHandle> pipeline(library_.backend(), library_.backend().createPipeline(p));
+    return pipelines_.emplace(std::pair{depthFunc, doubleSided}, std::move(pipeline)).first->second;
 }
 
 bool WaterFeature::prepare(const scene::FeatureFrame& frame) {
