@@ -28,7 +28,7 @@ struct LivingSceneOptions {
     // with modules of its own.
     std::span<const engine::scene::FeatureModule> modules = featureModules();
     // On or off by module name; a module not named here takes its default.
-    std::map<std::string, bool> enabled;
+    std::map<std::string, bool> enabled{};
     std::uint32_t seed = 1;
     const Track* track = nullptr;  // its verge is where low plants grow (none: no verge)
 };
