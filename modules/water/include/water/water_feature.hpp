@@ -33,7 +33,7 @@ public:
 
 private:
     struct Surface {
-        std::vector<engine::render::BufferHandle> buffers;  // per part slot; null: not water
+        std::vector<engine::render::Owned<engine::render::BufferHandle>> buffers;  // per part slot; null: not water
         std::vector<std::vector<engine::render::Vertex>> vertices;
     };
     engine::render::PipelineHandle pipeline(engine::render::CompareFunc depthFunc, bool doubleSided);
