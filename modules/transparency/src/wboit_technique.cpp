@@ -19,7 +19,7 @@
 #include "engine/render/pass_scope.hpp"
 #include "engine/render/screen_bounds.hpp"
 #include "foliage_draws.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 #include "transparency/programs.hpp"
 
 namespace transparency::detail {
