@@ -1,31 +1,41 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The living scene: the enabled modules' features in frame order (grass ->
-// water -> particles -> light shafts after the foliage technique; wind has systems only),
-// their systems in one ECS scheduler, run each frame after the simulation step and before
-// extraction. A module left out of the build (-DSSAM_MODULE_<NAME>=OFF) or switched off by
-// its flag (--no-wind ...) is simply not in the list: only its feature goes.
+// The living scene: the enabled modules' features in frame order, their systems in one ECS
+// scheduler, run each frame after the simulation step and before extraction. The modules,
+// their order and their defaults are the registry's (racer_feature_modules.hpp, generated from
+// the ssam_module() lines in modules/CMakeLists.txt), so this file names none of them. A
+// module left out of the build (-DSSAM_MODULE_<NAME>=OFF) or switched off by its flag
+// (--no-wind ...) is simply not in the list: only its feature goes.
+#include <initializer_list>
+#include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "camera_rig.hpp"
 #include "engine/core/ecs/scheduler.hpp"
+#include "engine/scene/feature_module.hpp"
 #include "engine/scene/frame_feature.hpp"
+#include "racer_feature_modules.hpp"
 
 namespace racer {
 
 class Track;
 
 struct LivingSceneOptions {
-    bool wind = true;
-    bool water = true;
-    bool grass = true;
-    bool particles = true;
-    bool lightshafts = true;
+    // Which modules there are, in frame order: racer's own registry unless a test brings one
+    // with modules of its own.
+    std::span<const engine::scene::FeatureModule> modules = featureModules();
+    // On or off by module name; a module not named here takes its default.
+    std::map<std::string, bool> enabled{};
     std::uint32_t seed = 1;
-    const Track* track = nullptr;  // grass grows in a band along it (none: no grass)
+    const Track* track = nullptr;  // its verge is where low plants grow (none: no verge)
 };
+
+// `modules` with every one switched off but those named in `on`, for tests that want a few.
+std::map<std::string, bool> onlyModules(std::span<const engine::scene::FeatureModule> modules,
+                                        std::initializer_list<const char*> on);
 
 class LivingScene {
 public:
@@ -44,7 +54,7 @@ public:
     engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
                                          engine::render::ColorDepth targets);
 
-    // Names of the enabled features, in frame order ("wind", "water", ...).
+    // Names of the enabled features, in frame order ("wind", "grass", ...).
     std::vector<std::string> names() const;
     // Modules asked for but not in this build.
     const std::vector<std::string>& missing() const { return missing_; }

@@ -158,10 +158,11 @@ int run(const CLI::App& app, const Options& o) {
     // The living scene (wind, water, ...; living_scene.hpp) on the racing scene.
     std::unique_ptr<LivingScene> living;
     if (racing) {
-        living = std::make_unique<LivingScene>(
-            registry, library,
-            LivingSceneOptions{!o.noWind, !o.noWater, !o.noGrass, !o.noParticles, !o.noLightshafts, o.seed,
-                               &racing->track()});
+        LivingSceneOptions lo;
+        lo.enabled = enabledModules(o);
+        lo.seed = o.seed;
+        lo.track = &racing->track();
+        living = std::make_unique<LivingScene>(registry, library, lo);
         frame.setLivingScene(living.get());
     }
     const FrameSource source = [&](float time, float dt, CameraMode camera, const PlayerInput& input, float frameAspect) {

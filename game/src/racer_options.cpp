@@ -8,6 +8,7 @@
 
 #include "engine/cli/command_line.hpp"
 #include "engine/core/usage_error.hpp"
+#include "racer_feature_modules.hpp"
 #include "simd_flag.hpp"
 
 namespace racer {
@@ -72,12 +73,10 @@ void addOptions(CLI::App& app, Options& o) {
         ->check(CLI::NonNegativeNumber);
     app.add_option("--camera-index", o.cameraIndex, "with --scene: which of the file's cameras (default: its first)")
         ->check(CLI::NonNegativeNumber);
-    // Living-scene modules (issue #8): each flag drops one feature (its systems and passes).
-    app.add_flag("--no-wind", o.noWind, "no wind: foliage keeps its rest pose, the car pushes nothing");
-    app.add_flag("--no-water", o.noWater, "no water pools");
-    app.add_flag("--no-grass", o.noGrass, "no grass cards");
-    app.add_flag("--no-particles", o.noParticles, "no dust or spray from the wheels");
-    app.add_flag("--no-lightshafts", o.noLightshafts, "no light shafts");
+    // Living-scene modules: each one's flag flips its default (drops or adds its systems and
+    // passes). The map's nodes never move, so each flag may hold on to its bool.
+    for (const engine::scene::FeatureModule& m : featureModules())
+        app.add_flag(m.flag, o.moduleFlagGiven[m.name], m.help);
     app.footer(engine::cli::contractHelpFooter());
 }
 
@@ -95,8 +94,10 @@ void checkCombinations(const CLI::App& app, const Options& o) {
             refuse("--camera moves the racing scene's camera; a --scene file is seen through its own (--camera-index)");
         if (given("--seed")) refuse("--seed shapes the racing scene; a --scene file has nothing to seed");
         if (given("--content")) refuse("--content holds the racing scene's models; a --scene file brings its own");
-        for (const char* flag : {"--no-wind", "--no-water", "--no-grass", "--no-particles", "--no-lightshafts"})
-            if (given(flag)) refuse(std::string(flag) + " turns off part of the racing scene's life; a --scene file has none");
+        for (const engine::scene::FeatureModule& m : featureModules())
+            if (given(m.flag))
+                refuse(std::string(m.flag) + (m.enabledByDefault ? " turns off" : " turns on") +
+                       " part of the racing scene's life; a --scene file has none");
     }
     if (given("--compare")) {
         parseCompare(o.compare);
@@ -109,6 +110,15 @@ void checkCombinations(const CLI::App& app, const Options& o) {
         refuse("--threads sets the soft backend's threads; --backend gl does not use them");
     if (given("--simd") && o.backend == "gl") refuse("--simd picks the soft backend's kernels; --backend gl has none");
     simdFromFlag(o.simd);  // refuses a set this CPU does not run
+}
+
+std::map<std::string, bool> enabledModules(const Options& o) {
+    std::map<std::string, bool> enabled;
+    for (const engine::scene::FeatureModule& m : featureModules()) {
+        const auto flag = o.moduleFlagGiven.find(m.name);
+        enabled[m.name] = m.enabledByDefault != (flag != o.moduleFlagGiven.end() && flag->second);
+    }
+    return enabled;
 }
 
 FrameSize parseFrameSize(const std::string& size) {

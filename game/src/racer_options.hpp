@@ -3,6 +3,7 @@
 // racer's command line: every flag, its default and its check, in one place (README
 // "The demo: racer" lists them). main() parses; run() turns them into renderer settings.
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "camera_rig.hpp"
@@ -40,9 +41,13 @@ struct Options {
     std::string scenePath;  // --scene: a glTF file instead of the racing scene
     int sceneIndex = -1;
     int cameraIndex = -1;
-    // Living-scene modules (issue #8), all on by default: --no-wind, --no-water, ...
-    bool noWind = false, noWater = false, noGrass = false, noParticles = false, noLightshafts = false;
+    // Living-scene modules: whether each one's flag (--no-wind, ...; the registry's) was given,
+    // by module name.
+    std::map<std::string, bool> moduleFlagGiven;
 };
+
+// Living-scene modules on or off by name: each module's default, flipped where its flag was given.
+std::map<std::string, bool> enabledModules(const Options& o);
 
 // Registers every flag of `o` on `app` (checks included: a bad technique or camera is
 // refused by CLI11 with "X not in {...}").

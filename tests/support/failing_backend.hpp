@@ -2,8 +2,9 @@
 #pragma once
 // A backend decorator for exception-safety tests: the create call number `failAt` (0-based,
 // counting textures, buffers, programs, pipelines and queries alike) throws engine::Error
-// instead of creating, and `live` counts what was created through it and not yet destroyed,
-// so a test can check that nothing leaked after the error.
+// instead of creating, the draw call number `failDrawAt` throws instead of drawing, and
+// `live` counts what was created through it and not yet destroyed, so a test can check that
+// nothing leaked and no pass was left open after the error.
 #include "engine/core/error.hpp"
 #include "engine/render/forwarding_backend.hpp"
 
@@ -16,6 +17,8 @@ public:
     int failAt = -1;  // -1: never
     int creates = 0;  // create calls so far, the failed one included
     int live = 0;
+    int failDrawAt = -1;  // -1: never
+    int draws = 0;        // draw calls so far, the failed one included
 
     engine::render::TextureHandle createTexture(const engine::render::TextureDesc& desc,
                                                 const engine::render::TextureData* data) override {
@@ -33,6 +36,10 @@ public:
     }
     engine::render::QueryHandle createQuery(const std::string& name) override {
         return made(next() ? inner_.createQuery(name) : engine::render::QueryHandle{});
+    }
+    void draw(const engine::render::DrawDesc& desc) override {
+        if (draws++ == failDrawAt) throw engine::Error("injected failure of draw call " + std::to_string(failDrawAt));
+        inner_.draw(desc);
     }
     void destroy(engine::render::TextureHandle h) override { gone(h); }
     void destroy(engine::render::BufferHandle h) override { gone(h); }

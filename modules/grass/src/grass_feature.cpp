@@ -19,8 +19,11 @@ GrassFeature::GrassFeature(Backend& backend, std::vector<Tuft> tufts, const Gras
     std::vector<Vertex> v;
     std::vector<std::uint32_t> i;
     buildCard(options_, v, i);
-    vertices_ = backend.createBuffer({"grass card", BufferKind::Vertex, v.size() * sizeof(Vertex)}, std::as_bytes(std::span(v)));
-    indices_ = backend.createBuffer({"grass card indices", BufferKind::Index, i.size() * 4}, std::as_bytes(std::span(i)));
+    // Owned: whatever a later create throws, what was made before is destroyed with it.
+    vertices_ = Owned<BufferHandle>(backend, backend.createBuffer({"grass card", BufferKind::Vertex, v.size() * sizeof(Vertex)},
+                                                                  std::as_bytes(std::span(v))));
+    indices_ = Owned<BufferHandle>(backend, backend.createBuffer({"grass card indices", BufferKind::Index, i.size() * 4},
+                                                                 std::as_bytes(std::span(i))));
     indexCount_ = std::uint32_t(i.size());
     constexpr int kW = 64, kH = 32;
     const std::vector<std::uint8_t> texels = bladeTexels(kW, kH, 17);
@@ -30,26 +33,21 @@ GrassFeature::GrassFeature(Backend& backend, std::vector<Tuft> tufts, const Gras
     desc.height = kH;
     desc.format = Format::RGBA8_SRGB;
     const TextureData data{{std::as_bytes(std::span(texels))}};
-    blades_ = backend.createTexture(desc, &data);
+    blades_ = Owned<TextureHandle>(backend, backend.createTexture(desc, &data));
 }
 
-GrassFeature::~GrassFeature() {
-    for (BufferHandle b : {vertices_, indices_})
-        if (b) backend_.destroy(b);
-    backend_.destroy(blades_);
-    if (pipeline_) backend_.destroy(pipeline_);
-}
+GrassFeature::~GrassFeature() = default;
 
 PipelineHandle GrassFeature::pipeline(CompareFunc depthFunc) {
-    if (pipeline_ && pipelineDepthFunc_ == depthFunc) return pipeline_;
-    if (pipeline_) backend_.destroy(pipeline_);
+    if (pipeline_.get() && pipelineDepthFunc_ == depthFunc) return pipeline_;
+    pipeline_.reset();  // a create that throws below leaves no stale handle behind
     PipelineDesc p;
     p.name = "grass (alpha tested)";
     p.program = ProgramKind::MaskedLit;
     p.depth = DepthState::testAndWrite(depthFunc);
     p.alphaTest = AlphaTest::discardBelow(options_.alphaReference);
     p.blend[0].writeMask = WriteRGB;  // the frame's alpha stays; the card's alpha only cuts it out
-    pipeline_ = backend_.createPipeline(p);
+    pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     pipelineDepthFunc_ = depthFunc;
     return pipeline_;
 }

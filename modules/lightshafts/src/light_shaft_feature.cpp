@@ -28,26 +28,17 @@ void validate(const LightShaftOptions& o) {
 LightShaftFeature::LightShaftFeature(Backend& backend, const LightShaftOptions& options)
     : backend_(backend), options_(options) {
     validate(options_);
-    program_ = backend.createProgram(lightShaftProgram());
-    try {
-        PipelineDesc p;
-        p.name = "light shafts (additive)";
-        p.program = program_;
-        p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
-                      BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
-        pipeline_ = backend.createPipeline(p);
-        if (options_.skipWhenSunHidden) probe_ = std::make_unique<SunVisibilityProbe>(backend);
-    } catch (...) {
-        if (pipeline_) backend.destroy(pipeline_);
-        backend.destroy(program_);
-        throw;
-    }
+    program_ = Owned<ProgramHandle>(backend, backend.createProgram(lightShaftProgram()));
+    PipelineDesc p;
+    p.name = "light shafts (additive)";
+    p.program = program_.get();
+    p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
+                  BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+    pipeline_ = Owned<PipelineHandle>(backend, backend.createPipeline(p));
+    if (options_.skipWhenSunHidden) probe_ = std::make_unique<SunVisibilityProbe>(backend);
 }
 
-LightShaftFeature::~LightShaftFeature() {
-    backend_.destroy(pipeline_);
-    backend_.destroy(program_);
-}
+LightShaftFeature::~LightShaftFeature() = default;
 
 bool LightShaftFeature::sunVisible() const { return !lastQuery_ || backend_.anySamplesPassed(*lastQuery_); }
 

@@ -34,12 +34,19 @@ std::array<Vertex, 3 * kDiscSides> circumscribedDisc() {
     return v;
 }
 
-PipelineHandle probePipeline(Backend& backend, CompareFunc func) {
+Owned<PipelineHandle> probePipeline(Backend& backend, CompareFunc func) {
     PipelineDesc p;
     p.name = "light shafts: sun visibility";
     p.program = ProgramKind::Flat;
     p.depth = DepthState::testOnly(func);
-    return backend.createPipeline(p);
+    return Owned<PipelineHandle>(backend, backend.createPipeline(p));
+}
+
+Owned<BufferHandle> discBuffer(Backend& backend) {
+    const auto disc = circumscribedDisc();
+    const auto bytes = std::as_bytes(std::span(disc));
+    return Owned<BufferHandle>(backend,
+                               backend.createBuffer({"light shafts: sun disc", BufferKind::Vertex, bytes.size()}, bytes));
 }
 
 }  // namespace
@@ -50,18 +57,8 @@ SunVisibilityProbe::SunVisibilityProbe(Backend& backend)
       // only where the clear value (sky) is left.
       standardZ_(probePipeline(backend, CompareFunc::LessEqual)),
       reverseZ_(probePipeline(backend, CompareFunc::GreaterEqual)),
-      query_(backend.createQuery("light shafts: sun visible")) {
-    const auto disc = circumscribedDisc();
-    const auto bytes = std::as_bytes(std::span(disc));
-    disc_ = backend.createBuffer({"light shafts: sun disc", BufferKind::Vertex, bytes.size()}, bytes);
-}
-
-SunVisibilityProbe::~SunVisibilityProbe() {
-    backend_.destroy(query_);
-    backend_.destroy(disc_);
-    backend_.destroy(standardZ_);
-    backend_.destroy(reverseZ_);
-}
+      query_(backend, backend.createQuery("light shafts: sun visible")),
+      disc_(discBuffer(backend)) {}
 
 std::optional<QueryHandle> SunVisibilityProbe::probe(TextureHandle depth, int width, int height, CompareFunc depthFunc,
                                                      glm::vec2 sunPixel, float radius) {
@@ -81,16 +78,16 @@ std::optional<QueryHandle> SunVisibilityProbe::probe(TextureHandle depth, int wi
     PassDesc pass;
     pass.name = "light shafts: sun visibility";
     pass.depth = {depth, LoadOp::Load};
-    pass.countSamplesInto = query_;
+    pass.countSamplesInto = query_.get();
     PassScope passScope(backend_, pass);
     DrawDesc d;
-    d.pipeline = reverse ? reverseZ_ : standardZ_;
+    d.pipeline = reverse ? reverseZ_.get() : standardZ_.get();
     d.params = params;
     d.vertices = disc_;
     d.count = 3 * kDiscSides;
     backend_.draw(d);
     passScope.end();
-    return query_;
+    return query_.get();
 }
 
 }  // namespace lightshafts

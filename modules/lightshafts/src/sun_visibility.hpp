@@ -12,13 +12,13 @@
 
 #include "engine/render/backend.hpp"
 #include "engine/render/compare_func.hpp"
+#include "engine/render/owned.hpp"
 
 namespace lightshafts {
 
 class SunVisibilityProbe {
 public:
     explicit SunVisibilityProbe(engine::render::Backend& backend);
-    ~SunVisibilityProbe();
     SunVisibilityProbe(const SunVisibilityProbe&) = delete;
     SunVisibilityProbe& operator=(const SunVisibilityProbe&) = delete;
 
@@ -31,9 +31,10 @@ public:
 
 private:
     engine::render::Backend& backend_;
-    engine::render::BufferHandle disc_;
-    engine::render::PipelineHandle standardZ_, reverseZ_;
-    engine::render::QueryHandle query_;
+    // Owned, in the order they are made: a create that throws destroys those made before it.
+    engine::render::Owned<engine::render::PipelineHandle> standardZ_, reverseZ_;
+    engine::render::Owned<engine::render::QueryHandle> query_;
+    engine::render::Owned<engine::render::BufferHandle> disc_;
 };
 
 }  // namespace lightshafts

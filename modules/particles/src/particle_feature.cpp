@@ -14,34 +14,19 @@ using namespace engine::render;
 
 ParticleFeature::ParticleFeature(Backend& backend, const ParticleOptions& options, std::uint64_t seed)
     : backend_(backend), simulation_(options, seed), buffers_(backend) {
-    try {
-        particleProgram_ = backend.createProgram(particleProgram());
-        compositeProgram_ = backend.createProgram(layerCompositeProgram());
-        PipelineDesc p;
-        p.name = "particles (premultiplied)";
-        p.program = particleProgram_;
-        p.blend[0] = BlendState::premultipliedOver();  // [Turánszki 2017]: one layer for alpha and additive
-        particlePipeline_ = backend.createPipeline(p);
-        p.name = "particles composite";
-        p.program = compositeProgram_;
-        compositePipeline_ = backend.createPipeline(p);
-    } catch (...) {
-        destroyPrograms();
-        throw;
-    }
+    particleProgram_ = Owned<ProgramHandle>(backend, backend.createProgram(particleProgram()));
+    compositeProgram_ = Owned<ProgramHandle>(backend, backend.createProgram(layerCompositeProgram()));
+    PipelineDesc p;
+    p.name = "particles (premultiplied)";
+    p.program = particleProgram_.get();
+    p.blend[0] = BlendState::premultipliedOver();  // [Turánszki 2017]: one layer for alpha and additive
+    particlePipeline_ = Owned<PipelineHandle>(backend, backend.createPipeline(p));
+    p.name = "particles composite";
+    p.program = compositeProgram_.get();
+    compositePipeline_ = Owned<PipelineHandle>(backend, backend.createPipeline(p));
 }
 
-void ParticleFeature::destroyPrograms() {
-    for (PipelineHandle p : {particlePipeline_, compositePipeline_})
-        if (p) backend_.destroy(p);
-    for (ProgramHandle p : {particleProgram_, compositeProgram_})
-        if (p) backend_.destroy(p);
-}
-
-ParticleFeature::~ParticleFeature() {
-    if (layer_) backend_.destroy(layer_);
-    destroyPrograms();
-}
+ParticleFeature::~ParticleFeature() = default;
 
 void ParticleFeature::registerSystems(engine::ecs::Scheduler& scheduler) {
     scheduler.add(engine::ecs::phase::simulation, "particles",
@@ -49,10 +34,10 @@ void ParticleFeature::registerSystems(engine::ecs::Scheduler& scheduler) {
 }
 
 void ParticleFeature::ensureLayer(int width, int height) {
-    if (layer_) {
+    if (layer_.get()) {
         const TextureDesc& d = backend_.describe(layer_);
         if (d.width == width && d.height == height) return;
-        backend_.destroy(layer_);
+        layer_.reset();  // a create that throws below leaves no stale handle behind
     }
     TextureDesc desc;
     desc.name = "particle layer";
@@ -61,7 +46,7 @@ void ParticleFeature::ensureLayer(int width, int height) {
     desc.format = Format::RGBA16F;  // HDR: additive spray may exceed 1 ([Turánszki 2017])
     desc.usage = UsageRenderTarget | UsageSampled;
     desc.alpha = AlphaMode::Premultiplied;
-    layer_ = backend_.createTexture(desc);
+    layer_ = Owned<TextureHandle>(backend_, backend_.createTexture(desc));
 }
 
 bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {

@@ -8,9 +8,10 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 
 namespace transparency::detail {
 
@@ -23,9 +24,6 @@ public:
     AlphaTestTechnique(Backend& backend, const TechniqueOptions& options)
         : backend_(backend), reference_(options.alphaTestReference), depthFunc_(options.ssam.depthFunc) {
         if (reference_) checkReference(*reference_, "alphaTestReference");
-    }
-    ~AlphaTestTechnique() override {
-        for (auto& [reference, pipeline] : pipelines_) backend_.destroy(pipeline);
     }
 
     TechniqueKind kind() const override { return TechniqueKind::AlphaTest; }
@@ -51,27 +49,26 @@ private:
                                 " is outside [0, 1]");
     }
 
-    // One pipeline per distinct reference (materials rarely differ).
+    // One pipeline per distinct reference (materials rarely differ). Made before it is
+    // entered, so a refused reference or a create that throws leaves no empty entry behind.
     PipelineHandle pipelineFor(float reference) {
-        auto [it, fresh] = pipelines_.try_emplace(reference);
-        if (fresh) {
-            checkReference(reference, "alphaCutoff");
-            PipelineDesc p;
-            p.name = "foliage alpha test";
-            p.program = ProgramKind::MaskedLit;
-            p.depth = DepthState::testAndWrite(depthFunc_);
-            p.raster.cull = CullMode::None;
-            p.alphaTest = AlphaTest::discardBelow(reference);
-            p.blend[0].writeMask = WriteRGB;
-            it->second = backend_.createPipeline(p);
-        }
-        return it->second;
+        if (const auto it = pipelines_.find(reference); it != pipelines_.end()) return it->second;
+        checkReference(reference, "alphaCutoff");
+        PipelineDesc p;
+        p.name = "foliage alpha test";
+        p.program = ProgramKind::MaskedLit;
+        p.depth = DepthState::testAndWrite(depthFunc_);
+        p.raster.cull = CullMode::None;
+        p.alphaTest = AlphaTest::discardBelow(reference);
+        p.blend[0].writeMask = WriteRGB;
+        Owned<PipelineHandle> pipeline(backend_, backend_.createPipeline(p));
+        return pipelines_.emplace(reference, std::move(pipeline)).first->second;
     }
 
     Backend& backend_;
     std::optional<float> reference_;
     CompareFunc depthFunc_;
-    std::map<float, PipelineHandle> pipelines_;
+    std::map<float, Owned<PipelineHandle>> pipelines_;
 };
 
 }  // namespace

@@ -8,9 +8,10 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 
 namespace transparency::detail {
 
@@ -27,9 +28,8 @@ public:
         p.depth = DepthState::testAndWrite(options.ssam.depthFunc);
         p.alphaTest.alphaToCoverage = true;
         p.blend[0].writeMask = WriteRGB;  // the frame's alpha stays 1
-        pipeline_ = backend_.createPipeline(p);
+        pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
-    ~AlphaToCoverageTechnique() override { backend_.destroy(pipeline_); }
 
     TechniqueKind kind() const override { return TechniqueKind::AlphaToCoverage; }
     int opaqueSamples() const override { return kSamples; }
@@ -52,7 +52,7 @@ public:
 
 private:
     Backend& backend_;
-    PipelineHandle pipeline_;
+    Owned<PipelineHandle> pipeline_;
 };
 
 }  // namespace

@@ -11,9 +11,10 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 
 namespace transparency::detail {
 
@@ -43,11 +44,7 @@ public:
         p.depth = DepthState::testOnly(depthFunc_);
         p.blend[0] = BlendState::alphaOver();
         p.blend[0].writeMask = WriteRGB;
-        pipeline_ = backend_.createPipeline(p);
-    }
-    ~BlendSortedTechnique() override {
-        for (BufferHandle b : buffers_) backend_.destroy(b);
-        backend_.destroy(pipeline_);
+        pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
 
     TechniqueKind kind() const override { return TechniqueKind::BlendSorted; }
@@ -111,10 +108,12 @@ private:
     // The index-th per-frame instance buffer, grown when too small and reused across frames.
     BufferHandle upload(std::size_t index, std::span<const Instance> instances) {
         const auto bytes = std::as_bytes(instances);
-        if (index == buffers_.size()) buffers_.push_back({}), bufferSizes_.push_back(0);
+        if (index == buffers_.size()) buffers_.emplace_back(), bufferSizes_.push_back(0);
         if (bufferSizes_[index] < bytes.size()) {
-            if (buffers_[index]) backend_.destroy(buffers_[index]);
-            buffers_[index] = backend_.createBuffer({"sorted instances", BufferKind::Instance, bytes.size()}, bytes);
+            buffers_[index].reset();
+            bufferSizes_[index] = 0;  // a create that throws below leaves an empty slot, not a stale handle
+            buffers_[index] = Owned<BufferHandle>(
+                backend_, backend_.createBuffer({"sorted instances", BufferKind::Instance, bytes.size()}, bytes));
             bufferSizes_[index] = bytes.size();
         } else {
             backend_.updateBuffer(buffers_[index], 0, bytes);
@@ -124,11 +123,11 @@ private:
 
     Backend& backend_;
     CompareFunc depthFunc_;
-    PipelineHandle pipeline_;
+    Owned<PipelineHandle> pipeline_;
     std::vector<SortedInstance> keys_;
     std::vector<Instance> sortedInstances_;
     std::vector<Run> runs_;
-    std::vector<BufferHandle> buffers_;
+    std::vector<Owned<BufferHandle>> buffers_;
     std::vector<std::size_t> bufferSizes_;
 };
 

@@ -4,9 +4,10 @@
 // SRC_ALPHA / INV_SRC_ALPHA onto the frame, depth-tested against the opaque depth and
 // writing none, so nothing is discarded and the result is exact only where the draws
 // happen to arrive back to front. The frame's alpha is not written (it stays 1).
+#include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 
 namespace transparency::detail {
 
@@ -21,9 +22,8 @@ public:
         p.depth = DepthState::testOnly(options.ssam.depthFunc);
         p.blend[0] = BlendState::alphaOver();
         p.blend[0].writeMask = WriteRGB;
-        pipeline_ = backend_.createPipeline(p);
+        pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
-    ~BlendUnsortedTechnique() override { backend_.destroy(pipeline_); }
 
     TechniqueKind kind() const override { return TechniqueKind::BlendUnsorted; }
 
@@ -39,7 +39,7 @@ public:
 
 private:
     Backend& backend_;
-    PipelineHandle pipeline_;
+    Owned<PipelineHandle> pipeline_;
 };
 
 }  // namespace

@@ -29,10 +29,11 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "engine/render/screen_bounds.hpp"
 #include "foliage_draws.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 
 namespace transparency::detail {
 
@@ -91,21 +92,15 @@ public:
         if (cap_ == 0) throw engine::Error("reference: referenceFragmentsPerPixel must be at least 1");
         PipelineDesc capture = foliagePipeline("reference capture");
         capture.depth = DepthState::testOnly(depthFunc_);
-        capture_ = backend_.createPipeline(capture);
+        capture_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(capture));
         PipelineDesc composite;
         composite.name = "reference composite";
         // "over" for the whole sorted stack at once: C + T * opaque (programs.hpp).
-        compositeProgram_ = backend_.createProgram(transmittanceCompositeProgram());
-        composite.program = compositeProgram_;
+        compositeProgram_ = Owned<ProgramHandle>(backend_, backend_.createProgram(transmittanceCompositeProgram()));
+        composite.program = compositeProgram_.get();
         composite.blend[0] = {true, BlendFactor::One, BlendFactor::SrcAlpha, BlendOp::Add,
                               BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
-        composite_ = backend_.createPipeline(composite);
-    }
-    ~ReferenceTechnique() override {
-        destroyTargets();
-        backend_.destroy(capture_);
-        backend_.destroy(composite_);
-        backend_.destroy(compositeProgram_);
+        composite_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(composite));
     }
 
     TechniqueKind kind() const override { return TechniqueKind::Reference; }
@@ -164,7 +159,7 @@ public:
     }
 
     std::vector<NamedTarget> intermediates() const override {
-        if (!colorTexture_) return {};
+        if (!colorTexture_.get()) return {};
         return {{"reference_foliage", colorTexture_}, {"reference_transmittance", transmittanceTexture_}};
     }
 
@@ -214,26 +209,25 @@ private:
             t.usage = UsageSampled;
             TextureData data;
             data.levels.push_back(std::as_bytes(texels));
-            return backend_.createTexture(t, &data);
+            return Owned<TextureHandle>(backend_, backend_.createTexture(t, &data));
         };
         colorTexture_ = texture("reference foliage (premultiplied)", Format::RGBA32F, color);
         transmittanceTexture_ = texture("reference transmittance", Format::R32F, transmittance);
     }
 
     void destroyTargets() {
-        for (TextureHandle* t : {&colorTexture_, &transmittanceTexture_}) {
-            if (*t) backend_.destroy(*t);
-            *t = {};
-        }
+        colorTexture_.reset();
+        transmittanceTexture_.reset();
     }
 
     Backend& backend_;
     FragmentCapture* fragments_;  // the backend's (Backend::fragmentCapture)
     std::size_t cap_;
     CompareFunc depthFunc_;
-    PipelineHandle capture_, composite_;
-    ProgramHandle compositeProgram_;
-    TextureHandle colorTexture_, transmittanceTexture_;
+    // Owned: a create that throws leaves nothing made before it behind.
+    Owned<ProgramHandle> compositeProgram_;
+    Owned<PipelineHandle> capture_, composite_;
+    Owned<TextureHandle> colorTexture_, transmittanceTexture_;
     ReferenceReport report_;
 };
 

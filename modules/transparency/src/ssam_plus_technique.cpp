@@ -18,7 +18,7 @@
 #include "foliage_draws.hpp"
 #include "ssam/ssam.hpp"
 #include "ssam_targets.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 #include "transparency/programs.hpp"
 
 namespace transparency::detail {

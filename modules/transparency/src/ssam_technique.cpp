@@ -7,7 +7,7 @@
 #include "ssam/frame_graph_passes.hpp"
 #include "ssam/ssam.hpp"
 #include "ssam_targets.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 
 namespace transparency::detail {
 

@@ -1,35 +1,30 @@
 // SPDX-License-Identifier: MIT
-#include <array>
+// Names and the list of every technique, read from the generated table (technique_table.hpp).
+#include <vector>
 
+#include "technique_table.hpp"
 #include "transparency/technique.hpp"
 
 namespace transparency {
 
-namespace {
-constexpr std::array kAll{TechniqueKind::Ssam,          TechniqueKind::SsamPlus,     TechniqueKind::AlphaTest,
-                          TechniqueKind::AlphaToCoverage, TechniqueKind::BlendUnsorted, TechniqueKind::BlendSorted,
-                          TechniqueKind::Wboit,         TechniqueKind::Reference};
-}  // namespace
-
-std::span<const TechniqueKind> allTechniques() { return kAll; }
+std::span<const TechniqueKind> allTechniques() {
+    static const std::vector<TechniqueKind> all = [] {
+        std::vector<TechniqueKind> kinds;
+        for (const detail::TechniqueRow& row : detail::techniqueTable()) kinds.push_back(row.kind);
+        return kinds;
+    }();
+    return all;
+}
 
 const char* techniqueName(TechniqueKind kind) {
-    switch (kind) {
-        case TechniqueKind::Ssam: return "ssam";
-        case TechniqueKind::SsamPlus: return "ssam-plus";
-        case TechniqueKind::AlphaTest: return "alpha-test";
-        case TechniqueKind::AlphaToCoverage: return "a2c";
-        case TechniqueKind::BlendUnsorted: return "blend-unsorted";
-        case TechniqueKind::BlendSorted: return "blend-sorted";
-        case TechniqueKind::Wboit: return "wboit";
-        case TechniqueKind::Reference: return "reference";
-    }
+    for (const detail::TechniqueRow& row : detail::techniqueTable())
+        if (row.kind == kind) return row.name;
     return "?";
 }
 
 std::optional<TechniqueKind> parseTechnique(std::string_view name) {
-    for (TechniqueKind kind : kAll)
-        if (name == techniqueName(kind)) return kind;
+    for (const detail::TechniqueRow& row : detail::techniqueTable())
+        if (name == row.name) return row.kind;
     return std::nullopt;
 }
 

@@ -19,7 +19,7 @@
 #include "engine/render/pass_scope.hpp"
 #include "engine/render/screen_bounds.hpp"
 #include "foliage_draws.hpp"
-#include "techniques.hpp"
+#include "technique_table.hpp"
 #include "transparency/programs.hpp"
 
 namespace transparency::detail {
@@ -57,10 +57,6 @@ public:
                             BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
         resolvePipeline_ = {backend_, backend_.createPipeline(resolve)};
     }
-    ~WboitTechnique() override {
-        destroyTargets();
-    }
-
     TechniqueKind kind() const override { return TechniqueKind::Wboit; }
 
     void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
@@ -114,7 +110,7 @@ public:
     }
 
     std::vector<NamedTarget> intermediates() const override {
-        if (!accumulation_) return {};
+        if (!accumulation_.get()) return {};
         return {{"wboit_accumulation", accumulation_}, {"wboit_revealage", revealageTarget_}};
     }
 
@@ -123,17 +119,15 @@ private:
         if (width == width_ && height == height_) return;
         destroyTargets();
         auto target = [&](const char* name, Format format) {
-            return backend_.createTexture(renderTargetDesc(name, width, height, format));
+            return Owned<TextureHandle>(backend_, backend_.createTexture(renderTargetDesc(name, width, height, format)));
         };
         accumulation_ = target("rt_wboit_accumulation", Format::RGBA16F);
         revealageTarget_ = target("rt_wboit_revealage", Format::R16F);
         width_ = width, height_ = height;
     }
     void destroyTargets() {
-        for (TextureHandle* t : {&accumulation_, &revealageTarget_}) {
-            if (*t) backend_.destroy(*t);
-            *t = {};
-        }
+        accumulation_.reset();
+        revealageTarget_.reset();
         width_ = height_ = 0;
     }
 
@@ -141,7 +135,7 @@ private:
     float depthScale_;
     Owned<ProgramHandle> accumulateProgram_, resolveProgram_;  // programs.hpp
     Owned<PipelineHandle> accumulatePipeline_, revealagePipeline_, resolvePipeline_;
-    TextureHandle accumulation_, revealageTarget_;
+    Owned<TextureHandle> accumulation_, revealageTarget_;
     int width_ = 0, height_ = 0;
 };
 

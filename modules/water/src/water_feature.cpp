@@ -15,13 +15,7 @@ WaterFeature::WaterFeature(const scene::MeshLibrary& library, const Ripples& rip
     setRipples(ripples);
 }
 
-WaterFeature::~WaterFeature() {
-    Backend& backend = library_.backend();
-    for (auto& [e, s] : surfaces_)
-        for (BufferHandle b : s.buffers)
-            if (b) backend.destroy(b);
-    for (auto& [f, p] : pipelines_) backend.destroy(p);
-}
+WaterFeature::~WaterFeature() = default;
 
 void WaterFeature::setRipples(const Ripples& ripples) {
     validate(ripples);
@@ -34,8 +28,6 @@ void WaterFeature::registerSystems(ecs::Scheduler& scheduler) {
 }
 
 void WaterFeature::releaseSurface(ecs::Registry& registry, ecs::Entity e, Surface& s) {
-    for (BufferHandle b : s.buffers)
-        if (b) library_.backend().destroy(b);
     s.buffers.clear();
     if (registry.alive(e) && registry.has<scene::VertexOverride>(e)) registry.remove<scene::VertexOverride>(e);
 }
@@ -63,24 +55,29 @@ void WaterFeature::updateRipples(ecs::Registry& registry) {
     }
     for (const auto& [e, model] : visible) {
         const std::vector<std::uint32_t>& parts = library_.partsOf(model);
-        auto [it, fresh] = surfaces_.try_emplace(e);
-        Surface& s = it->second;
-        if (fresh) {
-            s.buffers.assign(parts.size(), BufferHandle{});
-            s.vertices.assign(parts.size(), {});
+        auto it = surfaces_.find(e);
+        if (it == surfaces_.end()) {
+            // Made whole before it is entered: a create that throws leaves no half-made surface.
+            Surface made;
+            made.buffers.resize(parts.size());
+            made.vertices.assign(parts.size(), {});
             for (std::size_t i = 0; i < parts.size(); ++i) {
                 const scene::MeshPart& part = library_.part(parts[i]);
                 if (part.material.surface != scene::SurfaceClass::Blend) continue;
-                s.vertices[i] = library_.vertices(parts[i]);
-                const auto bytes = std::as_bytes(std::span(s.vertices[i]));
-                s.buffers[i] = library_.backend().createBuffer({part.name + " (ripples)", BufferKind::Vertex, bytes.size()}, bytes);
+                made.vertices[i] = library_.vertices(parts[i]);
+                const auto bytes = std::as_bytes(std::span(made.vertices[i]));
+                made.buffers[i] = Owned<BufferHandle>(
+                    library_.backend(),
+                    library_.backend().createBuffer({part.name + " (ripples)", BufferKind::Vertex, bytes.size()}, bytes));
             }
+            it = surfaces_.emplace(e, std::move(made)).first;
         }
+        Surface& s = it->second;
         scene::VertexOverride override;
-        override.buffers = s.buffers;
+        for (const Owned<BufferHandle>& b : s.buffers) override.buffers.push_back(b.get());
         override.bounds.assign(parts.size(), scene::Aabb{});
         for (std::size_t i = 0; i < parts.size(); ++i) {
-            if (!s.buffers[i]) continue;
+            if (!s.buffers[i].get()) continue;
             rippleNormals(library_.vertices(parts[i]), s.vertices[i], ripples_, frame_.time);
             library_.backend().updateBuffer(s.buffers[i], 0, std::as_bytes(std::span(s.vertices[i])));
         }
@@ -90,17 +87,16 @@ void WaterFeature::updateRipples(ecs::Registry& registry) {
 }
 
 PipelineHandle WaterFeature::pipeline(CompareFunc depthFunc, bool doubleSided) {
-    auto [it, fresh] = pipelines_.try_emplace({depthFunc, doubleSided});
-    if (fresh) {
-        PipelineDesc p;
-        p.name = doubleSided ? "water (blend over)" : "water (blend over, culled)";
-        p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;  // glTF doubleSided (§3.9.6)
-        p.program = ProgramKind::MaskedLit;  // double-sided lit, straight alpha out
-        p.blend[0] = BlendState::alphaOver();
-        p.depth = DepthState::testOnly(depthFunc);
-        it->second = library_.backend().createPipeline(p);
-    }
-    return it->second;
+    // Made before it is entered, so a create that throws leaves no empty entry behind.
+    if (const auto it = pipelines_.find({depthFunc, doubleSided}); it != pipelines_.end()) return it->second;
+    PipelineDesc p;
+    p.name = doubleSided ? "water (blend over)" : "water (blend over, culled)";
+    p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;  // glTF doubleSided (§3.9.6)
+    p.program = ProgramKind::MaskedLit;  // double-sided lit, straight alpha out
+    p.blend[0] = BlendState::alphaOver();
+    p.depth = DepthState::testOnly(depthFunc);
+    Owned<PipelineHandle> pipeline(library_.backend(), library_.backend().createPipeline(p));
+    return pipelines_.emplace(std::pair{depthFunc, doubleSided}, std::move(pipeline)).first->second;
 }
 
 bool WaterFeature::prepare(const scene::FeatureFrame& frame) {

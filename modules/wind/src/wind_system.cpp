@@ -44,29 +44,30 @@ std::uint32_t mix(std::uint32_t x) {
 WindSystem::WindSystem(const scene::MeshLibrary& library) : library_(library) {}
 
 WindSystem::~WindSystem() {
-    for (auto& [e, plant] : plants_)
-        for (DeformedPart& p : plant.parts) library_.backend().destroy(p.buffer);
+    // In the order they were always destroyed: plant by plant, then the spares.
+    for (auto& [e, plant] : plants_) plant.parts.clear();
     destroySpares();
 }
 
 void WindSystem::destroySpares() {
-    for (auto& [part, buffers] : spares_)
-        for (render::BufferHandle b : buffers) library_.backend().destroy(b);
+    for (auto& [part, buffers] : spares_) buffers.clear();
     spares_.clear();
 }
 
-render::BufferHandle WindSystem::partBuffer(std::uint32_t part, std::span<const Vertex> vertices) {
+render::Owned<render::BufferHandle> WindSystem::partBuffer(std::uint32_t part, std::span<const Vertex> vertices) {
     const auto bytes = std::as_bytes(vertices);
-    std::vector<render::BufferHandle>& spare = spares_[part];
+    std::vector<render::Owned<render::BufferHandle>>& spare = spares_[part];
     if (!spare.empty()) {
-        const render::BufferHandle b = spare.back();
-        library_.backend().updateBuffer(b, 0, bytes);
+        library_.backend().updateBuffer(spare.back(), 0, bytes);
+        render::Owned<render::BufferHandle> b = std::move(spare.back());
         spare.pop_back();
         ++stats_.buffersReused;
         return b;
     }
-    const render::BufferHandle b = library_.backend().createBuffer(
-        {library_.part(part).name + " (deformed)", render::BufferKind::Vertex, bytes.size()}, bytes);
+    render::Owned<render::BufferHandle> b(
+        library_.backend(),
+        library_.backend().createBuffer({library_.part(part).name + " (deformed)", render::BufferKind::Vertex, bytes.size()},
+                                        bytes));
     ++stats_.buffersCreated;
     return b;
 }
@@ -95,7 +96,7 @@ std::span<const Vertex> WindSystem::deformed(ecs::Entity e, std::size_t i) const
 
 void WindSystem::releasePlant(ecs::Registry& registry, ecs::Entity e, DeformedPlant& plant) {
     for (DeformedPart& p : plant.parts) {
-        spares_[p.part].push_back(p.buffer);
+        spares_[p.part].push_back(std::move(p.buffer));
         ++stats_.buffersReleased;
     }
     plant.parts.clear();

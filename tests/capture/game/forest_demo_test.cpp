@@ -104,7 +104,7 @@ TEST(ForestDemo, SsamMaskCoversTheFrameAndTheCarStaysInSight) {
     options.sun = scene.sun();
     options.captureLayers = true;
     FrameRenderer renderer(*backend, scene.library(), options);
-    LivingScene living(scene.registry(), scene.library(), LivingSceneOptions{true, true, true, true, true, 1, &scene.track()});
+    LivingScene living(scene.registry(), scene.library(), LivingSceneOptions{.seed = 1, .track = &scene.track()});
     renderer.setLivingScene(&living);
     ASSERT_EQ(transparency::techniqueName(renderer.technique()), std::string("ssam"));
 

@@ -94,7 +94,7 @@ Laps runRacer(engine::render::Backend& inner) {
     options.sun = racing.sun();
     racer::FrameRenderer frame(backend, racing.library(), options);
     racer::LivingScene living(racing.registry(), racing.library(),
-                              racer::LivingSceneOptions{true, true, true, true, true, 1, &racing.track()});
+                              racer::LivingSceneOptions{.seed = 1, .track = &racing.track()});
     frame.setLivingScene(&living);
     EXPECT_EQ(living.names(), (std::vector<std::string>{"wind", "grass", "water", "particles", "light shafts"}));
 

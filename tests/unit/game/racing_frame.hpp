@@ -22,7 +22,7 @@ struct RacingFrame {
     explicit RacingFrame(engine::render::Backend& backend)
         : scene(backend, SceneOptions{defaultContentDir(), 1}),
           renderer(backend, scene.library(), rendererOptions()),
-          living(scene.registry(), scene.library(), LivingSceneOptions{true, true, true, true, true, 1, &scene.track()}) {
+          living(scene.registry(), scene.library(), LivingSceneOptions{.seed = 1, .track = &scene.track()}) {
         renderer.setLivingScene(&living);
     }
     static RendererOptions rendererOptions() {

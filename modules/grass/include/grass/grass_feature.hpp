@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/render/frame_buffer_pool.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "grass/grass_field.hpp"
 
@@ -34,12 +35,12 @@ private:
     engine::render::Backend& backend_;
     GrassOptions options_;
     std::vector<Tuft> tufts_;
-    engine::render::BufferHandle vertices_, indices_;
+    engine::render::Owned<engine::render::BufferHandle> vertices_, indices_;
     engine::render::FrameBufferPool instances_;
     std::vector<engine::render::Instance> visible_;  // prepare()'s tufts, drawn by draw()
     std::uint32_t indexCount_ = 0;
-    engine::render::TextureHandle blades_;
-    engine::render::PipelineHandle pipeline_;
+    engine::render::Owned<engine::render::TextureHandle> blades_;
+    engine::render::Owned<engine::render::PipelineHandle> pipeline_;
     engine::render::CompareFunc pipelineDepthFunc_ = engine::render::CompareFunc::Less;
     std::size_t drawn_ = 0;
 };

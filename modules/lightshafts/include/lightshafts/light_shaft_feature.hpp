@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "engine/render/owned.hpp"
 #include "engine/scene/frame_feature.hpp"
 
 namespace lightshafts {
@@ -53,8 +54,9 @@ public:
 private:
     engine::render::Backend& backend_;
     LightShaftOptions options_;
-    engine::render::ProgramHandle program_;
-    engine::render::PipelineHandle pipeline_;
+    // Owned: a create that throws in the constructor leaves nothing made before it behind.
+    engine::render::Owned<engine::render::ProgramHandle> program_;
+    engine::render::Owned<engine::render::PipelineHandle> pipeline_;
     std::unique_ptr<SunVisibilityProbe> probe_;
     std::optional<engine::render::QueryHandle> lastQuery_;
     bool ran_ = false;

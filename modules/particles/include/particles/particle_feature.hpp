@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "engine/render/frame_buffer_pool.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "particles/particle_simulation.hpp"
 
@@ -32,7 +33,7 @@ public:
 
     ParticleSimulation& simulation() { return simulation_; }
     // The layer of the last frame (null before one was drawn), for tests and captures.
-    engine::render::TextureHandle layer() const { return layer_; }
+    engine::render::TextureHandle layer() const { return layer_.get(); }
     std::size_t drawnLastFrame() const { return drawn_; }
 
 private:
@@ -41,11 +42,11 @@ private:
     engine::render::Backend& backend_;
     ParticleSimulation simulation_;
     float dt_ = 0.0f;
-    void destroyPrograms();  // and their pipelines
 
-    engine::render::ProgramHandle particleProgram_, compositeProgram_;  // particle_programs.hpp
-    engine::render::PipelineHandle particlePipeline_, compositePipeline_;
-    engine::render::TextureHandle layer_;
+    // Owned: a create that throws in the constructor leaves nothing made before it behind.
+    engine::render::Owned<engine::render::ProgramHandle> particleProgram_, compositeProgram_;  // particle_programs.hpp
+    engine::render::Owned<engine::render::PipelineHandle> particlePipeline_, compositePipeline_;
+    engine::render::Owned<engine::render::TextureHandle> layer_;
     engine::render::FrameBufferPool buffers_;  // the quads, reused frame after frame
     // What prepare() found: camera-facing quads and the screen region they touch.
     std::vector<engine::render::Vertex> vertices_;

@@ -19,23 +19,13 @@
 #include "engine/render/masked_batch.hpp"
 #include "engine/render/vertex.hpp"
 #include "transparency/programs.hpp"
+#include "transparency/technique_kind.hpp"  // generated from the ssam_technique() lines
 
 namespace engine::render {
 class FrameGraph;
 }
 
 namespace transparency {
-
-enum class TechniqueKind : std::uint8_t {
-    Ssam,             // [Hathaway 2010] with the paper's defaults
-    SsamPlus,         // our improvement on it (README "SSAM+")
-    AlphaTest,        // alpha test at 0.5, depth write: the baseline SSAM replaces
-    AlphaToCoverage,  // 4x MSAA, coverage from alpha
-    BlendUnsorted,    // straight-alpha over, depth write off, submission order
-    BlendSorted,      // straight-alpha over, instances sorted back to front
-    Wboit,            // weighted blended OIT (McGuire & Bavoil 2013)
-    Reference,        // exact: every fragment, sorted per pixel, composited with "over"
-};
 
 // Every kind, in the order tables list them.
 std::span<const TechniqueKind> allTechniques();

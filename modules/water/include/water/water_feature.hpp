@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/render/frame_buffer_pool.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "water/ripples.hpp"
 
@@ -32,7 +33,7 @@ public:
 
 private:
     struct Surface {
-        std::vector<engine::render::BufferHandle> buffers;  // per part slot; null: not water
+        std::vector<engine::render::Owned<engine::render::BufferHandle>> buffers;  // per part slot; null: not water
         std::vector<std::vector<engine::render::Vertex>> vertices;
     };
     engine::render::PipelineHandle pipeline(engine::render::CompareFunc depthFunc, bool doubleSided);
@@ -42,7 +43,7 @@ private:
     Ripples ripples_;
     engine::scene::SimulationFrame frame_;
     std::map<engine::ecs::Entity, Surface> surfaces_;
-    std::map<std::pair<engine::render::CompareFunc, bool>, engine::render::PipelineHandle> pipelines_;
+    std::map<std::pair<engine::render::CompareFunc, bool>, engine::render::Owned<engine::render::PipelineHandle>> pipelines_;
     engine::render::FrameBufferPool frameInstances_;  // instance data, reused frame after frame
 };
 

@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/core/ecs/registry.hpp"
+#include "engine/render/owned.hpp"
 #include "engine/scene/mesh_library.hpp"
 #include "wind/sway.hpp"
 
@@ -73,7 +74,7 @@ private:
         bool flutter = false;   // leaf cards (alpha-tested parts) flutter; trunks only bend
         std::vector<engine::render::Vertex> vertices;
         std::vector<glm::vec3> push;
-        engine::render::BufferHandle buffer;
+        engine::render::Owned<engine::render::BufferHandle> buffer;
         engine::scene::Aabb bounds;
     };
     struct DeformedPlant {
@@ -83,14 +84,15 @@ private:
 
     void releasePlant(engine::ecs::Registry& registry, engine::ecs::Entity e, DeformedPlant& plant);
     // A vertex buffer for a deformed copy of library part `part`: a spare one, or a new one.
-    engine::render::BufferHandle partBuffer(std::uint32_t part, std::span<const engine::render::Vertex> vertices);
+    engine::render::Owned<engine::render::BufferHandle> partBuffer(std::uint32_t part,
+                                                                  std::span<const engine::render::Vertex> vertices);
     void destroySpares();
 
     const engine::scene::MeshLibrary& library_;
     WindFrame frame_;
     WindStats stats_;
     std::map<engine::ecs::Entity, DeformedPlant> plants_;  // ordered: deterministic walks
-    std::map<std::uint32_t, std::vector<engine::render::BufferHandle>> spares_;  // by library part
+    std::map<std::uint32_t, std::vector<engine::render::Owned<engine::render::BufferHandle>>> spares_;  // by library part
 };
 
 }  // namespace wind
