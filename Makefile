@@ -19,12 +19,13 @@ PACKAGES := build-essential cmake pkg-config ccache \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libepoxy-dev libstb-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
+            clang-format-14 \
             $(NODE_PACKAGES)
 # Debian's nodejs + npm, unless an npm is already on the PATH (e.g. a NodeSource nodejs,
 # which bundles npm and which Debian's npm package would try to replace).
 NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test test-asan demo bench readme-images readme-chart content clean node-tools fuzz fuzz-campaign
+.PHONY: all deps configure build test test-asan test-tsan format-check format lint demo bench readme-images readme-chart content clean node-tools fuzz fuzz-campaign
 
 all: build
 
@@ -54,11 +55,13 @@ test: build node-tools
 
 # The sanitizer pass CI runs after `make test` (tests/README.md "What CI runs"): the asan preset
 # (Debug, AddressSanitizer + UndefinedBehaviorSanitizer, no recovery) built in build-asan, then
-# these ctest labels under it. Left out: tests that also carry the label `slow` (too long under
-# the sanitizers; `make test` still runs them) and the glTF validator (Node.js, none of our code
-# runs). The asan test preset sets ASAN_OPTIONS and UBSAN_OPTIONS (CMakePresets.json; why:
-# tests/README.md "What CI runs").
-ASAN_LABELS ?= unit|conformance|stress|capture|gl
+# these ctest labels under it. Left out: the label `capture` (whole racer and ssam-bench runs:
+# the largest share of the pass's time, and their pictures are proven the same in every build
+# by `make test`; hostile input is the fuzzers' and the unit tests' under the sanitizers), tests
+# that also carry the label `slow` (too long under the sanitizers; `make test` still runs them)
+# and the glTF validator (Node.js, none of our code runs). The asan test preset sets ASAN_OPTIONS
+# and UBSAN_OPTIONS (CMakePresets.json; why: tests/README.md "What CI runs").
+ASAN_LABELS ?= unit|conformance|stress|gl
 ASAN_EXCLUDE ?= ^Content\.GltfValidatorFindsNoErrors$$
 test-asan: deps
 	@[ -f build-asan/CMakeCache.txt ] || cmake --preset asan
@@ -66,13 +69,44 @@ test-asan: deps
 	ctest --preset asan -j $(JOBS) -L '^($(ASAN_LABELS))$$' -LE '^slow$$' \
 	  -E '$(ASAN_EXCLUDE)'
 
+# ThreadSanitizer over the code that runs on oneTBB's threads (by hand, not in CI: it costs a
+# build of its own): the soft backend's tiles and set-up, the frame graph, the core. Each test
+# executable is run whole; tests/tsan.supp says what it suppresses and why.
+TSAN_TESTS ?= unit_core unit_frame_graph unit_frame_pools unit_soft unit_soft_sampler unit_soft_float_mask conformance_soft
+test-tsan: deps
+	@[ -f build-tsan/CMakeCache.txt ] || cmake --preset tsan
+	cmake --build --preset tsan -j $(JOBS) --target $(TSAN_TESTS)
+	@for t in $(TSAN_TESTS); do echo "test-tsan: $$t"; \
+	  TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$(CURDIR)/tests/tsan.supp" \
+	  build-tsan/bin/$$t --gtest_brief=1 || exit 1; done
+
+# The tree's layout (.clang-format, clang-format 14): format-check fails on any file that is not
+# formatted (CI runs it first: it costs seconds), format rewrites them.
+SOURCES_TO_FORMAT = $(shell git ls-files '*.cpp' '*.hpp' '*.h')
+format-check: deps
+	clang-format-14 --dry-run -Werror $(SOURCES_TO_FORMAT)
+	@echo "format-check: $(words $(SOURCES_TO_FORMAT)) files formatted"
+format: deps
+	clang-format-14 -i $(SOURCES_TO_FORMAT)
+
+# clang-tidy 14 over the engine, ssam, the modules and the game (.clang-tidy says which checks
+# and why the others are left out), from the default build's compile_commands.json. By hand, not
+# in CI: it parses every translation unit again (about 20 minutes on 2 cores).
+LINT_SOURCES = $(shell git ls-files 'engine/*.cpp' 'ssam/*.cpp' 'modules/*.cpp' 'game/*.cpp')
+lint: build
+	@command -v clang-tidy-14 >/dev/null || $(SUDO) apt-get install -y -qq --no-install-recommends clang-tidy-14
+	@printf '%s\n' $(LINT_SOURCES) | xargs -P $(JOBS) -n 8 clang-tidy-14 -p $(BUILD_DIR) --quiet
+	@echo "lint: $(words $(LINT_SOURCES)) files clean"
+
 # The demo: with a display, the racing scene in a window (GL) until it is closed (keys:
 # game/README.md "Keys": drive, HUD, compare, ...); without one, a few seconds at a fixed time
 # step, headless on the soft backend, written to out/racer.png and out/racer.exr (every layer),
 # and the same frame side by side, SSAM against alpha testing with zoomed insets, to
 # out/compare.png.
+# It builds the racer alone (its content is committed), not the tests: `make test` builds those.
 DEMO_FLAGS ?= --frames 90 --fixed-dt 0.0333333 --size 1280x720
-demo: build
+demo: configure
+	cmake --build --preset $(PRESET) -j $(JOBS) --target racer
 	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then $(BUILD_DIR)/bin/racer --size 1280x720; \
 	else $(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --capture out/racer.png --capture-layers && \
 	  $(BUILD_DIR)/bin/racer --headless $(DEMO_FLAGS) --compare ssam,alpha-test --capture out/compare.png; fi
@@ -102,7 +136,7 @@ readme-chart: build
 content: build
 	$(BUILD_DIR)/bin/content-generator --out content
 
-# The benchmarks, then issue 16's table (game/bench/speed_table.sh): the soft backend against
+# The benchmarks, then the speed table (game/bench/speed_table.sh): the soft backend against
 # Mesa llvmpipe with the same threads, measured in this one run. OLD_BIN=<dir of an older racer
 # and ssam-bench> adds a "before" column, old and new binaries run alternately.
 bench: build
