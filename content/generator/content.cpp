@@ -32,7 +32,8 @@ void stageBytes(engine::PendingFiles& staged, const fs::path& path, const std::v
 // extras flag that routes it to SSAM ([Hathaway 2010]).
 ordered_json foliageMaterial(const std::string& name, int texture) {
     return {{"name", name},
-            {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}},
+            {"pbrMetallicRoughness",
+             {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}},
             {"alphaMode", "MASK"},
             {"alphaCutoff", 0.5},
             {"doubleSided", true},
@@ -40,10 +41,11 @@ ordered_json foliageMaterial(const std::string& name, int texture) {
 }
 
 ordered_json opaqueMaterial(const std::string& name, int texture, double metallic, double roughness) {
-    return {{"name", name},
-            {"pbrMetallicRoughness",
-             {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", metallic}, {"roughnessFactor", roughness}}},
-            {"alphaMode", "OPAQUE"}};
+    return {
+        {"name", name},
+        {"pbrMetallicRoughness",
+         {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", metallic}, {"roughnessFactor", roughness}}},
+        {"alphaMode", "OPAQUE"}};
 }
 
 // The images every model embeds, encoded once.
@@ -53,10 +55,11 @@ struct Pngs {
 
 // A tree or bush: an optional trunk (opaque bark) and the foliage cards (MASK), both
 // KHR_draco_mesh_compression, in one mesh on one node.
-std::vector<std::uint8_t> foliageModel(const std::string& name, const Pngs& pngs, bool fronds, const MeshData* trunkMesh,
-                                       const MeshData& cards) {
+std::vector<std::uint8_t> foliageModel(const std::string& name, const Pngs& pngs, bool fronds,
+                                       const MeshData* trunkMesh, const MeshData& cards) {
     GlbWriter glb;
-    const int foliageTexture = glb.addTexture(glb.addPngImage(fronds ? pngs.fronds : pngs.leaves, fronds ? "frond" : "leaf_cluster"), kClampToEdge);
+    const int foliageTexture = glb.addTexture(
+        glb.addPngImage(fronds ? pngs.fronds : pngs.leaves, fronds ? "frond" : "leaf_cluster"), kClampToEdge);
     const int foliage = glb.addMaterial(foliageMaterial(fronds ? "fronds" : "leaves", foliageTexture));
     std::vector<GlbWriter::Part> parts;
     if (trunkMesh) {
@@ -114,14 +117,16 @@ std::vector<std::uint8_t> fernBush(const Pngs& pngs) {
 
 // Boxes and wheels, +Z forward, one textured atlas material (textures.hpp makeCarAtlas).
 std::vector<std::uint8_t> car(const Pngs& pngs) {
-    const glm::vec4 paint(0.02f, 0.02f, 0.98f, 0.48f), glass(0.02f, 0.52f, 0.98f, 0.73f), tyre(0.02f, 0.77f, 0.98f, 0.98f);
+    const glm::vec4 paint(0.02f, 0.02f, 0.98f, 0.48f), glass(0.02f, 0.52f, 0.98f, 0.73f),
+        tyre(0.02f, 0.77f, 0.98f, 0.98f);
     MeshData body;
     addBox(body, {-0.9f, 0.3f, -2.1f}, {0.9f, 0.95f, 2.1f}, paint, paint);
     addBox(body, {-0.75f, 0.95f, -0.9f}, {0.75f, 1.45f, 0.8f}, paint, glass);
     addBox(body, {-0.85f, 1.0f, -2.1f}, {0.85f, 1.08f, -1.8f}, paint, paint);  // the rear wing
     for (int side = -1; side <= 1; side += 2)
         for (int axle = -1; axle <= 1; axle += 2)
-            addWheel(body, {0.9f * static_cast<float>(side), 0.34f, 1.35f * static_cast<float>(axle)}, 0.34f, 0.3f, 12, tyre);
+            addWheel(body, {0.9f * static_cast<float>(side), 0.34f, 1.35f * static_cast<float>(axle)}, 0.34f, 0.3f, 12,
+                     tyre);
     GlbWriter glb;
     const int texture = glb.addTexture(glb.addPngImage(pngs.car, "car_atlas"), kClampToEdge);
     const int material = glb.addMaterial(opaqueMaterial("car", texture, 0.2, 0.4));
@@ -134,10 +139,11 @@ std::vector<std::uint8_t> car(const Pngs& pngs) {
 std::vector<std::uint8_t> water() {
     const MeshData surface = disc(1.0f, 32);
     GlbWriter glb;
-    const int material = glb.addMaterial({{"name", "water"},
-                                          {"pbrMetallicRoughness",
-                                           {{"baseColorFactor", {0.10, 0.30, 0.40, 0.6}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.05}}},
-                                          {"alphaMode", "BLEND"}});
+    const int material = glb.addMaterial(
+        {{"name", "water"},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.10, 0.30, 0.40, 0.6}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.05}}},
+         {"alphaMode", "BLEND"}});
     const int mesh = glb.addMesh("water", {{&surface, material}}, false);
     glb.setSceneNodes({glb.addNode({{"name", "water"}, {"mesh", mesh}})});
     return glb.glb();
@@ -157,7 +163,8 @@ std::vector<std::uint8_t> terrain(const Pngs& pngs) {
 ordered_json pointsJson(const std::vector<glm::vec3>& points) {
     ordered_json out = ordered_json::array();
     for (const glm::vec3& p : points)
-        out.push_back({std::round(static_cast<double>(p.x) * 1000.0) / 1000.0, std::round(static_cast<double>(p.y) * 1000.0) / 1000.0,
+        out.push_back({std::round(static_cast<double>(p.x) * 1000.0) / 1000.0,
+                       std::round(static_cast<double>(p.y) * 1000.0) / 1000.0,
                        std::round(static_cast<double>(p.z) * 1000.0) / 1000.0});
     return out;
 }
@@ -169,12 +176,13 @@ std::vector<std::uint8_t> track(const Pngs& pngs) {
     GlbWriter glb;
     const int texture = glb.addTexture(glb.addPngImage(pngs.track, "track"), kRepeat);
     const int material = glb.addMaterial(opaqueMaterial("track", texture, 0.0, 0.9));
-    ordered_json extras = {{"centreLine",
-                            {{"closed", true},
-                             {"spline", "uniform Catmull-Rom through controlPoints; samples are its points, first not repeated"},
-                             {"width", shape.width},
-                             {"controlPoints", pointsJson(shape.control)},
-                             {"samples", pointsJson(shape.centreLine)}}}};
+    ordered_json extras = {
+        {"centreLine",
+         {{"closed", true},
+          {"spline", "uniform Catmull-Rom through controlPoints; samples are its points, first not repeated"},
+          {"width", shape.width},
+          {"controlPoints", pointsJson(shape.control)},
+          {"samples", pointsJson(shape.centreLine)}}}};
     const int mesh = glb.addMesh("track", {{&ribbon, material}}, false, std::move(extras));
     glb.setSceneNodes({glb.addNode({{"name", "track"}, {"mesh", mesh}})});
     return glb.glb();

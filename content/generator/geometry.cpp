@@ -103,9 +103,11 @@ void addCrownLobe(MeshData& mesh, Pcg32& rng, const Lobe& lobe) {
     }
 }
 
-void addFronds(MeshData& mesh, Pcg32& rng, glm::vec3 top, int count, float length, float minElevation, float maxElevation) {
+void addFronds(MeshData& mesh, Pcg32& rng, glm::vec3 top, int count, float length, float minElevation,
+               float maxElevation) {
     for (int i = 0; i < count; ++i) {
-        const float heading = 2.0f * kPi * (static_cast<float>(i) + rng.uniform(-0.3f, 0.3f)) / static_cast<float>(count);
+        const float heading =
+            2.0f * kPi * (static_cast<float>(i) + rng.uniform(-0.3f, 0.3f)) / static_cast<float>(count);
         const float droop = rng.uniform(minElevation, maxElevation);
         const glm::vec3 out(std::cos(heading) * std::cos(droop), std::sin(droop), std::sin(heading) * std::cos(droop));
         const float roll = rng.uniform(-0.5f, 0.5f);  // around the stem, from lying flat
@@ -122,9 +124,14 @@ void addFronds(MeshData& mesh, Pcg32& rng, glm::vec3 top, int count, float lengt
 
 void addBox(MeshData& mesh, glm::vec3 lo, glm::vec3 hi, glm::vec4 uvRect, glm::vec4 sideRect) {
     const auto uvOf = [](glm::vec4 r) {
-        return std::array<glm::vec2, 4>{glm::vec2(r.x, r.y), glm::vec2(r.z, r.y), glm::vec2(r.z, r.w), glm::vec2(r.x, r.w)};
+        return std::array<glm::vec2, 4>{glm::vec2(r.x, r.y), glm::vec2(r.z, r.y), glm::vec2(r.z, r.w),
+                                        glm::vec2(r.x, r.w)};
     };
-    struct Face { glm::vec3 n; glm::vec3 p[4]; bool side; };
+    struct Face {
+        glm::vec3 n;
+        glm::vec3 p[4];
+        bool side;
+    };
     const Face faces[6] = {
         {{0, 1, 0}, {{lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}}, false},
         {{0, -1, 0}, {{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}}, false},
@@ -154,7 +161,8 @@ void addWheel(MeshData& mesh, glm::vec3 c, float radius, float width, int sides,
             const float x = side ? x1 : x0;
             const glm::vec3 n(side ? 1.0f : -1.0f, 0, 0);
             const glm::vec3 centre(x, c.y, c.z);
-            const glm::vec3 wedge[4] = {centre, centre, glm::vec3(x, c.y, c.z) + radius * d0, glm::vec3(x, c.y, c.z) + radius * d1};
+            const glm::vec3 wedge[4] = {centre, centre, glm::vec3(x, c.y, c.z) + radius * d0,
+                                        glm::vec3(x, c.y, c.z) + radius * d1};
             const glm::vec2 hub(0.5f * (r.x + r.z), 0.5f * (r.y + r.w));
             std::uint32_t v[3];
             v[0] = mesh.addVertex(wedge[0], n, hub);
@@ -195,7 +203,8 @@ MeshData terrainPatch(float size, int cells, float relief, float uvMetres, std::
             const float x = -0.5f * size + step * static_cast<float>(i);
             const float z = -0.5f * size + step * static_cast<float>(j);
             const float e = 0.5f * step;
-            const glm::vec3 n = glm::normalize(glm::vec3(height(x - e, z) - height(x + e, z), 2.0f * e, height(x, z - e) - height(x, z + e)));
+            const glm::vec3 n = glm::normalize(
+                glm::vec3(height(x - e, z) - height(x + e, z), 2.0f * e, height(x, z - e) - height(x, z + e)));
             mesh.addVertex({x, height(x, z), z}, n, {x / uvMetres, z / uvMetres});
         }
     const auto row = static_cast<std::uint32_t>(cells + 1);
@@ -214,7 +223,8 @@ TrackShape trackShape(std::uint32_t seed, int controlPoints, glm::vec2 radii, in
     for (int i = 0; i < controlPoints; ++i) {
         const float a = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(controlPoints);
         const float jitter = rng.uniform(0.85f, 1.15f);
-        shape.control.push_back({radii.x * jitter * std::cos(a), rng.uniform(-1.5f, 1.5f), radii.y * jitter * std::sin(a)});
+        shape.control.push_back(
+            {radii.x * jitter * std::cos(a), rng.uniform(-1.5f, 1.5f), radii.y * jitter * std::sin(a)});
     }
     const int n = controlPoints;
     for (int i = 0; i < n; ++i) {  // uniform Catmull-Rom through control[i] .. control[i+1]
@@ -225,8 +235,9 @@ TrackShape trackShape(std::uint32_t seed, int controlPoints, glm::vec2 radii, in
         for (int s = 0; s < samplesPerSpan; ++s) {
             const float t = static_cast<float>(s) / static_cast<float>(samplesPerSpan);
             const float t2 = t * t, t3 = t2 * t;
-            shape.centreLine.push_back(0.5f * ((2.0f * p1) + (-p0 + p2) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t2 +
-                                               (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t3));
+            shape.centreLine.push_back(0.5f *
+                                       ((2.0f * p1) + (-p0 + p2) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t2 +
+                                        (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t3));
         }
     }
     return shape;
@@ -249,7 +260,9 @@ MeshData trackRibbon(const TrackShape& shape) {
     for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
         const std::uint32_t l0 = 2 * i, r0 = l0 + 1, l1 = l0 + 2, r1 = l0 + 3;
         const glm::vec3 up = mesh.normals[l0];
-        const bool ccw = glm::dot(glm::cross(mesh.positions[r0] - mesh.positions[l0], mesh.positions[l1] - mesh.positions[l0]), up) > 0.0f;
+        const bool ccw =
+            glm::dot(glm::cross(mesh.positions[r0] - mesh.positions[l0], mesh.positions[l1] - mesh.positions[l0]), up) >
+            0.0f;
         if (ccw) mesh.indices.insert(mesh.indices.end(), {l0, r0, l1, r0, r1, l1});
         else mesh.indices.insert(mesh.indices.end(), {l0, l1, r0, r0, l1, r1});
     }

@@ -45,7 +45,8 @@ void addCrownLobe(MeshData& mesh, Pcg32& rng, const Lobe& lobe);
 // Fronds radiating from `top`: `count` cards whose stem (texture bottom-centre) sits at the
 // top, reaching out `length` metres at an elevation in [minElevation, maxElevation] radians
 // above the horizon, with a random roll about the stem.
-void addFronds(MeshData& mesh, Pcg32& rng, glm::vec3 top, int count, float length, float minElevation, float maxElevation);
+void addFronds(MeshData& mesh, Pcg32& rng, glm::vec3 top, int count, float length, float minElevation,
+               float maxElevation);
 
 // An axis-aligned box with per-face normals; every face maps to the UV rectangle `uvRect`
 // (u0, v0, u1, v1), or `sideRect` for the four sides when given.

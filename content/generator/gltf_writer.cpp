@@ -78,21 +78,36 @@ ordered_json GlbWriter::plainPrimitive(const MeshData& mesh) {
     glm::vec3 lo, hi;
     boundsOf(mesh.positions, lo, hi);
     ordered_json attributes;
-    attributes["POSITION"] = addAccessor({{"bufferView", addView(mesh.positions.data(), n * sizeof(glm::vec3), kArrayBuffer)},
-                                          {"componentType", kFloat}, {"count", n}, {"type", "VEC3"},
-                                          {"min", vec3Json(lo)}, {"max", vec3Json(hi)}});
-    attributes["NORMAL"] = addAccessor({{"bufferView", addView(mesh.normals.data(), n * sizeof(glm::vec3), kArrayBuffer)},
-                                        {"componentType", kFloat}, {"count", n}, {"type", "VEC3"}});
-    attributes["TEXCOORD_0"] = addAccessor({{"bufferView", addView(mesh.uvs.data(), n * sizeof(glm::vec2), kArrayBuffer)},
-                                            {"componentType", kFloat}, {"count", n}, {"type", "VEC2"}});
+    attributes["POSITION"] =
+        addAccessor({{"bufferView", addView(mesh.positions.data(), n * sizeof(glm::vec3), kArrayBuffer)},
+                     {"componentType", kFloat},
+                     {"count", n},
+                     {"type", "VEC3"},
+                     {"min", vec3Json(lo)},
+                     {"max", vec3Json(hi)}});
+    attributes["NORMAL"] =
+        addAccessor({{"bufferView", addView(mesh.normals.data(), n * sizeof(glm::vec3), kArrayBuffer)},
+                     {"componentType", kFloat},
+                     {"count", n},
+                     {"type", "VEC3"}});
+    attributes["TEXCOORD_0"] =
+        addAccessor({{"bufferView", addView(mesh.uvs.data(), n * sizeof(glm::vec2), kArrayBuffer)},
+                     {"componentType", kFloat},
+                     {"count", n},
+                     {"type", "VEC2"}});
     int indices;
     if (n <= 65536) {
         std::vector<std::uint16_t> narrow(mesh.indices.begin(), mesh.indices.end());
         indices = addAccessor({{"bufferView", addView(narrow.data(), narrow.size() * 2, kElementArrayBuffer)},
-                               {"componentType", kUnsignedShort}, {"count", narrow.size()}, {"type", "SCALAR"}});
+                               {"componentType", kUnsignedShort},
+                               {"count", narrow.size()},
+                               {"type", "SCALAR"}});
     } else {
-        indices = addAccessor({{"bufferView", addView(mesh.indices.data(), mesh.indices.size() * 4, kElementArrayBuffer)},
-                               {"componentType", kUnsignedInt}, {"count", mesh.indices.size()}, {"type", "SCALAR"}});
+        indices =
+            addAccessor({{"bufferView", addView(mesh.indices.data(), mesh.indices.size() * 4, kElementArrayBuffer)},
+                         {"componentType", kUnsignedInt},
+                         {"count", mesh.indices.size()},
+                         {"type", "SCALAR"}});
     }
     return {{"attributes", attributes}, {"indices", indices}};
 }
@@ -108,7 +123,9 @@ ordered_json GlbWriter::dracoPrimitive(const MeshData& mesh) {
                        static_cast<std::int64_t>(sizeof(float)) * components, 0);
         const int id = source.AddAttribute(attribute, true, n);
         for (std::uint32_t i = 0; i < n; ++i)
-            source.attribute(id)->SetAttributeValue(draco::AttributeValueIndex(i), values + static_cast<std::size_t>(i) * static_cast<std::size_t>(components));
+            source.attribute(id)->SetAttributeValue(
+                draco::AttributeValueIndex(i),
+                values + static_cast<std::size_t>(i) * static_cast<std::size_t>(components));
         return id;
     };
     const int pos = addAttribute(draco::GeometryAttribute::POSITION, 3, &mesh.positions[0].x);
@@ -144,8 +161,8 @@ ordered_json GlbWriter::dracoPrimitive(const MeshData& mesh) {
 
     const std::size_t count = back.num_points();
     ordered_json attributes;
-    attributes["POSITION"] = addAccessor({{"componentType", kFloat}, {"count", count}, {"type", "VEC3"},
-                                          {"min", vec3Json(lo)}, {"max", vec3Json(hi)}});
+    attributes["POSITION"] = addAccessor(
+        {{"componentType", kFloat}, {"count", count}, {"type", "VEC3"}, {"min", vec3Json(lo)}, {"max", vec3Json(hi)}});
     attributes["NORMAL"] = addAccessor({{"componentType", kFloat}, {"count", count}, {"type", "VEC3"}});
     attributes["TEXCOORD_0"] = addAccessor({{"componentType", kFloat}, {"count", count}, {"type", "VEC2"}});
     const int indices = addAccessor({{"componentType", count <= 65536 ? kUnsignedShort : kUnsignedInt},

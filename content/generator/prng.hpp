@@ -29,7 +29,9 @@ public:
     float uniform() { return static_cast<float>(next() >> 8) * (1.0f / 16777216.0f); }
     float uniform(float lo, float hi) { return lo + (hi - lo) * uniform(); }
     // [0, n) without modulo bias worth caring about for the small n used here.
-    std::uint32_t below(std::uint32_t n) { return static_cast<std::uint32_t>((static_cast<std::uint64_t>(next()) * n) >> 32); }
+    std::uint32_t below(std::uint32_t n) {
+        return static_cast<std::uint32_t>((static_cast<std::uint64_t>(next()) * n) >> 32);
+    }
 
 private:
     std::uint64_t state_ = 0;

@@ -83,7 +83,8 @@ void drawLeaf(Canvas& canvas, glm::vec2 base, float angle, float length, float w
             const float inside = halfWidth - std::abs(s);
             const float alpha = std::clamp((inside + 0.5f) / edge, 0.0f, 1.0f);
             if (alpha <= 0.0f) continue;
-            const float grain = 0.92f + 0.16f * valueNoise(static_cast<float>(x) / 256.0f, static_cast<float>(y) / 256.0f, 64, 64, seed);
+            const float grain = 0.92f + 0.16f * valueNoise(static_cast<float>(x) / 256.0f,
+                                                           static_cast<float>(y) / 256.0f, 64, 64, seed);
             glm::vec3 c = colour * grain * (s > 0.0f ? 1.08f : 0.94f) * (0.85f + 0.15f * u);
             const float rib = 1.0f - smoothstep(0.4f, 1.2f, std::abs(s));
             c = glm::mix(c, colour * 1.35f + glm::vec3(0.05f, 0.05f, 0.0f), rib * 0.6f * (1.0f - u));
@@ -92,7 +93,8 @@ void drawLeaf(Canvas& canvas, glm::vec2 base, float angle, float length, float w
 }
 
 // A stroke of varying width along a quadratic Bezier (twigs and stems).
-void drawStroke(Canvas& canvas, glm::vec2 a, glm::vec2 control, glm::vec2 b, float width0, float width1, glm::vec3 colour) {
+void drawStroke(Canvas& canvas, glm::vec2 a, glm::vec2 control, glm::vec2 b, float width0, float width1,
+                glm::vec3 colour) {
     const int steps = 96;
     for (int i = 0; i <= steps; ++i) {
         const float t = static_cast<float>(i) / static_cast<float>(steps);
@@ -108,7 +110,9 @@ void drawStroke(Canvas& canvas, glm::vec2 a, glm::vec2 control, glm::vec2 b, flo
     }
 }
 
-glm::vec2 bezier(glm::vec2 a, glm::vec2 c, glm::vec2 b, float t) { return (1 - t) * (1 - t) * a + 2 * (1 - t) * t * c + t * t * b; }
+glm::vec2 bezier(glm::vec2 a, glm::vec2 c, glm::vec2 b, float t) {
+    return (1 - t) * (1 - t) * a + 2 * (1 - t) * t * c + t * t * b;
+}
 glm::vec2 bezierTangent(glm::vec2 a, glm::vec2 c, glm::vec2 b, float t) {
     return glm::normalize(2 * (1 - t) * (c - a) + 2 * t * (b - c));
 }
@@ -122,7 +126,9 @@ RgbaImage makeLeafCluster(std::uint32_t seed) {
     const glm::vec3 twigColour(0.33f, 0.24f, 0.14f);
     const glm::vec2 root(128.0f, 244.0f);
     const int twigs = 8;
-    struct Twig { glm::vec2 a, c, b; };
+    struct Twig {
+        glm::vec2 a, c, b;
+    };
     std::vector<Twig> layout;
     for (int i = 0; i < twigs; ++i) {
         const float spread = (static_cast<float>(i) / static_cast<float>(twigs - 1) - 0.5f) * 2.0f;  // -1..1
@@ -189,7 +195,7 @@ RgbaImage makeBark(std::uint32_t seed) {
     for (int y = 0; y < 128; ++y)
         for (int x = 0; x < 128; ++x) {
             const float u = static_cast<float>(x) / 128.0f, v = static_cast<float>(y) / 128.0f;
-            const float ridges = fbm(u, v, 12, 2, 4, seed);      // vertical fibres
+            const float ridges = fbm(u, v, 12, 2, 4, seed);  // vertical fibres
             const float detail = fbm(u, v, 32, 16, 2, seed + 9u);
             const float crack = smoothstep(0.30f, 0.42f, ridges);
             const glm::vec3 colour = glm::mix(dark, light, ridges * 0.8f + detail * 0.2f) * (0.45f + 0.55f * crack);
@@ -261,7 +267,8 @@ std::vector<std::uint8_t> encodePng(const RgbaImage& image) {
     OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:UnassociatedAlpha", 1);  // the codes are straight already: store as is
     spec.attribute("png:compressionLevel", 9);
-    if (!out->open("texture.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) || !out->close())
+    if (!out->open("texture.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
+        !out->close())
         throw engine::Error("encodePng: " + out->geterror());
     return {bytes.begin(), bytes.end()};
 }

@@ -16,9 +16,9 @@ namespace bench {
 namespace {
 
 constexpr double kPanelWidth = 480, kPanelHeight = 360, kMargin = 20, kMarkerRadius = 5;
-constexpr double kLabelHeight = 14;  // 12 px text: ascent + descent, with a pixel of air
-constexpr double kLabelBaseline = 11;  // from the label box's top
-constexpr double kBoldFactor = 1.12;   // bold glyphs are wider than regular ones
+constexpr double kLabelHeight = 14;                        // 12 px text: ascent + descent, with a pixel of air
+constexpr double kLabelBaseline = 11;                      // from the label box's top
+constexpr double kBoldFactor = 1.12;                       // bold glyphs are wider than regular ones
 constexpr double kTitleFontSize = 15, kHeaderHeight = 56;  // the title line and the legend line
 
 // DejaVu Sans advance widths of printable ASCII (32..126), in 1/2048 em.
@@ -126,10 +126,10 @@ void placeLabels(ChartPanel& p) {
         const std::string& text = m.technique;
         const double w = chartTextWidth(text, kLabelFontSize), gap = kMarkerRadius + 3;
         const std::array<ChartBox, 8> beside{
-            labelBox(text, m.x + gap, m.y),                                  // right
-            labelBox(text, m.x - gap - w, m.y),                              // left
-            labelBox(text, m.x - w / 2, m.y - gap - kLabelHeight / 2),       // above
-            labelBox(text, m.x - w / 2, m.y + gap + kLabelHeight / 2),       // below
+            labelBox(text, m.x + gap, m.y),                                   // right
+            labelBox(text, m.x - gap - w, m.y),                               // left
+            labelBox(text, m.x - w / 2, m.y - gap - kLabelHeight / 2),        // above
+            labelBox(text, m.x - w / 2, m.y + gap + kLabelHeight / 2),        // below
             labelBox(text, m.x + gap - 2, m.y - gap - kLabelHeight / 2 + 2),  // above right
             labelBox(text, m.x + gap - 2, m.y + gap + kLabelHeight / 2 - 2),  // below right
             labelBox(text, m.x - gap + 2 - w, m.y - gap - kLabelHeight / 2 + 2),
@@ -220,8 +220,7 @@ std::string backendColor(std::size_t index) {
 void drawMarker(std::ostringstream& s, std::size_t backend, double x, double y, bool filled, const std::string& title) {
     const std::string color = backendColor(backend), fill = filled ? color : "white";
     const double r = kMarkerRadius;
-    if (backend == 0)
-        s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"" << r << "\"";
+    if (backend == 0) s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"" << r << "\"";
     else if (backend == 1)
         s << "<rect x=\"" << x - r << "\" y=\"" << y - r << "\" width=\"" << 2 * r << "\" height=\"" << 2 * r << "\"";
     else
@@ -279,12 +278,15 @@ void drawPanel(std::ostringstream& s, const Chart& chart, const ChartPanel& p) {
           << "\" stroke=\"#333\" stroke-width=\"0.75\" stroke-dasharray=\"1 2\"/>\n";
     }
     for (const ChartMarker& m : p.markers) {
-        const auto b = std::size_t(std::find(chart.backends.begin(), chart.backends.end(), m.backend) - chart.backends.begin());
-        drawMarker(s, b, m.x, m.y, m.onFront,
-                   m.technique + " (" + m.backend + "): " + num(m.timeMs, "%.2f") + " ms, ꟻLIP " + num(m.error, "%.4f"));
+        const auto b =
+            std::size_t(std::find(chart.backends.begin(), chart.backends.end(), m.backend) - chart.backends.begin());
+        drawMarker(
+            s, b, m.x, m.y, m.onFront,
+            m.technique + " (" + m.backend + "): " + num(m.timeMs, "%.2f") + " ms, ꟻLIP " + num(m.error, "%.4f"));
     }
     for (const ChartLabel& l : p.labels)
-        s << "<text x=\"" << l.box.x0 << "\" y=\"" << l.box.y0 + kLabelBaseline << "\">" << xmlEscape(l.text) << "</text>\n";
+        s << "<text x=\"" << l.box.x0 << "\" y=\"" << l.box.y0 + kLabelBaseline << "\">" << xmlEscape(l.text)
+          << "</text>\n";
     for (const ChartOverflow& o : p.overflow)
         s << "<text x=\"" << o.x << "\" y=\"" << o.baseline << "\">" << xmlEscape(o.text) << "</text>\n";
     s << "</g>\n";
@@ -316,7 +318,8 @@ Chart layoutChart(const std::vector<BenchRow>& rows) {
         if (charted(r) && std::find(chart.backends.begin(), chart.backends.end(), r.backend) == chart.backends.end())
             chart.backends.push_back(r.backend);
     for (const std::string& scene : distinct(rows, &BenchRow::scene)) {
-        const bool any = std::any_of(rows.begin(), rows.end(), [&](const BenchRow& r) { return r.scene == scene && charted(r); });
+        const bool any =
+            std::any_of(rows.begin(), rows.end(), [&](const BenchRow& r) { return r.scene == scene && charted(r); });
         if (any) chart.panels.push_back(layoutPanel(scene, rows, chart.backends));
     }
 
@@ -356,8 +359,7 @@ std::string chartSvg(const Chart& chart) {
       << "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"12\">\n";
     s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     s << "<text x=\"" << kMargin << "\" y=\"" << kMargin + 14 << "\" font-size=\"" << kTitleFontSize
-      << "\" font-weight=\"bold\">"
-      << xmlEscape(chart.header[0]) << "</text>\n";
+      << "\" font-weight=\"bold\">" << xmlEscape(chart.header[0]) << "</text>\n";
     // Legend: one marker per backend, then the second header line.
     double x = kMargin;
     const double legendY = kMargin + 36;

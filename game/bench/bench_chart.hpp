@@ -68,7 +68,7 @@ struct Chart {
     double width = 0.0, height = 0.0;
     std::vector<std::string> backends;  // in the order of the run; each has its own shape
     std::vector<ChartPanel> panels;
-    std::vector<std::string> header;    // title and legend lines
+    std::vector<std::string> header;  // title and legend lines
 };
 
 inline constexpr double kLabelFontSize = 12.0;

@@ -21,7 +21,8 @@ ViewUpload::ViewUpload(Backend& backend, BenchScene& scene, const BenchCamera& c
       foliage_(backend) {
     for (const engine::scene::DrawBatch& b : lists_.opaque) {
         const auto bytes = std::as_bytes(std::span(b.instances));
-        opaqueInstances_.push_back(backend.createBuffer({"opaque instances", BufferKind::Instance, bytes.size()}, bytes));
+        opaqueInstances_.push_back(
+            backend.createBuffer({"opaque instances", BufferKind::Instance, bytes.size()}, bytes));
     }
     draws_ = foliage_.upload(lists_, scene.library());
 }
@@ -62,7 +63,8 @@ FrameDrawer::~FrameDrawer() {
     backend_.destroy(twoSided_);
 }
 
-void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Technique* technique, const ViewUpload& view) {
+void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Technique* technique,
+                       const ViewUpload& view) {
     FrameGraph graph;
     const FrameTargets::InGraph in = targets.importInto(graph);
     struct Drawn {

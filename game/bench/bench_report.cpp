@@ -40,10 +40,11 @@ std::string primaryBackend(const std::vector<BenchRow>& rows) {
 }  // namespace
 
 const std::vector<std::string>& csvColumns() {
-    static const std::vector<std::string> columns{
-        "scene",       "technique",   "backend",    "width",     "height",    "time_ms_median", "time_ms_min",
-        "time_ms_max", "cpu_ms_median", "rmse_linear", "psnr_linear", "rmse_srgb", "psnr_srgb", "ssim",           "flip_mean",
-        "flicker",     "flicker_raw", "peak_mem_mb", "peak_rss_mb", "note"};
+    static const std::vector<std::string> columns{"scene",         "technique",      "backend",     "width",
+                                                  "height",        "time_ms_median", "time_ms_min", "time_ms_max",
+                                                  "cpu_ms_median", "rmse_linear",    "psnr_linear", "rmse_srgb",
+                                                  "psnr_srgb",     "ssim",           "flip_mean",   "flicker",
+                                                  "flicker_raw",   "peak_mem_mb",    "peak_rss_mb", "note"};
     return columns;
 }
 
@@ -54,10 +55,10 @@ void writeCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
     for (const BenchRow& r : rows) {
         out << csvField(r.scene) << ',' << csvField(r.technique) << ',' << r.backend << ',' << r.width << ','
             << r.height << ',' << num(r.timeMedianMs, "%.3f") << ',' << num(r.timeMinMs, "%.3f") << ','
-            << num(r.timeMaxMs, "%.3f") << ',' << num(r.cpuMedianMs, "%.3f") << ',' << num(r.rmseLinear) << ',' << num(r.psnrLinear) << ','
-            << num(r.rmseSrgb) << ',' << num(r.psnrSrgb) << ',' << num(r.ssim) << ',' << num(r.flipMean) << ','
-            << num(r.flicker) << ',' << num(r.flickerRaw) << ',' << num(r.peakMemMb, "%.3f") << ','
-            << num(r.peakRssMb, "%.1f") << ',' << csvField(r.note) << "\n";
+            << num(r.timeMaxMs, "%.3f") << ',' << num(r.cpuMedianMs, "%.3f") << ',' << num(r.rmseLinear) << ','
+            << num(r.psnrLinear) << ',' << num(r.rmseSrgb) << ',' << num(r.psnrSrgb) << ',' << num(r.ssim) << ','
+            << num(r.flipMean) << ',' << num(r.flicker) << ',' << num(r.flickerRaw) << ',' << num(r.peakMemMb, "%.3f")
+            << ',' << num(r.peakRssMb, "%.1f") << ',' << csvField(r.note) << "\n";
     }
 }
 
@@ -94,10 +95,9 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
                                                  num(r.timeMaxMs, "%.2f") + ")"
                                            : "";
             out << "| " << r.scene << " | " << r.technique << " | " << time << " | " << num(r.cpuMedianMs, "%.1f")
-                << " | " << num(r.rmseLinear, "%.5f")
-                << " | " << num(r.psnrSrgb, "%.2f") << " | " << num(r.ssim, "%.4f") << " | "
-                << num(r.flipMean, "%.4f") << " | " << num(r.flicker, "%.5f") << " | " << num(r.peakMemMb, "%.2f")
-                << " | " << num(r.peakRssMb, "%.1f") << " | " << mdCell(r.note) << " |\n";
+                << " | " << num(r.rmseLinear, "%.5f") << " | " << num(r.psnrSrgb, "%.2f") << " | "
+                << num(r.ssim, "%.4f") << " | " << num(r.flipMean, "%.4f") << " | " << num(r.flicker, "%.5f") << " | "
+                << num(r.peakMemMb, "%.2f") << " | " << num(r.peakRssMb, "%.1f") << " | " << mdCell(r.note) << " |\n";
         }
         out << "\n";
     }
@@ -110,11 +110,13 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
         if (!r || !has(r->*field)) return std::nullopt;
         return r->*field;
     };
-    out << "## goals (" << primary << " backend)\n\nStatus from the ratio (wall time for time goals); for time goals "
+    out << "## goals (" << primary
+        << " backend)\n\nStatus from the ratio (wall time for time goals); for time goals "
            "the ratio of median CPU times is shown too, which other processes on the machine disturb less.\n\n"
            "| goal | ratio | CPU-time ratio | target | status |\n|---|---:|---:|---|---|\n";
     auto goal = [&](const std::string& what, std::optional<double> a, std::optional<double> b, bool atMost,
-                    double target, std::optional<double> cpuA = std::nullopt, std::optional<double> cpuB = std::nullopt) {
+                    double target, std::optional<double> cpuA = std::nullopt,
+                    std::optional<double> cpuB = std::nullopt) {
         const std::string cpuRatio = cpuA && cpuB && *cpuB > 0.0 ? num(*cpuA / *cpuB, "%.3f") : "";
         std::string ratio = "n/a", status = "not measured";
         if (a && b && *b != 0.0) {
@@ -124,8 +126,8 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
         } else if (a && b) {
             status = "undefined (division by zero)";
         }
-        out << "| " << what << " | " << ratio << " | " << cpuRatio << " | " << (atMost ? "<= " : ">= ") << num(target, "%.2f") << " | "
-            << status << " |\n";
+        out << "| " << what << " | " << ratio << " | " << cpuRatio << " | " << (atMost ? "<= " : ">= ")
+            << num(target, "%.2f") << " | " << status << " |\n";
     };
     auto v = [&](const char* scene, const char* technique, double BenchRow::*field) {
         return value(scene, technique, field, primary);
@@ -134,8 +136,8 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
          v("forest", "alpha-test", &BenchRow::flipMean), true, 0.5);
     goal("forest: RMSE ssam / alpha-test", v("forest", "ssam", &BenchRow::rmseLinear),
          v("forest", "alpha-test", &BenchRow::rmseLinear), true, 0.5);
-    goal("forest: ꟻLIP ssam / wboit", v("forest", "ssam", &BenchRow::flipMean), v("forest", "wboit", &BenchRow::flipMean),
-         true, 1.0);
+    goal("forest: ꟻLIP ssam / wboit", v("forest", "ssam", &BenchRow::flipMean),
+         v("forest", "wboit", &BenchRow::flipMean), true, 1.0);
     goal("forest: RMSE ssam / wboit", v("forest", "ssam", &BenchRow::rmseLinear),
          v("forest", "wboit", &BenchRow::rmseLinear), true, 1.0);
     goal("forest: flicker ssam / alpha-test", v("forest", "ssam", &BenchRow::flicker),
@@ -163,9 +165,9 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
         for (const std::string& scene : distinct(rows, &BenchRow::scene))
             goal(scene + ": time ssam soft / gl", value(scene, "ssam", &BenchRow::timeMedianMs, "soft"),
                  value(scene, "ssam", &BenchRow::timeMedianMs, "gl"), true, 0.5,
-                 value(scene, "ssam", &BenchRow::cpuMedianMs, "soft"), value(scene, "ssam", &BenchRow::cpuMedianMs, "gl"));
-    else
-        out << "| time ssam soft / gl | n/a |  | <= 0.50 | not measured (run with --backend soft,gl) |\n";
+                 value(scene, "ssam", &BenchRow::cpuMedianMs, "soft"),
+                 value(scene, "ssam", &BenchRow::cpuMedianMs, "gl"));
+    else out << "| time ssam soft / gl | n/a |  | <= 0.50 | not measured (run with --backend soft,gl) |\n";
     out << "\n";
 
     if (both) {

@@ -76,14 +76,16 @@ ReferenceFrames computeReference(Backend& soft, BenchScene& scene, const SceneVi
     ReferenceFrames ref;
     try {
         auto technique = transparency::createTechnique(TechniqueKind::Reference, soft, withSceneDepth({}));
-        engine::render::FrameTargets targets(soft, {o.width, o.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
+        engine::render::FrameTargets targets(
+            soft, {o.width, o.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
         FrameDrawer drawer(soft, scene.library());
         drawer.draw(targets, technique.get(), *views.still);
         soft.takeTimings();
         ref.still = frameImage(soft, targets);
         if (!o.imagesDir.empty()) {
             std::filesystem::create_directories(o.imagesDir);
-            engine::capture::writePng(o.imagesDir / (std::string(sceneName(scene.kind())) + "_reference.png"), *ref.still);
+            engine::capture::writePng(o.imagesDir / (std::string(sceneName(scene.kind())) + "_reference.png"),
+                                      *ref.still);
         }
         if (!views.pan.empty())
             ref.panFlicker = engine::capture::temporalFlicker(panImages(soft, drawer, targets, technique.get(), views));
@@ -119,7 +121,8 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         const std::unique_ptr<Backend> counting = makeCountingBackend(backend, count);
         const RssPeak rss;
         std::unique_ptr<transparency::Technique> technique;
-        if (subject.kind) technique = transparency::createTechnique(*subject.kind, *counting, withSceneDepth(subject.options));
+        if (subject.kind)
+            technique = transparency::createTechnique(*subject.kind, *counting, withSceneDepth(subject.options));
         engine::render::FrameTargets targets(
             *counting, {o.width, o.height, technique ? technique->opaqueSamples() : 1, Format::RGBA8_SRGB, kDepthFunc});
         FrameDrawer drawer(backend, scene.library());
@@ -134,13 +137,12 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
             drawer.draw(targets, technique.get(), *views.still);
             // GL: waiting for the passes' GL_TIME_ELAPSED results also waits for the frame.
             const std::vector<PassTiming> timings = backend.takeTimings();
-            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             const double cpuMs = processCpuMs() - cpuStart;
             const bool timed = i >= o.warmup;
-            if (timed)
-                std::printf(" rep %d/%d %.1f ms", i - o.warmup + 1, o.reps, ms);
-            else
-                std::printf(" warm-up %.1f ms", ms);
+            if (timed) std::printf(" rep %d/%d %.1f ms", i - o.warmup + 1, o.reps, ms);
+            else std::printf(" warm-up %.1f ms", ms);
             std::fflush(stdout);
             if (!timed) continue;
             times.push_back(ms);
@@ -182,7 +184,8 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
             row.note = ref.note;
         }
         if (!views.pan.empty()) {
-            row.flickerRaw = engine::capture::temporalFlicker(panImages(backend, drawer, targets, technique.get(), views));
+            row.flickerRaw =
+                engine::capture::temporalFlicker(panImages(backend, drawer, targets, technique.get(), views));
             if (ref.panFlicker) row.flicker = row.flickerRaw - *ref.panFlicker;
         }
         row.peakMemMb = double(count.peakBytes()) / (1024.0 * 1024.0);
@@ -258,7 +261,8 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
             }
             BenchScene& scene = ownScene ? *ownScene : softScene;
             const SceneViews& views = ownScene ? ownViews : softViews;
-            for (const BenchSubject& s : o.subjects) rows.push_back(measure(backend, backendName, scene, views, s, ref, o));
+            for (const BenchSubject& s : o.subjects)
+                rows.push_back(measure(backend, backendName, scene, views, s, ref, o));
         }
     }
     return rows;

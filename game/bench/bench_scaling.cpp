@@ -34,7 +34,8 @@ void timeFrames(Backend& backend, BenchScene& scene, const ViewUpload& view, Tec
     transparency::TechniqueOptions options;
     options.ssam.depthFunc = kDepthFunc;
     auto technique = transparency::createTechnique(kind, backend, options);
-    FrameTargets targets(backend, {size.width, size.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
+    FrameTargets targets(backend,
+                         {size.width, size.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});
     FrameDrawer drawer(backend, scene.library());
     backend.takeTimings();
     std::vector<double> wall, cpu;
@@ -55,8 +56,8 @@ void measurePoint(Backend& backend, const std::string& backendName, BenchScene& 
                   const std::string& axis, ScalingSize size, int layers, const ScalingOptions& o,
                   std::vector<ScalingRow>& rows) {
     for (TechniqueKind kind : kTechniques) {
-        ScalingRow row{axis, backendName, transparency::techniqueName(kind), size.width, size.height, layers,
-                       kNaN, kNaN, {}};
+        ScalingRow row{axis, backendName, transparency::techniqueName(kind), size.width, size.height, layers, kNaN,
+                       kNaN, {}};
         try {
             timeFrames(backend, scene, view, kind, size, o, row);
         } catch (const std::exception& e) {
@@ -126,7 +127,8 @@ std::vector<ScalingRow> runScaling(const ScalingOptions& o) {
         }
         for (int n : o.layers) {
             BenchScene cards(*backend, n, o.contentDir);
-            const ViewUpload view(*backend, cards, cards.camera(float(o.layersSize.width) / float(o.layersSize.height)));
+            const ViewUpload view(*backend, cards,
+                                  cards.camera(float(o.layersSize.width) / float(o.layersSize.height)));
             measurePoint(*backend, backendName, cards, view, "layers", o.layersSize, n, o, layerRows);
         }
     }
@@ -146,8 +148,8 @@ std::vector<ScalingRow> runScaling(const ScalingOptions& o) {
 }
 
 const std::vector<std::string>& scalingCsvColumns() {
-    static const std::vector<std::string> columns{"axis",      "backend",   "technique",    "width",
-                                                  "height",    "megapixels", "layers",      "median_ms",
+    static const std::vector<std::string> columns{"axis",          "backend",       "technique",    "width",
+                                                  "height",        "megapixels",    "layers",       "median_ms",
                                                   "cpu_median_ms", "ms_per_mpixel", "ms_per_layer", "note"};
     return columns;
 }
@@ -176,7 +178,9 @@ void writeScalingSvg(std::ostream& out, const std::vector<ScalingRow>& rows) {
     for (int p = 0; p < 2; ++p) {
         const std::string axis = axes[p];
         const double ox = p * kPanelW;
-        auto xOf = [&](const ScalingRow& r) { return axis == "pixels" ? double(r.width) * r.height * 1e-6 : double(r.layers); };
+        auto xOf = [&](const ScalingRow& r) {
+            return axis == "pixels" ? double(r.width) * r.height * 1e-6 : double(r.layers);
+        };
         double xMax = 0.0, yMax = 0.0;
         std::map<std::string, std::vector<const ScalingRow*>> lines;  // backend/technique -> points
         for (const ScalingRow& r : rows) {

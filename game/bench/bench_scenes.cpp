@@ -103,8 +103,8 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             racer::placeModel(registry_, broadleaf, base, 0.6f, 1.0f);
             const scene::Aabb b = library_.bounds(broadleaf);
             const float height = 0.6f * (b.max.y - b.min.y);
-            const glm::vec3 centre = base + glm::vec3(0.5f * (b.min.x + b.max.x), b.max.y - 0.5f * height,
-                                                      0.5f * (b.min.z + b.max.z));
+            const glm::vec3 centre =
+                base + glm::vec3(0.5f * (b.min.x + b.max.x), b.max.y - 0.5f * height, 0.5f * (b.min.z + b.max.z));
             const float distance = 0.5f * height / halfFovTangent();
             target_ = centre;
             eye_ = centre - glm::vec3(0.0f, 0.0f, distance);
@@ -130,7 +130,7 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             }
             eye_ = onGround(0.0f, -4.0f) + glm::vec3(0.0f, 1.8f, 0.0f);
             target_ = onGround(0.0f, 30.0f) + glm::vec3(0.0f, 8.0f, 0.0f);  // into the canopies
-            panStep_ = 0.5f * 15.0f * 2.0f * halfFovTangent() / 720.0f;  // half a pixel at 15 m
+            panStep_ = 0.5f * 15.0f * 2.0f * halfFovTangent() / 720.0f;     // half a pixel at 15 m
             break;
         }
         case SceneKind::Vista: {
@@ -146,8 +146,7 @@ BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::
             target_ = onGround(0.0f, 600.0f) + glm::vec3(0.0f, 10.0f, 0.0f);
             break;
         }
-        case SceneKind::Layers:
-            throw Error("the layers scene is built from its layer count, not by kind");
+        case SceneKind::Layers: throw Error("the layers scene is built from its layer count, not by kind");
         case SceneKind::Empty: {
             // Foliage exists but only behind the camera: extraction culls it, so every
             // technique should cost what the opaque frame costs (its passes are empty).

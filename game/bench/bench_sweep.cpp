@@ -10,9 +10,9 @@ namespace bench {
 namespace {
 
 bool sameKnobs(const ssam::Config& a, const ssam::Config& b) {
-    return a.maskLerp == b.maskLerp && a.squareMask == b.squareMask &&
-           a.colorAlphaReference == b.colorAlphaReference && a.maskPrecision == b.maskPrecision &&
-           a.foliageClearColor == b.foliageClearColor && a.depthFunc == b.depthFunc;
+    return a.maskLerp == b.maskLerp && a.squareMask == b.squareMask && a.colorAlphaReference == b.colorAlphaReference &&
+           a.maskPrecision == b.maskPrecision && a.foliageClearColor == b.foliageClearColor &&
+           a.depthFunc == b.depthFunc;
 }
 
 template <typename T>
@@ -101,10 +101,8 @@ SweepRun runSweep(BenchOptions options, const std::vector<SweepSetting>& setting
     SweepRun run;
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const std::size_t k = i % block;
-        if (k < settings.size())
-            run.results.push_back({settings[k], rows[i]});
-        else
-            run.comparison.push_back(rows[i]);
+        if (k < settings.size()) run.results.push_back({settings[k], rows[i]});
+        else run.comparison.push_back(rows[i]);
     }
     return run;
 }

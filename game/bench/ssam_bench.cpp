@@ -63,7 +63,8 @@ std::vector<std::string> splitList(const std::string& list, const char* flag) {
     while (start <= list.size()) {
         const std::size_t comma = std::min(list.find(',', start), list.size());
         const std::string item = list.substr(start, comma - start);
-        if (item.empty()) throw engine::UsageError(std::string(flag) + " '" + list + "': empty entry in the comma list");
+        if (item.empty())
+            throw engine::UsageError(std::string(flag) + " '" + list + "': empty entry in the comma list");
         items.push_back(item);
         start = comma + 1;
     }
@@ -72,7 +73,8 @@ std::vector<std::string> splitList(const std::string& list, const char* flag) {
 
 std::string allTechniqueNames() {
     std::string names;
-    for (auto k : transparency::allTechniques()) names += std::string(names.empty() ? "" : ", ") + transparency::techniqueName(k);
+    for (auto k : transparency::allTechniques())
+        names += std::string(names.empty() ? "" : ", ") + transparency::techniqueName(k);
     return names;
 }
 
@@ -141,7 +143,8 @@ SweepGrid parseSweepGrid(const Options& o) {
                 known = true;
             }
         if (!known)
-            throw engine::UsageError("--sweep-precision: '" + item + "' for maskPrecision (known: rgba8, rgba16f, rg16f)");
+            throw engine::UsageError("--sweep-precision: '" + item +
+                                     "' for maskPrecision (known: rgba8, rgba16f, rg16f)");
     }
     return g;
 }
@@ -268,7 +271,9 @@ int main(int argc, char** argv) {
     app.add_option("--backend", o.backends, "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU)")
         ->capture_default_str();
     app.add_option("--size", o.size, "frame size WIDTHxHEIGHT")->capture_default_str();
-    app.add_option("--reps", o.reps, "timed repetitions per technique")->check(CLI::Range(1, 10000))->capture_default_str();
+    app.add_option("--reps", o.reps, "timed repetitions per technique")
+        ->check(CLI::Range(1, 10000))
+        ->capture_default_str();
     app.add_option("--warmup", o.warmup, "untimed frames before the repetitions")
         ->check(CLI::Range(0, 10000))
         ->capture_default_str();

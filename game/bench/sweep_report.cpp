@@ -44,7 +44,8 @@ double rankValue(double v, bool higherIsBetter) {
 const SweepResult* best(const std::vector<const SweepResult*>& results, double BenchRow::*field, bool higherIsBetter) {
     const SweepResult* b = nullptr;
     for (const SweepResult* r : results)
-        if (has(r->row.*field) && (!b || rankValue(r->row.*field, higherIsBetter) < rankValue(b->row.*field, higherIsBetter)))
+        if (has(r->row.*field) &&
+            (!b || rankValue(r->row.*field, higherIsBetter) < rankValue(b->row.*field, higherIsBetter)))
             b = r;
     return b;
 }
@@ -115,8 +116,8 @@ void knobTable(std::ostream& out, const std::vector<const SweepResult*>& results
         for (const SweepResult* r : alone)
             values += std::string(values.empty() ? "" : "; ") + knobs()[i].print(r->setting.config) + ": " +
                       num(r->row.flipMean, "%.4f") + " / " + num(r->row.rmseSrgb, "%.4f");
-        out << "| " << knobs()[i].name << " | " << values << " | " << range(alone, &BenchRow::flipMean, "%.4f")
-            << " | " << range(alone, &BenchRow::rmseSrgb, "%.4f") << " |\n";
+        out << "| " << knobs()[i].name << " | " << values << " | " << range(alone, &BenchRow::flipMean, "%.4f") << " | "
+            << range(alone, &BenchRow::rmseSrgb, "%.4f") << " |\n";
     }
     out << "\n";
 }
@@ -156,8 +157,11 @@ void acrossScenesTable(std::ostream& out, const std::vector<SweepResult>& result
                      [](const Summary& a, const Summary& b) { return a.logFlip < b.logFlip; });
     std::string scenes;
     for (const auto& [scene, row] : defaults) scenes += std::string(scenes.empty() ? "" : ", ") + scene;
-    out << "## all scenes (" << backend << " backend)\n\nEach setting's error relative to the defaults', geometric "
-           "mean over " << scenes << " (1 = as the defaults, 0.70 = 30% lower); sorted by ꟻLIP.\n\n"
+    out << "## all scenes (" << backend
+        << " backend)\n\nEach setting's error relative to the defaults', geometric "
+           "mean over "
+        << scenes
+        << " (1 = as the defaults, 0.70 = 30% lower); sorted by ꟻLIP.\n\n"
            "| # | maskLerp | squareMask | colour ref | mask | ꟻLIP / defaults | RMSE sRGB / defaults | |\n"
            "|---:|---:|---|---:|---|---:|---:|---|\n";
     int rank = 0;
@@ -175,10 +179,10 @@ void acrossScenesTable(std::ostream& out, const std::vector<SweepResult>& result
 
 const std::vector<std::string>& sweepCsvColumns() {
     static const std::vector<std::string> columns{
-        "scene",         "backend",      "setting",        "mask_lerp",   "square_mask", "color_alpha_reference",
-        "mask_precision", "is_default",  "width",          "height",      "time_ms_median", "cpu_ms_median",
-        "rmse_linear",   "psnr_linear",  "rmse_srgb",      "psnr_srgb",   "ssim",        "flip_mean",
-        "flicker",       "flicker_raw",  "peak_mem_mb",    "note"};
+        "scene",          "backend",     "setting",     "mask_lerp", "square_mask",    "color_alpha_reference",
+        "mask_precision", "is_default",  "width",       "height",    "time_ms_median", "cpu_ms_median",
+        "rmse_linear",    "psnr_linear", "rmse_srgb",   "psnr_srgb", "ssim",           "flip_mean",
+        "flicker",        "flicker_raw", "peak_mem_mb", "note"};
     return columns;
 }
 
@@ -191,11 +195,11 @@ void writeSweepCsv(std::ostream& out, const std::vector<SweepResult>& results) {
         const ssam::Config& c = s.setting.config;
         out << csvField(r.scene) << ',' << r.backend << ',' << csvField(s.setting.name) << ','
             << num(double(c.maskLerp)) << ',' << (c.squareMask ? 1 : 0) << ',' << num(double(c.colorAlphaReference))
-            << ',' << ssam::maskPrecisionName(c.maskPrecision) << ',' << (s.setting.isDefault ? 1 : 0) << ','
-            << r.width << ',' << r.height << ',' << num(r.timeMedianMs, "%.3f") << ',' << num(r.cpuMedianMs, "%.3f")
-            << ',' << num(r.rmseLinear) << ',' << num(r.psnrLinear) << ',' << num(r.rmseSrgb) << ','
-            << num(r.psnrSrgb) << ',' << num(r.ssim) << ',' << num(r.flipMean) << ',' << num(r.flicker) << ','
-            << num(r.flickerRaw) << ',' << num(r.peakMemMb, "%.3f") << ',' << csvField(r.note) << "\n";
+            << ',' << ssam::maskPrecisionName(c.maskPrecision) << ',' << (s.setting.isDefault ? 1 : 0) << ',' << r.width
+            << ',' << r.height << ',' << num(r.timeMedianMs, "%.3f") << ',' << num(r.cpuMedianMs, "%.3f") << ','
+            << num(r.rmseLinear) << ',' << num(r.psnrLinear) << ',' << num(r.rmseSrgb) << ',' << num(r.psnrSrgb) << ','
+            << num(r.ssim) << ',' << num(r.flipMean) << ',' << num(r.flicker) << ',' << num(r.flickerRaw) << ','
+            << num(r.peakMemMb, "%.3f") << ',' << csvField(r.note) << "\n";
     }
 }
 
@@ -232,8 +236,8 @@ void writeSweepMarkdown(std::ostream& out, const SweepRun& run, const RunInfo& i
                        "time ms | note |\n|---|---:|---:|---:|---:|---:|---:|---|\n";
             any = true;
             out << "| " << r.technique << " | " << num(r.flipMean, "%.4f") << " | " << num(r.rmseSrgb, "%.4f") << " | "
-                << num(r.rmseLinear, "%.4f") << " | " << num(r.ssim, "%.4f") << " | " << num(r.flicker, "%.5f")
-                << " | " << num(r.timeMedianMs, "%.1f") << " | " << mdCell(r.note) << " |\n";
+                << num(r.rmseLinear, "%.4f") << " | " << num(r.ssim, "%.4f") << " | " << num(r.flicker, "%.5f") << " | "
+                << num(r.timeMedianMs, "%.1f") << " | " << mdCell(r.note) << " |\n";
         }
         if (any) out << "\n";
     }

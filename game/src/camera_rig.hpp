@@ -23,8 +23,8 @@ struct CameraView {
 // The free camera's pose; the default is the overview every run starts from.
 struct FreeCamera {
     glm::vec3 position{0.0f, 60.0f, -330.0f};
-    float yaw = 0.0f;     // radians, 0 looks along +z, positive turns left (towards +x)
-    float pitch = -0.12f; // radians, positive looks up
+    float yaw = 0.0f;      // radians, 0 looks along +z, positive turns left (towards +x)
+    float pitch = -0.12f;  // radians, positive looks up
 };
 
 // One frame's fly controls (window_keys.hpp maps keys to them). Each axis is -1, 0 or 1:
@@ -38,11 +38,11 @@ struct FlyControls {
     bool fast = false;
 };
 
-inline constexpr float kFlySpeed = 20.0f;                  // metres per second
-inline constexpr float kFlyFastFactor = 5.0f;              // with Shift
-inline constexpr float kFlyTurnRate = 1.5f;                // radians per second (arrow keys)
-inline constexpr float kFlyLookPerPixel = 0.0025f;         // radians per pixel of mouse motion
-inline constexpr float kFlyMaxPitch = glm::radians(89.0f); // never straight up/down: lookAt's up would be parallel
+inline constexpr float kFlySpeed = 20.0f;                   // metres per second
+inline constexpr float kFlyFastFactor = 5.0f;               // with Shift
+inline constexpr float kFlyTurnRate = 1.5f;                 // radians per second (arrow keys)
+inline constexpr float kFlyLookPerPixel = 0.0025f;          // radians per pixel of mouse motion
+inline constexpr float kFlyMaxPitch = glm::radians(89.0f);  // never straight up/down: lookAt's up would be parallel
 
 // The unit view direction of a pose.
 glm::vec3 viewDirection(const FreeCamera& camera);

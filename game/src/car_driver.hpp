@@ -35,13 +35,13 @@ struct CarPhysics {
     float acceleration = 10.0f;  // m/s^2 at full throttle
     float braking = 22.0f;       // m/s^2 at full brake
     float reverseAcceleration = 4.0f;
-    float maxSpeed = 48.0f;      // m/s
-    float maxReverse = 8.0f;     // m/s
-    float rolling = 0.6f;        // m/s^2 of rolling resistance (stops a coasting car)
-    float drag = 0.004f;         // 1/m: air drag, drag * speed^2 in m/s^2
-    float maxWheelAngle = 0.6f;  // radians, at walking pace
+    float maxSpeed = 48.0f;           // m/s
+    float maxReverse = 8.0f;          // m/s
+    float rolling = 0.6f;             // m/s^2 of rolling resistance (stops a coasting car)
+    float drag = 0.004f;              // 1/m: air drag, drag * speed^2 in m/s^2
+    float maxWheelAngle = 0.6f;       // radians, at walking pace
     float steerFalloffSpeed = 12.0f;  // m/s: the wheel angle is max / (1 + (speed / this)^2)
-    float wheelbase = 2.6f;      // m
+    float wheelbase = 2.6f;           // m
 };
 
 // The ground's height (world y) under a point (x, z).

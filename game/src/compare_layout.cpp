@@ -18,7 +18,9 @@ std::vector<hud::PixelRect> outline(const hud::PixelRect& r, int border) {
             {r.x + r.width, r.y, border, r.height}};
 }
 
-hud::PixelRect grown(const hud::PixelRect& r, int by) { return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by}; }
+hud::PixelRect grown(const hud::PixelRect& r, int by) {
+    return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by};
+}
 
 }  // namespace
 
@@ -75,12 +77,14 @@ hud::PixelRect mostDifferentCrop(const std::vector<float>& difference, int width
         double row = 0.0;
         for (int x = 0; x < width; ++x) {
             row += difference[std::size_t(y) * std::size_t(width) + std::size_t(x)];
-            sat[(std::size_t(y) + 1) * stride + std::size_t(x) + 1] = sat[std::size_t(y) * stride + std::size_t(x) + 1] + row;
+            sat[(std::size_t(y) + 1) * stride + std::size_t(x) + 1] =
+                sat[std::size_t(y) * stride + std::size_t(x) + 1] + row;
         }
     }
     auto sum = [&](int x, int y) {
         const std::size_t a = std::size_t(y) * stride + std::size_t(x), b = a + std::size_t(crop.x);
-        const std::size_t c = (std::size_t(y) + std::size_t(crop.y)) * stride + std::size_t(x), d = c + std::size_t(crop.x);
+        const std::size_t c = (std::size_t(y) + std::size_t(crop.y)) * stride + std::size_t(x),
+                          d = c + std::size_t(crop.x);
         return sat[d] - sat[b] - sat[c] + sat[a];
     };
     double bestSum = -1.0;
@@ -90,8 +94,8 @@ hud::PixelRect mostDifferentCrop(const std::vector<float>& difference, int width
     return best;
 }
 
-hud::OverlayContent compareOverlay(const CompareLayout& l, const hud::PixelRect& crop, engine::render::TextureHandle left,
-                                   engine::render::TextureHandle right) {
+hud::OverlayContent compareOverlay(const CompareLayout& l, const hud::PixelRect& crop,
+                                   engine::render::TextureHandle left, engine::render::TextureHandle right) {
     hud::OverlayContent c;
     c.images.push_back({right, {}, {l.split, 0, l.width - l.split, l.height}, {l.split, 0}, 1});
     for (const hud::PixelRect& inset : {l.leftInset, l.rightInset})

@@ -17,13 +17,13 @@ inline constexpr int kInsetZoom = 4;
 
 struct CompareLayout {
     int width = 0, height = 0;
-    int split = 0;                 // the right half starts at this column
-    int scale = 1;                 // font and border pixels
+    int split = 0;  // the right half starts at this column
+    int scale = 1;  // font and border pixels
     hud::TextPanel leftLabel, rightLabel;
     hud::PixelRect leftInset, rightInset;  // the zoomed crops (without their frames)
-    int border = 2;                // the insets' frames, each side
-    glm::ivec2 crop{0};            // the crop's size in frame pixels (insets are kInsetZoom times that)
-    hud::PixelRect searchArea;     // where the crop may lie: below the labels, above the insets
+    int border = 2;                        // the insets' frames, each side
+    glm::ivec2 crop{0};                    // the crop's size in frame pixels (insets are kInsetZoom times that)
+    hud::PixelRect searchArea;             // where the crop may lie: below the labels, above the insets
 };
 
 CompareLayout compareLayout(int width, int height, const std::string& left, const std::string& right);

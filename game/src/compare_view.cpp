@@ -17,7 +17,8 @@ CompareView::~CompareView() = default;
 FrameGraphTexture CompareView::addPasses(FrameGraph& graph, FrameGraphTexture color, TextureHandle target, int width,
                                          int height, const std::string& leftName, hud::Overlay& overlay) {
     const TextureDesc copyDesc = renderTargetDesc("compare left", width, height, backend_.describe(target).format);
-    if (!leftCopy_.get() || backend_.describe(leftCopy_).width != width || backend_.describe(leftCopy_).height != height) {
+    if (!leftCopy_.get() || backend_.describe(leftCopy_).width != width ||
+        backend_.describe(leftCopy_).height != height) {
         Owned<TextureHandle> next(backend_, backend_.createTexture(copyDesc));
         leftCopy_ = std::move(next);
     }
@@ -27,8 +28,8 @@ FrameGraphTexture CompareView::addPasses(FrameGraph& graph, FrameGraphTexture co
     // A's finished frame, copied aside: the insets read it while "compare" draws over A's.
     hud::OverlayContent keep;
     keep.images.push_back({target, color, {0, 0, width, height}, {0, 0}, 1});
-    const FrameGraphTexture kept = overlay.addPass(graph, "compare: keep left", leftInGraph, leftCopy_, width, height,
-                                                   std::move(keep));
+    const FrameGraphTexture kept =
+        overlay.addPass(graph, "compare: keep left", leftInGraph, leftCopy_, width, height, std::move(keep));
 
     struct Data {
         FrameGraphTexture out;
@@ -48,7 +49,8 @@ FrameGraphTexture CompareView::addPasses(FrameGraph& graph, FrameGraphTexture co
                     frameDifference(backend_.readback(leftCopy_), backend_.readback(right_->color()));
                 crop_ = mostDifferentCrop(difference, width, height, layout.crop, layout.searchArea);
                 marks_ = compareMarks(layout, crop_);
-                overlay.draw(target, width, height, compareOverlay(layout, crop_, leftCopy_, right_->color()), "compare");
+                overlay.draw(target, width, height, compareOverlay(layout, crop_, leftCopy_, right_->color()),
+                             "compare");
             })
         .out;
 }

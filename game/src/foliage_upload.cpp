@@ -16,7 +16,8 @@ std::span<const transparency::FoliageDraw> FoliageUpload::upload(const engine::s
         d.batch.vertices = engine::scene::vertexBufferOf(b, part);  // deformed copy (modules/wind) or shared
         d.batch.indices = part.indices;
         d.batch.count = part.indexCount;
-        d.batch.instances = instances_.upload("foliage instances", BufferKind::Instance, std::as_bytes(std::span(b.instances)));
+        d.batch.instances =
+            instances_.upload("foliage instances", BufferKind::Instance, std::as_bytes(std::span(b.instances)));
         d.batch.instanceCount = static_cast<std::uint32_t>(b.instances.size());
         d.batch.baseColor = part.material.baseColor;
         d.batch.baseColorFactor = part.material.baseColorFactor;

@@ -63,7 +63,8 @@ void plantForest(engine::ecs::Registry& registry, const Track& track, const Grou
             glm::vec3 p;
             if (inWoodland(track, d)) {
                 if (roll < 0.25f) {
-                    if (besideRoad(d, side, edge + 0.3f + 0.2f * out, p)) plant(broadleaf, p, heading, 1.7f + 0.4f * size);
+                    if (besideRoad(d, side, edge + 0.3f + 0.2f * out, p))
+                        plant(broadleaf, p, heading, 1.7f + 0.4f * size);
                 } else if (besideRoad(d, side, edge + out, p)) {
                     plant(roll < 0.65f ? broadleaf : tall, p, heading, 0.9f + 0.5f * size);
                 }
@@ -96,7 +97,10 @@ void plantForest(engine::ecs::Registry& registry, const Track& track, const Grou
         const float scale = random.uniform(0.9f, 1.5f);
         glm::vec3 p;
         if (!inWoodland(track, d) || !besideRoad(d, side, offset, p)) continue;
-        const ModelId model = kind < 0.45f ? broadleaf : kind < 0.8f ? tall : kind < 0.85f ? palm : bushes[i % bushes.size()];
+        const ModelId model = kind < 0.45f   ? broadleaf
+                              : kind < 0.8f  ? tall
+                              : kind < 0.85f ? palm
+                                             : bushes[i % bushes.size()];
         plant(model, p, heading, scale);
     }
     // A grove across the track from the start line, where the pre-race pan camera looks:
@@ -118,8 +122,8 @@ void plantForest(engine::ecs::Registry& registry, const Track& track, const Grou
         const float radius = random.uniform(480.0f, 1900.0f);
         const float scale = random.uniform(1.6f, 2.6f), heading = random.uniform(0.0f, 6.2832f);
         const std::uint32_t which = random.next();
-        plant(which % 3 == 2 ? tall : broadleaf, glm::vec3(radius * std::cos(angle), 0.0f, radius * std::sin(angle)), heading,
-              scale);
+        plant(which % 3 == 2 ? tall : broadleaf, glm::vec3(radius * std::cos(angle), 0.0f, radius * std::sin(angle)),
+              heading, scale);
     }
 }
 

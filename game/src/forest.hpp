@@ -15,11 +15,11 @@
 namespace racer {
 
 struct ForestOptions {
-    float treeSpacing = 5.0f;   // metres along the lap between tree-line trees, each side
-    float bushSpacing = 3.5f;   // between verge bushes, each side
-    int backRowTrees = 500;     // scattered 12 .. 45 m from the centre line in the woodland
-    int groveTrees = 40;        // across from the start line, framed by the pan camera
-    int vistaTrees = 600;       // on the hills beyond the track
+    float treeSpacing = 5.0f;  // metres along the lap between tree-line trees, each side
+    float bushSpacing = 3.5f;  // between verge bushes, each side
+    int backRowTrees = 500;    // scattered 12 .. 45 m from the centre line in the woodland
+    int groveTrees = 40;       // across from the start line, framed by the pan camera
+    int vistaTrees = 600;      // on the hills beyond the track
 };
 
 // The woodland's stretches along the lap: false inside a clearing. `distance` wraps.

@@ -22,7 +22,8 @@ namespace {
 constexpr CompareFunc kDepthFunc = CompareFunc::Greater;  // reverse-Z
 }  // namespace
 
-FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary& library, const RendererOptions& options)
+FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary& library,
+                             const RendererOptions& options)
     : backend_(backend), library_(library), options_(options), foliage_(backend), instances_(backend),
       transients_(backend), overlay_(backend) {
     options_.techniqueOptions.ssam.depthFunc = kDepthFunc;
@@ -47,7 +48,8 @@ FrameRenderer::~FrameRenderer() {
 
 void FrameRenderer::setTechnique(transparency::TechniqueKind kind) {
     // Both made before either is replaced: when one throws, the frame stays as it was.
-    std::unique_ptr<transparency::Technique> next = transparency::createTechnique(kind, backend_, options_.techniqueOptions);
+    std::unique_ptr<transparency::Technique> next =
+        transparency::createTechnique(kind, backend_, options_.techniqueOptions);
     ensureOpaqueTargets(options_.width, options_.height, std::max(options_.msaa, next->opaqueSamples()));
     technique_ = std::move(next);
     options_.technique = kind;
@@ -85,7 +87,9 @@ std::optional<transparency::TechniqueKind> FrameRenderer::comparedTechnique() co
     return compare_->right().technique();
 }
 
-std::vector<hud::PixelRect> FrameRenderer::compareMarks() const { return compare_ ? compare_->marks() : std::vector<hud::PixelRect>{}; }
+std::vector<hud::PixelRect> FrameRenderer::compareMarks() const {
+    return compare_ ? compare_->marks() : std::vector<hud::PixelRect>{};
+}
 
 hud::PixelRect FrameRenderer::compareCrop() const { return compare_ ? compare_->crop() : hud::PixelRect{}; }
 
@@ -150,8 +154,10 @@ void FrameRenderer::captureIntermediates() {
     if (packed || maxMask) {
         const cap::Image mask = cap::captureTarget(backend_, packed ? packed : maxMask, "mask").image;
         const cap::Image add = addMask ? cap::captureTarget(backend_, addMask, "add").image : cap::Image{};
-        cap::CapturedLayer maxLayer{"mask_max", cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
-        cap::CapturedLayer addLayer{"mask_add", cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
+        cap::CapturedLayer maxLayer{"mask_max",
+                                    cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
+        cap::CapturedLayer addLayer{"mask_add",
+                                    cap::Image::make(options_.width, options_.height, std::vector<std::string>{"Y"})};
         for (int y = 0; y < options_.height; ++y)
             for (int x = 0; x < options_.width; ++x) {
                 maxLayer.image.at(x, y, 0) = mask.at(x, y, 0);
@@ -198,18 +204,21 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
 
     // 2. Foliage by the technique: it draws, resolves the frame targets and leaves the
     //    colour and the depth later passes test against in them.
-    const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, options_.sun, foliage_.upload(lists, library_)};
+    const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, options_.sun,
+                                             foliage_.upload(lists, library_)};
     ColorDepth frame = technique_->addPasses(*graph, *opaque_, drawn, resolved, foliage);
-    if (options_.captureLayers) addSideEffectPass(*graph, "capture foliage", frame, [this] {
-        captureIntermediates();
-        capture(opaque_->depth(), "foliage_depth");
-    });
+    if (options_.captureLayers)
+        addSideEffectPass(*graph, "capture foliage", frame, [this] {
+            captureIntermediates();
+            capture(opaque_->depth(), "foliage_depth");
+        });
 
     // 3. The living scene's passes (grass, water, particles, light shafts) onto the colour,
     //    depth-tested against the opaque + foliage depth; without one, BLEND surfaces here.
-    const engine::scene::FeatureFrame features{backend_, library_, lists, opaque_->color(), opaque_->depth(),
-                                               options_.width, options_.height, camera.view, camera.projection,
-                                               camera.viewProj, camera.eye, options_.sun, 0.0f, kDepthFunc};
+    const engine::scene::FeatureFrame features{
+        backend_,       library_,        lists,       opaque_->color(),  opaque_->depth(),
+        options_.width, options_.height, camera.view, camera.projection, camera.viewProj,
+        camera.eye,     options_.sun,    0.0f,        kDepthFunc};
     frame = living_ ? living_->addPasses(*graph, features, frame) : addBlendPass(*graph, frame, features, camera);
 
     // 4. Side by side: B's right half, the insets and labels over A's frame (compare_view.hpp).
@@ -239,15 +248,17 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
     lastGraph_ = std::move(graph);
 }
 
-ColorDepth FrameRenderer::addOpaquePass(FrameGraph& graph, const ColorDepth& targets, const engine::scene::DrawLists& lists,
-                                        const CameraView& camera) {
+ColorDepth FrameRenderer::addOpaquePass(FrameGraph& graph, const ColorDepth& targets,
+                                        const engine::scene::DrawLists& lists, const CameraView& camera) {
     struct Data {
         ColorDepth out;
     };
     return graph
         .addPass<Data>(
             "opaque",
-            [&](FrameGraph::Builder& b, Data& d) { d.out = {b.write(targets.color), b.write(targets.depth)}; },
+            [&](FrameGraph::Builder& b, Data& d) {
+                d.out = {b.write(targets.color), b.write(targets.depth)};
+            },
             [this, &lists, viewProj = camera.viewProj](const FrameGraph::Resources&, const Data&) {
                 PassScope scope(backend_, opaque_->passDesc(options_.background));
                 for (const DrawBatch& b : lists.opaque) {
@@ -260,8 +271,8 @@ ColorDepth FrameRenderer::addOpaquePass(FrameGraph& graph, const ColorDepth& tar
         .out;
 }
 
-ColorDepth FrameRenderer::addBlendPass(FrameGraph& graph, const ColorDepth& targets, const engine::scene::FeatureFrame& frame,
-                                       const CameraView& camera) {
+ColorDepth FrameRenderer::addBlendPass(FrameGraph& graph, const ColorDepth& targets,
+                                       const engine::scene::FeatureFrame& frame, const CameraView& camera) {
     struct Data {
         ColorDepth out;
     };
@@ -281,7 +292,8 @@ ColorDepth FrameRenderer::addBlendPass(FrameGraph& graph, const ColorDepth& targ
                 PassScope passScope(backend_, pass);
                 for (const DrawBatch& b : lists.blend) {
                     const MeshPart& part = library_.part(b.part);
-                    backend_.draw(batchDraw(b, part.material.doubleSided ? water_ : waterCulled_, surface(part, viewProj)));
+                    backend_.draw(
+                        batchDraw(b, part.material.doubleSided ? water_ : waterCulled_, surface(part, viewProj)));
                 }
                 passScope.end();
             })

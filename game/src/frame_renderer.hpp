@@ -99,9 +99,11 @@ public:
     const std::vector<engine::capture::CapturedLayer>& layers() const { return layers_; }
 
 private:
-    engine::render::ColorDepth addOpaquePass(engine::render::FrameGraph& graph, const engine::render::ColorDepth& targets,
+    engine::render::ColorDepth addOpaquePass(engine::render::FrameGraph& graph,
+                                             const engine::render::ColorDepth& targets,
                                              const engine::scene::DrawLists& lists, const CameraView& camera);
-    engine::render::ColorDepth addBlendPass(engine::render::FrameGraph& graph, const engine::render::ColorDepth& targets,
+    engine::render::ColorDepth addBlendPass(engine::render::FrameGraph& graph,
+                                            const engine::render::ColorDepth& targets,
                                             const engine::scene::FeatureFrame& frame, const CameraView& camera);
     engine::render::SurfaceParams surface(const engine::scene::MeshPart& part, const glm::mat4& viewProj) const;
     engine::render::DrawDesc batchDraw(const engine::scene::DrawBatch& batch, engine::render::PipelineHandle pipeline,
@@ -118,8 +120,8 @@ private:
     std::unique_ptr<transparency::Technique> technique_;
     FoliageUpload foliage_;
     engine::render::PipelineHandle opaqueCulled_, opaqueTwoSided_, water_, waterCulled_;  // water_: BLEND, two-sided
-    engine::render::FrameBufferPool instances_;           // opaque and BLEND instance data
-    engine::render::TransientTexturePool transients_;     // the graph's transient targets
+    engine::render::FrameBufferPool instances_;              // opaque and BLEND instance data
+    engine::render::TransientTexturePool transients_;        // the graph's transient targets
     std::unique_ptr<engine::render::FrameGraph> lastGraph_;  // for dumpGraph()
     std::vector<engine::capture::CapturedLayer> layers_;
     LivingScene* living_ = nullptr;

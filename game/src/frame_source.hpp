@@ -19,8 +19,8 @@ struct SceneFrame {
 // What the player does in the window this frame (headless runs pass the default: the
 // overview, the autopilot driving).
 struct PlayerInput {
-    FreeCamera free;      // the free camera's pose, used when `camera` is CameraMode::Free
-    HeldDriveKeys drive;  // the drive keys held (chase camera only): any takes the wheel
+    FreeCamera free;         // the free camera's pose, used when `camera` is CameraMode::Free
+    HeldDriveKeys drive;     // the drive keys held (chase camera only): any takes the wheel
     bool autopilot = false;  // R was pressed: the autopilot drives again
 };
 

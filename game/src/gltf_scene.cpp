@@ -104,7 +104,6 @@ SceneCamera framingCamera(const assets::Bounds& sceneBounds, float aspect) {
     return finish(c, world, render::perspectiveReverseZ(kAutoCameraFovY, aspect, c.nearPlane, c.farPlane));
 }
 
-
 namespace {
 
 assets::LoadedModel load(const GltfSceneOptions& options) {
@@ -131,9 +130,8 @@ GltfScene::GltfScene(render::Backend& backend, const GltfSceneOptions& options)
         if (cameraNode_ < 0 || camera < model_.nodes[static_cast<std::size_t>(cameraNode_)].camera) cameraNode_ = n;
     }
     if (options.cameraIndex >= 0 && cameraNode_ < 0)
-        throw Error(file + ": --camera-index " + std::to_string(options.cameraIndex) +
-                    ": no node of scene " + std::to_string(model_.scene) + " carries cameras[" +
-                    std::to_string(options.cameraIndex) + "]");
+        throw Error(file + ": --camera-index " + std::to_string(options.cameraIndex) + ": no node of scene " +
+                    std::to_string(model_.scene) + " carries cameras[" + std::to_string(options.cameraIndex) + "]");
 
     const ecs::Entity entity = registry_.create();
     registry_.add<scene::Transform>(entity, scene::Transform{});

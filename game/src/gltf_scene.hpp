@@ -43,7 +43,7 @@ struct SceneCamera {
     CameraView view;
     float nearPlane = kNearPlane;
     float farPlane = kFarPlane;  // an infinite perspective projection: 1e6 * nearPlane (for depth pictures)
-    std::string description;    // e.g. "cameras[1] 'Overview' on nodes[4]", "automatic"
+    std::string description;     // e.g. "cameras[1] 'Overview' on nodes[4]", "automatic"
 };
 
 // A file camera seen from `nodeWorld`, projected reverse-Z ([Hathaway 2010] §3.1) for the
@@ -52,7 +52,6 @@ struct SceneCamera {
 SceneCamera fileCamera(const engine::assets::Camera& camera, const glm::mat4& nodeWorld, float aspect);
 // The automatic camera for world-space bounds (an empty scene: a unit box at the origin).
 SceneCamera framingCamera(const engine::assets::Bounds& bounds, float aspect);
-
 
 class GltfScene {
 public:

@@ -30,7 +30,8 @@ float landHeight(float x, float z) {
 }
 
 float Ground::Grid::interpolate(float x, float z) const {
-    const float gx = std::clamp((x - origin) / cell, 0.0f, float(cells)), gz = std::clamp((z - origin) / cell, 0.0f, float(cells));
+    const float gx = std::clamp((x - origin) / cell, 0.0f, float(cells)),
+                gz = std::clamp((z - origin) / cell, 0.0f, float(cells));
     const int ix = std::min(int(gx), cells - 1), iz = std::min(int(gz), cells - 1);
     const float fx = gx - float(ix), fz = gz - float(iz);
     // The two triangles of a cell as buildChunks() emits them: (x,z) (x,z+1) (x+1,z) and
@@ -132,7 +133,8 @@ void Ground::addCells(const Grid& grid, int x0, int z0, int x1, int z1, const Gr
     for (int z = z0; z < z1; ++z)
         for (int x = x0; x < x1; ++x) {
             if (hole) {
-                const float cx = grid.origin + grid.cell * (float(x) + 0.5f), cz = grid.origin + grid.cell * (float(z) + 0.5f);
+                const float cx = grid.origin + grid.cell * (float(x) + 0.5f),
+                            cz = grid.origin + grid.cell * (float(z) + 0.5f);
                 const float h = hole->origin + hole->cell * float(hole->cells);
                 if (cx > hole->origin && cx < h && cz > hole->origin && cz < h) continue;
             }
@@ -143,7 +145,8 @@ void Ground::addCells(const Grid& grid, int x0, int z0, int x1, int z1, const Gr
 
 std::vector<GroundChunk> Ground::buildChunks() const {
     std::vector<GroundChunk> chunks;
-    for (const auto& [grid, step, hole] : {std::tuple{&fine_, 24, (const Grid*)nullptr}, std::tuple{&coarse_, 16, &fine_}})
+    for (const auto& [grid, step, hole] :
+         {std::tuple{&fine_, 24, (const Grid*)nullptr}, std::tuple{&coarse_, 16, &fine_}})
         for (int z = 0; z < grid->cells; z += step)
             for (int x = 0; x < grid->cells; x += step) {
                 GroundChunk chunk;

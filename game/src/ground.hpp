@@ -31,11 +31,11 @@ public:
     // from the centre line, then blending into the land over kBlendWidth.
     explicit Ground(const Track& track);
 
-    static constexpr float kHalfSize = 2000.0f;         // the whole ground, metres from the origin
-    static constexpr float kCoarseCell = 25.0f;         // out to the horizon
-    static constexpr float kFineHalfSize = 350.0f;      // the square around the track
+    static constexpr float kHalfSize = 2000.0f;             // the whole ground, metres from the origin
+    static constexpr float kCoarseCell = 25.0f;             // out to the horizon
+    static constexpr float kFineHalfSize = 350.0f;          // the square around the track
     static constexpr float kFineCell = kCoarseCell / 6.0f;  // ~4.2 m: 6 fine cells per coarse one
-    static constexpr float kCorridorDrop = 0.25f;       // the level corridor below the asphalt
+    static constexpr float kCorridorDrop = 0.25f;           // the level corridor below the asphalt
     // Road half width (6 m) plus a fine cell's diagonal (5.9 m): any triangle with a corner
     // under the road has all three corners in the level part.
     static constexpr float kLevelHalfWidth = 12.5f;
@@ -51,7 +51,7 @@ private:
     struct Grid {
         float origin = 0.0f;  // x and z of vertex (0, 0)
         float cell = 1.0f;
-        int cells = 0;        // per side; (cells + 1)^2 vertices
+        int cells = 0;  // per side; (cells + 1)^2 vertices
         std::vector<float> heights;
         float at(int x, int z) const { return heights[std::size_t(z) * std::size_t(cells + 1) + std::size_t(x)]; }
         float interpolate(float x, float z) const;

@@ -28,12 +28,13 @@ std::vector<std::string> hudLines(const HudFacts& f) {
         lines.push_back("frame time: none yet (first frame)");
         return lines;
     }
-    lines.push_back(format("frame %.1f ms (%.1f fps), %s, wall clock", f.frameMs, f.frameMs > 0.0 ? 1000.0 / f.frameMs : 0.0,
-                           f.timeSpan.c_str()));
+    lines.push_back(format("frame %.1f ms (%.1f fps), %s, wall clock", f.frameMs,
+                           f.frameMs > 0.0 ? 1000.0 / f.frameMs : 0.0, f.timeSpan.c_str()));
     if (f.passes.empty()) return lines;
     lines.push_back(format("passes, ms: %s", passClock(f.backend)));
     for (const auto& p : f.passes)
-        lines.push_back(p.skipped ? format("  skipped  %s", p.pass.c_str()) : format("  %7.2f  %s", p.milliseconds, p.pass.c_str()));
+        lines.push_back(p.skipped ? format("  skipped  %s", p.pass.c_str())
+                                  : format("  %7.2f  %s", p.milliseconds, p.pass.c_str()));
     return lines;
 }
 

@@ -17,10 +17,10 @@ struct HudFacts {
     std::string technique;
     std::string backend;  // Backend::name()
     int width = 0, height = 0;
-    std::string timeSpan;  // which frames the times are of, e.g. "previous frame"
+    std::string timeSpan;   // which frames the times are of, e.g. "previous frame"
     double frameMs = -1.0;  // < 0: none measured yet
     std::vector<engine::render::PassTiming> passes;
-    std::string extra;      // one more line when not empty (the compare's pair, the driver)
+    std::string extra;  // one more line when not empty (the compare's pair, the driver)
 };
 
 std::vector<std::string> hudLines(const HudFacts& facts);

@@ -12,7 +12,8 @@ std::map<std::string, bool> onlyModules(std::span<const engine::scene::FeatureMo
                                         std::initializer_list<const char*> on) {
     std::map<std::string, bool> enabled;
     for (const engine::scene::FeatureModule& m : modules)
-        enabled[m.name] = std::any_of(on.begin(), on.end(), [&](const char* name) { return std::string(name) == m.name; });
+        enabled[m.name] =
+            std::any_of(on.begin(), on.end(), [&](const char* name) { return std::string(name) == m.name; });
     return enabled;
 }
 
@@ -20,7 +21,8 @@ LivingScene::LivingScene(engine::ecs::Registry& registry, const engine::scene::M
                          const LivingSceneOptions& options)
     : registry_(registry) {
     engine::scene::FeatureContext context{registry, library, options.seed, {}};
-    if (options.track) context.verge = [track = options.track, seed = options.seed] { return vergeAlong(*track, seed); };
+    if (options.track)
+        context.verge = [track = options.track, seed = options.seed] { return vergeAlong(*track, seed); };
     for (const engine::scene::FeatureModule& module : options.modules) {
         const auto choice = options.enabled.find(module.name);
         if (!(choice != options.enabled.end() ? choice->second : module.enabledByDefault)) continue;
@@ -28,7 +30,8 @@ LivingScene::LivingScene(engine::ecs::Registry& registry, const engine::scene::M
             missing_.emplace_back(module.name);
             continue;
         }
-        if (std::unique_ptr<engine::scene::Feature> feature = module.make(context)) features_.push_back(std::move(feature));
+        if (std::unique_ptr<engine::scene::Feature> feature = module.make(context))
+            features_.push_back(std::move(feature));
     }
     for (const auto& f : features_) f->registerSystems(scheduler_);
 }

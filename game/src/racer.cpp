@@ -59,8 +59,9 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
         if (o.hud) {
             const std::string technique = transparency::techniqueName(frame.technique());
             const auto right = frame.comparedTechnique();
-            frame.setHud(hudLines({technique, backend.name(), frame.width(), frame.height(), "previous frame", lastMs,
-                                   lastTimings, right ? compareHudLine(technique, transparency::techniqueName(*right)) : ""}));
+            frame.setHud(
+                hudLines({technique, backend.name(), frame.width(), frame.height(), "previous frame", lastMs,
+                          lastTimings, right ? compareHudLine(technique, transparency::techniqueName(*right)) : ""}));
         }
         const auto start = std::chrono::steady_clock::now();
         last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
@@ -165,7 +166,8 @@ int run(const CLI::App& app, const Options& o) {
         living = std::make_unique<LivingScene>(registry, library, lo);
         frame.setLivingScene(living.get());
     }
-    const FrameSource source = [&](float time, float dt, CameraMode camera, const PlayerInput& input, float frameAspect) {
+    const FrameSource source = [&](float time, float dt, CameraMode camera, const PlayerInput& input,
+                                   float frameAspect) {
         if (racing) {
             if (input.autopilot) racing->engageAutopilot();
             // The first drive key takes the wheel; once driven, released keys coast.
@@ -202,7 +204,8 @@ int run(const CLI::App& app, const Options& o) {
         ws.script = o.script;
         ws.hud = o.hud;
         if (comparedWith) ws.compareWith = *comparedWith;
-        std::printf("racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, V compare, B compared technique, R autopilot, Esc quit\n");
+        std::printf(
+            "racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, V compare, B compared technique, R autopilot, Esc quit\n");
         const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());
@@ -216,7 +219,8 @@ int run(const CLI::App& app, const Options& o) {
         const Car& car = racing->registry().get<Car>(racing->car());
         std::printf("racer: car at (%.2f, %.2f, %.2f), heading %.1f deg, speed %.2f m/s, %s\n", car.position.x,
                     car.position.y, car.position.z, glm::degrees(std::atan2(car.forward.x, car.forward.z)),
-                    car.driven ? car.motion.speed : car.speed, car.driven ? "driven by the player" : "on the autopilot");
+                    car.driven ? car.motion.speed : car.speed,
+                    car.driven ? "driven by the player" : "on the autopilot");
     }
 
     if (frame.comparedTechnique()) {

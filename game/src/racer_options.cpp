@@ -31,7 +31,8 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--technique", o.technique, "how foliage is drawn")
         ->check(CLI::IsMember(techniqueNames()))
         ->capture_default_str();
-    app.add_option("--size", o.size, "frame size WIDTHxHEIGHT (a window's first size: it renders at its window's)")->capture_default_str();
+    app.add_option("--size", o.size, "frame size WIDTHxHEIGHT (a window's first size: it renders at its window's)")
+        ->capture_default_str();
     app.add_option_function<int>(
            "--frames", [&o](int n) { o.frames = n, o.framesGiven = true; },
            "frames to render (default 60 headless; a window runs until closed)")
@@ -40,9 +41,13 @@ void addOptions(CLI::App& app, Options& o) {
            "--fixed-dt", [&o](double dt) { o.fixedDt = dt, o.fixedDtGiven = true; },
            "simulation time step per frame, seconds (default 1/30 headless; a window follows the clock)")
         ->check(CLI::Range(0.0, 1.0));
-    app.add_option("--camera", o.camera, "camera")->check(CLI::IsMember({"chase", "pan", "free", "sky"}))->capture_default_str();
+    app.add_option("--camera", o.camera, "camera")
+        ->check(CLI::IsMember({"chase", "pan", "free", "sky"}))
+        ->capture_default_str();
     app.add_option("--seed", o.seed, "scene seed (track shape, placement)")->capture_default_str();
-    app.add_option("--threads", o.threads, "soft backend threads (0: all)")->check(CLI::Range(0, 256))->capture_default_str();
+    app.add_option("--threads", o.threads, "soft backend threads (0: all)")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str();
     addSimdOption(app, o.simd);
     app.add_option("--capture", o.capturePath,
                    "write the last frame to this image: .png (8-bit sRGB) or .exr (linear float); checked before "
@@ -54,8 +59,9 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--msaa", o.msaa, "opaque-pass samples at least (1, 2, 4; Pure used 2; a2c always uses 4)")
         ->check(CLI::IsMember({1, 2, 4}))
         ->capture_default_str();
-    app.add_option("--layer-pictures", o.layerPictures,
-                   "with --capture-layers: write each captured layer as a PNG into this directory (created if missing)");
+    app.add_option(
+        "--layer-pictures", o.layerPictures,
+        "with --capture-layers: write each captured layer as a PNG into this directory (created if missing)");
     app.add_option("--dump-graph", o.dumpGraphPath,
                    "write the last frame's compiled frame graph to this Graphviz .dot file (passes culled or "
                    "skipped as empty are marked so; checked before the first frame)");
@@ -69,7 +75,8 @@ void addOptions(CLI::App& app, Options& o) {
     // Hidden (empty group): drives the window from tests, e.g. "2:3,4:C,5:size=400x300,9:Esc".
     app.add_option("--script", o.script, "keys pressed and window changes at given frames")->group("");
     app.add_option("--scene", o.scenePath, "render this glTF 2.0 file (.gltf or .glb) instead of the racing scene");
-    app.add_option("--scene-index", o.sceneIndex, "with --scene: which of the file's scenes (default: its default scene)")
+    app.add_option("--scene-index", o.sceneIndex,
+                   "with --scene: which of the file's scenes (default: its default scene)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--camera-index", o.cameraIndex, "with --scene: which of the file's cameras (default: its first)")
         ->check(CLI::NonNegativeNumber);
@@ -88,7 +95,8 @@ void checkCombinations(const CLI::App& app, const Options& o) {
     if (given("--layer-pictures") && !given("--capture-layers"))
         refuse("--layer-pictures draws the layers that --capture-layers captures: give --capture-layers too");
     for (const char* flag : {"--scene-index", "--camera-index"})
-        if (given(flag) && !given("--scene")) refuse(std::string(flag) + " picks from the --scene file: give --scene too");
+        if (given(flag) && !given("--scene"))
+            refuse(std::string(flag) + " picks from the --scene file: give --scene too");
     if (given("--scene")) {
         if (given("--camera"))
             refuse("--camera moves the racing scene's camera; a --scene file is seen through its own (--camera-index)");
@@ -153,7 +161,8 @@ const char* cameraName(CameraMode mode) {
 ComparedPair parseCompare(const std::string& pair) {
     const std::size_t comma = pair.find(',');
     auto bad = [&](const std::string& why) {
-        return engine::UsageError("--compare '" + pair + "': " + why + " (expected A,B, two of the techniques, e.g. ssam,alpha-test)");
+        return engine::UsageError("--compare '" + pair + "': " + why +
+                                  " (expected A,B, two of the techniques, e.g. ssam,alpha-test)");
     };
     if (comma == std::string::npos || pair.find(',', comma + 1) != std::string::npos) throw bad("not two names");
     const std::string left = pair.substr(0, comma), right = pair.substr(comma + 1);

@@ -20,9 +20,9 @@ struct Options {
     std::string backend = "auto";  // auto: gl in a window, soft headless
     std::string technique = "ssam";
     std::string size = "1280x720";
-    int frames = 60;             // headless; a window runs until closed unless --frames is given
+    int frames = 60;  // headless; a window runs until closed unless --frames is given
     bool framesGiven = false;
-    double fixedDt = 1.0 / 30.0; // headless; a window steps by the wall clock unless --fixed-dt is given
+    double fixedDt = 1.0 / 30.0;  // headless; a window steps by the wall clock unless --fixed-dt is given
     bool fixedDtGiven = false;
     std::string camera = "chase";
     std::uint32_t seed = 1;
@@ -35,10 +35,10 @@ struct Options {
     int msaa = 1;
     std::string layerPictures;
     std::string dumpGraphPath;  // --dump-graph: Graphviz dot of the last frame's graph
-    std::string compare;    // --compare A,B: A on the left, B on the right
-    bool hud = false;       // --hud: the HUD in the frame (the window's H toggles it)
-    std::string script;     // --script (hidden): keys and window changes at given frames, for tests
-    std::string scenePath;  // --scene: a glTF file instead of the racing scene
+    std::string compare;        // --compare A,B: A on the left, B on the right
+    bool hud = false;           // --hud: the HUD in the frame (the window's H toggles it)
+    std::string script;         // --script (hidden): keys and window changes at given frames, for tests
+    std::string scenePath;      // --scene: a glTF file instead of the racing scene
     int sceneIndex = -1;
     int cameraIndex = -1;
     // Living-scene modules: whether each one's flag (--no-wind, ...; the registry's) was given,
@@ -65,7 +65,7 @@ struct FrameSize {
 // "WIDTHxHEIGHT", each 1..16384; throws engine::UsageError quoting the flag otherwise.
 FrameSize parseFrameSize(const std::string& size);
 
-CameraMode parseCamera(const std::string& name);                  // chase, pan, free
+CameraMode parseCamera(const std::string& name);                          // chase, pan, free
 transparency::TechniqueKind parseTechniqueName(const std::string& name);  // allTechniques()' names
 
 // --compare's "A,B": two of allTechniques()' names (they may be the same); throws

@@ -58,7 +58,8 @@ OutputPlan planOutputs(const Options& o) {
     if (!o.dumpGraphPath.empty()) {
         plan.graph = o.dumpGraphPath;
         if (plan.graph.extension() != ".dot")
-            throw engine::UsageError("--dump-graph '" + plan.graph.string() + "': the graph is written as Graphviz "
+            throw engine::UsageError("--dump-graph '" + plan.graph.string() +
+                                     "': the graph is written as Graphviz "
                                      "dot, give a .dot name");
         engine::requireWritableFile(plan.graph, /*createDirectory=*/true);
     }
@@ -82,7 +83,8 @@ void writeOutputs(const OutputPlan& plan, const FrameOutputs& frame, const std::
         for (const cap::CapturedLayer& layer : layers)
             cap::writePng(files.add(plan.layerPictures / (picturePrefix + layer.name + ".png")),
                           layerPicture(layer, nearPlane, farPlane));
-        report.push_back("wrote " + std::to_string(layers.size()) + " layer pictures to " + plan.layerPictures.string());
+        report.push_back("wrote " + std::to_string(layers.size()) + " layer pictures to " +
+                         plan.layerPictures.string());
     }
     if (!plan.graph.empty()) {
         writeText(files.add(plan.graph), frame.graphDot);

@@ -38,7 +38,8 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     groundMaterial.baseColor = loadContentTexture(backend, content / "textures" / "ground.png");
     const std::vector<GroundChunk> chunks = ground_.buildChunks();
     for (std::size_t i = 0; i < chunks.size(); ++i)
-        placeModel(registry_, library_.add("ground " + std::to_string(i), chunks[i].vertices, chunks[i].indices, groundMaterial),
+        placeModel(registry_,
+                   library_.add("ground " + std::to_string(i), chunks[i].vertices, chunks[i].indices, groundMaterial),
                    {}, 0.0f, 1.0f);
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;

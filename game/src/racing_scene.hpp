@@ -19,7 +19,7 @@ namespace racer {
 
 struct Car {
     float distance = 60.0f;  // along the track, metres (starts past the grove at the start line)
-    float speed = 28.0f;    // m/s
+    float speed = 28.0f;     // m/s
     // Where the car is and which way it faces, for the chase camera: on the autopilot the
     // track's point and tangent at `distance`; driven by the player, its own (car_driver.hpp).
     glm::vec3 position{0.0f};

@@ -9,7 +9,8 @@
 namespace racer {
 
 float terrainHeight(float x, float z) {
-    return 6.0f * std::sin(x * 0.011f) * std::cos(z * 0.013f) + 2.5f * std::sin(x * 0.027f + 1.3f) * std::sin(z * 0.021f);
+    return 6.0f * std::sin(x * 0.011f) * std::cos(z * 0.013f) +
+           2.5f * std::sin(x * 0.027f + 1.3f) * std::sin(z * 0.021f);
 }
 
 std::uint32_t Random::next() {

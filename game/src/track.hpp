@@ -46,8 +46,8 @@ public:
                         std::vector<std::uint32_t>& indices) const;
 
 private:
-    std::vector<glm::vec3> samples_;    // dense points along the spline
-    std::vector<float> cumulative_;     // arc length at each sample
+    std::vector<glm::vec3> samples_;  // dense points along the spline
+    std::vector<float> cumulative_;   // arc length at each sample
     float length_ = 0.0f;
 };
 

@@ -32,7 +32,8 @@ KeyAction actionForKey(int key, bool shift) {
 
 const std::vector<int>& watchedKeys() {
     static const std::vector<int> keys = [] {
-        std::vector<int> k{GLFW_KEY_T, GLFW_KEY_C, GLFW_KEY_P, GLFW_KEY_R, GLFW_KEY_H, GLFW_KEY_V, GLFW_KEY_B, GLFW_KEY_ESCAPE};
+        std::vector<int> k{GLFW_KEY_T, GLFW_KEY_C, GLFW_KEY_P, GLFW_KEY_R,
+                           GLFW_KEY_H, GLFW_KEY_V, GLFW_KEY_B, GLFW_KEY_ESCAPE};
         for (int i = 0; i < 8; ++i) {
             k.push_back(GLFW_KEY_1 + i);
             k.push_back(GLFW_KEY_KP_1 + i);
@@ -54,8 +55,8 @@ HeldDriveKeys driveControls(const std::function<bool(int key)>& held) {
 }
 
 const std::vector<int>& driveKeys() {
-    static const std::vector<int> keys{GLFW_KEY_W, GLFW_KEY_UP,   GLFW_KEY_S,     GLFW_KEY_DOWN,
-                                       GLFW_KEY_A, GLFW_KEY_LEFT, GLFW_KEY_D,     GLFW_KEY_RIGHT};
+    static const std::vector<int> keys{GLFW_KEY_W, GLFW_KEY_UP,   GLFW_KEY_S, GLFW_KEY_DOWN,
+                                       GLFW_KEY_A, GLFW_KEY_LEFT, GLFW_KEY_D, GLFW_KEY_RIGHT};
     return keys;
 }
 
@@ -77,10 +78,21 @@ FlyControls flyControls(const std::function<bool(int key)>& held) {
 }
 
 const std::vector<int>& flyKeys() {
-    static const std::vector<int> keys{
-        GLFW_KEY_W,     GLFW_KEY_S,     GLFW_KEY_A,    GLFW_KEY_D,  GLFW_KEY_Q,          GLFW_KEY_E,
-        GLFW_KEY_SPACE, GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL, GLFW_KEY_LEFT, GLFW_KEY_RIGHT,
-        GLFW_KEY_UP,    GLFW_KEY_DOWN,  GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT};
+    static const std::vector<int> keys{GLFW_KEY_W,
+                                       GLFW_KEY_S,
+                                       GLFW_KEY_A,
+                                       GLFW_KEY_D,
+                                       GLFW_KEY_Q,
+                                       GLFW_KEY_E,
+                                       GLFW_KEY_SPACE,
+                                       GLFW_KEY_LEFT_CONTROL,
+                                       GLFW_KEY_RIGHT_CONTROL,
+                                       GLFW_KEY_LEFT,
+                                       GLFW_KEY_RIGHT,
+                                       GLFW_KEY_UP,
+                                       GLFW_KEY_DOWN,
+                                       GLFW_KEY_LEFT_SHIFT,
+                                       GLFW_KEY_RIGHT_SHIFT};
     return keys;
 }
 
@@ -106,9 +118,9 @@ int keyNamed(const std::string& name) {
     if (name == "b") return GLFW_KEY_B;
     if (name == "esc") return GLFW_KEY_ESCAPE;
     static const std::pair<const char*, int> fly[] = {
-        {"w", GLFW_KEY_W},         {"a", GLFW_KEY_A},     {"s", GLFW_KEY_S},          {"d", GLFW_KEY_D},
-        {"q", GLFW_KEY_Q},         {"e", GLFW_KEY_E},     {"space", GLFW_KEY_SPACE},  {"ctrl", GLFW_KEY_LEFT_CONTROL},
-        {"left", GLFW_KEY_LEFT},   {"right", GLFW_KEY_RIGHT}, {"up", GLFW_KEY_UP},    {"down", GLFW_KEY_DOWN}};
+        {"w", GLFW_KEY_W},       {"a", GLFW_KEY_A},         {"s", GLFW_KEY_S},         {"d", GLFW_KEY_D},
+        {"q", GLFW_KEY_Q},       {"e", GLFW_KEY_E},         {"space", GLFW_KEY_SPACE}, {"ctrl", GLFW_KEY_LEFT_CONTROL},
+        {"left", GLFW_KEY_LEFT}, {"right", GLFW_KEY_RIGHT}, {"up", GLFW_KEY_UP},       {"down", GLFW_KEY_DOWN}};
     for (const auto& [n, key] : fly)
         if (name == n) return key;
     return -1;
@@ -156,9 +168,10 @@ WindowScript parseWindowScript(const std::string& script) {
         const std::string entry = script.substr(start, end - start);
         const std::size_t colon = entry.find(':');
         auto bad = [&](const char* why) {
-            return engine::UsageError("--script entry '" + entry + "': " + why +
-                                 " (expected FRAME:KEY, FIRST-LAST:KEY, FRAME:size=WxH or FRAME:minimize=MS, KEY one "
-                                 "of 1-8 T C P R H V B Esc W A S D Q E Space Ctrl Left Right Up Down, optionally shift+)");
+            return engine::UsageError(
+                "--script entry '" + entry + "': " + why +
+                " (expected FRAME:KEY, FIRST-LAST:KEY, FRAME:size=WxH or FRAME:minimize=MS, KEY one "
+                "of 1-8 T C P R H V B Esc W A S D Q E Space Ctrl Left Right Up Down, optionally shift+)");
         };
         if (colon == std::string::npos) throw bad("no ':'");
         ScriptedKey k;

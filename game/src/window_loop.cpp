@@ -29,8 +29,8 @@ using engine::render::TextureHandle;
 using engine::render::gl::GlfwWindowContext;
 using transparency::TechniqueKind;
 
-constexpr double kTitleInterval = 0.25;  // seconds between title updates
-constexpr double kMaxWallStep = 0.1;     // a stalled frame (window dragged) never jumps the car far
+constexpr double kTitleInterval = 0.25;                      // seconds between title updates
+constexpr double kMaxWallStep = 0.1;                         // a stalled frame (window dragged) never jumps the car far
 constexpr auto kWindowSettleTime = std::chrono::seconds(1);  // a scripted resize waits this long at most
 
 // Frame and per-pass times summed since the last title update.
@@ -76,7 +76,8 @@ struct TitleStats {
 bool trySetTechnique(FrameRenderer& frame, TechniqueKind kind) {
     try {
         frame.setTechnique(kind);
-        std::printf("racer: technique %s (opaque pass %dx)\n", transparency::techniqueName(kind), frame.opaqueSamples());
+        std::printf("racer: technique %s (opaque pass %dx)\n", transparency::techniqueName(kind),
+                    frame.opaqueSamples());
         return true;
     } catch (const engine::Error& e) {
         std::printf("racer: technique %s unavailable, keeping %s: %s\n", transparency::techniqueName(kind),
@@ -89,8 +90,7 @@ void printCompare(const FrameRenderer& frame) {
     if (const auto right = frame.comparedTechnique())
         std::printf("racer: compare %s (left) | %s (right)\n", transparency::techniqueName(frame.technique()),
                     transparency::techniqueName(*right));
-    else
-        std::printf("racer: compare off\n");
+    else std::printf("racer: compare off\n");
 }
 
 // V: compare with `with` (or the next technique that runs here after it), or stop comparing.
@@ -109,8 +109,8 @@ void toggleCompare(FrameRenderer& frame, TechniqueKind with) {
             printCompare(frame);
             return;
         } catch (const engine::Error& e) {
-            std::printf("racer: cannot compare with %s: %s\n", transparency::techniqueName(all[std::size_t((first + k) % n)]),
-                        e.what());
+            std::printf("racer: cannot compare with %s: %s\n",
+                        transparency::techniqueName(all[std::size_t((first + k) % n)]), e.what());
         }
     }
 }
@@ -272,8 +272,8 @@ TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine
             }
     engine::render::TextureData data;
     data.levels.push_back(bytes);
-    return presenter.createTexture({"racer soft frame", r.width, r.height, r.format, 1, 1, engine::render::UsageSampled},
-                                   &data);
+    return presenter.createTexture(
+        {"racer soft frame", r.width, r.height, r.format, 1, 1, engine::render::UsageSampled}, &data);
 }
 
 }  // namespace

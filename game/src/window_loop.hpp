@@ -19,11 +19,11 @@
 namespace racer {
 
 struct WindowLoopSettings {
-    int frames = 0;          // 0: until closed
-    double fixedDt = 0.0;    // 0: the wall clock's step (at most 0.1 s)
+    int frames = 0;        // 0: until closed
+    double fixedDt = 0.0;  // 0: the wall clock's step (at most 0.1 s)
     CameraMode camera = CameraMode::Chase;
-    std::string script;      // parseWindowScript's format (racer --script)
-    bool hud = false;        // the HUD shown from the first frame (H toggles it)
+    std::string script;  // parseWindowScript's format (racer --script)
+    bool hud = false;    // the HUD shown from the first frame (H toggles it)
     // V turns the compare on with this technique on the right (B steps it); the frame may
     // start comparing (FrameRenderer::setCompare).
     transparency::TechniqueKind compareWith = transparency::TechniqueKind::AlphaTest;

@@ -23,7 +23,8 @@ layout(binding = 2) uniform sampler2D u_maskAdd;
 uniform bool u_hasMaskAdd;
 uniform float u_maskLerp;
 uniform bool u_squareMask;
-)") + glsl::kComposite + R"(
+)") + glsl::kComposite +
+           R"(
 void main() { finish(ssamComposite(ivec2(gl_FragCoord.xy))); }
 )";
 }

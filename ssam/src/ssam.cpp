@@ -21,10 +21,12 @@ PipelineDesc maskPipelineDesc(const Config& config) {
     mask.raster.cull = CullMode::None;
     if (config.maskPrecision == MaskPrecision::RG16F) {
         // Two R16F targets, one blend equation each.
-        mask.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Max,
-                         BlendFactor::One, BlendFactor::One, BlendOp::Max, WriteAll};
-        mask.blend[1] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
-                         BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
+        mask.blend[0] = {true,         BlendFactor::One, BlendFactor::One,
+                         BlendOp::Max, BlendFactor::One, BlendFactor::One,
+                         BlendOp::Max, WriteAll};
+        mask.blend[1] = {true,         BlendFactor::One, BlendFactor::One,
+                         BlendOp::Add, BlendFactor::One, BlendFactor::One,
+                         BlendOp::Add, WriteAll};
     } else {
         mask.blend[0] = BlendState::maxRgbAddAlpha();
     }
@@ -49,8 +51,14 @@ PipelineDesc compositePipelineDesc(ProgramHandle program) {
     PipelineDesc composite;
     composite.name = "ssam composite";
     composite.program = program;
-    composite.blend[0] = {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
-                          BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteAll};
+    composite.blend[0] = {true,
+                          BlendFactor::SrcAlpha,
+                          BlendFactor::InvSrcAlpha,
+                          BlendOp::Add,
+                          BlendFactor::Zero,
+                          BlendFactor::One,
+                          BlendOp::Add,
+                          WriteAll};
     return composite;
 }
 
@@ -153,7 +161,6 @@ FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, 
     if (!plan.empty()) ensureTargets(plan.width, plan.height, colorFormat);
     return plan;
 }
-
 
 void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
     PassDesc pass;

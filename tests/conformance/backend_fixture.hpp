@@ -119,7 +119,8 @@ protected:
         return {renderTarget(width, height, render::Format::RGBA8_UNORM, samples), depthTarget(width, height, samples)};
     }
 
-    render::BufferHandle vertexBuffer(const std::vector<render::Vertex>& vertices, const std::string& name = "vertices") {
+    render::BufferHandle vertexBuffer(const std::vector<render::Vertex>& vertices,
+                                      const std::string& name = "vertices") {
         render::BufferDesc desc{name, render::BufferKind::Vertex, vertices.size() * sizeof(render::Vertex)};
         return gfx().createBuffer(desc, bytesOf(vertices));
     }
@@ -151,21 +152,23 @@ protected:
 
     // One pass into a single colour target (and optionally a depth target).
     template <typename Draws>
-    void pass(render::TextureHandle color, glm::vec4 clear, Draws&& draws,
-              render::TextureHandle depth = {}, std::optional<float> depthClear = 1.0f,
-              bool loadColor = false) {
+    void pass(render::TextureHandle color, glm::vec4 clear, Draws&& draws, render::TextureHandle depth = {},
+              std::optional<float> depthClear = 1.0f, bool loadColor = false) {
         render::PassDesc p;
         p.name = "test";
         p.color[0] = {color, loadColor ? render::LoadOp::Load : render::LoadOp::Clear, clear};
-        if (depth) p.depth = {depth, depthClear ? render::LoadOp::Clear : render::LoadOp::Load, depthClear.value_or(1.0f)};
+        if (depth)
+            p.depth = {depth, depthClear ? render::LoadOp::Clear : render::LoadOp::Load, depthClear.value_or(1.0f)};
         gfx().beginPass(p);
         draws();
         gfx().endPass();
     }
 
-    render::TextureHandle resolved(render::TextureHandle source, render::CompareFunc depthFunc = render::CompareFunc::Less) {
+    render::TextureHandle resolved(render::TextureHandle source,
+                                   render::CompareFunc depthFunc = render::CompareFunc::Less) {
         const render::TextureDesc& desc = gfx().describe(source);
-        const render::TextureHandle destination = renderTarget(desc.width, desc.height, desc.format, 1, desc.name + "_resolved");
+        const render::TextureHandle destination =
+            renderTarget(desc.width, desc.height, desc.format, 1, desc.name + "_resolved");
         gfx().resolve({source, destination, depthFunc});
         return destination;
     }
@@ -177,6 +180,8 @@ using ssam::testing::expectError;
 
 // The suites, one fixture class each so their names say what they test; listed once here
 // for both their declaration and their instantiation (SSAM_INSTANTIATE_CONFORMANCE_SUITES).
+// Laid out by hand (clang-format 14 cannot lay out an X-macro list stably).
+// clang-format off
 #define SSAM_CONFORMANCE_SUITES(X, ...)                                                                    \
     X(BlendConformance, __VA_ARGS__) X(AlphaTestConformance, __VA_ARGS__)                                 \
     X(AlphaToCoverageConformance, __VA_ARGS__) X(DepthConformance, __VA_ARGS__)                           \
@@ -184,6 +189,7 @@ using ssam::testing::expectError;
     X(MsaaResolveConformance, __VA_ARGS__) X(TextureConformance, __VA_ARGS__)                             \
     X(RasterConformance, __VA_ARGS__) X(OcclusionQueryConformance, __VA_ARGS__)                           \
     X(ExceptionSafetyConformance, __VA_ARGS__) X(NonFiniteConformance, __VA_ARGS__)
+// clang-format on
 
 #define SSAM_DECLARE_CONFORMANCE_SUITE(suite, ...) \
     class suite : public BackendTest {};

@@ -58,9 +58,9 @@ inline double roundToHalf(double v) {
     // log2 can be off by one at exact powers of two: fix the exponent so 2^e <= |v| < 2^(e+1).
     if (std::ldexp(1.0, exponent) > magnitude) --exponent;
     if (std::ldexp(1.0, exponent + 1) <= magnitude) ++exponent;
-    exponent = std::max(exponent, -14);             // subnormals share the quantum of 2^-14
+    exponent = std::max(exponent, -14);  // subnormals share the quantum of 2^-14
     const double quantum = std::ldexp(1.0, exponent - 10);
-    const double steps = magnitude / quantum;       // exact: scaling by a power of two
+    const double steps = magnitude / quantum;  // exact: scaling by a power of two
     double rounded = std::floor(steps);
     const double fraction = steps - rounded;
     if (fraction > 0.5 || (fraction == 0.5 && std::fmod(rounded, 2.0) != 0.0)) rounded += 1.0;
@@ -222,8 +222,7 @@ inline bool matches(engine::render::Format format, double expected, double actua
         case TargetClass::Float16:
             if (!std::isfinite(expected) || !std::isfinite(actual)) return expected == actual;
             return std::abs(halfOrdinal(expected) - halfOrdinal(actual)) <= 1;
-        case TargetClass::Float32:
-            return std::fabs(expected - actual) <= std::max(1e-6, 1e-6 * std::fabs(expected));
+        case TargetClass::Float32: return std::fabs(expected - actual) <= std::max(1e-6, 1e-6 * std::fabs(expected));
     }
     return false;
 }

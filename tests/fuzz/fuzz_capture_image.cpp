@@ -35,9 +35,11 @@ void checkShape(const Picture& image, const engine::capture::ReadOptions& option
     require(image.width > 0 && image.height > 0 && image.width <= options.maxWidth && image.height <= options.maxHeight,
             what + "size " + std::to_string(image.width) + "x" + std::to_string(image.height) + " outside the caps");
     require(image.channels > 0 && image.channelNames.size() == static_cast<std::size_t>(image.channels),
-            what + std::to_string(image.channelNames.size()) + " names for " + std::to_string(image.channels) + " channels");
-    require(image.pixels.size() == image.pixelCount() * static_cast<std::size_t>(image.channels),
-            what + std::to_string(image.pixels.size()) + " values for " + std::to_string(image.pixelCount()) + " pixels");
+            what + std::to_string(image.channelNames.size()) + " names for " + std::to_string(image.channels) +
+                " channels");
+    require(
+        image.pixels.size() == image.pixelCount() * static_cast<std::size_t>(image.channels),
+        what + std::to_string(image.pixels.size()) + " values for " + std::to_string(image.pixelCount()) + " pixels");
 }
 
 // One reader on the file: accepted results keep their shape, refusals name the file.

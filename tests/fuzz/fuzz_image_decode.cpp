@@ -23,9 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                 image.height <= limits.maxDimension,
                             "decoded size " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                 " is outside 1.." + std::to_string(limits.maxDimension));
-        ssam::fuzz::require(image.pixels.size() == image.pixelCount() * 4,
-                            std::to_string(image.pixels.size()) + " bytes for " + std::to_string(image.pixelCount()) +
-                                " RGBA8 pixels");
+        ssam::fuzz::require(
+            image.pixels.size() == image.pixelCount() * 4,
+            std::to_string(image.pixels.size()) + " bytes for " + std::to_string(image.pixelCount()) + " RGBA8 pixels");
     } catch (const engine::Error& e) {
         ssam::fuzz::requireMessageNames(e, name + ": ");
     }

@@ -30,7 +30,8 @@ void checkScript(const racer::WindowScript& script) {
     for (std::size_t i = 0; i < script.keys.size(); ++i) {
         const racer::ScriptedKey& k = script.keys[i];
         require(k.frame >= 0 && k.lastFrame >= k.frame, "--script key " + std::to_string(i) + ": frames " +
-                                                            std::to_string(k.frame) + "-" + std::to_string(k.lastFrame));
+                                                            std::to_string(k.frame) + "-" +
+                                                            std::to_string(k.lastFrame));
         require(i == 0 || script.keys[i - 1].frame <= k.frame, "--script keys are not sorted by frame");
         require(k.key >= GLFW_KEY_SPACE && k.key <= GLFW_KEY_LAST, "--script key code " + std::to_string(k.key));
         // The window asks the script about every frame it renders; the answer must not depend
@@ -44,7 +45,8 @@ void checkScript(const racer::WindowScript& script) {
         require(i == 0 || script.changes[i - 1].frame <= c.frame, "--script window changes are not sorted by frame");
         const bool resize = c.width >= 1 && c.width <= 32767 && c.height >= 1 && c.height <= 32767 && c.minimizeMs == 0;
         const bool minimize = c.width == 0 && c.height == 0 && c.minimizeMs >= 1 && c.minimizeMs <= 60000;
-        require(resize != minimize, "--script window change " + std::to_string(i) + " is neither a resize nor a minimise");
+        require(resize != minimize,
+                "--script window change " + std::to_string(i) + " is neither a resize nor a minimise");
     }
 }
 

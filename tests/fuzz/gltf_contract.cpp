@@ -38,12 +38,14 @@ void checkImagesAndMaterials(const LoadedModel& model) {
         const auto& pixels = model.images[i].pixels;
         if (pixels.pixels.empty() && pixels.width == 0 && pixels.height == 0) continue;  // not decoded
         require(pixels.width > 0 && pixels.height > 0 &&
-                    pixels.pixels.size() == static_cast<std::size_t>(pixels.width) * static_cast<std::size_t>(pixels.height) * 4,
+                    pixels.pixels.size() ==
+                        static_cast<std::size_t>(pixels.width) * static_cast<std::size_t>(pixels.height) * 4,
                 "images[" + std::to_string(i) + "]: " + std::to_string(pixels.pixels.size()) + " bytes for " +
                     std::to_string(pixels.width) + "x" + std::to_string(pixels.height) + " RGBA8");
     }
     for (std::size_t i = 0; i < model.textures.size(); ++i)
-        require(inRange(model.textures[i].image, model.images.size()), "textures[" + std::to_string(i) + "].image out of range");
+        require(inRange(model.textures[i].image, model.images.size()),
+                "textures[" + std::to_string(i) + "].image out of range");
     for (std::size_t i = 0; i < model.materials.size(); ++i) {
         const auto& m = model.materials[i];
         const std::string field = "materials[" + std::to_string(i) + "]";
@@ -64,8 +66,8 @@ void checkMeshes(const LoadedModel& model) {
             const auto& primitive = model.meshes[m].primitives[p];
             const std::string field = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
             require(inRange(primitive.material, model.materials.size()), field + ".material out of range");
-            require(primitive.indices.size() % 3 == 0, field + ": " + std::to_string(primitive.indices.size()) +
-                                                            " indices are not whole triangles");
+            require(primitive.indices.size() % 3 == 0,
+                    field + ": " + std::to_string(primitive.indices.size()) + " indices are not whole triangles");
             for (std::size_t i = 0; i < primitive.indices.size(); ++i)
                 require(primitive.indices[i] < primitive.vertices.size(),
                         field + ": index " + std::to_string(primitive.indices[i]) + " at " + std::to_string(i) +
@@ -82,8 +84,8 @@ void checkMeshes(const LoadedModel& model) {
 void checkCamerasAndNodes(const LoadedModel& model) {
     for (std::size_t i = 0; i < model.cameras.size(); ++i) {
         const auto& c = model.cameras[i];
-        const bool zfarOk = std::isfinite(c.zfar) ||
-                            (c.type == engine::assets::Camera::Type::Perspective && std::isinf(c.zfar) && c.zfar > 0.0f);
+        const bool zfarOk = std::isfinite(c.zfar) || (c.type == engine::assets::Camera::Type::Perspective &&
+                                                      std::isinf(c.zfar) && c.zfar > 0.0f);
         require(std::isfinite(c.yfov) && std::isfinite(c.aspectRatio) && std::isfinite(c.xmag) &&
                     std::isfinite(c.ymag) && std::isfinite(c.znear) && zfarOk,
                 "cameras[" + std::to_string(i) + "]: a non-finite parameter was accepted");
@@ -94,7 +96,8 @@ void checkCamerasAndNodes(const LoadedModel& model) {
         require(inRange(node.parent, model.nodes.size()), field + ".parent out of range");
         require(inRange(node.mesh, model.meshes.size()), field + ".mesh out of range");
         require(inRange(node.camera, model.cameras.size()), field + ".camera out of range");
-        for (int child : node.children) require(inRange(child, model.nodes.size(), false), field + ": child out of range");
+        for (int child : node.children)
+            require(inRange(child, model.nodes.size(), false), field + ": child out of range");
         require(finite(node.local), field + ": non-finite local transform");
         require(finite(node.world), field + ": non-finite world transform");
     }

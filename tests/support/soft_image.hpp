@@ -17,8 +17,11 @@ inline engine::render::soft::SoftTexture softImage(int width, int height, engine
     t.desc.height = height;
     t.desc.format = format;
     t.bytesPerSample = bytesPerTexel;
-    t.levels.push_back(
-        {width, height, std::vector<std::byte>(std::size_t(width) * std::size_t(height) * std::size_t(bytesPerTexel)), {}, {}});
+    t.levels.push_back({width,
+                        height,
+                        std::vector<std::byte>(std::size_t(width) * std::size_t(height) * std::size_t(bytesPerTexel)),
+                        {},
+                        {}});
     return t;
 }
 

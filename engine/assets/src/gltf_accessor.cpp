@@ -129,14 +129,15 @@ Layout checkAccessor(const LoadContext& ctx, const tinygltf::Model& model, int i
         ctx.fail(field + ".componentType", std::to_string(a.componentType) + " is not a glTF 2.0 component type");
     if ((componentTypes & componentBit(a.componentType)) == 0)
         ctx.fail(field + ".componentType", std::string(componentTypeName(a.componentType)) + " is not allowed here");
-    if (a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
-                         a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+    if (a.normalized &&
+        (a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT || a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
         ctx.fail(field + ".normalized", std::string("true is not allowed for ") + componentTypeName(a.componentType));
     if (a.count == 0) ctx.fail(field + ".count", "0: an accessor must have at least one element");
     if (a.count > maxCount)
         ctx.fail(field + ".count", std::to_string(a.count) + " is over the limit of " + std::to_string(maxCount));
 
-    const std::uint64_t element = static_cast<std::uint64_t>(layout.size) * static_cast<std::uint64_t>(layout.components);
+    const std::uint64_t element =
+        static_cast<std::uint64_t>(layout.size) * static_cast<std::uint64_t>(layout.components);
     layout.stride = element;
     if (a.bufferView >= 0) {
         if (static_cast<std::size_t>(a.bufferView) >= model.bufferViews.size())
@@ -175,22 +176,23 @@ void forEachSparse(const LoadContext& ctx, const tinygltf::Model& model, const L
     const std::string field = layout.field + ".sparse";
     const int count = a.sparse.count;
     if (count < 1 || static_cast<std::size_t>(count) > a.count)
-        ctx.fail(field + ".count", std::to_string(count) + ": must be in [1, accessor count " + std::to_string(a.count) + "]");
+        ctx.fail(field + ".count",
+                 std::to_string(count) + ": must be in [1, accessor count " + std::to_string(a.count) + "]");
     const int indexType = a.sparse.indices.componentType;
     if (indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         indexType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
         ctx.fail(field + ".indices.componentType", std::to_string(indexType) + ": must be an unsigned integer type");
-    if (a.sparse.indices.byteOffset < 0 || a.sparse.values.byteOffset < 0)
-        ctx.fail(field, "negative byteOffset");
+    if (a.sparse.indices.byteOffset < 0 || a.sparse.values.byteOffset < 0) ctx.fail(field, "negative byteOffset");
     const std::uint64_t n = static_cast<std::uint64_t>(count);
     const std::uint64_t indexSize = static_cast<std::uint64_t>(componentSize(indexType));
-    const std::uint64_t element = static_cast<std::uint64_t>(layout.size) * static_cast<std::uint64_t>(layout.components);
+    const std::uint64_t element =
+        static_cast<std::uint64_t>(layout.size) * static_cast<std::uint64_t>(layout.components);
     const std::uint8_t* indices = bufferViewBytes(ctx, model, a.sparse.indices.bufferView,
-                                            static_cast<std::uint64_t>(a.sparse.indices.byteOffset), n * indexSize,
-                                            field + ".indices", nullptr);
-    const std::uint8_t* values = bufferViewBytes(ctx, model, a.sparse.values.bufferView,
-                                           static_cast<std::uint64_t>(a.sparse.values.byteOffset), n * element,
-                                           field + ".values", nullptr);
+                                                  static_cast<std::uint64_t>(a.sparse.indices.byteOffset),
+                                                  n * indexSize, field + ".indices", nullptr);
+    const std::uint8_t* values =
+        bufferViewBytes(ctx, model, a.sparse.values.bufferView, static_cast<std::uint64_t>(a.sparse.values.byteOffset),
+                        n * element, field + ".values", nullptr);
     for (std::uint64_t i = 0; i < n; ++i) {
         const std::uint32_t target = toUint(indices + i * indexSize, indexType);
         if (target >= a.count)
@@ -204,8 +206,9 @@ void forEachSparse(const LoadContext& ctx, const tinygltf::Model& model, const L
 
 // The bytes [offset, offset + length) of a bufferView, after checking the view against its
 // buffer's actual data. `field` names what refers to the view.
-const std::uint8_t* bufferViewBytes(const LoadContext& ctx, const tinygltf::Model& model, int view, std::uint64_t offset,
-                              std::uint64_t length, const std::string& field, const tinygltf::BufferView** viewOut) {
+const std::uint8_t* bufferViewBytes(const LoadContext& ctx, const tinygltf::Model& model, int view,
+                                    std::uint64_t offset, std::uint64_t length, const std::string& field,
+                                    const tinygltf::BufferView** viewOut) {
     if (view < 0 || static_cast<std::size_t>(view) >= model.bufferViews.size())
         ctx.fail(field + ".bufferView", std::to_string(view) + " is out of range: the file has " +
                                             std::to_string(model.bufferViews.size()) + " bufferViews");
@@ -221,8 +224,8 @@ const std::uint8_t* bufferViewBytes(const LoadContext& ctx, const tinygltf::Mode
                                 " bytes of " + indexed("buffers", static_cast<std::size_t>(bv.buffer)));
     std::uint64_t end = 0;
     if (!checkedAdd(offset, length, end) || end > bv.byteLength)
-        ctx.fail(field, "byteOffset " + std::to_string(offset) + " + " + std::to_string(length) +
-                            " bytes exceeds " + viewField + ".byteLength " + std::to_string(bv.byteLength));
+        ctx.fail(field, "byteOffset " + std::to_string(offset) + " + " + std::to_string(length) + " bytes exceeds " +
+                            viewField + ".byteLength " + std::to_string(bv.byteLength));
     if (viewOut) *viewOut = &bv;
     return data.data() + bv.byteOffset + offset;
 }
@@ -242,12 +245,14 @@ std::vector<float> readFloats(const LoadContext& ctx, const tinygltf::Model& mod
         for (std::size_t e = 0; e < a.count; ++e) {
             const std::uint8_t* p = layout.base + e * layout.stride;
             for (std::size_t c = 0; c < comps; ++c)
-                out[e * comps + c] = toFloat(p + c * static_cast<std::size_t>(layout.size), a.componentType, a.normalized);
+                out[e * comps + c] =
+                    toFloat(p + c * static_cast<std::size_t>(layout.size), a.componentType, a.normalized);
         }
     }
     forEachSparse(ctx, model, layout, [&](std::uint32_t target, const std::uint8_t* p) {
         for (std::size_t c = 0; c < comps; ++c)
-            out[target * comps + c] = toFloat(p + c * static_cast<std::size_t>(layout.size), a.componentType, a.normalized);
+            out[target * comps + c] =
+                toFloat(p + c * static_cast<std::size_t>(layout.size), a.componentType, a.normalized);
     });
     return out;
 }

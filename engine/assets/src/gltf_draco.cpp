@@ -29,7 +29,8 @@ float normalizationScale(int componentType) {
 }
 
 bool isIntegral(draco::DataType type) {
-    return type != draco::DT_FLOAT32 && type != draco::DT_FLOAT64 && type != draco::DT_BOOL && type != draco::DT_INVALID;
+    return type != draco::DT_FLOAT32 && type != draco::DT_FLOAT64 && type != draco::DT_BOOL &&
+           type != draco::DT_INVALID;
 }
 
 }  // namespace
@@ -104,7 +105,8 @@ DracoPrimitive decodeDraco(const LoadContext& ctx, const tinygltf::Model& model,
                                              std::to_string(attribute->num_components()));
         if (accessor.count != out.vertexCount)
             ctx.fail(accField + ".count", std::to_string(accessor.count) + " does not match the " +
-                                              std::to_string(out.vertexCount) + " vertices Draco decoded (count mismatch)");
+                                              std::to_string(out.vertexCount) +
+                                              " vertices Draco decoded (count mismatch)");
 
         std::vector<float> values(out.vertexCount * static_cast<std::size_t>(components));
         const float scale = accessor.normalized && !attribute->normalized() && isIntegral(attribute->data_type())

@@ -174,7 +174,8 @@ std::vector<Image> convertImages(const LoadContext& ctx, const tinygltf::Model& 
     return images;
 }
 
-render::SamplerState convertSampler(const LoadContext& ctx, const tinygltf::Sampler& sampler, const std::string& field) {
+render::SamplerState convertSampler(const LoadContext& ctx, const tinygltf::Sampler& sampler,
+                                    const std::string& field) {
     render::SamplerState state;
     switch (sampler.minFilter) {
         case -1:
@@ -223,7 +224,8 @@ TextureRef convertTextureRef(const LoadContext& ctx, const tinygltf::Model& mode
     TextureRef ref;
     if (info.index == -1) return ref;
     checkIndex(ctx, info.index, model.textures.size(), field + ".index", "textures", false);
-    if (info.texCoord < 0 || info.texCoord > 7) ctx.fail(field + ".texCoord", std::to_string(info.texCoord) + " is not in [0, 7]");
+    if (info.texCoord < 0 || info.texCoord > 7)
+        ctx.fail(field + ".texCoord", std::to_string(info.texCoord) + " is not in [0, 7]");
     ref.texture = info.index;
     ref.texCoord = info.texCoord;
     const auto ext = info.extensions.find("KHR_texture_transform");
@@ -322,7 +324,8 @@ struct AttributeSource {
         const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(it->second)];
         components = componentCount(accessor.type);
         std::vector<float> values;
-        const auto decoded = draco ? draco->attributes.find(name) : std::map<std::string, std::vector<float>>::const_iterator{};
+        const auto decoded =
+            draco ? draco->attributes.find(name) : std::map<std::string, std::vector<float>>::const_iterator{};
         if (draco && decoded != draco->attributes.end()) {
             if (std::find(types.begin(), types.end(), accessor.type) == types.end())
                 ctx.fail(accessorField(it->second, usage) + ".type", "is not allowed for " + name);
@@ -360,8 +363,9 @@ Primitive convertPrimitive(const LoadContext& ctx, const tinygltf::Model& model,
 
     const auto sameCount = [&](const std::vector<float>& values, int comps, const char* name) {
         if (!values.empty() && values.size() != vertexCount * static_cast<std::size_t>(comps))
-            ctx.fail(field + ".attributes." + name, "has " + std::to_string(values.size() / static_cast<std::size_t>(comps)) +
-                                                        " elements, POSITION has " + std::to_string(vertexCount));
+            ctx.fail(field + ".attributes." + name,
+                     "has " + std::to_string(values.size() / static_cast<std::size_t>(comps)) +
+                         " elements, POSITION has " + std::to_string(vertexCount));
     };
     int normalComponents = 3;
     const std::vector<float> normals =
@@ -377,10 +381,10 @@ Primitive convertPrimitive(const LoadContext& ctx, const tinygltf::Model& model,
     sameCount(uvs, 2, texCoordName.c_str());
 
     int colorComponents = 4;
-    const std::vector<float> colors = attributes.read(
-        "COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
-        kFloatOnly | componentBit(TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) | componentBit(TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT),
-        colorComponents);
+    const std::vector<float> colors = attributes.read("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4},
+                                                      kFloatOnly | componentBit(TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) |
+                                                          componentBit(TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT),
+                                                      colorComponents);
     sameCount(colors, colorComponents, "COLOR_0");
 
     out.hasNormals = !normals.empty();
@@ -407,7 +411,8 @@ Primitive convertPrimitive(const LoadContext& ctx, const tinygltf::Model& model,
         }
         if (out.hasColors) {
             const std::size_t c = v * static_cast<std::size_t>(colorComponents);
-            vertex.color = glm::vec4(colors[c], colors[c + 1], colors[c + 2], colorComponents == 4 ? colors[c + 3] : 1.0f);
+            vertex.color =
+                glm::vec4(colors[c], colors[c + 1], colors[c + 2], colorComponents == 4 ? colors[c + 3] : 1.0f);
         }
     }
 
@@ -430,7 +435,8 @@ Primitive convertPrimitive(const LoadContext& ctx, const tinygltf::Model& model,
     return out;
 }
 
-std::vector<Mesh> convertMeshes(const LoadContext& ctx, const tinygltf::Model& model, const std::vector<Material>& materials,
+std::vector<Mesh> convertMeshes(const LoadContext& ctx, const tinygltf::Model& model,
+                                const std::vector<Material>& materials,
                                 const std::map<std::pair<std::size_t, std::size_t>, int>& dracoIndices) {
     std::vector<Mesh> meshes(model.meshes.size());
     for (std::size_t m = 0; m < model.meshes.size(); ++m) {
@@ -446,8 +452,8 @@ std::vector<Mesh> convertMeshes(const LoadContext& ctx, const tinygltf::Model& m
                 source.mode != TINYGLTF_MODE_TRIANGLE_FAN)
                 ctx.fail(field + ".mode", std::to_string(source.mode) + " is not a glTF primitive mode");
             const auto draco = dracoIndices.find({m, p});
-            meshes[m].primitives.push_back(
-                convertPrimitive(ctx, model, source, materials, draco == dracoIndices.end() ? -1 : draco->second, field));
+            meshes[m].primitives.push_back(convertPrimitive(ctx, model, source, materials,
+                                                            draco == dracoIndices.end() ? -1 : draco->second, field));
         }
     }
     return meshes;
@@ -470,9 +476,10 @@ LoadedModel loadGltf(const std::filesystem::path& path, const LoadOptions& optio
     const Preflight checked = preflight(ctx, container);
     const std::vector<std::uint8_t> glb =
         container.binary && !checked.jsonForParser.empty() ? rebuildGlb(checked.jsonForParser, container) : bytes;
-    const std::string_view jsonText = checked.jsonForParser.empty()
-                                          ? std::string_view(reinterpret_cast<const char*>(container.json.data()), container.json.size())
-                                          : std::string_view(checked.jsonForParser);
+    const std::string_view jsonText =
+        checked.jsonForParser.empty()
+            ? std::string_view(reinterpret_cast<const char*>(container.json.data()), container.json.size())
+            : std::string_view(checked.jsonForParser);
 
     tinygltf::Model model;
     ParseState state;
@@ -486,7 +493,8 @@ LoadedModel loadGltf(const std::filesystem::path& path, const LoadOptions& optio
     try {
         const std::string baseDir = ctx.baseDir.string();
         if (container.binary)
-            parsed = parser.LoadBinaryFromMemory(&model, &err, &warn, glb.data(), static_cast<unsigned int>(glb.size()), baseDir);
+            parsed = parser.LoadBinaryFromMemory(&model, &err, &warn, glb.data(), static_cast<unsigned int>(glb.size()),
+                                                 baseDir);
         else
             parsed = parser.LoadASCIIFromString(&model, &err, &warn, jsonText.data(),
                                                 static_cast<unsigned int>(jsonText.size()), baseDir);

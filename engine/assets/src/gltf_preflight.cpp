@@ -65,7 +65,7 @@ std::vector<std::uint8_t> readWholeFile(const LoadContext& ctx, const std::files
 
 namespace {
 
-constexpr std::uint32_t kGlbMagic = 0x46546C67;  // "glTF"
+constexpr std::uint32_t kGlbMagic = 0x46546C67;   // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;  // "JSON"
 constexpr std::uint32_t kChunkBin = 0x004E4942;   // "BIN\0"
 
@@ -102,19 +102,21 @@ Container splitContainer(const LoadContext& ctx, std::span<const std::uint8_t> f
     }
     container.binary = true;
     if (file.size() < 12)
-        ctx.fail("GLB header", "truncated: the file has " + std::to_string(file.size()) + " bytes, the header needs 12");
+        ctx.fail("GLB header",
+                 "truncated: the file has " + std::to_string(file.size()) + " bytes, the header needs 12");
     const std::uint32_t version = readLe32(file, 4);
     if (version != 2) ctx.fail("GLB header version", std::to_string(version) + ": only version 2 is supported");
     const std::uint32_t length = readLe32(file, 8);
     if (length != file.size())
-        ctx.fail("GLB header length", std::to_string(length) + " does not match the file size of " +
-                                          std::to_string(file.size()) + " bytes");
+        ctx.fail("GLB header length",
+                 std::to_string(length) + " does not match the file size of " + std::to_string(file.size()) + " bytes");
 
     std::uint64_t offset = 12;
     for (int chunk = 0; offset < file.size(); ++chunk) {
         const std::string field = "GLB chunk " + std::to_string(chunk);
         if (file.size() - offset < 8)
-            ctx.fail(field, "header truncated at byte " + std::to_string(offset) + " of " + std::to_string(file.size()));
+            ctx.fail(field,
+                     "header truncated at byte " + std::to_string(offset) + " of " + std::to_string(file.size()));
         const std::uint32_t chunkLength = readLe32(file, static_cast<std::size_t>(offset));
         const std::uint32_t chunkType = readLe32(file, static_cast<std::size_t>(offset) + 4);
         const std::uint64_t payload = offset + 8;
@@ -122,19 +124,20 @@ Container splitContainer(const LoadContext& ctx, std::span<const std::uint8_t> f
         if (payload + chunkLength > file.size())
             ctx.fail(field + " length", std::to_string(chunkLength) + " runs past the end of the file (" +
                                             std::to_string(file.size() - payload) + " bytes left)");
-        if (chunkLength % 4 != 0)
-            ctx.fail(field + " length", std::to_string(chunkLength) + " is not a multiple of 4");
+        if (chunkLength % 4 != 0) ctx.fail(field + " length", std::to_string(chunkLength) + " is not a multiple of 4");
         const auto data = file.subspan(static_cast<std::size_t>(payload), chunkLength);
         if (chunk == 0) {
             if (chunkType != kChunkJson)
-                ctx.fail(field + " type", hex32(chunkType) + ": the first chunk must be JSON (" + hex32(kChunkJson) + ")");
+                ctx.fail(field + " type",
+                         hex32(chunkType) + ": the first chunk must be JSON (" + hex32(kChunkJson) + ")");
             if (chunkLength == 0) ctx.fail(field + " length", "0: the JSON chunk is empty");
             container.json = data;
         } else if (chunk == 1 && chunkType == kChunkBin) {
             container.bin = data;
             container.hasBin = true;
         } else if (chunkType == kChunkJson || chunkType == kChunkBin) {
-            ctx.fail(field + " type", hex32(chunkType) + ": only one JSON chunk (first) and one BIN chunk (second) are allowed");
+            ctx.fail(field + " type",
+                     hex32(chunkType) + ": only one JSON chunk (first) and one BIN chunk (second) are allowed");
         } else {
             ctx.warn(field, "unknown chunk type " + hex32(chunkType) + " ignored");
         }
@@ -330,14 +333,14 @@ std::uint64_t indexMember(const LoadContext& ctx, const json& object, const char
                           std::size_t count, const char* target) {
     const std::uint64_t index = unsignedMember(ctx, object, key, field, true);
     if (index >= count)
-        ctx.fail(field + "." + key, std::to_string(index) + " is out of range: the file has " + std::to_string(count) +
-                                        " " + target);
+        ctx.fail(field + "." + key,
+                 std::to_string(index) + " is out of range: the file has " + std::to_string(count) + " " + target);
     return index;
 }
 
 bool isSupportedExtension(const std::string& name) {
-    static constexpr std::array<std::string_view, 4> kSupported = {
-        "KHR_draco_mesh_compression", "KHR_materials_unlit", "KHR_texture_transform", "KHR_mesh_quantization"};
+    static constexpr std::array<std::string_view, 4> kSupported = {"KHR_draco_mesh_compression", "KHR_materials_unlit",
+                                                                   "KHR_texture_transform", "KHR_mesh_quantization"};
     return std::find(kSupported.begin(), kSupported.end(), name) != kSupported.end();
 }
 
@@ -347,7 +350,8 @@ void checkExtensions(const LoadContext& ctx, const json& doc) {
             const json& name = (*used)[i];
             if (!name.is_string()) ctx.fail(indexed("extensionsUsed", i), "must be a string");
             if (!isSupportedExtension(name.get<std::string>()))
-                ctx.warn(indexed("extensionsUsed", i), "extension '" + name.get<std::string>() + "' is not supported and is ignored");
+                ctx.warn(indexed("extensionsUsed", i),
+                         "extension '" + name.get<std::string>() + "' is not supported and is ignored");
         }
     }
     if (const json* required = arrayMember(ctx, doc, "extensionsRequired", "extensionsRequired")) {
@@ -479,7 +483,8 @@ Preflight preflight(const LoadContext& ctx, const Container& container) {
             if (!draco->is_object()) ctx.fail(dracoField, "must be an object");
             indexMember(ctx, *draco, "bufferView", dracoField, viewCount, "bufferViews");
             const json* attributes = member(*draco, "attributes");
-            if (!attributes || !attributes->is_object()) ctx.fail(dracoField + ".attributes", "required object is missing");
+            if (!attributes || !attributes->is_object())
+                ctx.fail(dracoField + ".attributes", "required object is missing");
             for (const auto& [name, id] : attributes->items())
                 if (!id.is_number_unsigned() && !(id.is_number_integer() && id.get<std::int64_t>() >= 0))
                     ctx.fail(dracoField + ".attributes." + name, id.dump() + ": must be a non-negative integer");

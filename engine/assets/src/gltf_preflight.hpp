@@ -22,9 +22,9 @@ namespace engine::assets::detail {
 inline constexpr int kMaxJsonDepth = 64;
 
 struct Container {
-    bool binary = false;                   // a GLB
-    std::span<const std::uint8_t> json;    // the JSON text
-    std::span<const std::uint8_t> bin;     // the GLB BIN chunk's payload; empty if none
+    bool binary = false;                 // a GLB
+    std::span<const std::uint8_t> json;  // the JSON text
+    std::span<const std::uint8_t> bin;   // the GLB BIN chunk's payload; empty if none
     bool hasBin = false;
 };
 

@@ -18,7 +18,8 @@ glm::mat4 localTransform(const LoadContext& ctx, const tinygltf::Node& node, con
         if (node.matrix.size() != 16) ctx.fail(field + ".matrix", "must have 16 numbers");
         glm::mat4 m;
         for (int i = 0; i < 16; ++i)  // column-major, as glTF stores it
-            glm::value_ptr(m)[i] = finite(ctx, node.matrix[static_cast<std::size_t>(i)], field + ".matrix[" + std::to_string(i) + "]");
+            glm::value_ptr(m)[i] =
+                finite(ctx, node.matrix[static_cast<std::size_t>(i)], field + ".matrix[" + std::to_string(i) + "]");
         return m;
     }
     glm::mat4 m(1.0f);
@@ -38,7 +39,8 @@ glm::mat4 localTransform(const LoadContext& ctx, const tinygltf::Node& node, con
     }
     if (!node.scale.empty()) {
         const glm::vec3 s = finiteVector<3>(ctx, node.scale, field + ".scale");
-        m = m * glm::mat4(glm::vec4(s.x, 0, 0, 0), glm::vec4(0, s.y, 0, 0), glm::vec4(0, 0, s.z, 0), glm::vec4(0, 0, 0, 1));
+        m = m *
+            glm::mat4(glm::vec4(s.x, 0, 0, 0), glm::vec4(0, s.y, 0, 0), glm::vec4(0, 0, s.z, 0), glm::vec4(0, 0, 0, 1));
     }
     return m;
 }
@@ -57,7 +59,8 @@ std::vector<Camera> convertCameras(const LoadContext& ctx, const tinygltf::Model
             const std::string pf = field + ".perspective";
             c.type = Camera::Type::Perspective;
             c.yfov = finite(ctx, p.yfov, pf + ".yfov");
-            if (c.yfov <= 0.0f || c.yfov >= 3.14159265f) ctx.fail(pf + ".yfov", std::to_string(c.yfov) + ": must be in (0, pi)");
+            if (c.yfov <= 0.0f || c.yfov >= 3.14159265f)
+                ctx.fail(pf + ".yfov", std::to_string(c.yfov) + ": must be in (0, pi)");
             c.aspectRatio = finite(ctx, p.aspectRatio, pf + ".aspectRatio");
             if (c.aspectRatio < 0.0f) ctx.fail(pf + ".aspectRatio", std::to_string(c.aspectRatio) + ": must be > 0");
             c.znear = finite(ctx, p.znear, pf + ".znear");
@@ -121,12 +124,14 @@ std::vector<Node> convertNodes(const LoadContext& ctx, const tinygltf::Model& mo
         const auto n = static_cast<std::size_t>(stack.back());
         stack.pop_back();
         reached[n] = true;
-        nodes[n].world = nodes[n].parent == -1 ? nodes[n].local
-                                               : nodes[static_cast<std::size_t>(nodes[n].parent)].world * nodes[n].local;
+        nodes[n].world = nodes[n].parent == -1
+                             ? nodes[n].local
+                             : nodes[static_cast<std::size_t>(nodes[n].parent)].world * nodes[n].local;
         // Finite local transforms can multiply to infinity (two nested scales of 1e30).
         if (!allFinite(nodes[n].world))
-            ctx.fail(indexed("nodes", n), "the world transform (the parents' transforms times this node's) "
-                                          "overflows the float range");
+            ctx.fail(indexed("nodes", n),
+                     "the world transform (the parents' transforms times this node's) "
+                     "overflows the float range");
         for (int child : nodes[n].children) stack.push_back(child);
     }
     for (std::size_t i = 0; i < count; ++i)
@@ -138,10 +143,11 @@ void selectScene(const LoadContext& ctx, const tinygltf::Model& model, LoadedMod
     const int requested = ctx.options->scene;
     if (requested >= 0) {
         if (static_cast<std::size_t>(requested) >= model.scenes.size())
-            ctx.fail("scene", "LoadOptions::scene " + std::to_string(requested) + " is out of range: the file has " +
-                                  std::to_string(model.scenes.size()) + " scenes" +
-                                  (model.scenes.empty() ? std::string(" (it has none to choose)")
-                                                        : " (valid: 0.." + std::to_string(model.scenes.size() - 1) + ")"));
+            ctx.fail("scene",
+                     "LoadOptions::scene " + std::to_string(requested) + " is out of range: the file has " +
+                         std::to_string(model.scenes.size()) + " scenes" +
+                         (model.scenes.empty() ? std::string(" (it has none to choose)")
+                                               : " (valid: 0.." + std::to_string(model.scenes.size() - 1) + ")"));
         out.scene = requested;
     } else if (model.defaultScene >= 0) {
         checkIndex(ctx, model.defaultScene, model.scenes.size(), "scene", "scenes", false);
@@ -154,11 +160,13 @@ void selectScene(const LoadContext& ctx, const tinygltf::Model& model, LoadedMod
         std::vector<bool> seen(out.nodes.size(), false);
         for (std::size_t k = 0; k < scene.nodes.size(); ++k) {
             const int node = scene.nodes[k];
-            const std::string field = indexed("scenes", static_cast<std::size_t>(out.scene)) + "." + indexed("nodes", k);
+            const std::string field =
+                indexed("scenes", static_cast<std::size_t>(out.scene)) + "." + indexed("nodes", k);
             checkIndex(ctx, node, out.nodes.size(), field, "nodes", false);
             if (out.nodes[static_cast<std::size_t>(node)].parent != -1)
                 ctx.fail(field, "node " + std::to_string(node) + " is not a root node");
-            if (seen[static_cast<std::size_t>(node)]) ctx.fail(field, "node " + std::to_string(node) + " is listed twice");
+            if (seen[static_cast<std::size_t>(node)])
+                ctx.fail(field, "node " + std::to_string(node) + " is listed twice");
             seen[static_cast<std::size_t>(node)] = true;
             out.sceneRoots.push_back(node);
         }

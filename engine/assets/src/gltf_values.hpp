@@ -37,7 +37,8 @@ glm::vec<N, float> finiteVector(const LoadContext& ctx, const std::vector<double
     if (values.size() != static_cast<std::size_t>(N))
         ctx.fail(field, "has " + std::to_string(values.size()) + " numbers, expected " + std::to_string(N));
     glm::vec<N, float> out;
-    for (int i = 0; i < N; ++i) out[i] = finite(ctx, values[static_cast<std::size_t>(i)], indexed(field.c_str(), static_cast<std::size_t>(i)));
+    for (int i = 0; i < N; ++i)
+        out[i] = finite(ctx, values[static_cast<std::size_t>(i)], indexed(field.c_str(), static_cast<std::size_t>(i)));
     return out;
 }
 

@@ -20,7 +20,8 @@ namespace engine::assets {
 
 RgbaImage RgbaImage::make(int width, int height, render::AlphaMode alpha) {
     if (width <= 0 || height <= 0)
-        throw Error("RgbaImage::make: size " + std::to_string(width) + "x" + std::to_string(height) + " is not positive");
+        throw Error("RgbaImage::make: size " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is not positive");
     RgbaImage image;
     image.width = width;
     image.height = height;

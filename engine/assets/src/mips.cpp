@@ -25,7 +25,8 @@ struct Level {
 
 Level decode(const RgbaImage& image) {
     float table[256];
-    for (int i = 0; i < 256; ++i) table[i] = image.srgb ? srgbToLinear(static_cast<float>(i) / 255.0f) : static_cast<float>(i) / 255.0f;
+    for (int i = 0; i < 256; ++i)
+        table[i] = image.srgb ? srgbToLinear(static_cast<float>(i) / 255.0f) : static_cast<float>(i) / 255.0f;
     Level level{image.width, image.height, std::vector<float>(image.pixelCount() * 4)};
     for (std::size_t t = 0; t < image.pixelCount(); ++t) {
         const std::uint8_t* src = image.pixels.data() + t * 4;
@@ -48,10 +49,15 @@ Level downsample(const Level& src) {
             const int x0 = std::min(2 * x, src.width - 1), x1 = std::min(2 * x + 1, src.width - 1);
             const int y0 = std::min(2 * y, src.height - 1), y1 = std::min(2 * y + 1, src.height - 1);
             const auto at = [&](int sx, int sy) {
-                return src.texels.data() + (static_cast<std::size_t>(sy) * static_cast<std::size_t>(src.width) + static_cast<std::size_t>(sx)) * 4;
+                return src.texels.data() + (static_cast<std::size_t>(sy) * static_cast<std::size_t>(src.width) +
+                                            static_cast<std::size_t>(sx)) *
+                                               4;
             };
-            float* out = dst.texels.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(dst.width) + static_cast<std::size_t>(x)) * 4;
-            for (int c = 0; c < 4; ++c) out[c] = 0.25f * (at(x0, y0)[c] + at(x1, y0)[c] + at(x0, y1)[c] + at(x1, y1)[c]);
+            float* out =
+                dst.texels.data() +
+                (static_cast<std::size_t>(y) * static_cast<std::size_t>(dst.width) + static_cast<std::size_t>(x)) * 4;
+            for (int c = 0; c < 4; ++c)
+                out[c] = 0.25f * (at(x0, y0)[c] + at(x1, y0)[c] + at(x0, y1)[c] + at(x1, y1)[c]);
         }
     return dst;
 }
@@ -85,7 +91,9 @@ float coverageScale(const Level& level, float cutoff, float target) {
 RgbaImage encode(const Level& level, const RgbaImage& like, render::AlphaMode output, float alphaScale) {
     RgbaImage image = RgbaImage::make(level.width, level.height, output);
     image.srgb = like.srgb;
-    const auto encodeColour = [&](float linear) { return toCode(like.srgb ? linearToSrgb(std::clamp(linear, 0.0f, 1.0f)) : linear); };
+    const auto encodeColour = [&](float linear) {
+        return toCode(like.srgb ? linearToSrgb(std::clamp(linear, 0.0f, 1.0f)) : linear);
+    };
     for (std::size_t t = 0; t < image.pixelCount(); ++t) {
         const float* src = level.texels.data() + t * 4;
         std::uint8_t* dst = image.pixels.data() + t * 4;

@@ -28,8 +28,7 @@ void writeDiffImage(const std::filesystem::path& path, const Image& a, const Ima
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
     if (ext == ".png") return writePng(path, quantizeUnorm8(diff));
     if (ext == ".exr") return writeExr(path, diff, ExrPixelType::Float);
-    throw Error("difference image '" + path.string() + "': unsupported extension '" + ext +
-                "' (write .png or .exr)");
+    throw Error("difference image '" + path.string() + "': unsupported extension '" + ext + "' (write .png or .exr)");
 }
 
 }  // namespace engine::capture

@@ -43,8 +43,8 @@ std::string oversizedExrAttribute(std::istream& in, std::uint64_t fileSize) {
     std::array<unsigned char, 8> start{};
     if (!in.read(reinterpret_cast<char*>(start.data()), start.size())) return {};
     if (start[0] != 0x76 || start[1] != 0x2F || start[2] != 0x31 || start[3] != 0x01) return {};
-    const std::uint32_t flags = start[4] | std::uint32_t(start[5]) << 8 | std::uint32_t(start[6]) << 16 |
-                                std::uint32_t(start[7]) << 24;
+    const std::uint32_t flags =
+        start[4] | std::uint32_t(start[5]) << 8 | std::uint32_t(start[6]) << 16 | std::uint32_t(start[7]) << 24;
     const bool multiPart = (flags & kMultiPart) != 0;
     std::string name, type;
     for (bool headerStart = true;;) {
@@ -58,13 +58,13 @@ std::string oversizedExrAttribute(std::istream& in, std::uint64_t fileSize) {
         headerStart = false;
         std::array<unsigned char, 4> size{};
         if (!readName(in, type) || !in.read(reinterpret_cast<char*>(size.data()), size.size())) return {};
-        const std::int32_t declared = static_cast<std::int32_t>(size[0] | std::uint32_t(size[1]) << 8 |
-                                                                std::uint32_t(size[2]) << 16 | std::uint32_t(size[3]) << 24);
+        const std::int32_t declared = static_cast<std::int32_t>(
+            size[0] | std::uint32_t(size[1]) << 8 | std::uint32_t(size[2]) << 16 | std::uint32_t(size[3]) << 24);
         const std::uint64_t at = static_cast<std::uint64_t>(in.tellg());
         const std::uint64_t left = at <= fileSize ? fileSize - at : 0;
         if (declared < 0 || static_cast<std::uint64_t>(declared) > left)
-            return "header attribute '" + printable(name) + "' of type '" + printable(type) + "' declares " + std::to_string(declared) +
-                   " bytes, the file has " + std::to_string(left) + " left";
+            return "header attribute '" + printable(name) + "' of type '" + printable(type) + "' declares " +
+                   std::to_string(declared) + " bytes, the file has " + std::to_string(left) + " left";
         in.seekg(declared, std::ios::cur);
     }
 }

@@ -18,8 +18,8 @@ void requireSize(int width, int height, std::size_t channels) {
 template <typename T>
 void fillPixels(std::vector<T>& pixels, int channels, std::span<const T> value) {
     if (value.size() != static_cast<std::size_t>(channels))
-        throw Error("image fill: " + std::to_string(value.size()) + " values given for " +
-                    std::to_string(channels) + " channels");
+        throw Error("image fill: " + std::to_string(value.size()) + " values given for " + std::to_string(channels) +
+                    " channels");
     for (std::size_t i = 0; i < pixels.size(); i += value.size())
         std::copy(value.begin(), value.end(), pixels.begin() + static_cast<std::ptrdiff_t>(i));
 }
@@ -53,9 +53,7 @@ ImageT makeWithDefaultNames(int width, int height, int channels, AlphaMode alpha
 
 }  // namespace
 
-const char* alphaModeName(AlphaMode mode) {
-    return mode == AlphaMode::Straight ? "straight" : "premultiplied";
-}
+const char* alphaModeName(AlphaMode mode) { return mode == AlphaMode::Straight ? "straight" : "premultiplied"; }
 
 std::vector<std::string> defaultChannelNames(int channels) {
     switch (channels) {

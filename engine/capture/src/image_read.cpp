@@ -38,8 +38,8 @@ Image8 readImage8(const std::filesystem::path& path, const ReadOptions& options)
     detail::OpenedImage opened = detail::openImage(path, options, sizeof(std::uint8_t));
     const OIIO::ImageSpec& spec = opened.spec;
     if (spec.format != OIIO::TypeDesc::UINT8 || !spec.channelformats.empty())
-        detail::throwImageError(path, std::string("stores ") + spec.format.c_str() +
-                                          " data, not 8-bit codes; read it with readImage");
+        detail::throwImageError(
+            path, std::string("stores ") + spec.format.c_str() + " data, not 8-bit codes; read it with readImage");
     Image8 image = Image8::make(spec.width, spec.height, detail::channelNamesOf(spec), opened.alpha);
     detail::readPixels(path, opened, OIIO::TypeDesc::UINT8, image.pixels.data());
     return image;

@@ -73,8 +73,9 @@ void requireImageExtension(const std::filesystem::path& path, std::initializer_l
         listed = listed || ext == allowed;
     }
     if (!listed)
-        detail::throwImageError(path, "the name must end in " + names +
-                                          (ext.empty() ? std::string(", and it has no extension") : ", not '" + ext + "'"));
+        detail::throwImageError(path,
+                                "the name must end in " + names +
+                                    (ext.empty() ? std::string(", and it has no extension") : ", not '" + ext + "'"));
     if (!detail::hasWriterFor(path))
         detail::throwImageError(path, "this OpenImageIO build has no writer for '" + ext + "' files");
 }

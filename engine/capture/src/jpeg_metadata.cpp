@@ -12,7 +12,9 @@ constexpr std::uint8_t kSoi = 0xD8, kEoi = 0xD9, kSos = 0xDA, kTem = 0x01;
 constexpr std::uint8_t kRst0 = 0xD0, kRst7 = 0xD7;
 constexpr std::uint8_t kApp1 = 0xE1, kApp2 = 0xE2, kApp13 = 0xED, kApp15 = 0xEF;
 
-bool standalone(std::uint8_t marker) { return marker == kSoi || marker == kTem || (marker >= kRst0 && marker <= kRst7); }
+bool standalone(std::uint8_t marker) {
+    return marker == kSoi || marker == kTem || (marker >= kRst0 && marker <= kRst7);
+}
 
 }  // namespace
 

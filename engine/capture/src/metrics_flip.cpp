@@ -93,9 +93,8 @@ constexpr Csf kCsfBlueYellow{34.1, 0.04, 13.5, 0.025};
 constexpr double kCsfWidestB = 0.04;
 
 // IEC 61966-2-1 linear sRGB -> XYZ (D65).
-constexpr Mat3 kRgbToXyz{{{0.4124564, 0.3575761, 0.1804375},
-                          {0.2126729, 0.7151522, 0.0721750},
-                          {0.0193339, 0.1191920, 0.9503041}}};
+constexpr Mat3 kRgbToXyz{
+    {{0.4124564, 0.3575761, 0.1804375}, {0.2126729, 0.7151522, 0.0721750}, {0.0193339, 0.1191920, 0.9503041}}};
 
 Mat3 inverse(const Mat3& m) {
     const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
@@ -339,7 +338,8 @@ double flip(const Image& reference, const Image& test, const FlipOptions& option
 
     const int csfRadius =
         static_cast<int>(std::ceil(3.0 * std::sqrt(kCsfWidestB / (2.0 * std::numbers::pi * std::numbers::pi)) * ppd));
-    const std::array<CsfKernel, 3> csf{csfKernel(kCsfAchromatic, ppd, csfRadius), csfKernel(kCsfRedGreen, ppd, csfRadius),
+    const std::array<CsfKernel, 3> csf{csfKernel(kCsfAchromatic, ppd, csfRadius),
+                                       csfKernel(kCsfRedGreen, ppd, csfRadius),
                                        csfKernel(kCsfBlueYellow, ppd, csfRadius)};
     const FeatureKernels features = featureKernels(ppd);
 
@@ -356,7 +356,8 @@ double flip(const Image& reference, const Image& test, const FlipOptions& option
         double rowSum = 0.0;
         for (std::size_t x = 0; x < w; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * w + x;
-            const float de = std::pow(hyab({r.l[i], r.a[i], r.b[i]}, {t.l[i], t.a[i], t.b[i]}), static_cast<float>(kQc));
+            const float de =
+                std::pow(hyab({r.l[i], r.a[i], r.b[i]}, {t.l[i], t.a[i], t.b[i]}), static_cast<float>(kQc));
             float colour = de < pccmax ? pt / pccmax * de : pt + (de - pccmax) / (cmax - pccmax) * (1.0f - pt);
             if (colour > 1.0f) colour = 1.0f;  // (NaN passes through)
             const float featureDiff = std::max(std::abs(r.edge[i] - t.edge[i]), std::abs(r.point[i] - t.point[i]));

@@ -41,15 +41,11 @@ float encodeClamped(float v) { return encodeSrgbClamped(v); }
 
 }  // namespace
 
-double rmseLinear(const Image& reference, const Image& test) {
-    return rmse(reference, test, "rmseLinear", identity);
-}
+double rmseLinear(const Image& reference, const Image& test) { return rmse(reference, test, "rmseLinear", identity); }
 double psnrLinear(const Image& reference, const Image& test) {
     return psnrFromRms(rmse(reference, test, "psnrLinear", identity), 1.0);
 }
-double rmseSrgb(const Image& reference, const Image& test) {
-    return rmse(reference, test, "rmseSrgb", encodeClamped);
-}
+double rmseSrgb(const Image& reference, const Image& test) { return rmse(reference, test, "rmseSrgb", encodeClamped); }
 double psnrSrgb(const Image& reference, const Image& test) {
     return psnrFromRms(rmse(reference, test, "psnrSrgb", encodeClamped), 1.0);
 }

@@ -57,7 +57,9 @@ double ssim(const Image& reference, const Image& test) {
     // errors of ~1e-5 into flat regions.
     constexpr std::size_t kPlanes = 5;
     std::vector<double> rows(kPlanes * ow * static_cast<std::size_t>(height), 0.0f);
-    auto plane = [&](std::size_t p, int y) { return &rows[(p * static_cast<std::size_t>(height) + static_cast<std::size_t>(y)) * ow]; };
+    auto plane = [&](std::size_t p, int y) {
+        return &rows[(p * static_cast<std::size_t>(height) + static_cast<std::size_t>(y)) * ow];
+    };
     forEachRow(height, [&](int y) {
         const float* ra = &a[static_cast<std::size_t>(y) * w];
         const float* rb = &b[static_cast<std::size_t>(y) * w];
@@ -97,8 +99,8 @@ double ssim(const Image& reference, const Image& test) {
             const double varA = m[2][x] - muA * muA;
             const double varB = m[3][x] - muB * muB;
             const double cov = m[4][x] - muA * muB;
-            rowSum += ((2.0 * muA * muB + kC1) * (2.0 * cov + kC2)) /
-                      ((muA * muA + muB * muB + kC1) * (varA + varB + kC2));
+            rowSum +=
+                ((2.0 * muA * muB + kC1) * (2.0 * cov + kC2)) / ((muA * muA + muB * muB + kC1) * (varA + varB + kC2));
         }
         return rowSum;
     });

@@ -23,8 +23,7 @@ void requireComparable(const Image& reference, const Image& test, std::string_vi
 
 std::array<int, 3> colourChannels(const Image& image, std::string_view metric) {
     const int r = image.channelIndex("R"), g = image.channelIndex("G"), b = image.channelIndex("B");
-    if (r >= 0 && g >= 0 && b >= 0 && r < image.channels && g < image.channels && b < image.channels)
-        return {r, g, b};
+    if (r >= 0 && g >= 0 && b >= 0 && r < image.channels && g < image.channels && b < image.channels) return {r, g, b};
     std::array<int, 3> found{};
     std::size_t count = 0;
     const int alpha = image.alphaChannel();

@@ -52,11 +52,12 @@ void checkLimits(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
     const std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         throwImageError(path, "zero-size image (" + size + ", " + std::to_string(spec.nchannels) + " channels)");
-    if (spec.depth > 1) throwImageError(path, "volume images (depth " + std::to_string(spec.depth) + ") are not supported");
+    if (spec.depth > 1)
+        throwImageError(path, "volume images (depth " + std::to_string(spec.depth) + ") are not supported");
     if (spec.deep) throwImageError(path, "deep images are not supported");
     if (spec.width > options.maxWidth || spec.height > options.maxHeight)
-        throwImageError(path, "image is " + size + ", over the size cap of " + std::to_string(options.maxWidth) +
-                                  "x" + std::to_string(options.maxHeight));
+        throwImageError(path, "image is " + size + ", over the size cap of " + std::to_string(options.maxWidth) + "x" +
+                                  std::to_string(options.maxHeight));
     const std::uint64_t bytes =
         saturatingProduct({static_cast<std::uint64_t>(spec.width), static_cast<std::uint64_t>(spec.height),
                            static_cast<std::uint64_t>(spec.nchannels), bytesPerValue});
@@ -134,7 +135,8 @@ OpenedImage openImage(const std::filesystem::path& path, const ReadOptions& opti
     checkLimits(path, opened.spec, options, bytesPerValue);
 
     const std::string format = opened.input->format_name();
-    const bool straight = opened.spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0 || storesStraightAlpha(format);
+    const bool straight =
+        opened.spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0 || storesStraightAlpha(format);
     opened.alpha = straight ? AlphaMode::Straight : AlphaMode::Premultiplied;
     opened.srgbEncoded = isSrgbEncoded(opened.spec);
     return opened;

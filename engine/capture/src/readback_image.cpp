@@ -17,8 +17,7 @@ Image imageFromReadback(const render::Readback& r) {
         for (int x = 0; x < r.width; ++x) {
             float rgba[4] = {0.0f, 0.0f, 0.0f, 1.0f};
             for (int c = 0; c < r.channels; ++c) rgba[c] = r.at(x, y, c);
-            for (int c = 0; c < 4; ++c)
-                image.at(x, y, c) = (info.isSrgb && c < 3) ? srgbToLinear(rgba[c]) : rgba[c];
+            for (int c = 0; c < 4; ++c) image.at(x, y, c) = (info.isSrgb && c < 3) ? srgbToLinear(rgba[c]) : rgba[c];
         }
     }
     return image;

@@ -13,7 +13,8 @@ double toEncoded(double v) { return v <= 0.0031308 ? v * 12.92 : 1.055 * std::po
 const std::array<float, 256>& decodeTable() {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
-        for (int code = 0; code < 256; ++code) t[static_cast<std::size_t>(code)] = static_cast<float>(toLinear(code / 255.0));
+        for (int code = 0; code < 256; ++code)
+            t[static_cast<std::size_t>(code)] = static_cast<float>(toLinear(code / 255.0));
         return t;
     }();
     return table;

@@ -65,7 +65,8 @@ std::string shortest(float value) {
 
 std::string percentOf(std::size_t count, std::size_t total) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.3g", total ? 100.0 * static_cast<double>(count) / static_cast<double>(total) : 0.0);
+    std::snprintf(text, sizeof text, "%.3g",
+                  total ? 100.0 * static_cast<double>(count) / static_cast<double>(total) : 0.0);
     return text;
 }
 
@@ -75,8 +76,8 @@ void printReport(const Image& a, const Image& b, const CompareResult& r, const C
               << "  Peak SNR = " << number(r.psnr) << "\n"
               << "  Max error  = " << number(r.maxError);
     if (r.maxError != 0.0) {
-        std::cout << " @ (" << r.maxX << ", " << r.maxY << ", " << a.channelNames[static_cast<std::size_t>(r.maxChannel)]
-                  << ")  values are ";
+        std::cout << " @ (" << r.maxX << ", " << r.maxY << ", "
+                  << a.channelNames[static_cast<std::size_t>(r.maxChannel)] << ")  values are ";
         for (int c = 0; c < a.channels; ++c) std::cout << (c ? ", " : "") << shortest(a.at(r.maxX, r.maxY, c));
         std::cout << " vs ";
         for (int c = 0; c < b.channels; ++c) std::cout << (c ? ", " : "") << shortest(b.at(r.maxX, r.maxY, c));
@@ -129,8 +130,9 @@ int compare(const Arguments& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Compare two images like OpenImageIO's idiff. Exit 0 pass, 1 warn, 2 fail (or a usage error), 4 an "
-                 "input unreadable or the diff image not written."};
+    CLI::App app{
+        "Compare two images like OpenImageIO's idiff. Exit 0 pass, 1 warn, 2 fail (or a usage error), 4 an "
+        "input unreadable or the diff image not written."};
     Arguments args;
     CompareOptions& options = args.options;
     app.add_option("A", args.pathA, "First image")->required();

@@ -36,7 +36,9 @@ constexpr Signature kSignatures[] = {
     {"ZIP", "PK\x03\x04"sv},
     {"gzip", "\x1F\x8B"sv},
     {"PDF", "%PDF-"sv},
-    {"ELF executable", "\x7F" "ELF"sv},
+    {"ELF executable",
+     "\x7F"
+     "ELF"sv},
 };
 
 bool startsWith(std::span<const std::uint8_t> head, const Signature& s) {

@@ -17,8 +17,7 @@ Level level() { return g_level; }
 
 void write(Level lvl, std::string_view message) {
     std::lock_guard lock(g_write_mutex);
-    std::fprintf(stderr, "[%s] %.*s\n", kTags[static_cast<int>(lvl)], static_cast<int>(message.size()),
-                 message.data());
+    std::fprintf(stderr, "[%s] %.*s\n", kTags[static_cast<int>(lvl)], static_cast<int>(message.size()), message.data());
 }
 
 }  // namespace engine::log

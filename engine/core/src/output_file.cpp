@@ -24,9 +24,10 @@ fs::path directoryOf(const fs::path& target) { return target.has_parent_path() ?
 
 std::string randomSuffix() {
     static const char kLetters[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
-    thread_local std::mt19937_64 random(std::random_device{}() ^
-                                        static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
-                                        static_cast<std::uint64_t>(::getpid()));
+    thread_local std::mt19937_64 random(
+        std::random_device{}() ^
+        static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+        static_cast<std::uint64_t>(::getpid()));
     std::string suffix(6, ' ');
     for (char& c : suffix) c = kLetters[random() % (sizeof kLetters - 1)];
     return suffix;
@@ -56,8 +57,7 @@ void requireWritableDirectory(const fs::path& directory, bool create) {
     const fs::path dir = directory.empty() ? fs::path(".") : directory;
     std::error_code ec;
     const fs::file_status status = fs::status(dir, ec);
-    if (fs::exists(status) && !fs::is_directory(status))
-        throw Error("'" + dir.string() + "' is not a directory");
+    if (fs::exists(status) && !fs::is_directory(status)) throw Error("'" + dir.string() + "' is not a directory");
     if (!fs::exists(status)) {
         if (!create) throw Error("directory '" + dir.string() + "' does not exist");
         fs::create_directories(dir, ec);

@@ -42,8 +42,7 @@ FailModePlan planFailMode(const FailModeInputs& in) {
         return plan;
     }
 
-    const bool depthStatic =
-        !depthWrite || in.depthFunc == CompareFunc::Always || in.depthFunc == CompareFunc::Never;
+    const bool depthStatic = !depthWrite || in.depthFunc == CompareFunc::Always || in.depthFunc == CompareFunc::Never;
     if (depthStatic) {
         // One step per fragment subset: attributes written by both classes go to an All step,
         // those written by passing fragments only to a Passing step (fail writes are a subset

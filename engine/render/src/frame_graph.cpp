@@ -70,7 +70,8 @@ void FrameGraph::rollBack(const DeclarationMark& mark) {
     }
 }
 
-FrameGraphTexture FrameGraph::importTexture(std::string name, const FrameGraphTextureDesc& desc, ConcreteTexture texture) {
+FrameGraphTexture FrameGraph::importTexture(std::string name, const FrameGraphTextureDesc& desc,
+                                            ConcreteTexture texture) {
     requireNotCompiled("import " + quoted(name));
     const auto index = static_cast<std::uint32_t>(resources_.size());
     VirtualResource resource;
@@ -167,7 +168,9 @@ FrameGraphTexture FrameGraph::writeTexture(std::uint32_t pass, FrameGraphTexture
     return handle(texture.resource(), latest + 1);
 }
 
-const FrameGraphTextureDesc& FrameGraph::desc(FrameGraphTexture texture) const { return resource(texture, "desc()").desc; }
+const FrameGraphTextureDesc& FrameGraph::desc(FrameGraphTexture texture) const {
+    return resource(texture, "desc()").desc;
+}
 
 std::string_view FrameGraph::name(FrameGraphTexture texture) const { return resource(texture, "name()").name; }
 

@@ -45,7 +45,8 @@ std::optional<std::uint64_t> keyedBytes(std::string_view text, std::string_view 
 }
 
 std::string amount(std::uint64_t bytes) {
-    return bytes >= (std::uint64_t{1} << 20) ? std::to_string(bytes >> 20) + " MiB" : std::to_string((bytes + 1023) >> 10) + " KiB";
+    return bytes >= (std::uint64_t{1} << 20) ? std::to_string(bytes >> 20) + " MiB"
+                                             : std::to_string((bytes + 1023) >> 10) + " KiB";
 }
 
 void keepLeast(std::optional<AvailableMemory>& least, std::uint64_t bytes, std::string source) {
@@ -137,8 +138,8 @@ std::optional<AvailableMemory> hostMemoryAvailable() {
 void checkFitsInMemory(std::uint64_t bytes, const std::string& what, const MemoryProbe& probe) {
     const std::optional<AvailableMemory> available = probe ? probe() : std::nullopt;
     if (!available || bytes <= available->bytes / 2) return;
-    throw Error(what + " needs " + amount(bytes) + " and as much again free beside it, but " + amount(available->bytes) +
-                " is available (" + available->source + ")");
+    throw Error(what + " needs " + amount(bytes) + " and as much again free beside it, but " +
+                amount(available->bytes) + " is available (" + available->source + ")");
 }
 
 }  // namespace engine::render

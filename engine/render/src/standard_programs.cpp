@@ -31,8 +31,8 @@ ProgramDesc alphaOnly() {
     ProgramDesc d = describe<AlphaOnlyParams>(ProgramKind::AlphaOnly, VertexInput::Mesh, "AlphaOnlyParams");
     d.gl.uniforms = {{"u_viewProj", UniformType::Mat4, offsetof(AlphaOnlyParams, viewProj)},
                      {"u_alphaFactor", UniformType::Float, offsetof(AlphaOnlyParams, alphaFactor)}};
-    d.gl.textures = {{"u_baseColor", offsetof(AlphaOnlyParams, baseColor), 0, TextureRead::Sampled,
-                      TextureUse::Sampled, true, "u_hasTexture", "u_filter"}};
+    d.gl.textures = {{"u_baseColor", offsetof(AlphaOnlyParams, baseColor), 0, TextureRead::Sampled, TextureUse::Sampled,
+                      true, "u_hasTexture", "u_filter"}};
     return d;
 }
 

@@ -8,16 +8,16 @@
 namespace engine::render {
 
 const char* compareFuncName(CompareFunc func) {
-    constexpr const char* kNames[] = {"Never", "Less", "Equal", "LessEqual", "Greater", "NotEqual", "GreaterEqual",
-                                      "Always"};
+    constexpr const char* kNames[] = {"Never",   "Less",     "Equal",        "LessEqual",
+                                      "Greater", "NotEqual", "GreaterEqual", "Always"};
     return kNames[static_cast<int>(func)];
 }
 
 const char* blendFactorName(BlendFactor factor) {
-    constexpr const char* kNames[] = {"Zero",        "One",           "SrcColor",         "InvSrcColor",
-                                      "SrcAlpha",    "InvSrcAlpha",   "DstColor",         "InvDstColor",
-                                      "DstAlpha",    "InvDstAlpha",   "SrcAlphaSat",      "ConstantColor",
-                                      "InvConstantColor", "ConstantAlpha", "InvConstantAlpha"};
+    constexpr const char* kNames[] = {
+        "Zero",        "One",           "SrcColor",         "InvSrcColor",   "SrcAlpha",
+        "InvSrcAlpha", "DstColor",      "InvDstColor",      "DstAlpha",      "InvDstAlpha",
+        "SrcAlphaSat", "ConstantColor", "InvConstantColor", "ConstantAlpha", "InvConstantAlpha"};
     return kNames[static_cast<int>(factor)];
 }
 

@@ -44,11 +44,11 @@ void validateTextureData(const TextureDesc& desc, const TextureData& data, const
     for (std::size_t level = 0; level < data.levels.size(); ++level) {
         const std::size_t pixels =
             std::size_t(std::max(1, desc.width >> level)) * std::size_t(std::max(1, desc.height >> level));
-        const std::size_t expected = half ? pixels * info.channels * sizeof(float)
-                                          : pixels * std::size_t(desc.samples) * info.bytesPerPixel;
+        const std::size_t expected =
+            half ? pixels * info.channels * sizeof(float) : pixels * std::size_t(desc.samples) * info.bytesPerPixel;
         if (data.levels[level].size() != expected)
-            throw Error(what + ": level " + std::to_string(level) + " has " + std::to_string(data.levels[level].size()) +
-                        " bytes, expected " + std::to_string(expected));
+            throw Error(what + ": level " + std::to_string(level) + " has " +
+                        std::to_string(data.levels[level].size()) + " bytes, expected " + std::to_string(expected));
     }
 }
 
@@ -70,8 +70,8 @@ void validateBufferUpdate(const BufferDesc& desc, std::uint64_t offset, std::uin
 
 std::string validateResolve(const TextureDesc& source, const TextureDesc& destination) {
     const std::string what = "resolve " + quotedName(source.name) + " -> " + quotedName(destination.name);
-    if (source.width != destination.width || source.height != destination.height || source.format != destination.format ||
-        destination.samples != 1)
+    if (source.width != destination.width || source.height != destination.height ||
+        source.format != destination.format || destination.samples != 1)
         throw Error(what + ": needs the same size and format and a single-sampled destination");
     return what;
 }
@@ -87,8 +87,8 @@ Error uncountedQueryError(const std::string& queryName) {
 void checkQueryUse(QueryHandle query, const std::string& queryName, const PassDesc* open, bool destroying) {
     if (!open) return;
     if (open->countSamplesInto == query)
-        throw Error("occlusion query " + quotedName(queryName) + (destroying ? " destroyed" : " read") + " while pass " +
-                    quotedName(open->name) + " counts into it");
+        throw Error("occlusion query " + quotedName(queryName) + (destroying ? " destroyed" : " read") +
+                    " while pass " + quotedName(open->name) + " counts into it");
     if (destroying && open->drawOnlyIfSamplesIn == query)
         throw Error("occlusion query " + quotedName(queryName) + " destroyed while pass " + quotedName(open->name) +
                     " draws only if it found samples");
@@ -101,14 +101,16 @@ PassExtent validatePass(const PassDesc& pass, const ResourceLookup& lookup) {
         if (extent.width == 0) {
             extent = {t.width, t.height, t.samples};
         } else if (t.width != extent.width || t.height != extent.height || t.samples != extent.samples) {
-            throw Error(what + ": attachment " + quotedName(t.name) + " differs in size or sample count from the others");
+            throw Error(what + ": attachment " + quotedName(t.name) +
+                        " differs in size or sample count from the others");
         }
         if (!(t.usage & UsageRenderTarget)) throw Error(what + ": " + quotedName(t.name) + " is not a render target");
     };
     for (const ColorAttachment& c : pass.color) {
         if (!c.texture) continue;
         const TextureDesc& t = lookup.texture(c.texture);
-        if (formatInfo(t.format).isDepth) throw Error(what + ": depth texture " + quotedName(t.name) + " bound as colour");
+        if (formatInfo(t.format).isDepth)
+            throw Error(what + ": depth texture " + quotedName(t.name) + " bound as colour");
         checkSize(t);
     }
     if (pass.depth.texture) {
@@ -179,8 +181,7 @@ void checkTextures(const ProgramDesc& program, const DrawParams& params, const D
 // buffer, kept by the backend since the buffer was last written, settles nearly every draw
 // at once; only a buffer holding an index out of this draw's vertex range is scanned, to say
 // which index and where.
-void checkIndices(const DrawDesc& d, std::uint64_t vertexCount, const DrawChecks& check,
-                  const ResourceLookup& lookup) {
+void checkIndices(const DrawDesc& d, std::uint64_t vertexCount, const DrawChecks& check, const ResourceLookup& lookup) {
     const BufferDesc& ib = check.bufferOfKind(d.indices, BufferKind::Index, "an index buffer");
     const std::uint64_t indexCount = ib.size / 4;
     if (std::uint64_t(d.first) + d.count > indexCount)

@@ -14,39 +14,40 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
     std::vector<int> batchOfPart(library.partCount(), -1);
     DrawLists lists;
     std::vector<DrawBatch> ownMask, ownOpaque;  // batches of overridden parts, one entity each
-    registry.view<const Transform, const Renderable>().each([&](ecs::Entity e, const Transform& t, const Renderable& r) {
-        const glm::mat4 model = t.matrix();
-        const VertexOverride* override = registry.tryGet<VertexOverride>(e);
-        const std::vector<std::uint32_t>& parts = library.partsOf(r.model);
-        for (std::size_t i = 0; i < parts.size(); ++i) {
-            const std::uint32_t partIndex = parts[i];
-            const MeshPart& part = library.part(partIndex);
-            const render::BufferHandle own =
-                override && i < override->buffers.size() ? override->buffers[i] : render::BufferHandle{};
-            const bool ownBounds = own && i < override->bounds.size() && !override->bounds[i].empty();
-            const Aabb world = (ownBounds ? override->bounds[i] : part.bounds).transformed(model);
-            if (!intersectsViewVolume(world, viewProj)) continue;
-            const render::Instance instance{model, glm::vec4(1.0f)};
-            const float distance = glm::length((world.min + world.max) * 0.5f - cameraPosition);
-            if (part.material.surface == SurfaceClass::Blend) {
-                lists.blend.push_back({partIndex, own, {instance}, world, distance});
-                continue;
+    registry.view<const Transform, const Renderable>().each(
+        [&](ecs::Entity e, const Transform& t, const Renderable& r) {
+            const glm::mat4 model = t.matrix();
+            const VertexOverride* override = registry.tryGet<VertexOverride>(e);
+            const std::vector<std::uint32_t>& parts = library.partsOf(r.model);
+            for (std::size_t i = 0; i < parts.size(); ++i) {
+                const std::uint32_t partIndex = parts[i];
+                const MeshPart& part = library.part(partIndex);
+                const render::BufferHandle own =
+                    override && i < override->buffers.size() ? override->buffers[i] : render::BufferHandle{};
+                const bool ownBounds = own && i < override->bounds.size() && !override->bounds[i].empty();
+                const Aabb world = (ownBounds ? override->bounds[i] : part.bounds).transformed(model);
+                if (!intersectsViewVolume(world, viewProj)) continue;
+                const render::Instance instance{model, glm::vec4(1.0f)};
+                const float distance = glm::length((world.min + world.max) * 0.5f - cameraPosition);
+                if (part.material.surface == SurfaceClass::Blend) {
+                    lists.blend.push_back({partIndex, own, {instance}, world, distance});
+                    continue;
+                }
+                if (own) {
+                    (part.material.surface == SurfaceClass::Mask ? ownMask : ownOpaque)
+                        .push_back({partIndex, own, {instance}, world, distance});
+                    continue;
+                }
+                std::vector<DrawBatch>& list = part.material.surface == SurfaceClass::Mask ? lists.mask : lists.opaque;
+                int& slot = batchOfPart[partIndex];
+                if (slot < 0) {
+                    slot = static_cast<int>(list.size());
+                    list.push_back({partIndex, {}, {}, {}, 0.0f});
+                }
+                list[slot].instances.push_back(instance);
+                list[slot].worldBounds.add(world);
             }
-            if (own) {
-                (part.material.surface == SurfaceClass::Mask ? ownMask : ownOpaque)
-                    .push_back({partIndex, own, {instance}, world, distance});
-                continue;
-            }
-            std::vector<DrawBatch>& list = part.material.surface == SurfaceClass::Mask ? lists.mask : lists.opaque;
-            int& slot = batchOfPart[partIndex];
-            if (slot < 0) {
-                slot = static_cast<int>(list.size());
-                list.push_back({partIndex, {}, {}, {}, 0.0f});
-            }
-            list[slot].instances.push_back(instance);
-            list[slot].worldBounds.add(world);
-        }
-    });
+        });
     auto byPart = [](const DrawBatch& a, const DrawBatch& b) { return a.part < b.part; };
     // Own-vertex batches follow the shared batch of their part, in view order (deterministic).
     lists.opaque.insert(lists.opaque.end(), ownOpaque.begin(), ownOpaque.end());

@@ -20,10 +20,12 @@ GrassFeature::GrassFeature(Backend& backend, std::vector<Tuft> tufts, const Gras
     std::vector<std::uint32_t> i;
     buildCard(options_, v, i);
     // Owned: whatever a later create throws, what was made before is destroyed with it.
-    vertices_ = Owned<BufferHandle>(backend, backend.createBuffer({"grass card", BufferKind::Vertex, v.size() * sizeof(Vertex)},
-                                                                  std::as_bytes(std::span(v))));
-    indices_ = Owned<BufferHandle>(backend, backend.createBuffer({"grass card indices", BufferKind::Index, i.size() * 4},
-                                                                 std::as_bytes(std::span(i))));
+    vertices_ =
+        Owned<BufferHandle>(backend, backend.createBuffer({"grass card", BufferKind::Vertex, v.size() * sizeof(Vertex)},
+                                                          std::as_bytes(std::span(v))));
+    indices_ = Owned<BufferHandle>(
+        backend,
+        backend.createBuffer({"grass card indices", BufferKind::Index, i.size() * 4}, std::as_bytes(std::span(i))));
     indexCount_ = std::uint32_t(i.size());
     constexpr int kW = 64, kH = 32;
     const std::vector<std::uint8_t> texels = bladeTexels(kW, kH, 17);

@@ -71,7 +71,7 @@ void buildCard(const GrassOptions& o, std::vector<engine::render::Vertex>& verti
             engine::render::Vertex v;
             v.position = p[i];
             v.normal = {0.0f, 1.0f, 0.0f};
-            v.uv = {uv[i].x + 0.31f * float(q), uv[i].y};  // each card a different stretch of blades
+            v.uv = {uv[i].x + 0.31f * float(q), uv[i].y};                // each card a different stretch of blades
             v.color = glm::vec4(glm::vec3(i < 2 ? 0.75f : 1.0f), 1.0f);  // darker at the root
             vertices.push_back(v);
         }

@@ -52,10 +52,8 @@ OverlayMesh textMesh(const OverlayContent& content) {
 }
 
 Overlay::Overlay(Backend& backend)
-    : backend_(backend),
-      fillProgram_(backend, backend.createProgram(overlayFillProgram())),
-      panelProgram_(backend, backend.createProgram(overlayPanelProgram())),
-      buffers_(backend) {
+    : backend_(backend), fillProgram_(backend, backend.createProgram(overlayFillProgram())),
+      panelProgram_(backend, backend.createProgram(overlayPanelProgram())), buffers_(backend) {
     PipelineDesc p;
     p.name = "overlay fill";
     p.program = fillProgram_.get();
@@ -87,10 +85,8 @@ FrameGraphTexture Overlay::addPass(FrameGraph& graph, const std::string& name, F
                 d.out = b.write(b.read(color));
                 if (empty) b.markEmpty();
             },
-            [this, target, width, height, name, content = std::move(content)](const FrameGraph::Resources&,
-                                                                              const Data&) {
-                draw(target, width, height, content, name);
-            })
+            [this, target, width, height, name, content = std::move(content)](
+                const FrameGraph::Resources&, const Data&) { draw(target, width, height, content, name); })
         .out;
 }
 
@@ -104,13 +100,16 @@ void Overlay::drawMesh(const OverlayMesh& mesh, int width, int height, const cha
     DrawDesc d;
     d.pipeline = fill_;
     d.params = OverlayFillParams{pixelToClip(width, height)};
-    d.vertices = buffers_.upload(std::string(name) + " vertices", BufferKind::Vertex, std::as_bytes(std::span(vertices)));
-    d.indices = buffers_.upload(std::string(name) + " indices", BufferKind::Index, std::as_bytes(std::span(mesh.indices)));
+    d.vertices =
+        buffers_.upload(std::string(name) + " vertices", BufferKind::Vertex, std::as_bytes(std::span(vertices)));
+    d.indices =
+        buffers_.upload(std::string(name) + " indices", BufferKind::Index, std::as_bytes(std::span(mesh.indices)));
     d.count = std::uint32_t(mesh.indices.size());
     backend_.draw(d);
 }
 
-void Overlay::draw(TextureHandle target, int width, int height, const OverlayContent& content, const std::string& name) {
+void Overlay::draw(TextureHandle target, int width, int height, const OverlayContent& content,
+                   const std::string& name) {
     PassDesc pass;
     pass.name = name;
     pass.color[0] = {target, LoadOp::Load};

@@ -60,7 +60,8 @@ ProgramDesc overlayFillProgram() {
 }
 
 ProgramDesc overlayPanelProgram() {
-    ProgramDesc d = describeProgram<OverlayPanelParams>("OverlayPanel", VertexInput::Fullscreen, "hud::OverlayPanelParams");
+    ProgramDesc d =
+        describeProgram<OverlayPanelParams>("OverlayPanel", VertexInput::Fullscreen, "hud::OverlayPanelParams");
     d.gl.fragment = kPanelFragment;
     d.gl.uniforms = {
         {"u_sourceX", UniformType::Int, offsetof(OverlayPanelParams, sourceX)},
@@ -69,7 +70,8 @@ ProgramDesc overlayPanelProgram() {
         {"u_targetY", UniformType::Int, offsetof(OverlayPanelParams, targetY)},
         {"u_zoom", UniformType::Int, offsetof(OverlayPanelParams, zoom)},
     };
-    d.gl.textures = {{"u_panelSource", offsetof(OverlayPanelParams, source), 0, TextureRead::Texel, TextureUse::Sampled}};
+    d.gl.textures = {
+        {"u_panelSource", offsetof(OverlayPanelParams, source), 0, TextureRead::Texel, TextureUse::Sampled}};
     d.check = [](const void* params, const DrawCheck& check) {
         const auto& p = *static_cast<const OverlayPanelParams*>(params);
         if (p.zoom < 1 || p.zoom > 64) check.fail("panel zoom " + std::to_string(p.zoom) + " is not in 1..64");

@@ -16,7 +16,8 @@ using namespace engine::render;
 void validate(const LightShaftOptions& o) {
     for (float v : {o.color.r, o.color.g, o.color.b, o.intensity, o.decay, o.density, o.glowRadius})
         if (!std::isfinite(v)) throw engine::Error("LightShaftOptions: a value is not finite");
-    if (o.color.r < 0.0f || o.color.g < 0.0f || o.color.b < 0.0f) throw engine::Error("LightShaftOptions.color is negative");
+    if (o.color.r < 0.0f || o.color.g < 0.0f || o.color.b < 0.0f)
+        throw engine::Error("LightShaftOptions.color is negative");
     if (o.intensity < 0.0f) throw engine::Error("LightShaftOptions.intensity must be >= 0");
     if (!(o.glowRadius > 0.0f)) throw engine::Error("LightShaftOptions.glowRadius must be > 0");
     if (!(o.decay > 0.0f && o.decay <= 1.0f)) throw engine::Error("LightShaftOptions.decay must be in (0, 1]");
@@ -32,8 +33,8 @@ LightShaftFeature::LightShaftFeature(Backend& backend, const LightShaftOptions& 
     PipelineDesc p;
     p.name = "light shafts (additive)";
     p.program = program_.get();
-    p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
-                  BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+    p.blend[0] = {true,         BlendFactor::One, BlendFactor::One, BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
+                  BlendOp::Add, WriteRGB};
     pipeline_ = Owned<PipelineHandle>(backend, backend.createPipeline(p));
     if (options_.skipWhenSunHidden) probe_ = std::make_unique<SunVisibilityProbe>(backend);
 }
@@ -49,7 +50,8 @@ bool LightShaftFeature::prepare(const engine::scene::FeatureFrame& frame) {
     const glm::vec3 toward = glm::normalize(frame.sun.towardLight);
     const glm::vec4 clip = frame.viewProj * glm::vec4(toward, 0.0f);
     if (!(clip.w > 1e-6f) || !std::isfinite(clip.x) || !std::isfinite(clip.y)) return false;
-    sunPixel_ = {(clip.x / clip.w * 0.5f + 0.5f) * float(frame.width), (0.5f - clip.y / clip.w * 0.5f) * float(frame.height)};
+    sunPixel_ = {(clip.x / clip.w * 0.5f + 0.5f) * float(frame.width),
+                 (0.5f - clip.y / clip.w * 0.5f) * float(frame.height)};
     return std::isfinite(sunPixel_.x) && std::isfinite(sunPixel_.y);
 }
 
@@ -73,8 +75,8 @@ void LightShaftFeature::draw(const engine::scene::FeatureFrame& frame) {
         // A sample q adds light only when |q - sun| < glowRadius and its texel floor(q) is sky;
         // that texel's centre is within glowRadius + sqrt(2)/2 of the sun, so probing the
         // centres within glowRadius + 1 finds every texel that could add light.
-        lastQuery_ = probe_->probe(frame.depth, frame.width, frame.height, frame.depthFunc, sunPixel_,
-                                   params.glowRadius + 1.0f);
+        lastQuery_ =
+            probe_->probe(frame.depth, frame.width, frame.height, frame.depthFunc, sunPixel_, params.glowRadius + 1.0f);
         if (!lastQuery_) return;  // the glow misses the frame: nothing to add
         pass.drawOnlyIfSamplesIn = *lastQuery_;
     }

@@ -67,7 +67,8 @@ struct LightShaftKernel {
             const glm::vec2 q = p + step * float(i);
             if (!(q.x >= 0.0f && q.y >= 0.0f && q.x < float(w) && q.y < float(h))) break;  // left the screen
             float z;
-            std::memcpy(&z, texels + (std::size_t(int(q.y)) * std::size_t(w) + std::size_t(int(q.x))) * sizeof z, sizeof z);
+            std::memcpy(&z, texels + (std::size_t(int(q.y)) * std::size_t(w) + std::size_t(int(q.x))) * sizeof z,
+                        sizeof z);
             const bool sky = params.greaterIsCloser ? !(z > params.farDepth) : !(z < params.farDepth);
             if (sky) sum += weight * sunGlow(q);
             weight *= params.decay;

@@ -68,7 +68,8 @@ void check(const void* params, const DrawCheck& check) {
 }  // namespace
 
 ProgramDesc lightShaftProgram() {
-    ProgramDesc d = describeProgram<LightShaftParams>("LightShafts", VertexInput::Fullscreen, "lightshafts::LightShaftParams");
+    ProgramDesc d =
+        describeProgram<LightShaftParams>("LightShafts", VertexInput::Fullscreen, "lightshafts::LightShaftParams");
     d.gl.fragment = kFragment;
     d.gl.uniforms = {
         {"u_sunPixel", UniformType::Vec2, offsetof(LightShaftParams, sunPixel)},

@@ -45,8 +45,8 @@ Owned<PipelineHandle> probePipeline(Backend& backend, CompareFunc func) {
 Owned<BufferHandle> discBuffer(Backend& backend) {
     const auto disc = circumscribedDisc();
     const auto bytes = std::as_bytes(std::span(disc));
-    return Owned<BufferHandle>(backend,
-                               backend.createBuffer({"light shafts: sun disc", BufferKind::Vertex, bytes.size()}, bytes));
+    return Owned<BufferHandle>(
+        backend, backend.createBuffer({"light shafts: sun disc", BufferKind::Vertex, bytes.size()}, bytes));
 }
 
 }  // namespace
@@ -57,8 +57,7 @@ SunVisibilityProbe::SunVisibilityProbe(Backend& backend)
       // only where the clear value (sky) is left.
       standardZ_(probePipeline(backend, CompareFunc::LessEqual)),
       reverseZ_(probePipeline(backend, CompareFunc::GreaterEqual)),
-      query_(backend, backend.createQuery("light shafts: sun visible")),
-      disc_(discBuffer(backend)) {}
+      query_(backend, backend.createQuery("light shafts: sun visible")), disc_(discBuffer(backend)) {}
 
 std::optional<QueryHandle> SunVisibilityProbe::probe(TextureHandle depth, int width, int height, CompareFunc depthFunc,
                                                      glm::vec2 sunPixel, float radius) {

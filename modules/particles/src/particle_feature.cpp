@@ -29,8 +29,9 @@ ParticleFeature::ParticleFeature(Backend& backend, const ParticleOptions& option
 ParticleFeature::~ParticleFeature() = default;
 
 void ParticleFeature::registerSystems(engine::ecs::Scheduler& scheduler) {
-    scheduler.add(engine::ecs::phase::simulation, "particles",
-                  [this](engine::ecs::Registry& registry, engine::ecs::CommandBuffer&) { simulation_.update(registry, dt_); });
+    scheduler.add(
+        engine::ecs::phase::simulation, "particles",
+        [this](engine::ecs::Registry& registry, engine::ecs::CommandBuffer&) { simulation_.update(registry, dt_); });
 }
 
 void ParticleFeature::ensureLayer(int width, int height) {
@@ -99,7 +100,8 @@ void ParticleFeature::draw(const engine::scene::FeatureFrame& frame) {
     const int stride = o.halfResolution ? 2 : 1;
     ensureLayer(std::max(1, (frame.width + stride - 1) / stride), std::max(1, (frame.height + stride - 1) / stride));
     const BufferHandle vertices = buffers_.upload("particles", BufferKind::Vertex, std::as_bytes(std::span(vertices_)));
-    const BufferHandle indices = buffers_.upload("particle indices", BufferKind::Index, std::as_bytes(std::span(indices_)));
+    const BufferHandle indices =
+        buffers_.upload("particle indices", BufferKind::Index, std::as_bytes(std::span(indices_)));
     const bool greater = frame.depthFunc == CompareFunc::Greater || frame.depthFunc == CompareFunc::GreaterEqual;
     // distance = P[3][2] / (depth + P[2][2]) for the engine's perspective projections.
     const float depthScale = frame.projection[3][2], depthOffset = frame.projection[2][2];

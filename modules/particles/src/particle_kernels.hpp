@@ -28,7 +28,8 @@ inline float closestDepth(const soft::SoftTexture& depth, int x, int y, int stri
     float best = soft::fetchTexel(depth, std::min(x * stride, w - 1), std::min(y * stride, h - 1)).r;
     for (int sy = 0; sy < stride; ++sy)
         for (int sx = 0; sx < stride; ++sx) {
-            const float z = soft::fetchTexel(depth, std::min(x * stride + sx, w - 1), std::min(y * stride + sy, h - 1)).r;
+            const float z =
+                soft::fetchTexel(depth, std::min(x * stride + sx, w - 1), std::min(y * stride + sy, h - 1)).r;
             if (greaterIsCloser ? z > best : z < best) best = z;
         }
     return best;
@@ -87,16 +88,14 @@ struct LayerCompositeKernel {
             if (c00 == soft::fetchTexel(*layer, x1, y0) && c00 == soft::fetchTexel(*layer, x0, y1) &&
                 c00 == soft::fetchTexel(*layer, x1, y1))
                 return finiteLayerTexel(c00);
-            float best = std::abs(params.depthScale /
-                                      (closestDepth(*depth, nx, ny, scale, params.greaterIsCloser) +
-                                       params.depthOffset) -
-                                  here);
+            float best = std::abs(
+                params.depthScale / (closestDepth(*depth, nx, ny, scale, params.greaterIsCloser) + params.depthOffset) -
+                here);
             lx = nx, ly = ny;
             for (int cy : {y0, y1})
                 for (int cx : {x0, x1}) {
                     const float d = params.depthScale /
-                                    (closestDepth(*depth, cx, cy, scale, params.greaterIsCloser) +
-                                     params.depthOffset);
+                                    (closestDepth(*depth, cx, cy, scale, params.greaterIsCloser) + params.depthOffset);
                     const float diff = std::abs(d - here);
                     if (diff < best) best = diff, lx = cx, ly = cy;
                 }

@@ -113,8 +113,8 @@ ProgramDesc particleProgram() {
         {"u_softness", UniformType::Float, offsetof(ParticleParams, softness)},
         {"u_greaterIsCloser", UniformType::Bool, offsetof(ParticleParams, greaterIsCloser)},
     };
-    d.gl.textures = {{"u_sceneDepth", offsetof(ParticleParams, sceneDepth), 0, TextureRead::Texel,
-                      TextureUse::Sampled, true, "u_hasDepth"}};
+    d.gl.textures = {{"u_sceneDepth", offsetof(ParticleParams, sceneDepth), 0, TextureRead::Texel, TextureUse::Sampled,
+                      true, "u_hasDepth"}};
     d.check = [](const void* params, const DrawCheck& check) {
         const auto& p = *static_cast<const ParticleParams*>(params);
         if (p.depthStride != 1 && p.depthStride != 2)
@@ -128,7 +128,8 @@ ProgramDesc particleProgram() {
 }
 
 ProgramDesc layerCompositeProgram() {
-    ProgramDesc d = describeProgram<LayerCompositeParams>("LayerComposite", VertexInput::Fullscreen, "particles::LayerCompositeParams");
+    ProgramDesc d = describeProgram<LayerCompositeParams>("LayerComposite", VertexInput::Fullscreen,
+                                                          "particles::LayerCompositeParams");
     d.gl.fragment = std::string(kParticleDepth) + kLayerCompositeFragment;
     d.gl.uniforms = {
         {"u_layerScale", UniformType::Int, offsetof(LayerCompositeParams, layerScale)},
@@ -137,8 +138,8 @@ ProgramDesc layerCompositeProgram() {
         {"u_greaterIsCloser", UniformType::Bool, offsetof(LayerCompositeParams, greaterIsCloser)},
     };
     d.gl.textures = {
-        {"u_sceneDepth", offsetof(LayerCompositeParams, sceneDepth), 0, TextureRead::Texel, TextureUse::FullSize,
-         true, "u_hasDepth"},
+        {"u_sceneDepth", offsetof(LayerCompositeParams, sceneDepth), 0, TextureRead::Texel, TextureUse::FullSize, true,
+         "u_hasDepth"},
         {"u_layer", offsetof(LayerCompositeParams, layer), 1, TextureRead::Texel, TextureUse::Sampled},
     };
     d.check = [](const void* params, const DrawCheck& check) {

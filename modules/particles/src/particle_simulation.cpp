@@ -80,7 +80,8 @@ bool ParticleSimulation::emit(const Particle& p) {
         return false;
     }
     for (int i = 0; i < 3; ++i)
-        if (!std::isfinite(p.position[i]) || !std::isfinite(p.velocity[i])) throw engine::Error("particle is not finite");
+        if (!std::isfinite(p.position[i]) || !std::isfinite(p.velocity[i]))
+            throw engine::Error("particle is not finite");
     particles_.push_back(p);
     return true;
 }

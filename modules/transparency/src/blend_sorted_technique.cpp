@@ -98,8 +98,7 @@ private:
         sortedInstances_.clear();
         runs_.clear();
         for (const SortedInstance& key : keys_) {
-            if (runs_.empty() || runs_.back().draw != key.draw)
-                runs_.push_back({key.draw, sortedInstances_.size(), 0});
+            if (runs_.empty() || runs_.back().draw != key.draw) runs_.push_back({key.draw, sortedInstances_.size(), 0});
             sortedInstances_.push_back(instanceOf(*visible[key.draw], key.instance));
             ++runs_.back().count;
         }

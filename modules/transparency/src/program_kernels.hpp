@@ -59,7 +59,7 @@ struct WboitResolveKernel {
         const glm::vec4 sum = soft::fetchTexel(*accumulation, f.x, f.y);
         float reveal = soft::fetchTexel(*revealage, f.x, f.y).r;
         reveal = reveal > 0.0f ? (reveal < 1.0f ? reveal : 1.0f) : 0.0f;  // NaN -> 0
-        const float weight = sum.a > 1e-5f ? sum.a : 1e-5f;                 // the paper's max(accum.a, 1e-5)
+        const float weight = sum.a > 1e-5f ? sum.a : 1e-5f;               // the paper's max(accum.a, 1e-5)
         glm::vec3 average = glm::vec3(sum) / weight;
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(average[c])) average[c] = 0.0f;

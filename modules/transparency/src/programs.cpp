@@ -86,8 +86,10 @@ void main() {
 }  // namespace
 
 ProgramDesc wboitAccumulateProgram() {
-    ProgramDesc d = describeProgram<WboitAccumulateParams>("WboitAccumulate", VertexInput::Mesh, "transparency::WboitAccumulateParams");
-    d.gl.fragment = std::string(glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + kWboitWeight + glsl::kLitSurface;
+    ProgramDesc d = describeProgram<WboitAccumulateParams>("WboitAccumulate", VertexInput::Mesh,
+                                                           "transparency::WboitAccumulateParams");
+    d.gl.fragment =
+        std::string(glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + kWboitWeight + glsl::kLitSurface;
     litSurfaceLayout<WboitAccumulateParams>(d.gl);  // the surface it weights
     d.gl.uniforms.push_back({"u_depthScale", UniformType::Float, offsetof(WboitAccumulateParams, depthScale)});
     d.soft = soft::makeKernel<WboitAccumulateKernel, WboitAccumulateParams>();
@@ -95,7 +97,8 @@ ProgramDesc wboitAccumulateProgram() {
 }
 
 ProgramDesc wboitResolveProgram() {
-    ProgramDesc d = describeProgram<WboitResolveParams>("WboitResolve", VertexInput::Fullscreen, "transparency::WboitResolveParams");
+    ProgramDesc d = describeProgram<WboitResolveParams>("WboitResolve", VertexInput::Fullscreen,
+                                                        "transparency::WboitResolveParams");
     d.gl.fragment = kWboitResolveFragment;
     d.gl.textures = {
         {"u_accumulation", offsetof(WboitResolveParams, accumulation), 0, TextureRead::Texel, TextureUse::FullSize},
@@ -106,7 +109,8 @@ ProgramDesc wboitResolveProgram() {
 }
 
 ProgramDesc coverageCompositeProgram() {
-    ProgramDesc d = describeProgram<CoverageCompositeParams>("CoverageComposite", VertexInput::Fullscreen, "transparency::CoverageCompositeParams");
+    ProgramDesc d = describeProgram<CoverageCompositeParams>("CoverageComposite", VertexInput::Fullscreen,
+                                                             "transparency::CoverageCompositeParams");
     d.gl.fragment = kCoverageCompositeFragment;
     d.gl.uniforms = {{"u_coverageModel", UniformType::Byte, offsetof(CoverageCompositeParams, model)}};
     d.gl.textures = {

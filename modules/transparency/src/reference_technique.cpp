@@ -98,8 +98,9 @@ public:
         // "over" for the whole sorted stack at once: C + T * opaque (programs.hpp).
         compositeProgram_ = Owned<ProgramHandle>(backend_, backend_.createProgram(transmittanceCompositeProgram()));
         composite.program = compositeProgram_.get();
-        composite.blend[0] = {true, BlendFactor::One, BlendFactor::SrcAlpha, BlendOp::Add,
-                              BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+        composite.blend[0] = {true,         BlendFactor::One,  BlendFactor::SrcAlpha,
+                              BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
+                              BlendOp::Add, WriteRGB};
         composite_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(composite));
     }
 
@@ -118,7 +119,8 @@ public:
                 region = engine::render::unite(region, *r);
 
         // Premultiplied foliage colour C (rgb) and transmittance T, per pixel.
-        std::vector<float> color(std::size_t(width) * height * 4, 0.0f), transmittance(std::size_t(width) * height, 1.0f);
+        std::vector<float> color(std::size_t(width) * height * 4, 0.0f),
+            transmittance(std::size_t(width) * height, 1.0f);
         const std::size_t perRow = std::max<std::size_t>(1, std::size_t(width) * std::min(cap_, kBandFragments));
         const int bandRows = int(std::clamp<std::size_t>(kBandFragments / perRow, 1, std::size_t(height)));
         for (int y0 = region.y; y0 < region.y + region.height; y0 += bandRows) {
@@ -179,9 +181,8 @@ private:
                     report_.fragmentsOverCap += count - list.size();
                 }
                 report_.fragments += list.size();
-                std::stable_sort(list.begin(), list.end(), [func](const auto& a, const auto& b) {
-                    return isCloser(func, a.depth, b.depth);
-                });
+                std::stable_sort(list.begin(), list.end(),
+                                 [func](const auto& a, const auto& b) { return isCloser(func, a.depth, b.depth); });
                 glm::vec3 c(0.0f);
                 float t = 1.0f;
                 for (const CapturedFragment& f : list) {

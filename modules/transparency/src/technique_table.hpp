@@ -12,7 +12,7 @@ namespace transparency::detail {
 // Each technique's file defines its factory, make<Kind>Technique; the generated table
 // declares and points to it.
 using TechniqueFactory = std::unique_ptr<Technique> (*)(engine::render::Backend& backend,
-                                                       const TechniqueOptions& options);
+                                                        const TechniqueOptions& options);
 
 struct TechniqueRow {
     TechniqueKind kind;

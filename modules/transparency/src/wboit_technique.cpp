@@ -39,22 +39,30 @@ public:
         PipelineDesc accumulate = foliagePipeline("wboit accumulate");
         accumulate.program = accumulateProgram_.get();
         accumulate.depth = DepthState::testOnly(options.ssam.depthFunc);
-        accumulate.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add,
-                               BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
+        accumulate.blend[0] = {true,         BlendFactor::One, BlendFactor::One,
+                               BlendOp::Add, BlendFactor::One, BlendFactor::One,
+                               BlendOp::Add, WriteAll};
         accumulatePipeline_ = {backend_, backend_.createPipeline(accumulate)};
 
         PipelineDesc revealage = foliagePipeline("wboit revealage");
         revealage.program = ProgramKind::AlphaOnly;
         revealage.depth = DepthState::testOnly(options.ssam.depthFunc);
-        revealage.blend[0] = {true, BlendFactor::Zero, BlendFactor::InvSrcAlpha, BlendOp::Add,
-                              BlendFactor::Zero, BlendFactor::InvSrcAlpha, BlendOp::Add, WriteAll};
+        revealage.blend[0] = {true,         BlendFactor::Zero, BlendFactor::InvSrcAlpha,
+                              BlendOp::Add, BlendFactor::Zero, BlendFactor::InvSrcAlpha,
+                              BlendOp::Add, WriteAll};
         revealagePipeline_ = {backend_, backend_.createPipeline(revealage)};
 
         PipelineDesc resolve;
         resolve.name = "wboit resolve";
         resolve.program = resolveProgram_.get();
-        resolve.blend[0] = {true, BlendFactor::InvSrcAlpha, BlendFactor::SrcAlpha, BlendOp::Add,
-                            BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+        resolve.blend[0] = {true,
+                            BlendFactor::InvSrcAlpha,
+                            BlendFactor::SrcAlpha,
+                            BlendOp::Add,
+                            BlendFactor::Zero,
+                            BlendFactor::One,
+                            BlendOp::Add,
+                            WriteRGB};
         resolvePipeline_ = {backend_, backend_.createPipeline(resolve)};
     }
     TechniqueKind kind() const override { return TechniqueKind::Wboit; }
@@ -119,7 +127,8 @@ private:
         if (width == width_ && height == height_) return;
         destroyTargets();
         auto target = [&](const char* name, Format format) {
-            return Owned<TextureHandle>(backend_, backend_.createTexture(renderTargetDesc(name, width, height, format)));
+            return Owned<TextureHandle>(backend_,
+                                        backend_.createTexture(renderTargetDesc(name, width, height, format)));
         };
         accumulation_ = target("rt_wboit_accumulation", Format::RGBA16F);
         revealageTarget_ = target("rt_wboit_revealage", Format::R16F);

@@ -27,8 +27,10 @@ void rippleNormals(std::span<const engine::render::Vertex> rest, std::span<engin
     for (std::size_t i = 0; i < rest.size(); ++i) {
         const glm::vec3 p = rest[i].position;
         // Slopes of two crossing waves; the normal of a height field h is (-dh/dx, 1, -dh/dz).
-        const float sx = r.amplitude * std::cos(k * p.x + w) + 0.5f * r.amplitude * std::cos(0.7f * k * (p.x + p.z) - 1.3f * w);
-        const float sz = r.amplitude * std::cos(k * p.z - 0.8f * w) + 0.5f * r.amplitude * std::cos(0.7f * k * (p.x + p.z) - 1.3f * w);
+        const float sx =
+            r.amplitude * std::cos(k * p.x + w) + 0.5f * r.amplitude * std::cos(0.7f * k * (p.x + p.z) - 1.3f * w);
+        const float sz = r.amplitude * std::cos(k * p.z - 0.8f * w) +
+                         0.5f * r.amplitude * std::cos(0.7f * k * (p.x + p.z) - 1.3f * w);
         glm::vec3 n = rest[i].normal;
         const float len = glm::length(n);
         n = len > 0.0f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);

@@ -11,7 +11,8 @@ namespace water {
 using namespace engine;
 using namespace engine::render;
 
-WaterFeature::WaterFeature(const scene::MeshLibrary& library, const Ripples& ripples) : library_(library), frameInstances_(library.backend()) {
+WaterFeature::WaterFeature(const scene::MeshLibrary& library, const Ripples& ripples)
+    : library_(library), frameInstances_(library.backend()) {
     setRipples(ripples);
 }
 
@@ -45,7 +46,8 @@ void WaterFeature::updateRipples(ecs::Registry& registry) {
                 visible.emplace_back(e, r.model);
         });
     for (auto it = surfaces_.begin(); it != surfaces_.end();) {
-        const bool keep = std::any_of(visible.begin(), visible.end(), [&](const auto& v) { return v.first == it->first; });
+        const bool keep =
+            std::any_of(visible.begin(), visible.end(), [&](const auto& v) { return v.first == it->first; });
         if (keep) {
             ++it;
         } else {
@@ -67,8 +69,8 @@ void WaterFeature::updateRipples(ecs::Registry& registry) {
                 made.vertices[i] = library_.vertices(parts[i]);
                 const auto bytes = std::as_bytes(std::span(made.vertices[i]));
                 made.buffers[i] = Owned<BufferHandle>(
-                    library_.backend(),
-                    library_.backend().createBuffer({part.name + " (ripples)", BufferKind::Vertex, bytes.size()}, bytes));
+                    library_.backend(), library_.backend().createBuffer(
+                                            {part.name + " (ripples)", BufferKind::Vertex, bytes.size()}, bytes));
             }
             it = surfaces_.emplace(e, std::move(made)).first;
         }
@@ -81,7 +83,8 @@ void WaterFeature::updateRipples(ecs::Registry& registry) {
             rippleNormals(library_.vertices(parts[i]), s.vertices[i], ripples_, frame_.time);
             library_.backend().updateBuffer(s.buffers[i], 0, std::as_bytes(std::span(s.vertices[i])));
         }
-        if (scene::VertexOverride* existing = registry.tryGet<scene::VertexOverride>(e)) *existing = std::move(override);
+        if (scene::VertexOverride* existing = registry.tryGet<scene::VertexOverride>(e))
+            *existing = std::move(override);
         else registry.add<scene::VertexOverride>(e, std::move(override));
     }
 }
@@ -92,7 +95,7 @@ PipelineHandle WaterFeature::pipeline(CompareFunc depthFunc, bool doubleSided) {
     PipelineDesc p;
     p.name = doubleSided ? "water (blend over)" : "water (blend over, culled)";
     p.raster.cull = doubleSided ? CullMode::None : CullMode::Back;  // glTF doubleSided (§3.9.6)
-    p.program = ProgramKind::MaskedLit;  // double-sided lit, straight alpha out
+    p.program = ProgramKind::MaskedLit;                             // double-sided lit, straight alpha out
     p.blend[0] = BlendState::alphaOver();
     p.depth = DepthState::testOnly(depthFunc);
     Owned<PipelineHandle> pipeline(library_.backend(), library_.backend().createPipeline(p));
@@ -125,7 +128,8 @@ void WaterFeature::draw(const scene::FeatureFrame& frame) {
         d.vertices = scene::vertexBufferOf(b, part);
         d.indices = part.indices;
         d.count = part.indexCount;
-        d.instances = frameInstances_.upload("water instances", BufferKind::Instance, std::as_bytes(std::span(b.instances)));
+        d.instances =
+            frameInstances_.upload("water instances", BufferKind::Instance, std::as_bytes(std::span(b.instances)));
         d.instanceCount = std::uint32_t(b.instances.size());
         backend.draw(d);
     }

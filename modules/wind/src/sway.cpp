@@ -48,7 +48,8 @@ engine::scene::Aabb deformVertices(std::span<const Vertex> rest, std::span<Verte
             const glm::vec3 n = normalToWorld * r.normal;
             const float len = glm::length(n);
             if (len > 0.0f) {
-                const float wave = std::sin(flutterTime + 2.3f * r.position.x + 1.9f * r.position.z + 1.3f * r.position.y);
+                const float wave =
+                    std::sin(flutterTime + 2.3f * r.position.x + 1.9f * r.position.z + 1.3f * r.position.y);
                 p += n * (flutterAmplitude * h * wave / len);
             }
         }

@@ -66,8 +66,8 @@ render::Owned<render::BufferHandle> WindSystem::partBuffer(std::uint32_t part, s
     }
     render::Owned<render::BufferHandle> b(
         library_.backend(),
-        library_.backend().createBuffer({library_.part(part).name + " (deformed)", render::BufferKind::Vertex, bytes.size()},
-                                        bytes));
+        library_.backend().createBuffer(
+            {library_.part(part).name + " (deformed)", render::BufferKind::Vertex, bytes.size()}, bytes));
     ++stats_.buffersCreated;
     return b;
 }
@@ -233,8 +233,7 @@ void WindSystem::update(ecs::Registry& registry) {
         ++stats_.plantsDeformed;
         if (scene::VertexOverride* existing = registry.tryGet<scene::VertexOverride>(a.entity))
             *existing = std::move(override);
-        else
-            registry.add<scene::VertexOverride>(a.entity, std::move(override));
+        else registry.add<scene::VertexOverride>(a.entity, std::move(override));
     }
 }
 

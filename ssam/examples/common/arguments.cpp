@@ -73,7 +73,9 @@ std::string usage(const Tool& tool) {
            (tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "") +
            " [--frames N]\n"
            "  --headless    render one frame offscreen (EGL surfaceless) and write it (the default without a display)\n"
-           "  --out PATH    the PNG to write (implies --headless; default " + name + ".png); its directory\n"
+           "  --out PATH    the PNG to write (implies --headless; default " +
+           name +
+           ".png); its directory\n"
            "                must exist, and is checked before rendering\n"
            "  --mask PATH   also write SSAM's mask as a PNG: red = MAX of the layers' alphas, alpha = their\n"
            "                SUM ([Hathaway 2010] §3.5.2; implies --headless)\n" +
@@ -83,7 +85,8 @@ std::string usage(const Tool& tool) {
                 : "") +
            "  --frames N    in a window: close after N frames (default: when the window is closed)\n"
            "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 core context; messages are\n"
-           "'" + name + ": error: ...' on stderr.\n";
+           "'" +
+           name + ": error: ...' on stderr.\n";
 }
 
 void printError(const Tool& tool, const std::string& message) {

@@ -22,9 +22,9 @@ struct Tool {
 
 struct Arguments {
     bool headless = false;
-    std::string out;   // headless only; default <tool>.png
-    std::string mask;  // headless only; "" = not written
-    int frames = 0;    // window only; 0: until closed
+    std::string out;    // headless only; default <tool>.png
+    std::string mask;   // headless only; "" = not written
+    int frames = 0;     // window only; 0: until closed
     float wind = 0.0f;  // --wind (tools that bend in the wind; their default kDefaultWind)
     bool help = false;
 };

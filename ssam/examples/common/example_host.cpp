@@ -41,8 +41,9 @@ struct EglSurfaceless {
         if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
             throw NoContext("the surfaceless EGL display does not initialise");
         if (!eglBindAPI(EGL_OPENGL_API)) throw NoContext("eglBindAPI(EGL_OPENGL_API) failed");
-        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+        const EGLint attributes[] = {
+            EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
         context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
         if (context == EGL_NO_CONTEXT) throw NoContext("no OpenGL 3.3 core context without a config");
         if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))

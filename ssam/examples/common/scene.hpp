@@ -15,7 +15,7 @@ constexpr std::array<float, 3> kSky{0.55f, 0.70f, 0.90f};
 
 struct Rect3 {
     float x0, y0, x1, y1;
-    float zLeft, zRight;  // depth at x0 and at x1 (crossing cards lean in depth)
+    float zLeft, zRight;         // depth at x0 and at x1 (crossing cards lean in depth)
     std::array<float, 4> color;  // opaque: colour; foliage: tint rgb and alpha factor
 };
 

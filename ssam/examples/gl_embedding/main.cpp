@@ -26,9 +26,8 @@ public:
         // same cards in the same order both times.
         const ssam::gl::Status status = ssam.render(frame, [&](const ssam::gl::FoliageProgram& program) {
             program.bindBaseColorTexture(scene_.leafTexture());
-            scene_.drawCards([&](const float tint[4]) {
-                program.setBaseColorFactor(tint[0], tint[1], tint[2], tint[3]);
-            });
+            scene_.drawCards(
+                [&](const float tint[4]) { program.setBaseColorFactor(tint[0], tint[1], tint[2], tint[3]); });
         });
         check(ssam, status, "ssam::gl render");
     }

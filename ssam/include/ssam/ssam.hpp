@@ -29,7 +29,8 @@ struct FrameTargets {
 struct FramePlan {
     int width = 0;
     int height = 0;
-    std::vector<const engine::render::MaskedBatch*> visible;  // in submission order (§3.8: only consistency of order is needed)
+    std::vector<const engine::render::MaskedBatch*>
+        visible;  // in submission order (§3.8: only consistency of order is needed)
     engine::render::Rect compositeRegion;
     bool empty() const { return visible.empty(); }
 };

@@ -28,11 +28,10 @@ GLuint createTarget(const GlFunctions& gl, GLint internalFormat, int width, int 
     const bool isFloat = internalFormat == GL_RGBA16F || internalFormat == GL_RGBA32F || internalFormat == GL_R16F;
     const GLenum format = internalFormat == GL_R16F ? GL_RED : GL_RGBA;
     // Immutable storage where there is (GL 4.2): hosts can then make views of SSAM's targets.
-    if (gl.textureStorage)
-        gl.TexStorage2D(GL_TEXTURE_2D, 1, static_cast<GLenum>(internalFormat), width, height);
+    if (gl.textureStorage) gl.TexStorage2D(GL_TEXTURE_2D, 1, static_cast<GLenum>(internalFormat), width, height);
     else
-        gl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format,
-                      isFloat ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, isFloat ? GL_FLOAT : GL_UNSIGNED_BYTE,
+                      nullptr);
     // Sampled with texelFetch only; a non-mipmap filter makes the texture complete.
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

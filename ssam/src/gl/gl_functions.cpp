@@ -16,17 +16,17 @@ Loader::AnyFunction Loader::operator()(const char* name) const {
 
 void loadFunctions(GlFunctions& gl, const Loader& load) {
     // Required: the first missing one is named (a loader for another API, or a GL 2 context).
-#define SSAM_GL_LOAD_REQUIRED(type, name)                                                               \
-    gl.name = reinterpret_cast<type>(load("gl" #name));                                                 \
-    if (!gl.name)                                                                                       \
+#define SSAM_GL_LOAD_REQUIRED(type, name)                                                                     \
+    gl.name = reinterpret_cast<type>(load("gl" #name));                                                       \
+    if (!gl.name)                                                                                             \
         throw Failure(Status::MissingEntryPoint, "ssam::gl: the host's GL loader has no address for gl" #name \
                                                  " (an OpenGL 3.3 core function SSAM needs)");
     SSAM_GL_REQUIRED_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
     ENGINE_GL_PROGRAM_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
 #undef SSAM_GL_LOAD_REQUIRED
     // Optional: the core name, then the ARB extension's; null when neither resolves.
-#define SSAM_GL_LOAD_OPTIONAL(type, name)                                    \
-    gl.name = reinterpret_cast<type>(load("gl" #name));                      \
+#define SSAM_GL_LOAD_OPTIONAL(type, name)               \
+    gl.name = reinterpret_cast<type>(load("gl" #name)); \
     if (!gl.name) gl.name = reinterpret_cast<type>(load("gl" #name "ARB"));
     SSAM_GL_OPTIONAL_FUNCTIONS(SSAM_GL_LOAD_OPTIONAL)
 #undef SSAM_GL_LOAD_OPTIONAL
@@ -47,8 +47,9 @@ std::string checkContext(GlFunctions& gl) {
     // answers null. Checked on every frame too, so a host that lost its context gets a status.
     const auto* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
     if (!version)
-        throw Failure(Status::NoContext, "ssam::gl: no OpenGL context is current on this thread "
-                                         "(glGetString(GL_VERSION) returned null)");
+        throw Failure(Status::NoContext,
+                      "ssam::gl: no OpenGL context is current on this thread "
+                      "(glGetString(GL_VERSION) returned null)");
     GLint major = 0, minor = 0;
     gl.GetIntegerv(GL_MAJOR_VERSION, &major);
     gl.GetIntegerv(GL_MINOR_VERSION, &minor);

@@ -15,68 +15,68 @@ namespace ssam::gl::detail {
 
 // OpenGL 3.3 core: ssam::gl needs every one of these, and those of ENGINE_GL_PROGRAM_FUNCTIONS
 // (GlFunctions' base, which the engine's shared program builder takes).
-#define SSAM_GL_REQUIRED_FUNCTIONS(X)                                        \
-    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                 \
-    X(PFNGLBINDBUFFERPROC, BindBuffer)                                       \
-    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                             \
-    X(PFNGLBINDTEXTUREPROC, BindTexture)                                     \
-    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                             \
-    X(PFNGLBLENDEQUATIONPROC, BlendEquation)                                 \
-    X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate)                 \
-    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                         \
-    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)               \
-    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                 \
-    X(PFNGLCOLORMASKIPROC, ColorMaski)                                       \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                       \
-    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                               \
-    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                       \
-    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                         \
-    X(PFNGLDEPTHMASKPROC, DepthMask)                                         \
-    X(PFNGLDISABLEPROC, Disable)                                             \
-    X(PFNGLDISABLEIPROC, Disablei)                                           \
-    X(PFNGLDRAWARRAYSPROC, DrawArrays)                                       \
-    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                                     \
-    X(PFNGLENABLEPROC, Enable)                                               \
-    X(PFNGLENABLEIPROC, Enablei)                                             \
-    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)                   \
-    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                             \
-    X(PFNGLGENTEXTURESPROC, GenTextures)                                     \
-    X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                             \
-    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                                 \
-    X(PFNGLGETBOOLEANVPROC, GetBooleanv)                                     \
-    X(PFNGLGETERRORPROC, GetError)                                           \
-    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                 \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                     \
-    X(PFNGLGETSTRINGPROC, GetString)                                         \
-    X(PFNGLGETSTRINGIPROC, GetStringi)                                       \
-    X(PFNGLGETTEXLEVELPARAMETERIVPROC, GetTexLevelParameteriv)               \
-    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                       \
-    X(PFNGLGETVERTEXATTRIBFVPROC, GetVertexAttribfv)                         \
-    X(PFNGLISENABLEDPROC, IsEnabled)                                         \
-    X(PFNGLISENABLEDIPROC, IsEnabledi)                                       \
-    X(PFNGLISTEXTUREPROC, IsTexture)                                         \
-    X(PFNGLSCISSORPROC, Scissor)                                             \
-    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                       \
-    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                 \
-    X(PFNGLUNIFORM1FPROC, Uniform1f)                                         \
-    X(PFNGLUNIFORM1IPROC, Uniform1i)                                         \
-    X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                       \
-    X(PFNGLUNIFORM4FPROC, Uniform4f)                                         \
-    X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                           \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                                       \
-    X(PFNGLVERTEXATTRIB2FPROC, VertexAttrib2f)                               \
-    X(PFNGLVERTEXATTRIB3FPROC, VertexAttrib3f)                               \
-    X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f)                               \
-    X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv)                             \
+#define SSAM_GL_REQUIRED_FUNCTIONS(X)                          \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                   \
+    X(PFNGLBINDBUFFERPROC, BindBuffer)                         \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)               \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                       \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)               \
+    X(PFNGLBLENDEQUATIONPROC, BlendEquation)                   \
+    X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate)   \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)           \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus) \
+    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                   \
+    X(PFNGLCOLORMASKIPROC, ColorMaski)                         \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)         \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                 \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)         \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                           \
+    X(PFNGLDEPTHMASKPROC, DepthMask)                           \
+    X(PFNGLDISABLEPROC, Disable)                               \
+    X(PFNGLDISABLEIPROC, Disablei)                             \
+    X(PFNGLDRAWARRAYSPROC, DrawArrays)                         \
+    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                       \
+    X(PFNGLENABLEPROC, Enable)                                 \
+    X(PFNGLENABLEIPROC, Enablei)                               \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)     \
+    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)               \
+    X(PFNGLGENTEXTURESPROC, GenTextures)                       \
+    X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)               \
+    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                   \
+    X(PFNGLGETBOOLEANVPROC, GetBooleanv)                       \
+    X(PFNGLGETERRORPROC, GetError)                             \
+    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                   \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                       \
+    X(PFNGLGETSTRINGPROC, GetString)                           \
+    X(PFNGLGETSTRINGIPROC, GetStringi)                         \
+    X(PFNGLGETTEXLEVELPARAMETERIVPROC, GetTexLevelParameteriv) \
+    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)         \
+    X(PFNGLGETVERTEXATTRIBFVPROC, GetVertexAttribfv)           \
+    X(PFNGLISENABLEDPROC, IsEnabled)                           \
+    X(PFNGLISENABLEDIPROC, IsEnabledi)                         \
+    X(PFNGLISTEXTUREPROC, IsTexture)                           \
+    X(PFNGLSCISSORPROC, Scissor)                               \
+    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                         \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                   \
+    X(PFNGLUNIFORM1FPROC, Uniform1f)                           \
+    X(PFNGLUNIFORM1IPROC, Uniform1i)                           \
+    X(PFNGLUNIFORM3FVPROC, Uniform3fv)                         \
+    X(PFNGLUNIFORM4FPROC, Uniform4f)                           \
+    X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)             \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                         \
+    X(PFNGLVERTEXATTRIB2FPROC, VertexAttrib2f)                 \
+    X(PFNGLVERTEXATTRIB3FPROC, VertexAttrib3f)                 \
+    X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f)                 \
+    X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv)               \
     X(PFNGLVIEWPORTPROC, Viewport)
 
 // Newer than 3.3, used when the context has them: per-buffer blending (GL 4.0 or
 // GL_ARB_draw_buffers_blend, whose names end in ARB) for the Rg16f mask, immutable storage
 // (GL 4.2 or GL_ARB_texture_storage, same names).
-#define SSAM_GL_OPTIONAL_FUNCTIONS(X)                                        \
-    X(PFNGLBLENDEQUATIONIPROC, BlendEquationi)                               \
-    X(PFNGLBLENDEQUATIONSEPARATEIPROC, BlendEquationSeparatei)               \
-    X(PFNGLBLENDFUNCSEPARATEIPROC, BlendFuncSeparatei)                       \
+#define SSAM_GL_OPTIONAL_FUNCTIONS(X)                          \
+    X(PFNGLBLENDEQUATIONIPROC, BlendEquationi)                 \
+    X(PFNGLBLENDEQUATIONSEPARATEIPROC, BlendEquationSeparatei) \
+    X(PFNGLBLENDFUNCSEPARATEIPROC, BlendFuncSeparatei)         \
     X(PFNGLTEXSTORAGE2DPROC, TexStorage2D)
 
 struct GlFunctions : engine::render::gl::plumbing::ProgramFunctions {
@@ -86,7 +86,7 @@ struct GlFunctions : engine::render::gl::plumbing::ProgramFunctions {
 #undef SSAM_GL_DECLARE
 
     // What the current context offers (set by checkContext()).
-    int version = 0;             // major * 10 + minor
+    int version = 0;              // major * 10 + minor
     bool perBufferBlend = false;  // BlendEquationi & co. are usable
     bool textureStorage = false;  // TexStorage2D is usable
     bool clipControl = false;     // GL_CLIP_ORIGIN / GL_CLIP_DEPTH_MODE can be queried

@@ -13,8 +13,8 @@ namespace ssam::gl::detail {
 
 unsigned int compileProgram(const GlFunctions& gl, const std::string& name, const char* vertexSource,
                             const char* fragmentSource) {
-    auto built = engine::render::gl::plumbing::buildProgram(gl, "ssam::gl program '" + name + "'", vertexSource,
-                                                            fragmentSource);
+    auto built =
+        engine::render::gl::plumbing::buildProgram(gl, "ssam::gl program '" + name + "'", vertexSource, fragmentSource);
     if (!built.id) throw Failure(Status::ShaderFailed, built.error);
     return built.id;
 }
@@ -22,19 +22,19 @@ unsigned int compileProgram(const GlFunctions& gl, const std::string& name, cons
 TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what) {
     if (texture == 0 || !gl.IsTexture(texture))
         throw Failure(Status::InvalidTexture, std::string("ssam::gl: ") + what + " " + std::to_string(texture) +
-                            " is not a GL texture name (0, deleted, or never bound)");
+                                                  " is not a GL texture name (0, deleted, or never bound)");
     GLint previous = 0;
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
     // An error the host left pending would be taken for ours (reported at the frame's start);
     // bounded, as a lost context may answer GL_CONTEXT_LOST forever.
-    for (int i = 0; i < 16 && gl.GetError() != GL_NO_ERROR; ++i) {
-    }
+    for (int i = 0; i < 16 && gl.GetError() != GL_NO_ERROR; ++i) {}
     gl.BindTexture(GL_TEXTURE_2D, texture);
     if (gl.GetError() != GL_NO_ERROR) {
         gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
-        throw Failure(Status::InvalidTexture, std::string("ssam::gl: ") + what + " " + std::to_string(texture) +
-                            " is not a GL_TEXTURE_2D (multisampled, array, cube... textures are not supported: "
-                            "resolve to a single-sample 2D texture first)");
+        throw Failure(Status::InvalidTexture,
+                      std::string("ssam::gl: ") + what + " " + std::to_string(texture) +
+                          " is not a GL_TEXTURE_2D (multisampled, array, cube... textures are not supported: "
+                          "resolve to a single-sample 2D texture first)");
     }
     TextureInfo info;
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &info.width);
@@ -47,10 +47,9 @@ TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const 
 void checkDrawFramebuffer(const GlFunctions& gl, const char* what) {
     const GLenum status = gl.CheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw Failure(
-            Status::IncompleteFramebuffer,
-            std::string("ssam::gl: the ") + what + " framebuffer is incomplete: " +
-                engine::render::gl::plumbing::framebufferStatusName(status));
+        throw Failure(Status::IncompleteFramebuffer,
+                      std::string("ssam::gl: the ") + what +
+                          " framebuffer is incomplete: " + engine::render::gl::plumbing::framebufferStatusName(status));
 }
 
 const char* internalFormatName(int internalFormat) {

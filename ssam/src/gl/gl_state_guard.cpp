@@ -88,7 +88,7 @@ GlStateGuard::~GlStateGuard() {
         const BlendTarget& b1 = blend_[1];
         gl.BlendEquationSeparatei(1, static_cast<GLenum>(b1.equationRgb), static_cast<GLenum>(b1.equationAlpha));
         gl.BlendFuncSeparatei(1, static_cast<GLenum>(b1.srcRgb), static_cast<GLenum>(b1.dstRgb),
-                             static_cast<GLenum>(b1.srcAlpha), static_cast<GLenum>(b1.dstAlpha));
+                              static_cast<GLenum>(b1.srcAlpha), static_cast<GLenum>(b1.dstAlpha));
     }
     for (GLuint i = 0; i < 2; ++i) {
         const BlendTarget& b = blend_[i];

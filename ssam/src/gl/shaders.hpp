@@ -5,10 +5,10 @@
 
 namespace ssam::gl::shaders {
 
-extern const char* const kFoliageVertex;     // shared by the mask and colour programs
-extern const char* const kMaskFragment;      // Listing 3.1: alpha only, replicated
-extern const char* const kColorFragment;     // alpha-tested, double-sided lit colour
-extern const char* const kFullscreenVertex;  // one triangle over the viewport
+extern const char* const kFoliageVertex;      // shared by the mask and colour programs
+extern const char* const kMaskFragment;       // Listing 3.1: alpha only, replicated
+extern const char* const kColorFragment;      // alpha-tested, double-sided lit colour
+extern const char* const kFullscreenVertex;   // one triangle over the viewport
 extern const std::string kCompositeFragment;  // Listing 3.2 as (foliage, mask) for SRC_ALPHA blending
 
 }  // namespace ssam::gl::shaders

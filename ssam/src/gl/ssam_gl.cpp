@@ -83,8 +83,8 @@ void validate(const Settings& settings) {
     const auto precision = static_cast<int>(settings.maskPrecision);
     const auto depth = static_cast<int>(settings.depthTest);
     if (precision < 0 || precision > static_cast<int>(MaskPrecision::Rg16f))
-        throw Failure(Status::InvalidArgument, "ssam::gl settings: maskPrecision " + std::to_string(precision) +
-                                                   " is not a MaskPrecision");
+        throw Failure(Status::InvalidArgument,
+                      "ssam::gl settings: maskPrecision " + std::to_string(precision) + " is not a MaskPrecision");
     if (depth < 0 || depth > static_cast<int>(DepthTest::GreaterEqual))
         throw Failure(Status::InvalidArgument,
                       "ssam::gl settings: depthTest " + std::to_string(depth) + " is not a DepthTest");
@@ -103,8 +103,8 @@ void validate(const Settings& settings) {
 // A built-in foliage program and its uniforms.
 struct FoliageProgramObject {
     GLuint id = 0;
-    GLint viewProj = -1, model = -1, factor = -1, hasTexture = -1, sampler = -1, alphaReference = -1,
-          towardLight = -1, lightColor = -1, ambient = -1;
+    GLint viewProj = -1, model = -1, factor = -1, hasTexture = -1, sampler = -1, alphaReference = -1, towardLight = -1,
+          lightColor = -1, ambient = -1;
     void locate(const GlFunctions& gl) {
         viewProj = gl.GetUniformLocation(id, "u_viewProj");
         model = gl.GetUniformLocation(id, "u_model");
@@ -202,8 +202,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     }
 
     void expect(Phase expected, const char* call) const {
-        if (!initialized)
-            throw Failure(Status::InvalidCall, std::string("ssam::gl: ") + call + " before initialize()");
+        if (!initialized) throw Failure(Status::InvalidCall, std::string("ssam::gl: ") + call + " before initialize()");
         if (phase != expected)
             throw Failure(Status::InvalidCall, std::string("ssam::gl: ") + call + " called when " + phaseName(phase));
     }
@@ -416,9 +415,9 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Uniform1i(p.sampler, 0);
         if (pass.pass == FoliagePass::Color) {
             const Light& light = frame.light;
-            const float length = std::sqrt(light.towardLight[0] * light.towardLight[0] +
-                                           light.towardLight[1] * light.towardLight[1] +
-                                           light.towardLight[2] * light.towardLight[2]);
+            const float length =
+                std::sqrt(light.towardLight[0] * light.towardLight[0] + light.towardLight[1] * light.towardLight[1] +
+                          light.towardLight[2] * light.towardLight[2]);
             float toward[3] = {0.0f, 0.0f, 0.0f};
             if (length > 0.0f && std::isfinite(length))
                 for (int i = 0; i < 3; ++i) toward[i] = light.towardLight[i] / length;

@@ -93,7 +93,9 @@ void Plain1(benchmark::State& state) {
         Position p;
     };
     std::vector<Body> bodies(entityCount());
-    measure(state, [&] { for (Body& b : bodies) drift(b.p); });
+    measure(state, [&] {
+        for (Body& b : bodies) drift(b.p);
+    });
 }
 
 void Plain2(benchmark::State& state) {
@@ -102,7 +104,9 @@ void Plain2(benchmark::State& state) {
         Velocity v;
     };
     std::vector<Body> bodies(entityCount());
-    measure(state, [&] { for (Body& b : bodies) integrate(b.p, b.v); });
+    measure(state, [&] {
+        for (Body& b : bodies) integrate(b.p, b.v);
+    });
 }
 
 void Plain3(benchmark::State& state) {
@@ -112,7 +116,9 @@ void Plain3(benchmark::State& state) {
         Acceleration a;
     };
     std::vector<Body> bodies(entityCount());
-    measure(state, [&] { for (Body& b : bodies) integrate(b.p, b.v, b.a); });
+    measure(state, [&] {
+        for (Body& b : bodies) integrate(b.p, b.v, b.a);
+    });
 }
 
 // --- ECS ---------------------------------------------------------------------
@@ -128,7 +134,9 @@ void Ecs1_RangeFor(benchmark::State& state) {
     Registry registry;
     populate<Position>(registry);
     auto view = registry.view<Position>();
-    measure(state, [&] { for (auto [e, p] : view) drift(p); });
+    measure(state, [&] {
+        for (auto [e, p] : view) drift(p);
+    });
 }
 
 void Ecs2_Each(benchmark::State& state) {
@@ -142,7 +150,9 @@ void Ecs2_RangeFor(benchmark::State& state) {
     Registry registry;
     populate<Position, Velocity>(registry);
     auto view = registry.view<Position, const Velocity>();
-    measure(state, [&] { for (auto [e, p, v] : view) integrate(p, v); });
+    measure(state, [&] {
+        for (auto [e, p, v] : view) integrate(p, v);
+    });
 }
 
 void Ecs2_Each_Shuffled(benchmark::State& state) {
@@ -169,7 +179,9 @@ void Ecs3_RangeFor(benchmark::State& state) {
     Registry registry;
     populate<Position, Velocity, Acceleration>(registry);
     auto view = registry.view<Position, Velocity, const Acceleration>();
-    measure(state, [&] { for (auto [e, p, v, a] : view) integrate(p, v, a); });
+    measure(state, [&] {
+        for (auto [e, p, v, a] : view) integrate(p, v, a);
+    });
 }
 
 }  // namespace

@@ -25,7 +25,8 @@ void shaftsFrame(benchmark::State& state) {
     auto backend = soft::createSoftBackend({0, 64, false});
     scene::MeshLibrary library(*backend);
     const scene::DrawLists lists;
-    const TextureHandle color = backend->createTexture(renderTargetDesc("colour", kWidth, kHeight, Format::RGBA8_UNORM));
+    const TextureHandle color =
+        backend->createTexture(renderTargetDesc("colour", kWidth, kHeight, Format::RGBA8_UNORM));
     const TextureHandle depth = backend->createTexture(renderTargetDesc("depth", kWidth, kHeight, Format::D32F));
 
     // Reverse-Z as the racer: sky is the clear value 0; the canopy is a quad at depth 0.5
@@ -35,7 +36,8 @@ void shaftsFrame(benchmark::State& state) {
     canopyPipeline.depth = DepthState::testAndWrite(CompareFunc::Greater);
     const PipelineHandle canopy = backend->createPipeline(canopyPipeline);
     std::vector<Vertex> quad(6);
-    const glm::vec2 corners[6] = {{-0.7f, -0.7f}, {0.7f, -0.7f}, {0.7f, 0.7f}, {-0.7f, -0.7f}, {0.7f, 0.7f}, {-0.7f, 0.7f}};
+    const glm::vec2 corners[6] = {{-0.7f, -0.7f}, {0.7f, -0.7f}, {0.7f, 0.7f},
+                                  {-0.7f, -0.7f}, {0.7f, 0.7f},  {-0.7f, 0.7f}};
     for (int i = 0; i < 6; ++i) quad[i].position = {corners[i], 0.5f};
     const auto bytes = std::as_bytes(std::span(quad));
     const BufferHandle quadBuffer = backend->createBuffer({"canopy quad", BufferKind::Vertex, bytes.size()}, bytes);
@@ -60,8 +62,20 @@ void shaftsFrame(benchmark::State& state) {
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0));
     DirectionalLight sun;
     sun.towardLight = {0.0f, 0.0f, 1.0f};  // straight ahead: the frame's centre
-    const scene::FeatureFrame frame{*backend, library, lists, color, depth, kWidth, kHeight, view, projection,
-                                    projection * view, glm::vec3(0.0f), sun, 0.0f, CompareFunc::Greater};
+    const scene::FeatureFrame frame{*backend,
+                                    library,
+                                    lists,
+                                    color,
+                                    depth,
+                                    kWidth,
+                                    kHeight,
+                                    view,
+                                    projection,
+                                    projection * view,
+                                    glm::vec3(0.0f),
+                                    sun,
+                                    0.0f,
+                                    CompareFunc::Greater};
     backend->takeTimings();
     bool skipped = false;
     for (auto _ : state) {

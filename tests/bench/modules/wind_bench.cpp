@@ -52,7 +52,11 @@ void deformForest(benchmark::State& state) {
     state.counters["vertices/s"] = benchmark::Counter(double(vertices), benchmark::Counter::kIsRate);
     state.counters["vertices/frame"] = double(system.stats().verticesDeformed);
 }
-BENCHMARK(deformForest)->ArgsProduct({{1, 2}, {64, 1024}})->ArgNames({"threads", "plants"})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(deformForest)
+    ->ArgsProduct({{1, 2}, {64, 1024}})
+    ->ArgNames({"threads", "plants"})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -256,9 +256,10 @@ void ssamPass(benchmark::State& state, bool mask, float repeats, MaskTargets tar
     auto backend = makeBackend(state);
     render::Backend& b = *backend;
     const auto target = renderTarget(b, !mask || targets == MaskTargets::Rgba8 ? render::Format::RGBA8_UNORM
-                                        : targets == MaskTargets::Rgba16f     ? render::Format::RGBA16F
-                                                                              : render::Format::R16F);
-    const auto maskAdd = targets == MaskTargets::TwoR16f ? renderTarget(b, render::Format::R16F) : render::TextureHandle{};
+                                        : targets == MaskTargets::Rgba16f      ? render::Format::RGBA16F
+                                                                               : render::Format::R16F);
+    const auto maskAdd =
+        targets == MaskTargets::TwoR16f ? renderTarget(b, render::Format::R16F) : render::TextureHandle{};
     const auto depth = renderTarget(b, render::Format::D32F);
     const auto texture = foliageTexture(b);
     const FoliageLayers layers(repeats);
@@ -271,10 +272,22 @@ void ssamPass(benchmark::State& state, bool mask, float repeats, MaskTargets tar
         pd.depth = render::DepthState::testOnly(render::CompareFunc::Less);
         pd.blend[0] = render::BlendState::maxRgbAddAlpha();
         if (maskAdd) {  // as ssam::ScreenSpaceAlphaMask splits it: MAX into one, ADD into the other
-            pd.blend[0] = {true, render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Max,
-                           render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Max, render::WriteAll};
-            pd.blend[1] = {true, render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Add,
-                           render::BlendFactor::One, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
+            pd.blend[0] = {true,
+                           render::BlendFactor::One,
+                           render::BlendFactor::One,
+                           render::BlendOp::Max,
+                           render::BlendFactor::One,
+                           render::BlendFactor::One,
+                           render::BlendOp::Max,
+                           render::WriteAll};
+            pd.blend[1] = {true,
+                           render::BlendFactor::One,
+                           render::BlendFactor::One,
+                           render::BlendOp::Add,
+                           render::BlendFactor::One,
+                           render::BlendFactor::One,
+                           render::BlendOp::Add,
+                           render::WriteAll};
         }
         render::AlphaOnlyParams p;
         p.viewProj = layers.viewProj;
@@ -340,8 +353,14 @@ void runComposite(benchmark::State& state, soft::SoftBackend& b, render::Texture
                   const render::ProgramDesc& program, const render::DrawParams& params, const char* name) {
     render::PipelineDesc pd;
     pd.program = b.createProgram(program);
-    pd.blend[0] = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha, render::BlendOp::Add,
-                   render::BlendFactor::Zero, render::BlendFactor::One, render::BlendOp::Add, render::WriteAll};
+    pd.blend[0] = {true,
+                   render::BlendFactor::SrcAlpha,
+                   render::BlendFactor::InvSrcAlpha,
+                   render::BlendOp::Add,
+                   render::BlendFactor::Zero,
+                   render::BlendFactor::One,
+                   render::BlendOp::Add,
+                   render::WriteAll};
     const auto pipeline = b.createPipeline(pd);
     render::PassDesc pass;
     pass.name = name;
@@ -400,11 +419,13 @@ void BM_SsamPlusComposite(benchmark::State& state) {
         return x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + m, 0.0f, 1.0f);
     };
     const auto mask = screenHalfTexture(b, "mask max", leaf);
-    const auto maskAdd = screenHalfTexture(b, "mask add", [&](int x, int y) { return leaf(x, y) * (1.0f + float(x % 7) * 0.5f); });
+    const auto maskAdd =
+        screenHalfTexture(b, "mask add", [&](int x, int y) { return leaf(x, y) * (1.0f + float(x % 7) * 0.5f); });
     const auto foliage = compositeFoliage(b);
-    runComposite(state, *backend, target, transparency::coverageCompositeProgram(),
-                 transparency::CoverageCompositeParams{foliage, mask, maskAdd, transparency::CoverageModel::EqualLayers},
-                 "ssam+ composite");
+    runComposite(
+        state, *backend, target, transparency::coverageCompositeProgram(),
+        transparency::CoverageCompositeParams{foliage, mask, maskAdd, transparency::CoverageModel::EqualLayers},
+        "ssam+ composite");
 }
 
 // 100k right triangles with 4.5 px legs (~10 px each) on a 400 x 250 grid over the screen.

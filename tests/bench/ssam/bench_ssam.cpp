@@ -44,7 +44,7 @@ std::vector<Quad> foliageQuads(bool inView) {
         const float alpha = 0.15f + 0.7f * float(i % 6) / 5.0f;
         Quad q{x, y, x + 0.35f, y + 0.7f, 0.3f + 0.01f * float(i), {0.2f, 0.6f, 0.15f, alpha}};
         if (!inView) {
-            if (i % 2) q.depth = -0.5f;  // behind the camera
+            if (i % 2) q.depth = -0.5f;       // behind the camera
             else q.x0 += 3.0f, q.x1 += 3.0f;  // off to the right
         }
         quads.push_back(q);

@@ -126,7 +126,8 @@ TEST(ForestDemo, SsamMaskCoversTheFrameAndTheCarStaysInSight) {
 
         renderer.setLivingScene(nullptr);
         auto opaqueOnly = [&] {
-            engine::scene::DrawLists lists = engine::scene::extractDrawLists(registry, scene.library(), view.viewProj, view.eye);
+            engine::scene::DrawLists lists =
+                engine::scene::extractDrawLists(registry, scene.library(), view.viewProj, view.eye);
             lists.mask.clear();
             lists.blend.clear();
             return lists;

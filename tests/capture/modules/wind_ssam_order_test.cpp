@@ -48,7 +48,8 @@ struct TwoTrees {
         const glm::vec3 at[2] = {{-0.9f, 0.0f, 0.0f}, {0.9f, 0.0f, 0.6f}};
         for (int i = 0; i < 2; ++i) {
             trees[i] = registry.create();
-            registry.add<scene::Transform>(trees[i], scene::Transform{at[i], glm::angleAxis(1.3f * i, glm::vec3(0, 1, 0))});
+            registry.add<scene::Transform>(trees[i],
+                                           scene::Transform{at[i], glm::angleAxis(1.3f * i, glm::vec3(0, 1, 0))});
             registry.add<scene::Renderable>(trees[i], scene::Renderable{tree});
         }
         wind::Wind w;

@@ -67,9 +67,9 @@ RacerRun racer(const fs::path& scene, const std::string& sceneFlags = "") {
     const std::string name = "run" + std::to_string(runs++);
     const fs::path png = dir / (name + ".png"), log = dir / (name + ".log");
     fs::remove(png);
-    const std::string command = "env -u DISPLAY '" + std::string(RACER_PATH) + "' --headless --size 64x64 --frames 1 --scene '" +
-                                scene.string() + "' " + flags + " --capture '" + png.string() + "' > '" + log.string() +
-                                "' 2>&1";
+    const std::string command = "env -u DISPLAY '" + std::string(RACER_PATH) +
+                                "' --headless --size 64x64 --frames 1 --scene '" + scene.string() + "' " + flags +
+                                " --capture '" + png.string() + "' > '" + log.string() + "' 2>&1";
     const int status = std::system(command.c_str());
     RacerRun run;
     run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -93,7 +93,8 @@ MATCHER_P2(NearRgb, expected, tolerance, "") {
         }
     return true;
 }
-#define EXPECT_PIXEL(run, x, y, expected) EXPECT_THAT((run).at(x, y), NearRgb(expected, 2)) << "pixel (" << (x) << ", " << (y) << ")"
+#define EXPECT_PIXEL(run, x, y, expected) \
+    EXPECT_THAT((run).at(x, y), NearRgb(expected, 2)) << "pixel (" << (x) << ", " << (y) << ")"
 
 // Pixels in the left and right halves of a quad framed by the automatic camera.
 constexpr int kLeft = 16, kRight = 48, kMid = 32;
@@ -122,7 +123,9 @@ void expectBlendFactor(const RacerRun& run) {
     EXPECT_PIXEL(run, kMid, kMid, srgb(alpha * colour + (1.0f - alpha) * kBackground));
 }
 
-TEST(RacerScene, OpaqueIgnoresTextureAndFactorAlpha) { expectOpaqueTextureAlphaIgnored(racer(sceneFile("opaque_texture_alpha.gltf"))); }
+TEST(RacerScene, OpaqueIgnoresTextureAndFactorAlpha) {
+    expectOpaqueTextureAlphaIgnored(racer(sceneFile("opaque_texture_alpha.gltf")));
+}
 
 TEST(RacerScene, GlbLoadsLikeGltf) { expectOpaqueTextureAlphaIgnored(racer(sceneFile("opaque_texture_alpha.glb"))); }
 
@@ -164,11 +167,14 @@ TEST(RacerScene, MaskIsTheFoliageSsamMasksAndBlends) {
     EXPECT_PIXEL(run, 1, 1, srgb(kBackground));
 }
 
-TEST(RacerScene, BlendIsStraightAlphaOverWithTheFactorsAlpha) { expectBlendFactor(racer(sceneFile("blend_factor.gltf"))); }
+TEST(RacerScene, BlendIsStraightAlphaOverWithTheFactorsAlpha) {
+    expectBlendFactor(racer(sceneFile("blend_factor.gltf")));
+}
 
 // OPAQUE and BLEND materials are never "the foliage": every technique draws them the same.
 TEST(RacerScene, OpaqueAndBlendAreTheSameUnderEveryTechnique) {
-    for (const char* technique : {"ssam", "ssam-plus", "alpha-test", "a2c", "blend-unsorted", "blend-sorted", "wboit", "reference"}) {
+    for (const char* technique :
+         {"ssam", "ssam-plus", "alpha-test", "a2c", "blend-unsorted", "blend-sorted", "wboit", "reference"}) {
         SCOPED_TRACE(technique);
         const std::string flag = std::string("--technique ") + technique;
         const RacerRun blend = racer(sceneFile("blend_factor.gltf"), flag);
@@ -218,7 +224,8 @@ TEST(RacerScene, QuantizedAttributesAreDequantized) {
 TEST(RacerScene, ExtensionOnlyUsedIsIgnoredWithAWarning) {
     const RacerRun run = racer(fs::path(SSAM_SOURCE_DIR) / "tests" / "data" / "gltf" / "used_extension.gltf");
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    EXPECT_THAT(run.output, HasSubstr("extensionsUsed[0]: extension 'EXT_made_up_extension' is not supported and is ignored"));
+    EXPECT_THAT(run.output,
+                HasSubstr("extensionsUsed[0]: extension 'EXT_made_up_extension' is not supported and is ignored"));
 }
 
 // A committed content model: a Draco .glb whose leaves are MASK foliage, drawn by SSAM.
@@ -313,7 +320,8 @@ TEST_P(RacerSceneHostile, ExitsNonZeroNamingFileAndField) {
 INSTANTIATE_TEST_SUITE_P(
     Files, RacerSceneHostile,
     ::testing::Values(HostileCase{"nan_position.gltf", "attributes.POSITION): element 1 has a non-finite component"},
-                      HostileCase{"required_extension.gltf", "'EXT_made_up_extension': required extension is not supported"},
+                      HostileCase{"required_extension.gltf",
+                                  "'EXT_made_up_extension': required extension is not supported"},
                       HostileCase{"uri_traversal.gltf", "buffers[0].uri '../../etc/passwd': path traversal"},
                       HostileCase{"glb_truncated.glb", "GLB header: truncated"},
                       HostileCase{"no_such_file.gltf", "file does not exist"}),
@@ -357,8 +365,8 @@ fs::path dracoVariant(const std::string& fixture) {
     const std::size_t firstAccessor = doc["accessors"].size();
     doc["buffers"].push_back({{"uri", "quad.bin"}, {"byteLength", buffer.size()}});
     doc["bufferViews"].push_back({{"buffer", doc["buffers"].size() - 1}, {"byteLength", buffer.size()}});
-    doc["accessors"].push_back({{"componentType", 5126}, {"count", points}, {"type", "VEC3"},
-                                {"min", {-1, -1, 0}}, {"max", {1, 1, 0}}});
+    doc["accessors"].push_back(
+        {{"componentType", 5126}, {"count", points}, {"type", "VEC3"}, {"min", {-1, -1, 0}}, {"max", {1, 1, 0}}});
     doc["accessors"].push_back({{"componentType", 5126}, {"count", points}, {"type", "VEC2"}});
     doc["accessors"].push_back({{"componentType", 5125}, {"count", 6}, {"type", "SCALAR"}});
     json& primitive = doc["meshes"][0]["primitives"][0];
@@ -366,7 +374,8 @@ fs::path dracoVariant(const std::string& fixture) {
     primitive["indices"] = firstAccessor + 2;
     primitive["extensions"]["KHR_draco_mesh_compression"] = {
         {"bufferView", doc["bufferViews"].size() - 1},
-        {"attributes", {{"POSITION", mesh->attribute(pos)->unique_id()}, {"TEXCOORD_0", mesh->attribute(uv)->unique_id()}}}};
+        {"attributes",
+         {{"POSITION", mesh->attribute(pos)->unique_id()}, {"TEXCOORD_0", mesh->attribute(uv)->unique_id()}}}};
     doc["extensionsUsed"].push_back("KHR_draco_mesh_compression");
     doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     const fs::path path = dir / fixture;
@@ -389,8 +398,10 @@ TEST(AutomaticCamera, FitsEveryCornerWithTheMarginAndTouchesIt) {
         glm::vec3 min, max;
         float aspect;
     };
-    const Case cases[] = {{{-1, -1, 0}, {1, 1, 0}, 1.0f},        {{-3, 0, -2}, {5, 1, 7}, 16.0f / 9.0f},
-                          {{10, 20, 30}, {10.5f, 29, 31}, 0.5f}, {{-100, -1, -1}, {100, 1, 1}, 1.0f},
+    const Case cases[] = {{{-1, -1, 0}, {1, 1, 0}, 1.0f},
+                          {{-3, 0, -2}, {5, 1, 7}, 16.0f / 9.0f},
+                          {{10, 20, 30}, {10.5f, 29, 31}, 0.5f},
+                          {{-100, -1, -1}, {100, 1, 1}, 1.0f},
                           {{0, 0, -50}, {1, 1, 50}, 2.0f}};
     for (const Case& c : cases) {
         engine::assets::Bounds bounds;

@@ -57,7 +57,7 @@ TEST(SsamCapture, EveryIntermediateIsALayerOfOneExr) {
 
     EXPECT_NEAR(capture::readExrLayer(path, "mask_add").at(8, 4, 0), 0.6f, 1e-3f);  // 0.4 + 0.2
     EXPECT_NEAR(capture::readExrLayer(path, "mask_max").at(8, 4, 0), 0.4f, 1e-3f);
-    EXPECT_FLOAT_EQ(capture::readExrLayer(path, "depth").at(8, 4, 0), 1.0f);          // before the colour pass
+    EXPECT_FLOAT_EQ(capture::readExrLayer(path, "depth").at(8, 4, 0), 1.0f);             // before the colour pass
     EXPECT_NEAR(capture::readExrLayer(path, "foliage_depth").at(8, 4, 0), 0.3f, 1e-6f);  // after it
     const capture::Image result = capture::readExrLayer(path, "result");
     const capture::Image opaqueLayer = capture::readExrLayer(path, "opaque");

@@ -90,7 +90,8 @@ void compareOn(render::Backend& soft, render::Backend& glb, const Scenario& scen
     for (std::size_t i = 0; i < s.size(); ++i) expectClose(s[i], g[i], what + " [" + std::to_string(i) + "]", tally);
 }
 
-render::TextureHandle target(render::Backend& b, int w, int h, Format f, int samples = 1, const std::string& name = "t") {
+render::TextureHandle target(render::Backend& b, int w, int h, Format f, int samples = 1,
+                             const std::string& name = "t") {
     return b.createTexture(render::renderTargetDesc(name, w, h, f, samples));
 }
 
@@ -249,7 +250,8 @@ Scenario alphaTestScenario(const render::PipelineDesc& desc, bool withDepth, flo
         };
         std::vector<render::Vertex> first = quad(0, 0, 8, 8, 0.5f, 0.9f);
         std::vector<render::Vertex> second;
-        for (const auto& part : {quad(2, 2, 10, 10, 0.25f, 0.3f), quad(4, 1, 11, 7, 0.75f, 0.8f), quad(1, 5, 7, 11, 0.125f, 0.6f)})
+        for (const auto& part :
+             {quad(2, 2, 10, 10, 0.25f, 0.3f), quad(4, 1, 11, 7, 0.75f, 0.8f), quad(1, 5, 7, 11, 0.125f, 0.6f)})
             second.insert(second.end(), part.begin(), part.end());
         const auto vb1 = vertices(b, first), vb2 = vertices(b, second);
         render::PipelineDesc base;
@@ -393,12 +395,10 @@ TEST(GlVsSoft, MsaaColourAndClosestDepthResolve) {
                     // positions) with no edge through a sample position: samples sit at odd
                     // eighths, and an edge (m, n) in quarter pixels meets one only when m and n
                     // have as many factors of 2.
-                    std::vector<render::Vertex> v = {pixelVertex(16, 16, 0.25, 1.0, 0.2f),
-                                                     pixelVertex(16, 16, 3.0, 15.5, 0.9f),
-                                                     pixelVertex(16, 16, 15.0, 6.5, 0.6f),
-                                                     pixelVertex(16, 16, 14.75, 0.0, 0.3f),
-                                                     pixelVertex(16, 16, 1.5, 9.0, 0.7f),
-                                                     pixelVertex(16, 16, 13.5, 14.5, 0.1f)};
+                    std::vector<render::Vertex> v = {
+                        pixelVertex(16, 16, 0.25, 1.0, 0.2f), pixelVertex(16, 16, 3.0, 15.5, 0.9f),
+                        pixelVertex(16, 16, 15.0, 6.5, 0.6f), pixelVertex(16, 16, 14.75, 0.0, 0.3f),
+                        pixelVertex(16, 16, 1.5, 9.0, 0.7f),  pixelVertex(16, 16, 13.5, 14.5, 0.1f)};
                     v[0].color = {1.0f, 0.2f, 0.1f, 1.0f};
                     v[3].color = {0.1f, 0.4f, 1.0f, 0.5f};
                     const auto vb = vertices(b, v);

@@ -29,8 +29,9 @@ TEST_P(AlphaTestConformance, EveryFuncAndFailMode) {
                 const render::PipelineHandle pipeline =
                     flatPipeline({}, render::DepthState::testAndWrite(CompareFunc::Less), test);
                 const render::PipelineInfo info = gfx().pipelineInfo(pipeline);
-                pass(color, clearColor, [&] { drawFlat(pipeline, quad, 6, glm::vec4(sourceRgb, alpha)); }, depth,
-                     clearDepth);
+                pass(
+                    color, clearColor, [&] { drawFlat(pipeline, quad, 6, glm::vec4(sourceRgb, alpha)); }, depth,
+                    clearDepth);
                 gfx().destroy(pipeline);
                 if (!info.exact) {  // a backend that can only approximate the state says so
                     RecordProperty("approximated", info.note);
@@ -86,7 +87,8 @@ TEST_P(AlphaTestConformance, DroppedWhereItCannotMatter) {
     EXPECT_FALSE(dropped({true, CompareFunc::Less, 0.5f, AlphaFailMode::FbOnly, false}, write));
     // Keep always matters (it discards), as does Never.
     EXPECT_FALSE(dropped({true, CompareFunc::Never, 0.5f, AlphaFailMode::Keep, false}, noWrite));
-    EXPECT_FALSE(dropped({true, CompareFunc::GreaterEqual, 0.5f, AlphaFailMode::Keep, false}, render::DepthState::off()));
+    EXPECT_FALSE(
+        dropped({true, CompareFunc::GreaterEqual, 0.5f, AlphaFailMode::Keep, false}, render::DepthState::off()));
     // ZbOnly only withholds colour: irrelevant when no colour channel is written.
     EXPECT_TRUE(dropped({true, CompareFunc::Less, 0.5f, AlphaFailMode::ZbOnly, false}, write, 0));
     EXPECT_FALSE(dropped({true, CompareFunc::Less, 0.5f, AlphaFailMode::ZbOnly, false}, write));
@@ -105,7 +107,12 @@ TEST_P(AlphaTestConformance, DroppedTestRendersTheSame) {
     const render::PipelineHandle pipeline = flatPipeline(
         {}, render::DepthState::testOnly(), {true, CompareFunc::GreaterEqual, 0.5f, AlphaFailMode::FbOnly, false});
     ASSERT_TRUE(gfx().pipelineInfo(pipeline).alphaTestDropped);
-    pass(color, glm::vec4(0.0f), [&] { drawFlat(pipeline, quad, 6, {1.0f, 0.0f, 1.0f, 0.2f}); }, depth, 1.0f);
+    pass(
+        color, glm::vec4(0.0f),
+        [&] {
+            drawFlat(pipeline, quad, 6, {1.0f, 0.0f, 1.0f, 0.2f});
+        },
+        depth, 1.0f);
     const render::Readback c = gfx().readback(color);
     const render::Readback d = gfx().readback(depth);
     for (int y = 0; y < kSize; ++y)
@@ -153,8 +160,9 @@ TEST_P(AlphaToCoverageConformance, CoveredSampleCountRgba8) {
         const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize));
         const render::PipelineHandle pipeline = flatPipeline({}, {}, alphaToCoverage());
         for (float alpha : {0.1f, 0.3f, 0.7f, 0.9f}) {
-            pass(target, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f),
-                 [&] { drawFlat(pipeline, quad, 6, {1.0f, 1.0f, 1.0f, alpha}); });
+            pass(target, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), [&] {
+                drawFlat(pipeline, quad, 6, {1.0f, 1.0f, 1.0f, alpha});
+            });
             const render::Readback r = gfx().readback(resolved(target));
             const int covered = int(std::lround(alpha * samples));
             EXPECT_NEAR(r.at(1, 2, 0), float(covered) / samples, 1.0f / 255.0f + 1e-6f)

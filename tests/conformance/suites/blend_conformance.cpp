@@ -112,11 +112,11 @@ public:
                         const double actual = r.at(x, y, c);
                         if (ref::matches(format_, expected[c], actual)) continue;
                         if (++failures <= 3 && ++reported_ <= 20)
-                            ADD_FAILURE() << formatName(format_) << " " << describeState(state) << ", constant "
-                                          << ref::describe(toRgba(constant)) << ": source "
-                                          << ref::describe(toRgba(kSources[q])) << " over stored "
-                                          << ref::describe(cleared_[t]) << " channel " << c << " expected "
-                                          << expected[c] << " got " << actual;
+                            ADD_FAILURE()
+                                << formatName(format_) << " " << describeState(state) << ", constant "
+                                << ref::describe(toRgba(constant)) << ": source " << ref::describe(toRgba(kSources[q]))
+                                << " over stored " << ref::describe(cleared_[t]) << " channel " << c << " expected "
+                                << expected[c] << " got " << actual;
                     }
                 }
             }
@@ -249,7 +249,8 @@ TEST_P(BlendConformance, FullyMaskedTargetUntouched) {
                     EXPECT_TRUE(ref::matches(format, stored[c], m.at(x, y, c)))
                         << formatName(format) << " masked target changed at " << x << "," << y;
                     EXPECT_EQ(m.at(x, y, c), m.at(0, 0, c));
-                    EXPECT_NE(w.at(x, y, c), m.at(x, y, c)) << formatName(format) << " the other target was not written";
+                    EXPECT_NE(w.at(x, y, c), m.at(x, y, c))
+                        << formatName(format) << " the other target was not written";
                 }
             }
         }

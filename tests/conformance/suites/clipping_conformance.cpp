@@ -64,8 +64,8 @@ public:
             tri[i].position = glm::vec3(v[i]);
             tri[i].color = colors[i];
         }
-        const render::BufferHandle vb = gfx_.createBuffer(
-            {"tri", render::BufferKind::Vertex, 3 * sizeof(render::Vertex)}, bytesOf(tri));
+        const render::BufferHandle vb =
+            gfx_.createBuffer({"tri", render::BufferKind::Vertex, 3 * sizeof(render::Vertex)}, bytesOf(tri));
         render::PipelineDesc desc;
         desc.name = "clip";
         desc.depth = DepthState::testAndWrite(CompareFunc::Less);
@@ -101,7 +101,8 @@ public:
                     ++covered;
                     for (int k = 0; k < 3; ++k)
                         if (std::fabs(c.at(x, y, k) - centre.barycentric[k]) > 2e-3)
-                            problem << "colour " << k << " " << c.at(x, y, k) << " vs " << centre.barycentric[k] << "; ";
+                            problem << "colour " << k << " " << c.at(x, y, k) << " vs " << centre.barycentric[k]
+                                    << "; ";
                     // Snapping vertices to 1/256 pixel moves the depth plane by up to half
                     // that times its gradient: allow twice as much.
                     const double step = 1.0 / 256.0;
@@ -237,8 +238,8 @@ TEST_P(ClippingConformance, HugeTrianglesRandomEdges) {
                 if (std::fabs(d) < 1.0 / 16.0) continue;
                 const float expected = d > 0 ? 1.0f : 0.0f;
                 if (r.at(x, y, 0) != expected && ++failures <= 10)
-                    ADD_FAILURE() << "edge " << i << " (span " << span << "): pixel " << x << "," << y << " at "
-                                  << d << " px from the edge is " << r.at(x, y, 0);
+                    ADD_FAILURE() << "edge " << i << " (span " << span << "): pixel " << x << "," << y << " at " << d
+                                  << " px from the edge is " << r.at(x, y, 0);
             }
     }
 }
@@ -278,17 +279,17 @@ TEST_P(ClippingConformance, HugeCoveringTriangleHitsEveryPixelOnce) {
 TEST_P(ClippingConformance, DegenerateAndNonFiniteTrianglesAreDropped) {
     const float nan = std::nanf(""), inf = INFINITY;
     const std::vector<glm::vec3> bad = {
-        {-0.5f, -0.5f, 0.5f}, {0.0f, 0.0f, 0.5f}, {0.5f, 0.5f, 0.5f},     // collinear
-        {-0.5f, -0.5f, 0.5f}, {-0.5f, -0.5f, 0.5f}, {0.5f, 0.2f, 0.5f},   // two vertices equal
-        {0.1f, 0.1f, 0.5f}, {0.1f, 0.1f, 0.5f}, {0.1f, 0.1f, 0.5f},       // a point
-        {-0.5f, -0.5f, 0.5f}, {0.5f, -0.5f + 1e-6f, 0.5f}, {0.5f, -0.5f, 0.5f},  // zero area once snapped
-        {nan, -0.5f, 0.5f}, {0.5f, -0.5f, 0.5f}, {0.0f, 0.5f, 0.5f},      // NaN x
-        {-0.5f, -0.5f, 0.5f}, {0.5f, inf, 0.5f}, {0.0f, 0.5f, 0.5f},      // infinite y
-        {-0.5f, -0.5f, nan}, {0.5f, -0.5f, 0.5f}, {0.0f, 0.5f, 0.5f},     // NaN z
-        {-0.5f, -0.5f, 2.0f}, {0.5f, -0.5f, 3.0f}, {0.0f, 0.5f, 1.5f},    // beyond the far plane
-        {-0.5f, -0.5f, -1.0f}, {0.5f, -0.5f, -0.2f}, {0.0f, 0.5f, -3.0f}, // in front of the near plane
-        {3.0f, 3.0f, 0.5f}, {5.0f, 3.0f, 0.5f}, {4.0f, 5.0f, 0.5f},       // off screen
-        {3e7f, 3e7f, 0.5f}, {5e7f, 3e7f, 0.5f}, {4e7f, 5e7f, 0.5f},       // far outside any guard band
+        {-0.5f, -0.5f, 0.5f},  {0.0f, 0.0f, 0.5f},          {0.5f, 0.5f, 0.5f},   // collinear
+        {-0.5f, -0.5f, 0.5f},  {-0.5f, -0.5f, 0.5f},        {0.5f, 0.2f, 0.5f},   // two vertices equal
+        {0.1f, 0.1f, 0.5f},    {0.1f, 0.1f, 0.5f},          {0.1f, 0.1f, 0.5f},   // a point
+        {-0.5f, -0.5f, 0.5f},  {0.5f, -0.5f + 1e-6f, 0.5f}, {0.5f, -0.5f, 0.5f},  // zero area once snapped
+        {nan, -0.5f, 0.5f},    {0.5f, -0.5f, 0.5f},         {0.0f, 0.5f, 0.5f},   // NaN x
+        {-0.5f, -0.5f, 0.5f},  {0.5f, inf, 0.5f},           {0.0f, 0.5f, 0.5f},   // infinite y
+        {-0.5f, -0.5f, nan},   {0.5f, -0.5f, 0.5f},         {0.0f, 0.5f, 0.5f},   // NaN z
+        {-0.5f, -0.5f, 2.0f},  {0.5f, -0.5f, 3.0f},         {0.0f, 0.5f, 1.5f},   // beyond the far plane
+        {-0.5f, -0.5f, -1.0f}, {0.5f, -0.5f, -0.2f},        {0.0f, 0.5f, -3.0f},  // in front of the near plane
+        {3.0f, 3.0f, 0.5f},    {5.0f, 3.0f, 0.5f},          {4.0f, 5.0f, 0.5f},   // off screen
+        {3e7f, 3e7f, 0.5f},    {5e7f, 3e7f, 0.5f},          {4e7f, 5e7f, 0.5f},   // far outside any guard band
     };
     const std::size_t badCount = bad.size() / 3;
     std::vector<render::Vertex> vertices;
@@ -316,7 +317,8 @@ TEST_P(ClippingConformance, DegenerateAndNonFiniteTrianglesAreDropped) {
     pass(color, glm::vec4(0.0f), [&] { drawFlat(pipeline, vb, std::uint32_t(vertices.size())); });
     const render::Readback r = gfx().readback(color);
     for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) EXPECT_EQ(r.at(x, y, 0), x < y ? 1.0f : (x > y ? 0.0f : r.at(x, y, 0))) << x << "," << y;
+        for (int x = 0; x < 8; ++x)
+            EXPECT_EQ(r.at(x, y, 0), x < y ? 1.0f : (x > y ? 0.0f : r.at(x, y, 0))) << x << "," << y;
     EXPECT_EQ(r.at(0, 7, 0), 1.0f);
     if (before) {
         const std::uint64_t dropped = *trianglesDropped() - *before;

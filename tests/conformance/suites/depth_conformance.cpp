@@ -19,7 +19,12 @@ TEST_P(DepthConformance, EveryFuncWithWriteOnAndOff) {
             const render::PipelineHandle pipeline = flatPipeline({}, {true, write, func});
             for (float z : {0.25f, 0.5f, 0.75f}) {
                 const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, z));
-                pass(color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, quad, 6, {1, 0, 0, 1}); }, depth, stored);
+                pass(
+                    color, {0, 0, 0, 0},
+                    [&] {
+                        drawFlat(pipeline, quad, 6, {1, 0, 0, 1});
+                    },
+                    depth, stored);
                 const bool passes = referenceCompare(func, z, stored);
                 const render::Readback c = gfx().readback(color);
                 const render::Readback d = gfx().readback(depth);
@@ -43,7 +48,8 @@ TEST_P(DepthConformance, TestOffNeitherTestsNorWrites) {
     const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
     const render::PipelineHandle pipeline = flatPipeline({}, {false, true, CompareFunc::Never});
     const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.75f));
-    pass(color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, quad, 6); }, depth, 0.5f);
+    pass(
+        color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, quad, 6); }, depth, 0.5f);
     EXPECT_EQ(gfx().readback(color).at(3, 3, 0), 1.0f);
     EXPECT_EQ(gfx().readback(depth).at(3, 3, 0), 0.5f);
 }
@@ -61,9 +67,12 @@ TEST_P(DepthConformance, ReverseZ) {
         farthest{fullQuadAt(0.2f), {0, 1, 0, 1}};
     // Near first (the others are hidden), then far first (each nearer one replaces it).
     for (const auto& order : {std::array{nearest, farthest, middle}, std::array{farthest, middle, nearest}}) {
-        pass(color, {0, 0, 0, 0}, [&] {
-            for (const Surface& s : order) drawFlat(pipeline, s.quad, 6, s.color);
-        }, depth, 0.0f);
+        pass(
+            color, {0, 0, 0, 0},
+            [&] {
+                for (const Surface& s : order) drawFlat(pipeline, s.quad, 6, s.color);
+            },
+            depth, 0.0f);
         const render::Readback c = gfx().readback(color);
         EXPECT_EQ(c.at(4, 4, 0), 1.0f);
         EXPECT_EQ(c.at(4, 4, 1), 0.0f);
@@ -72,7 +81,8 @@ TEST_P(DepthConformance, ReverseZ) {
     }
     // A surface at the cleared depth 0 (the far plane) fails Greater.
     const render::BufferHandle atFar = fullQuadAt(0.0f);
-    pass(color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, atFar, 6); }, depth, 0.0f);
+    pass(
+        color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, atFar, 6); }, depth, 0.0f);
     EXPECT_EQ(gfx().readback(color).at(4, 4, 0), 0.0f);
 }
 
@@ -85,10 +95,13 @@ TEST_P(DepthConformance, SlopedDepthInterpolation) {
     std::vector<render::Vertex> slope = pixelRect(kSize, kSize, 0, 0, kSize, kSize);
     for (render::Vertex& v : slope) v.position.z = (v.position.x + 1.0f) * 0.5f;
     const render::BufferHandle sloped = vertexBuffer(slope);
-    pass(color, {0, 0, 0, 0}, [&] {
-        drawFlat(pipeline, flat, 6, {0, 1, 0, 1});
-        drawFlat(pipeline, sloped, 6, {1, 0, 0, 1});
-    }, depth, 1.0f);
+    pass(
+        color, {0, 0, 0, 0},
+        [&] {
+            drawFlat(pipeline, flat, 6, {0, 1, 0, 1});
+            drawFlat(pipeline, sloped, 6, {1, 0, 0, 1});
+        },
+        depth, 1.0f);
     const render::Readback c = gfx().readback(color);
     const render::Readback d = gfx().readback(depth);
     for (int y = 0; y < kSize; ++y)
@@ -112,12 +125,20 @@ TEST_P(DepthConformance, RepeatedGeometryIsInvariant) {
     const render::PipelineHandle prepass = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Less));
     const render::PipelineHandle equal = flatPipeline({}, DepthState::testOnly(CompareFunc::Equal));
     const render::PipelineHandle notEqual = flatPipeline({}, DepthState::testOnly(CompareFunc::NotEqual));
-    pass(color, {0, 0, 0, 0}, [&] { drawFlat(prepass, vb, 3, {0, 0, 1, 1}); }, depth, 1.0f);
+    pass(
+        color, {0, 0, 0, 0},
+        [&] {
+            drawFlat(prepass, vb, 3, {0, 0, 1, 1});
+        },
+        depth, 1.0f);
     const render::Readback first = gfx().readback(color);
-    pass(color, {0, 0, 0, 0}, [&] {
-        drawFlat(equal, vb, 3, {1, 0, 0, 1});
-        drawFlat(notEqual, vb, 3, {0, 1, 0, 1});
-    }, depth, std::nullopt);
+    pass(
+        color, {0, 0, 0, 0},
+        [&] {
+            drawFlat(equal, vb, 3, {1, 0, 0, 1});
+            drawFlat(notEqual, vb, 3, {0, 1, 0, 1});
+        },
+        depth, std::nullopt);
     const render::Readback second = gfx().readback(color);
     int covered = 0;
     for (int y = 0; y < kHigh; ++y)
@@ -136,8 +157,14 @@ TEST_P(DepthConformance, LoadKeepsDepthAcrossPasses) {
     const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Less));
     const render::BufferHandle left = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize / 2, kSize, 0.3f));
     const render::BufferHandle full = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.6f));
-    pass(color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, left, 6); }, depth, 1.0f);
-    pass(color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, full, 6, {0, 1, 0, 1}); }, depth, std::nullopt);
+    pass(
+        color, {0, 0, 0, 0}, [&] { drawFlat(pipeline, left, 6); }, depth, 1.0f);
+    pass(
+        color, {0, 0, 0, 0},
+        [&] {
+            drawFlat(pipeline, full, 6, {0, 1, 0, 1});
+        },
+        depth, std::nullopt);
     const render::Readback c = gfx().readback(color);
     const render::Readback d = gfx().readback(depth);
     for (int x = 0; x < kSize; ++x) {

@@ -169,9 +169,11 @@ public:
                 bool ok = meanHits == meanCovered;  // no sample hit twice
                 if (expected >= 0) ok = ok && meanCovered == float(expected);
                 if (!ok && ++failures <= 10)
-                    ADD_FAILURE() << what << " " << samples << "x: pixel " << x << "," << y << " mean hits "
-                                  << meanHits << ", covered fraction " << meanCovered
-                                  << (expected == 1 ? " (inside)" : expected == 0 ? " (outside)" : " (edge)");
+                    ADD_FAILURE() << what << " " << samples << "x: pixel " << x << "," << y << " mean hits " << meanHits
+                                  << ", covered fraction " << meanCovered
+                                  << (expected == 1   ? " (inside)"
+                                      : expected == 0 ? " (outside)"
+                                                      : " (edge)");
             }
         }
         gfx.destroy(target);
@@ -183,7 +185,8 @@ private:
         return gfx.createTexture(render::renderTargetDesc("fill", width, height, format, samples));
     }
 
-    void draw(render::Backend& gfx, render::TextureHandle target, const Mesh& m, const BlendState& blend, glm::vec4 color) {
+    void draw(render::Backend& gfx, render::TextureHandle target, const Mesh& m, const BlendState& blend,
+              glm::vec4 color) {
         render::PipelineDesc desc;
         desc.name = "fill";
         desc.blend[0] = blend;
@@ -213,7 +216,8 @@ private:
 TEST_P(FillRuleConformance, FanAroundPixelCentre) {
     FillRuleRig rig;
     for (std::uint32_t seed = 1; seed <= 4; ++seed)
-        rig.checkSingleSample(gfx(), 48, 40, fan(48, 40, {24.5, 20.5}, 37, 18.0, seed), "fan on centre seed " + std::to_string(seed));
+        rig.checkSingleSample(gfx(), 48, 40, fan(48, 40, {24.5, 20.5}, 37, 18.0, seed),
+                              "fan on centre seed " + std::to_string(seed));
 }
 
 TEST_P(FillRuleConformance, FanAroundSubpixelPoint) {
@@ -232,7 +236,8 @@ TEST_P(FillRuleConformance, JitteredGrid) {
 TEST_P(FillRuleConformance, GridOnPixelCentres) {
     FillRuleRig rig;
     for (std::uint32_t seed = 1; seed <= 4; ++seed)
-        rig.checkSingleSample(gfx(), 64, 48, grid(64, 48, 8, 0.0, true, seed), "centred grid seed " + std::to_string(seed));
+        rig.checkSingleSample(gfx(), 64, 48, grid(64, 48, 8, 0.0, true, seed),
+                              "centred grid seed " + std::to_string(seed));
 }
 
 // A regular grid with axis-aligned edges exactly on pixel boundaries and diagonals through

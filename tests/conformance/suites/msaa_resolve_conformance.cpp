@@ -67,11 +67,15 @@ TEST_P(MsaaResolveConformance, DepthKeepsTheClosestSample) {
         const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Always));
         const render::BufferHandle l = vertexBuffer(pixelRect(kWide, kHigh, 0, 0, kEdge, kHigh, 0.3f));
         const render::BufferHandle r = vertexBuffer(pixelRect(kWide, kHigh, kEdge, 0, kWide, kHigh, 0.7f));
-        pass(color, glm::vec4(0.0f), [&] {
-            drawFlat(pipeline, l, 6);
-            drawFlat(pipeline, r, 6);
-        }, depth, 1.0f);
-        for (CompareFunc func : {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater, CompareFunc::GreaterEqual}) {
+        pass(
+            color, glm::vec4(0.0f),
+            [&] {
+                drawFlat(pipeline, l, 6);
+                drawFlat(pipeline, r, 6);
+            },
+            depth, 1.0f);
+        for (CompareFunc func :
+             {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater, CompareFunc::GreaterEqual}) {
             const bool greater = func == CompareFunc::Greater || func == CompareFunc::GreaterEqual;
             const render::Readback out = gfx().readback(resolved(depth, func));
             for (int y = 0; y < kHigh; ++y)
@@ -91,7 +95,8 @@ TEST_P(MsaaResolveConformance, DepthReverseZWithUncoveredSamples) {
         const auto [color, depth] = colorAndDepthTargets(kWide, kHigh, samples);
         const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Greater));
         const render::BufferHandle l = vertexBuffer(pixelRect(kWide, kHigh, 0, 0, kEdge, kHigh, 0.6f));
-        pass(color, glm::vec4(0.0f), [&] { drawFlat(pipeline, l, 6); }, depth, 0.0f);
+        pass(
+            color, glm::vec4(0.0f), [&] { drawFlat(pipeline, l, 6); }, depth, 0.0f);
         const render::Readback greater = gfx().readback(resolved(depth, CompareFunc::Greater));
         const render::Readback less = gfx().readback(resolved(depth, CompareFunc::Less));
         EXPECT_EQ(greater.at(2, 0, 0), 0.6f) << samples;

@@ -69,9 +69,14 @@ void expectNear(glm::vec4 got, glm::vec4 expected) {
     }
 }
 
-const render::BlendState kAlphaOver = {true, render::BlendFactor::SrcAlpha, render::BlendFactor::InvSrcAlpha,
-                                       render::BlendOp::Add, render::BlendFactor::Zero, render::BlendFactor::One,
-                                       render::BlendOp::Add, render::WriteAll};
+const render::BlendState kAlphaOver = {true,
+                                       render::BlendFactor::SrcAlpha,
+                                       render::BlendFactor::InvSrcAlpha,
+                                       render::BlendOp::Add,
+                                       render::BlendFactor::Zero,
+                                       render::BlendFactor::One,
+                                       render::BlendOp::Add,
+                                       render::WriteAll};
 
 // Mask MAX = ADD = 1: the foliage fully covers the pixel, so the result is its colour with
 // the NaN and Inf components as 0.
@@ -83,8 +88,8 @@ TEST_P(NonFiniteConformance, SsamCompositeOutputsNonFiniteFoliageAsZero) {
 
 TEST_P(NonFiniteConformance, CoverageCompositeOutputsNonFiniteFoliageAsZero) {
     NonFinite t(gfx());
-    const transparency::CoverageCompositeParams params{t.filled({-kInf, kNaN, 0.25f, 1.0f}), t.filled(glm::vec4(1.0f)),
-                                                       {}, transparency::CoverageModel::EqualLayers};
+    const transparency::CoverageCompositeParams params{
+        t.filled({-kInf, kNaN, 0.25f, 1.0f}), t.filled(glm::vec4(1.0f)), {}, transparency::CoverageModel::EqualLayers};
     expectNear(t.draw(transparency::coverageCompositeProgram(), params, kAlphaOver), {0.0f, 0.0f, 0.25f, 1.0f});
 }
 
@@ -93,9 +98,14 @@ TEST_P(NonFiniteConformance, CoverageCompositeOutputsNonFiniteFoliageAsZero) {
 TEST_P(NonFiniteConformance, WboitResolveOutputsNonFiniteAveragesAsZero) {
     NonFinite t(gfx());
     const transparency::WboitResolveParams params{t.filled({kNaN, kInf, 0.5f, 1.0f}), t.filled(glm::vec4(0.5f))};
-    const render::BlendState resolve{true, render::BlendFactor::InvSrcAlpha, render::BlendFactor::SrcAlpha,
-                                     render::BlendOp::Add, render::BlendFactor::Zero, render::BlendFactor::One,
-                                     render::BlendOp::Add, render::WriteRGB};
+    const render::BlendState resolve{true,
+                                     render::BlendFactor::InvSrcAlpha,
+                                     render::BlendFactor::SrcAlpha,
+                                     render::BlendOp::Add,
+                                     render::BlendFactor::Zero,
+                                     render::BlendFactor::One,
+                                     render::BlendOp::Add,
+                                     render::WriteRGB};
     expectNear(t.draw(transparency::wboitResolveProgram(), params, resolve),
                {0.5f * kOpaque.r, 0.5f * kOpaque.g, 0.25f + 0.5f * kOpaque.b, 1.0f});
 }

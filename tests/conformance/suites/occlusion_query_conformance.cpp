@@ -26,7 +26,8 @@ void countQuad(render::Backend& gfx, render::TextureHandle depth, render::Pipeli
 
 TEST_P(OcclusionQueryConformance, CountsSamplesThatPassTheDepthTest) {
     const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
-    pass(color, {0, 0, 0, 0}, [] {}, depth, 0.5f);  // every pixel at depth 0.5
+    pass(
+        color, {0, 0, 0, 0}, [] {}, depth, 0.5f);  // every pixel at depth 0.5
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::QueryHandle query = gfx().createQuery("q");
     struct Case {
@@ -51,7 +52,8 @@ TEST_P(OcclusionQueryConformance, CountsSamplesThatPassTheDepthTest) {
 
 TEST_P(OcclusionQueryConformance, ConditionalPassSkipsItsDrawsButNotItsClears) {
     const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
-    pass(color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
+    pass(
+        color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::PipelineHandle plain = flatPipeline();
     const render::QueryHandle query = gfx().createQuery("sun");
@@ -73,11 +75,11 @@ TEST_P(OcclusionQueryConformance, ConditionalPassSkipsItsDrawsButNotItsClears) {
             ASSERT_EQ(c.values[4 * i + 2], visible ? 0.0f : 1.0f) << "the clear ran, visible " << visible;
         }
         const auto timings = gfx().takeTimings();
-        const auto it = std::find_if(timings.begin(), timings.end(), [](const auto& t) { return t.pass == "conditional"; });
+        const auto it =
+            std::find_if(timings.begin(), timings.end(), [](const auto& t) { return t.pass == "conditional"; });
         ASSERT_NE(it, timings.end());
         EXPECT_EQ(it->skipped, !visible);
-        for (const auto& t : timings)
-            EXPECT_TRUE(t.pass == "conditional" || !t.skipped) << t.pass << " marked skipped";
+        for (const auto& t : timings) EXPECT_TRUE(t.pass == "conditional" || !t.skipped) << t.pass << " marked skipped";
     }
     gfx().destroy(query);
 }
@@ -86,7 +88,8 @@ TEST_P(OcclusionQueryConformance, ConditionalPassSkipsItsDrawsButNotItsClears) {
 // (GL keeps a query object per pending read).
 TEST_P(OcclusionQueryConformance, ReusedBeforeTimingsAreTaken) {
     const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
-    pass(color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
+    pass(
+        color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::QueryHandle query = gfx().createQuery("q");
     const render::BufferHandle front = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.25f));

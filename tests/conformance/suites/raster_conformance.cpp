@@ -172,8 +172,8 @@ TEST_P(RasterConformance, BufferUpdatesAfterADrawDoNotChangeIt) {
     const render::BufferHandle ib = indexBuffer({0, 1, 2, 3, 4, 5});
     std::vector<render::Instance> tint(1);
     tint[0].tint = {0, 0, 1, 1};
-    const render::BufferHandle instances = gfx().createBuffer(
-        {"instances", render::BufferKind::Instance, sizeof(render::Instance)}, bytesOf(tint));
+    const render::BufferHandle instances =
+        gfx().createBuffer({"instances", render::BufferKind::Instance, sizeof(render::Instance)}, bytesOf(tint));
     pass(target, glm::vec4(0.0f), [&] {
         render::DrawDesc d;
         d.pipeline = pipeline;

@@ -69,8 +69,9 @@ class TextureRig {
 public:
     explicit TextureRig(render::Backend& gfx) : gfx_(gfx) {}
 
-    render::TextureHandle texture(Format format, int width, int height, const std::vector<std::vector<std::byte>>& levels,
-                                  int mipLevels = 1, AlphaMode alpha = AlphaMode::Straight) {
+    render::TextureHandle texture(Format format, int width, int height,
+                                  const std::vector<std::vector<std::byte>>& levels, int mipLevels = 1,
+                                  AlphaMode alpha = AlphaMode::Straight) {
         render::TextureDesc desc;
         desc.name = "texture";
         desc.width = width;
@@ -144,7 +145,8 @@ std::vector<std::byte> floatBytes(const Image& img) {
     return toBytes(f);
 }
 
-void expectNear(const render::Readback& r, int x, int y, glm::dvec4 expected, double tolerance, const std::string& what) {
+void expectNear(const render::Readback& r, int x, int y, glm::dvec4 expected, double tolerance,
+                const std::string& what) {
     for (int c = 0; c < 4; ++c)
         EXPECT_NEAR(r.at(x, y, c), expected[c], tolerance) << what << " at pixel " << x << "," << y << " channel " << c;
 }
@@ -257,7 +259,8 @@ TEST_P(TextureConformance, GeneratedMipsAverageInLinearLight) {
                 texels.insert(texels.end(), {v, v, v, 255});
             }
         const render::TextureHandle tex = rig.texture(format, 16, 16, {toBytes(texels)}, 5);
-        const render::Readback r = rig.draw(8, 8, tex, {Filter::Trilinear, AddressMode::Wrap, AddressMode::Wrap}, {0, 0}, {1, 1});
+        const render::Readback r =
+            rig.draw(8, 8, tex, {Filter::Trilinear, AddressMode::Wrap, AddressMode::Wrap}, {0, 0}, {1, 1});
         // The stored level-1 texel is the 8-bit code nearest to linear 0.5 (sRGB: encoded).
         const double stored = format == Format::RGBA8_SRGB
                                   ? reference::srgbDecode(reference::unormCode(reference::srgbEncode(0.5)) / 255.0)
@@ -274,7 +277,8 @@ TEST_P(TextureConformance, PremultipliedAndStraightDeclaredAlpha) {
     const SamplerState nearest{Filter::Nearest, AddressMode::Clamp, AddressMode::Clamp};
     const std::vector<float> premultiplied = {0.4f, 0.2f, 0.1f, 0.5f};
     const std::vector<float> straight = {0.8f, 0.4f, 0.2f, 0.5f};
-    const render::TextureHandle p = rig.texture(Format::RGBA32F, 1, 1, {toBytes(premultiplied)}, 1, AlphaMode::Premultiplied);
+    const render::TextureHandle p =
+        rig.texture(Format::RGBA32F, 1, 1, {toBytes(premultiplied)}, 1, AlphaMode::Premultiplied);
     const render::TextureHandle s = rig.texture(Format::RGBA32F, 1, 1, {toBytes(straight)}, 1, AlphaMode::Straight);
     for (render::TextureHandle tex : {p, s}) {
         const render::Readback r = rig.draw(2, 2, tex, nearest, {0, 0}, {1, 1});
@@ -308,13 +312,15 @@ TEST_P(TextureConformance, SrgbDecodedBeforeFiltering) {
     const std::vector<std::uint8_t> texels = {0, 0, 0, 255, 255, 255, 255, 128};
     const render::TextureHandle tex = rig.texture(Format::RGBA8_SRGB, 2, 1, {toBytes(texels)});
     // Half way: linear (0 + 1) / 2, not decode(127.5 / 255) = 0.212.
-    const render::Readback mid = rig.draw(1, 1, tex, {Filter::Bilinear, AddressMode::Clamp, AddressMode::Clamp}, {0, 0}, {1, 1});
+    const render::Readback mid =
+        rig.draw(1, 1, tex, {Filter::Bilinear, AddressMode::Clamp, AddressMode::Clamp}, {0, 0}, {1, 1});
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mid.at(0, 0, c), 0.5, 1e-5);
     EXPECT_NEAR(mid.at(0, 0, 3), (1.0 + 128.0 / 255.0) / 2.0, 1e-5);
 
     const std::vector<std::uint8_t> one = {188, 64, 10, 77};
     const render::TextureHandle single = rig.texture(Format::RGBA8_SRGB, 1, 1, {toBytes(one)});
-    const render::Readback r = rig.draw(1, 1, single, {Filter::Nearest, AddressMode::Wrap, AddressMode::Wrap}, {0, 0}, {1, 1});
+    const render::Readback r =
+        rig.draw(1, 1, single, {Filter::Nearest, AddressMode::Wrap, AddressMode::Wrap}, {0, 0}, {1, 1});
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.at(0, 0, c), reference::srgbDecode(one[c] / 255.0), 1e-6) << c;
     EXPECT_NEAR(r.at(0, 0, 3), 77.0 / 255.0, 1e-6);
 }
@@ -324,7 +330,8 @@ TEST_P(TextureConformance, HalfFloatTexturesRoundToHalf) {
     TextureRig rig(gfx());
     const std::vector<float> texel = {0.1f, 1.0f / 3.0f, 1000.7f, -2.2f};
     const render::TextureHandle tex = rig.texture(Format::RGBA16F, 1, 1, {toBytes(texel)});
-    const render::Readback r = rig.draw(1, 1, tex, {Filter::Nearest, AddressMode::Wrap, AddressMode::Wrap}, {0, 0}, {1, 1});
+    const render::Readback r =
+        rig.draw(1, 1, tex, {Filter::Nearest, AddressMode::Wrap, AddressMode::Wrap}, {0, 0}, {1, 1});
     for (int c = 0; c < 4; ++c) EXPECT_EQ(r.at(0, 0, c), float(reference::roundToHalf(texel[c]))) << c;
 }
 

@@ -42,8 +42,20 @@ render::Readback tinted(render::Backend& backend) {
     {
         const std::unique_ptr<scene::Feature> feature = tint->make({registry, library, 1, {}});
         const scene::DrawLists lists;
-        feature->render({backend, library, lists, color, depth, kW, kH, glm::mat4(1.0f), glm::mat4(1.0f),
-                         glm::mat4(1.0f), glm::vec3(0.0f), {}, 0.0f, render::CompareFunc::Less});
+        feature->render({backend,
+                         library,
+                         lists,
+                         color,
+                         depth,
+                         kW,
+                         kH,
+                         glm::mat4(1.0f),
+                         glm::mat4(1.0f),
+                         glm::mat4(1.0f),
+                         glm::vec3(0.0f),
+                         {},
+                         0.0f,
+                         render::CompareFunc::Less});
     }
     render::Readback r = backend.readback(color);
     backend.destroy(color);
@@ -57,7 +69,8 @@ TEST(TintGl, MultipliesTheFrameAsOnSoft) {
     const render::Readback onSoft = tinted(*soft), onGl = tinted(*gl);
     ASSERT_EQ(onGl.values.size(), onSoft.values.size());
     float worst = 0.0f;
-    for (std::size_t i = 0; i < onGl.values.size(); ++i) worst = std::max(worst, std::abs(onGl.values[i] - onSoft.values[i]));
+    for (std::size_t i = 0; i < onGl.values.size(); ++i)
+        worst = std::max(worst, std::abs(onGl.values[i] - onSoft.values[i]));
     EXPECT_LE(worst, 1.0f / 255.0f + 1e-6f);
     EXPECT_NEAR(onGl.at(kW / 2, kH / 2, 1), kFrame.g * tint::kTint[1], 1.0f / 255.0f + 1e-6f);
     EXPECT_NEAR(onGl.at(kW / 2, kH / 2, 3), kFrame.a, 1.0f / 255.0f + 1e-6f);

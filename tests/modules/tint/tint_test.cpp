@@ -54,10 +54,9 @@ TEST(Tint, MultipliesTheFrameColourThroughTheRegistry) {
     scope.end();
 
     const scene::DrawLists lists;
-    const scene::FeatureFrame frame{*backend,         library,         lists,           color, depth,
-                                    kW,               kH,              glm::mat4(1.0f), glm::mat4(1.0f),
-                                    glm::mat4(1.0f),  glm::vec3(0.0f), {},              0.0f,
-                                    render::CompareFunc::Less};
+    const scene::FeatureFrame frame{
+        *backend,        library,         lists,           color,           depth, kW,   kH,
+        glm::mat4(1.0f), glm::mat4(1.0f), glm::mat4(1.0f), glm::vec3(0.0f), {},    0.0f, render::CompareFunc::Less};
     feature->render(frame);
     const render::Readback r = backend->readback(color);
     for (int y = 0; y < kH; ++y)

@@ -45,7 +45,7 @@ using ssam::testing::LiveResources;
 
 constexpr int kFrames = 2000;
 constexpr int kWarmUp = 200;
-constexpr int kLap = (kFrames - kWarmUp) / 2;  // frames per lap of the track
+constexpr int kLap = (kFrames - kWarmUp) / 2;   // frames per lap of the track
 constexpr int kFirstCompared = kWarmUp + kLap;  // frames kFirstCompared and kFrames are one lap apart
 constexpr int kWidth = 64;
 constexpr int kHeight = 36;
@@ -124,8 +124,8 @@ Laps runRacer(engine::render::Backend& inner) {
         if (i == kFirstCompared) laps.liveBefore = backend.live();
         if (i == kFrames) laps.liveAfter = backend.live();
         if (trace && i % 100 == 0)
-            std::printf("frame %4d: %s; resident %.1f MiB, heap in use %.2f MiB\n", i,
-                        describe(backend.live()).c_str(), double(resident) / (1 << 20), double(heap) / (1 << 20));
+            std::printf("frame %4d: %s; resident %.1f MiB, heap in use %.2f MiB\n", i, describe(backend.live()).c_str(),
+                        double(resident) / (1 << 20), double(heap) / (1 << 20));
     }
     return laps;
 }
@@ -146,9 +146,9 @@ void expectFlat(const Laps& laps) {
     EXPECT_EQ(laps.liveAfter, laps.liveBefore)
         << "(after frame " << kFirstCompared << " against after frame " << kFrames << ")";
     const auto grew = [&](const char* what, long before, long after) {
-        return ::testing::Message() << "peak " << what << " grew from " << before << " bytes in frames "
-                                    << kWarmUp + 1 << ".." << kFirstCompared << " to " << after
-                                    << " bytes in frames " << kFirstCompared + 1 << ".." << kFrames;
+        return ::testing::Message() << "peak " << what << " grew from " << before << " bytes in frames " << kWarmUp + 1
+                                    << ".." << kFirstCompared << " to " << after << " bytes in frames "
+                                    << kFirstCompared + 1 << ".." << kFrames;
     };
     if (laps.before.heap > 0) {
         EXPECT_LE(laps.after.heap - laps.before.heap, kHeapSlack)

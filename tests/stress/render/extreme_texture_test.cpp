@@ -55,8 +55,9 @@ bool drawsInto(render::Backend& gfx, render::TextureHandle target) {
     corner[0].position = {-1.0f, -1.0f, 0.5f};
     corner[1].position = {-1.0f + 8 * pixel, -1.0f, 0.5f};
     corner[2].position = {-1.0f, -1.0f + 8 * pixel, 0.5f};
-    const render::BufferHandle vertices = gfx.createBuffer(
-        {"corner", render::BufferKind::Vertex, corner.size() * sizeof(render::Vertex)}, std::as_bytes(std::span(corner)));
+    const render::BufferHandle vertices =
+        gfx.createBuffer({"corner", render::BufferKind::Vertex, corner.size() * sizeof(render::Vertex)},
+                         std::as_bytes(std::span(corner)));
     render::PipelineDesc flat;
     flat.name = "flat";
     const render::PipelineHandle pipeline = gfx.createPipeline(flat);
@@ -103,7 +104,8 @@ TEST(ExtremeTexture, LargestTargetIsDrawnIntoOrRefusedByItsNeed) {
         EXPECT_THAT(e.what(), HasSubstr(" is available ("));
         std::printf("%s: refused: %s\n", gfx->name().c_str(), e.what());
     }
-    const render::TextureHandle small = gfx->createTexture(render::renderTargetDesc("small", 64, 64, render::Format::RGBA8_UNORM));
+    const render::TextureHandle small =
+        gfx->createTexture(render::renderTargetDesc("small", 64, 64, render::Format::RGBA8_UNORM));
     EXPECT_TRUE(drawsInto(*gfx, small));
 }
 

@@ -121,12 +121,13 @@ constexpr int kClampToEdge = 33071;
 // flagged as foliage (content/generator/content.cpp).
 int addLeafMaterial(GlbWriter& glb) {
     const int image = glb.addPngImage(content::encodePng(content::makeLeafCluster(7)), "leaf_cluster");
-    return glb.addMaterial({{"name", "leaves"},
-                            {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", glb.addTexture(image, kClampToEdge)}}}}},
-                            {"alphaMode", "MASK"},
-                            {"alphaCutoff", 0.5},
-                            {"doubleSided", true},
-                            {"extras", {{"foliage", true}}}});
+    return glb.addMaterial(
+        {{"name", "leaves"},
+         {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", glb.addTexture(image, kClampToEdge)}}}}},
+         {"alphaMode", "MASK"},
+         {"alphaCutoff", 0.5},
+         {"doubleSided", true},
+         {"extras", {{"foliage", true}}}});
 }
 
 // A `size`-metre square card in the XY plane at depth z, facing +Z (the automatic camera looks
@@ -200,8 +201,8 @@ TEST_F(RacerExtremes, HundredThousandFoliageInstancesRenderInBoundedMemory) {
     std::vector<long> peakKiB;
     for (int count : {1, 25000, 100000}) {
         const std::string name = "instances_" + std::to_string(count);
-        const RacerRun run = racer(sceneArgs(instancedFoliage(dir.path(), count), "ssam", dir / (name + ".png")),
-                                   dir / (name + ".log"));
+        const RacerRun run =
+            racer(sceneArgs(instancedFoliage(dir.path(), count), "ssam", dir / (name + ".png")), dir / (name + ".log"));
         ASSERT_EQ(run.exitCode, 0) << run.output;
         EXPECT_TRUE(fs::exists(dir / (name + ".png")));
         EXPECT_THAT(run.output, HasSubstr(" " + std::to_string(count) + " foliage")) << "not every instance in view";
@@ -269,8 +270,8 @@ class RacerLargest : public RacerExtremes, public ::testing::WithParamInterface<
 TEST_P(RacerLargest, LargestSizeIsRefusedWithItsNeedWhereMemoryIsShort) {
     const std::string backend = GetParam();
     const auto args = [&](const std::string& size, const fs::path& capture) {
-        return std::vector<std::string>{"--headless", "--backend", backend, "--frames", "1", "--size", size,
-                                        "--capture", capture.string()};
+        return std::vector<std::string>{"--headless", "--backend", backend,     "--frames",      "1",
+                                        "--size",     size,        "--capture", capture.string()};
     };
     const RacerRun small = racer(args("96x54", dir / "small.png"), dir / "small.log");
     if (small.exitCode != 0 && small.output.find("headless EGL context: ") != std::string::npos)

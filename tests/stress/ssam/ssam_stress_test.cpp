@@ -80,7 +80,8 @@ float halfStagnation(float a) {
 
 TEST(SsamStress, DepthComplexityUpTo4096LayersForEveryPrecision) {
     const float alpha = 0.1f;  // stored in RGBA8 as 26/255
-    for (const auto precision : {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F}) {
+    for (const auto precision :
+         {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F}) {
         for (const int n : {1, 2, 9, 10, 11, 64, 512, 4096}) {
             const Result r = renderLayers(precision, layers(n, alpha));
             SCOPED_TRACE(::testing::Message() << ssam::maskPrecisionName(precision) << " layers=" << n);
@@ -128,10 +129,10 @@ TEST(SsamStress, NonFiniteVertexDataNeverReachesTheImage) {
     const float bad[] = {NAN, INFINITY, -INFINITY};
     for (const float b : bad) {
         std::vector<Quad> quads = layers(4, 0.5f);
-        quads[0].x0 = b;             // position
+        quads[0].x0 = b;                   // position
         quads[1].color = {b, b, b, 0.5f};  // colour
-        quads[2].color.a = b;        // alpha
-        quads[3].depth = b;          // depth
+        quads[2].color.a = b;              // alpha
+        quads[3].depth = b;                // depth
         const Result r = renderLayers(ssam::MaskPrecision::RGBA16F, quads, std::uint8_t(Format::RGBA16F));
         SCOPED_TRACE(::testing::Message() << "value=" << b);
         for (float v : r.color.values) ASSERT_TRUE(std::isfinite(v));
@@ -145,8 +146,8 @@ TEST(SsamStress, NonFiniteTextureAlphaAndUvs) {
     backend->beginPass(opaque.passDesc(kOpaque));
     backend->endPass();
     // A float texture whose texels are NaN, +Inf and -Inf in every channel.
-    const float texels[] = {NAN, NAN, NAN, NAN, INFINITY, INFINITY, INFINITY, INFINITY,
-                            -INFINITY, 0.5f, 0.5f, -INFINITY, 0.5f, 0.5f, 0.5f, 0.5f};
+    const float texels[] = {NAN,       NAN,  NAN,  NAN,       INFINITY, INFINITY, INFINITY, INFINITY,
+                            -INFINITY, 0.5f, 0.5f, -INFINITY, 0.5f,     0.5f,     0.5f,     0.5f};
     TextureDesc td;
     td.name = "hostile";
     td.width = td.height = 2;
@@ -173,12 +174,12 @@ TEST(SsamStress, NonFiniteTextureAlphaAndUvs) {
 TEST(SsamStress, ReverseZResolvesThirtyKilometreVistas) {
     constexpr float kNear = 0.1f, kFar = 30000.0f;
     auto depthAt = [&](bool reverse, float distance) {
-        const glm::mat4 p = reverse ? perspectiveReverseZ(1.0f, 1.0f, kNear, kFar)
-                                    : perspectiveZeroToOne(1.0f, 1.0f, kNear, kFar);
+        const glm::mat4 p =
+            reverse ? perspectiveReverseZ(1.0f, 1.0f, kNear, kFar) : perspectiveZeroToOne(1.0f, 1.0f, kNear, kFar);
         const glm::vec4 c = p * glm::vec4(0.0f, 0.0f, -distance, 1.0f);
         return c.z / c.w;
     };
-    EXPECT_GT(depthAt(true, 29000.0f), depthAt(true, 29010.0f));  // nearer is larger under reverse-Z
+    EXPECT_GT(depthAt(true, 29000.0f), depthAt(true, 29010.0f));    // nearer is larger under reverse-Z
     EXPECT_EQ(depthAt(false, 29000.0f), depthAt(false, 29010.0f));  // 1 - 3e-6 vs 1 - 3e-6: same float
 
     // Rendered: the nearer (red, 29 km) quad must win over the farther (green, 29.01 km) one
@@ -195,7 +196,8 @@ TEST(SsamStress, ReverseZResolvesThirtyKilometreVistas) {
             return v;
         };
         std::vector<engine::render::Vertex> near = quadAt(29000.0f, {1, 0, 0, 1}), far = quadAt(29010.0f, {0, 1, 0, 1});
-        std::vector<std::vector<engine::render::Vertex>> order = nearFirst ? std::vector{near, far} : std::vector{far, near};
+        std::vector<std::vector<engine::render::Vertex>> order =
+            nearFirst ? std::vector{near, far} : std::vector{far, near};
         std::vector<BufferHandle> buffers;
         std::vector<engine::render::MaskedBatch> batches;
         for (const auto& v : order) {

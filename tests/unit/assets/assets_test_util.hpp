@@ -23,7 +23,6 @@ inline std::filesystem::path fixture(const std::string& name) {
     return std::filesystem::path(SSAM_SOURCE_DIR) / "tests" / "data" / "gltf" / name;
 }
 
-
 inline void writeFile(const std::filesystem::path& path, const void* data, std::size_t size) {
     std::ofstream out(path, std::ios::binary);
     out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
@@ -31,6 +30,5 @@ inline void writeFile(const std::filesystem::path& path, const void* data, std::
 inline void writeFile(const std::filesystem::path& path, const std::string& text) {
     writeFile(path, text.data(), text.size());
 }
-
 
 }  // namespace assets_test

@@ -36,7 +36,8 @@ std::vector<std::uint8_t> readBytes(const fs::path& path) {
 nlohmann::json glbJson(const fs::path& path) {
     const auto bytes = readBytes(path);
     if (bytes.size() < 20) return {};
-    const std::uint32_t length = bytes[12] | bytes[13] << 8 | bytes[14] << 16 | static_cast<std::uint32_t>(bytes[15]) << 24;
+    const std::uint32_t length =
+        bytes[12] | bytes[13] << 8 | bytes[14] << 16 | static_cast<std::uint32_t>(bytes[15]) << 24;
     return nlohmann::json::parse(bytes.begin() + 20, bytes.begin() + 20 + length);
 }
 
@@ -126,14 +127,18 @@ TEST(Content, TreesAndBushesAreBuiltLikePures) {
                     // The texture has soft edges: many texels strictly between 0 and 1 alpha,
                     // and nothing touches the border.
                     const auto& pixels =
-                        model.images[static_cast<std::size_t>(model.textures[static_cast<std::size_t>(m.baseColorTexture.texture)].image)].pixels;
+                        model
+                            .images[static_cast<std::size_t>(
+                                model.textures[static_cast<std::size_t>(m.baseColorTexture.texture)].image)]
+                            .pixels;
                     std::size_t soft = 0;
                     for (std::size_t t = 0; t < pixels.pixelCount(); ++t) soft += pixels.pixels[t * 4 + 3] % 255 != 0;
                     EXPECT_GT(soft, pixels.pixelCount() / 50);
                     for (int x = 0; x < pixels.width; ++x) EXPECT_EQ(pixels.texel(x, 0)[3], 0);
                     // Coverage-preserving mips keep the alpha-tested silhouette (see mips_test.cpp).
                     const auto mips = engine::assets::generateCoveragePreservingMips(pixels, m.alphaCutoff);
-                    EXPECT_NEAR(engine::assets::alphaCoverage(mips[3], 0.5f), engine::assets::alphaCoverage(pixels, 0.5f), 0.02f);
+                    EXPECT_NEAR(engine::assets::alphaCoverage(mips[3], 0.5f),
+                                engine::assets::alphaCoverage(pixels, 0.5f), 0.02f);
                 } else {
                     ++barkParts;
                     EXPECT_EQ(m.alphaMode, AlphaMode::Opaque);
@@ -157,7 +162,7 @@ TEST(Content, PropsHaveTheirMaterials) {
     const LoadedModel car = loadGltf(kContent / "models" / "car.glb");
     EXPECT_EQ(car.materials.at(0).alphaMode, AlphaMode::Opaque);
     EXPECT_GT(car.bounds.max.z - car.bounds.min.z, car.bounds.max.x - car.bounds.min.x);  // long along +Z
-    EXPECT_NEAR(car.bounds.min.y, 0.0f, 1e-4f);                                              // wheels on the ground
+    EXPECT_NEAR(car.bounds.min.y, 0.0f, 1e-4f);                                           // wheels on the ground
 
     // The track is a closed loop whose centre line travels with it (mesh extras).
     const auto track = glbJson(kContent / "models" / "track.glb");

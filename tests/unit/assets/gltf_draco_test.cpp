@@ -57,7 +57,8 @@ Encoded encode(const Soup& soup) {
     const int uv = builder.AddAttribute(draco::GeometryAttribute::TEX_COORD, 2, draco::DT_FLOAT32);
     for (std::size_t f = 0; f < soup.positions.size(); ++f) {
         const draco::FaceIndex face(static_cast<std::uint32_t>(f));
-        builder.SetAttributeValuesForFace(pos, face, &soup.positions[f][0], &soup.positions[f][1], &soup.positions[f][2]);
+        builder.SetAttributeValuesForFace(pos, face, &soup.positions[f][0], &soup.positions[f][1],
+                                          &soup.positions[f][2]);
         builder.SetAttributeValuesForFace(uv, face, &soup.uvs[f][0], &soup.uvs[f][1], &soup.uvs[f][2]);
     }
     std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
@@ -91,7 +92,8 @@ json document(const Encoded& encoded) {
               {"indices", 2},
               {"extensions",
                {{"KHR_draco_mesh_compression",
-                 {{"bufferView", 0}, {"attributes", {{"POSITION", encoded.positionId}, {"TEXCOORD_0", encoded.uvId}}}}}}}}}}}}},
+                 {{"bufferView", 0},
+                  {"attributes", {{"POSITION", encoded.positionId}, {"TEXCOORD_0", encoded.uvId}}}}}}}}}}}}},
         {"accessors",
          {{{"componentType", 5126}, {"count", encoded.points}, {"type", "VEC3"}},
           {{"componentType", 5126}, {"count", encoded.points}, {"type", "VEC2"}},
@@ -141,7 +143,9 @@ TEST_F(GltfDraco, DecodesGeometryWithinQuantisationError) {
                 for (int k = 0; k < 3; ++k) {
                     const auto& v = prim.vertices[prim.indices[t + static_cast<std::size_t>(k)]];
                     const int corner = (k + rot) % 3;
-                    same = same && glm::all(glm::lessThan(glm::abs(v.position - soup.positions[f][corner]), glm::vec3(posTolerance))) &&
+                    same = same &&
+                           glm::all(glm::lessThan(glm::abs(v.position - soup.positions[f][corner]),
+                                                  glm::vec3(posTolerance))) &&
                            glm::all(glm::lessThan(glm::abs(v.uv - soup.uvs[f][corner]), glm::vec2(uvTolerance)));
                 }
                 if (same) found = matched[f] = true;
@@ -165,9 +169,10 @@ TEST_F(GltfDraco, VertexCountMismatchIsRefused) {
 TEST_F(GltfDraco, IndexCountMismatchIsRefused) {
     json doc = document(encoded);
     doc["accessors"][2]["count"] = encoded.faces * 3 - 3;
-    EXPECT_THAT(errorOf([&] { loadGltf(write(doc)); }),
-                HasSubstr("accessors[2] (meshes[0].primitives[0].indices).count: " + std::to_string(encoded.faces * 3 - 3) +
-                          " does not match the " + std::to_string(encoded.faces * 3) + " indices Draco decoded"));
+    EXPECT_THAT(
+        errorOf([&] { loadGltf(write(doc)); }),
+        HasSubstr("accessors[2] (meshes[0].primitives[0].indices).count: " + std::to_string(encoded.faces * 3 - 3) +
+                  " does not match the " + std::to_string(encoded.faces * 3) + " indices Draco decoded"));
 }
 
 TEST_F(GltfDraco, ComponentCountMismatchIsRefused) {
@@ -180,8 +185,9 @@ TEST_F(GltfDraco, ComponentCountMismatchIsRefused) {
 TEST_F(GltfDraco, UnknownDracoAttributeIdIsRefused) {
     json doc = document(encoded);
     doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["attributes"]["POSITION"] = 99;
-    EXPECT_THAT(errorOf([&] { loadGltf(write(doc)); }),
-                HasSubstr("KHR_draco_mesh_compression.attributes.POSITION: the Draco data has no attribute with id 99"));
+    EXPECT_THAT(
+        errorOf([&] { loadGltf(write(doc)); }),
+        HasSubstr("KHR_draco_mesh_compression.attributes.POSITION: the Draco data has no attribute with id 99"));
 }
 
 TEST_F(GltfDraco, DracoAttributeWithoutPrimitiveAttributeIsRefused) {

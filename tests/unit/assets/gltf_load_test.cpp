@@ -244,7 +244,8 @@ TEST(GltfLoad, BoundsTransformCorners) {
     box.add(glm::vec3(-1.0f));
     box.add(glm::vec3(1.0f));
     engine::assets::Bounds world;
-    world.add(box, glm::mat4(glm::vec4(2, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0), glm::vec4(10, 0, 0, 1)));
+    world.add(box,
+              glm::mat4(glm::vec4(2, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0), glm::vec4(10, 0, 0, 1)));
     expectNear(world.min, {8, -1, -1});
     expectNear(world.max, {12, 1, 1});
 }

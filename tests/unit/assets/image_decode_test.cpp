@@ -51,8 +51,9 @@ TEST(ImageDecode, RefusesNonImagesAndTruncatedData) {
     EXPECT_EQ(errorOf([&] { decodeImage(text, "x.png"); }),
               "x.png: not a PNG or JPEG image (glTF 2.0 images must be one of these): it starts with the text 'hello'");
     const std::vector<std::uint8_t> gif = {'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0};
-    EXPECT_EQ(errorOf([&] { decodeImage(gif, "z.png"); }),
-              "z.png: not a PNG or JPEG image (glTF 2.0 images must be one of these): it starts with the GIF signature");
+    EXPECT_EQ(
+        errorOf([&] { decodeImage(gif, "z.png"); }),
+        "z.png: not a PNG or JPEG image (glTF 2.0 images must be one of these): it starts with the GIF signature");
     EXPECT_EQ(errorOf([&] { decodeImage({}, "y.png"); }), "y.png: empty image data");
     auto png = readBytes(fixture("leaf4.png"));
     png.resize(png.size() - 30);  // cut into the pixel data

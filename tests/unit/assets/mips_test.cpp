@@ -117,8 +117,8 @@ TEST(Mips, CoverageIsPreservedWhereBoxFilteringLosesIt) {
         const RgbaImage& image = preserved[level];
         // Coverage can only move in steps of one texel; allow one step plus 1%.
         const float tolerance = 0.01f + 1.0f / static_cast<float>(image.pixelCount());
-        EXPECT_NEAR(alphaCoverage(image, cutoff), coverage0, tolerance) << "level " << level << " (" << image.width << "x"
-                                                                      << image.height << ")";
+        EXPECT_NEAR(alphaCoverage(image, cutoff), coverage0, tolerance)
+            << "level " << level << " (" << image.width << "x" << image.height << ")";
     }
     // Box filtering averages sub-texel leaves with the background: at 16x16 (level 4) less than
     // a quarter of the coverage is left, at 4x4 none (measured: 0.27 -> 0.016 -> 0).

@@ -18,8 +18,8 @@ namespace {
 
 using namespace bench;
 
-const std::vector<std::string> kTechniques{"ssam", "ssam-plus", "alpha-test", "a2c",
-                                           "blend-unsorted", "blend-sorted", "wboit", "reference"};
+const std::vector<std::string> kTechniques{"ssam",           "ssam-plus",    "alpha-test", "a2c",
+                                           "blend-unsorted", "blend-sorted", "wboit",      "reference"};
 
 BenchRow row(const std::string& scene, const std::string& technique, const std::string& backend, double ms,
              double flip) {
@@ -55,13 +55,15 @@ void expectReadable(const Chart& chart, const std::vector<BenchRow>& rows, const
         EXPECT_TRUE(p.plot.inside(p.frame));
         for (std::size_t i = 0; i < p.labels.size(); ++i) {
             const ChartLabel& a = p.labels[i];
-            EXPECT_TRUE(a.box.inside(p.plot)) << a.text << " " << describe(a.box) << " leaves the plot " << describe(p.plot);
+            EXPECT_TRUE(a.box.inside(p.plot))
+                << a.text << " " << describe(a.box) << " leaves the plot " << describe(p.plot);
             EXPECT_NEAR(a.box.x1 - a.box.x0, chartTextWidth(a.text, kLabelFontSize), 1e-9) << a.text;
             for (std::size_t j = i + 1; j < p.labels.size(); ++j)
-                EXPECT_FALSE(a.box.overlaps(p.labels[j].box))
-                    << a.text << " " << describe(a.box) << " overlaps " << p.labels[j].text << " " << describe(p.labels[j].box);
+                EXPECT_FALSE(a.box.overlaps(p.labels[j].box)) << a.text << " " << describe(a.box) << " overlaps "
+                                                              << p.labels[j].text << " " << describe(p.labels[j].box);
             for (const ChartMarker& m : p.markers)
-                EXPECT_FALSE(a.box.overlaps(m.box())) << a.text << " covers the marker of " << m.technique << " (" << m.backend << ")";
+                EXPECT_FALSE(a.box.overlaps(m.box()))
+                    << a.text << " covers the marker of " << m.technique << " (" << m.backend << ")";
             ASSERT_LT(a.marker, p.markers.size());
             EXPECT_EQ(p.markers[a.marker].technique, a.text);
         }
@@ -81,12 +83,15 @@ void expectReadable(const Chart& chart, const std::vector<BenchRow>& rows, const
         // Ticks: distinct texts, ordered positions, texts that do not collide, markers on the plot.
         for (const auto* ticks : {&p.xTicks, &p.yTicks}) {
             std::set<std::string> texts;
-            for (const ChartTick& t : *ticks) EXPECT_TRUE(texts.insert(t.text).second) << "tick '" << t.text << "' twice";
+            for (const ChartTick& t : *ticks)
+                EXPECT_TRUE(texts.insert(t.text).second) << "tick '" << t.text << "' twice";
             EXPECT_GE(ticks->size(), 2u);
         }
         for (std::size_t k = 1; k < p.xTicks.size(); ++k) {
             const double gap = p.xTicks[k].at - p.xTicks[k - 1].at;
-            EXPECT_GT(gap, (chartTextWidth(p.xTicks[k].text, kLabelFontSize) + chartTextWidth(p.xTicks[k - 1].text, kLabelFontSize)) / 2)
+            EXPECT_GT(gap, (chartTextWidth(p.xTicks[k].text, kLabelFontSize) +
+                            chartTextWidth(p.xTicks[k - 1].text, kLabelFontSize)) /
+                               2)
                 << p.xTicks[k - 1].text << " and " << p.xTicks[k].text << " collide";
         }
         for (std::size_t k = 1; k < p.yTicks.size(); ++k) EXPECT_LT(p.yTicks[k].at, p.yTicks[k - 1].at - 14.0);
@@ -110,8 +115,8 @@ TEST(BenchChart, BothBackendsOfARunAreDrawnAndNamed) {
     std::vector<BenchRow> rows;
     for (const std::string backend : {"soft", "gl"})
         for (std::size_t t = 0; t < kTechniques.size(); ++t)
-            rows.push_back(row("forest", kTechniques[t], backend, 100.0 + 40.0 * double(t) + (backend == "gl" ? -70 : 0),
-                               0.02 + 0.01 * double(t)));
+            rows.push_back(row("forest", kTechniques[t], backend,
+                               100.0 + 40.0 * double(t) + (backend == "gl" ? -70 : 0), 0.02 + 0.01 * double(t)));
     rows.push_back(row("forest", kOpaqueOnly, "soft", 20.0, 0.4));
     const Chart chart = layoutChart(rows);
     ASSERT_EQ(chart.backends, (std::vector<std::string>{"soft", "gl"}));
@@ -120,7 +125,7 @@ TEST(BenchChart, BothBackendsOfARunAreDrawnAndNamed) {
     EXPECT_EQ(chart.panels[0].markers.size(), 2 * kTechniques.size());  // opaque-only is not charted
     expectReadable(chart, rows, "two backends");
     const std::string svg = chartSvg(chart);
-    EXPECT_NE(svg.find("<circle"), std::string::npos);  // soft
+    EXPECT_NE(svg.find("<circle"), std::string::npos);   // soft
     EXPECT_NE(svg.find("<rect x="), std::string::npos);  // gl's squares
 }
 
@@ -135,7 +140,8 @@ TEST(BenchChart, CoincidentAndCrowdedPointsKeepTheirLabelsApart) {
 
 TEST(BenchChart, ExtremeRangesGiveDistinctTicks) {
     const std::vector<std::pair<double, double>> timeRanges{{0.013, 0.019}, {100, 300}, {0.01, 9000}, {5, 5}};
-    const std::vector<std::pair<double, double>> errorRanges{{0, 0}, {0.0001, 0.0004}, {0.3, 0.31}, {1e-7, 2e-7}, {0.02, 0.9}};
+    const std::vector<std::pair<double, double>> errorRanges{
+        {0, 0}, {0.0001, 0.0004}, {0.3, 0.31}, {1e-7, 2e-7}, {0.02, 0.9}};
     for (const auto& [t0, t1] : timeRanges)
         for (const auto& [e0, e1] : errorRanges) {
             std::vector<BenchRow> rows;
@@ -144,8 +150,8 @@ TEST(BenchChart, ExtremeRangesGiveDistinctTicks) {
                 rows.push_back(row("vista", kTechniques[t], "soft", t0 * std::pow(t1 / t0, f), e0 + (e1 - e0) * f));
             }
             expectReadable(layoutChart(rows), rows,
-                           "times " + std::to_string(t0) + ".." + std::to_string(t1) + ", errors " + std::to_string(e0) +
-                               ".." + std::to_string(e1));
+                           "times " + std::to_string(t0) + ".." + std::to_string(t1) + ", errors " +
+                               std::to_string(e0) + ".." + std::to_string(e1));
         }
 }
 

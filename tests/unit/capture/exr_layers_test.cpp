@@ -12,7 +12,8 @@ namespace {
 // Distinct, non-representable-in-half values so a mixed-up channel or a lost float is caught.
 Image patterned(std::vector<std::string> names, float seed) {
     Image image = Image::make(5, 3, std::move(names));
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = seed + 0.001f * static_cast<float>(i) + 1e-7f;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        image.pixels[i] = seed + 0.001f * static_cast<float>(i) + 1e-7f;
     return image;
 }
 }  // namespace
@@ -25,7 +26,8 @@ TEST(CaptureExrLayers, WritesNamedLayersAndReadsEachBack) {
     const Image depth = patterned({"Z"}, 10.0f);
     const Image result = patterned({"R", "G", "B", "A"}, 0.5f);
     const auto path = dir / "layers.exr";
-    writeExrLayers(path, {{"opaque", opaque}, {"mask", mask}, {"foliage", foliage}, {"depth", depth}, {"result", result}});
+    writeExrLayers(path,
+                   {{"opaque", opaque}, {"mask", mask}, {"foliage", foliage}, {"depth", depth}, {"result", result}});
 
     const auto layers = listExrLayers(path);
     for (const char* name : {"opaque", "mask", "foliage", "depth", "result"})

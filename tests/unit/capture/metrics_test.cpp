@@ -44,7 +44,9 @@ Image noisy(const Image& image, float sigma, unsigned seed = 1234) {
     return out;
 }
 
-double srgb(double linear) { return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055; }
+double srgb(double linear) {
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
 
 }  // namespace
 
@@ -159,8 +161,8 @@ TEST(CaptureMetrics, SsimOfFlatImagesIsTheLuminanceTerm) {
     const double c1 = 1e-4;
     EXPECT_NEAR(ssim(flat(12, 12, {0, 0, 0}), flat(12, 12, {1, 1, 1})), c1 / (1.0 + c1), 1e-12);
     const double mu = srgb(0.2);  // luma of a grey equals its encoded value (weights sum to 1)
-    EXPECT_NEAR(ssim(flat(12, 12, {0.2f, 0.2f, 0.2f}), flat(12, 12, {1, 1, 1})),
-                (2.0 * mu + c1) / (mu * mu + 1.0 + c1), 1e-6);
+    EXPECT_NEAR(ssim(flat(12, 12, {0.2f, 0.2f, 0.2f}), flat(12, 12, {1, 1, 1})), (2.0 * mu + c1) / (mu * mu + 1.0 + c1),
+                1e-6);
 }
 
 TEST(CaptureMetrics, SsimIsSymmetricAndRejectsImagesSmallerThanTheWindow) {
@@ -181,7 +183,12 @@ TEST(CaptureMetrics, FlickerOfAConstantSequenceIsZero) {
 
 TEST(CaptureMetrics, FlickerOfAlternatingBlackAndWhiteIsOne) {
     const Image black = flat(1, 1, {0, 0, 0});
-    const Image white = flat(1, 1, {1, 1, 1, });
+    const Image white = flat(1, 1,
+                             {
+                                 1,
+                                 1,
+                                 1,
+                             });
     EXPECT_DOUBLE_EQ(temporalFlicker({black, white, black, white, black}), 1.0);
     EXPECT_DOUBLE_EQ(temporalFlicker({black, white}), 1.0);
 }

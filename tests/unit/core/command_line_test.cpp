@@ -20,7 +20,8 @@ struct Outcome {
 };
 
 // Runs a small tool with one --count option (1..10) on `args`; `work` is its body.
-Outcome runWith(std::vector<std::string> args, const std::function<int()>& work = [] { return 0; }) {
+Outcome runWith(
+    std::vector<std::string> args, const std::function<int()>& work = [] { return 0; }) {
     CLI::App app{"tool"};
     int count = 1;
     app.add_option("--count", count)->check(CLI::Range(1, 10));

@@ -82,8 +82,8 @@ TEST_F(EcsIteration, DirectRemoveAndDestroyOfViewedComponentThrow) {
 TEST_F(EcsIteration, DirectChangesOutsideTheViewedPoolsAreAllowed) {
     std::vector<Entity> created;
     for (auto [e, velocity] : registry.view<Velocity>()) {
-        registry.add<Marked>(e);              // another pool
-        registry.remove<Position>(e);         // another pool
+        registry.add<Marked>(e);               // another pool
+        registry.remove<Position>(e);          // another pool
         created.push_back(registry.create());  // no viewed component
         velocity.x = 2.0f;
     }

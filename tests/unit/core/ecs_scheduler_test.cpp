@@ -71,12 +71,10 @@ TEST(EcsScheduler, CommandsAreFlushedBetweenPhases) {
         const Entity e = commands.create();
         commands.add<Spawned>(e, 1);
     });
-    scheduler.add(phase::simulation, "count-same-phase", [&](Registry& r, CommandBuffer&) {
-        seenInSameSimulationPhase = r.count<Spawned>();
-    });
-    scheduler.add(phase::camera, "count-later-phase", [&](Registry& r, CommandBuffer&) {
-        seenInCamera = r.count<Spawned>();
-    });
+    scheduler.add(phase::simulation, "count-same-phase",
+                  [&](Registry& r, CommandBuffer&) { seenInSameSimulationPhase = r.count<Spawned>(); });
+    scheduler.add(phase::camera, "count-later-phase",
+                  [&](Registry& r, CommandBuffer&) { seenInCamera = r.count<Spawned>(); });
     scheduler.add(phase::extraction, "despawn", [](Registry& r, CommandBuffer& commands) {
         for (auto [e, spawned] : r.view<Spawned>()) commands.destroy(e);
     });
@@ -101,9 +99,8 @@ TEST(EcsScheduler, RegistrationMistakesThrow) {
 
 TEST(EcsScheduler, SystemErrorsNameTheSystem) {
     Scheduler scheduler;
-    scheduler.add(phase::camera, "broken-camera", [](Registry& r, CommandBuffer&) {
-        r.destroy(Entity::fromParts(42, 0));
-    });
+    scheduler.add(phase::camera, "broken-camera",
+                  [](Registry& r, CommandBuffer&) { r.destroy(Entity::fromParts(42, 0)); });
     Registry registry;
     try {
         scheduler.run(registry);

@@ -132,8 +132,7 @@ TEST_F(EcsView, WalksTheSmallestPool) {
 TEST_F(EcsView, ContainsAgreesWithIteration) {
     const auto view = registry.view<A, C>();
     const std::set<Entity> members = expected(true, false, true);
-    for (std::uint32_t i = 0; i < 60; ++i)
-        EXPECT_EQ(view.contains(entities[i]), members.count(entities[i]) == 1) << i;
+    for (std::uint32_t i = 0; i < 60; ++i) EXPECT_EQ(view.contains(entities[i]), members.count(entities[i]) == 1) << i;
 }
 
 TEST_F(EcsView, WritesThroughTheViewAreVisible) {

@@ -8,7 +8,9 @@
 
 namespace {
 
-TEST(Error, MessageIsKept) { EXPECT_STREQ(engine::Error("image 'x.png': truncated at row 12").what(), "image 'x.png': truncated at row 12"); }
+TEST(Error, MessageIsKept) {
+    EXPECT_STREQ(engine::Error("image 'x.png': truncated at row 12").what(), "image 'x.png': truncated at row 12");
+}
 
 TEST(Error, NulInAQuotedNameIsSpelledOut) {
     const std::string name("tr\0ee", 5);  // a glTF name "tr\u0000ee"

@@ -14,7 +14,8 @@ const GroundHeight kFlat = [](float, float) { return 0.0f; };
 // A slope rising 1 m per 10 m along +z, with a bump across x.
 const GroundHeight kSlope = [](float x, float z) { return 0.1f * z + 0.5f * std::sin(0.3f * x); };
 
-CarMotion drive(CarMotion car, DriveControls controls, int frames, float dt = 0.1f, const GroundHeight& ground = kFlat) {
+CarMotion drive(CarMotion car, DriveControls controls, int frames, float dt = 0.1f,
+                const GroundHeight& ground = kFlat) {
     for (int i = 0; i < frames; ++i) car = driveStep(car, controls, dt, ground);
     return car;
 }
@@ -58,7 +59,7 @@ TEST(CarDriver, SteeringTurnsLeftAndRightOnACircleOfTheBicycleRadius) {
     const float speed = 10.0f;
     const CarMotion left = drive({{}, 0.0f, speed}, {0.0f, 1.0f}, 1, 0.1f);
     const CarMotion right = drive({{}, 0.0f, speed}, {0.0f, -1.0f}, 1, 0.1f);
-    EXPECT_GT(left.heading, 0.0f);   // towards +x
+    EXPECT_GT(left.heading, 0.0f);  // towards +x
     EXPECT_GT(left.position.x, 0.0f);
     EXPECT_FLOAT_EQ(right.heading, -left.heading);
     // Holding speed (throttle balancing the resistances is not needed: compare the yaw rate).
@@ -83,7 +84,8 @@ TEST(CarDriver, StaysOnTheGroundPitchedAlongTheSlope) {
         EXPECT_FLOAT_EQ(car.position.y, kSlope(car.position.x, car.position.z)) << "frame " << i;
     }
     // Driving straight up the slope: nose up by atan(0.1).
-    const CarMotion uphill = driveStep({{0.0f, 0.0f, 0.0f}, 0.0f, 10.0f}, {}, 0.1f, [](float, float z) { return 0.1f * z; });
+    const CarMotion uphill =
+        driveStep({{0.0f, 0.0f, 0.0f}, 0.0f, 10.0f}, {}, 0.1f, [](float, float z) { return 0.1f * z; });
     EXPECT_NEAR(uphill.pitch, std::atan(0.1f), 1e-5f);
     const CarMotion downhill =
         driveStep({{0.0f, 0.0f, 0.0f}, 3.14159265f, 10.0f}, {}, 0.1f, [](float, float z) { return 0.1f * z; });

@@ -20,7 +20,9 @@ TEST(CompareFrame, HalvesAreEachTechniquesOwnFrameBitForBit) {
 bool overlaps(const hud::PixelRect& a, const hud::PixelRect& b) {
     return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }
-bool within(const hud::PixelRect& r, int w, int h) { return r.x >= 0 && r.y >= 0 && r.x + r.width <= w && r.y + r.height <= h; }
+bool within(const hud::PixelRect& r, int w, int h) {
+    return r.x >= 0 && r.y >= 0 && r.x + r.width <= w && r.y + r.height <= h;
+}
 
 TEST(CompareLayout, LabelsAndInsetsSitInTheirHalvesInsideTheFrame) {
     for (auto [w, h] : {std::pair{1280, 720}, std::pair{640, 360}, std::pair{320, 180}}) {

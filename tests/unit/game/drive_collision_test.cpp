@@ -42,7 +42,8 @@ struct DrivenScene {
     explicit DrivenScene(engine::render::Backend& backend)
         : scene(backend, SceneOptions{defaultContentDir(), 1}),
           living(scene.registry(), scene.library(),
-                 LivingSceneOptions{.enabled = onlyModules(featureModules(), {"wind"}), .seed = 1, .track = &scene.track()}) {}
+                 LivingSceneOptions{
+                     .enabled = onlyModules(featureModules(), {"wind"}), .seed = 1, .track = &scene.track()}) {}
 
     // The player's car 10 m before `target` (coming from the start), driving at it or away from it.
     void aim(const glm::vec3& target, bool towards) {

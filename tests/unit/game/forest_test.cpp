@@ -29,7 +29,8 @@ struct Plant {
 
 struct Forest {
     // mutable: RacingScene's registry is for systems to change; this file only reads it.
-    std::unique_ptr<engine::render::soft::SoftBackend> backend = engine::render::soft::createSoftBackend({1, 64, false});
+    std::unique_ptr<engine::render::soft::SoftBackend> backend =
+        engine::render::soft::createSoftBackend({1, 64, false});
     mutable RacingScene scene{*backend, SceneOptions{defaultContentDir(), 1}};
     std::vector<Plant> plants;
 
@@ -42,7 +43,8 @@ struct Forest {
                 const engine::scene::MeshPart& p = library.part(part);
                 if (p.material.surface == SurfaceClass::Mask) {
                     foliage = true;
-                    plant.reach = std::max({plant.reach, p.bounds.max.x, -p.bounds.min.x, p.bounds.max.z, -p.bounds.min.z});
+                    plant.reach =
+                        std::max({plant.reach, p.bounds.max.x, -p.bounds.min.x, p.bounds.max.z, -p.bounds.min.z});
                 } else if (p.material.surface == SurfaceClass::Opaque) {
                     plant.tree = true;
                 }
@@ -79,11 +81,13 @@ TEST(Forest, TreeLinesStandAFewMetresFromTheRoad) {
         ++stretches;
         for (int side = -1; side <= 1; side += 2) {
             const bool lined = std::any_of(forest().plants.begin(), forest().plants.end(), [&](const Plant& p) {
-                if (!p.tree || p.at.distance < d || p.at.distance >= d + 20.0f || p.at.offset > halfWidth + 5.0f) return false;
+                if (!p.tree || p.at.distance < d || p.at.distance >= d + 20.0f || p.at.offset > halfWidth + 5.0f)
+                    return false;
                 const glm::vec3 side0 = glm::cross(track.forward(p.at.distance), glm::vec3(0.0f, 1.0f, 0.0f));
                 return glm::dot(p.position - track.position(p.at.distance), side0) * float(side) > 0.0f;
             });
-            EXPECT_TRUE(lined) << "no tree within 5 m of the asphalt on side " << side << " of " << d << " .. " << d + 20.0f << " m";
+            EXPECT_TRUE(lined) << "no tree within 5 m of the asphalt on side " << side << " of " << d << " .. "
+                               << d + 20.0f << " m";
         }
     }
     EXPECT_GT(stretches, int(0.6f * track.length() / 20.0f)) << "woodland along most of the lap";

@@ -110,7 +110,8 @@ TEST(Ground, HeightIsWhatTheMeshDraws) {
                 ASSERT_NEAR(ground.height(v->position.x, v->position.z), v->position.y, 1e-3f);
             for (const glm::vec2 uv : {glm::vec2(0.2f, 0.2f), glm::vec2(0.6f, 0.2f), glm::vec2(0.2f, 0.6f)}) {
                 const glm::vec3 p = barycentricPoint(a, b, c, uv.x, uv.y);
-                ASSERT_NEAR(ground.height(p.x, p.z), p.y, 2e-3f) << "inside a triangle at (" << p.x << ", " << p.z << ")";
+                ASSERT_NEAR(ground.height(p.x, p.z), p.y, 2e-3f)
+                    << "inside a triangle at (" << p.x << ", " << p.z << ")";
             }
         }
     EXPECT_GT(triangles, 100000u);

@@ -13,7 +13,8 @@ TEST(HudFrame, ChangesItsBoxAndNothingElse) {
 }
 
 TEST(HudText, SaysTechniqueBackendSizeAndWhatTheTimesAre) {
-    racer::HudFacts f{"ssam", "soft", 1280, 720, "previous frame", 40.0, {{"opaque", 3.25, false}, {"light shafts", 0.0, true}}, ""};
+    racer::HudFacts f{
+        "ssam", "soft", 1280, 720, "previous frame", 40.0, {{"opaque", 3.25, false}, {"light shafts", 0.0, true}}, ""};
     const std::vector<std::string> lines = racer::hudLines(f);
     ASSERT_EQ(lines.size(), 5u);
     EXPECT_EQ(lines[0], "ssam | soft | 1280x720");

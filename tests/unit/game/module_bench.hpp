@@ -64,8 +64,8 @@ public:
             clear.depth = {depth_, LoadOp::Clear, 0.0f};  // reverse-Z: 0 is the far plane
             PassScope(backend, clear).end();
             const engine::scene::FeatureFrame frame{
-                backend,   scene_.library(), lists,    color_,       depth_, kWidth, kHeight, view.view, view.projection,
-                view.viewProj, view.eye,     scene_.sun(), kDt, CompareFunc::Greater};
+                backend,   scene_.library(), lists,         color_,   depth_,       kWidth, kHeight,
+                view.view, view.projection,  view.viewProj, view.eye, scene_.sun(), kDt,    CompareFunc::Greater};
             feature->render(frame);
         }
     }
@@ -91,7 +91,8 @@ private:
 };
 
 // The modules of `table` that are built, for INSTANTIATE_TEST_SUITE_P, named after them.
-inline std::vector<const engine::scene::FeatureModule*> builtModules(std::span<const engine::scene::FeatureModule> table) {
+inline std::vector<const engine::scene::FeatureModule*> builtModules(
+    std::span<const engine::scene::FeatureModule> table) {
     std::vector<const engine::scene::FeatureModule*> built;
     for (const engine::scene::FeatureModule& m : table)
         if (m.make) built.push_back(&m);

@@ -32,7 +32,8 @@ TEST_P(ModuleExceptionSafety, LeaksNothingAndLeavesTheBackendUsableWhenACreateOr
 
     for (int n = 0; n < creates; ++n) {
         backend.failAt = backend.creates + n;
-        EXPECT_THROW(bench.firstFrame(module), engine::Error) << "create " << n << " of " << creates << " was not reached";
+        EXPECT_THROW(bench.firstFrame(module), engine::Error)
+            << "create " << n << " of " << creates << " was not reached";
         backend.failAt = -1;
         EXPECT_EQ(backend.live, live) << "leaked after create " << n << " of " << creates << " threw";
         EXPECT_TRUE(bench.usable()) << "unusable after create " << n << " threw";

@@ -29,7 +29,8 @@ std::vector<std::string> namesOf(std::span<const engine::scene::FeatureModule> t
 }
 
 TEST(ModuleRegistry, RacerHasTheLivingSceneModulesInFrameOrderAllOnByDefault) {
-    EXPECT_EQ(namesOf(featureModules()), (std::vector<std::string>{"wind", "grass", "water", "particles", "lightshafts"}));
+    EXPECT_EQ(namesOf(featureModules()),
+              (std::vector<std::string>{"wind", "grass", "water", "particles", "lightshafts"}));
     for (const engine::scene::FeatureModule& m : featureModules()) {
         EXPECT_EQ(std::string(m.flag), "--no-" + std::string(m.name));
         EXPECT_TRUE(m.enabledByDefault) << m.name;
@@ -55,8 +56,9 @@ TEST(ModuleRegistry, RacersFlagsFlipTheDefaults) {
     const char* argv[] = {"racer", "--no-grass", "--no-lightshafts"};
     app.parse(3, argv);
     const std::map<std::string, bool> enabled = enabledModules(o);
-    EXPECT_EQ(enabled, (std::map<std::string, bool>{
-                           {"grass", false}, {"lightshafts", false}, {"particles", true}, {"water", true}, {"wind", true}}));
+    EXPECT_EQ(enabled,
+              (std::map<std::string, bool>{
+                  {"grass", false}, {"lightshafts", false}, {"particles", true}, {"water", true}, {"wind", true}}));
 }
 
 class RegisteredModule : public ::testing::TestWithParam<const engine::scene::FeatureModule*> {};
@@ -86,7 +88,8 @@ TEST_P(RegisteredModule, RendersInRacersFrameFromItsRowAlone) {
         const CameraView view = cameraView(CameraMode::Chase, scene, time,
                                            float(ModuleBench::kWidth) / float(ModuleBench::kHeight), FreeCamera{});
         living.update(time, ModuleBench::kDt, view);
-        renderer.render(engine::scene::extractDrawLists(scene.registry(), scene.library(), view.viewProj, view.eye), view);
+        renderer.render(engine::scene::extractDrawLists(scene.registry(), scene.library(), view.viewProj, view.eye),
+                        view);
     }
     // Its passes are in the frame's graph (drawn, or marked empty where it had nothing to
     // draw); wind adds none, having systems only.
@@ -97,8 +100,8 @@ TEST_P(RegisteredModule, RendersInRacersFrameFromItsRowAlone) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Registered, RegisteredModule, ::testing::ValuesIn(builtModules(ssam::testing::featureModules())),
-                         ModuleName{});
+INSTANTIATE_TEST_SUITE_P(Registered, RegisteredModule,
+                         ::testing::ValuesIn(builtModules(ssam::testing::featureModules())), ModuleName{});
 
 }  // namespace
 }  // namespace racer::testing

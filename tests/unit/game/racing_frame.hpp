@@ -20,8 +20,7 @@ constexpr float kDt = 1.0f / 30.0f;
 // racer's headless loop (racer.cpp) for `frames` frames from `first`, chase camera.
 struct RacingFrame {
     explicit RacingFrame(engine::render::Backend& backend)
-        : scene(backend, SceneOptions{defaultContentDir(), 1}),
-          renderer(backend, scene.library(), rendererOptions()),
+        : scene(backend, SceneOptions{defaultContentDir(), 1}), renderer(backend, scene.library(), rendererOptions()),
           living(scene.registry(), scene.library(), LivingSceneOptions{.seed = 1, .track = &scene.track()}) {
         renderer.setLivingScene(&living);
     }

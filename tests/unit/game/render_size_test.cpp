@@ -26,7 +26,7 @@ TEST(RenderSize, ScalesLargerFramebuffersDownKeepingTheAspect) {
     EXPECT_EQ(renderSizeFor(20000, 40), (FrameSize{kMaxTextureDimension, 33}));  // 40 * 16384 / 20000 = 32.8
     EXPECT_EQ(renderSizeFor(32768, 16384), (FrameSize{kMaxTextureDimension, 8192}));
     EXPECT_EQ(renderSizeFor(100, 30000), (FrameSize{55, kMaxTextureDimension}));  // 54.6
-    EXPECT_EQ(renderSizeFor(32767, 1), (FrameSize{kMaxTextureDimension, 1}));      // never 0
+    EXPECT_EQ(renderSizeFor(32767, 1), (FrameSize{kMaxTextureDimension, 1}));     // never 0
     for (const FrameSize fb : {FrameSize{16385, 9000}, FrameSize{30000, 30000}, FrameSize{17000, 2}}) {
         const FrameSize r = renderSizeFor(fb.width, fb.height);
         EXPECT_LE(std::max(r.width, r.height), kMaxTextureDimension);

@@ -84,10 +84,33 @@ TEST(WindowKeys, ScriptParsesAndSortsByFrame) {
 }
 
 TEST(WindowKeys, BadScriptEntriesAreNamed) {
-    for (const char* bad : {"3", "x:T", "-1:T", "2:Z", "2:9", "1:T,", "5-3:W", "1-:W", "1-x:W", "1+2:W", "1:size=",
-                            "1:size=400", "1:size=400x", "1:size=x300", "1:size=0x300", "1:size=400x0", "1:size=40000x300",
-                            "1:size=-4x300", "1:size=400x300x2", "1:size=400 x300", "1-3:size=400x300", "1:minimize=",
-                            "1:minimize=0", "1:minimize=60001", "1:minimize=2s", "1:maximize=1", "1:=5"}) {
+    for (const char* bad : {"3",
+                            "x:T",
+                            "-1:T",
+                            "2:Z",
+                            "2:9",
+                            "1:T,",
+                            "5-3:W",
+                            "1-:W",
+                            "1-x:W",
+                            "1+2:W",
+                            "1:size=",
+                            "1:size=400",
+                            "1:size=400x",
+                            "1:size=x300",
+                            "1:size=0x300",
+                            "1:size=400x0",
+                            "1:size=40000x300",
+                            "1:size=-4x300",
+                            "1:size=400x300x2",
+                            "1:size=400 x300",
+                            "1-3:size=400x300",
+                            "1:minimize=",
+                            "1:minimize=0",
+                            "1:minimize=60001",
+                            "1:minimize=2s",
+                            "1:maximize=1",
+                            "1:=5"}) {
         try {
             parseWindowScript(bad);
             ADD_FAILURE() << "accepted '" << bad << "'";

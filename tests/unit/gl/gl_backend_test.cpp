@@ -26,7 +26,8 @@ using render::Format;
 std::unique_ptr<render::Backend> makeGl(gl::GlOptions options = {}) { return gl::createGlBackend(options); }
 std::unique_ptr<render::Backend> makeSoft() { return engine::render::soft::createSoftBackend({.threads = 1}); }
 
-render::TextureHandle target(render::Backend& b, int w, int h, Format f, int samples = 1, const std::string& name = "t") {
+render::TextureHandle target(render::Backend& b, int w, int h, Format f, int samples = 1,
+                             const std::string& name = "t") {
     return b.createTexture(render::renderTargetDesc(name, w, h, f, samples));
 }
 
@@ -118,7 +119,8 @@ TEST_F(GlBackendTest, ReportsItsContext) {
 // encoding, half rounding), read back with the same layout.
 TEST_F(GlBackendTest, ClearsMatchSoftForEveryFormat) {
     auto soft = makeSoft();
-    const glm::vec4 clears[] = {{0.2f, 0.55f, 0.9f, 0.6f}, {1.5f, -0.25f, 0.0031f, 0.5f}, {0.1234567f, 0.7f, 1e-5f, 65504.0f}};
+    const glm::vec4 clears[] = {
+        {0.2f, 0.55f, 0.9f, 0.6f}, {1.5f, -0.25f, 0.0031f, 0.5f}, {0.1234567f, 0.7f, 1e-5f, 65504.0f}};
     for (Format f : {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::R8_UNORM, Format::RG8_UNORM, Format::RGBA16F,
                      Format::RG16F, Format::R16F, Format::RGBA32F, Format::R32F}) {
         for (const glm::vec4& c : clears) {
@@ -131,7 +133,8 @@ TEST_F(GlBackendTest, ClearsMatchSoftForEveryFormat) {
     // Depth: cleared values read back as floats.
     const auto color = target(gfx(), 2, 2, Format::RGBA8_UNORM);
     const auto depth = target(gfx(), 2, 2, Format::D32F);
-    onePass(gfx(), color, glm::vec4(0.0f), [] {}, depth, 0.375f);
+    onePass(
+        gfx(), color, glm::vec4(0.0f), [] {}, depth, 0.375f);
     const render::Readback r = gfx().readback(depth);
     EXPECT_EQ(r.channels, 1);
     EXPECT_EQ(r.at(1, 1, 0), 0.375f);
@@ -229,7 +232,8 @@ TEST_F(GlBackendTest, WindingAndCullingMatchSoft) {
                 });
                 results.push_back(b->readback(t));
             }
-            expectSame(results[0], results[1], "cull " + std::to_string(int(cull)) + " front " + std::to_string(int(front)));
+            expectSame(results[0], results[1],
+                       "cull " + std::to_string(int(cull)) + " front " + std::to_string(int(front)));
             if (cull == render::CullMode::Back && front == render::Winding::CounterClockwise) {
                 EXPECT_EQ(results[0].at(1, 1, 0), 1.0f);  // front face, lit
                 EXPECT_EQ(results[0].at(6, 6, 0), 0.0f);  // back face, culled
@@ -301,8 +305,12 @@ TEST_F(GlBackendTest, ResolvesMatchSoft) {
                 pd.depth = render::DepthState::testAndWrite(func);
                 const auto p = b->createPipeline(pd);
                 const float clearDepth = func == render::CompareFunc::Less ? 1.0f : 0.0f;
-                onePass(*b, color, {0.1f, 0.2f, 0.3f, 1.0f}, [&] { drawFlatOn(*b, p, vb, 3, {0.9f, 0.8f, 0.7f, 1.0f}); },
-                        depth, clearDepth);
+                onePass(
+                    *b, color, {0.1f, 0.2f, 0.3f, 1.0f},
+                    [&] {
+                        drawFlatOn(*b, p, vb, 3, {0.9f, 0.8f, 0.7f, 1.0f});
+                    },
+                    depth, clearDepth);
                 const auto resolvedColor = target(*b, 8, 8, f, 1, "resolved");
                 const auto resolvedDepth = target(*b, 8, 8, Format::D32F, 1, "resolved_depth");
                 b->resolve({color, resolvedColor});
@@ -339,10 +347,10 @@ TEST_F(GlBackendTest, CompositeMatchesSoft) {
             render::TextureData data{{std::as_bytes(std::span(texels))}};
             return b->createTexture(desc, &data);
         };
-        const auto foliage = filled(Format::RGBA16F, "foliage",
-                                    [](int x, int y) { return glm::vec4(0.1f * x, 0.2f * y, 0.5f, 1.0f); });
-        const auto mask = filled(Format::RGBA16F, "mask",
-                                 [](int x, int y) { return glm::vec4(0.15f * x, 0.0f, 0.0f, 0.3f * y); });
+        const auto foliage =
+            filled(Format::RGBA16F, "foliage", [](int x, int y) { return glm::vec4(0.1f * x, 0.2f * y, 0.5f, 1.0f); });
+        const auto mask =
+            filled(Format::RGBA16F, "mask", [](int x, int y) { return glm::vec4(0.15f * x, 0.0f, 0.0f, 0.3f * y); });
         const auto maskAdd = filled(Format::R16F, "mask_add", [](int x, int y) { return glm::vec4(0.05f * (x + y)); });
         const auto out = target(*b, w, h, Format::RGBA8_SRGB, 1, "out");
         render::PipelineDesc pd;

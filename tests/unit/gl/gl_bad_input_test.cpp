@@ -37,16 +37,18 @@ TEST(GlBadInput, BrokenGlslThrowsWithTheInfoLog) {
         EXPECT_NE(message.find("fragment shader does not compile"), std::string::npos) << message;
         EXPECT_NE(message.find("undefined_function"), std::string::npos) << "the info log is missing: " << message;
     }
-    expectError([] { gl::compileProgram("broken_vertex", "#version 450 core\nvoid main() { gl_Position = 1; }\n", kVertex); },
-                "broken_vertex': vertex shader does not compile");
+    expectError(
+        [] { gl::compileProgram("broken_vertex", "#version 450 core\nvoid main() { gl_Position = 1; }\n", kVertex); },
+        "broken_vertex': vertex shader does not compile");
 }
 
 TEST(GlBadInput, LinkErrorThrowsWithTheInfoLog) {
     auto backend = gl::createGlBackend();
     expectError(
         [] {
-            gl::compileProgram("unlinked", kVertex,
-                               "#version 450 core\nin vec4 v_never_written;\nout vec4 o;\nvoid main() { o = v_never_written; }\n");
+            gl::compileProgram(
+                "unlinked", kVertex,
+                "#version 450 core\nin vec4 v_never_written;\nout vec4 o;\nvoid main() { o = v_never_written; }\n");
         },
         "'unlinked' does not link");
 }
@@ -67,13 +69,15 @@ TEST(GlBadInput, IncompletePassFramebufferThrows) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
     glTextureStorage2DMultisample(id, 4, GL_RGBA8, 8, 8, GL_FALSE);
-    const auto color = backend->importTexture(id, {"host_msaa", 8, 8, Format::RGBA8_UNORM, 4, 1, render::UsageRenderTarget});
+    const auto color =
+        backend->importTexture(id, {"host_msaa", 8, 8, Format::RGBA8_UNORM, 4, 1, render::UsageRenderTarget});
     const auto depth = backend->createTexture({"depth", 8, 8, Format::D32F, 4, 1, render::UsageRenderTarget});
     render::PassDesc pass;
     pass.name = "mixed";
     pass.color[0] = {color};
     pass.depth = {depth};
-    expectError([&] { backend->beginPass(pass); }, "pass 'mixed': framebuffer incomplete (GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE)");
+    expectError([&] { backend->beginPass(pass); },
+                "pass 'mixed': framebuffer incomplete (GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE)");
     // The failed pass left nothing open.
     pass.depth = {};
     backend->beginPass(pass);
@@ -94,8 +98,11 @@ TEST(GlBadInput, ImpossibleContextsThrow) {
 TEST(GlBadInput, SampleCountsBeyondTheImplementationThrow) {
     auto backend = gl::createGlBackend();
     if (backend->info().maxSamples >= 8) GTEST_SKIP() << "this implementation has 8x MSAA";
-    expectError([&] { backend->createTexture({"msaa8", 8, 8, Format::RGBA8_UNORM, 8, 1, render::UsageRenderTarget}); },
-                "texture 'msaa8': 8 samples exceed this GL implementation's");
+    expectError(
+        [&] {
+            backend->createTexture({"msaa8", 8, 8, Format::RGBA8_UNORM, 8, 1, render::UsageRenderTarget});
+        },
+        "texture 'msaa8': 8 samples exceed this GL implementation's");
 }
 
 // ---- validation parity: every misuse gives the soft backend's message ------------------
@@ -111,13 +118,16 @@ Rig makeRig(std::unique_ptr<render::Backend> backend) {
     Rig r;
     r.backend = std::move(backend);
     render::Backend& b = *r.backend;
-    r.color = b.createTexture({"color", 8, 8, Format::RGBA8_UNORM, 1, 1, render::UsageRenderTarget | render::UsageSampled});
-    r.colorSmall = b.createTexture({"small", 4, 4, Format::RGBA8_UNORM, 1, 1, render::UsageRenderTarget | render::UsageSampled});
+    r.color =
+        b.createTexture({"color", 8, 8, Format::RGBA8_UNORM, 1, 1, render::UsageRenderTarget | render::UsageSampled});
+    r.colorSmall =
+        b.createTexture({"small", 4, 4, Format::RGBA8_UNORM, 1, 1, render::UsageRenderTarget | render::UsageSampled});
     r.depth = b.createTexture({"depth", 8, 8, Format::D32F, 1, 1, render::UsageRenderTarget});
     r.sampled = b.createTexture({"sampled", 8, 8, Format::RGBA8_UNORM, 1, 1, render::UsageSampled});
     r.msaa = b.createTexture({"msaa", 8, 8, Format::RGBA8_UNORM, 4, 1, render::UsageRenderTarget});
     const auto quad = pixelRect(8, 8, 0, 0, 8, 8);
-    r.vertices = b.createBuffer({"quad", render::BufferKind::Vertex, quad.size() * sizeof(render::Vertex)}, bytesOf(quad));
+    r.vertices =
+        b.createBuffer({"quad", render::BufferKind::Vertex, quad.size() * sizeof(render::Vertex)}, bytesOf(quad));
     const std::vector<std::uint32_t> idx = {0, 1, 2, 3, 4, 9};
     r.indices = b.createBuffer({"bad_indices", render::BufferKind::Index, idx.size() * 4}, bytesOf(idx));
     r.instances = b.createBuffer({"instances", render::BufferKind::Instance, 2 * sizeof(render::Instance)}, {});
@@ -136,7 +146,8 @@ Rig makeRig(std::unique_ptr<render::Backend> backend) {
 }
 
 // Runs `misuse` on a fresh rig; returns the Error message, or nullopt when nothing was thrown.
-std::optional<std::string> messageOf(std::unique_ptr<render::Backend> backend, const std::function<void(Rig&)>& misuse) {
+std::optional<std::string> messageOf(std::unique_ptr<render::Backend> backend,
+                                     const std::function<void(Rig&)>& misuse) {
     Rig rig = makeRig(std::move(backend));
     try {
         misuse(rig);
@@ -179,12 +190,30 @@ void sampleWithLit(Rig& r, render::DrawDesc& d, render::TextureHandle texture) {
 }
 
 const Misuse kMisuses[] = {
-    {"empty texture", [](Rig& r) { r.backend->createTexture({"zero", 0, 4}); }},
-    {"huge texture", [](Rig& r) { r.backend->createTexture({"huge", 20000, 4}); }},
-    {"3 samples", [](Rig& r) { r.backend->createTexture({"three", 4, 4, Format::RGBA8_UNORM, 3, 1, render::UsageRenderTarget}); }},
-    {"sampled msaa", [](Rig& r) { r.backend->createTexture({"ms", 4, 4, Format::RGBA8_UNORM, 4}); }},
-    {"sampled depth", [](Rig& r) { r.backend->createTexture({"d", 4, 4, Format::D32F}); }},
-    {"too many mips", [](Rig& r) { r.backend->createTexture({"mips", 4, 4, Format::RGBA8_UNORM, 1, 4}); }},
+    {"empty texture",
+     [](Rig& r) {
+         r.backend->createTexture({"zero", 0, 4});
+     }},
+    {"huge texture",
+     [](Rig& r) {
+         r.backend->createTexture({"huge", 20000, 4});
+     }},
+    {"3 samples",
+     [](Rig& r) {
+         r.backend->createTexture({"three", 4, 4, Format::RGBA8_UNORM, 3, 1, render::UsageRenderTarget});
+     }},
+    {"sampled msaa",
+     [](Rig& r) {
+         r.backend->createTexture({"ms", 4, 4, Format::RGBA8_UNORM, 4});
+     }},
+    {"sampled depth",
+     [](Rig& r) {
+         r.backend->createTexture({"d", 4, 4, Format::D32F});
+     }},
+    {"too many mips",
+     [](Rig& r) {
+         r.backend->createTexture({"mips", 4, 4, Format::RGBA8_UNORM, 1, 4});
+     }},
     {"wrong level size",
      [](Rig& r) {
          std::vector<std::byte> bytes(10);
@@ -197,7 +226,10 @@ const Misuse kMisuses[] = {
          render::TextureData data{{bytes, bytes}};
          r.backend->createTexture({"levels", 4, 4}, &data);
      }},
-    {"buffer size", [](Rig& r) { r.backend->createBuffer({"odd", render::BufferKind::Vertex, 47}, {}); }},
+    {"buffer size",
+     [](Rig& r) {
+         r.backend->createBuffer({"odd", render::BufferKind::Vertex, 47}, {});
+     }},
     {"buffer data size",
      [](Rig& r) {
          std::vector<std::byte> bytes(8);
@@ -264,13 +296,22 @@ const Misuse kMisuses[] = {
     {"count not multiple of 3", badDraw([](Rig&, render::DrawDesc& d) { d.count = 4; })},
     {"vertices out of range", badDraw([](Rig&, render::DrawDesc& d) { d.first = 3; })},
     {"index out of range", badDraw([](Rig& r, render::DrawDesc& d) { d.indices = r.indices; })},
-    {"indices past the buffer", badDraw([](Rig& r, render::DrawDesc& d) { d.indices = r.indices; d.first = 3; })},
+    {"indices past the buffer", badDraw([](Rig& r, render::DrawDesc& d) {
+         d.indices = r.indices;
+         d.first = 3;
+     })},
     {"index buffer as vertices", badDraw([](Rig& r, render::DrawDesc& d) { d.vertices = r.indices; })},
-    {"too many instances", badDraw([](Rig& r, render::DrawDesc& d) { d.instances = r.instances; d.instanceCount = 3; })},
+    {"too many instances", badDraw([](Rig& r, render::DrawDesc& d) {
+         d.instances = r.instances;
+         d.instanceCount = 3;
+     })},
     {"instances without buffer", badDraw([](Rig&, render::DrawDesc& d) { d.instanceCount = 2; })},
     {"sampling the target", badDraw([](Rig& r, render::DrawDesc& d) { sampleWithLit(r, d, r.color); })},
     {"sampling msaa", badDraw([](Rig& r, render::DrawDesc& d) { sampleWithLit(r, d, r.msaa); })},
-    {"resolve mismatch", [](Rig& r) { r.backend->resolve({r.msaa, r.colorSmall}); }},
+    {"resolve mismatch",
+     [](Rig& r) {
+         r.backend->resolve({r.msaa, r.colorSmall});
+     }},
     {"readback msaa", [](Rig& r) { r.backend->readback(r.msaa); }},
 };
 

@@ -165,12 +165,26 @@ public:
         // Targets. The SSAM intermediates are RGBA16F as in the SSAM module, except with RGBA32F
         // colour, where they are RGBA32F too: llvmpipe stores halves rounded toward zero, and a
         // composite of inputs a few half ULPs apart cannot agree to 1e-5.
-        enum { kColor, kDepth, kMask, kFoliageColor, kColorResolved, kDepthResolved, kMaskResolved, kFoliageResolved, kZoo };
+        enum {
+            kColor,
+            kDepth,
+            kMask,
+            kFoliageColor,
+            kColorResolved,
+            kDepthResolved,
+            kMaskResolved,
+            kFoliageResolved,
+            kZoo
+        };
         const Format intermediate = format_ == Format::RGBA32F ? Format::RGBA32F : Format::RGBA16F;
-        s.targets = {{"color", format_, samples_},       {"depth", Format::D32F, samples_},
-                     {"mask", intermediate, samples_},    {"foliage", intermediate, samples_},
-                     {"color_resolved", format_, 1},      {"depth_resolved", Format::D32F, 1},
-                     {"mask_resolved", intermediate, 1},  {"foliage_resolved", intermediate, 1},
+        s.targets = {{"color", format_, samples_},
+                     {"depth", Format::D32F, samples_},
+                     {"mask", intermediate, samples_},
+                     {"foliage", intermediate, samples_},
+                     {"color_resolved", format_, 1},
+                     {"depth_resolved", Format::D32F, 1},
+                     {"mask_resolved", intermediate, 1},
+                     {"foliage_resolved", intermediate, 1},
                      {"zoo", format_, 1}};
         const bool msaa = samples_ > 1;
 
@@ -183,8 +197,9 @@ public:
         for (int i = 0; i < 8; ++i) {
             DrawSpec d;
             d.pipeline.name = "opaque" + std::to_string(i);
-            d.pipeline.depth = {true, coin(0.8), pick({CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater,
-                                                       CompareFunc::Always, CompareFunc::NotEqual})};
+            d.pipeline.depth = {true, coin(0.8),
+                                pick({CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater,
+                                      CompareFunc::Always, CompareFunc::NotEqual})};
             d.pipeline.raster.cull = pick({render::CullMode::None, render::CullMode::Back, render::CullMode::Front});
             d.pipeline.raster.frontFace = pick({render::Winding::CounterClockwise, render::Winding::Clockwise});
             const float depth = nextDepth();
@@ -200,18 +215,20 @@ public:
                 p.light = randomLight();
                 d.params = p;
             }
-            if (i == 7) {  // an instanced draw (affine triangles, grid-aligned translations)
+            if (i == 7) {                            // an instanced draw (affine triangles, grid-aligned translations)
                 d.vertices = triangles(2, true, 8);  // translations move them by up to 8 pixels
                 for (int k = 0; k < 3; ++k) {
                     render::Instance inst;
-                    inst.model[3] = glm::vec4(float(randomInt(-8, 8)) / 32.0f, float(randomInt(-8, 8)) / 32.0f, 0.0f, 1.0f);
+                    inst.model[3] =
+                        glm::vec4(float(randomInt(-8, 8)) / 32.0f, float(randomInt(-8, 8)) / 32.0f, 0.0f, 1.0f);
                     inst.tint = randomColour(false);
                     d.instances.push_back(inst);
                 }
             } else {
                 d.vertices = triangles(randomInt(1, 3), false);
             }
-            if (coin(0.2)) d.scissor = render::Rect{randomInt(-4, 30), randomInt(-4, 30), randomInt(8, 50), randomInt(8, 50)};
+            if (coin(0.2))
+                d.scissor = render::Rect{randomInt(-4, 30), randomInt(-4, 30), randomInt(8, 50), randomInt(8, 50)};
             opaque.draws.push_back(d);
         }
         s.passes.push_back(opaque);
@@ -230,7 +247,8 @@ public:
             render::AlphaOnlyParams ap;
             ap.viewProj = projection(depth);
             ap.alphaFactor = uniform(0.6f, 1.0f);
-            ap.baseColor = {textureRef(kFoliage), {render::Filter::Nearest, render::AddressMode::Wrap, render::AddressMode::Mirror}};
+            ap.baseColor = {textureRef(kFoliage),
+                            {render::Filter::Nearest, render::AddressMode::Wrap, render::AddressMode::Mirror}};
             m.params = ap;
             m.vertices = v;
             mask.draws.push_back(m);
@@ -242,7 +260,8 @@ public:
             f.pipeline.alphaTest = render::AlphaTest::discardBelow(0.5f);
             render::SurfaceParams sp;
             sp.viewProj = projection(depth);
-            sp.baseColor = {textureRef(kFoliage), {render::Filter::Nearest, render::AddressMode::Wrap, render::AddressMode::Mirror}};
+            sp.baseColor = {textureRef(kFoliage),
+                            {render::Filter::Nearest, render::AddressMode::Wrap, render::AddressMode::Mirror}};
             sp.light = randomLight();
             f.params = sp;
             f.vertices = v;
@@ -272,7 +291,10 @@ public:
         c.pipeline.name = "composite";
         c.pipeline.blend[0] = BlendState::alphaOver();
         c.params = ssam::CompositeParams{targetRef(msaa ? kFoliageResolved : kFoliageColor),
-                                           targetRef(msaa ? kMaskResolved : kMask), {}, 0.85f, true};
+                                         targetRef(msaa ? kMaskResolved : kMask),
+                                         {},
+                                         0.85f,
+                                         true};
         composite.draws.push_back(c);
         s.passes.push_back(composite);
 
@@ -311,7 +333,8 @@ public:
             // pass and fail (the fail modes' split steps). RGB varies per vertex.
             for (std::size_t v = 0; v < d.vertices.size(); v += 3) {
                 const float a = std::clamp(reference + (coin(0.5) ? 1.0f : -1.0f) * uniform(0.08f, 0.3f), 0.0f, 1.0f);
-                for (std::size_t k = v; k < v + 3; ++k) d.vertices[k].color = glm::vec4(glm::vec3(randomColour(false)), a);
+                for (std::size_t k = v; k < v + 3; ++k)
+                    d.vertices[k].color = glm::vec4(glm::vec3(randomColour(false)), a);
             }
             zoo.draws.push_back(d);
         }
@@ -362,10 +385,10 @@ private:
     // the w row, and w = position.z. So every draw has one constant depth.
     static glm::mat4 projection(float depth) {
         glm::mat4 m(0.0f);
-        m[0][0] = 1.0f;          // x
-        m[1][1] = 1.0f;          // y
-        m[2][2] = depth;         // z_clip = depth * w
-        m[2][3] = 1.0f;          // w = position.z
+        m[0][0] = 1.0f;   // x
+        m[1][1] = 1.0f;   // y
+        m[2][2] = depth;  // z_clip = depth * w
+        m[2][3] = 1.0f;   // w = position.z
         return m;
     }
 
@@ -421,11 +444,13 @@ private:
         render::TextureBinding b;
         // Float targets: float textures, or the UNORM ones (0, 2) with Nearest; not the sRGB one,
         // whose decode precision is the implementation's (llvmpipe: within 7.3e-4).
-        const int texture = floatTarget ? (coin(0.5) ? float16 : (coin(0.5) ? float32 : 2 * randomInt(0, 1))) : randomInt(0, 4);
+        const int texture =
+            floatTarget ? (coin(0.5) ? float16 : (coin(0.5) ? float32 : 2 * randomInt(0, 1))) : randomInt(0, 4);
         b.texture = textureRef(texture);
         const bool exactOnly = alphaTested || (floatTarget && texture < 3);  // UNORM texels into float targets
-        b.sampler.filter = exactOnly ? render::Filter::Nearest
-                                     : pick({render::Filter::Nearest, render::Filter::Bilinear, render::Filter::Trilinear});
+        b.sampler.filter = exactOnly
+                               ? render::Filter::Nearest
+                               : pick({render::Filter::Nearest, render::Filter::Bilinear, render::Filter::Trilinear});
         b.sampler.addressU = pick({render::AddressMode::Wrap, render::AddressMode::Clamp, render::AddressMode::Mirror});
         b.sampler.addressV = pick({render::AddressMode::Wrap, render::AddressMode::Clamp, render::AddressMode::Mirror});
         return b;
@@ -495,7 +520,12 @@ std::vector<render::Readback> run(render::Backend& b, const Scene& s, const std:
         textures.push_back(b.createTexture(desc, &data));
     }
     for (const TargetSpec& t : s.targets) {
-        render::TextureDesc desc{t.name, kSize, kSize, t.format, t.samples, 1,
+        render::TextureDesc desc{t.name,
+                                 kSize,
+                                 kSize,
+                                 t.format,
+                                 t.samples,
+                                 1,
                                  std::uint8_t(render::UsageRenderTarget | (t.samples == 1 ? render::UsageSampled : 0))};
         targets.push_back(b.createTexture(desc));
     }
@@ -511,7 +541,8 @@ std::vector<render::Readback> run(render::Backend& b, const Scene& s, const std:
         for (std::size_t i = 0; i < p.colors.size(); ++i)
             pass.color[i] = {targets[p.colors[i]], p.clearColor ? render::LoadOp::Clear : render::LoadOp::Load,
                              p.clearValues.empty() ? glm::vec4(0.0f) : p.clearValues[i]};
-        if (p.depth >= 0) pass.depth = {targets[p.depth], p.clearDepth ? render::LoadOp::Clear : render::LoadOp::Load, p.depthClear};
+        if (p.depth >= 0)
+            pass.depth = {targets[p.depth], p.clearDepth ? render::LoadOp::Clear : render::LoadOp::Load, p.depthClear};
         b.beginPass(pass);
         for (const DrawSpec& d : p.draws) {
             if (!drawEnabled[drawIndex++]) continue;
@@ -539,8 +570,9 @@ std::vector<render::Readback> run(render::Backend& b, const Scene& s, const std:
                 dd.params = resolved;
             }
             if (!d.params.get<ssam::CompositeParams>()) {  // the only full-screen program here
-                dd.vertices = b.createBuffer(
-                    {"vertices", render::BufferKind::Vertex, d.vertices.size() * sizeof(render::Vertex)}, bytesOf(d.vertices));
+                dd.vertices =
+                    b.createBuffer({"vertices", render::BufferKind::Vertex, d.vertices.size() * sizeof(render::Vertex)},
+                                   bytesOf(d.vertices));
                 dd.count = std::uint32_t(d.vertices.size());
                 if (!d.instances.empty()) {
                     dd.instances = b.createBuffer(
@@ -563,10 +595,10 @@ std::vector<render::Readback> run(render::Backend& b, const Scene& s, const std:
 // ---- comparison -------------------------------------------------------------------------
 
 struct Stats {
-    int maxCodes = 0;         // UNORM / sRGB: stored codes
-    double maxHalfUlps = 0;   // RGBA16F: in ULPs at the scale max(|value|, 1)
-    double maxRelative = 0;   // RGBA32F: relative to max(|value|, 1)
-    double maxDepth = 0;      // D32F: absolute
+    int maxCodes = 0;        // UNORM / sRGB: stored codes
+    double maxHalfUlps = 0;  // RGBA16F: in ULPs at the scale max(|value|, 1)
+    double maxRelative = 0;  // RGBA32F: relative to max(|value|, 1)
+    double maxDepth = 0;     // D32F: absolute
     std::uint64_t values = 0, beyondOneCode = 0;
 };
 
@@ -647,9 +679,9 @@ TEST_P(GlDifferential, RandomScenesMatchTheSoftBackend) {
     Stats stats;
     int skippedInexact = 0, draws = 0;
     for (std::uint32_t seed = 1; seed <= 3; ++seed) {
-        const Scene scene = Generator(seed * 7919u + std::uint32_t(c.format) * 31u + std::uint32_t(c.samples), c.format,
-                                      c.samples)
-                                .make();
+        const Scene scene =
+            Generator(seed * 7919u + std::uint32_t(c.format) * 31u + std::uint32_t(c.samples), c.format, c.samples)
+                .make();
         // Draws whose emulation GL reports inexact (fail modes under depth writes with the
         // two-pass split) are left out of both runs: they are covered by the exactness report.
         std::vector<bool> enabled;

@@ -28,7 +28,7 @@ struct FakeGl {
     std::string shaderLog, programLog;  // drivers end theirs with newlines and a NUL
     std::map<GLuint, GLenum> shaders;   // alive: name -> stage
     std::map<GLuint, std::string> sources;
-    std::set<GLuint> programs;                  // alive
+    std::set<GLuint> programs;                     // alive
     std::set<std::pair<GLuint, GLuint>> attached;  // (program, shader)
     bool deletedAttachedShader = false;
     GLuint next = 1;

@@ -30,8 +30,8 @@ void check(bool ok, const char* what) {
 }
 
 // Renders one frame into `color` (size of the window's framebuffer) and presents it.
-bool frame(gl::GlBackend& backend, gl::GlfwWindowContext& window, render::TextureHandle& color, int& width,
-           int& height, render::PipelineHandle pipeline, render::BufferHandle triangle, int index) {
+bool frame(gl::GlBackend& backend, gl::GlfwWindowContext& window, render::TextureHandle& color, int& width, int& height,
+           render::PipelineHandle pipeline, render::BufferHandle triangle, int index) {
     window.pollEvents();
     const glm::ivec2 size = window.framebufferSize();
     if (size.x <= 0 || size.y <= 0) return false;  // minimised: skip the frame entirely
@@ -94,9 +94,9 @@ int main() {
         tri[0].position = {-0.5f, -0.5f, 0.5f};
         tri[1].position = {0.5f, -0.5f, 0.5f};
         tri[2].position = {0.0f, 0.5f, 0.5f};
-        const render::BufferHandle triangle = backend->createBuffer(
-            {"triangle", render::BufferKind::Vertex, tri.size() * sizeof(render::Vertex)},
-            std::as_bytes(std::span(tri)));
+        const render::BufferHandle triangle =
+            backend->createBuffer({"triangle", render::BufferKind::Vertex, tri.size() * sizeof(render::Vertex)},
+                                  std::as_bytes(std::span(tri)));
 
         render::TextureHandle color;
         int width = 0, height = 0, presented = 0;

@@ -102,7 +102,7 @@ TEST(HudOverlay, PanelsCopyAndZoomTexelForTexel) {
     const engine::render::Readback plain = scene.render({});
     OverlayContent content;
     const PixelRect region{30, 20, 8, 6};
-    content.images.push_back({scene.source, {}, region, {4, 30}, 4});        // 32x24 inset
+    content.images.push_back({scene.source, {}, region, {4, 30}, 4});           // 32x24 inset
     content.images.push_back({scene.source, {}, {50, 0, 40, 64}, {50, 0}, 1});  // a copied strip
     const engine::render::Readback with = scene.render(content);
     const engine::render::Readback source = scene.backend->readback(scene.source);

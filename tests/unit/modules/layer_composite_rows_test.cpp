@@ -13,7 +13,7 @@
 #include "lcg.hpp"  // tests/support
 #include "particle_kernels.hpp"
 #include "row_hook_check.hpp"  // tests/support
-#include "soft_image.hpp"  // tests/support
+#include "soft_image.hpp"      // tests/support
 
 namespace {
 
@@ -44,7 +44,8 @@ TEST(LayerCompositeRows, RowHookShadesTheBitsOfShade) {
     for (int trial = 0; trial < 12; ++trial) {
         const int scale = trial % 3 == 2 ? 1 : 2;
         const soft::SoftTexture layer = layerImage((kW + scale - 1) / scale, (kH + scale - 1) / scale, rng);
-        const soft::SoftTexture depth = ssam::testing::depthImage(kW, kH, [&](int) { return 0.05f + 0.9f * rng.unit(); });
+        const soft::SoftTexture depth =
+            ssam::testing::depthImage(kW, kH, [&](int) { return 0.05f + 0.9f * rng.unit(); });
         particles::LayerCompositeParams params;
         params.layerScale = scale;
         params.depthScale = 0.1f;

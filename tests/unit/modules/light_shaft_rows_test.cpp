@@ -15,7 +15,7 @@
 #include "lcg.hpp"  // tests/support
 #include "light_shaft_kernel.hpp"
 #include "row_hook_check.hpp"  // tests/support
-#include "soft_image.hpp"  // tests/support
+#include "soft_image.hpp"      // tests/support
 
 namespace {
 

@@ -25,7 +25,9 @@ struct Camera {
     glm::vec3 target{0.0f, 0.0f, 1.0f};
     float fovY = 1.0f;
     glm::mat4 view() const { return glm::lookAt(eye, target, glm::vec3(0, 1, 0)); }
-    glm::mat4 projection(float aspect) const { return engine::render::perspectiveReverseZ(fovY, aspect, 0.1f, 30000.0f); }
+    glm::mat4 projection(float aspect) const {
+        return engine::render::perspectiveReverseZ(fovY, aspect, 0.1f, 30000.0f);
+    }
 };
 
 // One frame; returns the colour (and keeps the targets for inspection).
@@ -33,8 +35,8 @@ struct LivingFrame {
     engine::render::Backend& backend;
     const engine::scene::MeshLibrary& library;
     int width, height;
-    engine::render::FrameTargets opaque{backend, {width, height, 1, engine::render::Format::RGBA8_UNORM,
-                                         engine::render::CompareFunc::Greater}};
+    engine::render::FrameTargets opaque{
+        backend, {width, height, 1, engine::render::Format::RGBA8_UNORM, engine::render::CompareFunc::Greater}};
     std::unique_ptr<ssam::ScreenSpaceAlphaMask> ssam = [this] {
         ssam::Config c;
         c.depthFunc = engine::render::CompareFunc::Greater;
@@ -99,8 +101,9 @@ struct LivingFrame {
             foliage.push_back(f);
         }
         ssam->render({opaque.color(), opaque.depth()}, {viewProj, kSun, foliage});
-        const engine::scene::FeatureFrame frame{backend, library, lists, opaque.color(), opaque.depth(), width, height,
-                                                view, proj, viewProj, camera.eye, kSun, time, CompareFunc::Greater};
+        const engine::scene::FeatureFrame frame{
+            backend, library, lists,    opaque.color(), opaque.depth(), width, height,
+            view,    proj,    viewProj, camera.eye,     kSun,           time,  CompareFunc::Greater};
         for (engine::scene::Feature* f : features) f->render(frame);
         for (BufferHandle b : buffers) backend.destroy(b);
         return backend.readback(opaque.color());

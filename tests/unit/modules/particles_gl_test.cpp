@@ -49,8 +49,8 @@ WallFrame wallFrame(Backend& b, const glm::mat4& viewProj, const std::vector<Ver
     const TextureHandle color = b.createTexture(t);
     t.name = "depth", t.format = Format::D32F;
     const TextureHandle depth = b.createTexture(t);
-    const BufferHandle wallBuffer = b.createBuffer({"wall", BufferKind::Vertex, wall.size() * sizeof(Vertex)},
-                                                   std::as_bytes(std::span(wall)));
+    const BufferHandle wallBuffer =
+        b.createBuffer({"wall", BufferKind::Vertex, wall.size() * sizeof(Vertex)}, std::as_bytes(std::span(wall)));
     PipelineDesc p;
     p.name = "wall";
     p.depth = DepthState::testAndWrite(CompareFunc::Greater);
@@ -75,11 +75,13 @@ Result run(Backend& b, int stride) {
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0));
     const glm::mat4 viewProj = proj * view;
     // A "tree": a wall at 5 m over the left of the view, its edge at an odd pixel.
-    const auto [color, depth] = wallFrame(b, viewProj, quad(-9.0f, -9.0f, 0.37f, 9.0f, 5.0f, {0.2f, 0.5f, 0.1f, 1.0f}, {0, 0, -1}),
-                                          {0.5f, 0.6f, 0.8f, 1.0f});
+    const auto [color, depth] =
+        wallFrame(b, viewProj, quad(-9.0f, -9.0f, 0.37f, 9.0f, 5.0f, {0.2f, 0.5f, 0.1f, 1.0f}, {0, 0, -1}),
+                  {0.5f, 0.6f, 0.8f, 1.0f});
     TextureDesc t;
     t.usage = UsageRenderTarget | UsageSampled;
-    t.name = "layer", t.format = Format::RGBA16F, t.width = (kW + stride - 1) / stride, t.height = (kH + stride - 1) / stride;
+    t.name = "layer", t.format = Format::RGBA16F, t.width = (kW + stride - 1) / stride,
+    t.height = (kH + stride - 1) / stride;
     const TextureHandle layer = b.createTexture(t);
     // Particles: one straddling the wall's edge behind it, one in front, one additive.
     std::vector<Vertex> parts;
@@ -150,14 +152,14 @@ TEST(ParticlesGl, SoftAndGlAgree) {
 Readback shafts(Backend& b) {
     const glm::mat4 proj = perspectiveReverseZ(1.0f, float(kW) / kH, 0.1f, 30000.0f);
     const glm::mat4 viewProj = proj * glm::lookAt(glm::vec3(0.0f), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0));
-    const auto [color, depth] = wallFrame(
-        b, viewProj, quad(-0.8f, -0.6f, 0.37f, 0.9f, 5.0f, glm::vec4(0.2f, 0.5f, 0.1f, 1.0f), {0, 0, -1}),
-        {0.3f, 0.4f, 0.6f, 1.0f});
+    const auto [color, depth] =
+        wallFrame(b, viewProj, quad(-0.8f, -0.6f, 0.37f, 0.9f, 5.0f, glm::vec4(0.2f, 0.5f, 0.1f, 1.0f), {0, 0, -1}),
+                  {0.3f, 0.4f, 0.6f, 1.0f});
     const ProgramHandle program = b.createProgram(lightshafts::lightShaftProgram());
     PipelineDesc p;
     p.name = "shafts";
     p.program = program;
-    p.blend[0] = {true, BlendFactor::One, BlendFactor::One, BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
+    p.blend[0] = {true,         BlendFactor::One, BlendFactor::One, BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
                   BlendOp::Add, WriteRGB};
     const PipelineHandle shaftPipeline = b.createPipeline(p);
     PassDesc shaftPass;

@@ -71,7 +71,8 @@ TEST(Reference, SortsPerPixelThroughIntersections) {
     auto sorted = createTechnique(TechniqueKind::BlendSorted, *backend, {});
     const glm::vec4 red{1, 0, 0, 0.5f}, green{0, 1, 0, 0.7f};
     std::vector<Vertex> slanted(6);
-    const glm::vec3 corners[6] = {{-1, -1, 0.2f}, {1, -1, 0.8f}, {1, 1, 0.8f}, {-1, -1, 0.2f}, {1, 1, 0.8f}, {-1, 1, 0.2f}};
+    const glm::vec3 corners[6] = {{-1, -1, 0.2f}, {1, -1, 0.8f}, {1, 1, 0.8f},
+                                  {-1, -1, 0.2f}, {1, 1, 0.8f},  {-1, 1, 0.2f}};
     for (int i = 0; i < 6; ++i) slanted[i].position = corners[i], slanted[i].color = red;
     const auto bytes = std::as_bytes(std::span(slanted));
     const BufferHandle buffer = backend->createBuffer({"slanted", BufferKind::Vertex, bytes.size()}, bytes);

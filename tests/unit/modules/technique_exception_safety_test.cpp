@@ -74,8 +74,8 @@ std::string nameOf(const ::testing::TestParamInfo<TechniqueKind>& info) {
     return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Every, TechniqueExceptionSafety, ::testing::ValuesIn(allTechniques().begin(), allTechniques().end()),
-                         nameOf);
+INSTANTIATE_TEST_SUITE_P(Every, TechniqueExceptionSafety,
+                         ::testing::ValuesIn(allTechniques().begin(), allTechniques().end()), nameOf);
 
 }  // namespace
 }  // namespace transparency::testing

@@ -19,7 +19,6 @@ using ssam::testing::Quad;
 inline constexpr int kSize = 16;
 inline const glm::vec4 kOpaqueColor{0.2f, 0.4f, 0.6f, 1.0f};
 
-
 struct TechniqueFrame {
     Backend& backend;
     engine::render::FrameTargets opaque;

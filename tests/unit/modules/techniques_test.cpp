@@ -181,8 +181,8 @@ TEST(Techniques, AlphaToCoverageCoversRoundAlphaTimesFourSamples) {
     auto backend = softBackend();
     auto technique = createTechnique(TechniqueKind::AlphaToCoverage, *backend, {});
     ASSERT_EQ(technique->opaqueSamples(), 4);
-    TechniqueFrame f(*backend, technique->opaqueSamples(), {kQuadA, kQuadB,
-                                                          {-1.0f, -1.0f, 1.0f, -0.5f, 0.1f, {0, 0, 1, 0.9f}}});
+    TechniqueFrame f(*backend, technique->opaqueSamples(),
+                     {kQuadA, kQuadB, {-1.0f, -1.0f, 1.0f, -0.5f, 0.1f, {0, 0, 1, 0.9f}}});
     const Readback r = f.run(*technique);
     const glm::vec3 opaque(kOpaqueColor);
     expectRgbNear(rgbAt(r, kOnlyA, kRow), glm::mix(opaque, {1, 0, 0}, 0.5f), 1e-6f, "only A");
@@ -222,8 +222,7 @@ TEST(Techniques, WboitMatchesThePaperFormula) {
     // RGBA16F accumulation and R16F revealage: half precision (11 significant bits).
     constexpr float kHalf = 2e-3f;
     expectRgbNear(rgbAt(r, kOnlyA, kRow), wboit({kQuadA.color}), kHalf, "only A");
-    expectRgbNear(rgbAt(r, kOnlyB, kRow), wboit({kQuadB.color}), kHalf,
-                  "only B");
+    expectRgbNear(rgbAt(r, kOnlyB, kRow), wboit({kQuadB.color}), kHalf, "only B");
     const glm::vec3 both = wboit({kQuadA.color, kQuadB.color});
     expectRgbNear(rgbAt(r, kOverlap, kRow), both, kHalf, "overlap");
     // Order independent: the same in the other submission order.
@@ -339,8 +338,8 @@ namespace {
 // KHR_materials_unlit: a batch marked unlit shows its base colour whatever the light; the
 // same batch lit by a black light is black. Checked where the foliage is opaque in the result.
 TEST(Techniques, UnlitBatchesIgnoreTheLight) {
-    for (TechniqueKind kind : {TechniqueKind::AlphaTest, TechniqueKind::Ssam, TechniqueKind::BlendSorted,
-                               TechniqueKind::Reference}) {
+    for (TechniqueKind kind :
+         {TechniqueKind::AlphaTest, TechniqueKind::Ssam, TechniqueKind::BlendSorted, TechniqueKind::Reference}) {
         const Quad opaqueGreen{-0.25f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 1.0f}};
         glm::vec3 colour[2];
         for (bool unlit : {false, true}) {

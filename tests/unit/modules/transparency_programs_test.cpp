@@ -61,13 +61,14 @@ TEST(TransparencyPrograms, FullscreenKindsRefuseMissingOrSmallInputs) {
     const ProgramHandle coverage = b->createProgram(coverageCompositeProgram());
     EXPECT_THROW(drawFullscreen(*b, resolve, WboitResolveParams{{}, good}, target), engine::Error);
     EXPECT_THROW(drawFullscreen(*b, resolve, WboitResolveParams{good, small}, target), engine::Error);
-    EXPECT_THROW(drawFullscreen(*b, coverage, CoverageCompositeParams{good, {}, {}, CoverageModel::EqualLayers}, target),
-                 engine::Error);
-    EXPECT_THROW(drawFullscreen(*b, coverage,
-                                CoverageCompositeParams{good, good, {}, CoverageModel(7)}, target),
+    EXPECT_THROW(
+        drawFullscreen(*b, coverage, CoverageCompositeParams{good, {}, {}, CoverageModel::EqualLayers}, target),
+        engine::Error);
+    EXPECT_THROW(drawFullscreen(*b, coverage, CoverageCompositeParams{good, good, {}, CoverageModel(7)}, target),
                  engine::Error);
     // Parameters of another kind.
-    EXPECT_THROW(drawFullscreen(*b, resolve, ssam::CompositeParams{good, good, {}, 0.85f, true}, target), engine::Error);
+    EXPECT_THROW(drawFullscreen(*b, resolve, ssam::CompositeParams{good, good, {}, 0.85f, true}, target),
+                 engine::Error);
     EXPECT_NO_THROW(drawFullscreen(*b, resolve, WboitResolveParams{good, good}, target));
 }
 

@@ -28,7 +28,8 @@ struct WaterScene {
     living::testing::LivingFrame frame{*backend, library, kW, kH};
     WaterScene() {
         // An opaque-alpha foliage card (a "tree") in the middle, 5 m away.
-        place(registry, addRectangle(library, "tree", -1, -1, 1, 1, 5.0f, SurfaceClass::Mask, {0.2f, 0.7f, 0.1f, 1.0f}));
+        place(registry,
+              addRectangle(library, "tree", -1, -1, 1, 1, 5.0f, SurfaceClass::Mask, {0.2f, 0.7f, 0.1f, 1.0f}));
     }
     void addPools() {
         place(registry, addRectangle(library, "pool behind", -6, 0, 6, 3, 8.0f, SurfaceClass::Blend, kWater));

@@ -14,7 +14,8 @@
 namespace wind::testing {
 
 inline engine::scene::ModelId addCardPlant(engine::scene::MeshLibrary& library, int cards = 6, float height = 4.0f,
-                                           float radius = 1.5f, int rows = 4, glm::vec4 color = glm::vec4(0.3f, 0.6f, 0.2f, 0.8f)) {
+                                           float radius = 1.5f, int rows = 4,
+                                           glm::vec4 color = glm::vec4(0.3f, 0.6f, 0.2f, 0.8f)) {
     using engine::render::Vertex;
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;

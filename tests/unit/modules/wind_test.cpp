@@ -250,7 +250,8 @@ TEST(Wind, NoWindEntityMeansRestMeshes) {
 std::vector<render::Vertex> simulate(int threads) {
     WindScene s;
     std::vector<ecs::Entity> plants;
-    for (int i = 0; i < 12; ++i) plants.push_back(s.addPlant({float(i % 4) * 2.5f - 4.0f, 0.0f, float(i / 4) * 2.5f}, 0.3f * i, 0.9f));
+    for (int i = 0; i < 12; ++i)
+        plants.push_back(s.addPlant({float(i % 4) * 2.5f - 4.0f, 0.0f, float(i / 4) * 2.5f}, 0.3f * i, 0.9f));
     s.system.attach(s.registry, 7);
     const ecs::Entity car = s.registry.create();
     s.registry.add<Transform>(car);

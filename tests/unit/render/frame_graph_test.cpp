@@ -98,7 +98,6 @@ TextureAllocator recordingAllocator(Events& events) {
     };
 }
 
-
 // --- culling -------------------------------------------------------------------------
 
 TEST(FrameGraphCulling, PassWhoseOutputNobodyReadsIsCulled) {
@@ -294,10 +293,9 @@ TEST(FrameGraphEmptyPass, SsamWithNoFoliagePresentsTheOpaqueColour) {
 TEST(FrameGraphEmptyPass, SsamWithFoliageRunsEveryPass) {
     SsamFrame frame;
     runSsamFrame(frame, /*foliageVisible=*/true, /*markAllFoliagePassesEmpty=*/true);
-    EXPECT_THAT(frame.events,
-                ElementsAre("alloc scene colour", "opaque", "alloc mask", "ssam mask", "alloc foliage colour",
-                            "ssam colour", "ssam composite", "release mask", "release foliage colour", "present",
-                            "release scene colour"));
+    EXPECT_THAT(frame.events, ElementsAre("alloc scene colour", "opaque", "alloc mask", "ssam mask",
+                                          "alloc foliage colour", "ssam colour", "ssam composite", "release mask",
+                                          "release foliage colour", "present", "release scene colour"));
     EXPECT_EQ(frame.presented, frame.opaqueTarget);
 }
 
@@ -351,8 +349,7 @@ TEST(FrameGraphErrors, InvalidHandleAndDuplicateNamesAndLateChangesAreRejected) 
     Events events;
     EXPECT_THAT(errorOf([&] { present(fg, events, "present", {FrameGraphTexture{}}); }), HasSubstr("invalid"));
     produce(fg, events, "opaque", "color");
-    EXPECT_THAT(errorOf([&] { produce(fg, events, "opaque", "color2"); }),
-                HasSubstr("already a pass named 'opaque'"));
+    EXPECT_THAT(errorOf([&] { produce(fg, events, "opaque", "color2"); }), HasSubstr("already a pass named 'opaque'"));
     fg.compile();
     EXPECT_THAT(errorOf([&] { produce(fg, events, "late", "x"); }), HasSubstr("after compile()"));
     EXPECT_THAT(errorOf([&] { fg.importTexture("late import", kDesc, 1); }), HasSubstr("after compile()"));
@@ -505,8 +502,8 @@ TEST(FrameGraphLifetime, TransientsLiveFromFirstToLastUser) {
     EXPECT_EQ(fg.lifetime(t2), (ResourceLifetime{1, 2}));
     EXPECT_EQ(fg.lifetime(t3), (ResourceLifetime{2, 3}));
     EXPECT_FALSE(fg.lifetime(unused).has_value());
-    EXPECT_THAT(events, ElementsAre("alloc t1", "A", "alloc t2", "B", "alloc t3", "C", "release t2", "D",
-                                    "release t1", "release t3"));
+    EXPECT_THAT(events, ElementsAre("alloc t1", "A", "alloc t2", "B", "alloc t3", "C", "release t2", "D", "release t1",
+                                    "release t3"));
 }
 
 TEST(FrameGraphLifetime, QueriesNeedCompile) {
@@ -555,7 +552,7 @@ TEST(FrameGraphGraphviz, DrawsPassesTexturesAndEdgesWithCulledGrey) {
     EXPECT_THAT(text, HasSubstr("R1_1 -> P2;"));
     EXPECT_THAT(text, HasSubstr("P2 -> R0_1;"));
     EXPECT_THAT(text, HasSubstr("P1 -> R2_1 [color=gray];"));
-    EXPECT_THAT(text, testing::Not(HasSubstr("R1_0")));     // a created texture's empty version 0
+    EXPECT_THAT(text, testing::Not(HasSubstr("R1_0")));       // a created texture's empty version 0
     EXPECT_THAT(text, testing::Not(HasSubstr("unchanged")));  // culled is not empty: nothing to link
     EXPECT_THAT(text, testing::EndsWith("}\n"));
 }
@@ -564,7 +561,7 @@ TEST(FrameGraphGraphviz, LinksAVersionAnEmptyPassWroteToTheContentsItHolds) {
     FrameGraph fg;
     Events events;
     const FrameGraphTexture opaque = produce(fg, events, "opaque", "color");  // P0, R0_1
-    const Output& composite = fg.addPass<Output>(                              // P1, R0_2
+    const Output& composite = fg.addPass<Output>(                             // P1, R0_2
         "composite",
         [&](FrameGraph::Builder& builder, Output& out) {
             out.texture = builder.write(builder.read(opaque));

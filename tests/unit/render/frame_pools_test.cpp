@@ -79,7 +79,10 @@ void runFrame(TransientTexturePool& pool, std::uint32_t width) {
         FrameGraphTexture t;
     };
     const Data& w = graph.addPass<Data>(
-        "write", [&](FrameGraph::Builder& b, Data& d) { d.t = b.write(b.create("t", {width, 8, std::uint32_t(Format::RGBA8_UNORM), 1})); },
+        "write",
+        [&](FrameGraph::Builder& b, Data& d) {
+            d.t = b.write(b.create("t", {width, 8, std::uint32_t(Format::RGBA8_UNORM), 1}));
+        },
         [](const FrameGraph::Resources&, const Data&) {});
     graph.addPass<Data>(
         "present",

@@ -13,9 +13,9 @@
 namespace engine::render {
 namespace {
 
-constexpr Format kColorFormats[] = {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::R8_UNORM, Format::RG8_UNORM,
-                                    Format::RGBA16F,     Format::RG16F,      Format::R16F,     Format::RGBA32F,
-                                    Format::R32F};
+constexpr Format kColorFormats[] = {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::R8_UNORM,
+                                    Format::RG8_UNORM,   Format::RGBA16F,    Format::RG16F,
+                                    Format::R16F,        Format::RGBA32F,    Format::R32F};
 
 struct RandomState {
     std::mt19937 rng{20101005u};
@@ -107,8 +107,8 @@ void expectResolvedByTheRules(const PipelineDesc& p, const DrawTargets& t, const
         const unsigned present = channels == 1 ? 0x1u : channels == 2 ? 0x3u : 0xFu;
         EXPECT_EQ(s.blend[i].writeMask, p.blend[i].writeMask & present);
         const BlendState& b = p.blend[i];
-        const bool plain = !b.enabled || (plainHalf(b.srcRgb, b.dstRgb, b.opRgb) &&
-                                          plainHalf(b.srcAlpha, b.dstAlpha, b.opAlpha));
+        const bool plain =
+            !b.enabled || (plainHalf(b.srcRgb, b.dstRgb, b.opRgb) && plainHalf(b.srcAlpha, b.dstAlpha, b.opAlpha));
         EXPECT_EQ(s.blendNeeded[i], !plain);
         EXPECT_EQ(s.blend[i].srcRgb, b.srcRgb);
         EXPECT_EQ(s.blend[i].opAlpha, b.opAlpha);

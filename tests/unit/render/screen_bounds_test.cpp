@@ -16,7 +16,8 @@ TEST(ScreenRegion, ProjectsBoundsToPixelsWithMargin) {
 
 TEST(ScreenRegion, CullsBoundsOutsideTheViewVolume) {
     EXPECT_FALSE(engine::render::screenBounds({{2, 2, 0.5f}, {3, 3, 0.5f}}, glm::mat4(1.0f), 64, 64));
-    EXPECT_FALSE(engine::render::screenBounds({{-1, -1, -2}, {1, 1, -1}}, glm::mat4(1.0f), 64, 64));  // z < 0: beyond near/far
+    EXPECT_FALSE(
+        engine::render::screenBounds({{-1, -1, -2}, {1, 1, -1}}, glm::mat4(1.0f), 64, 64));  // z < 0: beyond near/far
 }
 
 TEST(ScreenRegion, CrossingTheCameraPlaneTakesTheWholeScreen) {

@@ -77,10 +77,10 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
                                 const AlphaSampler sampler(t, s);
                                 ASSERT_TRUE(sampler.valid());
                                 simdConfigurations += sampler.simd4();
-                                SCOPED_TRACE(testing::Message() << size[0] << "x" << size[1] << " levels " << levels
-                                                                << " filter " << filter << " address " << u << v
-                                                                << " sRGB " << (format == Format::RGBA8_SRGB)
-                                                                << " copy " << sampledOnly);
+                                SCOPED_TRACE(testing::Message()
+                                             << size[0] << "x" << size[1] << " levels " << levels << " filter "
+                                             << filter << " address " << u << v << " sRGB "
+                                             << (format == Format::RGBA8_SRGB) << " copy " << sampledOnly);
                                 for (int it = 0; it < 300; ++it) {
                                     alignas(16) float uu[4], vv[4], dudx[4], dvdx[4], dudy[4], dvdy[4];
                                     const float scale = std::exp2(rng.range(-8.0f, 8.0f));
@@ -88,7 +88,8 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
                                         uu[i] = rng.range(-3.0f, 3.0f);
                                         vv[i] = rng.range(-3.0f, 3.0f);
                                         if (it % 7 == 0) uu[i] = std::floor(uu[i] * float(size[0])) / float(size[0]);
-                                        if (it % 11 == 0) vv[i] = (std::floor(vv[i] * float(size[1])) + 0.5f) / float(size[1]);
+                                        if (it % 11 == 0)
+                                            vv[i] = (std::floor(vv[i] * float(size[1])) + 0.5f) / float(size[1]);
                                         dudx[i] = rng.range(-0.3f, 0.3f) * scale;
                                         dvdx[i] = rng.range(-0.3f, 0.3f) * scale;
                                         dudy[i] = rng.range(-0.3f, 0.3f) * scale;
@@ -116,7 +117,8 @@ TEST(SoftAlphaSampler, MatchesTheGeneralSamplerBitForBit) {
                                         if (!((lanes >> i) & 1u)) continue;
                                         ASSERT_TRUE(sameBits(alpha[i], general[i].a)) << "lane " << i;
                                         for (int c = 0; c < 4; ++c)
-                                            ASSERT_TRUE(sameBits(rgba[i][c], general[i][c])) << "lane " << i << " channel " << c;
+                                            ASSERT_TRUE(sameBits(rgba[i][c], general[i][c]))
+                                                << "lane " << i << " channel " << c;
                                     }
 #endif
                                 }

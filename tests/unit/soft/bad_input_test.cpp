@@ -95,12 +95,24 @@ TEST_F(SoftBadInput, TextureData) {
 }
 
 TEST_F(SoftBadInput, Buffers) {
-    expectError([&] { gfx->createBuffer({"vb", render::BufferKind::Vertex, 0}, {}); }, "size 0 is not a positive multiple of 48");
-    expectError([&] { gfx->createBuffer({"vb", render::BufferKind::Vertex, 50}, {}); }, "not a positive multiple of 48");
+    expectError(
+        [&] {
+            gfx->createBuffer({"vb", render::BufferKind::Vertex, 0}, {});
+        },
+        "size 0 is not a positive multiple of 48");
+    expectError(
+        [&] {
+            gfx->createBuffer({"vb", render::BufferKind::Vertex, 50}, {});
+        },
+        "not a positive multiple of 48");
     expectError([&] { gfx->createBuffer({"ib", render::BufferKind::Index, 6}, {}); }, "multiple of 4");
     expectError([&] { gfx->createBuffer({"inst", render::BufferKind::Instance, 81}, {}); }, "multiple of 80");
     std::vector<std::byte> bytes(40);
-    expectError([&] { gfx->createBuffer({"ib", render::BufferKind::Index, 8}, bytes); }, "40 bytes given for a 8-byte buffer");
+    expectError(
+        [&] {
+            gfx->createBuffer({"ib", render::BufferKind::Index, 8}, bytes);
+        },
+        "40 bytes given for a 8-byte buffer");
     const render::BufferHandle ib = gfx->createBuffer({"ib", render::BufferKind::Index, 8}, {});
     expectError([&] { gfx->updateBuffer(ib, 4, bytes); }, "overruns");
     expectError([&] { gfx->updateBuffer(ib, 9, std::span<const std::byte>(bytes).first(0)); }, "overruns");
@@ -158,9 +170,13 @@ TEST_F(SoftBadInput, PassAttachments) {
     expectError([&] { gfx->beginPass(onePass(s)); }, "'sampledOnly' is not a render target");
     expectError([&] { gfx->beginPass(onePass(depth)); }, "depth texture 'depth' bound as colour");
     expectError([&] { gfx->beginPass(onePass(a, a)); }, "'a' bound as depth is RGBA8_UNORM");
-    expectError([&] { render::PassDesc empty;
-        empty.name = "empty";
-        gfx->beginPass(empty); }, "pass 'empty' has no attachments");
+    expectError(
+        [&] {
+            render::PassDesc empty;
+            empty.name = "empty";
+            gfx->beginPass(empty);
+        },
+        "pass 'empty' has no attachments");
     // A depth-only pass is fine.
     render::PassDesc depthOnly;
     depthOnly.name = "depthOnly";
@@ -272,7 +288,8 @@ TEST_F(SoftBadInput, CompositeInputs) {
     const render::TextureHandle out = makeTarget(*gfx, 8, 8);
     const render::TextureHandle small = makeTarget(*gfx, 4, 4, Format::RGBA8_UNORM, 1, "small");
     const render::TextureHandle full = makeTarget(*gfx, 8, 8, Format::RGBA8_UNORM, 1, "full");
-    const render::PipelineHandle p = gfx->createPipeline(pipelineDesc("composite", gfx->createProgram(ssam::compositeProgram())));
+    const render::PipelineHandle p =
+        gfx->createPipeline(pipelineDesc("composite", gfx->createProgram(ssam::compositeProgram())));
     render::DrawDesc d;
     d.pipeline = p;
     gfx->beginPass(onePass(out));

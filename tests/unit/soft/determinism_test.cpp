@@ -104,8 +104,8 @@ void expectIdentical(const Images& a, const Images& b, const std::string& what) 
 }
 
 const SoftOptions kVariants[] = {
-    {.threads = 2, .tileSize = 64},  {.threads = 2, .tileSize = 8},  {.threads = 1, .tileSize = 16},
-    {.threads = 0, .tileSize = 24},  {.threads = 2, .tileSize = 1024}, {.threads = 2, .tileSize = 32},
+    {.threads = 2, .tileSize = 64}, {.threads = 2, .tileSize = 8},    {.threads = 1, .tileSize = 16},
+    {.threads = 0, .tileSize = 24}, {.threads = 2, .tileSize = 1024}, {.threads = 2, .tileSize = 32},
 };
 
 TEST(SoftDeterminism, SameImagesForAnyThreadCountAndTileSize) {

@@ -64,12 +64,9 @@ std::uint16_t storedHalf(Lcg& rng) {
                                              0x3C01, 0x6800, 0x6801, 0x7BFF, 0xFBFF, 0x7C00, 0xFC00,
                                              0x7C01, 0x7E00, 0xFE00, 0x7FFF, 0xFFFF, 0xBC00, 0x4000};
     switch (rng.next() % 4) {
-        case 0:
-            return kSpecial[rng.next() % (sizeof kSpecial / sizeof kSpecial[0])];
-        case 1:
-            return std::uint16_t(rng.next());
-        default:
-            return render::encodeHalf(rng.range(0.0f, 3.0f));
+        case 0: return kSpecial[rng.next() % (sizeof kSpecial / sizeof kSpecial[0])];
+        case 1: return std::uint16_t(rng.next());
+        default: return render::encodeHalf(rng.range(0.0f, 3.0f));
     }
 }
 
@@ -202,7 +199,8 @@ MaskRun runMaskScene(const MaskSetup& setup, const std::vector<HalfImage>& initi
     b.beginPass(pre);
     render::PipelineDesc dp;
     dp.depth = render::DepthState::testAndWrite();
-    auto d = meshDraw(b.createPipeline(dp), render::FlatParams{viewProj(), glm::vec4(1.0f)}, opaqueVb, std::uint32_t(opaque.size()));
+    auto d = meshDraw(b.createPipeline(dp), render::FlatParams{viewProj(), glm::vec4(1.0f)}, opaqueVb,
+                      std::uint32_t(opaque.size()));
     b.draw(d);
     b.endPass();
 
@@ -350,8 +348,9 @@ render::Readback runComposite(const CompositeSetup& s, bool general, std::uint64
         maskAdd = texture(b, "maskAdd", Format::R16F, true, bytesOf(addHalves.values));
     }
     render::PipelineDesc pd;
-    pd.program = s.program == CompositeKind::Ssam ? render::ProgramRef(b.createProgram(ssam::compositeProgram()))
-                                                  : render::ProgramRef(b.createProgram(transparency::coverageCompositeProgram()));
+    pd.program = s.program == CompositeKind::Ssam
+                     ? render::ProgramRef(b.createProgram(ssam::compositeProgram()))
+                     : render::ProgramRef(b.createProgram(transparency::coverageCompositeProgram()));
     pd.blend[0] = {true,
                    render::BlendFactor::SrcAlpha,
                    render::BlendFactor::InvSrcAlpha,
@@ -370,8 +369,7 @@ render::Readback runComposite(const CompositeSetup& s, bool general, std::uint64
         d.pipeline = pipeline;
         if (s.program == CompositeKind::Ssam)
             d.params = ssam::CompositeParams{foliage, mask, maskAdd, k == 0 ? 0.85f : 0.3f, k == 0};
-        else
-            d.params = transparency::CoverageCompositeParams{foliage, mask, maskAdd, s.model};
+        else d.params = transparency::CoverageCompositeParams{foliage, mask, maskAdd, s.model};
         if (k == 1) d.scissor = render::Rect{5, 7, 41, 30};
         b.draw(d);
     }

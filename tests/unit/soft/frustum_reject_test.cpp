@@ -40,12 +40,12 @@ TEST(FrustumReject, KeepsTrianglesThatReachTheViewportOrItsEdgePixels) {
 }
 
 TEST(FrustumReject, RejectsTrianglesBeyondOnePlane) {
-    EXPECT_TRUE(outsideOnePlane(at(1.1f, 0.0f), at(2.0f, 0.0f), at(2.0f, 0.5f), kViewport));      // right
-    EXPECT_TRUE(outsideOnePlane(at(-1.1f, 0.0f), at(-2.0f, 0.0f), at(-2.0f, 0.5f), kViewport));   // left
-    EXPECT_TRUE(outsideOnePlane(at(0.0f, 1.1f), at(0.5f, 2.0f), at(-0.5f, 3.0f), kViewport));     // top
-    EXPECT_TRUE(outsideOnePlane(at(0.0f, -1.1f), at(0.5f, -2.0f), at(-0.5f, -3.0f), kViewport));  // bottom
-    EXPECT_TRUE(outsideOnePlane(at(0, 0, -0.1f), at(1, 0, -0.2f), at(0, 1, -0.3f), kViewport));   // z < 0
-    EXPECT_TRUE(outsideOnePlane(at(0, 0, 1.1f), at(1, 0, 1.2f), at(0, 1, 1.3f), kViewport));      // z > w
+    EXPECT_TRUE(outsideOnePlane(at(1.1f, 0.0f), at(2.0f, 0.0f), at(2.0f, 0.5f), kViewport));           // right
+    EXPECT_TRUE(outsideOnePlane(at(-1.1f, 0.0f), at(-2.0f, 0.0f), at(-2.0f, 0.5f), kViewport));        // left
+    EXPECT_TRUE(outsideOnePlane(at(0.0f, 1.1f), at(0.5f, 2.0f), at(-0.5f, 3.0f), kViewport));          // top
+    EXPECT_TRUE(outsideOnePlane(at(0.0f, -1.1f), at(0.5f, -2.0f), at(-0.5f, -3.0f), kViewport));       // bottom
+    EXPECT_TRUE(outsideOnePlane(at(0, 0, -0.1f), at(1, 0, -0.2f), at(0, 1, -0.3f), kViewport));        // z < 0
+    EXPECT_TRUE(outsideOnePlane(at(0, 0, 1.1f), at(1, 0, 1.2f), at(0, 1, 1.3f), kViewport));           // z > w
     EXPECT_TRUE(outsideOnePlane(at(0, 0, 0, -1), at(0.1f, 0, 0, -2), at(0, 0.1f, 0, -3), kViewport));  // behind
 }
 
@@ -68,7 +68,8 @@ TEST(FrustumReject, AnInstanceRejectedWholeHasEveryTriangleRejected) {
     for (int i = 0; i < 4000; ++i) {
         // Instances scattered around the camera, many just beyond a side of the view.
         const glm::vec3 place(unit(random) * 60.0f, unit(random) * 10.0f, unit(random) * 60.0f);
-        const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), place), glm::vec3(0.5f + unit(random) * 0.4f));
+        const glm::mat4 model =
+            glm::scale(glm::translate(glm::mat4(1.0f), place), glm::vec3(0.5f + unit(random) * 0.4f));
         const glm::mat4 mvp = projection * view * model;
         if (!instanceOutsideOnePlane(mvp, bounds, kViewport)) {
             ++kept;

@@ -55,8 +55,8 @@ struct Scene {
         std::vector<render::Instance> two(2);
         two[1].model = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, -0.2f, -0.5f));
         two[1].tint = {0.5f, 1.0f, 0.75f, 1.0f};
-        instances = gfx.createBuffer(
-            {"instances", render::BufferKind::Instance, two.size() * sizeof(render::Instance)}, bytesOf(two));
+        instances = gfx.createBuffer({"instances", render::BufferKind::Instance, two.size() * sizeof(render::Instance)},
+                                     bytesOf(two));
         render::PipelineDesc desc = pipelineDesc("flat");
         desc.depth.test = true;
         desc.depth.write = true;
@@ -125,8 +125,9 @@ constexpr std::uint64_t kDrawTriangles = 2ull * kTriangles;  // two instances
 
 TEST(GeometryReuse, TheSameDrawInTheNextPassTakesItsSetUp) {
     // Another colour (params the set-up does not read) and other targets of the same size.
-    expectReuse(kDrawTriangles, kOneDraw, kNothing,
-                [](Scene& s) { return std::vector<render::DrawDesc>{s.draw({0.5f, 0.25f, 1.0f, 1.0f})}; });
+    expectReuse(kDrawTriangles, kOneDraw, kNothing, [](Scene& s) {
+        return std::vector<render::DrawDesc>{s.draw({0.5f, 0.25f, 1.0f, 1.0f})};
+    });
 }
 
 TEST(GeometryReuse, ADrawAtAnotherIndexIsShadedAsThatDraw) {
@@ -147,11 +148,14 @@ TEST(GeometryReuse, EachKeptDrawIsTakenOnce) {
 
 TEST(GeometryReuse, OnlyTheLastPassIsKept) {
     // first pass: the draw; a pass between of other geometry; second pass: the draw again.
-    expectReuse(0, kOneDraw, [](Scene& s) {
-        render::DrawDesc other = s.draw();
-        other.instanceCount = 1;
-        s.pass(s.second, s.depthSecond, {other});
-    }, kOneDraw);
+    expectReuse(
+        0, kOneDraw,
+        [](Scene& s) {
+            render::DrawDesc other = s.draw();
+            other.instanceCount = 1;
+            s.pass(s.second, s.depthSecond, {other});
+        },
+        kOneDraw);
 }
 
 // What the set-up reads, changed between the passes: nothing may be reused.
@@ -215,7 +219,10 @@ const Change kChanges[] = {
      }},
     {"first_index", kNothing, [](render::DrawDesc& d, Scene&) { d.first = 3, d.count -= 3; }},
     {"instance_count", kNothing, [](render::DrawDesc& d, Scene&) { d.instanceCount = 1; }},
-    {"scissor", kNothing, [](render::DrawDesc& d, Scene&) { d.scissor = render::Rect{8, 8, 40, 40}; }},
+    {"scissor", kNothing,
+     [](render::DrawDesc& d, Scene&) {
+         d.scissor = render::Rect{8, 8, 40, 40};
+     }},
     {"culling", kNothing, [](render::DrawDesc& d, Scene& s) { d.pipeline = s.flatCulled; }},
 };
 

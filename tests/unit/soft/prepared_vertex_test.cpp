@@ -41,7 +41,7 @@ glm::vec4 position(Lcg& rng) {
     auto u = [&](float lo, float hi) { return lo + (hi - lo) * rng.unit(); };
     const float w = u(0.5f, 20.0f);
     switch (rng.next() % 16) {
-        case 0: return {u(-3.0f, 3.0f) * w, u(-3.0f, 3.0f) * w, u(0.0f, 1.0f) * w, w};  // beyond a side
+        case 0: return {u(-3.0f, 3.0f) * w, u(-3.0f, 3.0f) * w, u(0.0f, 1.0f) * w, w};   // beyond a side
         case 1: return {u(-1.0f, 1.0f) * w, u(-1.0f, 1.0f) * w, u(-0.5f, 0.0f) * w, w};  // behind z = 0
         case 2: return {u(-1.0f, 1.0f) * w, u(-1.0f, 1.0f) * w, u(1.0f, 1.5f) * w, w};   // beyond z = w
         case 3: return {u(-1.0f, 1.0f), u(-1.0f, 1.0f), u(0.0f, 1.0f), rng.next() % 2 ? 0.0f : -u(0.1f, 2.0f)};

@@ -54,7 +54,7 @@ TEST(SoftBackend, CulledAndDepthRejectedWorkIsNotShaded) {
     const render::PipelineHandle culled = gfx->createPipeline(desc);
     gfx->beginPass(onePass(t, z));
     gfx->draw(flatDraw(p, nearQuad, 6));
-    gfx->draw(flatDraw(p, farQuad, 6));     // behind: every pixel fails the depth test
+    gfx->draw(flatDraw(p, farQuad, 6));  // behind: every pixel fails the depth test
     gfx->draw(flatDraw(culled, nearQuad, 6));
     gfx->endPass();
     const SoftStats s = gfx->stats();
@@ -149,7 +149,8 @@ TEST(SoftBackend, ClearAndReadbackEveryFormat) {
         EXPECT_EQ(r.format, k.format);
         ASSERT_EQ(r.channels, k.channels) << formatName(k.format);
         ASSERT_EQ(r.values.size(), std::size_t(3 * 2 * k.channels));
-        for (int c = 0; c < k.channels; ++c) EXPECT_EQ(r.at(2, 1, c), k.expected[c]) << formatName(k.format) << " " << c;
+        for (int c = 0; c < k.channels; ++c)
+            EXPECT_EQ(r.at(2, 1, c), k.expected[c]) << formatName(k.format) << " " << c;
     }
     const render::TextureHandle z = makeTarget(*gfx, 2, 2, Format::D32F);
     render::PassDesc p;

@@ -89,7 +89,8 @@ std::vector<render::Vertex> randomTriangles(Lcg& rng, int count, float maxSize, 
         for (int k = 0; k < 3; ++k) {
             render::Vertex vx;
             const float z = rng.range(0.05f, 0.95f);
-            vx.position = {cx + rng.range(-size, size), cy + rng.range(-size, size), perspective ? -1.0f - 4.0f * z : z};
+            vx.position = {cx + rng.range(-size, size), cy + rng.range(-size, size),
+                           perspective ? -1.0f - 4.0f * z : z};
             vx.normal = glm::normalize(glm::vec3(rng.range(-1, 1), rng.range(-1, 1), 0.5f));
             vx.uv = {rng.range(-1.0f, 2.0f), rng.range(-1.0f, 2.0f)};
             vx.color = {rng.unit(), rng.unit(), rng.unit(), rng.range(-0.1f, 1.1f)};
@@ -228,8 +229,13 @@ void sceneBlendMatrix(render::Backend& b, Hasher& h) {
             render::PipelineDesc pd;
             pd.blendConstant = {0.25f, 0.5f, 0.75f, 0.6f};
             for (int i = 0; i < 4; ++i) {
-                pd.blend[i] = {true, s, d, op, render::kAllBlendFactors[(int(s) + i) % 15],
-                               render::kAllBlendFactors[(int(d) + 2 * i) % 15], render::kAllBlendOps[(int(op) + i) % 5],
+                pd.blend[i] = {true,
+                               s,
+                               d,
+                               op,
+                               render::kAllBlendFactors[(int(s) + i) % 15],
+                               render::kAllBlendFactors[(int(d) + 2 * i) % 15],
+                               render::kAllBlendOps[(int(op) + i) % 5],
                                std::uint8_t(15 - ((int(s) * 3 + i) % 4 == 0 ? 1 << (int(d) % 4) : 0))};
             }
             const auto p = b.createPipeline(pd);
@@ -256,7 +262,8 @@ void scenePresetsSmallFormats(render::Backend& b, Hasher& h) {
     for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
     const auto vb = vertexBuffer(b, randomTriangles(rng, 500, 0.4f, false));
     const render::BlendState presets[] = {render::BlendState::opaque(), render::BlendState::alphaOver(),
-                                          render::BlendState::premultipliedOver(), render::BlendState::maxRgbAddAlpha()};
+                                          render::BlendState::premultipliedOver(),
+                                          render::BlendState::maxRgbAddAlpha()};
     render::PassDesc pass;
     pass.name = "small";
     for (int i = 0; i < 4; ++i) pass.color[i] = {targets[i], render::LoadOp::Clear, glm::vec4(0.25f)};
@@ -328,7 +335,8 @@ void sceneComposite(render::Backend& b, Hasher& h) {
     pd.blend[1] = render::BlendState::maxRgbAddAlpha();
     pd.blend[2] = render::BlendState::maxRgbAddAlpha();
     b.beginPass(pre);
-    drawTriangles(b, b.createPipeline(pd), vb, 600, render::FlatParams{glm::mat4(1.0f), glm::vec4(0.9f, 0.6f, 0.3f, 0.4f)});
+    drawTriangles(b, b.createPipeline(pd), vb, 600,
+                  render::FlatParams{glm::mat4(1.0f), glm::vec4(0.9f, 0.6f, 0.3f, 0.4f)});
     b.endPass();
     render::PassDesc comp;
     comp.name = "composite";
@@ -339,7 +347,8 @@ void sceneComposite(render::Backend& b, Hasher& h) {
     const auto cp = b.createPipeline(cd);
     b.beginPass(comp);
     for (int i = 0; i < 2; ++i) {
-        auto d = fullscreenDraw(cp, ssam::CompositeParams{foliage, mask, i == 1 ? maskAdd : render::TextureHandle{}, 0.85f, i == 0});
+        auto d = fullscreenDraw(
+            cp, ssam::CompositeParams{foliage, mask, i == 1 ? maskAdd : render::TextureHandle{}, 0.85f, i == 0});
         d.scissor = render::Rect{10 + 40 * i, 5, 120, 130};
         b.draw(d);
     }
@@ -357,8 +366,8 @@ void sceneTinyInstanced(render::Backend& b, Hasher& h) {
         inst[i].model = glm::translate(glm::mat4(1.0f), glm::vec3(0.05f * i, -0.03f * i, 0.0f));
         inst[i].tint = {1.0f - 0.2f * i, 0.5f, 0.2f * i, 1.0f};
     }
-    const auto ib = b.createBuffer({"inst", render::BufferKind::Instance, inst.size() * sizeof(render::Instance)},
-                                   bytesOf(inst));
+    const auto ib =
+        b.createBuffer({"inst", render::BufferKind::Instance, inst.size() * sizeof(render::Instance)}, bytesOf(inst));
     render::PipelineDesc pd;
     pd.depth = render::DepthState::testAndWrite(render::CompareFunc::LessEqual);
     pd.raster = {render::CullMode::Back, render::Winding::Clockwise};
@@ -388,8 +397,10 @@ void sceneBigQuads(render::Backend& b, Hasher& h) {
     const auto depth = target(b, Format::D32F);
     const auto tex = noiseTexture(b, Format::RGBA8_UNORM, render::AlphaMode::Straight);
     std::vector<render::Vertex> quads;
-    const float rects[][5] = {{-1.0f, -1.0f, 1.0f, 1.0f, 0.9f}, {-0.93f, -0.71f, 0.77f, 0.97f, 0.6f},
-                              {-0.3f, -1.0f, 1.0f, 0.4f, 0.7f}, {-1.0f, -0.5f, 0.51f, 0.87f, 0.3f}};
+    const float rects[][5] = {{-1.0f, -1.0f, 1.0f, 1.0f, 0.9f},
+                              {-0.93f, -0.71f, 0.77f, 0.97f, 0.6f},
+                              {-0.3f, -1.0f, 1.0f, 0.4f, 0.7f},
+                              {-1.0f, -0.5f, 0.51f, 0.87f, 0.3f}};
     for (const auto& r : rects) {
         render::Vertex v[4];
         const float xy[4][2] = {{r[0], r[1]}, {r[2], r[1]}, {r[2], r[3]}, {r[0], r[3]}};
@@ -419,7 +430,8 @@ void sceneBigQuads(render::Backend& b, Hasher& h) {
     pass.depth = {depth, render::LoadOp::Clear, 1.0f};
     b.beginPass(pass);
     pd.depth = render::DepthState::off();
-    drawTriangles(b, b.createPipeline(pd), vb, 6, render::FlatParams{glm::mat4(1.0f), glm::vec4(0.8f, 0.6f, 0.4f, 1.0f)});
+    drawTriangles(b, b.createPipeline(pd), vb, 6,
+                  render::FlatParams{glm::mat4(1.0f), glm::vec4(0.8f, 0.6f, 0.4f, 1.0f)});
     pd.blend[0] = pd.blend[1] = render::BlendState::alphaOver();
     render::DrawDesc d;
     d.pipeline = b.createPipeline(pd);
@@ -468,7 +480,8 @@ void sceneClipping(render::Backend& b, Hasher& h) {
     pass.color[0] = {color, render::LoadOp::Clear, glm::vec4(0.0f)};
     pass.depth = {depth, render::LoadOp::Clear, 1.0f};
     b.beginPass(pass);
-    drawTriangles(b, b.createPipeline(pd), vb, std::uint32_t(tris.size()), render::FlatParams{perspectiveViewProj(), glm::vec4(1.0f)});
+    drawTriangles(b, b.createPipeline(pd), vb, std::uint32_t(tris.size()),
+                  render::FlatParams{perspectiveViewProj(), glm::vec4(1.0f)});
     b.endPass();
     h.readback(b.readback(color));
     h.readback(b.readback(depth));
@@ -512,16 +525,16 @@ void sceneConstantColour(render::Backend& b, Hasher& h) {
          render::BlendFactor::InvConstantAlpha, render::BlendFactor::SrcAlpha, render::BlendOp::Min,
          render::WriteR | render::WriteA},
     };
-    const glm::vec4 colors[] = {{0.9f, 0.5f, 0.1f, 0.7f}, {1.3f, -0.2f, 0.5f, 0.35f}, {-0.0f, 0.25f, 0.75f, 1.0f},
-                                {0.3f, 0.3f, 0.3f, 0.2f}};
+    const glm::vec4 colors[] = {
+        {0.9f, 0.5f, 0.1f, 0.7f}, {1.3f, -0.2f, 0.5f, 0.35f}, {-0.0f, 0.25f, 0.75f, 1.0f}, {0.3f, 0.3f, 0.3f, 0.2f}};
     int drawn = 0;
     for (int k = 0; k < 7; ++k) {
         for (int a = 0; a < 3; ++a) {
             render::PipelineDesc pd;
             pd.blendConstant = {0.1f, 0.6f, 0.3f, 0.45f};
             for (int i = 0; i < 3; ++i) pd.blend[i] = blends[(k + i) % 7];
-            pd.depth = a == 1 ? render::DepthState::testAndWrite(render::CompareFunc::LessEqual)
-                              : render::DepthState::off();
+            pd.depth =
+                a == 1 ? render::DepthState::testAndWrite(render::CompareFunc::LessEqual) : render::DepthState::off();
             if (a == 2) {
                 const render::AlphaFailMode modes[] = {render::AlphaFailMode::Keep, render::AlphaFailMode::FbOnly,
                                                        render::AlphaFailMode::ZbOnly, render::AlphaFailMode::RgbOnly};

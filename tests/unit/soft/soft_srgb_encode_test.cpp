@@ -40,10 +40,11 @@ TEST(SoftSrgbEncode, TableMatchesExactCurve) {
     for (int k = 1; k < 256; ++k) {
         std::uint32_t step;
         std::memcpy(&step, &tables.threshold[k], sizeof step);
-        for (std::uint32_t b = step - std::min<std::uint32_t>(step, 4096); b <= std::min(kOne, step + 4096); ++b) check(b);
+        for (std::uint32_t b = step - std::min<std::uint32_t>(step, 4096); b <= std::min(kOne, step + 4096); ++b)
+            check(b);
     }
-    for (std::uint32_t b : {0u, 1u, 0x007FFFFFu, 0x00800000u, kOne, 0x40000000u, 0x7F7FFFFFu, 0x7F800000u, 0x7FC00000u,
-                            0x7FFFFFFFu})
+    for (std::uint32_t b :
+         {0u, 1u, 0x007FFFFFu, 0x00800000u, kOne, 0x40000000u, 0x7F7FFFFFu, 0x7F800000u, 0x7FC00000u, 0x7FFFFFFFu})
         check(b);
     EXPECT_EQ(mismatches, 0);
 }

@@ -108,8 +108,15 @@ TEST(SurfaceShade4, PremultipliedTextureMatchesShadeSampled) {
 TEST(SurfaceShade4, EncodesMatchTheScalarEncodes) {
     using raster::encodeSrgb8x4;
     using raster::encodeUnorm8x4;
-    std::vector<float> values = {0.0f, -0.0f, 1.0f, std::nextafter(1.0f, 0.0f), 1.5f, -1.0f, 1.0e-40f,
-                                 std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+    std::vector<float> values = {0.0f,
+                                 -0.0f,
+                                 1.0f,
+                                 std::nextafter(1.0f, 0.0f),
+                                 1.5f,
+                                 -1.0f,
+                                 1.0e-40f,
+                                 std::numeric_limits<float>::quiet_NaN(),
+                                 std::numeric_limits<float>::infinity(),
                                  -std::numeric_limits<float>::infinity()};
     Lcg rng{15};
     for (int i = 0; i < 200000; ++i) values.push_back(uniform(rng, -0.5f, 1.5f));

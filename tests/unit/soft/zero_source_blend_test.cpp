@@ -75,7 +75,7 @@ TEST(ZeroSourceBlend, WhereItIsSkippedItChangesNoByte) {
 
 TEST(ZeroSourceBlend, TheCompositesBlendsAreSkippedAndOthersAreNot) {
     EXPECT_TRUE(zeroSourceKeeps(Format::RGBA8_SRGB, BlendState::premultipliedOver()));  // the particle layer
-    EXPECT_TRUE(zeroSourceKeeps(Format::RGBA8_UNORM, BlendState::maxRgbAddAlpha()));   // SSAM's mask
+    EXPECT_TRUE(zeroSourceKeeps(Format::RGBA8_UNORM, BlendState::maxRgbAddAlpha()));    // SSAM's mask
     EXPECT_TRUE(zeroSourceKeeps(Format::RGBA8_SRGB, BlendState::alphaOver()));
     // A float target keeps -0 and NaN as they are only where the source adds nothing: not skipped.
     EXPECT_FALSE(zeroSourceKeeps(Format::RGBA16F, BlendState::premultipliedOver()));

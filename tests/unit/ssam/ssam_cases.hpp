@@ -108,7 +108,7 @@ TYPED_TEST_P(SsamCases, ColourPassAlphaTestsAndWritesFoliageDepth) {
     const Readback foliage = f.backend->readback(ssam.intermediates().foliage);
     const Readback depth = f.backend->readback(f.opaque.depth());
     const glm::vec4 clear = ssam::Config{}.foliageClearColor;
-    EXPECT_FLOAT_EQ(foliage.at(kOverlap, 4, 0), 1.0f);  // A's red
+    EXPECT_FLOAT_EQ(foliage.at(kOverlap, 4, 0), 1.0f);       // A's red
     EXPECT_FLOAT_EQ(foliage.at(kOnlyB, 4, 1), q8(clear.g));  // B rejected: the clear colour shows
     EXPECT_NEAR(depth.at(kOverlap, 4, 0), 0.3f, 1e-6f);
     EXPECT_NEAR(depth.at(kOnlyB, 4, 0), 1.0f, 1e-6f);  // nothing written where B was rejected
@@ -160,7 +160,8 @@ TYPED_TEST_P(SsamCases, Rgba8AddMaskSaturatesWhereFloatMasksDoNot) {
     constexpr int kLayers = 12;  // 12 layers of alpha 0.1: ADD = 1.2
     std::vector<Quad> quads;
     for (int i = 0; i < kLayers; ++i) quads.push_back({-1, -1, 1, 1, 0.1f + 0.05f * i, {0.5f, 0.5f, 0.5f, 0.1f}});
-    for (const auto precision : {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F}) {
+    for (const auto precision :
+         {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F}) {
         Frame<TypeParam> f;
         f.opaquePass();
         ssam::Config config;
@@ -172,11 +173,9 @@ TYPED_TEST_P(SsamCases, Rgba8AddMaskSaturatesWhereFloatMasksDoNot) {
         const Readback mask = f.backend->readback(layers.mask);
         const float add = layers.maskAdd ? f.backend->readback(layers.maskAdd).at(3, 3, 0) : mask.at(3, 3, 3);
         SCOPED_TRACE(ssam::maskPrecisionName(precision));
-        EXPECT_NEAR(mask.at(3, 3, 0), 0.1f, 1.0f / 255.0f);  // MAX
-        if (precision == ssam::MaskPrecision::RGBA8)
-            EXPECT_FLOAT_EQ(add, 1.0f);  // 255/alpha layers saturate (§3.5.2)
-        else
-            EXPECT_NEAR(add, 1.2f, 4e-3f);  // half precision accumulates past 1
+        EXPECT_NEAR(mask.at(3, 3, 0), 0.1f, 1.0f / 255.0f);                       // MAX
+        if (precision == ssam::MaskPrecision::RGBA8) EXPECT_FLOAT_EQ(add, 1.0f);  // 255/alpha layers saturate (§3.5.2)
+        else EXPECT_NEAR(add, 1.2f, 4e-3f);                                       // half precision accumulates past 1
     }
 }
 
@@ -295,7 +294,8 @@ TYPED_TEST_P(SsamCases, BadConfigurationIsRejectedWithTheKnobName) {
 
 // opaque -> SSAM -> a side-effect "present" pass reading the colour and depth.
 template <typename BackendKind>
-inline std::vector<std::string> runGraph(Frame<BackendKind>& f, ssam::ScreenSpaceAlphaMask& ssam, const ssam::FoliageView& view) {
+inline std::vector<std::string> runGraph(Frame<BackendKind>& f, ssam::ScreenSpaceAlphaMask& ssam,
+                                         const ssam::FoliageView& view) {
     FrameGraph graph;
     const auto color = graph.importTexture("rt_opaque", graphDescOf(f.backend->describe(f.opaque.color())),
                                            toConcrete(f.opaque.color()));
@@ -332,18 +332,12 @@ TYPED_TEST_P(SsamCases, FrameGraphRunsThreePassesWithFoliageAndNoneWithout) {
     EXPECT_EQ(ssamPassesTimed(*g.backend), 0);
 }
 
-REGISTER_TYPED_TEST_SUITE_P(SsamCases,
-    CrossingQuadsGiveMaxAndAddMasks,
-    ColourPassAlphaTestsAndWritesFoliageDepth,
-    CompositeFollowsListing32,
-    SquaringAndLerpChangeTheResultAsTheFormulaSays,
-    Rgba8AddMaskSaturatesWhereFloatMasksDoNot,
-    OpaqueGeometryOccludesFoliageInEveryPass,
-    FoliageDepthOccludesLaterDrawsBehindNotInFront,
-    NoFoliageInViewRunsNoPass,
-    ClosestSampleDepthResolveWithMsaaOpaquePass,
-    MaskProgramIgnoresColour,
-    BadConfigurationIsRejectedWithTheKnobName,
-    FrameGraphRunsThreePassesWithFoliageAndNoneWithout);
+REGISTER_TYPED_TEST_SUITE_P(SsamCases, CrossingQuadsGiveMaxAndAddMasks, ColourPassAlphaTestsAndWritesFoliageDepth,
+                            CompositeFollowsListing32, SquaringAndLerpChangeTheResultAsTheFormulaSays,
+                            Rgba8AddMaskSaturatesWhereFloatMasksDoNot, OpaqueGeometryOccludesFoliageInEveryPass,
+                            FoliageDepthOccludesLaterDrawsBehindNotInFront, NoFoliageInViewRunsNoPass,
+                            ClosestSampleDepthResolveWithMsaaOpaquePass, MaskProgramIgnoresColour,
+                            BadConfigurationIsRejectedWithTheKnobName,
+                            FrameGraphRunsThreePassesWithFoliageAndNoneWithout);
 
 }  // namespace ssam_cases

@@ -105,12 +105,12 @@ struct GlHost {
     std::unique_ptr<engine::render::gl::GlBackend> backend = engine::render::gl::createGlBackend({});
 
     // Opaque targets cleared to kOpaqueColor and the far depth (plus optional opaque quads).
-    std::unique_ptr<engine::render::FrameTargets> opaque(engine::render::CompareFunc depthFunc = engine::render::CompareFunc::Less,
-                                          engine::render::Format format = engine::render::Format::RGBA8_UNORM,
-                                          const std::vector<Quad>& quads = {}) {
+    std::unique_ptr<engine::render::FrameTargets> opaque(
+        engine::render::CompareFunc depthFunc = engine::render::CompareFunc::Less,
+        engine::render::Format format = engine::render::Format::RGBA8_UNORM, const std::vector<Quad>& quads = {}) {
         using namespace engine::render;
-        auto targets =
-            std::make_unique<engine::render::FrameTargets>(*backend, engine::render::FrameTargetsDesc{kGlSize, kGlSize, 1, format, depthFunc});
+        auto targets = std::make_unique<engine::render::FrameTargets>(
+            *backend, engine::render::FrameTargetsDesc{kGlSize, kGlSize, 1, format, depthFunc});
         PipelineDesc p;
         p.name = "opaque flat";
         p.depth = DepthState::testAndWrite(depthFunc);

@@ -77,7 +77,8 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
         frame.foliageBoundsCount = bounds.size();
         int calls = 0;
         ssam::gl::FrameReport report;
-        ASSERT_EQ(glSsam->render(frame, [&](const ssam::gl::FoliageProgram&) { ++calls, foliage.draw(); }, &report),
+        ASSERT_EQ(glSsam->render(
+                      frame, [&](const ssam::gl::FoliageProgram&) { ++calls, foliage.draw(); }, &report),
                   Status::Ok)
             << glSsam->lastMessage();
         EXPECT_TRUE(report.foliageInView);
@@ -151,7 +152,7 @@ TEST(SsamGl, ModelMatrixAndBaseColourFactorApply) {
                            }),
               Status::Ok);
     const Readback mask = host.readGl(ssam->intermediates().mask, Format::RGBA8_UNORM);
-    EXPECT_FLOAT_EQ(mask.at(3, 8, 3), 0.0f);                             // left half: moved away
+    EXPECT_FLOAT_EQ(mask.at(3, 8, 3), 0.0f);                              // left half: moved away
     EXPECT_FLOAT_EQ(mask.at(12, 8, 3), std::round(0.4f * 255) / 255.0f);  // right half: 0.8 * 0.5
 
     // The same frame through the function-pointer form: the factor back to 1, alpha 0.8.
@@ -173,7 +174,9 @@ TEST(SsamGl, NothingInViewRunsNoPassAndNeverCallsBack) {
     int calls = 0;
     ssam::gl::FrameReport report;
     report.passesRun = -1;
-    EXPECT_EQ(ssam->render(frame, [&](const ssam::gl::FoliageProgram&) { ++calls; }, &report), Status::Ok);
+    EXPECT_EQ(ssam->render(
+                  frame, [&](const ssam::gl::FoliageProgram&) { ++calls; }, &report),
+              Status::Ok);
     EXPECT_FALSE(report.foliageInView);
     EXPECT_EQ(report.passesRun, 0);
     EXPECT_EQ(calls, 0);
@@ -191,7 +194,9 @@ TEST(SsamGl, CompositeIsScissoredToTheFoliage) {
     frame.foliageBounds = &bounds;
     frame.foliageBoundsCount = 1;
     ssam::gl::FrameReport report;
-    EXPECT_EQ(ssam->render(frame, [&](const ssam::gl::FoliageProgram&) { foliage.draw(); }, &report), Status::Ok);
+    EXPECT_EQ(ssam->render(
+                  frame, [&](const ssam::gl::FoliageProgram&) { foliage.draw(); }, &report),
+              Status::Ok);
     // The backend's clip origin is GL_UPPER_LEFT: window row 0 is the top, as in screenBounds().
     EXPECT_EQ(report.compositeRegion.x, 0);
     EXPECT_EQ(report.compositeRegion.y, 0);
@@ -230,8 +235,7 @@ TEST(SsamGl, RestoresTheHostsGlState) {
 TEST(SsamGl, BadInputIsRejectedWithAStatusAndAMessage) {
     GlHost host;
     auto targets = host.opaque();
-    auto small =
-        std::make_unique<FrameTargets>(*host.backend, FrameTargetsDesc{8, 8, 1, Format::RGBA8_UNORM});
+    auto small = std::make_unique<FrameTargets>(*host.backend, FrameTargetsDesc{8, 8, 1, Format::RGBA8_UNORM});
     auto ssam = initializedSsam();
     struct Messages {
         std::vector<std::pair<ssam::gl::Severity, std::string>> seen;
@@ -308,7 +312,9 @@ TEST(SsamGl, BadInputIsRejectedWithAStatusAndAMessage) {
     glBindTexture(GL_TEXTURE_2D, 0xdeadbeef);  // GL_INVALID_OPERATION
     HostFoliage foliage({kQuadA});
     ssam::gl::FrameReport report;
-    EXPECT_EQ(ssam->render(good, [&](const ssam::gl::FoliageProgram&) { foliage.draw(); }, &report), Status::Ok);
+    EXPECT_EQ(ssam->render(
+                  good, [&](const ssam::gl::FoliageProgram&) { foliage.draw(); }, &report),
+              Status::Ok);
     EXPECT_EQ(report.passesRun, 3);
     ASSERT_EQ(messages.seen.size(), 1u);
     EXPECT_EQ(messages.seen[0].first, ssam::gl::Severity::Warning);

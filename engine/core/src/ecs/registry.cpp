@@ -11,8 +11,9 @@ Registry::~Registry() = default;
 
 Entity Registry::create() {
     if (live_.locked())
-        throw Error("ecs: cannot create an entity while a view over all entities is iterating; "
-                    "use CommandBuffer::create()");
+        throw Error(
+            "ecs: cannot create an entity while a view over all entities is iterating; "
+            "use CommandBuffer::create()");
     const Entity e = allocateSlot();
     try {
         live_.insert(e);
@@ -103,8 +104,7 @@ void Registry::requireAlive(Entity e, std::string_view action, std::string_view 
         why << "the handle is stale (destroyed; slot " << e.index() << " has moved on to generation "
             << slot->generation << ')';
     } else {
-        why << "this registry never created it (slot " << e.index() << " is at generation " << slot->generation
-            << ')';
+        why << "this registry never created it (slot " << e.index() << " is at generation " << slot->generation << ')';
     }
     throwFor(e, action, component, why.str());
 }

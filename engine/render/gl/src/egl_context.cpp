@@ -44,7 +44,8 @@ struct HeadlessEglContext::Impl {
 
     ~Impl() {
         if (context != EGL_NO_CONTEXT) {
-            if (eglGetCurrentContext() == context) eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+            if (eglGetCurrentContext() == context)
+                eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
             eglDestroyContext(display, context);
         }
     }
@@ -56,7 +57,8 @@ namespace {
 std::string tryDisplay(const Candidate& c, const HeadlessEglOptions& options, HeadlessEglContext::Impl& out) {
     EGLint major = 0, minor = 0;
     if (c.display == EGL_NO_DISPLAY) return c.name + ": no display";
-    if (!eglInitialize(c.display, &major, &minor)) return c.name + ": eglInitialize failed (" + hex(eglGetError()) + ")";
+    if (!eglInitialize(c.display, &major, &minor))
+        return c.name + ": eglInitialize failed (" + hex(eglGetError()) + ")";
     // Displays stay initialized for the life of the process (never eglTerminate): displays of
     // one platform and native display are shared, so terminating would pull them from under
     // other contexts, and Mesa would unload its driver, leaving what the driver keeps for good
@@ -67,14 +69,15 @@ std::string tryDisplay(const Candidate& c, const HeadlessEglOptions& options, He
     if (!eglBindAPI(EGL_OPENGL_API)) return fail("eglBindAPI(EGL_OPENGL_API) failed");
 
     EGLConfig config = EGL_NO_CONFIG_KHR;
-    if (!hasExtension(extensions, "EGL_KHR_no_config_context") && !hasExtension(extensions, "EGL_MESA_configless_context")) {
+    if (!hasExtension(extensions, "EGL_KHR_no_config_context") &&
+        !hasExtension(extensions, "EGL_MESA_configless_context")) {
         const EGLint wanted[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
         EGLint count = 0;
         if (!eglChooseConfig(c.display, wanted, &config, 1, &count) || count == 0)
             return fail("no configless contexts and no OpenGL config");
     }
-    std::vector<EGLint> attributes = {EGL_CONTEXT_MAJOR_VERSION,      options.major,
-                                      EGL_CONTEXT_MINOR_VERSION,      options.minor,
+    std::vector<EGLint> attributes = {EGL_CONTEXT_MAJOR_VERSION,       options.major,
+                                      EGL_CONTEXT_MINOR_VERSION,       options.minor,
                                       EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT};
     if (options.debug) attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE});
     attributes.push_back(EGL_NONE);
@@ -135,11 +138,14 @@ std::vector<Candidate> candidates(const HeadlessEglOptions& options, std::string
             out.push_back({name, eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr)});
         }
         if (options.device >= 0 && out.empty())
-            why = "EGL device " + std::to_string(options.device) + " does not exist (" + std::to_string(count) + " devices)";
+            why = "EGL device " + std::to_string(options.device) + " does not exist (" + std::to_string(count) +
+                  " devices)";
     } else if (options.device >= 0) {
-        why = "EGL_EXT_platform_device is unavailable, so device " + std::to_string(options.device) + " cannot be chosen";
+        why =
+            "EGL_EXT_platform_device is unavailable, so device " + std::to_string(options.device) + " cannot be chosen";
     }
-    if (out.empty() && why.empty()) why = "neither EGL_MESA_platform_surfaceless nor EGL_EXT_platform_device is available";
+    if (out.empty() && why.empty())
+        why = "neither EGL_MESA_platform_surfaceless nor EGL_EXT_platform_device is available";
     return out;
 }
 

@@ -24,14 +24,17 @@ void KHRONOS_APIENTRY onDebugMessage(GLenum, GLenum type, GLuint id, GLenum seve
 }  // namespace
 
 GlBackendImpl::GlBackendImpl(const GlOptions& options, std::shared_ptr<GlContext> context)
-    : options_(options), context_(std::move(context)), textures_("texture"), buffers_("buffer"),
-      pipelines_("pipeline"), queries_("occlusion query"), programs_("program"),
-      lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
-              [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
-              [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).shadow); },
-              [this](BufferHandle h) { return buffers_.get(h).maxIndex; },
-              [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; },
-              [this](PipelineHandle h) -> const ProgramDesc& { return *pipelines_.get(h).program->desc; }} {
+    : options_(options), context_(std::move(context)), textures_("texture"), buffers_("buffer"), pipelines_("pipeline"),
+      queries_("occlusion query"),
+      programs_("program"), lookup_{
+                                [this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
+                                [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
+                                [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).shadow); },
+                                [this](BufferHandle h) { return buffers_.get(h).maxIndex; },
+                                [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; },
+                                [this](PipelineHandle h) -> const ProgramDesc& {
+                                    return *pipelines_.get(h).program->desc;
+                                }} {
     makeCurrent();
     const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     if (!version) throw Error("GL backend: no GL context is current on this thread");
@@ -43,8 +46,8 @@ GlBackendImpl::GlBackendImpl(const GlOptions& options, std::shared_ptr<GlContext
     if (major < 4 || (major == 4 && minor < 3))
         throw Error(std::string("GL backend: OpenGL 4.3 or newer needed, the context is ") + version);
     if (major == 4 && minor < 5) {
-        for (const char* ext : {"GL_ARB_clip_control", "GL_ARB_direct_state_access", "GL_ARB_buffer_storage",
-                                "GL_ARB_clear_texture"})
+        for (const char* ext :
+             {"GL_ARB_clip_control", "GL_ARB_direct_state_access", "GL_ARB_buffer_storage", "GL_ARB_clear_texture"})
             if (!epoxy_has_gl_extension(ext))
                 throw Error(std::string("GL backend: OpenGL ") + version + " lacks " + ext + " (needed below 4.5)");
     }

@@ -16,15 +16,14 @@ std::string hex(unsigned value) {
 }
 
 void drainGlErrors() {
-    for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i) {
-    }
+    for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i) {}
 }
 
 void checkGl(const std::string& what) {
     const GLenum error = glGetError();
     if (error == GL_NO_ERROR) return;
     drainGlErrors();
-    const char* name = error == GL_OUT_OF_MEMORY      ? "GL_OUT_OF_MEMORY"
+    const char* name = error == GL_OUT_OF_MEMORY       ? "GL_OUT_OF_MEMORY"
                        : error == GL_INVALID_ENUM      ? "GL_INVALID_ENUM"
                        : error == GL_INVALID_VALUE     ? "GL_INVALID_VALUE"
                        : error == GL_INVALID_OPERATION ? "GL_INVALID_OPERATION"

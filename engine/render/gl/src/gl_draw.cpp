@@ -22,8 +22,8 @@ void GlBackendImpl::draw(const DrawDesc& d) {
     execute(d);
 }
 
-void GlBackendImpl::drawRange(const DrawDesc& d, std::uint32_t first, std::uint32_t count,
-                              std::uint32_t baseInstance, std::uint32_t instances) {
+void GlBackendImpl::drawRange(const DrawDesc& d, std::uint32_t first, std::uint32_t count, std::uint32_t baseInstance,
+                              std::uint32_t instances) {
     if (d.indices)
         glDrawElementsInstancedBaseInstance(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
                                             reinterpret_cast<const void*>(std::uintptr_t(first) * 4),
@@ -95,8 +95,7 @@ void GlBackendImpl::execute(const DrawDesc& d) {
     glScissor(scissor.x, scissor.y, scissor.width, scissor.height);  // upper-left origin: y from the top
     if (passActualSamples_ > 1)
         glProgramUniform4i(p, s.scissor, scissor.x, scissor.y, scissor.x + scissor.width, scissor.y + scissor.height);
-    else
-        glProgramUniform4i(p, s.scissor, 0, 0, 0, 0);
+    else glProgramUniform4i(p, s.scissor, 0, 0, 0, 0);
 
     // Blending per target.
     for (std::size_t i = 0; i < targets_.size(); ++i) {
@@ -129,9 +128,10 @@ void GlBackendImpl::execute(const DrawDesc& d) {
             glColorMaski(GLuint(i), (m & WriteR) != 0, (m & WriteG) != 0, (m & WriteB) != 0, (m & WriteA) != 0);
         }
         glDepthMask(step.depthWrite ? GL_TRUE : GL_FALSE);
-        glProgramUniform1i(p, s.alphaSelect, step.select == FragmentSelect::All       ? kSelectAll
-                                             : step.select == FragmentSelect::Passing ? kSelectPassing
-                                                                                      : kSelectFailing);
+        glProgramUniform1i(p, s.alphaSelect,
+                           step.select == FragmentSelect::All       ? kSelectAll
+                           : step.select == FragmentSelect::Passing ? kSelectPassing
+                                                                    : kSelectFailing);
         return writes;
     };
 

@@ -14,7 +14,8 @@
 namespace engine::render::gl {
 
 void GlBackendImpl::beginPass(const PassDesc& pass) {
-    if (pass_) throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
+    if (pass_)
+        throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
     const PassExtent extent = validatePass(pass, lookup_);
     if (pass.countSamplesInto) queries_.get(pass.countSamplesInto);  // alive, or a clear error now
     if (pass.drawOnlyIfSamplesIn && !queries_.get(pass.drawOnlyIfSamplesIn).counted)
@@ -201,7 +202,8 @@ bool GlBackendImpl::present(TextureHandle h) {
     const GlTexture& t = textures_.get(h);
     if (t.desc.samples != 1) throw Error("present of " + quotedName(t.desc.name) + ": multisampled; resolve it first");
     if (formatInfo(t.desc.format).isDepth) throw Error("present of " + quotedName(t.desc.name) + ": a depth texture");
-    if (pass_) throw Error("present of " + quotedName(t.desc.name) + " while pass " + quotedName(pass_->name) + " is open");
+    if (pass_)
+        throw Error("present of " + quotedName(t.desc.name) + " while pass " + quotedName(pass_->name) + " is open");
     if (!context_ || !context_->hasWindow()) return false;
     const glm::ivec2 size = context_->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return false;  // minimised: nothing to show, nothing to swap

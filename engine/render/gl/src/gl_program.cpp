@@ -12,8 +12,7 @@
 
 namespace engine::render::gl {
 
-GlProgram::GlProgram(GlProgram&& other) noexcept
-    : name_(std::move(other.name_)), id_(std::exchange(other.id_, 0u)) {}
+GlProgram::GlProgram(GlProgram&& other) noexcept : name_(std::move(other.name_)), id_(std::exchange(other.id_, 0u)) {}
 
 GlProgram& GlProgram::operator=(GlProgram&& other) noexcept {
     if (this != &other) {
@@ -42,8 +41,8 @@ plumbing::ProgramFunctions epoxyProgramFunctions() {
 }  // namespace
 
 GlProgram compileProgram(std::string name, std::string_view vertexSource, std::string_view fragmentSource) {
-    auto built = plumbing::buildProgram(epoxyProgramFunctions(), "GL program '" + name + "'", vertexSource,
-                                        fragmentSource);
+    auto built =
+        plumbing::buildProgram(epoxyProgramFunctions(), "GL program '" + name + "'", vertexSource, fragmentSource);
     if (!built.id) throw Error(built.error);
     return GlProgram(std::move(name), built.id);
 }

@@ -41,7 +41,8 @@ Readback GlBackendImpl::readback(TextureHandle h) {
     r.format = t.desc.format;
     const std::size_t rowValues = std::size_t(r.width) * r.channels;
     const std::size_t values = rowValues * r.height;
-    checkFitsInMemory(values * sizeof(float), "readback of " + quotedName(t.desc.name) + " as float", hostMemoryAvailable);
+    checkFitsInMemory(values * sizeof(float), "readback of " + quotedName(t.desc.name) + " as float",
+                      hostMemoryAvailable);
     r.values.resize(values);
     makeCurrent();
     drainGlErrors();
@@ -69,8 +70,8 @@ Readback GlBackendImpl::readback(TextureHandle h) {
         const int rows = std::min(bandRows, r.height - y);
         const std::size_t first = std::size_t(y) * rowValues, count = std::size_t(rows) * rowValues;
         if (normalized) {
-            glGetTextureSubImage(source, 0, 0, y, 0, r.width, rows, 1, f.pixelFormat, GL_UNSIGNED_BYTE,
-                                 GLsizei(count), bytes.data());
+            glGetTextureSubImage(source, 0, 0, y, 0, r.width, rows, 1, f.pixelFormat, GL_UNSIGNED_BYTE, GLsizei(count),
+                                 bytes.data());
             for (std::size_t i = 0; i < count; ++i) r.values[first + i] = float(bytes[i]) / 255.0f;
         } else {
             glGetTextureSubImage(source, 0, 0, y, 0, r.width, rows, 1, f.pixelFormat, GL_FLOAT,

@@ -79,8 +79,8 @@ TextureHandle GlBackendImpl::importTexture(unsigned int id, const TextureDesc& d
         throw Error(what + ": GL texture " + std::to_string(id) + " is not a " +
                     (desc.samples > 1 ? "2D multisample" : "2D") + " texture");
     if (width != desc.width || height != desc.height)
-        throw Error(what + ": GL texture is " + std::to_string(width) + "x" + std::to_string(height) + ", described as " +
-                    std::to_string(desc.width) + "x" + std::to_string(desc.height));
+        throw Error(what + ": GL texture is " + std::to_string(width) + "x" + std::to_string(height) +
+                    ", described as " + std::to_string(desc.width) + "x" + std::to_string(desc.height));
     if (desc.samples > 1 && samples < desc.samples)
         throw Error(what + ": GL texture has " + std::to_string(samples) + " samples, described with " +
                     std::to_string(desc.samples));

@@ -175,7 +175,9 @@ void main() {
 
 }  // namespace
 
-std::string vertexSource(VertexInput input) { return input == VertexInput::Fullscreen ? kFullscreenVertex : kMeshVertex; }
+std::string vertexSource(VertexInput input) {
+    return input == VertexInput::Fullscreen ? kFullscreenVertex : kMeshVertex;
+}
 
 std::string fragmentSource(VertexInput input, const std::string& body) {
     std::string s = kFragmentCommon;

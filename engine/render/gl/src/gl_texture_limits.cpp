@@ -59,8 +59,9 @@ void checkGlTextureFits(const TextureDesc& desc, const std::string& what, const 
                     std::to_string(limits.maxTextureSize) + by);
     if ((desc.usage & UsageRenderTarget) &&
         (desc.width > limits.maxFramebufferWidth || desc.height > limits.maxFramebufferHeight))
-        throw Error(what + ": render target " + describeSize(desc) + " exceeds this GL implementation's framebuffer limit of " +
-                    std::to_string(limits.maxFramebufferWidth) + "x" + std::to_string(limits.maxFramebufferHeight) + by);
+        throw Error(
+            what + ": render target " + describeSize(desc) + " exceeds this GL implementation's framebuffer limit of " +
+            std::to_string(limits.maxFramebufferWidth) + "x" + std::to_string(limits.maxFramebufferHeight) + by);
     checkFitsInMemory(textureBytes(desc), what + ": " + describeSize(desc), limits.memory);
 }
 

@@ -13,8 +13,8 @@
 namespace engine::render::gl {
 
 struct GlTextureLimits {
-    std::string renderer;  // GL_RENDERER, for messages
-    int maxTextureSize = 0;                                // GL_MAX_TEXTURE_SIZE
+    std::string renderer;                                   // GL_RENDERER, for messages
+    int maxTextureSize = 0;                                 // GL_MAX_TEXTURE_SIZE
     int maxFramebufferWidth = 0, maxFramebufferHeight = 0;  // GL_MAX_FRAMEBUFFER_WIDTH / _HEIGHT
     // A software rasterizer (llvmpipe, softpipe) keeps textures in host memory; a GPU says how
     // much video memory it has left through GL_NVX_gpu_memory_info or GL_ATI_meminfo, or

@@ -35,7 +35,8 @@ void initGlfw() {
     glfwSetErrorCallback(onGlfwError);
     gLastGlfwError.clear();
     if (!glfwInit())
-        throw Error("GLFW window: glfwInit failed" + (gLastGlfwError.empty() ? std::string() : " (" + gLastGlfwError + ")") +
+        throw Error("GLFW window: glfwInit failed" +
+                    (gLastGlfwError.empty() ? std::string() : " (" + gLastGlfwError + ")") +
                     "; is there a display (DISPLAY/WAYLAND_DISPLAY, or run under xvfb-run)?");
     gGlfwInitialized = true;
 }
@@ -80,8 +81,7 @@ std::unique_ptr<GlfwWindowContext> GlfwWindowContext::create(const GlfwWindowOpt
         tried += (tried.empty() ? "" : "; ") + ("4." + std::to_string(minor) + ": ") +
                  (gLastGlfwError.empty() ? std::string("failed") : gLastGlfwError);
     }
-    if (!impl->window)
-        throw Error("GLFW window '" + options.title + "': no OpenGL core 4.3+ context (" + tried + ")");
+    if (!impl->window) throw Error("GLFW window '" + options.title + "': no OpenGL core 4.3+ context (" + tried + ")");
     glfwMakeContextCurrent(impl->window);
     impl->major = glfwGetWindowAttrib(impl->window, GLFW_CONTEXT_VERSION_MAJOR);
     impl->minor = glfwGetWindowAttrib(impl->window, GLFW_CONTEXT_VERSION_MINOR);

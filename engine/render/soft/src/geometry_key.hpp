@@ -48,8 +48,9 @@ inline std::uint64_t geometryHash(const GeometryKey& k) {
     const std::uint64_t words[] = {k.vertices, k.indices, k.instances, k.first, k.count, k.instanceCount};
     mix(words, sizeof words);
     mix(&k.viewProj, sizeof k.viewProj);
-    const int ints[] = {k.viewport.width, k.viewport.height, k.viewport.scissor.x, k.viewport.scissor.y,
-                        k.viewport.scissor.width, k.viewport.scissor.height, int(k.raster.cull), int(k.raster.frontFace)};
+    const int ints[] = {k.viewport.width,     k.viewport.height,        k.viewport.scissor.x,
+                        k.viewport.scissor.y, k.viewport.scissor.width, k.viewport.scissor.height,
+                        int(k.raster.cull),   int(k.raster.frontFace)};
     mix(ints, sizeof ints);
     mix(&k.viewport.pattern, sizeof k.viewport.pattern);
     return h;

@@ -88,7 +88,7 @@ private:
     std::size_t nextChunks(std::uint64_t count);
 
     bool reuseGeometry_;
-    std::vector<GeometryChunk> chunks_;  // setup output of the pass being executed
+    std::vector<GeometryChunk> chunks_;   // setup output of the pass being executed
     std::vector<DrawGeometry> geometry_;  // the vertex input of its draws
     std::size_t chunksUsed_ = 0;
     std::vector<PlannedGeometry> planned_;   // which of chunks_ each draw's are

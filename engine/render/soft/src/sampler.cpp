@@ -24,8 +24,10 @@ template <SampledChannels Channels>
         if (f == Format::RGBA8_UNORM || f == Format::RGBA8_SRGB) return {0.0f, 0.0f, 0.0f, tables.unorm[u8(3)]};
     }
     // The 8-bit formats inline (as loadTexel decodes them); the rest through loadTexel.
-    if (f == Format::RGBA8_UNORM) return {tables.unorm[u8(0)], tables.unorm[u8(1)], tables.unorm[u8(2)], tables.unorm[u8(3)]};
-    if (f == Format::RGBA8_SRGB) return {tables.srgb[u8(0)], tables.srgb[u8(1)], tables.srgb[u8(2)], tables.unorm[u8(3)]};
+    if (f == Format::RGBA8_UNORM)
+        return {tables.unorm[u8(0)], tables.unorm[u8(1)], tables.unorm[u8(2)], tables.unorm[u8(3)]};
+    if (f == Format::RGBA8_SRGB)
+        return {tables.srgb[u8(0)], tables.srgb[u8(1)], tables.srgb[u8(2)], tables.unorm[u8(3)]};
     return loadOther(p, f);
 }
 

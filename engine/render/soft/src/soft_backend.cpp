@@ -72,8 +72,7 @@ bool resultOf(const SoftQuery& query) {
 class SoftBackendImpl final : public SoftBackend {
 public:
     explicit SoftBackendImpl(const SoftOptions& options)
-        : options_(options),
-          arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic),
+        : options_(options), arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic),
           textures_("texture"), buffers_("buffer"), pipelines_("pipeline"), queries_("occlusion query"),
           programs_("program"),
           lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
@@ -86,8 +85,7 @@ public:
             throw Error("soft backend: tileSize " + std::to_string(options.tileSize) +
                         " must be a multiple of 8 in [8, 1024]");
         if (!options_.simd) options_.simd = bestSimdIsa();
-        if (!simdIsaSupported(*options_.simd))
-            throw Error("soft backend: " + simdIsaRefusal(*options_.simd));
+        if (!simdIsaSupported(*options_.simd)) throw Error("soft backend: " + simdIsaRefusal(*options_.simd));
     }
 
     std::string name() const override { return "soft"; }
@@ -164,7 +162,8 @@ public:
         std::shared_ptr<const ProgramDesc> program = programFor(desc.program);
         if (program->vertexInput == VertexInput::Fullscreen && desc.depth.test)
             throw Error(what + ": full-screen program " + program->name + " cannot depth-test");
-        return pipelines_.add(SoftPipeline{desc, resolvePipeline(desc, FailModeEmulation::None).info, std::move(program)});
+        return pipelines_.add(
+            SoftPipeline{desc, resolvePipeline(desc, FailModeEmulation::None).info, std::move(program)});
     }
 
     void destroy(TextureHandle h) override { textures_.remove(h); }
@@ -186,7 +185,8 @@ public:
     PipelineInfo pipelineInfo(PipelineHandle h) const override { return pipelines_.get(h).info; }
 
     void beginPass(const PassDesc& pass) override {
-        if (pass_) throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
+        if (pass_)
+            throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
         const PassExtent extent = validatePass(pass, lookup_);
         if (pass.countSamplesInto) queries_.get(pass.countSamplesInto);  // alive, or a clear error now
         const bool skipped = pass.drawOnlyIfSamplesIn && !resultOf(queries_.get(pass.drawOnlyIfSamplesIn));
@@ -208,7 +208,8 @@ public:
         if (sink_) {
             const PipelineDesc& p = pipelines_.get(d.pipeline).desc;
             if (passSamples_ != 1 || !p.depth.test || !pass_->depth.texture)
-                throw Error("draw with pipeline '" + p.name + "': fragment capture needs a single-sampled pass and a depth test");
+                throw Error("draw with pipeline '" + p.name +
+                            "': fragment capture needs a single-sampled pass and a depth test");
         }
         draws_.push_back({d, sink_});
     }
@@ -308,7 +309,8 @@ public:
 private:
     // Data that validateTextureData accepted.
     void upload(SoftTexture& t, const TextureData& data) {
-        const bool half = t.desc.format == Format::RGBA16F || t.desc.format == Format::RG16F || t.desc.format == Format::R16F;
+        const bool half =
+            t.desc.format == Format::RGBA16F || t.desc.format == Format::RG16F || t.desc.format == Format::R16F;
         const int channels = formatInfo(t.desc.format).channels;
         for (std::size_t level = 0; level < data.levels.size(); ++level) {
             MipLevel& l = t.levels[level];
@@ -416,18 +418,19 @@ private:
         const auto* vertices = reinterpret_cast<const Vertex*>(vb.bytes.data());
         if (!vb.bounds) vb.bounds = positionBounds({vertices, vb.bytes.size() / sizeof(Vertex)});
         static const Instance identity{};
-        DrawGeometry g{vertices,
-                       d.indices ? reinterpret_cast<const std::uint32_t*>(buffers_.get(d.indices).bytes.data()) + d.first
-                                 : nullptr,
-                       d.first,
-                       d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity,
-                       &*vb.bounds,
-                       state.program->viewProj(),
-                       vp,
-                       raster,
-                       drawIndex,
-                       d.count / 3,
-                       0};
+        DrawGeometry g{
+            vertices,
+            d.indices ? reinterpret_cast<const std::uint32_t*>(buffers_.get(d.indices).bytes.data()) + d.first
+                      : nullptr,
+            d.first,
+            d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity,
+            &*vb.bounds,
+            state.program->viewProj(),
+            vp,
+            raster,
+            drawIndex,
+            d.count / 3,
+            0};
         g.total = g.trianglesPerInstance * d.instanceCount;
         stats_.trianglesIn += g.total;
         if (g.total == 0 || vp.scissor.empty()) return;
@@ -545,7 +548,7 @@ private:
     std::vector<RecordedDraw> draws_;
     FragmentSink* sink_ = nullptr;
     GeometryStage geometryStage_{options_.reuseGeometry};
-    std::uint64_t lastStamp_ = 0;            // the last buffer content stamp given
+    std::uint64_t lastStamp_ = 0;                          // the last buffer content stamp given
     std::vector<std::vector<const SetupTriangle*>> bins_;  // per tile, in submission order
     std::vector<PassTiming> timings_;
     SoftStats stats_;

@@ -11,7 +11,6 @@ using raster::kHalfPixel;
 using raster::kPixelStep;
 using raster::kSampleOffsetScale;
 
-
 const SamplePattern& samplePattern(int samples) {
     static const SamplePattern k1{1, {0}, {0}};
     static const SamplePattern k2{2, {4, -4}, {4, -4}};

@@ -39,7 +39,8 @@ ClipPoint toClipPoint(const ClipVertex& v) {
 ClipPoint lerp(const ClipPoint& a, const ClipPoint& b, double t) {
     ClipPoint r;
     r.position = a.position + (b.position - a.position) * t;
-    for (int i = 0; i < kAttributeCount; ++i) r.attributes[i] = a.attributes[i] + (b.attributes[i] - a.attributes[i]) * t;
+    for (int i = 0; i < kAttributeCount; ++i)
+        r.attributes[i] = a.attributes[i] + (b.attributes[i] - a.attributes[i]) * t;
     return r;
 }
 
@@ -112,12 +113,15 @@ bool survivesEmit(const ScreenVertex& a, const ScreenVertex& b, const ScreenVert
     const std::int64_t area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     if (area == 0) return false;
     const bool frontFacing = (raster.frontFace == Winding::CounterClockwise) == (area < 0);
-    if ((raster.cull == CullMode::Back && !frontFacing) || (raster.cull == CullMode::Front && frontFacing)) return false;
+    if ((raster.cull == CullMode::Back && !frontFacing) || (raster.cull == CullMode::Front && frontFacing))
+        return false;
     SetupTriangle t;  // only the box and the edges, as emit() makes them
     t.minX = int(std::max<std::int64_t>(vp.scissor.x, std::min({a.x, b.x, c.x}) >> kSubpixelBits));
     t.minY = int(std::max<std::int64_t>(vp.scissor.y, std::min({a.y, b.y, c.y}) >> kSubpixelBits));
-    t.maxX = int(std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, std::max({a.x, b.x, c.x}) >> kSubpixelBits));
-    t.maxY = int(std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, std::max({a.y, b.y, c.y}) >> kSubpixelBits));
+    t.maxX =
+        int(std::min<std::int64_t>(vp.scissor.x + vp.scissor.width - 1, std::max({a.x, b.x, c.x}) >> kSubpixelBits));
+    t.maxY =
+        int(std::min<std::int64_t>(vp.scissor.y + vp.scissor.height - 1, std::max({a.y, b.y, c.y}) >> kSubpixelBits));
     if (t.minX > t.maxX || t.minY > t.maxY) return false;
     if (!vp.pattern || !isTinyTriangle(t)) return true;
     const ScreenVertex* v[3] = {&a, &b, &c};
@@ -196,7 +200,8 @@ void finishTriangle(const BegunTriangle& begun, std::vector<SetupTriangle>& out)
     t.depth = makePlane(basis, v[0]->z, v[1]->z, v[2]->z);
     t.inverseW = makePlane(basis, v[0]->inverseW, v[1]->inverseW, v[2]->inverseW);
     for (int k = 0; k < kAttributeCount; ++k)
-        t.attributeOverW[k] = makePlane(basis, v[0]->attributeOverW[k], v[1]->attributeOverW[k], v[2]->attributeOverW[k]);
+        t.attributeOverW[k] =
+            makePlane(basis, v[0]->attributeOverW[k], v[1]->attributeOverW[k], v[2]->attributeOverW[k]);
 }
 
 void emit(const ScreenVertex& s0, const ScreenVertex& s1, const ScreenVertex& s2, const Viewport& vp,
@@ -264,7 +269,8 @@ void projectAndEmit(const Polygon& poly, const Viewport& vp, const RasterState& 
         return;
     }
     for (int i = 0; i < count; ++i)
-        finishProjection(poly.vertices[i].position, [&](int k) { return poly.vertices[i].attributes[k]; }, screen[i]);
+        finishProjection(
+            poly.vertices[i].position, [&](int k) { return poly.vertices[i].attributes[k]; }, screen[i]);
     for (int i = 1; i + 1 < count; ++i) emit(screen[0], screen[i], screen[i + 1], vp, raster, drawIndex, out, counters);
 }
 
@@ -278,7 +284,7 @@ void setupClippedTriangle(ClipVertex (&v)[3], const AttributeSource& attributes,
         {0.0, 0.0, 1.0, 0.0},   // z >= 0 (depth 0: the far plane under reverse-Z)
         {0.0, 0.0, -1.0, 1.0},  // z <= w
         {0.0, 0.0, 0.0, 1.0},   // w >= 0 (with the two above, only w = 0 edge cases)
-        {-1.0, 0.0, 0.0, gx}, {1.0, 0.0, 0.0, gx}, {0.0, -1.0, 0.0, gy}, {0.0, 1.0, 0.0, gy},
+        {-1.0, 0.0, 0.0, gx},  {1.0, 0.0, 0.0, gx}, {0.0, -1.0, 0.0, gy}, {0.0, 1.0, 0.0, gy},
     };
     attributes.fill(v);
     Polygon poly;
@@ -373,7 +379,8 @@ void setupPreparedTriangle(PreparedVertex* const (&v)[3], const AttributeSource&
         PreparedVertex& p = *v[k];
         if (p.finished) continue;
         attributes.fillVertex(k, p.clip);
-        finishProjection(glm::dvec4(p.clip.position), [&](int a) { return double(p.clip.attributes[a]); }, p.screen);
+        finishProjection(
+            glm::dvec4(p.clip.position), [&](int a) { return double(p.clip.attributes[a]); }, p.screen);
         p.finished = true;
     }
     finishTriangle(begun, out);

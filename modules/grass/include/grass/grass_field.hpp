@@ -13,13 +13,13 @@
 namespace grass {
 
 struct GrassOptions {
-    float drawDistance = 60.0f;  // metres from the eye; tufts beyond are not drawn
-    float height = 0.55f;        // metres, card height at scale 1
-    float width = 0.9f;          // metres
-    float alphaReference = 0.5f; // alpha test (cards are cut out, like Pure's foliage colour pass)
+    float drawDistance = 60.0f;   // metres from the eye; tufts beyond are not drawn
+    float height = 0.55f;         // metres, card height at scale 1
+    float width = 0.9f;           // metres
+    float alphaReference = 0.5f;  // alpha test (cards are cut out, like Pure's foliage colour pass)
     glm::vec3 windDirection{1.0f, 0.0f, 0.35f};
-    float sway = 0.18f;          // metres at the tip
-    float swayFrequency = 0.7f;  // Hz
+    float sway = 0.18f;             // metres at the tip
+    float swayFrequency = 0.7f;     // Hz
     std::size_t maxTufts = 200000;  // a field larger than this is refused
 };
 

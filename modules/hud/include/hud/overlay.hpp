@@ -19,11 +19,11 @@
 namespace hud {
 
 struct ImagePanel {
-    engine::render::TextureHandle source;          // single-sampled colour, read by texel
+    engine::render::TextureHandle source;             // single-sampled colour, read by texel
     engine::render::FrameGraphTexture sourceInGraph;  // its latest version, when the graph knows it
-    PixelRect region;  // of `source`
-    glm::ivec2 at{0};  // where its top-left texel lands in the target
-    int zoom = 1;      // each texel zoom x zoom pixels
+    PixelRect region;                                 // of `source`
+    glm::ivec2 at{0};                                 // where its top-left texel lands in the target
+    int zoom = 1;                                     // each texel zoom x zoom pixels
     PixelRect target() const { return {at.x, at.y, region.width * zoom, region.height * zoom}; }
 };
 

@@ -21,9 +21,9 @@ struct OverlayFillParams {
 
 struct OverlayPanelParams {
     engine::render::TextureHandle source;  // single-sampled colour
-    int sourceX = 0, sourceY = 0;  // texel at targetX, targetY (x/y from the top-left, y down)
+    int sourceX = 0, sourceY = 0;          // texel at targetX, targetY (x/y from the top-left, y down)
     int targetX = 0, targetY = 0;
-    int zoom = 1;                  // 1..64
+    int zoom = 1;  // 1..64
 };
 
 // Pixel coordinates (x right, y down from the top-left corner, z 0.5) to clip space for a

@@ -18,10 +18,10 @@ class SunVisibilityProbe;
 
 struct LightShaftOptions {
     glm::vec3 color{1.0f, 0.92f, 0.75f};
-    float intensity = 0.8f;   // >= 0
-    float decay = 0.96f;      // (0, 1]
-    float density = 0.8f;     // (0, 1]: how far towards the sun each pixel looks
-    int samples = 32;         // 1..128
+    float intensity = 0.8f;  // >= 0
+    float decay = 0.96f;     // (0, 1]
+    float density = 0.8f;    // (0, 1]: how far towards the sun each pixel looks
+    int samples = 32;        // 1..128
     // The sun's glow in the occlusion image, as a fraction of the frame height (> 0): only
     // sky near the sun casts shafts, so open sky elsewhere is not hazed over.
     float glowRadius = 0.3f;

@@ -20,18 +20,18 @@ namespace lightshafts {
 
 struct LightShaftParams {
     engine::render::TextureHandle depth;  // D32F or R32F, the target's size
-    glm::vec2 sunPixel{0.0f};  // the sun's position in pixels (may be off screen)
-    float farDepth = 1.0f;     // the depth clear value (0 for reverse-Z)
+    glm::vec2 sunPixel{0.0f};             // the sun's position in pixels (may be off screen)
+    float farDepth = 1.0f;                // the depth clear value (0 for reverse-Z)
     bool greaterIsCloser = false;
     glm::vec3 color{1.0f, 0.95f, 0.8f};
     float intensity = 0.35f;
     float decay = 0.96f;
     float density = 0.8f;
-    int samples = 32;          // 1..128
+    int samples = 32;  // 1..128
     // The occlusion image is the sun's glow where sky shows (GPU Gems 3 ch. 13 draws the sun
     // as a bright disc): a sky sample at distance d from the sun weighs (1 - d/glowRadius)^2.
     // 0: every sky pixel glows alike.
-    float glowRadius = 0.0f;   // pixels
+    float glowRadius = 0.0f;  // pixels
 };
 
 // For Backend::createProgram. Draws are checked for: a D32F or R32F depth of at least the

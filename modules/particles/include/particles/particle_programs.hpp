@@ -25,10 +25,10 @@ namespace particles {
 struct ParticleParams {
     glm::mat4 viewProj{1.0f};
     engine::render::TextureHandle sceneDepth;  // D32F or R32F, full resolution
-    int depthStride = 1;       // 1: full-resolution layer, 2: half
+    int depthStride = 1;                       // 1: full-resolution layer, 2: half
     float depthScale = 1.0f;
     float depthOffset = 0.0f;
-    float softness = 0.5f;     // metres over which a particle fades into the scene behind it
+    float softness = 0.5f;         // metres over which a particle fades into the scene behind it
     bool greaterIsCloser = false;  // reverse-Z (CompareFunc::Greater)
 };
 

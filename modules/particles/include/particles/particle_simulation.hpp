@@ -26,7 +26,7 @@ struct ParticleOptions {
     // dust is thick at the wheels and thins along its trail, so a camera behind sees the car
     // through it rather than a wall of dust.
     float thinning = 2.5f;
-    bool halfResolution = true;        // the layer at half size, upsampled by depth
+    bool halfResolution = true;  // the layer at half size, upsampled by depth
 };
 
 // Throws engine::Error naming the field: NaN/inf, sizes <= 0, maxParticles over the cap.
@@ -35,11 +35,11 @@ void validate(const ParticleOptions& options);
 // On the car: where its wheels are (model space) and how much they throw up.
 struct WheelEmitter {
     glm::vec3 wheels[4] = {{-0.8f, 0.1f, 1.3f}, {0.8f, 0.1f, 1.3f}, {-0.8f, 0.1f, -1.3f}, {0.8f, 0.1f, -1.3f}};
-    float rate = 400.0f;            // particles per second, all wheels together (>= 0)
-    float sprayFraction = 0.25f;    // of them additive spray, the rest alpha-blended dust
-    glm::vec4 dust{0.55f, 0.45f, 0.33f, 0.55f};   // straight colour and alpha
+    float rate = 400.0f;                         // particles per second, all wheels together (>= 0)
+    float sprayFraction = 0.25f;                 // of them additive spray, the rest alpha-blended dust
+    glm::vec4 dust{0.55f, 0.45f, 0.33f, 0.55f};  // straight colour and alpha
     glm::vec4 spray{0.9f, 0.95f, 1.0f, 0.35f};
-    float inherit = 0.6f;           // fraction of the car's velocity the dust keeps (its wake)
+    float inherit = 0.6f;  // fraction of the car's velocity the dust keeps (its wake)
     // Kept by the simulation: where the emitter was last step, for its velocity.
     glm::vec3 lastPosition{0.0f};
     bool hasLastPosition = false;

@@ -20,7 +20,7 @@ namespace transparency {
 struct SsamPlusOptions {
     CoverageModel coverage = CoverageModel::EqualLayers;
     ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::RG16F;  // ADD must not saturate at 1
-    float colorAlphaReference = 64.0f / 255.0f;                        // the colour pass's ([Hathaway 2010] §3.5.3)
+    float colorAlphaReference = 64.0f / 255.0f;                      // the colour pass's ([Hathaway 2010] §3.5.3)
 };
 
 struct TechniqueOptions {

@@ -39,7 +39,7 @@ std::optional<TechniqueKind> parseTechnique(std::string_view name);
 struct FoliageDraw {
     engine::render::MaskedBatch batch;
     std::span<const engine::render::Instance> instances;  // the contents of batch.instances
-    engine::render::BoundingBox meshBounds;                              // of one instance, in model space
+    engine::render::BoundingBox meshBounds;               // of one instance, in model space
     float alphaCutoff = 0.5f;  // the material's (glTF alphaCutoff): alpha-test techniques use it
 };
 
@@ -52,11 +52,11 @@ struct FoliageFrame {
 
 // What the exact reference found in its last frame (Technique::referenceReport).
 struct ReferenceReport {
-    std::uint64_t fragments = 0;          // fragments kept and composited
-    std::size_t maxFragmentsPerPixel = 0; // the deepest pixel's fragment count (before the cap)
-    std::uint64_t pixelsOverCap = 0;      // pixels with more than referenceFragmentsPerPixel fragments:
-                                          // only their nearest cap were composited (logged as a warning)
-    std::uint64_t fragmentsOverCap = 0;   // fragments those pixels lost
+    std::uint64_t fragments = 0;           // fragments kept and composited
+    std::size_t maxFragmentsPerPixel = 0;  // the deepest pixel's fragment count (before the cap)
+    std::uint64_t pixelsOverCap = 0;       // pixels with more than referenceFragmentsPerPixel fragments:
+                                           // only their nearest cap were composited (logged as a warning)
+    std::uint64_t fragmentsOverCap = 0;    // fragments those pixels lost
     bool exact() const { return pixelsOverCap == 0; }
 };
 
@@ -85,7 +85,8 @@ public:
     // (which may draw into the MSAA targets before resolving, as alpha testing does); SSAM
     // declares its mask, colour and composite passes, which are empty with no foliage in view.
     // `frame` and what it points to must outlive the graph's execute().
-    virtual engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, engine::render::FrameTargets& opaque,
+    virtual engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph,
+                                                 engine::render::FrameTargets& opaque,
                                                  const engine::render::ColorDepth& drawn,
                                                  const engine::render::ColorDepth& resolved, const FoliageFrame& frame);
     // The intermediate targets of the last frame, for captures; empty when there are none.

@@ -9,9 +9,9 @@
 namespace water {
 
 struct Ripples {
-    float amplitude = 0.18f;   // tilt of the normal, radians-ish (slope of the waves)
-    float wavelength = 1.7f;   // model-space units
-    float speed = 0.6f;        // waves per second
+    float amplitude = 0.18f;  // tilt of the normal, radians-ish (slope of the waves)
+    float wavelength = 1.7f;  // model-space units
+    float speed = 0.6f;       // waves per second
 };
 
 // Throws engine::Error naming the field when a value is NaN, infinite or negative

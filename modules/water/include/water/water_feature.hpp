@@ -43,7 +43,8 @@ private:
     Ripples ripples_;
     engine::scene::SimulationFrame frame_;
     std::map<engine::ecs::Entity, Surface> surfaces_;
-    std::map<std::pair<engine::render::CompareFunc, bool>, engine::render::Owned<engine::render::PipelineHandle>> pipelines_;
+    std::map<std::pair<engine::render::CompareFunc, bool>, engine::render::Owned<engine::render::PipelineHandle>>
+        pipelines_;
     engine::render::FrameBufferPool frameInstances_;  // instance data, reused frame after frame
 };
 

@@ -69,9 +69,9 @@ public:
 
 private:
     struct DeformedPart {
-        std::size_t slot = 0;   // index into partsOf(model)
-        std::uint32_t part = 0; // library part
-        bool flutter = false;   // leaf cards (alpha-tested parts) flutter; trunks only bend
+        std::size_t slot = 0;    // index into partsOf(model)
+        std::uint32_t part = 0;  // library part
+        bool flutter = false;    // leaf cards (alpha-tested parts) flutter; trunks only bend
         std::vector<engine::render::Vertex> vertices;
         std::vector<glm::vec3> push;
         engine::render::Owned<engine::render::BufferHandle> buffer;
@@ -85,14 +85,15 @@ private:
     void releasePlant(engine::ecs::Registry& registry, engine::ecs::Entity e, DeformedPlant& plant);
     // A vertex buffer for a deformed copy of library part `part`: a spare one, or a new one.
     engine::render::Owned<engine::render::BufferHandle> partBuffer(std::uint32_t part,
-                                                                  std::span<const engine::render::Vertex> vertices);
+                                                                   std::span<const engine::render::Vertex> vertices);
     void destroySpares();
 
     const engine::scene::MeshLibrary& library_;
     WindFrame frame_;
     WindStats stats_;
     std::map<engine::ecs::Entity, DeformedPlant> plants_;  // ordered: deterministic walks
-    std::map<std::uint32_t, std::vector<engine::render::Owned<engine::render::BufferHandle>>> spares_;  // by library part
+    std::map<std::uint32_t, std::vector<engine::render::Owned<engine::render::BufferHandle>>>
+        spares_;  // by library part
 };
 
 }  // namespace wind

@@ -60,7 +60,7 @@ enum class Status : int {
     ShaderFailed,           // one of SSAM's programs does not compile or link here
     CallbackFailed,         // the host's draw callback threw (the exception is not rethrown)
     OutOfMemory,
-    Internal,               // an unexpected error inside SSAM (a bug: the message says what)
+    Internal,  // an unexpected error inside SSAM (a bug: the message says what)
 };
 const char* statusName(Status status) noexcept;  // "ok", "invalid argument", ...
 
@@ -107,10 +107,10 @@ enum class DepthTest : int { Less, LessEqual, Greater, GreaterEqual };
 
 // The paper's knobs, with its values as defaults (the same as ssam::Config's).
 struct Settings {
-    float maskLerp = 0.85f;                      // mask = lerp(MAX, SUM, maskLerp) (§3.5.4, Listing 3.2)
-    float colorAlphaReference = 64.0f / 255.0f;  // colour-pass alpha test (§3.5.3)
+    float maskLerp = 0.85f;                                    // mask = lerp(MAX, SUM, maskLerp) (§3.5.4, Listing 3.2)
+    float colorAlphaReference = 64.0f / 255.0f;                // colour-pass alpha test (§3.5.3)
     float foliageClearColor[4] = {0.16f, 0.22f, 0.08f, 0.0f};  // where the mask covers but no colour (§3.6.1)
-    bool squareMask = true;                      // the squared alpha trick (§3.6.2)
+    bool squareMask = true;                                    // the squared alpha trick (§3.6.2)
     MaskPrecision maskPrecision = MaskPrecision::Rgba8;
     DepthTest depthTest = DepthTest::Less;
 };
@@ -173,12 +173,12 @@ struct GlFunctions;
 // the colour pass discards alpha < alphaReference and writes base rgb * (ambient + light * lambert).
 struct FoliageProgram {
     FoliagePass pass = FoliagePass::Mask;
-    unsigned int program = 0;  // bound with glUseProgram
-    int modelUniform = -1;             // mat4, identity until set
-    int baseColorFactorUniform = -1;   // vec4, (1,1,1,1) until set; its alpha scales the mask too
-    int hasTextureUniform = -1;        // bool, false until bindBaseColorTexture(non-zero)
-    int baseColorTextureUnit = 0;      // the sampler reads GL_TEXTURE0 + this unit
-    float alphaReference = 0.0f;       // colour pass: Settings::colorAlphaReference; mask pass: 0
+    unsigned int program = 0;         // bound with glUseProgram
+    int modelUniform = -1;            // mat4, identity until set
+    int baseColorFactorUniform = -1;  // vec4, (1,1,1,1) until set; its alpha scales the mask too
+    int hasTextureUniform = -1;       // bool, false until bindBaseColorTexture(non-zero)
+    int baseColorTextureUnit = 0;     // the sampler reads GL_TEXTURE0 + this unit
+    float alphaReference = 0.0f;      // colour pass: Settings::colorAlphaReference; mask pass: 0
 
     void setModel(const float columnMajor[16]) const noexcept;
     void setBaseColorFactor(float r, float g, float b, float a) const noexcept;

@@ -14,8 +14,9 @@ TintFeature::TintFeature(Backend& backend, const glm::vec3& color)
     p.name = "tint (multiply)";
     p.program = program_.get();
     // colour = frame * tint; the frame's alpha is left as it is.
-    p.blend[0] = {true, BlendFactor::Zero, BlendFactor::SrcColor, BlendOp::Add,
-                  BlendFactor::Zero, BlendFactor::One, BlendOp::Add, WriteRGB};
+    p.blend[0] = {true,         BlendFactor::Zero, BlendFactor::SrcColor,
+                  BlendOp::Add, BlendFactor::Zero, BlendFactor::One,
+                  BlendOp::Add, WriteRGB};
     pipeline_ = Owned<PipelineHandle>(backend, backend.createPipeline(p));
 }
 

@@ -48,8 +48,8 @@ bool leafOverBlue(Backend& backend, const char* name) {
     // mask = lerp(0.5, 0.5, 0.85) = 0.5 (stored 128/255), squared: 0.2520; red = m^2, blue = 1 - m^2.
     const float m = 128.0f / 255.0f, tolerance = 1.0f / 255.0f;
     const bool ok = std::fabs(red - m * m) <= tolerance && std::fabs(blue - (1.0f - m * m)) <= tolerance;
-    std::printf("%s: centre pixel red %.4f blue %.4f (expected %.4f, %.4f): %s\n", name, red, blue, m * m,
-                1.0f - m * m, ok ? "ok" : "WRONG");
+    std::printf("%s: centre pixel red %.4f blue %.4f (expected %.4f, %.4f): %s\n", name, red, blue, m * m, 1.0f - m * m,
+                ok ? "ok" : "WRONG");
     return ok;
 }
 

@@ -28,7 +28,7 @@
 namespace engine::assets {
 
 enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };  // glTF material.alphaMode
-const char* alphaModeName(AlphaMode mode);                     // "OPAQUE", "MASK", "BLEND"
+const char* alphaModeName(AlphaMode mode);                    // "OPAQUE", "MASK", "BLEND"
 
 // KHR_texture_transform: uv' = T(offset) * R(rotation) * S(scale) * uv.
 struct TextureTransform {
@@ -68,7 +68,7 @@ struct Texture {
 
 struct Image {
     std::string name;
-    std::string uri;  // the external file's URI as written; empty when embedded
+    std::string uri;   // the external file's URI as written; empty when embedded
     RgbaImage pixels;  // straight alpha, sRGB codes, as glTF stores them (empty if images were not loaded)
 };
 
@@ -130,20 +130,20 @@ struct LoadedModel {
     std::vector<Node> nodes;  // all nodes of the file; world transforms for every one
     int scene = -1;           // the scene loaded; -1 when the file has none (then every root node is used)
     std::vector<int> sceneRoots;
-    std::vector<int> sceneNodes;  // every node of the scene, parents before children
-    Bounds bounds;                // world-space bounds of the scene's meshes
+    std::vector<int> sceneNodes;        // every node of the scene, parents before children
+    Bounds bounds;                      // world-space bounds of the scene's meshes
     std::vector<std::string> warnings;  // also logged
 };
 
 struct LoadOptions {
-    int scene = -1;           // -1: the file's default scene (scene 0 if it names none)
-    bool loadImages = true;   // false: Image::pixels stay empty (no decoding)
+    int scene = -1;          // -1: the file's default scene (scene 0 if it names none)
+    bool loadImages = true;  // false: Image::pixels stay empty (no decoding)
     // Apply KHR_texture_transform of the base colour texture to Vertex::uv, so renderers
     // need not know the extension (the transform stays on the material for reference).
     bool bakeTextureTransform = true;
     ImageLimits imageLimits;
-    std::uint64_t maxFileBytes = std::uint64_t{1} << 30;   // any one file read: .gltf, .glb, .bin, image
-    std::uint64_t maxVertices = std::uint64_t{1} << 26;    // per primitive, after decoding (Draco included)
+    std::uint64_t maxFileBytes = std::uint64_t{1} << 30;  // any one file read: .gltf, .glb, .bin, image
+    std::uint64_t maxVertices = std::uint64_t{1} << 26;   // per primitive, after decoding (Draco included)
 };
 
 // Throws engine::Error("<file>: <field>: <problem>") for missing, unreadable, malformed or

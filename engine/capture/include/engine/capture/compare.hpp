@@ -23,10 +23,10 @@
 namespace engine::capture {
 
 struct CompareOptions {
-    float failThreshold = 1e-6f;  // idiff -fail
-    float warnThreshold = 1e-6f;  // idiff -warn
-    float failPercent = 0.0f;     // idiff -failpercent: % of pixels allowed over failThreshold
-    float warnPercent = 0.0f;     // idiff -warnpercent
+    float failThreshold = 1e-6f;                         // idiff -fail
+    float warnThreshold = 1e-6f;                         // idiff -warn
+    float failPercent = 0.0f;                            // idiff -failpercent: % of pixels allowed over failThreshold
+    float warnPercent = 0.0f;                            // idiff -warnpercent
     float hardFail = std::numeric_limits<float>::max();  // idiff -hardfail: any error above fails
     float hardWarn = std::numeric_limits<float>::max();  // idiff -hardwarn
 };

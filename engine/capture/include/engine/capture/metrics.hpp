@@ -54,8 +54,7 @@ struct FlipOptions {
 // first (LDR-ꟻLIP). Symmetric: flip(a, b) == flip(b, a) exactly (see metrics_flip.cpp for
 // the pipeline, its constants and where it departs from the reference implementation).
 // When `errorMap` is given it receives the per-pixel error as a one-channel ("Y") image.
-double flip(const Image& reference, const Image& test, const FlipOptions& options = {},
-            Image* errorMap = nullptr);
+double flip(const Image& reference, const Image& test, const FlipOptions& options = {}, Image* errorMap = nullptr);
 
 // ---- Temporal flicker ------------------------------------------------------------------
 // Mean over all pixels and all consecutive frame pairs of |Y'(t+1) - Y'(t)|, Y' being the

@@ -21,9 +21,21 @@ void print(Level lvl, const Args&... args) {
     write(lvl, out.str());
 }
 
-template <typename... Args> void debug(const Args&... args) { print(Level::Debug, args...); }
-template <typename... Args> void info(const Args&... args) { print(Level::Info, args...); }
-template <typename... Args> void warn(const Args&... args) { print(Level::Warn, args...); }
-template <typename... Args> void error(const Args&... args) { print(Level::Error, args...); }
+template <typename... Args>
+void debug(const Args&... args) {
+    print(Level::Debug, args...);
+}
+template <typename... Args>
+void info(const Args&... args) {
+    print(Level::Info, args...);
+}
+template <typename... Args>
+void warn(const Args&... args) {
+    print(Level::Warn, args...);
+}
+template <typename... Args>
+void error(const Args&... args) {
+    print(Level::Error, args...);
+}
 
 }  // namespace engine::log

@@ -10,10 +10,10 @@
 namespace engine::render {
 
 enum class AlphaFailMode : std::uint8_t {
-    Keep,    // nothing written (colour, alpha and depth kept as they are) = discard
-    FbOnly,  // colour and alpha written, depth not
-    ZbOnly,  // depth written, colour and alpha not
-    RgbOnly, // colour written, alpha and depth not
+    Keep,     // nothing written (colour, alpha and depth kept as they are) = discard
+    FbOnly,   // colour and alpha written, depth not
+    ZbOnly,   // depth written, colour and alpha not
+    RgbOnly,  // colour written, alpha and depth not
 };
 
 inline constexpr AlphaFailMode kAllAlphaFailModes[] = {AlphaFailMode::Keep, AlphaFailMode::FbOnly,
@@ -30,7 +30,9 @@ struct AlphaTest {
     bool passes(float alpha) const { return !enabled || compare(func, alpha, reference); }
 
     static AlphaTest off() { return {}; }
-    static AlphaTest discardBelow(float ref) { return {true, CompareFunc::GreaterEqual, ref, AlphaFailMode::Keep, false}; }
+    static AlphaTest discardBelow(float ref) {
+        return {true, CompareFunc::GreaterEqual, ref, AlphaFailMode::Keep, false};
+    }
 };
 
 const char* alphaFailModeName(AlphaFailMode mode);

@@ -23,10 +23,10 @@ namespace engine::render {
 // What a pipeline became after creation-time simplification, so callers and tests can
 // see which work was skipped ([PCSX2] "alpha testing is useless here").
 struct PipelineInfo {
-    bool alphaTestDropped = false;  // the test could not change the result
-    bool blendIsPlainWrite = false; // ONE/ZERO ADD on every target: the no-blend path
-    bool exact = true;              // false where a backend can only approximate the state (GL fail modes)
-    std::string note;               // why, when not exact
+    bool alphaTestDropped = false;   // the test could not change the result
+    bool blendIsPlainWrite = false;  // ONE/ZERO ADD on every target: the no-blend path
+    bool exact = true;               // false where a backend can only approximate the state (GL fail modes)
+    std::string note;                // why, when not exact
 };
 
 // Texels read back, one float per stored channel, row 0 at the top. Normalized formats

@@ -29,11 +29,21 @@ enum class BlendFactor : std::uint8_t {
 
 enum class BlendOp : std::uint8_t { Add, Subtract, RevSubtract, Min, Max };
 
-inline constexpr BlendFactor kAllBlendFactors[] = {
-    BlendFactor::Zero,          BlendFactor::One,           BlendFactor::SrcColor,      BlendFactor::InvSrcColor,
-    BlendFactor::SrcAlpha,      BlendFactor::InvSrcAlpha,   BlendFactor::DstColor,      BlendFactor::InvDstColor,
-    BlendFactor::DstAlpha,      BlendFactor::InvDstAlpha,   BlendFactor::SrcAlphaSat,   BlendFactor::ConstantColor,
-    BlendFactor::InvConstantColor, BlendFactor::ConstantAlpha, BlendFactor::InvConstantAlpha};
+inline constexpr BlendFactor kAllBlendFactors[] = {BlendFactor::Zero,
+                                                   BlendFactor::One,
+                                                   BlendFactor::SrcColor,
+                                                   BlendFactor::InvSrcColor,
+                                                   BlendFactor::SrcAlpha,
+                                                   BlendFactor::InvSrcAlpha,
+                                                   BlendFactor::DstColor,
+                                                   BlendFactor::InvDstColor,
+                                                   BlendFactor::DstAlpha,
+                                                   BlendFactor::InvDstAlpha,
+                                                   BlendFactor::SrcAlphaSat,
+                                                   BlendFactor::ConstantColor,
+                                                   BlendFactor::InvConstantColor,
+                                                   BlendFactor::ConstantAlpha,
+                                                   BlendFactor::InvConstantAlpha};
 inline constexpr BlendOp kAllBlendOps[] = {BlendOp::Add, BlendOp::Subtract, BlendOp::RevSubtract, BlendOp::Min,
                                            BlendOp::Max};
 
@@ -62,18 +72,25 @@ struct BlendState {
     static BlendState opaque() { return {}; }
     // Straight-alpha "over" ([Hargreaves 2009] "conventional"), alpha accumulated as in [Turánszki 2017].
     static BlendState alphaOver() {
-        return {true, BlendFactor::SrcAlpha, BlendFactor::InvSrcAlpha, BlendOp::Add,
-                BlendFactor::One, BlendFactor::InvSrcAlpha, BlendOp::Add, WriteAll};
+        return {true,
+                BlendFactor::SrcAlpha,
+                BlendFactor::InvSrcAlpha,
+                BlendOp::Add,
+                BlendFactor::One,
+                BlendFactor::InvSrcAlpha,
+                BlendOp::Add,
+                WriteAll};
     }
     // Premultiplied "over" ([Hargreaves 2009], [Turánszki 2017] layer blend).
     static BlendState premultipliedOver() {
-        return {true, BlendFactor::One, BlendFactor::InvSrcAlpha, BlendOp::Add,
-                BlendFactor::One, BlendFactor::InvSrcAlpha, BlendOp::Add, WriteAll};
+        return {true,         BlendFactor::One, BlendFactor::InvSrcAlpha,
+                BlendOp::Add, BlendFactor::One, BlendFactor::InvSrcAlpha,
+                BlendOp::Add, WriteAll};
     }
     // The SSAM mask ([Hathaway 2010] Table 3.1): RGB = MAX, A = ADD, all factors ONE.
     static BlendState maxRgbAddAlpha() {
-        return {true, BlendFactor::One, BlendFactor::One, BlendOp::Max,
-                BlendFactor::One, BlendFactor::One, BlendOp::Add, WriteAll};
+        return {true,         BlendFactor::One, BlendFactor::One, BlendOp::Max, BlendFactor::One, BlendFactor::One,
+                BlendOp::Add, WriteAll};
     }
 };
 

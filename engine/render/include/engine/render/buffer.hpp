@@ -17,7 +17,9 @@ struct BufferDesc {
 
 // The size of one element of a buffer of `kind`: BufferDesc::size is a multiple of it.
 constexpr std::uint64_t elementSize(BufferKind kind) {
-    return kind == BufferKind::Vertex ? sizeof(Vertex) : kind == BufferKind::Index ? sizeof(std::uint32_t) : sizeof(Instance);
+    return kind == BufferKind::Vertex  ? sizeof(Vertex)
+           : kind == BufferKind::Index ? sizeof(std::uint32_t)
+                                       : sizeof(Instance);
 }
 
 }  // namespace engine::render

@@ -8,9 +8,9 @@ namespace engine::render {
 
 enum class CompareFunc : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 
-inline constexpr CompareFunc kAllCompareFuncs[] = {CompareFunc::Never,   CompareFunc::Less,     CompareFunc::Equal,
-                                                   CompareFunc::LessEqual, CompareFunc::Greater, CompareFunc::NotEqual,
-                                                   CompareFunc::GreaterEqual, CompareFunc::Always};
+inline constexpr CompareFunc kAllCompareFuncs[] = {
+    CompareFunc::Never,   CompareFunc::Less,     CompareFunc::Equal,        CompareFunc::LessEqual,
+    CompareFunc::Greater, CompareFunc::NotEqual, CompareFunc::GreaterEqual, CompareFunc::Always};
 
 // NaN compares false with everything, so only Never/NotEqual/Always have a defined answer
 // for it: exactly IEEE's, as GPUs do.

@@ -36,9 +36,9 @@ struct PlanStep {
 
 struct FailModePlan {
     std::vector<PlanStep> steps;
-    bool perTriangle = false;       // issue the steps triangle by triangle
+    bool perTriangle = false;  // issue the steps triangle by triangle
     bool exact = true;
-    std::string note;               // how it was emulated / why it is inexact
+    std::string note;  // how it was emulated / why it is inexact
 };
 
 struct FailModeInputs {
@@ -48,7 +48,7 @@ struct FailModeInputs {
     CompareFunc depthFunc = CompareFunc::Less;
     bool anyRgbWrite = true;
     bool anyAlphaWrite = true;
-    bool rgbReadsDstAlpha = false;  // some blending target's RGB factors use destination alpha
+    bool rgbReadsDstAlpha = false;    // some blending target's RGB factors use destination alpha
     bool perTriangleAllowed = false;  // FailModeEmulation::PerTriangle
 };
 

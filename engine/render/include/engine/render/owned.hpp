@@ -13,8 +13,7 @@ class Owned {
 public:
     Owned() = default;
     Owned(Backend& backend, Handle handle) : backend_(&backend), handle_(handle) {}
-    Owned(Owned&& other) noexcept
-        : backend_(other.backend_), handle_(std::exchange(other.handle_, Handle{})) {}
+    Owned(Owned&& other) noexcept : backend_(other.backend_), handle_(std::exchange(other.handle_, Handle{})) {}
     Owned& operator=(Owned&& other) noexcept {
         if (this != &other) {
             reset();

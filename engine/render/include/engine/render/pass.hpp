@@ -46,12 +46,12 @@ struct PassDesc {
 
 struct DrawDesc {
     PipelineHandle pipeline;
-    DrawParams params;       // the program's parameter struct
-    BufferHandle vertices;   // Vertex[]; unused by full-screen programs
-    BufferHandle indices;    // uint32 indices; null: non-indexed
-    std::uint32_t first = 0; // first index (or vertex when non-indexed)
-    std::uint32_t count = 0; // index (or vertex) count, a multiple of 3
-    BufferHandle instances;  // Instance[]; null: one instance with the identity transform
+    DrawParams params;        // the program's parameter struct
+    BufferHandle vertices;    // Vertex[]; unused by full-screen programs
+    BufferHandle indices;     // uint32 indices; null: non-indexed
+    std::uint32_t first = 0;  // first index (or vertex when non-indexed)
+    std::uint32_t count = 0;  // index (or vertex) count, a multiple of 3
+    BufferHandle instances;   // Instance[]; null: one instance with the identity transform
     std::uint32_t instanceCount = 1;
     std::optional<Rect> scissor;
 };

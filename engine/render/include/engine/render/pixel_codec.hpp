@@ -16,9 +16,7 @@
 namespace engine::render {
 
 // IEC 61966-2-1 curves, exact formulas.
-inline float srgbToLinearExact(float s) {
-    return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
-}
+inline float srgbToLinearExact(float s) { return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f); }
 inline float linearToSrgbExact(float l) {
     return l <= 0.0031308f ? l * 12.92f : 1.055f * std::pow(l, 1.0f / 2.4f) - 0.055f;
 }

@@ -63,7 +63,7 @@ struct ProgramRef {
     ProgramHandle created;  // valid: this program, else `standard`
 
     ProgramRef() = default;
-    ProgramRef(ProgramKind kind) : standard(kind) {}        // NOLINT: implicit by design
+    ProgramRef(ProgramKind kind) : standard(kind) {}       // NOLINT: implicit by design
     ProgramRef(ProgramHandle handle) : created(handle) {}  // NOLINT: implicit by design
     friend bool operator==(const ProgramRef&, const ProgramRef&) = default;
 };

@@ -60,12 +60,12 @@ enum class TextureUse : std::uint8_t {
     FullSize,  // as Sampled, and at least the target's size: read at every target pixel
 };
 struct TextureField {
-    const char* name = "";  // the GLSL sampler, for messages
+    const char* name = "";   // the GLSL sampler, for messages
     std::size_t offset = 0;  // offsetof the TextureHandle (Texel) or TextureBinding (Sampled)
-    int unit = 0;              // the GLSL layout(binding = unit)
+    int unit = 0;            // the GLSL layout(binding = unit)
     TextureRead read = TextureRead::Texel;
     TextureUse use = TextureUse::Sampled;
-    bool optional = false;     // a null handle is allowed (the program reads presentUniform)
+    bool optional = false;                       // a null handle is allowed (the program reads presentUniform)
     const char* presentUniform = nullptr;        // set to whether the handle is non-null
     const char* filterUniform = nullptr;         // Sampled: the binding's Filter, as an int
     const char* premultipliedUniform = nullptr;  // Sampled: whether the texture is premultiplied

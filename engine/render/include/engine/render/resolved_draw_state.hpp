@@ -50,8 +50,8 @@ struct ResolvedDrawState {
     bool anyAlphaWrite = false;
     bool rgbReadsDstAlpha = false;  // some blending target's RGB factors read destination alpha
 
-    bool depthTest = false;  // asked for and a depth target is bound
-    bool depthWrite = false; // only with the test
+    bool depthTest = false;   // asked for and a depth target is bound
+    bool depthWrite = false;  // only with the test
     CompareFunc depthFunc = CompareFunc::Less;
 
     AlphaTest alphaTest;            // enabled only where it can change what the draw writes

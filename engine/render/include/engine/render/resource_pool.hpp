@@ -34,7 +34,8 @@ public:
     T& get(Handle<Tag> h) { return slots_[check(h)].value; }
     const T& get(Handle<Tag> h) const { return slots_[check(h)].value; }
     bool alive(Handle<Tag> h) const {
-        return h.valid() && h.index < slots_.size() && slots_[h.index].alive && slots_[h.index].generation == h.generation;
+        return h.valid() && h.index < slots_.size() && slots_[h.index].alive &&
+               slots_[h.index].generation == h.generation;
     }
 
     void remove(Handle<Tag> h) {

@@ -34,9 +34,9 @@ namespace engine::scene {
 struct FeatureFrame {
     render::Backend& backend;
     const MeshLibrary& library;
-    const DrawLists& lists;      // this frame's extraction (water draws lists.blend)
-    render::TextureHandle color; // the frame so far (imported in the graph); passes load and draw onto it
-    render::TextureHandle depth; // D32F opaque + foliage depth; load, test, never clear
+    const DrawLists& lists;       // this frame's extraction (water draws lists.blend)
+    render::TextureHandle color;  // the frame so far (imported in the graph); passes load and draw onto it
+    render::TextureHandle depth;  // D32F opaque + foliage depth; load, test, never clear
     int width = 0;
     int height = 0;
     glm::mat4 view{1.0f};
@@ -44,7 +44,7 @@ struct FeatureFrame {
     glm::mat4 viewProj{1.0f};
     glm::vec3 eye{0.0f};
     render::DirectionalLight sun;
-    float time = 0.0f;  // simulated seconds (deterministic under --fixed-dt)
+    float time = 0.0f;                                          // simulated seconds (deterministic under --fixed-dt)
     render::CompareFunc depthFunc = render::CompareFunc::Less;  // Greater for reverse-Z
 };
 

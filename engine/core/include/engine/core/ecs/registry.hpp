@@ -160,8 +160,8 @@ private:
     };
 
     SparseSet live_{"live entities"};
-    std::vector<Slot> slots_;               // by entity index
-    std::vector<std::uint32_t> freeSlots_;  // LIFO: a recently freed slot is still in cache
+    std::vector<Slot> slots_;                        // by entity index
+    std::vector<std::uint32_t> freeSlots_;           // LIFO: a recently freed slot is still in cache
     std::vector<std::unique_ptr<SparseSet>> pools_;  // by ComponentTypeId; null = never used here
     std::size_t retiredSlots_ = 0;
 };

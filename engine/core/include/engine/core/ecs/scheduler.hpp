@@ -38,8 +38,8 @@ using System = std::function<void(Registry&, CommandBuffer&)>;
 
 class Scheduler {
 public:
-    static constexpr std::array<std::string_view, 5> kDefaultPhases{
-        phase::input, phase::simulation, phase::deformation, phase::camera, phase::extraction};
+    static constexpr std::array<std::string_view, 5> kDefaultPhases{phase::input, phase::simulation, phase::deformation,
+                                                                    phase::camera, phase::extraction};
 
     Scheduler();  // the default phases
     // Custom phases, run in this order; throws on an empty list, empty or duplicate names.

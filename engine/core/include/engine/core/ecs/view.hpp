@@ -38,8 +38,7 @@ constexpr bool allDistinct() {
         return true;
     } else {
         return []<class First, class... Rest>(std::type_identity<First>, std::type_identity<Rest>...) {
-            return (!std::is_same_v<std::remove_cv_t<First>, std::remove_cv_t<Rest>> && ...) &&
-                   allDistinct<Rest...>();
+            return (!std::is_same_v<std::remove_cv_t<First>, std::remove_cv_t<Rest>> && ...) && allDistinct<Rest...>();
         }(std::type_identity<Ts>{}...);
     }
 }
@@ -78,7 +77,8 @@ public:
             } else {
                 return [&]<std::size_t... I>(std::index_sequence<I...>) {
                     return value_type{e, std::get<I>(pools_)->componentAt(positions_[I])...};
-                }(std::index_sequence_for<Ts...>{});
+                }
+                (std::index_sequence_for<Ts...>{});
             }
         }
         Iterator& operator++() noexcept {
@@ -113,7 +113,7 @@ public:
         std::size_t position_ = 0;
         std::size_t end_ = 0;
         Pools pools_{};
-        FirstComponent* components_ = nullptr;        // kCount == 1: the driver's components
+        FirstComponent* components_ = nullptr;         // kCount == 1: the driver's components
         std::array<std::size_t, kCount> positions_{};  // kCount >= 2: the current entity in each pool
     };
 
@@ -153,7 +153,8 @@ public:
                 [&]<std::size_t... I>(std::index_sequence<I...>) {
                     if constexpr (withEntity) fn(e, std::get<I>(pools_)->componentAt(positions[I])...);
                     else fn(std::get<I>(pools_)->componentAt(positions[I])...);
-                }(std::index_sequence_for<Ts...>{});
+                }
+                (std::index_sequence_for<Ts...>{});
             }
         }
     }
@@ -186,7 +187,8 @@ private:
                         std::array<std::size_t, kCount>& positions) noexcept {
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
             return (((positions[I] = std::get<I>(pools)->find(e, position)) != SparseSet::npos) && ...);
-        }(std::index_sequence_for<Ts...>{});
+        }
+        (std::index_sequence_for<Ts...>{});
     }
 
     SparseSet* liveEntities_;

@@ -21,10 +21,9 @@ inline FrameGraphTextureDesc graphDescOf(const TextureDesc& d) {
 // Transient textures become sampled render targets of the backend, destroyed on release.
 inline TextureAllocator backendTextureAllocator(Backend& backend) {
     return {[&backend](std::string_view name, const FrameGraphTextureDesc& d) {
-                return toConcrete(backend.createTexture(renderTargetDesc(std::string(name), static_cast<int>(d.width),
-                                                                         static_cast<int>(d.height),
-                                                                         static_cast<Format>(d.format),
-                                                                         static_cast<int>(d.samples))));
+                return toConcrete(backend.createTexture(
+                    renderTargetDesc(std::string(name), static_cast<int>(d.width), static_cast<int>(d.height),
+                                     static_cast<Format>(d.format), static_cast<int>(d.samples))));
             },
             [&backend](ConcreteTexture c, const FrameGraphTextureDesc&) { backend.destroy(toTextureHandle(c)); }};
 }

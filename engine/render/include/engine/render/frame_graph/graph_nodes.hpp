@@ -46,8 +46,8 @@ private:
 struct PassNode {
     std::string name;
     std::unique_ptr<PassExecutor> executor;
-    std::vector<std::uint32_t> reads;    // version nodes
-    std::vector<std::uint32_t> writes;   // version nodes this pass produced
+    std::vector<std::uint32_t> reads;   // version nodes
+    std::vector<std::uint32_t> writes;  // version nodes this pass produced
     bool sideEffect = false;
     bool markedEmpty = false;
 

@@ -50,6 +50,7 @@ public:
     std::string describe() const override;
 
     struct Impl;
+
 private:
     explicit HeadlessEglContext(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
@@ -90,6 +91,7 @@ public:
     GLFWwindow* window() const;
 
     struct Impl;
+
 private:
     explicit GlfwWindowContext(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

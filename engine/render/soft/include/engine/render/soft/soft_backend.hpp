@@ -16,8 +16,8 @@
 namespace engine::render::soft {
 
 struct SoftOptions {
-    int threads = 0;      // 0: all hardware threads
-    int tileSize = 64;    // pixels, a multiple of 8 (llvmpipe's choice by default)
+    int threads = 0;           // 0: all hardware threads
+    int tileSize = 64;         // pixels, a multiple of 8 (llvmpipe's choice by default)
     bool debugChecks = false;  // count NaN/Inf stored into float targets and log them per pass
     // The wide kernels' instruction set; unset: the widest this CPU runs (bestSimdIsa()). One
     // this CPU does not run is refused at creation. Images are the same bits with any.
@@ -33,13 +33,13 @@ struct SoftOptions {
 struct SoftStats {
     std::uint64_t passes = 0;
     std::uint64_t draws = 0;
-    std::uint64_t trianglesIn = 0;       // primitives submitted
+    std::uint64_t trianglesIn = 0;          // primitives submitted
     std::uint64_t trianglesRasterized = 0;  // after clipping, culling, dropping degenerate/NaN ones
-    std::uint64_t trianglesDropped = 0;  // degenerate, NaN or fully clipped
-    std::uint64_t trianglesReused = 0;   // of trianglesIn: set up in the pass before (reuseGeometry)
-    std::uint64_t pixelsShaded = 0;      // program invocations
-    std::uint64_t pixelsTouched = 0;     // pixels for which any sample passed coverage + depth
-    std::uint64_t nonFiniteStores = 0;   // NaN/Inf written to float targets (debugChecks only)
+    std::uint64_t trianglesDropped = 0;     // degenerate, NaN or fully clipped
+    std::uint64_t trianglesReused = 0;      // of trianglesIn: set up in the pass before (reuseGeometry)
+    std::uint64_t pixelsShaded = 0;         // program invocations
+    std::uint64_t pixelsTouched = 0;        // pixels for which any sample passed coverage + depth
+    std::uint64_t nonFiniteStores = 0;      // NaN/Inf written to float targets (debugChecks only)
 };
 
 // Fragment capture (engine/render/fragment_capture.hpp), by the names it had here.

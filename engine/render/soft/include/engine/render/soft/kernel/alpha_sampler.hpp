@@ -49,8 +49,9 @@ public:
         for (int i = 0; i <= last_; ++i) {
             const MipLevel& l = texture.levels[i];
             decoded = decoded && !l.alpha.empty();
-            levels_[i] = {reinterpret_cast<const std::uint8_t*>(l.texels.data()), l.alpha.empty() ? nullptr : l.alpha.data(),
-                          l.rgba.empty() ? nullptr : l.rgba.data(), l.width, l.height};
+            levels_[i] = {reinterpret_cast<const std::uint8_t*>(l.texels.data()),
+                          l.alpha.empty() ? nullptr : l.alpha.data(), l.rgba.empty() ? nullptr : l.rgba.data(), l.width,
+                          l.height};
         }
         size0_ = glm::vec2(texture.levels[0].width, texture.levels[0].height);
         // lookup4 addresses clamp-to-edge and power-of-two wrap (a mask) in SIMD, and reads
@@ -127,7 +128,8 @@ private:
     [[gnu::always_inline]] float nearest(int level, glm::vec2 uv) const {
         const Level& l = levels_[level];
         const int x = applyAddress(sampler_.addressU, static_cast<int>(std::floor(safeCoord(uv.x) * l.width)), l.width);
-        const int y = applyAddress(sampler_.addressV, static_cast<int>(std::floor(safeCoord(uv.y) * l.height)), l.height);
+        const int y =
+            applyAddress(sampler_.addressV, static_cast<int>(std::floor(safeCoord(uv.y) * l.height)), l.height);
         return load(l, x, y);
     }
 
@@ -226,10 +228,10 @@ private:
     [[gnu::always_inline]] Taps4 taps4(const int* levels, __m128 u, __m128 v) const {
         Taps4 taps;
         for (int i = 0; i < 4; ++i) taps.level[i] = &levels_[levels[i]];
-        taps.width = _mm_setr_epi32(taps.level[0]->width, taps.level[1]->width, taps.level[2]->width,
-                                    taps.level[3]->width);
-        const __m128i height = _mm_setr_epi32(taps.level[0]->height, taps.level[1]->height, taps.level[2]->height,
-                                              taps.level[3]->height);
+        taps.width =
+            _mm_setr_epi32(taps.level[0]->width, taps.level[1]->width, taps.level[2]->width, taps.level[3]->width);
+        const __m128i height =
+            _mm_setr_epi32(taps.level[0]->height, taps.level[1]->height, taps.level[2]->height, taps.level[3]->height);
         const __m128i one = _mm_set1_epi32(1);
         const __m128 half = _mm_set1_ps(0.5f);
         const __m128 fx = _mm_sub_ps(_mm_mul_ps(safeCoord4(u), _mm_cvtepi32_ps(taps.width)), half);
@@ -308,7 +310,8 @@ private:
             const Level& l = *p.level[i];
             const __m128 wx = _mm_set1_ps(ax[i]), wy = _mm_set1_ps(ay[i]);
             const __m128 rx = _mm_sub_ps(oneF, wx), ry = _mm_sub_ps(oneF, wy);
-            const __m128 top = _mm_add_ps(_mm_mul_ps(loadRgba(l, xa[i], ya[i]), rx), _mm_mul_ps(loadRgba(l, xb[i], ya[i]), wx));
+            const __m128 top =
+                _mm_add_ps(_mm_mul_ps(loadRgba(l, xa[i], ya[i]), rx), _mm_mul_ps(loadRgba(l, xb[i], ya[i]), wx));
             const __m128 bottom =
                 _mm_add_ps(_mm_mul_ps(loadRgba(l, xa[i], yb[i]), rx), _mm_mul_ps(loadRgba(l, xb[i], yb[i]), wx));
             out[i] = _mm_add_ps(_mm_mul_ps(top, ry), _mm_mul_ps(bottom, wy));

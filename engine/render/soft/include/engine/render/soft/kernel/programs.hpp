@@ -76,11 +76,7 @@ struct SurfaceProgram {
     bool hasAlpha4() const { return AlphaMasked && (!texture || alphaSampler.simd4()); }
     // shade().a == (baseColorFactor.a * vertex alpha) * texel alpha: toStraight keeps alpha.
     // Only an alpha-masked surface has an alpha worth testing first (hasAlphaFirstHooks).
-    float alphaTestFactor() const
-        requires AlphaMasked
-    {
-        return params.baseColorFactor.a;
-    }
+    float alphaTestFactor() const requires AlphaMasked { return params.baseColorFactor.a; }
     // The texture is sampled four fragments at a time (AlphaSampler::rgba4, the general
     // sampler's bits), for shadeSampled().
     const AlphaSampler* rowSampler() const { return texture && alphaSampler.simd4() ? &alphaSampler : nullptr; }
@@ -101,12 +97,13 @@ struct SurfaceProgram {
         if (texture->desc.alpha != AlphaMode::Straight) {  // toStraight: rgb / a where a > 0
             const __m128 divide = _mm_cmpgt_ps(texel[3], _mm_setzero_ps());
             for (int c = 0; c < 3; ++c)
-                straight[c] = _mm_or_ps(_mm_and_ps(divide, _mm_div_ps(texel[c], texel[3])),
-                                        _mm_andnot_ps(divide, texel[c]));
+                straight[c] =
+                    _mm_or_ps(_mm_and_ps(divide, _mm_div_ps(texel[c], texel[3])), _mm_andnot_ps(divide, texel[c]));
         }
         __m128 base[4];
         for (int c = 0; c < 4; ++c)
-            base[c] = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(params.baseColorFactor[c]), _mm_loadu_ps(color[c])), straight[c]);
+            base[c] =
+                _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(params.baseColorFactor[c]), _mm_loadu_ps(color[c])), straight[c]);
         __m128 n[3];
         const bool flip = AlphaMasked && !frontFacing;  // a back face of a card: its flipped normal
         for (int k = 0; k < 3; ++k) {
@@ -114,8 +111,8 @@ struct SurfaceProgram {
             if (flip) n[k] = _mm_xor_ps(n[k], _mm_set1_ps(-0.0f));  // -x, as glm's unary minus
         }
         // lambert(): 0 where !(len > 0), else max(dot(n / len, towardLight), 0).
-        const __m128 len = _mm_sqrt_ps(
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(n[0], n[0]), _mm_mul_ps(n[1], n[1])), _mm_mul_ps(n[2], n[2])));
+        const __m128 len =
+            _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(n[0], n[0]), _mm_mul_ps(n[1], n[1])), _mm_mul_ps(n[2], n[2])));
         const __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_div_ps(n[0], len), _mm_set1_ps(towardLight.x)),
                                                _mm_mul_ps(_mm_div_ps(n[1], len), _mm_set1_ps(towardLight.y))),
                                     _mm_mul_ps(_mm_div_ps(n[2], len), _mm_set1_ps(towardLight.z)));
@@ -130,7 +127,8 @@ struct SurfaceProgram {
 
     glm::vec4 shade(const Fragment& f) const {
         glm::vec4 base = params.baseColorFactor * f.color;
-        if (texture) base *= toStraight(sampleTexture(*texture, params.baseColor.sampler, f.uv, f.duv), texture->desc.alpha);
+        if (texture)
+            base *= toStraight(sampleTexture(*texture, params.baseColor.sampler, f.uv, f.duv), texture->desc.alpha);
         return light(f, base);
     }
     // shade() with the texture's sample at f given (a texture is bound).

@@ -18,19 +18,19 @@ namespace engine::render::gl::plumbing {
 
 // The entry points buildProgram() calls, as X(type, name without the gl prefix): a loader fills a
 // table from the list, and the list declares ProgramFunctions.
-#define ENGINE_GL_PROGRAM_FUNCTIONS(X)                  \
-    X(PFNGLATTACHSHADERPROC, AttachShader)              \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)            \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)            \
-    X(PFNGLCREATESHADERPROC, CreateShader)              \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)            \
-    X(PFNGLDELETESHADERPROC, DeleteShader)              \
-    X(PFNGLDETACHSHADERPROC, DetachShader)              \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)    \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)              \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)      \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                \
+#define ENGINE_GL_PROGRAM_FUNCTIONS(X)               \
+    X(PFNGLATTACHSHADERPROC, AttachShader)           \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)         \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)         \
+    X(PFNGLCREATESHADERPROC, CreateShader)           \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)         \
+    X(PFNGLDELETESHADERPROC, DeleteShader)           \
+    X(PFNGLDETACHSHADERPROC, DetachShader)           \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog) \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)           \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)   \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)             \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)             \
     X(PFNGLSHADERSOURCEPROC, ShaderSource)
 
 struct ProgramFunctions {
@@ -64,8 +64,8 @@ inline std::optional<std::string> failureLog(GLuint object, GLenum status, PFNGL
 }
 
 // A compiled shader object, or 0 with `error` set.
-inline GLuint compileStage(const ProgramFunctions& gl, const std::string& label, GLenum stage,
-                           std::string_view source, std::string& error) {
+inline GLuint compileStage(const ProgramFunctions& gl, const std::string& label, GLenum stage, std::string_view source,
+                           std::string& error) {
     const GLuint shader = gl.CreateShader(stage);
     if (!shader) {
         error = label + ": glCreateShader failed (no current context?)";
@@ -77,8 +77,8 @@ inline GLuint compileStage(const ProgramFunctions& gl, const std::string& label,
     gl.CompileShader(shader);
     if (const auto log = failureLog(shader, GL_COMPILE_STATUS, gl.GetShaderiv, gl.GetShaderInfoLog)) {
         gl.DeleteShader(shader);
-        error = label + ": " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader does not compile:\n" +
-                *log;
+        error =
+            label + ": " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader does not compile:\n" + *log;
         return 0;
     }
     return shader;

@@ -39,7 +39,7 @@ struct DrawState {
     std::array<BlendState, kMaxColorTargets> blend{};
     std::array<bool, kMaxColorTargets> blendNeeded{};  // false: plain store
     glm::vec4 blendConstant{0.0f};
-    bool shade = true;  // false: depth-only, the program is never run
+    bool shade = true;                // false: depth-only, the program is never run
     FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (SoftBackend::setFragmentSink)
     SimdIsa isa = SimdIsa::Sse2;      // the wide kernels' instruction set (SoftOptions::simd)
 };

@@ -57,7 +57,7 @@ inline constexpr std::array<std::uint8_t, 256> kBitCount = [] {
 // `stored` (8 floats, any alignment), rewriting the other lanes with the values they had.
 template <CompareFunc Func, bool Write>
 inline std::uint32_t depthRow(const Plane& plane, float centerX0, float originX, float fy, std::uint32_t coverage,
-                       std::byte* stored, float* z) {
+                              std::byte* stored, float* z) {
 #if SOFT_RASTER_SSE2
     const __m128 value = _mm_set1_ps(plane.value), dx = _mm_set1_ps(plane.dx);
     const __m128 dyFy = _mm_set1_ps(plane.dy * fy);
@@ -68,8 +68,8 @@ inline std::uint32_t depthRow(const Plane& plane, float centerX0, float originX,
     std::uint32_t mask = 0;
     for (int h = 0; h < 2; ++h) {
         // float(bx) + 0.5f + i is exact, as float(bx + i) + 0.5f is.
-        const __m128 center = _mm_add_ps(_mm_set1_ps(centerX0), _mm_setr_ps(float(4 * h), float(4 * h + 1),
-                                                                             float(4 * h + 2), float(4 * h + 3)));
+        const __m128 center = _mm_add_ps(
+            _mm_set1_ps(centerX0), _mm_setr_ps(float(4 * h), float(4 * h + 1), float(4 * h + 2), float(4 * h + 3)));
         const __m128 fx = _mm_sub_ps(center, origin);
         const __m128 v = _mm_add_ps(_mm_add_ps(value, _mm_mul_ps(dx, fx)), dyFy);
         // clamp01: maxps(v, 0) gives 0 for v <= 0 and NaN, then minps(., 1).
@@ -113,7 +113,7 @@ inline std::uint32_t depthRow(const Plane& plane, float centerX0, float originX,
 // pixels at row0 (rowBytes apart), all inside the target. Returns the pixels that passed.
 template <CompareFunc Func>
 inline std::uint64_t depthOnlyBlock(const SetupTriangle& t, float centerX0, int py0, int py1, std::uint32_t coverage,
-                             std::byte* row0, std::size_t rowBytes) {
+                                    std::byte* row0, std::size_t rowBytes) {
     std::uint64_t passed = 0;
     float unused[8];
     for (int py = py0; py <= py1; ++py) {
@@ -125,7 +125,8 @@ inline std::uint64_t depthOnlyBlock(const SetupTriangle& t, float centerX0, int 
     return passed;
 }
 
-using DepthOnlyBlockFn = std::uint64_t (*)(const SetupTriangle&, float, int, int, std::uint32_t, std::byte*, std::size_t);
+using DepthOnlyBlockFn = std::uint64_t (*)(const SetupTriangle&, float, int, int, std::uint32_t, std::byte*,
+                                           std::size_t);
 inline DepthOnlyBlockFn depthOnlyBlockFunction(CompareFunc func) {
     switch (func) {
         case CompareFunc::Never: return depthOnlyBlock<CompareFunc::Never>;
@@ -261,8 +262,8 @@ inline bool bytesRoundTrip() {
 // -0 where d is +0, which encodes as the same byte. The decoded byte then encodes back to
 // itself (bytesRoundTrip: checked for every byte, UNORM and sRGB).
 inline bool zeroSourceKeeps(Format format, const BlendState& b) {
-    const bool eightBit = format == Format::RGBA8_UNORM || format == Format::RGBA8_SRGB ||
-                          format == Format::R8_UNORM || format == Format::RG8_UNORM;
+    const bool eightBit = format == Format::RGBA8_UNORM || format == Format::RGBA8_SRGB || format == Format::R8_UNORM ||
+                          format == Format::RG8_UNORM;
     auto keeps = [](BlendOp op, BlendFactor dst) {
         if (op == BlendOp::Max) return true;
         return op == BlendOp::Add &&
@@ -289,7 +290,8 @@ inline __m128i encodeUnorm8x4(__m128 v) {
     const __m128i rounded = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(v, _mm_set1_ps(255.0f)), _mm_set1_ps(0.5f)));
     const __m128i positive = _mm_castps_si128(_mm_cmpgt_ps(v, _mm_setzero_ps()));
     const __m128i full = _mm_castps_si128(_mm_cmpge_ps(v, _mm_set1_ps(1.0f)));
-    return _mm_or_si128(_mm_and_si128(full, _mm_set1_epi32(255)), _mm_andnot_si128(full, _mm_and_si128(positive, rounded)));
+    return _mm_or_si128(_mm_and_si128(full, _mm_set1_epi32(255)),
+                        _mm_andnot_si128(full, _mm_and_si128(positive, rounded)));
 }
 
 // encodeSrgb8 of each lane, as a 32-bit integer: the same clamp (maxps and minps are its
@@ -299,7 +301,8 @@ inline __m128i encodeSrgb8x4(__m128 v) {
     const SrgbEncodeTables& t = srgbEncodeTables();
     alignas(16) std::uint32_t bucket[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(bucket), _mm_srli_epi32(_mm_castps_si128(clamped), 16));
-    const __m128i start = _mm_setr_epi32(t.start[bucket[0]], t.start[bucket[1]], t.start[bucket[2]], t.start[bucket[3]]);
+    const __m128i start =
+        _mm_setr_epi32(t.start[bucket[0]], t.start[bucket[1]], t.start[bucket[2]], t.start[bucket[3]]);
     alignas(16) std::int32_t code[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(code), start);
     const __m128 next = _mm_setr_ps(t.threshold[code[0] + 1], t.threshold[code[1] + 1], t.threshold[code[2] + 1],
@@ -311,8 +314,8 @@ inline __m128i encodeSrgb8x4(__m128 v) {
 // Lanes (bit i: pixel i of the 4 RGBA8 pixels at p) whose stored bytes, with the bytes a
 // write mask leaves set to 0xFF in `unwritten`, are all 0xFF.
 inline std::uint32_t saturatedLanes(const std::byte* p, std::uint32_t unwritten) {
-    const __m128i stored = _mm_or_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)),
-                                        _mm_set1_epi32(int(unwritten)));
+    const __m128i stored =
+        _mm_or_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), _mm_set1_epi32(int(unwritten)));
     return std::uint32_t(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(stored, _mm_set1_epi32(-1)))));
 }
 

@@ -57,8 +57,12 @@ struct BilinearTaps {
     const float fy = safeCoord(uv.y) * height - 0.5f;
     const float x0f = std::floor(fx), y0f = std::floor(fy);
     const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
-    return {applyAddress(s.addressU, x0, width), applyAddress(s.addressU, x0 + 1, width),
-            applyAddress(s.addressV, y0, height), applyAddress(s.addressV, y0 + 1, height), fx - x0f, fy - y0f};
+    return {applyAddress(s.addressU, x0, width),
+            applyAddress(s.addressU, x0 + 1, width),
+            applyAddress(s.addressV, y0, height),
+            applyAddress(s.addressV, y0 + 1, height),
+            fx - x0f,
+            fy - y0f};
 }
 
 }  // namespace engine::render::soft

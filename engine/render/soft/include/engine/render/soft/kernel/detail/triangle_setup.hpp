@@ -40,8 +40,8 @@ struct SetupTriangle {
     // top-left rule is folded into c).
     std::array<std::int64_t, 3> a{}, b{}, c{};
     float originX = 0.0f, originY = 0.0f;
-    Plane depth;     // z/w, linear in screen space
-    Plane inverseW;  // 1/w
+    Plane depth;                                        // z/w, linear in screen space
+    Plane inverseW;                                     // 1/w
     std::array<Plane, kAttributeCount> attributeOverW;  // attribute/w
 };
 
@@ -109,11 +109,11 @@ struct ScreenVertex {
 // (setupPreparedTriangle) then reads it. Each value is the one setupTriangle computes for that
 // vertex, so sharing it changes no bit.
 struct PreparedVertex {
-    ClipVertex clip;          // position; attributes once `finished`
-    bool finite = false;      // every position component finite (rejectedBeforeSetup)
-    bool inside = false;      // inside every clip plane: no clipping needed
-    bool projectable = false; // inside, with w > 0: `screen` holds x, y and 1/w
-    bool finished = false;    // attributes filled, `screen` holds z and attributes over w
+    ClipVertex clip;           // position; attributes once `finished`
+    bool finite = false;       // every position component finite (rejectedBeforeSetup)
+    bool inside = false;       // inside every clip plane: no clipping needed
+    bool projectable = false;  // inside, with w > 0: `screen` holds x, y and 1/w
+    bool finished = false;     // attributes filled, `screen` holds z and attributes over w
     ScreenVertex screen;
 };
 

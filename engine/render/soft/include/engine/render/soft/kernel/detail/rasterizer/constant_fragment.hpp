@@ -82,8 +82,8 @@ inline void TriangleRasterizer<Program>::buildBlendLut(int i, const glm::vec4& c
     lut.color = color;
     for (int k = 0; k < 256; ++k) {
         std::byte dst[4] = {std::byte(k), std::byte(k), std::byte(k), std::byte(k)};
-        const glm::vec4 out = blend(draw_.blend[i], color, loadTexel(dst, target.format), draw_.blendConstant,
-                                    target.normalized);
+        const glm::vec4 out =
+            blend(draw_.blend[i], color, loadTexel(dst, target.format), draw_.blendConstant, target.normalized);
         storeTexel(dst, target.format, out, 0xF);
         for (int c = 0; c < 4; ++c) lut.bytes[c][k] = dst[c];
     }

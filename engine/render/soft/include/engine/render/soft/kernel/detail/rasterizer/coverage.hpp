@@ -35,8 +35,8 @@ inline void TriangleRasterizer<Program>::rasterizeSingle(const SetupTriangle& t,
             if (full) {
                 const std::uint32_t rowMask = ((1u << n) - 1u) << shift;
                 if (depthOnlyBlock_ && bx + kBlockSize <= width_) {
-                    counters_.pixelsTouched += depthOnlyBlock_(t, float(bx) + 0.5f, py0, py1, rowMask,
-                                                               depth_.at(bx, py0), depth_.rowBytes);
+                    counters_.pixelsTouched +=
+                        depthOnlyBlock_(t, float(bx) + 0.5f, py0, py1, rowMask, depth_.at(bx, py0), depth_.rowBytes);
                     continue;
                 }
                 if (!draw_.depthTest && draw_.shade) {  // every pixel of the block is live

@@ -200,7 +200,7 @@ inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle
         const int o = 4 * h;
         interpolateHalf(t, centerX0, fy, h, RowInputs::AlphaInputs);
         const AlphaSampler::Lookup4 lookup = sampler->lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o,
-                                                             row_.duv[1] + o, row_.duv[2] + o, row_.duv[3] + o, lanes);
+                                                              row_.duv[1] + o, row_.duv[2] + o, row_.duv[3] + o, lanes);
         alignas(16) float texelAlpha[4];
         _mm_store_ps(texelAlpha, sampler->alpha4(lookup));
         std::uint32_t passing = 0;
@@ -220,8 +220,7 @@ inline void TriangleRasterizer<Program>::shadeAlphaTestedRow(const SetupTriangle
 // bits), which finds each lane's level and texels in SIMD and reads no format per texel.
 template <typename Program>
 inline void TriangleRasterizer<Program>::shadeSampledRow(const SetupTriangle& t, int bx, int py, std::uint32_t live,
-                                                         float centerX0, float fy, const float* z,
-                                                         std::byte* depthAt) {
+                                                         float centerX0, float fy, const float* z, std::byte* depthAt) {
     interpolateRow(t, centerX0, fy, live);
     const AlphaSampler& sampler = *rowSampler_;
     for (int h = 0; h < 2; ++h) {
@@ -229,8 +228,8 @@ inline void TriangleRasterizer<Program>::shadeSampledRow(const SetupTriangle& t,
         if (!lanes) continue;
         const int o = 4 * h;
         shadeTexels(t,
-                    sampler.lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o, row_.duv[1] + o,
-                                    row_.duv[2] + o, row_.duv[3] + o, lanes),
+                    sampler.lookup4(row_.uv[0] + o, row_.uv[1] + o, row_.duv[0] + o, row_.duv[1] + o, row_.duv[2] + o,
+                                    row_.duv[3] + o, lanes),
                     bx, py, o, lanes, z, depthAt);
     }
 }
@@ -271,7 +270,8 @@ inline void TriangleRasterizer<Program>::shadePacked4(const float (&texels)[4][4
     const bool srgb = color_[0].srgb8Plain;
     __m128i packed = srgb ? encodeSrgb8x4(shaded[0]) : encodeUnorm8x4(shaded[0]);
     for (int c = 1; c < 3; ++c)
-        packed = _mm_or_si128(packed, _mm_slli_epi32(srgb ? encodeSrgb8x4(shaded[c]) : encodeUnorm8x4(shaded[c]), 8 * c));
+        packed =
+            _mm_or_si128(packed, _mm_slli_epi32(srgb ? encodeSrgb8x4(shaded[c]) : encodeUnorm8x4(shaded[c]), 8 * c));
     packed = _mm_or_si128(packed, _mm_slli_epi32(encodeUnorm8x4(shaded[3]), 24));
     alignas(16) std::uint32_t bytes[4];
     alignas(16) float alpha[4];
@@ -309,10 +309,9 @@ inline void TriangleRasterizer<Program>::interpolateHalf(const SetupTriangle& t,
                                                          RowInputs inputs) {
     constexpr ProgramNeeds needs = Program::kNeeds;
     if constexpr (needs.anyAttribute()) {
-        const __m128 fx = _mm_sub_ps(
-            _mm_add_ps(_mm_set1_ps(centerX0),
-                       _mm_setr_ps(float(4 * h), float(4 * h + 1), float(4 * h + 2), float(4 * h + 3))),
-            _mm_set1_ps(t.originX));
+        const __m128 fx = _mm_sub_ps(_mm_add_ps(_mm_set1_ps(centerX0), _mm_setr_ps(float(4 * h), float(4 * h + 1),
+                                                                                   float(4 * h + 2), float(4 * h + 3))),
+                                     _mm_set1_ps(t.originX));
         auto evaluateLanes = [&](const Plane& p) {
             return _mm_add_ps(_mm_add_ps(_mm_set1_ps(p.value), _mm_mul_ps(_mm_set1_ps(p.dx), fx)),
                               _mm_set1_ps(p.dy * fy));

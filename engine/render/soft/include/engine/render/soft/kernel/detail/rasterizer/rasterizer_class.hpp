@@ -53,8 +53,8 @@ constexpr bool hasRowShader() {
 // shadeSampled lane by lane.
 template <typename Program>
 constexpr bool hasSampledRowHooks() {
-    return requires(const Program& p, const Fragment& f, const __m128 (&texel)[4], const float* const (&color)[4],
-                    const float* const (&normal)[3], __m128 (&out)[4]) {
+    return requires(const Program& p, const Fragment& f, const __m128(&texel)[4], const float* const(&color)[4],
+                    const float* const(&normal)[3], __m128(&out)[4]) {
         { p.rowSampler() } -> std::same_as<const AlphaSampler*>;
         { p.shadeSampled(f, glm::vec4(0.0f)) } -> std::same_as<glm::vec4>;
         p.shadeSampled4(texel, color, normal, true, out);
@@ -90,8 +90,8 @@ constexpr bool hasReplicatedAlphaHooks() {
     if constexpr (requires { Program::kShadesReplicatedAlpha; }) {
         return Program::kShadesReplicatedAlpha && hasAlpha4Hooks<Program>() &&
                requires(const Program& p, const Fragment& f) {
-                   { p.alpha(f) } -> std::same_as<float>;
-               };
+            { p.alpha(f) } -> std::same_as<float>;
+        };
     } else {
         return false;
     }
@@ -119,7 +119,8 @@ public:
             depth_ = view(*draw.depthTarget, false);
             // Depth-only draws store z as part of the row test.
             depthRowWrites_ = !draw.shade && draw.depthWrite;
-            depthRow_ = depthRowWrites_ ? depthRowFunction<true>(draw.depthFunc) : depthRowFunction<false>(draw.depthFunc);
+            depthRow_ =
+                depthRowWrites_ ? depthRowFunction<true>(draw.depthFunc) : depthRowFunction<false>(draw.depthFunc);
             if (depthRowWrites_) depthOnlyBlock_ = depthOnlyBlockFunction(draw.depthFunc);
         }
         for (int i = 0; i < draw.colorTargetCount; ++i) {
@@ -146,7 +147,8 @@ public:
             rowSampler_ = program.rowSampler();
             sampledRow_ = !alphaFirst_ && draw.shade && rowSampler_ != nullptr;
             // One plain 8-bit target (no blend, every channel written): shadePacked4.
-            packedWrite_ = !draw.capture && draw.colorTargetCount == 1 && (color_[0].srgb8Plain || color_[0].rgba8Plain);
+            packedWrite_ =
+                !draw.capture && draw.colorTargetCount == 1 && (color_[0].srgb8Plain || color_[0].rgba8Plain);
         }
         if constexpr (hasReplicatedAlphaHooks<Program>()) {
             // The mask path (shadeAlphaRow) covers what the mask pass is: no capture, no alpha
@@ -249,7 +251,7 @@ private:
     TileCounters& counters_;
     const SamplePattern& pattern_;
     const std::uint32_t allSamples_;
-    bool single_ = false;  // one sample per pixel: the row-at-a-time path
+    bool single_ = false;   // one sample per pixel: the row-at-a-time path
     struct RowAttributes {  // interpolateRow's output: [component][lane]
         alignas(16) float uv[2][kBlockSize];
         alignas(16) float duv[4][kBlockSize];  // du/dx, dv/dx, du/dy, dv/dy
@@ -257,7 +259,7 @@ private:
         alignas(16) float color[4][kBlockSize];
         alignas(16) float w[kBlockSize];  // clip w (Fragment::clipW)
     } row_;
-    int width_ = 0;        // of the pass's targets
+    int width_ = 0;  // of the pass's targets
     TargetView depth_;
     DepthRowFn depthRow_ = nullptr;
     DepthOnlyBlockFn depthOnlyBlock_ = nullptr;  // depth-only draws (test and write)
@@ -277,7 +279,7 @@ private:
     bool alphaFirst_ = false;    // hasAlphaFirstHooks: alpha-test (Keep) on the alpha alone before shading
     bool sampledRow_ = false;    // hasSampledRowHooks otherwise: the texture sampled 4 lanes at a time
     const AlphaSampler* rowSampler_ = nullptr;  // the program's rowSampler(), asked once per draw
-    bool packedWrite_ = false;   // hasSampledRowHooks onto one plain RGBA8 target: shadePacked4
+    bool packedWrite_ = false;                  // hasSampledRowHooks onto one plain RGBA8 target: shadePacked4
     // The mask row path (shadeAlphaRow, hasReplicatedAlphaHooks).
     bool alphaRow_ = false;
     bool alphaZeroSkips_ = false;                       // every target ignores a zero alpha
@@ -286,7 +288,6 @@ private:
     bool halfRow_ = false;                              // every target: blendOneOneHalf4 (shadeAlphaRowHalf4)
     std::array<std::uint32_t, kMaxColorTargets> unwrittenBytes_{};  // 0xFF in each byte the write mask leaves
 };
-
 
 }  // namespace
 }  // namespace raster

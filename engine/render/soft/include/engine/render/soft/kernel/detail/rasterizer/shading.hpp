@@ -145,8 +145,7 @@ inline void TriangleRasterizer<Program>::shadePixel(const SetupTriangle& t, int 
             if (!(live & (1u << s))) continue;
             const float sx = fx + pattern_.dx[s] / 16.0f, sy = fy + pattern_.dy[s] / 16.0f;
             z[s] = clamp01(evaluate(t.depth, sx, sy));
-            if (!compare(draw_.depthFunc, z[s], loadDepth(draw_.depthTarget->sample(px, py, s))))
-                live &= ~(1u << s);
+            if (!compare(draw_.depthFunc, z[s], loadDepth(draw_.depthTarget->sample(px, py, s)))) live &= ~(1u << s);
         }
         if (!live) return;
     }
