@@ -84,7 +84,7 @@ test-tsan: deps
 # formatted (CI runs it first: it costs seconds), format rewrites them.
 SOURCES_TO_FORMAT = $(shell git ls-files '*.cpp' '*.hpp' '*.h')
 format-check: deps
-	clang-format-14 --dry-run -Werror $(SOURCES_TO_FORMAT)
+	@clang-format-14 --dry-run -Werror $(SOURCES_TO_FORMAT)
 	@echo "format-check: $(words $(SOURCES_TO_FORMAT)) files formatted"
 format: deps
 	clang-format-14 -i $(SOURCES_TO_FORMAT)
