@@ -9,10 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "engine/capture/image.hpp"
+#include "engine/core/parallel_for.hpp"
 
 namespace engine::capture::metrics_detail {
 
@@ -38,8 +36,8 @@ std::vector<float> srgbLuma(const Image& image, std::string_view metric);
 // Runs body(y) for every row in parallel (rows are independent).
 template <typename Body>
 void forEachRow(int height, const Body& body) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y != rows.end(); ++y) body(y);
+    parallelForChunks(0, height, 1, [&](int firstRow, int endRow) {
+        for (int y = firstRow; y != endRow; ++y) body(y);
     });
 }
 

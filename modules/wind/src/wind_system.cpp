@@ -5,9 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-
 #include "engine/core/error.hpp"
+#include "engine/core/parallel_for.hpp"
 #include "engine/scene/components.hpp"
 
 namespace wind {
@@ -212,7 +211,7 @@ void WindSystem::update(ecs::Registry& registry) {
     const float decay = std::exp(-wind->springRate * frame_.dt);
     const float time = frame_.time;
     const Wind& w = *wind;
-    tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t j) {
+    parallelFor(std::size_t(0), jobs.size(), [&](std::size_t j) {
         DeformedPart& p = *jobs[j].part;
         p.bounds = deformVertices(library_.vertices(p.part), p.vertices, p.push, w, *jobs[j].pose, time, p.flutter,
                                   decay, colliders);

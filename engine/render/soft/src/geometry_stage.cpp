@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <array>
 
-#include <tbb/parallel_for.h>
+#include "engine/core/parallel_for.hpp"
 
 namespace engine::render::soft {
 namespace {
@@ -186,7 +186,7 @@ bool GeometryStage::takeKeptGeometry(const GeometryKey& key, std::size_t first, 
 
 void GeometryStage::runGeometry(tbb::task_arena& arena, const TileGrid& grid) {
     arena.execute([&] {
-        tbb::parallel_for(std::size_t(0), chunksUsed_, [&](std::size_t c) {
+        parallelFor(std::size_t(0), chunksUsed_, [&](std::size_t c) {
             GeometryChunk& out = chunks_[c];
             if (out.geometry == kNoGeometry) return;  // a full-screen triangle, already binned
             processChunk(geometry_[out.geometry], out);

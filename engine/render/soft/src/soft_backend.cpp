@@ -9,11 +9,10 @@
 #include <optional>
 #include <utility>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "engine/core/error.hpp"
+#include "engine/core/parallel_for.hpp"
 #include "engine/core/log.hpp"
 #include "engine/render/memory_budget.hpp"
 #include "engine/render/resolved_draw_state.hpp"
@@ -254,8 +253,8 @@ public:
         const bool depth = formatInfo(src.desc.format).isDepth;
         const int n = src.desc.samples;
         arena_.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<int>(0, src.desc.height), [&](const tbb::blocked_range<int>& rows) {
-                for (int y = rows.begin(); y != rows.end(); ++y) {
+            parallelForChunks(0, src.desc.height, 1, [&](int firstRow, int endRow) {
+                for (int y = firstRow; y != endRow; ++y) {
                     for (int x = 0; x < src.desc.width; ++x) {
                         if (depth) {
                             // The closest sample, never an average ([Hathaway 2010] §3.5.1).
@@ -350,10 +349,7 @@ private:
             for (std::size_t b = begin; b < end; ++b) std::memcpy(out + filled + b * kBlock, out, kBlock);
         };
         if (blocks >= 256) {  // 1 MiB and more: split over the threads
-            arena_.execute([&] {
-                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 64),
-                                  [&](const tbb::blocked_range<std::size_t>& r) { copyBlocks(r.begin(), r.end()); });
-            });
+            arena_.execute([&] { parallelForChunks(std::size_t(0), blocks, std::size_t(64), copyBlocks); });
         } else {
             copyBlocks(0, blocks);
         }
@@ -488,7 +484,7 @@ private:
 
         std::atomic<std::uint64_t> shaded{0}, touched{0};
         arena_.execute([&] {
-            tbb::parallel_for(std::size_t(0), bins_.size(), [&](std::size_t tileIndex) {
+            parallelFor(std::size_t(0), bins_.size(), [&](std::size_t tileIndex) {
                 if (bins_[tileIndex].empty()) return;
                 const int tx = int(tileIndex % tilesX), ty = int(tileIndex / tilesX);
                 const Rect tile{tx * tileSize, ty * tileSize, std::min(tileSize, passWidth_ - tx * tileSize),
