@@ -90,12 +90,15 @@ format: deps
 	clang-format-14 -i $(SOURCES_TO_FORMAT)
 
 # clang-tidy 14 over the engine, ssam, the modules and the game (.clang-tidy says which checks
-# and why the others are left out), from the default build's compile_commands.json. By hand, not
+# and why the others are left out), from the default build's compile_commands.json less the one
+# GCC-only option clang cannot parse (capture's metrics ask GCC for -fvect-cost-model). By hand, not
 # in CI: it parses every translation unit again (about 20 minutes on 2 cores).
 LINT_SOURCES = $(shell git ls-files 'engine/*.cpp' 'ssam/*.cpp' 'modules/*.cpp' 'game/*.cpp')
 lint: build
 	@command -v clang-tidy-14 >/dev/null || $(SUDO) apt-get install -y -qq --no-install-recommends clang-tidy-14
-	@printf '%s\n' $(LINT_SOURCES) | xargs -P $(JOBS) -n 8 clang-tidy-14 -p $(BUILD_DIR) --quiet
+	@mkdir -p $(BUILD_DIR)/lint && sed 's/ -fvect-cost-model=dynamic//' $(BUILD_DIR)/compile_commands.json \
+	  > $(BUILD_DIR)/lint/compile_commands.json
+	@printf '%s\n' $(LINT_SOURCES) | xargs -P $(JOBS) -n 8 clang-tidy-14 -p $(BUILD_DIR)/lint --quiet
 	@echo "lint: $(words $(LINT_SOURCES)) files clean"
 
 # The demo: with a display, the racing scene in a window (GL) until it is closed (keys:

@@ -125,7 +125,7 @@ DrawDesc FrameRenderer::batchDraw(const DrawBatch& batch, PipelineHandle pipelin
     const MeshPart& part = library_.part(batch.part);
     DrawDesc d;
     d.pipeline = pipeline;
-    d.params = std::move(params);
+    d.params = params;
     d.vertices = engine::scene::vertexBufferOf(batch, part);  // deformed copy (modules/wind) or shared
     d.indices = part.indices;
     d.count = part.indexCount;

@@ -21,12 +21,8 @@ PipelineDesc maskPipelineDesc(const Config& config) {
     mask.raster.cull = CullMode::None;
     if (config.maskPrecision == MaskPrecision::RG16F) {
         // Two R16F targets, one blend equation each.
-        mask.blend[0] = {true,         BlendFactor::One, BlendFactor::One,
-                         BlendOp::Max, BlendFactor::One, BlendFactor::One,
-                         BlendOp::Max, WriteAll};
-        mask.blend[1] = {true,         BlendFactor::One, BlendFactor::One,
-                         BlendOp::Add, BlendFactor::One, BlendFactor::One,
-                         BlendOp::Add, WriteAll};
+        mask.blend[0] = BlendState::oneOne(BlendOp::Max, BlendOp::Max);
+        mask.blend[1] = BlendState::oneOne(BlendOp::Add, BlendOp::Add);
     } else {
         mask.blend[0] = BlendState::maxRgbAddAlpha();
     }
@@ -51,14 +47,7 @@ PipelineDesc compositePipelineDesc(ProgramHandle program) {
     PipelineDesc composite;
     composite.name = "ssam composite";
     composite.program = program;
-    composite.blend[0] = {true,
-                          BlendFactor::SrcAlpha,
-                          BlendFactor::InvSrcAlpha,
-                          BlendOp::Add,
-                          BlendFactor::Zero,
-                          BlendFactor::One,
-                          BlendOp::Add,
-                          WriteAll};
+    composite.blend[0] = BlendState::alphaOverKeepAlpha();
     return composite;
 }
 

@@ -207,6 +207,7 @@ std::vector<float> normaliseSigned(const std::vector<double>& k) {
     double pos = 0.0, neg = 0.0;
     for (const double v : k) (v > 0.0 ? pos : neg) += v;
     std::vector<float> out;
+    out.reserve(k.size());
     for (const double v : k) out.push_back(static_cast<float>(v > 0.0 ? v / pos : v < 0.0 ? -v / neg : 0.0));
     return out;
 }

@@ -28,7 +28,8 @@ std::array<double, kWindow> gaussianWindow() {
     std::array<double, kWindow> w{};
     double sum = 0.0;
     for (int i = 0; i < kWindow; ++i) {
-        const double x = i - kWindow / 2;
+        const int fromCentre = i - kWindow / 2;  // kWindow is odd: the centre tap is 0
+        const double x = fromCentre;
         w[static_cast<std::size_t>(i)] = std::exp(-x * x / (2.0 * kSigma * kSigma));
         sum += w[static_cast<std::size_t>(i)];
     }

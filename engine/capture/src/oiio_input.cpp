@@ -142,7 +142,7 @@ OpenedImage openImage(const std::filesystem::path& path, const ReadOptions& opti
     return opened;
 }
 
-void readPixels(const std::filesystem::path& path, OpenedImage& opened, OIIO::TypeDesc type, void* data) {
+void readPixels(const std::filesystem::path& path, OpenedImage& opened, const OIIO::TypeDesc& type, void* data) {
     if (!opened.input->read_image(0, 0, 0, opened.spec.nchannels, type, data)) {
         std::string message = opened.input->geterror();
         if (message.empty()) message = OIIO::geterror();

@@ -6,7 +6,7 @@
 
 namespace engine::capture::detail {
 
-void writeWithOiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType,
+void writeWithOiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const OIIO::TypeDesc& dataType,
                    const void* data) {
     // The writer is chosen by the target's name; the pixels go to a temporary file beside it
     // that replaces the target only once closed, so a failed write leaves no partial image

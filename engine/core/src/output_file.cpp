@@ -39,7 +39,7 @@ fs::path createTemporaryBeside(const fs::path& target) {
     const fs::path directory = directoryOf(target);
     const std::string stem = target.stem().string(), extension = target.extension().string();
     for (int attempt = 0; attempt < 100; ++attempt) {
-        const fs::path candidate = target.parent_path() / ("." + stem + ".tmp-" + randomSuffix() + extension);
+        fs::path candidate = target.parent_path() / ("." + stem + ".tmp-" + randomSuffix() + extension);
         const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) {
             ::close(fd);

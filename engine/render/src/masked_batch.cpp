@@ -6,7 +6,7 @@ namespace engine::render {
 DrawDesc maskedBatchDraw(const MaskedBatch& batch, PipelineHandle pipeline, DrawParams params) {
     DrawDesc d;
     d.pipeline = pipeline;
-    d.params = std::move(params);
+    d.params = params;
     d.vertices = batch.vertices;
     d.indices = batch.indices;
     d.first = batch.first;

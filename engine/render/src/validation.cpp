@@ -69,7 +69,7 @@ void validateBufferUpdate(const BufferDesc& desc, std::uint64_t offset, std::uin
 }
 
 std::string validateResolve(const TextureDesc& source, const TextureDesc& destination) {
-    const std::string what = "resolve " + quotedName(source.name) + " -> " + quotedName(destination.name);
+    std::string what = "resolve " + quotedName(source.name) + " -> " + quotedName(destination.name);
     if (source.width != destination.width || source.height != destination.height ||
         source.format != destination.format || destination.samples != 1)
         throw Error(what + ": needs the same size and format and a single-sampled destination");

@@ -17,6 +17,7 @@ using namespace engine::render::soft::simd::sse2;
 SOFT_AVX2_BEGIN
 namespace avx2 {
 using namespace engine::render::soft::simd::avx2;
+// NOLINTNEXTLINE(readability-duplicate-include): the march is compiled once per instruction set
 #include "light_shaft_march.inl"
 }  // namespace avx2
 SOFT_AVX2_END

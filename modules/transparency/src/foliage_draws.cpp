@@ -51,7 +51,7 @@ PassDesc resolvedPass(const engine::render::FrameTargets& opaque, const char* na
 }
 
 DrawDesc batchDraw(const engine::render::MaskedBatch& batch, PipelineHandle pipeline, DrawParams params) {
-    return engine::render::maskedBatchDraw(batch, pipeline, std::move(params));
+    return engine::render::maskedBatchDraw(batch, pipeline, params);
 }
 
 }  // namespace transparency::detail

@@ -45,14 +45,7 @@ public:
         composite.name = "ssam+ composite";
         program_ = {backend_, backend_.createProgram(coverageCompositeProgram())};
         composite.program = program_.get();
-        composite.blend[0] = {true,
-                              BlendFactor::SrcAlpha,
-                              BlendFactor::InvSrcAlpha,
-                              BlendOp::Add,
-                              BlendFactor::Zero,
-                              BlendFactor::One,
-                              BlendOp::Add,
-                              WriteAll};
+        composite.blend[0] = BlendState::alphaOverKeepAlpha();  // as SSAM's composite
         composite_ = {backend_, backend_.createPipeline(composite)};
     }
 

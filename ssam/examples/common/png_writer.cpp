@@ -57,7 +57,7 @@ std::string writePng(const std::string& path, int width, int height, const std::
         return "cannot write '" + path + "': libpng: " + libpngMessage;
     }
     if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const std::string why = std::string("cannot write '") + path + "': " + std::strerror(errno);
+        std::string why = std::string("cannot write '") + path + "': " + std::strerror(errno);
         std::remove(temporary.c_str());
         return why;
     }

@@ -272,22 +272,8 @@ void ssamPass(benchmark::State& state, bool mask, float repeats, MaskTargets tar
         pd.depth = render::DepthState::testOnly(render::CompareFunc::Less);
         pd.blend[0] = render::BlendState::maxRgbAddAlpha();
         if (maskAdd) {  // as ssam::ScreenSpaceAlphaMask splits it: MAX into one, ADD into the other
-            pd.blend[0] = {true,
-                           render::BlendFactor::One,
-                           render::BlendFactor::One,
-                           render::BlendOp::Max,
-                           render::BlendFactor::One,
-                           render::BlendFactor::One,
-                           render::BlendOp::Max,
-                           render::WriteAll};
-            pd.blend[1] = {true,
-                           render::BlendFactor::One,
-                           render::BlendFactor::One,
-                           render::BlendOp::Add,
-                           render::BlendFactor::One,
-                           render::BlendFactor::One,
-                           render::BlendOp::Add,
-                           render::WriteAll};
+            pd.blend[0] = render::BlendState::oneOne(render::BlendOp::Max, render::BlendOp::Max);
+            pd.blend[1] = render::BlendState::oneOne(render::BlendOp::Add, render::BlendOp::Add);
         }
         render::AlphaOnlyParams p;
         p.viewProj = layers.viewProj;

@@ -69,14 +69,7 @@ void expectNear(glm::vec4 got, glm::vec4 expected) {
     }
 }
 
-const render::BlendState kAlphaOver = {true,
-                                       render::BlendFactor::SrcAlpha,
-                                       render::BlendFactor::InvSrcAlpha,
-                                       render::BlendOp::Add,
-                                       render::BlendFactor::Zero,
-                                       render::BlendFactor::One,
-                                       render::BlendOp::Add,
-                                       render::WriteAll};
+const render::BlendState kAlphaOver = render::BlendState::alphaOverKeepAlpha();
 
 // Mask MAX = ADD = 1: the foliage fully covers the pixel, so the result is its colour with
 // the NaN and Inf components as 0.

@@ -131,8 +131,9 @@ struct MaskSetup {
     std::vector<render::BlendState> blends;
 };
 render::BlendState oneOne(render::BlendOp rgb, render::BlendOp alpha, std::uint8_t mask = render::WriteAll) {
-    using render::BlendFactor;
-    return {true, BlendFactor::One, BlendFactor::One, rgb, BlendFactor::One, BlendFactor::One, alpha, mask};
+    render::BlendState b = render::BlendState::oneOne(rgb, alpha);
+    b.writeMask = mask;
+    return b;
 }
 std::vector<MaskSetup> maskSetups() {
     using render::BlendOp;
@@ -351,14 +352,8 @@ render::Readback runComposite(const CompositeSetup& s, bool general, std::uint64
     pd.program = s.program == CompositeKind::Ssam
                      ? render::ProgramRef(b.createProgram(ssam::compositeProgram()))
                      : render::ProgramRef(b.createProgram(transparency::coverageCompositeProgram()));
-    pd.blend[0] = {true,
-                   render::BlendFactor::SrcAlpha,
-                   render::BlendFactor::InvSrcAlpha,
-                   render::BlendOp::Add,
-                   render::BlendFactor::Zero,
-                   render::BlendFactor::One,
-                   render::BlendOp::Add,
-                   general ? render::WriteRGB : render::WriteAll};
+    pd.blend[0] = render::BlendState::alphaOverKeepAlpha();
+    pd.blend[0].writeMask = general ? render::WriteRGB : render::WriteAll;
     const auto pipeline = b.createPipeline(pd);
     render::PassDesc pass;
     pass.name = "composite";

@@ -63,7 +63,7 @@ std::string tryDisplay(const Candidate& c, const HeadlessEglOptions& options, He
     // one platform and native display are shared, so terminating would pull them from under
     // other contexts, and Mesa would unload its driver, leaving what the driver keeps for good
     // to leak checkers as leaks from an unknown module. Initializing again is a no-op.
-    auto fail = [&](std::string why) { return c.name + ": " + why; };
+    auto fail = [&](const std::string& why) { return c.name + ": " + why; };
     const char* extensions = eglQueryString(c.display, EGL_EXTENSIONS);
     if (!hasExtension(extensions, "EGL_KHR_surfaceless_context")) return fail("no EGL_KHR_surfaceless_context");
     if (!eglBindAPI(EGL_OPENGL_API)) return fail("eglBindAPI(EGL_OPENGL_API) failed");

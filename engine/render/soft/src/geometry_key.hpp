@@ -11,11 +11,11 @@
 // written in between, or destroyed and replaced by another at the same handle, never matches.
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 
 #include <glm/glm.hpp>
 
 #include "engine/render/raster_state.hpp"
+#include "engine/render/soft/kernel/detail/same_bits.hpp"
 #include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
@@ -30,10 +30,10 @@ struct GeometryKey {
 
 inline bool sameGeometry(const GeometryKey& a, const GeometryKey& b) {
     return a.vertices == b.vertices && a.indices == b.indices && a.instances == b.instances && a.first == b.first &&
-           a.count == b.count && a.instanceCount == b.instanceCount &&
-           std::memcmp(&a.viewProj, &b.viewProj, sizeof a.viewProj) == 0 && a.viewport.width == b.viewport.width &&
-           a.viewport.height == b.viewport.height && a.viewport.scissor.x == b.viewport.scissor.x &&
-           a.viewport.scissor.y == b.viewport.scissor.y && a.viewport.scissor.width == b.viewport.scissor.width &&
+           a.count == b.count && a.instanceCount == b.instanceCount && sameBits(a.viewProj, b.viewProj) &&
+           a.viewport.width == b.viewport.width && a.viewport.height == b.viewport.height &&
+           a.viewport.scissor.x == b.viewport.scissor.x && a.viewport.scissor.y == b.viewport.scissor.y &&
+           a.viewport.scissor.width == b.viewport.scissor.width &&
            a.viewport.scissor.height == b.viewport.scissor.height && a.viewport.pattern == b.viewport.pattern &&
            a.raster.cull == b.raster.cull && a.raster.frontFace == b.raster.frontFace;
 }
@@ -52,7 +52,8 @@ inline std::uint64_t geometryHash(const GeometryKey& k) {
                         k.viewport.scissor.y, k.viewport.scissor.width, k.viewport.scissor.height,
                         int(k.raster.cull),   int(k.raster.frontFace)};
     mix(ints, sizeof ints);
-    mix(&k.viewport.pattern, sizeof k.viewport.pattern);
+    const auto pattern = reinterpret_cast<std::uintptr_t>(k.viewport.pattern);  // compared by address
+    mix(&pattern, sizeof pattern);
     return h;
 }
 

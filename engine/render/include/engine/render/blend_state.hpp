@@ -87,11 +87,24 @@ struct BlendState {
                 BlendOp::Add, BlendFactor::One, BlendFactor::InvSrcAlpha,
                 BlendOp::Add, WriteAll};
     }
-    // The SSAM mask ([Hathaway 2010] Table 3.1): RGB = MAX, A = ADD, all factors ONE.
-    static BlendState maxRgbAddAlpha() {
-        return {true,         BlendFactor::One, BlendFactor::One, BlendOp::Max, BlendFactor::One, BlendFactor::One,
-                BlendOp::Add, WriteAll};
+    // Straight-alpha "over" onto the colour only, the target's alpha kept (ZERO / ONE): SSAM's
+    // composite, lerp(opaque, foliage, mask) ([Hathaway 2010] §3.5.4).
+    static BlendState alphaOverKeepAlpha() {
+        return {true,
+                BlendFactor::SrcAlpha,
+                BlendFactor::InvSrcAlpha,
+                BlendOp::Add,
+                BlendFactor::Zero,
+                BlendFactor::One,
+                BlendOp::Add,
+                WriteAll};
     }
+    // Every factor ONE, one operation per half: the building block of the SSAM mask.
+    static BlendState oneOne(BlendOp rgb, BlendOp alpha) {
+        return {true, BlendFactor::One, BlendFactor::One, rgb, BlendFactor::One, BlendFactor::One, alpha, WriteAll};
+    }
+    // The SSAM mask ([Hathaway 2010] Table 3.1): RGB = MAX, A = ADD, all factors ONE.
+    static BlendState maxRgbAddAlpha() { return oneOne(BlendOp::Max, BlendOp::Add); }
 };
 
 const char* blendFactorName(BlendFactor factor);

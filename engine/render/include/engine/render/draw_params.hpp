@@ -28,7 +28,7 @@ public:
     DrawParams() = default;
     template <typename Params>
     requires(!std::is_same_v<std::decay_t<Params>, DrawParams>) DrawParams(const Params& params)
-        : type_(paramsType<Params>()), size_(sizeof(Params)) {  // NOLINT: implicit by design
+        : type_(paramsType<Params>()) {  // NOLINT: implicit by design
         static_assert(std::is_trivially_copyable_v<Params>, "draw parameters are plain data");
         static_assert(sizeof(Params) <= kCapacity, "draw parameters exceed DrawParams::kCapacity");
         static_assert(alignof(Params) <= 16, "draw parameters need at most 16-byte alignment");
@@ -48,7 +48,6 @@ public:
 private:
     alignas(16) std::array<std::byte, kCapacity> bytes_{};
     ParamsType type_ = nullptr;
-    std::uint32_t size_ = 0;
 };
 
 }  // namespace engine::render

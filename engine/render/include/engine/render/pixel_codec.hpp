@@ -32,7 +32,8 @@ const ByteTables& byteTables();
 inline std::uint8_t encodeUnorm8(float v) {
     if (!(v > 0.0f)) return 0;  // also NaN -> 0
     if (v >= 1.0f) return 255;
-    return static_cast<std::uint8_t>(v * 255.0f + 0.5f);
+    // v * 255 is in (0, 255) here, never negative: + 0.5 and truncation round half up.
+    return static_cast<std::uint8_t>(v * 255.0f + 0.5f);  // NOLINT(bugprone-incorrect-roundings)
 }
 
 // sRGB encode of a linear value. The exact curve, then UNORM rounding.

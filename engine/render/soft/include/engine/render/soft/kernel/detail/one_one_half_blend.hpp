@@ -46,7 +46,7 @@ inline void blendOneOneHalf(const BlendState& b, std::byte* p, int channels, flo
 // zeros of either sign included): (a < d) ? d : a.
 inline void blendOneOneHalf4(const BlendState& b, std::byte* p, int channels, __m128 a, std::uint32_t lanes,
                              std::uint8_t writeMask) {
-    const std::size_t pixelBytes = std::size_t(2 * channels);
+    const std::size_t pixelBytes = 2 * std::size_t(channels);
     const __m128 one = _mm_set1_ps(1.0f);
     for (int c = 0; c < channels; ++c) {
         if (!(writeMask & (1u << c))) continue;

@@ -19,6 +19,7 @@
 #include "engine/render/soft/kernel/detail/blend.hpp"
 #include "engine/render/soft/kernel/detail/draw_state.hpp"
 #include "engine/render/soft/kernel/detail/one_one_half_blend.hpp"
+#include "engine/render/soft/kernel/detail/same_bits.hpp"
 #include "engine/render/soft/kernel/soft_texture.hpp"
 #include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 
@@ -219,10 +220,9 @@ struct BlendLut {
     std::array<std::array<std::byte, 256>, 4> bytes;  // [channel][stored byte]
 
     bool matches(const BlendState& b, const glm::vec4& k, Format f, const glm::vec4& c) const {
-        return valid && f == format && std::memcmp(&c, &color, sizeof c) == 0 &&
-               std::memcmp(&k, &constant, sizeof k) == 0 && b.srcRgb == blend.srcRgb && b.dstRgb == blend.dstRgb &&
-               b.opRgb == blend.opRgb && b.srcAlpha == blend.srcAlpha && b.dstAlpha == blend.dstAlpha &&
-               b.opAlpha == blend.opAlpha && b.enabled == blend.enabled;
+        return valid && f == format && sameBits(c, color) && sameBits(k, constant) && b.srcRgb == blend.srcRgb &&
+               b.dstRgb == blend.dstRgb && b.opRgb == blend.opRgb && b.srcAlpha == blend.srcAlpha &&
+               b.dstAlpha == blend.dstAlpha && b.opAlpha == blend.opAlpha && b.enabled == blend.enabled;
     }
 };
 inline thread_local std::array<BlendLut, kMaxColorTargets> tBlendLuts;

@@ -161,7 +161,9 @@ inline void TriangleRasterizer<Program>::shadePixel(const SetupTriangle& t, int 
 
     if (draw_.alphaToCoverage && draw_.samples > 1) {
         // round(alpha * samples) samples covered, the first ones in sample order.
-        const int covered = static_cast<int>(clamp01(color.a) * float(draw_.samples) + 0.5f);
+        // clamp01 keeps it non-negative: + 0.5 and truncation round half up.
+        const int covered =
+            static_cast<int>(clamp01(color.a) * float(draw_.samples) + 0.5f);  // NOLINT(bugprone-incorrect-roundings)
         live &= (1u << covered) - 1u;
         if (!live) return;
     }
