@@ -38,7 +38,7 @@ OpenedImage openImage(const std::filesystem::path& path, const ReadOptions& opti
 
 // Reads all channels of the open subimage as `type` into `data`; throws on a read error
 // (for example a truncated file).
-void readPixels(const std::filesystem::path& path, OpenedImage& opened, OIIO::TypeDesc type, void* data);
+void readPixels(const std::filesystem::path& path, OpenedImage& opened, const OIIO::TypeDesc& type, void* data);
 
 std::vector<std::string> channelNamesOf(const OIIO::ImageSpec& spec);
 

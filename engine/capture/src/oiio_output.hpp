@@ -10,7 +10,7 @@
 namespace engine::capture::detail {
 
 // `data` holds spec.width * spec.height * spec.nchannels interleaved values of `dataType`.
-void writeWithOiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType,
+void writeWithOiio(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const OIIO::TypeDesc& dataType,
                    const void* data);
 
 // True when OpenImageIO has a writer for `path`'s extension.

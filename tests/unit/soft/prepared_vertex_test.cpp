@@ -6,13 +6,13 @@
 // beyond its sides, across the near and far planes, at w <= 0, huge, and non-finite, under each
 // culling mode; a vertex's attributes are asked for once at most however many triangles use it.
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "lcg.hpp"  // tests/support
+#include "engine/render/soft/kernel/detail/same_bits.hpp"
 #include "engine/render/soft/kernel/detail/triangle_setup.hpp"
 #include "tile_rasterizer.hpp"
 
@@ -22,11 +22,6 @@ using namespace engine::render;
 using namespace engine::render::soft;
 
 using ssam::testing::Lcg;
-
-template <typename T>
-bool sameBits(const T& a, const T& b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
 
 bool sameTriangle(const SetupTriangle& a, const SetupTriangle& b) {
     return a.drawIndex == b.drawIndex && a.frontFacing == b.frontFacing && a.minX == b.minX && a.minY == b.minY &&
