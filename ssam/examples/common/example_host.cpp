@@ -166,17 +166,18 @@ HostScene::HostScene(float wind) {
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(opaque.size() * sizeof(Vertex)), opaque.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-    // The cards' VAO follows ssam::gl::AttributeLocations: position and uv; normal, colour and
-    // the instance matrix are left to SSAM's defaults.
+    // The cards' VAO at SSAM's default ssam::gl::AttributeLocations: position and uv; normal,
+    // colour and the instance matrix are left to SSAM's generic values. (A host whose VAOs use
+    // other locations sets Settings::attributes to them instead.)
     glGenVertexArrays(1, &cardsVao_);
     glBindVertexArray(cardsVao_);
     glBindBuffer(GL_ARRAY_BUFFER, buffers_[1]);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(cards.size() * sizeof(Vertex)), cards.data(), GL_STATIC_DRAW);
-    using Loc = ssam::gl::AttributeLocations;
-    glEnableVertexAttribArray(Loc::position);
-    glVertexAttribPointer(Loc::position, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-    glEnableVertexAttribArray(Loc::uv);
-    glVertexAttribPointer(Loc::uv, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+    const ssam::gl::AttributeLocations at;
+    glEnableVertexAttribArray(at.position);
+    glVertexAttribPointer(at.position, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
+    glEnableVertexAttribArray(at.uv);
+    glVertexAttribPointer(at.uv, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(3 * sizeof(float)));
     glBindVertexArray(0);
 

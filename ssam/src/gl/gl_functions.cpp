@@ -57,15 +57,16 @@ std::string checkContext(GlFunctions& gl) {
     if (major > 3 || (major == 3 && minor >= 2)) gl.GetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
     if (major < 3 || (major == 3 && minor < 3))
         throw Failure(Status::NoContext,
-                      std::string("ssam::gl: OpenGL 3.3 core or newer needed, the current context is ") + version);
+                      std::string("ssam::gl: OpenGL 3.3 or newer needed, the current context is ") + version);
     gl.version = major * 10 + minor;
     gl.perBufferBlend = gl.BlendEquationi && gl.BlendEquationSeparatei && gl.BlendFuncSeparatei &&
                         (gl.version >= 40 || gl.hasExtension("GL_ARB_draw_buffers_blend"));
     gl.textureStorage = gl.TexStorage2D && (gl.version >= 42 || gl.hasExtension("GL_ARB_texture_storage"));
     gl.clipControl = gl.version >= 45 || gl.hasExtension("GL_ARB_clip_control");
+    gl.compatibility = (profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0;
     const auto* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
     return std::string(renderer ? renderer : "?") + ", OpenGL " + version +
-           ((profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) ? " (compatibility)" : "") +
+           (gl.compatibility ? " (compatibility)" : "") +
            (gl.perBufferBlend ? "; per-buffer blending" : "; no per-buffer blending (no rg16f mask)");
 }
 
