@@ -32,6 +32,13 @@ float parseWind(const std::string& text) {
     return w;
 }
 
+EglPlatform parseEgl(const std::string& text) {
+    if (text == "auto") return EglPlatform::Auto;
+    if (text == "device") return EglPlatform::Device;
+    if (text == "surfaceless") return EglPlatform::Surfaceless;
+    throw UsageError("--egl '" + text + "': expected auto, device or surfaceless");
+}
+
 void requirePng(const char* flag, const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -56,6 +63,7 @@ Arguments parseArguments(const Tool& tool, int argc, char** argv) {
         else if (arg == "--headless") args.headless = true, headlessFlag = headlessFlag ? headlessFlag : "--headless";
         else if (arg == "--out") args.out = value(), args.headless = true, headlessFlag = "--out";
         else if (arg == "--mask") args.mask = value(), args.headless = true, headlessFlag = "--mask";
+        else if (arg == "--egl") args.egl = parseEgl(value()), args.headless = true, headlessFlag = "--egl";
         else if (arg == "--frames") args.frames = parseFrames(value()), framesGiven = true;
         else if (arg == "--wind" && tool.bendsInTheWind) args.wind = parseWind(value());
         else throw UsageError("unknown argument '" + arg + "' (see --help)");
@@ -71,8 +79,11 @@ std::string usage(const Tool& tool) {
     const std::string name = tool.name;
     return "usage: " + name + " [--headless] [--out PATH.png] [--mask PATH.png]" +
            (tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "") +
-           " [--frames N]\n"
-           "  --headless    render one frame offscreen (EGL surfaceless) and write it (the default without a display)\n"
+           " [--egl PLATFORM] [--frames N]\n"
+           "  --headless    render one frame offscreen (EGL, no window) and write it (the default without a display)\n"
+           "  --egl P       the headless context's EGL platform: device (EGL_EXT_platform_device: NVIDIA's and\n"
+           "                AMD's headless EGL, Mesa's devices), surfaceless (Mesa), or auto (default: device,\n"
+           "                then surfaceless); implies --headless\n"
            "  --out PATH    the PNG to write (implies --headless; default " +
            name +
            ".png); its directory\n"
@@ -84,7 +95,7 @@ std::string usage(const Tool& tool) {
                   "                (default 0.3; 0 draws exactly what SSAM's built-in programs draw)\n"
                 : "") +
            "  --frames N    in a window: close after N frames (default: when the window is closed)\n"
-           "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 core context; messages are\n"
+           "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 context; messages are\n"
            "'" +
            name + ": error: ...' on stderr.\n";
 }

@@ -28,30 +28,87 @@ struct NoContext : std::runtime_error {
 
 // ---- Contexts ---------------------------------------------------------------------------
 
-struct EglSurfaceless {
+// A context without a window or a config (EGL_KHR_no_config_context, surfaceless make-current) on
+// `display`, or "" and a reason.
+EGLContext createContext(EGLDisplay display, std::string& why) {
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
+        why = "the EGL display does not initialise";
+        return EGL_NO_CONTEXT;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        why = "eglBindAPI(EGL_OPENGL_API) failed";
+        return EGL_NO_CONTEXT;
+    }
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (context == EGL_NO_CONTEXT) why = "no OpenGL 3.3 core context without a config";
+    else if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        why = "eglMakeCurrent without a surface failed";
+        eglDestroyContext(display, context);
+        return EGL_NO_CONTEXT;
+    }
+    return context;
+}
+
+// A headless context on EGL_EXT_platform_device (each device in turn, e.g. an NVIDIA or AMD GPU,
+// or Mesa's software device) or on Mesa's surfaceless platform. `description` names the one taken.
+struct EglHeadless {
     EGLDisplay display = EGL_NO_DISPLAY;
     EGLContext context = EGL_NO_CONTEXT;
-    EglSurfaceless() {
+    std::string description;
+    explicit EglHeadless(EglPlatform platform) {
         // libepoxy aborts when libEGL cannot be loaded: check first.
         if (!dlopen("libEGL.so.1", RTLD_LAZY | RTLD_LOCAL)) throw NoContext("libEGL.so.1 cannot be loaded");
-        const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-        if (!client || !std::strstr(client, "EGL_MESA_platform_surfaceless"))
-            throw NoContext("EGL has no EGL_MESA_platform_surfaceless");
-        display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
-            throw NoContext("the surfaceless EGL display does not initialise");
-        if (!eglBindAPI(EGL_OPENGL_API)) throw NoContext("eglBindAPI(EGL_OPENGL_API) failed");
-        const EGLint attributes[] = {
-            EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
-            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-        context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-        if (context == EGL_NO_CONTEXT) throw NoContext("no OpenGL 3.3 core context without a config");
-        if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
-            throw NoContext("eglMakeCurrent without a surface failed");
+        const char* extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+        const std::string client = extensions ? extensions : "";
+        std::string why;
+        if (platform != EglPlatform::Surfaceless && !onDevice(client, why) && platform == EglPlatform::Device)
+            throw NoContext("EGL device platform: " + why);
+        if (context == EGL_NO_CONTEXT && !onSurfaceless(client, why))
+            throw NoContext(platform == EglPlatform::Auto ? "neither EGL platform gives one: " + why
+                                                          : "EGL surfaceless platform: " + why);
     }
-    ~EglSurfaceless() {
+    ~EglHeadless() {
         eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display, context);
+    }
+    EglHeadless(const EglHeadless&) = delete;
+    EglHeadless& operator=(const EglHeadless&) = delete;
+
+private:
+    bool onDevice(const std::string& client, std::string& why) {
+        if (client.find("EGL_EXT_platform_device") == std::string::npos ||
+            client.find("EGL_EXT_device_enumeration") == std::string::npos) {
+            why = "EGL has no EGL_EXT_platform_device / EGL_EXT_device_enumeration";
+            return false;
+        }
+        EGLDeviceEXT devices[16];
+        EGLint count = 0;
+        if (!eglQueryDevicesEXT(16, devices, &count) || count == 0) {
+            why = "eglQueryDevicesEXT lists no device";
+            return false;
+        }
+        for (EGLint i = 0; i < count && context == EGL_NO_CONTEXT; ++i) {
+            display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+            context = createContext(display, why);
+            if (context == EGL_NO_CONTEXT) continue;
+            const char* names = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
+            description = "EGL device " + std::to_string(i) + " of " + std::to_string(count) + " (" +
+                          (names ? names : "no device extensions") + ")";
+        }
+        return context != EGL_NO_CONTEXT;
+    }
+    bool onSurfaceless(const std::string& client, std::string& why) {
+        if (client.find("EGL_MESA_platform_surfaceless") == std::string::npos) {
+            why += (why.empty() ? "" : "; ") + std::string("EGL has no EGL_MESA_platform_surfaceless");
+            return false;
+        }
+        display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        context = createContext(display, why);
+        description = "EGL surfaceless platform";
+        return context != EGL_NO_CONTEXT;
     }
 };
 
@@ -303,8 +360,9 @@ void printSsamMessage(void* tool, ssam::gl::Severity severity, const char* messa
 }
 
 int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
-    EglSurfaceless context;
-    std::printf("OpenGL: %s, %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION));
+    EglHeadless context(args.egl);
+    std::printf("OpenGL: %s, %s on the %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION),
+                context.description.c_str());
     HostScene scene(args.wind);
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
@@ -368,7 +426,7 @@ int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRendere
     try {
         return args.headless ? runHeadless(tool, args, makeRenderer) : runWindow(tool, args, makeRenderer);
     } catch (const NoContext& e) {
-        std::printf("SKIPPED: no OpenGL 3.3 core context: %s\n", e.what());
+        std::printf("SKIPPED: no OpenGL 3.3 context: %s\n", e.what());
         return kNoContext;
     } catch (const std::exception& e) {
         printError(tool, e.what());

@@ -67,7 +67,8 @@ void check(const ssam::gl::ScreenSpaceAlphaMaskGl& ssam, ssam::gl::Status status
 // std::runtime_error "<what>: <compile log>" when a stage does not compile.
 GLuint linkProgram(const char* vertexSource, const char* fragmentSource, const std::string& what);
 
-// The whole program: arguments, context (EGL surfaceless headless, else a GLFW window), the host
+// The whole program: arguments, context (headless EGL on a device or surfaceless, else a GLFW
+// window: Arguments::egl), the host
 // scene, SSAM initialised with the platform's loader, frames, PNGs. Returns the exit status.
 int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRenderer& makeRenderer);
 
