@@ -144,6 +144,7 @@ void FrameTargets::prepare(const GlFunctions& gl, const FrameDesc& frame, MaskPr
         gl.FramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, foliageTex_, 0);
         attachedDepth_ = 0;  // re-check completeness below
     }
+    depthFormat_ = depth.internalFormat;
     const bool depthStencil = hasStencil(depth.internalFormat);
     const bool renderbuffer = frame.depthRenderbuffer != 0;
     const GLuint depthName = renderbuffer ? frame.depthRenderbuffer : frame.depthTexture;

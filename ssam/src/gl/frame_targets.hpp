@@ -29,13 +29,14 @@ public:
     unsigned int mask() const { return maskTex_; }
     unsigned int maskAdd() const { return maskAddTex_; }  // 0 unless Rg16f
     unsigned int foliage() const { return foliageTex_; }
+    int depthFormat() const { return depthFormat_; }  // the host depth's internal format (last prepare)
 
 private:
     void destroyTextures(const GlFunctions& gl);
     unsigned int maskFbo_ = 0, foliageFbo_ = 0, compositeFbo_ = 0;
     unsigned int maskTex_ = 0, maskAddTex_ = 0, foliageTex_ = 0;
     int width_ = 0, height_ = 0;
-    int foliageFormat_ = 0;
+    int foliageFormat_ = 0, depthFormat_ = 0;
     std::optional<MaskPrecision> precision_;
     unsigned int attachedColor_ = 0, attachedDepth_ = 0;
     bool attachedDepthRenderbuffer_ = false, attachedDepthStencil_ = false;

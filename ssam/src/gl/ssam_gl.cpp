@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../knob_rules.hpp"
+#include "depth_restore.hpp"
 #include "failure.hpp"
 #include "frame_targets.hpp"
 #include "gl_functions.hpp"
@@ -185,6 +186,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
           compositeMaskLerp = -1, compositeSquare = -1;
     GLuint emptyVao = 0;
     detail::FrameTargets targets;
+    detail::DepthRestore depthRestore;  // Settings::depthMaskThreshold > 0 only
 
     // The open frame (way b, and way a through it).
     Phase phase = Phase::Idle;
@@ -291,11 +293,13 @@ struct ScreenSpaceAlphaMaskGl::Impl {
             for (GLuint p : {mask.id, color.id, composite})
                 if (p) gl.DeleteProgram(p);
             targets.destroy(gl);
+            depthRestore.destroy(gl);
             if (emptyVao) gl.DeleteVertexArrays(1, &emptyVao);
         }
         mask = {}, color = {};
         composite = emptyVao = 0;
         targets = {};
+        depthRestore = {};
         initialized = false;
         return current;
     }
@@ -406,6 +410,9 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         passState.emplace(gl);
         phase = Phase::InColorPass;
         setFoliagePassState();
+        if (settings.depthMaskThreshold > 0.0f)  // the opaque depth, before the colour pass writes the foliage's
+            depthRestore.saveOpaqueDepth(gl, targets.maskFramebuffer(), targets.depthFormat(), frame.width,
+                                         frame.height, region);
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.foliageFramebuffer());
         gl.ClearBufferfv(GL_COLOR, 0, settings.foliageClearColor);
         gl.Disable(GL_BLEND);
@@ -449,6 +456,8 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Uniform1i(compositeSquare, settings.squareMask ? 1 : 0);
         gl.BindVertexArray(emptyVao);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
+        if (settings.depthMaskThreshold > 0.0f)
+            depthRestore.restoreWhereMaskIsLow(gl, targets.foliageFramebuffer(), targets.maskAdd() != 0, settings);
         phase = Phase::Idle;
     }
 

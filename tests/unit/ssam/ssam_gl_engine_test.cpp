@@ -164,6 +164,44 @@ TEST(SsamGlEngine, BuiltInProgramsReadTheHostsAttributeLocations) {
     EXPECT_EQ(defaults->settings().attributes.uv, 8u);  // the settings in force stay
 }
 
+// Settings::depthMaskThreshold: the host's depth keeps the foliage depth only where the composited
+// mask reaches the threshold (a leaf of alpha 1) and has the opaque depth back where it does not (a
+// leaf of alpha 0.4: mask 0.16); the colour is the same as without it, and the host's state is back.
+TEST(SsamGlEngine, DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskIsHigh) {
+    GlHost host;
+    const Quad faint{-1.0f, -1.0f, -0.1f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.4f}};
+    const Quad solid{0.1f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 0.0f, 1.0f, 1.0f}};
+    HostFoliage foliage({faint, solid});
+    const HostGlState hostState;
+    std::vector<engine::render::Readback> colors, depths;
+    for (const float threshold : {0.0f, 0.5f}) {
+        SCOPED_TRACE("threshold " + std::to_string(threshold));
+        ssam::gl::Settings settings;
+        settings.depthMaskThreshold = threshold;
+        auto ssam = initializedSsam(settings);
+        auto targets = host.opaque();
+        const ssam::gl::FrameDesc frame = host.frameOf(*targets);
+        hostState.set();
+        ASSERT_EQ(ssam->render(frame, kDraw(foliage)), Status::Ok) << ssam->lastMessage();
+        hostState.expectRestored();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDisable(GL_STENCIL_TEST);
+        glDisable(GL_COLOR_LOGIC_OP);
+        colors.push_back(host.backend->readback(targets->color()));
+        depths.push_back(host.backend->readback(targets->depth()));
+    }
+    EXPECT_EQ(colors[1].values, colors[0].values);
+    EXPECT_FLOAT_EQ(depths[0].at(3, 8, 0), faint.depth);  // the paper's: the faint leaf's depth too
+    EXPECT_FLOAT_EQ(depths[0].at(12, 8, 0), solid.depth);
+    EXPECT_FLOAT_EQ(depths[1].at(3, 8, 0), 1.0f);  // mask 0.16 < 0.5: the opaque (far) depth back
+    EXPECT_FLOAT_EQ(depths[1].at(12, 8, 0), solid.depth);
+    ssam::gl::Settings bad;
+    bad.depthMaskThreshold = 1.5f;
+    auto ssam = initializedSsam();
+    EXPECT_EQ(ssam->setSettings(bad), Status::InvalidArgument);
+    EXPECT_STREQ(ssam->lastMessage(), "ssam::gl settings: depthMaskThreshold = 1.500000 is outside [0, 1]");
+}
+
 // release() without a current context deletes nothing and says so (a status and the message
 // callback); made current again, a second release() has nothing left and initialize() works.
 TEST(SsamGlEngine, ReleaseWithoutAContextIsReported) {
