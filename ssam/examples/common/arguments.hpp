@@ -32,6 +32,9 @@ struct Arguments {
     std::string mask;                     // headless only; "" = not written
     int frames = 0;                       // window only; 0: until closed
     float wind = 0.0f;                    // --wind (tools that bend in the wind; their default kDefaultWind)
+    enum class Mist { None, After, Before } mist = Mist::None;  // --mist: the host's transparent pass
+    int repeat = 1;                   // --repeat: headless, time the SSAM frame this many times
+    float depthMaskThreshold = 0.0f;  // --depth-threshold: ssam::gl::Settings::depthMaskThreshold
     bool help = false;
 };
 

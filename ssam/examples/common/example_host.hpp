@@ -34,6 +34,9 @@ public:
     HostScene& operator=(const HostScene&) = delete;
 
     void drawOpaque() const;  // into colorTexture + depthTexture, cleared to the sky
+    // The host's transparent pass (kMist): blended onto the colour, depth-tested against the depth
+    // (after SSAM: the opaque + foliage depth it leaves), as a host's particles or fog are.
+    void drawMist() const;
     // Binds the cards' VAO and draws each card, calling setTint(card's tint rgb, alpha factor)
     // first; the same cards in the same order every time (§3.8).
     void drawCards(const std::function<void(const float tint[4])>& setTint) const;
