@@ -20,7 +20,7 @@ void loadFunctions(GlFunctions& gl, const Loader& load) {
     gl.name = reinterpret_cast<type>(load("gl" #name));                                                       \
     if (!gl.name)                                                                                             \
         throw Failure(Status::MissingEntryPoint, "ssam::gl: the host's GL loader has no address for gl" #name \
-                                                 " (an OpenGL 3.3 core function SSAM needs)");
+                                                 " (an OpenGL 3.3 function SSAM needs)");
     SSAM_GL_REQUIRED_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
     ENGINE_GL_PROGRAM_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
 #undef SSAM_GL_LOAD_REQUIRED

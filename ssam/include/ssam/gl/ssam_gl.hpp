@@ -51,7 +51,7 @@
 // The host's GL state: every piece SSAM changes is saved when a call (or a begin...Pass) starts
 // and restored when it returns (or at the matching end...Pass / composite), also on errors. That
 // includes what the host binds between a begin...Pass and its end...Pass: its program, VAO,
-// GL_ARRAY_BUFFER, active texture unit, GL_TEXTURE_2D bindings of units 0-2, generic vertex
+// GL_ARRAY_BUFFER, active texture unit, GL_TEXTURE_2D bindings of units 0-3, generic vertex
 // attributes, and the enables, blend, depth and mask state listed in ssam/README.md are back as
 // they were before begin...Pass. Other state the host changes inside a pass (uniforms, sampler
 // objects, textures of units 3 and up, buffer contents) stays as the host left it.
@@ -234,7 +234,7 @@ class ScreenSpaceAlphaMaskGl {
 public:
     ScreenSpaceAlphaMaskGl() noexcept;  // no GL yet
     // Deletes SSAM's GL objects (release()); the context must be current then, or release()
-    // must have been called while it was.
+    // must have been called while it was. Without one, the message callback is told (NoContext).
     ~ScreenSpaceAlphaMaskGl();
     ScreenSpaceAlphaMaskGl(ScreenSpaceAlphaMaskGl&&) noexcept;
     ScreenSpaceAlphaMaskGl& operator=(ScreenSpaceAlphaMaskGl&&) noexcept;
@@ -246,7 +246,8 @@ public:
     const char* lastMessage() const noexcept;
 
     // Resolves the GL entry points through the host's loader (MissingEntryPoint names the first
-    // one it has no address for), checks the current context (OpenGL 3.3 core or newer), compiles
+    // one it has no address for), checks the current context (OpenGL 3.3 or newer, core or
+    // compatibility), compiles
     // SSAM's programs. May be called again (e.g. after release()).
     Status initialize(GetProcAddress getProcAddress, const Settings& settings = {}) noexcept;
     Status initialize(GetProcAddressFunction getProcAddress, const Settings& settings = {}) noexcept;
