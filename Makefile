@@ -128,6 +128,14 @@ readme-images: build
 	# SSAM against alpha testing side by side, with 4x insets where they differ most.
 	$(BUILD_DIR)/bin/racer --headless --size 640x360 --frames 90 --fixed-dt 0.0333333 \
 	  --compare ssam,alpha-test --capture content/readme/compare.png
+	# ssam::gl's dark rims (ssam/README.md): the host's mist after SSAM, with the paper's depth and
+	# with depthMaskThreshold 0.25, and the mist drawn before SSAM (exact here); a 2x crop of each.
+	mkdir -p out/readme
+	for t in 0 0.25; do $(BUILD_DIR)/bin/ssam_gl_embedding --mist after --depth-threshold $$t \
+	  --out out/readme/rims_$$t.png || exit 1; done
+	$(BUILD_DIR)/bin/ssam_gl_embedding --mist before --out out/readme/rims_reference.png
+	oiiotool $(foreach f,0 0.25 reference,out/readme/rims_$(f).png --cut 160x112+40+250 --resample 320x224) \
+	  --mosaic:pad=4 3x1 --ch R,G,B -o content/readme/ssam_gl_rims.png
 
 # The README's chart: the full ssam-bench run on both backends with 2 threads (soft tiles and
 # llvmpipe's LP_NUM_THREADS), as the README's measured figures; its tables are in out/readme-bench/bench.md.

@@ -1,14 +1,14 @@
 # SPDX-License-Identifier: MIT
 # The installed package: what another engine finds with
-#   find_package(ssam 0.2 REQUIRED COMPONENTS soft gl)        (CMake)
-#   pkg-config --static --cflags --libs ssam ssam-soft ssam-gl  (anything else; static archives)
+#   find_package(ssam 0.2 REQUIRED COMPONENTS soft render_gl gl)               (CMake)
+#   pkg-config --static --cflags --libs ssam ssam-soft ssam-render-gl ssam-gl  (anything else)
 # Included by ssam/CMakeLists.txt once every library of the package exists. Layout:
 #   include/ssam/            ssam's headers and the generated version.hpp
 #   include/ssam/engine/     the engine headers ssam's API is written in (core errors and log,
 #                            render, the soft and GL backends); the ECS is not part of it
 #   lib/libssam*.a           ssam, ssam_core, ssam_render, ssam_render_soft, ssam_render_gl, ssam_gl
 #   lib/cmake/ssam/          ssamConfig.cmake and one targets file per component
-#   lib/pkgconfig/           ssam.pc, ssam-soft.pc, ssam-gl.pc
+#   lib/pkgconfig/           ssam.pc, ssam-soft.pc, ssam-render-gl.pc, ssam-gl.pc
 # Everything here belongs to the install component `library` (the demo's is `demo`).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -19,7 +19,9 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/version.hpp.in ${_ssam_generated}/ssam/
 target_include_directories(ssam PUBLIC $<BUILD_INTERFACE:${_ssam_generated}>)
 target_include_directories(ssam_gl PUBLIC $<BUILD_INTERFACE:${_ssam_generated}>)
 
-# The public headers use C++20 (std::span, designated initialisers): consumers get it from the targets.
+# The engine's and ssam's public headers use C++20 (std::span, designated initialisers): their
+# consumers get it from the targets. ssam::gl's header is C++17 and asks for no more
+# (ssam/CMakeLists.txt).
 target_compile_features(engine_core PUBLIC cxx_std_20)
 
 # Target names as a consumer sees them (ssam::core, ...), the same in this tree through
@@ -40,12 +42,15 @@ install(TARGETS ssam engine_render engine_core EXPORT ssamTargets COMPONENT libr
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${_ssam_engine_includes})
 install(TARGETS engine_render_soft EXPORT ssamSoftTargets COMPONENT library
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${_ssam_engine_includes})
-install(TARGETS engine_render_gl ssam_gl EXPORT ssamGlTargets COMPONENT library
+install(TARGETS engine_render_gl EXPORT ssamRenderGlTargets COMPONENT library
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${_ssam_engine_includes})
+install(TARGETS ssam_gl EXPORT ssamGlTargets COMPONENT library INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT ssamTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} FILE ssam-targets.cmake
         COMPONENT library)
 install(EXPORT ssamSoftTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} FILE ssam-soft-targets.cmake
         COMPONENT library)
+install(EXPORT ssamRenderGlTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir}
+        FILE ssam-render_gl-targets.cmake COMPONENT library)
 install(EXPORT ssamGlTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} FILE ssam-gl-targets.cmake
         COMPONENT library)
 
@@ -80,7 +85,7 @@ set(SSAM_PC_DL_LIBS "")
 if(CMAKE_DL_LIBS)
   set(SSAM_PC_DL_LIBS "-l${CMAKE_DL_LIBS}")
 endif()
-foreach(_pc ssam ssam-soft ssam-gl)
+foreach(_pc ssam ssam-soft ssam-render-gl ssam-gl)
   configure_file(${CMAKE_CURRENT_LIST_DIR}/${_pc}.pc.in ${CMAKE_CURRENT_BINARY_DIR}/${_pc}.pc @ONLY)
   install(FILES ${CMAKE_CURRENT_BINARY_DIR}/${_pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
           COMPONENT library)

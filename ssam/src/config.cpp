@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "knob_rules.hpp"
 
 namespace ssam {
 
@@ -18,16 +19,9 @@ const char* maskPrecisionName(MaskPrecision precision) {
 }
 
 void Config::validate() const {
-    auto inUnitRange = [](const char* knob, float value) {
-        if (!std::isfinite(value) || value < 0.0f || value > 1.0f)
-            throw engine::Error(std::string("ssam config: ") + knob + " = " + std::to_string(value) +
-                                " is outside [0, 1]");
-    };
-    inUnitRange("maskLerp", maskLerp);
-    inUnitRange("colorAlphaReference", colorAlphaReference);
-    for (int c = 0; c < 4; ++c)
-        if (!std::isfinite(foliageClearColor[c]))
-            throw engine::Error("ssam config: foliageClearColor has a non-finite component");
+    const float clear[4] = {foliageClearColor[0], foliageClearColor[1], foliageClearColor[2], foliageClearColor[3]};
+    if (const std::string error = detail::knobError(maskLerp, colorAlphaReference, clear); !error.empty())
+        throw engine::Error(error);
     using engine::render::CompareFunc;
     if (depthFunc == CompareFunc::Never || depthFunc == CompareFunc::Always || depthFunc == CompareFunc::Equal ||
         depthFunc == CompareFunc::NotEqual)

@@ -32,6 +32,37 @@ float parseWind(const std::string& text) {
     return w;
 }
 
+float parseThreshold(const std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const float t = std::strtof(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno == ERANGE || !(t >= 0.0f && t <= 1.0f))
+        throw UsageError("--depth-threshold '" + text + "': expected a mask value in 0..1");
+    return t;
+}
+
+Arguments::Mist parseMist(const std::string& text) {
+    if (text == "after") return Arguments::Mist::After;
+    if (text == "before") return Arguments::Mist::Before;
+    throw UsageError("--mist '" + text + "': expected after or before");
+}
+
+int parseRepeat(const std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const long n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno == ERANGE || n < 1 || n > 100000)
+        throw UsageError("--repeat '" + text + "': expected a whole number in 1..100000");
+    return static_cast<int>(n);
+}
+
+EglPlatform parseEgl(const std::string& text) {
+    if (text == "auto") return EglPlatform::Auto;
+    if (text == "device") return EglPlatform::Device;
+    if (text == "surfaceless") return EglPlatform::Surfaceless;
+    throw UsageError("--egl '" + text + "': expected auto, device or surfaceless");
+}
+
 void requirePng(const char* flag, const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -56,6 +87,10 @@ Arguments parseArguments(const Tool& tool, int argc, char** argv) {
         else if (arg == "--headless") args.headless = true, headlessFlag = headlessFlag ? headlessFlag : "--headless";
         else if (arg == "--out") args.out = value(), args.headless = true, headlessFlag = "--out";
         else if (arg == "--mask") args.mask = value(), args.headless = true, headlessFlag = "--mask";
+        else if (arg == "--egl") args.egl = parseEgl(value()), args.headless = true, headlessFlag = "--egl";
+        else if (arg == "--mist") args.mist = parseMist(value());
+        else if (arg == "--repeat") args.repeat = parseRepeat(value()), args.headless = true;
+        else if (arg == "--depth-threshold") args.depthMaskThreshold = parseThreshold(value());
         else if (arg == "--frames") args.frames = parseFrames(value()), framesGiven = true;
         else if (arg == "--wind" && tool.bendsInTheWind) args.wind = parseWind(value());
         else throw UsageError("unknown argument '" + arg + "' (see --help)");
@@ -71,8 +106,11 @@ std::string usage(const Tool& tool) {
     const std::string name = tool.name;
     return "usage: " + name + " [--headless] [--out PATH.png] [--mask PATH.png]" +
            (tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "") +
-           " [--frames N]\n"
-           "  --headless    render one frame offscreen (EGL surfaceless) and write it (the default without a display)\n"
+           " [--mist after|before] [--depth-threshold T] [--repeat N] [--egl PLATFORM] [--frames N]\n"
+           "  --headless    render one frame offscreen (EGL, no window) and write it (the default without a display)\n"
+           "  --egl P       the headless context's EGL platform: device (EGL_EXT_platform_device: NVIDIA's and\n"
+           "                AMD's headless EGL, Mesa's devices), surfaceless (Mesa), or auto (default: device,\n"
+           "                then surfaceless); implies --headless\n"
            "  --out PATH    the PNG to write (implies --headless; default " +
            name +
            ".png); its directory\n"
@@ -83,8 +121,16 @@ std::string usage(const Tool& tool) {
                 ? "  --wind A      the wind's bend in the host's vertex shader: a card's top moves A world units in x\n"
                   "                (default 0.3; 0 draws exactly what SSAM's built-in programs draw)\n"
                 : "") +
+           "  --mist WHEN   the host's transparent pass, pale mist behind every card: after SSAM (where later\n"
+           "                passes go: they see the foliage depth) or before it (exact here, the mist being\n"
+           "                behind all the foliage)\n"
+           "  --depth-threshold T  keep the foliage depth only where SSAM's mask reaches T (default 0: wherever\n"
+           "                the colour pass wrote it, as the paper); above 0 the mist meets leaf edges without\n"
+           "                a dark rim\n"
+           "  --repeat N    headless: draw the frame N times and print the median time of SSAM's passes\n"
+           "                (glFinish before and after; implies --headless)\n"
            "  --frames N    in a window: close after N frames (default: when the window is closed)\n"
-           "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 core context; messages are\n"
+           "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 context; messages are\n"
            "'" +
            name + ": error: ...' on stderr.\n";
 }

@@ -20,12 +20,21 @@ struct Tool {
     bool bendsInTheWind = false;
 };
 
+// Where a headless context comes from: EGL_EXT_platform_device (NVIDIA's and AMD's headless EGL,
+// and Mesa's devices, its software one included) or Mesa's surfaceless platform; Auto tries the
+// device platform first, then the surfaceless one.
+enum class EglPlatform { Auto, Device, Surfaceless };
+
 struct Arguments {
     bool headless = false;
-    std::string out;    // headless only; default <tool>.png
-    std::string mask;   // headless only; "" = not written
-    int frames = 0;     // window only; 0: until closed
-    float wind = 0.0f;  // --wind (tools that bend in the wind; their default kDefaultWind)
+    EglPlatform egl = EglPlatform::Auto;  // --egl, headless only
+    std::string out;                      // headless only; default <tool>.png
+    std::string mask;                     // headless only; "" = not written
+    int frames = 0;                       // window only; 0: until closed
+    float wind = 0.0f;                    // --wind (tools that bend in the wind; their default kDefaultWind)
+    enum class Mist { None, After, Before } mist = Mist::None;  // --mist: the host's transparent pass
+    int repeat = 1;                   // --repeat: headless, time the SSAM frame this many times
+    float depthMaskThreshold = 0.0f;  // --depth-threshold: ssam::gl::Settings::depthMaskThreshold
     bool help = false;
 };
 

@@ -6,6 +6,7 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -28,30 +29,87 @@ struct NoContext : std::runtime_error {
 
 // ---- Contexts ---------------------------------------------------------------------------
 
-struct EglSurfaceless {
+// A context without a window or a config (EGL_KHR_no_config_context, surfaceless make-current) on
+// `display`, or "" and a reason.
+EGLContext createContext(EGLDisplay display, std::string& why) {
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
+        why = "the EGL display does not initialise";
+        return EGL_NO_CONTEXT;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) {
+        why = "eglBindAPI(EGL_OPENGL_API) failed";
+        return EGL_NO_CONTEXT;
+    }
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (context == EGL_NO_CONTEXT) why = "no OpenGL 3.3 core context without a config";
+    else if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+        why = "eglMakeCurrent without a surface failed";
+        eglDestroyContext(display, context);
+        return EGL_NO_CONTEXT;
+    }
+    return context;
+}
+
+// A headless context on EGL_EXT_platform_device (each device in turn, e.g. an NVIDIA or AMD GPU,
+// or Mesa's software device) or on Mesa's surfaceless platform. `description` names the one taken.
+struct EglHeadless {
     EGLDisplay display = EGL_NO_DISPLAY;
     EGLContext context = EGL_NO_CONTEXT;
-    EglSurfaceless() {
+    std::string description;
+    explicit EglHeadless(EglPlatform platform) {
         // libepoxy aborts when libEGL cannot be loaded: check first.
         if (!dlopen("libEGL.so.1", RTLD_LAZY | RTLD_LOCAL)) throw NoContext("libEGL.so.1 cannot be loaded");
-        const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-        if (!client || !std::strstr(client, "EGL_MESA_platform_surfaceless"))
-            throw NoContext("EGL has no EGL_MESA_platform_surfaceless");
-        display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr))
-            throw NoContext("the surfaceless EGL display does not initialise");
-        if (!eglBindAPI(EGL_OPENGL_API)) throw NoContext("eglBindAPI(EGL_OPENGL_API) failed");
-        const EGLint attributes[] = {
-            EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
-            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-        context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-        if (context == EGL_NO_CONTEXT) throw NoContext("no OpenGL 3.3 core context without a config");
-        if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
-            throw NoContext("eglMakeCurrent without a surface failed");
+        const char* extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+        const std::string client = extensions ? extensions : "";
+        std::string why;
+        if (platform != EglPlatform::Surfaceless && !onDevice(client, why) && platform == EglPlatform::Device)
+            throw NoContext("EGL device platform: " + why);
+        if (context == EGL_NO_CONTEXT && !onSurfaceless(client, why))
+            throw NoContext(platform == EglPlatform::Auto ? "neither EGL platform gives one: " + why
+                                                          : "EGL surfaceless platform: " + why);
     }
-    ~EglSurfaceless() {
+    ~EglHeadless() {
         eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display, context);
+    }
+    EglHeadless(const EglHeadless&) = delete;
+    EglHeadless& operator=(const EglHeadless&) = delete;
+
+private:
+    bool onDevice(const std::string& client, std::string& why) {
+        if (client.find("EGL_EXT_platform_device") == std::string::npos ||
+            client.find("EGL_EXT_device_enumeration") == std::string::npos) {
+            why = "EGL has no EGL_EXT_platform_device / EGL_EXT_device_enumeration";
+            return false;
+        }
+        EGLDeviceEXT devices[16];
+        EGLint count = 0;
+        if (!eglQueryDevicesEXT(16, devices, &count) || count == 0) {
+            why = "eglQueryDevicesEXT lists no device";
+            return false;
+        }
+        for (EGLint i = 0; i < count && context == EGL_NO_CONTEXT; ++i) {
+            display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+            context = createContext(display, why);
+            if (context == EGL_NO_CONTEXT) continue;
+            const char* names = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
+            description = "EGL device " + std::to_string(i) + " of " + std::to_string(count) + " (" +
+                          (names ? names : "no device extensions") + ")";
+        }
+        return context != EGL_NO_CONTEXT;
+    }
+    bool onSurfaceless(const std::string& client, std::string& why) {
+        if (client.find("EGL_MESA_platform_surfaceless") == std::string::npos) {
+            why += (why.empty() ? "" : "; ") + std::string("EGL has no EGL_MESA_platform_surfaceless");
+            return false;
+        }
+        display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        context = createContext(display, why);
+        description = "EGL surfaceless platform";
+        return context != EGL_NO_CONTEXT;
     }
 };
 
@@ -151,7 +209,7 @@ HostScene::HostScene(float wind) {
     colorUniform_ = glGetUniformLocation(opaqueProgram_, "u_color");
 
     std::vector<Vertex> opaque, cards;
-    for (const Rect3& r : {kGround, kBox, kBoxTop}) appendStrip(opaque, r, 1);
+    for (const Rect3& r : {kGround, kBox, kBoxTop, kMist}) appendStrip(opaque, r, 1);
     for (const Rect3& r : kCards) {
         appendStrip(cards, r, kCardRows);
         // Bounds hold every pixel the card can reach, bent or not (or the composite's scissor
@@ -166,17 +224,18 @@ HostScene::HostScene(float wind) {
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(opaque.size() * sizeof(Vertex)), opaque.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-    // The cards' VAO follows ssam::gl::AttributeLocations: position and uv; normal, colour and
-    // the instance matrix are left to SSAM's defaults.
+    // The cards' VAO at SSAM's default ssam::gl::AttributeLocations: position and uv; normal,
+    // colour and the instance matrix are left to SSAM's generic values. (A host whose VAOs use
+    // other locations sets Settings::attributes to them instead.)
     glGenVertexArrays(1, &cardsVao_);
     glBindVertexArray(cardsVao_);
     glBindBuffer(GL_ARRAY_BUFFER, buffers_[1]);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(cards.size() * sizeof(Vertex)), cards.data(), GL_STATIC_DRAW);
-    using Loc = ssam::gl::AttributeLocations;
-    glEnableVertexAttribArray(Loc::position);
-    glVertexAttribPointer(Loc::position, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-    glEnableVertexAttribArray(Loc::uv);
-    glVertexAttribPointer(Loc::uv, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+    const ssam::gl::AttributeLocations at;
+    glEnableVertexAttribArray(at.position);
+    glVertexAttribPointer(at.position, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
+    glEnableVertexAttribArray(at.uv);
+    glVertexAttribPointer(at.uv, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(3 * sizeof(float)));
     glBindVertexArray(0);
 
@@ -242,6 +301,23 @@ void HostScene::drawOpaque() const {
     }
 }
 
+void HostScene::drawMist() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glViewport(0, 0, kWidth, kHeight);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);  // a transparent pass tests depth, writes none
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // the frame stays opaque
+    glUseProgram(opaqueProgram_);
+    glUniformMatrix4fv(viewProjUniform_, 1, GL_FALSE, kViewProj);
+    glUniform4fv(colorUniform_, 1, kMist.color.data());
+    glBindVertexArray(opaqueVao_);
+    glDrawArrays(GL_TRIANGLES, 3 * 6, 6);  // after the ground, the box and its top
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+}
+
 void HostScene::drawCards(const std::function<void(const float tint[4])>& setTint) const {
     glBindVertexArray(cardsVao_);
     for (std::size_t i = 0; i < kCards.size(); ++i) {
@@ -302,16 +378,36 @@ void printSsamMessage(void* tool, ssam::gl::Severity severity, const char* messa
 }
 
 int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
-    EglSurfaceless context;
-    std::printf("OpenGL: %s, %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION));
+    EglHeadless context(args.egl);
+    std::printf("OpenGL: %s, %s on the %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION),
+                context.description.c_str());
     HostScene scene(args.wind);
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
-    // SSAM resolves its GL functions through the host's loader: here EGL's. Settings{}: the paper's.
-    check(ssam, ssam.initialize(eglGetProcAddress), "ssam::gl initialize");
+    // SSAM resolves its GL functions through the host's loader: here EGL's. The paper's settings
+    // but for --depth-threshold.
+    ssam::gl::Settings settings;
+    settings.depthMaskThreshold = args.depthMaskThreshold;
+    check(ssam, ssam.initialize(eglGetProcAddress, settings), "ssam::gl initialize");
     const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
-    scene.drawOpaque();
-    foliage->render(ssam, scene.frame());
+    std::vector<double> milliseconds;
+    for (int i = 0; i < args.repeat; ++i) {
+        scene.drawOpaque();
+        if (args.mist == Arguments::Mist::Before) scene.drawMist();
+        glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        foliage->render(ssam, scene.frame());
+        glFinish();
+        milliseconds.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        // Later transparent passes after SSAM: they see the foliage depth.
+        if (args.mist == Arguments::Mist::After) scene.drawMist();
+    }
+    if (args.repeat > 1) {
+        std::sort(milliseconds.begin(), milliseconds.end());
+        std::printf("ssam passes: median %.3f ms over %d frames (%dx%d)\n", milliseconds[milliseconds.size() / 2],
+                    args.repeat, kWidth, kHeight);
+    }
     writeOrThrow(args.out, scene.frame().colorTexture);
     if (!args.mask.empty()) writeOrThrow(args.mask, ssam.intermediates().mask);
     return 0;
@@ -323,11 +419,15 @@ int runWindow(const Tool& tool, const Arguments& args, const MakeFoliageRenderer
     HostScene scene(args.wind);
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
-    check(ssam, ssam.initialize(glfwGetProcAddress), "ssam::gl initialize");  // here GLFW's loader
+    ssam::gl::Settings settings;
+    settings.depthMaskThreshold = args.depthMaskThreshold;
+    check(ssam, ssam.initialize(glfwGetProcAddress, settings), "ssam::gl initialize");  // here GLFW's loader
     const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
     for (int frame = 0; !glfwWindowShouldClose(window.window) && (args.frames <= 0 || frame < args.frames); ++frame) {
         scene.drawOpaque();
+        if (args.mist == Arguments::Mist::Before) scene.drawMist();
         foliage->render(ssam, scene.frame());
+        if (args.mist == Arguments::Mist::After) scene.drawMist();
         int w = 0, h = 0;
         glfwGetFramebufferSize(window.window, &w, &h);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.framebuffer());
@@ -367,7 +467,7 @@ int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRendere
     try {
         return args.headless ? runHeadless(tool, args, makeRenderer) : runWindow(tool, args, makeRenderer);
     } catch (const NoContext& e) {
-        std::printf("SKIPPED: no OpenGL 3.3 core context: %s\n", e.what());
+        std::printf("SKIPPED: no OpenGL 3.3 context: %s\n", e.what());
         return kNoContext;
     } catch (const std::exception& e) {
         printError(tool, e.what());

@@ -34,6 +34,9 @@ public:
     HostScene& operator=(const HostScene&) = delete;
 
     void drawOpaque() const;  // into colorTexture + depthTexture, cleared to the sky
+    // The host's transparent pass (kMist): blended onto the colour, depth-tested against the depth
+    // (after SSAM: the opaque + foliage depth it leaves), as a host's particles or fog are.
+    void drawMist() const;
     // Binds the cards' VAO and draws each card, calling setTint(card's tint rgb, alpha factor)
     // first; the same cards in the same order every time (§3.8).
     void drawCards(const std::function<void(const float tint[4])>& setTint) const;
@@ -67,7 +70,8 @@ void check(const ssam::gl::ScreenSpaceAlphaMaskGl& ssam, ssam::gl::Status status
 // std::runtime_error "<what>: <compile log>" when a stage does not compile.
 GLuint linkProgram(const char* vertexSource, const char* fragmentSource, const std::string& what);
 
-// The whole program: arguments, context (EGL surfaceless headless, else a GLFW window), the host
+// The whole program: arguments, context (headless EGL on a device or surfaceless, else a GLFW
+// window: Arguments::egl), the host
 // scene, SSAM initialised with the platform's loader, frames, PNGs. Returns the exit status.
 int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRenderer& makeRenderer);
 

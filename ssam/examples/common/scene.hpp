@@ -22,6 +22,11 @@ struct Rect3 {
 constexpr Rect3 kGround{-1.0f, -1.0f, 1.0f, -0.3f, 0.9f, 0.9f, {0.35f, 0.28f, 0.18f, 1.0f}};
 constexpr Rect3 kBox{0.35f, -0.6f, 0.85f, 0.2f, 0.5f, 0.5f, {0.60f, 0.25f, 0.20f, 1.0f}};
 constexpr Rect3 kBoxTop{0.35f, 0.2f, 0.85f, 0.3f, 0.5f, 0.5f, {0.75f, 0.40f, 0.30f, 1.0f}};
+// The host's transparent pass (--mist): pale mist over the whole frame, behind every card and in
+// front of the ground and the sky, alpha-blended and depth-tested without depth writes. After SSAM
+// it is cut where the colour pass wrote foliage depth; before SSAM (behind all foliage, it may go
+// there) it is the exact answer the later pass approximates.
+constexpr Rect3 kMist{-1.0f, -1.0f, 1.0f, 1.0f, 0.85f, 0.85f, {0.95f, 0.95f, 0.95f, 0.6f}};
 
 // Foliage cards (leaf texture * tint, alpha * texture alpha). A and B cross in depth at x = -0.15
 // (A nearer on the left); C is alone over the sky; D is behind the box.

@@ -3,11 +3,12 @@
 // (common/example_host.hpp: its own context, shaders, buffers and render targets) draws its
 // opaque scene into its own colour + depth textures, then ssam::gl::ScreenSpaceAlphaMaskGl::render
 // runs the mask, colour and composite passes ([Hathaway 2010] §3.5), calling back into the program
-// to draw its foliage cards -- its VAO laid out at ssam::gl::AttributeLocations.
+// to draw its foliage cards -- its VAO laid out at SSAM's default ssam::gl::AttributeLocations.
 //
 //   ssam_gl_embedding               a GLFW window when a display is available
-//   ssam_gl_embedding --headless --out frame.png [--mask mask.png]
-//                                   EGL surfaceless (EGL_PLATFORM_SURFACELESS_MESA), one frame
+//   ssam_gl_embedding --headless --out frame.png [--mask mask.png] [--egl device|surfaceless]
+//                                   one frame on headless EGL: EGL_EXT_platform_device (NVIDIA's,
+//                                   AMD's, Mesa's devices) or Mesa's surfaceless platform
 // Exit codes (common/arguments.hpp): 0 ok, 1 error, 2 usage error, 77 no OpenGL 3.3 core
 // context could be created (tests skip).
 #include "example_host.hpp"

@@ -39,11 +39,40 @@ GLuint createTarget(const GlFunctions& gl, GLint internalFormat, int width, int 
     return t;
 }
 
-void attachDepth(const GlFunctions& gl, GLuint fbo, GLuint depth, bool depthStencil) {
+void attachDepth(const GlFunctions& gl, GLuint fbo, GLuint depth, bool renderbuffer, bool depthStencil) {
     gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
-    gl.FramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
-    gl.FramebufferTexture2D(GL_DRAW_FRAMEBUFFER, depthStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                            GL_TEXTURE_2D, depth, 0);
+    gl.FramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);  // any kind
+    const GLenum attachment = depthStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+    if (renderbuffer) gl.FramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, attachment, GL_RENDERBUFFER, depth);
+    else gl.FramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, GL_TEXTURE_2D, depth, 0);
+}
+
+// The host's depth as a texture or a renderbuffer (FrameDesc: exactly one), with a message that
+// names a renderbuffer handed over as a texture (or the other way round) for what it is.
+TextureInfo inspectDepth(const GlFunctions& gl, const FrameDesc& frame) {
+    if ((frame.depthTexture != 0) == (frame.depthRenderbuffer != 0))
+        throw Failure(Status::InvalidArgument, "ssam::gl: give the depth as exactly one of FrameDesc::depthTexture (" +
+                                                   std::to_string(frame.depthTexture) +
+                                                   ") and FrameDesc::depthRenderbuffer (" +
+                                                   std::to_string(frame.depthRenderbuffer) + ")");
+    if (frame.depthRenderbuffer) return inspectRenderbuffer(gl, frame.depthRenderbuffer, "depth renderbuffer");
+    const GLuint name = frame.depthTexture;
+    const bool alsoRenderbuffer = gl.IsRenderbuffer(name);
+    if (!gl.IsTexture(name) && alsoRenderbuffer)
+        throw Failure(Status::InvalidTexture, "ssam::gl: depth texture " + std::to_string(name) +
+                                                  " is not a texture but a renderbuffer: pass it as "
+                                                  "FrameDesc::depthRenderbuffer");
+    const TextureInfo depth = inspectTexture2D(gl, name, "depth texture");
+    if (!isDepthFormat(depth.internalFormat))
+        throw Failure(Status::InvalidTexture,
+                      "ssam::gl: depth texture " + std::to_string(name) + " has format " +
+                          internalFormatName(depth.internalFormat) +
+                          "; use a GL_DEPTH_COMPONENT* or depth-stencil format" +
+                          (alsoRenderbuffer ? " (GL name " + std::to_string(name) +
+                                                  " is also a renderbuffer: if that is your depth, pass it as "
+                                                  "FrameDesc::depthRenderbuffer)"
+                                            : std::string()));
+    return depth;
 }
 
 std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
@@ -74,18 +103,20 @@ void FrameTargets::destroy(const GlFunctions& gl) {
 
 void FrameTargets::prepare(const GlFunctions& gl, const FrameDesc& frame, MaskPrecision precision) {
     const TextureInfo color = inspectTexture2D(gl, frame.colorTexture, "colour texture");
-    const TextureInfo depth = inspectTexture2D(gl, frame.depthTexture, "depth texture");
+    const TextureInfo depth = inspectDepth(gl, frame);
     if (!isColorFormat(color.internalFormat))
         throw Failure(Status::InvalidTexture, "ssam::gl: colour texture " + std::to_string(frame.colorTexture) +
                                                   " has format " + internalFormatName(color.internalFormat) +
                                                   "; use GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F or GL_RGBA32F");
     if (!isDepthFormat(depth.internalFormat))
-        throw Failure(Status::InvalidTexture, "ssam::gl: depth texture " + std::to_string(frame.depthTexture) +
-                                                  " has format " + internalFormatName(depth.internalFormat) +
+        throw Failure(Status::InvalidTexture, "ssam::gl: depth renderbuffer " +
+                                                  std::to_string(frame.depthRenderbuffer) + " has format " +
+                                                  internalFormatName(depth.internalFormat) +
                                                   "; use a GL_DEPTH_COMPONENT* or depth-stencil format");
-    for (const auto& [info, what] : {std::pair{color, "colour"}, std::pair{depth, "depth"}})
+    const char* depthKind = frame.depthRenderbuffer ? "depth renderbuffer" : "depth texture";
+    for (const auto& [info, what] : {std::pair{color, "colour texture"}, std::pair{depth, depthKind}})
         if (info.width != frame.width || info.height != frame.height)
-            throw Failure(Status::InvalidTexture, std::string("ssam::gl: the ") + what + " texture is " +
+            throw Failure(Status::InvalidTexture, std::string("ssam::gl: the ") + what + " is " +
                                                       sizeText(info.width, info.height) + " but the frame is " +
                                                       sizeText(frame.width, frame.height));
 
@@ -113,14 +144,19 @@ void FrameTargets::prepare(const GlFunctions& gl, const FrameDesc& frame, MaskPr
         gl.FramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, foliageTex_, 0);
         attachedDepth_ = 0;  // re-check completeness below
     }
+    depthFormat_ = depth.internalFormat;
     const bool depthStencil = hasStencil(depth.internalFormat);
-    if (attachedDepth_ != frame.depthTexture || attachedDepthStencil_ != depthStencil) {
+    const bool renderbuffer = frame.depthRenderbuffer != 0;
+    const GLuint depthName = renderbuffer ? frame.depthRenderbuffer : frame.depthTexture;
+    if (attachedDepth_ != depthName || attachedDepthRenderbuffer_ != renderbuffer ||
+        attachedDepthStencil_ != depthStencil) {
         attachedDepth_ = 0;  // until both framebuffers are known complete
-        attachDepth(gl, maskFbo_, frame.depthTexture, depthStencil);
+        attachDepth(gl, maskFbo_, depthName, renderbuffer, depthStencil);
         checkDrawFramebuffer(gl, "mask pass");
-        attachDepth(gl, foliageFbo_, frame.depthTexture, depthStencil);
+        attachDepth(gl, foliageFbo_, depthName, renderbuffer, depthStencil);
         checkDrawFramebuffer(gl, "colour pass");
-        attachedDepth_ = frame.depthTexture;
+        attachedDepth_ = depthName;
+        attachedDepthRenderbuffer_ = renderbuffer;
         attachedDepthStencil_ = depthStencil;
     }
     if (attachedColor_ != frame.colorTexture) {

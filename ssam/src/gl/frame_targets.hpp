@@ -2,7 +2,7 @@
 #pragma once
 // SSAM's render targets for one host frame ([Hathaway 2010] §3.5): rt_mask (in the configured
 // precision) and rt_foliage (in the format of the host's colour texture), each with the host's
-// depth texture attached, and the composite's framebuffer around the host's colour texture.
+// depth texture or renderbuffer attached, and the composite's framebuffer around the host's colour texture.
 // Recreated only when the frame's size, the precision or the colour format change.
 #include <optional>
 
@@ -29,16 +29,17 @@ public:
     unsigned int mask() const { return maskTex_; }
     unsigned int maskAdd() const { return maskAddTex_; }  // 0 unless Rg16f
     unsigned int foliage() const { return foliageTex_; }
+    int depthFormat() const { return depthFormat_; }  // the host depth's internal format (last prepare)
 
 private:
     void destroyTextures(const GlFunctions& gl);
     unsigned int maskFbo_ = 0, foliageFbo_ = 0, compositeFbo_ = 0;
     unsigned int maskTex_ = 0, maskAddTex_ = 0, foliageTex_ = 0;
     int width_ = 0, height_ = 0;
-    int foliageFormat_ = 0;
+    int foliageFormat_ = 0, depthFormat_ = 0;
     std::optional<MaskPrecision> precision_;
     unsigned int attachedColor_ = 0, attachedDepth_ = 0;
-    bool attachedDepthStencil_ = false;
+    bool attachedDepthRenderbuffer_ = false, attachedDepthStencil_ = false;
 };
 
 // The composite's scissor in GL window coordinates: the screen region of the frame's

@@ -20,7 +20,7 @@ void loadFunctions(GlFunctions& gl, const Loader& load) {
     gl.name = reinterpret_cast<type>(load("gl" #name));                                                       \
     if (!gl.name)                                                                                             \
         throw Failure(Status::MissingEntryPoint, "ssam::gl: the host's GL loader has no address for gl" #name \
-                                                 " (an OpenGL 3.3 core function SSAM needs)");
+                                                 " (an OpenGL 3.3 function SSAM needs)");
     SSAM_GL_REQUIRED_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
     ENGINE_GL_PROGRAM_FUNCTIONS(SSAM_GL_LOAD_REQUIRED)
 #undef SSAM_GL_LOAD_REQUIRED
@@ -57,15 +57,16 @@ std::string checkContext(GlFunctions& gl) {
     if (major > 3 || (major == 3 && minor >= 2)) gl.GetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
     if (major < 3 || (major == 3 && minor < 3))
         throw Failure(Status::NoContext,
-                      std::string("ssam::gl: OpenGL 3.3 core or newer needed, the current context is ") + version);
+                      std::string("ssam::gl: OpenGL 3.3 or newer needed, the current context is ") + version);
     gl.version = major * 10 + minor;
     gl.perBufferBlend = gl.BlendEquationi && gl.BlendEquationSeparatei && gl.BlendFuncSeparatei &&
                         (gl.version >= 40 || gl.hasExtension("GL_ARB_draw_buffers_blend"));
     gl.textureStorage = gl.TexStorage2D && (gl.version >= 42 || gl.hasExtension("GL_ARB_texture_storage"));
     gl.clipControl = gl.version >= 45 || gl.hasExtension("GL_ARB_clip_control");
+    gl.compatibility = (profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0;
     const auto* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
     return std::string(renderer ? renderer : "?") + ", OpenGL " + version +
-           ((profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) ? " (compatibility)" : "") +
+           (gl.compatibility ? " (compatibility)" : "") +
            (gl.perBufferBlend ? "; per-buffer blending" : "; no per-buffer blending (no rg16f mask)");
 }
 

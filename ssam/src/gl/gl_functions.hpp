@@ -15,65 +15,72 @@ namespace ssam::gl::detail {
 
 // OpenGL 3.3 core: ssam::gl needs every one of these, and those of ENGINE_GL_PROGRAM_FUNCTIONS
 // (GlFunctions' base, which the engine's shared program builder takes).
-#define SSAM_GL_REQUIRED_FUNCTIONS(X)                          \
-    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                   \
-    X(PFNGLBINDBUFFERPROC, BindBuffer)                         \
-    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)               \
-    X(PFNGLBINDTEXTUREPROC, BindTexture)                       \
-    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)               \
-    X(PFNGLBLENDEQUATIONPROC, BlendEquation)                   \
-    X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate)   \
-    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)           \
-    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus) \
-    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                   \
-    X(PFNGLCOLORMASKIPROC, ColorMaski)                         \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)         \
-    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                 \
-    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)         \
-    X(PFNGLDEPTHFUNCPROC, DepthFunc)                           \
-    X(PFNGLDEPTHMASKPROC, DepthMask)                           \
-    X(PFNGLDISABLEPROC, Disable)                               \
-    X(PFNGLDISABLEIPROC, Disablei)                             \
-    X(PFNGLDRAWARRAYSPROC, DrawArrays)                         \
-    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                       \
-    X(PFNGLENABLEPROC, Enable)                                 \
-    X(PFNGLENABLEIPROC, Enablei)                               \
-    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)     \
-    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)               \
-    X(PFNGLGENTEXTURESPROC, GenTextures)                       \
-    X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)               \
-    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                   \
-    X(PFNGLGETBOOLEANVPROC, GetBooleanv)                       \
-    X(PFNGLGETERRORPROC, GetError)                             \
-    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                   \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                       \
-    X(PFNGLGETSTRINGPROC, GetString)                           \
-    X(PFNGLGETSTRINGIPROC, GetStringi)                         \
-    X(PFNGLGETTEXLEVELPARAMETERIVPROC, GetTexLevelParameteriv) \
-    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)         \
-    X(PFNGLGETVERTEXATTRIBFVPROC, GetVertexAttribfv)           \
-    X(PFNGLISENABLEDPROC, IsEnabled)                           \
-    X(PFNGLISENABLEDIPROC, IsEnabledi)                         \
-    X(PFNGLISTEXTUREPROC, IsTexture)                           \
-    X(PFNGLSCISSORPROC, Scissor)                               \
-    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                         \
-    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                   \
-    X(PFNGLUNIFORM1FPROC, Uniform1f)                           \
-    X(PFNGLUNIFORM1IPROC, Uniform1i)                           \
-    X(PFNGLUNIFORM3FVPROC, Uniform3fv)                         \
-    X(PFNGLUNIFORM4FPROC, Uniform4f)                           \
-    X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)             \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                         \
-    X(PFNGLVERTEXATTRIB2FPROC, VertexAttrib2f)                 \
-    X(PFNGLVERTEXATTRIB3FPROC, VertexAttrib3f)                 \
-    X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f)                 \
-    X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv)               \
+#define SSAM_GL_REQUIRED_FUNCTIONS(X)                                  \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                           \
+    X(PFNGLBINDBUFFERPROC, BindBuffer)                                 \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                       \
+    X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                     \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                               \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                       \
+    X(PFNGLBLENDEQUATIONPROC, BlendEquation)                           \
+    X(PFNGLBLENDEQUATIONSEPARATEPROC, BlendEquationSeparate)           \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                   \
+    X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                       \
+    X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)         \
+    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                           \
+    X(PFNGLCOLORMASKIPROC, ColorMaski)                                 \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                 \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                         \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                 \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                   \
+    X(PFNGLDEPTHMASKPROC, DepthMask)                                   \
+    X(PFNGLDISABLEPROC, Disable)                                       \
+    X(PFNGLDISABLEIPROC, Disablei)                                     \
+    X(PFNGLDRAWARRAYSPROC, DrawArrays)                                 \
+    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                               \
+    X(PFNGLENABLEPROC, Enable)                                         \
+    X(PFNGLENABLEIPROC, Enablei)                                       \
+    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)       \
+    X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)             \
+    X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                       \
+    X(PFNGLGENTEXTURESPROC, GenTextures)                               \
+    X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                       \
+    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                           \
+    X(PFNGLGETBOOLEANVPROC, GetBooleanv)                               \
+    X(PFNGLGETERRORPROC, GetError)                                     \
+    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                           \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                               \
+    X(PFNGLGETRENDERBUFFERPARAMETERIVPROC, GetRenderbufferParameteriv) \
+    X(PFNGLGETSTRINGPROC, GetString)                                   \
+    X(PFNGLGETSTRINGIPROC, GetStringi)                                 \
+    X(PFNGLGETTEXLEVELPARAMETERIVPROC, GetTexLevelParameteriv)         \
+    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                 \
+    X(PFNGLGETVERTEXATTRIBFVPROC, GetVertexAttribfv)                   \
+    X(PFNGLISENABLEDPROC, IsEnabled)                                   \
+    X(PFNGLISENABLEDIPROC, IsEnabledi)                                 \
+    X(PFNGLISRENDERBUFFERPROC, IsRenderbuffer)                         \
+    X(PFNGLISTEXTUREPROC, IsTexture)                                   \
+    X(PFNGLREADBUFFERPROC, ReadBuffer)                                 \
+    X(PFNGLSCISSORPROC, Scissor)                                       \
+    X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                 \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri)                           \
+    X(PFNGLUNIFORM1FPROC, Uniform1f)                                   \
+    X(PFNGLUNIFORM1IPROC, Uniform1i)                                   \
+    X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                 \
+    X(PFNGLUNIFORM4FPROC, Uniform4f)                                   \
+    X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                     \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                                 \
+    X(PFNGLVERTEXATTRIB2FPROC, VertexAttrib2f)                         \
+    X(PFNGLVERTEXATTRIB3FPROC, VertexAttrib3f)                         \
+    X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f)                         \
+    X(PFNGLVERTEXATTRIB4FVPROC, VertexAttrib4fv)                       \
     X(PFNGLVIEWPORTPROC, Viewport)
 
 // Newer than 3.3, used when the context has them: per-buffer blending (GL 4.0 or
 // GL_ARB_draw_buffers_blend, whose names end in ARB) for the Rg16f mask, immutable storage
-// (GL 4.2 or GL_ARB_texture_storage, same names).
+// (GL 4.2 or GL_ARB_texture_storage, same names); glClampColor for compatibility contexts.
 #define SSAM_GL_OPTIONAL_FUNCTIONS(X)                          \
+    X(PFNGLCLAMPCOLORPROC, ClampColor)                         \
     X(PFNGLBLENDEQUATIONIPROC, BlendEquationi)                 \
     X(PFNGLBLENDEQUATIONSEPARATEIPROC, BlendEquationSeparatei) \
     X(PFNGLBLENDFUNCSEPARATEIPROC, BlendFuncSeparatei)         \
@@ -90,6 +97,7 @@ struct GlFunctions : engine::render::gl::plumbing::ProgramFunctions {
     bool perBufferBlend = false;  // BlendEquationi & co. are usable
     bool textureStorage = false;  // TexStorage2D is usable
     bool clipControl = false;     // GL_CLIP_ORIGIN / GL_CLIP_DEPTH_MODE can be queried
+    bool compatibility = false;   // a compatibility profile: fixed-function state exists (below)
 
     bool hasExtension(const char* name) const;
 };
@@ -107,7 +115,14 @@ struct Loader {
 // and then their ARB name.
 void loadFunctions(GlFunctions& gl, const Loader& load);
 
-// Throws Failure(NoContext) unless a GL 3.3+ core context is current (glGetString answers);
+// Compatibility-profile state that acts on shader output (GL 4.5 compatibility §17.3.5 alpha test,
+// §14.6.2 polygon stipple, §18.2.6 fragment colour clamping); not in <GL/glcorearb.h>.
+constexpr GLenum kAlphaTest = 0x0BC0;
+constexpr GLenum kPolygonStipple = 0x0B42;
+constexpr GLenum kClampFragmentColor = 0x891B;
+constexpr GLenum kFixedOnly = 0x891D;
+
+// Throws Failure(NoContext) unless a GL 3.3+ context (core or compatibility) is current (glGetString answers);
 // fills version and the optional capabilities. Returns the context's description for the log.
 std::string checkContext(GlFunctions& gl);
 

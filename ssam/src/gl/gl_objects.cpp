@@ -44,6 +44,28 @@ TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const 
     return info;
 }
 
+TextureInfo inspectRenderbuffer(const GlFunctions& gl, unsigned int renderbuffer, const char* what) {
+    const std::string name = std::string("ssam::gl: ") + what + " " + std::to_string(renderbuffer);
+    if (renderbuffer == 0 || !gl.IsRenderbuffer(renderbuffer))
+        throw Failure(Status::InvalidTexture,
+                      name + (renderbuffer != 0 && gl.IsTexture(renderbuffer)
+                                  ? " is not a renderbuffer but a texture: pass it as FrameDesc::depthTexture"
+                                  : " is not a GL renderbuffer name (0, deleted, or never bound)"));
+    GLint previous = 0, samples = 0;
+    gl.GetIntegerv(GL_RENDERBUFFER_BINDING, &previous);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
+    TextureInfo info;
+    gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_WIDTH, &info.width);
+    gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_HEIGHT, &info.height);
+    gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_INTERNAL_FORMAT, &info.internalFormat);
+    gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(previous));
+    if (samples > 0)
+        throw Failure(Status::InvalidTexture, name + " is multisampled (" + std::to_string(samples) +
+                                                  " samples): resolve it into a single-sample depth first");
+    return info;
+}
+
 void checkDrawFramebuffer(const GlFunctions& gl, const char* what) {
     const GLenum status = gl.CheckFramebufferStatus(GL_DRAW_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)

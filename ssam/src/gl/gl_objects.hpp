@@ -23,6 +23,11 @@ struct TextureInfo {
 // texture or not a 2D one. Restores the active unit's GL_TEXTURE_2D binding.
 TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what);
 
+// A renderbuffer's size and format (the bound renderbuffer is restored); Failure(InvalidTexture)
+// naming `what` when the name is not a renderbuffer (saying so when it is a texture's) or is
+// multisampled.
+TextureInfo inspectRenderbuffer(const GlFunctions& gl, unsigned int renderbuffer, const char* what);
+
 // Failure(IncompleteFramebuffer) naming `what` and the status when the bound draw framebuffer
 // is incomplete.
 void checkDrawFramebuffer(const GlFunctions& gl, const char* what);

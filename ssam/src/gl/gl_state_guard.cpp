@@ -6,11 +6,21 @@
 namespace ssam::gl::detail {
 
 namespace {
+// The generic attributes with a current value: 0 has none in a compatibility context.
+GLuint firstGenericAttribute(const GlFunctions& gl) { return gl.compatibility ? 1 : 0; }
 unsigned char isEnabled(const GlFunctions& gl, GLenum cap) { return gl.IsEnabled(cap) ? 1 : 0; }
 void setEnabled(const GlFunctions& gl, GLenum cap, unsigned char on) { on ? gl.Enable(cap) : gl.Disable(cap); }
 }  // namespace
 
-GlStateGuard::GlStateGuard(const GlFunctions& functions) : gl_(functions), perBufferBlend_(functions.perBufferBlend) {
+void disableFixedFunction(const GlFunctions& gl) {
+    if (!gl.compatibility) return;
+    gl.Disable(kAlphaTest);
+    gl.Disable(kPolygonStipple);
+    if (gl.ClampColor) gl.ClampColor(kClampFragmentColor, kFixedOnly);  // the default: float targets unclamped
+}
+
+GlStateGuard::GlStateGuard(const GlFunctions& functions)
+    : gl_(functions), perBufferBlend_(functions.perBufferBlend), compatibility_(functions.compatibility) {
     const GlFunctions& gl = gl_;
     gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
     gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
@@ -58,8 +68,13 @@ GlStateGuard::GlStateGuard(const GlFunctions& functions) : gl_(functions), perBu
         gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &textures_[unit]);
     }
     gl.ActiveTexture(static_cast<GLenum>(activeTexture_));
-    for (GLuint a = 1; a < attributes_.size(); ++a)
+    for (GLuint a = firstGenericAttribute(gl); a < attributes_.size(); ++a)
         gl.GetVertexAttribfv(a, GL_CURRENT_VERTEX_ATTRIB, attributes_[a].data());
+    if (compatibility_) {
+        alphaTest_ = isEnabled(gl, kAlphaTest);
+        polygonStipple_ = isEnabled(gl, kPolygonStipple);
+        if (gl.ClampColor) gl.GetIntegerv(kClampFragmentColor, &clampFragmentColor_);
+    }
 }
 
 GlStateGuard::~GlStateGuard() {
@@ -103,7 +118,13 @@ GlStateGuard::~GlStateGuard() {
         gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(textures_[unit]));
     }
     gl.ActiveTexture(static_cast<GLenum>(activeTexture_));
-    for (GLuint a = 1; a < attributes_.size(); ++a) gl.VertexAttrib4fv(a, attributes_[a].data());
+    for (GLuint a = firstGenericAttribute(gl); a < attributes_.size(); ++a)
+        gl.VertexAttrib4fv(a, attributes_[a].data());
+    if (compatibility_) {
+        setEnabled(gl, kAlphaTest, alphaTest_);
+        setEnabled(gl, kPolygonStipple, polygonStipple_);
+        if (gl.ClampColor) gl.ClampColor(kClampFragmentColor, static_cast<GLenum>(clampFragmentColor_));
+    }
 }
 
 }  // namespace ssam::gl::detail

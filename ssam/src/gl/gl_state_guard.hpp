@@ -6,8 +6,10 @@
 // blend enable / equations / factors (draw buffers 0 and 1), colour write masks (0 and 1), depth
 // test / write mask / function, face culling, stencil test, polygon offset fill,
 // alpha-to-coverage, GL_FRAMEBUFFER_SRGB, colour logic op, rasterizer discard, program, vertex
-// array, GL_ARRAY_BUFFER, active texture unit, the GL_TEXTURE_2D bindings of units 0-2 and
-// generic vertex attributes 1-7.
+// array, GL_ARRAY_BUFFER, active texture unit, the GL_TEXTURE_2D bindings of units 0-3, the
+// generic vertex attributes 0-15 (0 only in core contexts: in compatibility ones it is the
+// vertex position and has no current value), and in compatibility contexts alpha test, polygon
+// stipple and fragment colour clamping (which the guard also switches off: disableFixedFunction).
 #include <array>
 
 namespace ssam::gl::detail {
@@ -37,8 +39,16 @@ private:
     int depthFunc_ = 0;
     std::array<BlendTarget, 2> blend_{};
     int program_ = 0, vertexArray_ = 0, arrayBuffer_ = 0, activeTexture_ = 0;
-    std::array<int, 3> textures_{};
-    std::array<std::array<float, 4>, 8> attributes_{};
+    std::array<int, 4> textures_{};
+    std::array<std::array<float, 4>, 16> attributes_{};
+    bool compatibility_;
+    unsigned char alphaTest_ = 0, polygonStipple_ = 0;
+    int clampFragmentColor_ = 0;
 };
+
+// In a compatibility context, switches off the fixed-function state that would act on SSAM's
+// shader output (a host's GL_ALPHA_TEST would cut the leaf edges the mask pass blends); a
+// GlStateGuard made before restores it. Nothing in a core context.
+void disableFixedFunction(const GlFunctions& gl);
 
 }  // namespace ssam::gl::detail

@@ -5,18 +5,17 @@
 
 namespace ssam::gl::shaders {
 
-// Attribute locations: ssam::gl::AttributeLocations. Unset attributes read the generic values
-// SSAM sets before each pass (identity instance model, white colour).
-const char* const kFoliageVertex = R"(#version 330 core
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec2 a_uv;
-layout(location = 3) in vec4 a_color;
-layout(location = 4) in vec4 a_instance0;
-layout(location = 5) in vec4 a_instance1;
-layout(location = 6) in vec4 a_instance2;
-layout(location = 7) in vec4 a_instance3;
-uniform mat4 u_viewProj;
+// The host's attribute locations (Settings::attributes) written into the layout qualifiers, so
+// the host's own VAOs are read as they are. Unset attributes read the generic values SSAM sets
+// before each pass (identity instance model, white colour).
+std::string foliageVertex(const AttributeLocations& at) {
+    auto in = [](unsigned int location, const char* declaration) {
+        return "layout(location = " + std::to_string(location) + ") in " + declaration + ";\n";
+    };
+    return "#version 330 core\n" + in(at.position, "vec3 a_position") + in(at.normal, "vec3 a_normal") +
+           in(at.uv, "vec2 a_uv") + in(at.color, "vec4 a_color") + in(at.instanceModel, "vec4 a_instance0") +
+           in(at.instanceModel + 1, "vec4 a_instance1") + in(at.instanceModel + 2, "vec4 a_instance2") +
+           in(at.instanceModel + 3, "vec4 a_instance3") + R"(uniform mat4 u_viewProj;
 uniform mat4 u_model;
 out vec2 v_uv;
 out vec3 v_normal;
@@ -29,6 +28,7 @@ void main() {
     v_color = a_color;
 }
 )";
+}
 
 // [Hathaway 2010] Listing 3.1 / §3.5.2: only the alpha (no lighting, no colour fetch), saturated and
 // replicated to every channel of both draw buffers (RG16F precision: MAX target, ADD target).

@@ -3,9 +3,12 @@
 // GLSL 3.30 core sources of ssam_gl's three programs ([Hathaway 2010] Listings 3.1 and 3.2).
 #include <string>
 
+#include "ssam/gl/ssam_gl.hpp"
+
 namespace ssam::gl::shaders {
 
-extern const char* const kFoliageVertex;      // shared by the mask and colour programs
+// Shared by the mask and colour programs, reading the host's vertex arrays at `locations`.
+std::string foliageVertex(const AttributeLocations& locations);
 extern const char* const kMaskFragment;       // Listing 3.1: alpha only, replicated
 extern const char* const kColorFragment;      // alpha-tested, double-sided lit colour
 extern const char* const kFullscreenVertex;   // one triangle over the viewport

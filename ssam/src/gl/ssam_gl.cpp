@@ -3,20 +3,21 @@
 // of it (way a), and the boundary where every internal Failure becomes a Status + message.
 #include "ssam/gl/ssam_gl.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <new>
 #include <optional>
 #include <string>
 
-#include "engine/core/error.hpp"
+#include "../knob_rules.hpp"
+#include "depth_restore.hpp"
 #include "failure.hpp"
 #include "frame_targets.hpp"
 #include "gl_functions.hpp"
 #include "gl_objects.hpp"
 #include "gl_state_guard.hpp"
 #include "shaders.hpp"
-#include "ssam/config.hpp"
 
 namespace ssam::gl {
 
@@ -78,7 +79,44 @@ GLenum toGl(DepthTest test) {
     return GL_LESS;
 }
 
-// Settings are checked by ssam::Config's rules, so both entry points accept the same knobs.
+// The locations the built-in programs read, each attribute's first and how many it takes.
+struct AttributeSlot {
+    const char* name;
+    unsigned int first, count;
+};
+std::array<AttributeSlot, 5> slotsOf(const AttributeLocations& at) {
+    return {{{"position", at.position, 1},
+             {"normal", at.normal, 1},
+             {"uv", at.uv, 1},
+             {"color", at.color, 1},
+             {"instanceModel", at.instanceModel, 4}}};
+}
+
+// Each location below 16 (GL 3.3's minimum GL_MAX_VERTEX_ATTRIBS, so any context has it) and no
+// two overlapping: a shader with aliased attribute locations does not link (GLSL 3.30 §4.3.8.1).
+void validateAttributes(const AttributeLocations& at) {
+    const auto slots = slotsOf(at);
+    for (const AttributeSlot& a : slots) {
+        if (a.first > 16 - a.count)
+            throw Failure(Status::InvalidArgument,
+                          std::string("ssam::gl settings: attributes.") + a.name + " = " + std::to_string(a.first) +
+                              (a.count > 1 ? " (it takes " + std::to_string(a.count) + " locations)" : std::string()) +
+                              " is past location 15 (GL guarantees 16 vertex attributes)");
+        for (const AttributeSlot& b : slots)
+            if (&a < &b && a.first < b.first + b.count && b.first < a.first + a.count)
+                throw Failure(Status::InvalidArgument, std::string("ssam::gl settings: attributes.") + a.name + " (" +
+                                                           std::to_string(a.first) + ") and attributes." + b.name +
+                                                           " (" + std::to_string(b.first) + ") overlap");
+    }
+}
+
+bool sameLocations(const AttributeLocations& a, const AttributeLocations& b) {
+    return a.position == b.position && a.normal == b.normal && a.uv == b.uv && a.color == b.color &&
+           a.instanceModel == b.instanceModel;
+}
+
+// Settings are checked by ssam::Config's rules (knob_rules.hpp), so both entry points accept the
+// same knobs.
 void validate(const Settings& settings) {
     const auto precision = static_cast<int>(settings.maskPrecision);
     const auto depth = static_cast<int>(settings.depthTest);
@@ -88,16 +126,15 @@ void validate(const Settings& settings) {
     if (depth < 0 || depth > static_cast<int>(DepthTest::GreaterEqual))
         throw Failure(Status::InvalidArgument,
                       "ssam::gl settings: depthTest " + std::to_string(depth) + " is not a DepthTest");
-    Config config;
-    config.maskLerp = settings.maskLerp;
-    config.colorAlphaReference = settings.colorAlphaReference;
-    config.foliageClearColor = glm::vec4(settings.foliageClearColor[0], settings.foliageClearColor[1],
-                                         settings.foliageClearColor[2], settings.foliageClearColor[3]);
-    try {
-        config.validate();
-    } catch (const engine::Error& e) {
-        throw Failure(Status::InvalidArgument, std::string("ssam::gl settings: ") + e.what());
-    }
+    if (const std::string error =
+            ssam::detail::knobError(settings.maskLerp, settings.colorAlphaReference, settings.foliageClearColor);
+        !error.empty())
+        throw Failure(Status::InvalidArgument, "ssam::gl settings: " + error);
+    if (!std::isfinite(settings.depthMaskThreshold) || settings.depthMaskThreshold < 0.0f ||
+        settings.depthMaskThreshold > 1.0f)
+        throw Failure(Status::InvalidArgument, "ssam::gl settings: depthMaskThreshold = " +
+                                                   std::to_string(settings.depthMaskThreshold) + " is outside [0, 1]");
+    validateAttributes(settings.attributes);
 }
 
 // A built-in foliage program and its uniforms.
@@ -149,6 +186,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
           compositeMaskLerp = -1, compositeSquare = -1;
     GLuint emptyVao = 0;
     detail::FrameTargets targets;
+    detail::DepthRestore depthRestore;  // Settings::depthMaskThreshold > 0 only
 
     // The open frame (way b, and way a through it).
     Phase phase = Phase::Idle;
@@ -209,7 +247,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
 
     void initialize(const detail::Loader& load, const Settings& wanted) {
         if (phase != Phase::Idle) throw Failure(Status::InvalidCall, "ssam::gl: initialize() inside a frame");
-        release();
+        deleteObjects();
         validate(wanted);
         detail::loadFunctions(gl, load);
         const std::string context = detail::checkContext(gl);
@@ -220,14 +258,11 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         try {
             gl.GenVertexArrays(1, &emptyVao);
             targets.createFramebuffers(gl);
-            mask.id = detail::compileProgram(gl, "ssam::gl mask", shaders::kFoliageVertex, shaders::kMaskFragment);
-            mask.locate(gl);
-            color.id = detail::compileProgram(gl, "ssam::gl colour", shaders::kFoliageVertex, shaders::kColorFragment);
-            color.locate(gl);
+            compileFoliagePrograms(wanted.attributes, mask, color);
             composite = detail::compileProgram(gl, "ssam::gl composite", shaders::kFullscreenVertex,
                                                shaders::kCompositeFragment.c_str());
         } catch (...) {
-            release();
+            deleteObjects();
             throw;
         }
         compositeFoliage = gl.GetUniformLocation(composite, "u_foliage");
@@ -239,20 +274,42 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         message(Severity::Info, "ssam::gl " SSAM_VERSION_STRING " initialised on " + context);
     }
 
-    void release() noexcept {
+    // The built-in foliage programs reading the host's vertex arrays at `locations`.
+    void compileFoliagePrograms(const AttributeLocations& locations, FoliageProgramObject& maskOut,
+                                FoliageProgramObject& colorOut) {
+        const std::string vertex = shaders::foliageVertex(locations);
+        maskOut.id = detail::compileProgram(gl, "ssam::gl mask", vertex.c_str(), shaders::kMaskFragment);
+        maskOut.locate(gl);
+        colorOut.id = detail::compileProgram(gl, "ssam::gl colour", vertex.c_str(), shaders::kColorFragment);
+        colorOut.locate(gl);
+    }
+
+    // Deletes SSAM's objects; false when no context is current (glGetString answers null then:
+    // nothing can be deleted, the objects go with the host's context). Forgotten either way.
+    bool deleteObjects() noexcept {
         abandonFrame();
-        // Without a current context the host's objects went with it (or cannot be reached):
-        // glGetString answers null then, and nothing is deleted.
-        if (initialized && gl.GetString(GL_VERSION)) {
+        const bool current = !initialized || gl.GetString(GL_VERSION) != nullptr;
+        if (initialized && current) {
             for (GLuint p : {mask.id, color.id, composite})
                 if (p) gl.DeleteProgram(p);
             targets.destroy(gl);
+            depthRestore.destroy(gl);
             if (emptyVao) gl.DeleteVertexArrays(1, &emptyVao);
         }
         mask = {}, color = {};
         composite = emptyVao = 0;
         targets = {};
+        depthRestore = {};
         initialized = false;
+        return current;
+    }
+
+    Status release() noexcept {
+        if (deleteObjects()) return Status::Ok;
+        return fail(Status::NoContext,
+                    "ssam::gl: release() without a current GL context: SSAM's programs, textures and "
+                    "framebuffers were not deleted (they go when the host destroys its context; make it "
+                    "current before release() or the destructor to delete them now)");
     }
 
     static constexpr const char* kRg16fNeedsPerBufferBlend =
@@ -309,6 +366,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
         gl.Disable(GL_COLOR_LOGIC_OP);  // a logic op would replace blending
         gl.Disable(GL_RASTERIZER_DISCARD);
+        detail::disableFixedFunction(gl);  // compatibility contexts: a host's alpha test would cut the edges
         gl.Enable(GL_FRAMEBUFFER_SRGB);
         gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -352,6 +410,9 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         passState.emplace(gl);
         phase = Phase::InColorPass;
         setFoliagePassState();
+        if (settings.depthMaskThreshold > 0.0f)  // the opaque depth, before the colour pass writes the foliage's
+            depthRestore.saveOpaqueDepth(gl, targets.maskFramebuffer(), targets.depthFormat(), frame.width,
+                                         frame.height, region);
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.foliageFramebuffer());
         gl.ClearBufferfv(GL_COLOR, 0, settings.foliageClearColor);
         gl.Disable(GL_BLEND);
@@ -373,6 +434,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Disable(GL_COLOR_LOGIC_OP);
         gl.Disable(GL_RASTERIZER_DISCARD);
         gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+        detail::disableFixedFunction(gl);
         gl.Enable(GL_FRAMEBUFFER_SRGB);
         gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         gl.Enable(GL_BLEND);
@@ -394,18 +456,24 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Uniform1i(compositeSquare, settings.squareMask ? 1 : 0);
         gl.BindVertexArray(emptyVao);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
+        if (settings.depthMaskThreshold > 0.0f)
+            depthRestore.restoreWhereMaskIsLow(gl, targets.foliageFramebuffer(), targets.maskAdd() != 0, settings);
         phase = Phase::Idle;
     }
 
     // ---- Way (a): the built-in programs inside the passes ---------------------------------
 
     void drawBuiltIn(const FoliageProgramObject& p, const PassInfo& pass, DrawFoliage draw, void* user) {
-        // Generic values for attributes the host's VAO leaves disabled (AttributeLocations).
-        gl.VertexAttrib3f(AttributeLocations::normal, 0.0f, 0.0f, 1.0f);
-        gl.VertexAttrib2f(AttributeLocations::uv, 0.0f, 0.0f);
-        gl.VertexAttrib4f(AttributeLocations::color, 1.0f, 1.0f, 1.0f, 1.0f);
-        for (unsigned int c = 0; c < 4; ++c)
-            gl.VertexAttrib4f(AttributeLocations::instanceModel + c, c == 0, c == 1, c == 2, c == 3);
+        // Generic values for attributes the host's VAO leaves disabled (Settings::attributes). A
+        // compatibility context has no generic value at location 0 (it is the vertex position).
+        const AttributeLocations& at = settings.attributes;
+        const auto generic = [&](GLuint location, float x, float y, float z, float w) {
+            if (location != 0 || !gl.compatibility) gl.VertexAttrib4f(location, x, y, z, w);
+        };
+        generic(at.normal, 0.0f, 0.0f, 1.0f, 1.0f);
+        generic(at.uv, 0.0f, 0.0f, 0.0f, 1.0f);
+        generic(at.color, 1.0f, 1.0f, 1.0f, 1.0f);
+        for (unsigned int c = 0; c < 4; ++c) generic(at.instanceModel + c, c == 0, c == 1, c == 2, c == 3);
         gl.UseProgram(p.id);
         gl.UniformMatrix4fv(p.viewProj, 1, GL_FALSE, frame.viewProj);
         const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
@@ -497,9 +565,7 @@ Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddressFunction getProcAddress,
     return impl_->run([&] { impl_->initialize({nullptr, getProcAddress}, settings); });
 }
 
-void ScreenSpaceAlphaMaskGl::release() noexcept {
-    if (impl_) impl_->release();
-}
+Status ScreenSpaceAlphaMaskGl::release() noexcept { return impl_ ? impl_->release() : Status::Ok; }
 
 Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
     return runStep(impl_, [&](Impl& s) {
@@ -507,6 +573,22 @@ Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
         validate(settings);
         if (s.initialized && settings.maskPrecision == MaskPrecision::Rg16f && !s.gl.perBufferBlend)
             throw Failure(Status::UnsupportedFeature, Impl::kRg16fNeedsPerBufferBlend);
+        if (s.initialized && !sameLocations(settings.attributes, s.settings.attributes)) {
+            // The new programs first: if they fail, the ones in use stay.
+            if (!s.gl.GetString(GL_VERSION))
+                throw Failure(Status::NoContext,
+                              "ssam::gl: setSettings() with new attribute locations needs the GL context current");
+            FoliageProgramObject newMask, newColor;
+            try {
+                s.compileFoliagePrograms(settings.attributes, newMask, newColor);
+            } catch (...) {
+                if (newMask.id) s.gl.DeleteProgram(newMask.id);
+                throw;
+            }
+            s.gl.DeleteProgram(s.mask.id);
+            s.gl.DeleteProgram(s.color.id);
+            s.mask = newMask, s.color = newColor;
+        }
         s.settings = settings;
     });
 }

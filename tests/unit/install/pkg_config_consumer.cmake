@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# cmake -P script: the consumer built without CMake, from `pkg-config ssam ssam-soft ssam-gl`
+# cmake -P script: the consumer built without CMake, from `pkg-config ssam ssam-soft ssam-render-gl ssam-gl`
 # against an installed prefix, at -O3 with warnings as errors, then run.
 #   -DBUILD_DIR= -DPREFIX= -DCONSUMER_SOURCE= -DOUT= -DCXX= -DPKG_CONFIG=
 #   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
@@ -13,7 +13,7 @@ list(GET pc_files 0 pc_file)
 get_filename_component(pc_dir ${pc_file} DIRECTORY)
 set(ENV{PKG_CONFIG_PATH} ${pc_dir})
 
-run(${PKG_CONFIG} --exists --print-errors "ssam >= 0.2" ssam-soft ssam-gl)
+run(${PKG_CONFIG} --exists --print-errors "ssam >= 0.2" ssam-soft ssam-render-gl ssam-gl)
 run(${PKG_CONFIG} --modversion ssam)
 string(STRIP "${run_output}" version)
 # The static archives' private needs (oneTBB, libepoxy) only with --static, as pkg-config means.
@@ -21,7 +21,7 @@ run(${PKG_CONFIG} --libs ssam-soft)
 if(run_output MATCHES "-ltbb")
   message(FATAL_ERROR "ssam-soft lists oneTBB as a public dependency: ${run_output}")
 endif()
-run(${PKG_CONFIG} --static --cflags --libs ssam ssam-soft ssam-gl)
+run(${PKG_CONFIG} --static --cflags --libs ssam ssam-soft ssam-render-gl ssam-gl)
 separate_arguments(flags UNIX_COMMAND "${run_output}")
 
 file(REMOVE_RECURSE ${OUT})

@@ -1,11 +1,12 @@
 # SPDX-License-Identifier: MIT
 # cmake -P script: the README's embedding program (the ```cpp block that starts with
 # "// leaves.cpp"), taken from README.md unchanged, built against an installed prefix twice,
-# with find_package(ssam 0.2 COMPONENTS soft gl) and with pkg-config, at -O3 with warnings as
+# with find_package(ssam 0.2 COMPONENTS soft gl) (gl: the raw-OpenGL snippets) and with pkg-config, at -O3 with warnings as
 # errors, and run. The raw-OpenGL snippets ("// host_foliage.cpp" in README.md,
-# "// host_shaders.cpp" in ssam/README.md: functions a host calls, no main) are compiled the
-# same way against ssam::gl. A README edit that breaks a snippet, or drops it, fails this test.
-#   -DBUILD_DIR= -DPREFIX= -DREADME= -DSSAM_README= -DWORK= -DCXX= -DPKG_CONFIG=
+# "// host_shaders.cpp" in ssam/README.md, "// loaders.cpp" in ssam/docs/gl_hosts.md: functions
+# a host calls, no main) are compiled the same way against ssam::gl. A README edit that breaks a
+# snippet, or drops it, fails this test.
+#   -DBUILD_DIR= -DPREFIX= -DREADME= -DSSAM_README= -DGL_HOSTS= -DWORK= -DCXX= -DPKG_CONFIG=
 #   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
 install_library(${BUILD_DIR} ${PREFIX})
@@ -17,7 +18,7 @@ if(NOT readme MATCHES "```cpp\n(// leaves\\.cpp\n[^`]*)```")
 endif()
 file(WRITE ${WORK}/src/leaves.cpp "${CMAKE_MATCH_1}")
 # The raw-OpenGL snippets, each from its README.
-foreach(pair "${README}:host_foliage" "${SSAM_README}:host_shaders")
+foreach(pair "${README}:host_foliage" "${SSAM_README}:host_shaders" "${GL_HOSTS}:loaders")
   string(REGEX MATCH "^(.*):([a-z_]+)$" _ "${pair}")
   set(snippet_readme ${CMAKE_MATCH_1})
   set(snippet ${CMAKE_MATCH_2})
@@ -37,7 +38,7 @@ target_link_libraries(leaves PRIVATE ssam::ssam ssam::render_soft)
 # The raw-OpenGL snippets: compiled (they are functions a host calls), with the host's loader.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(HOST_EPOXY REQUIRED IMPORTED_TARGET epoxy)
-add_library(raw_gl_snippets OBJECT host_foliage.cpp host_shaders.cpp)
+add_library(raw_gl_snippets OBJECT host_foliage.cpp host_shaders.cpp loaders.cpp)
 target_compile_options(raw_gl_snippets PRIVATE -Wall -Wextra -Werror)
 target_link_libraries(raw_gl_snippets PRIVATE ssam::gl PkgConfig::HOST_EPOXY)
 ]=])
@@ -65,6 +66,6 @@ if(NOT run_output MATCHES "centre: red")
 endif()
 run(${PKG_CONFIG} --cflags ssam-gl epoxy)
 separate_arguments(flags UNIX_COMMAND "${run_output}")
-foreach(snippet host_foliage host_shaders)
-  run(${CXX} -std=c++20 -O3 -Wall -Wextra -Werror -c ${WORK}/src/${snippet}.cpp -o ${WORK}/${snippet}.o ${flags})
+foreach(snippet host_foliage host_shaders loaders)
+  run(${CXX} -std=c++17 -O3 -Wall -Wextra -Werror -c ${WORK}/src/${snippet}.cpp -o ${WORK}/${snippet}.o ${flags})
 endforeach()

@@ -2,7 +2,8 @@
 #pragma once
 // The "host engine" of the ssam::gl tests: our GL backend in a headless EGL context draws the
 // opaque pass, hands its GL texture names to ssam::gl and reads the results back; the host's
-// foliage is a plain VAO of position + colour quads at ssam::gl::AttributeLocations. SSAM gets
+// foliage is a plain VAO of position + colour quads at ssam::gl::AttributeLocations (by default SSAM's, or the
+// locations a test gives). SSAM gets
 // the host's loader, eglGetProcAddress, as a real host would.
 #include <gtest/gtest.h>
 
@@ -66,7 +67,9 @@ inline std::unique_ptr<ssam::gl::ScreenSpaceAlphaMaskGl> initializedSsam(const s
 struct HostFoliage {
     GLuint vao = 0, buffer = 0;
     int quads = 0;
-    explicit HostFoliage(const std::vector<Quad>& qs) : quads(static_cast<int>(qs.size())) {
+    // `at`: where the host's VAO puts position and colour (Settings::attributes must say the same).
+    explicit HostFoliage(const std::vector<Quad>& qs, const ssam::gl::AttributeLocations& at = {})
+        : quads(static_cast<int>(qs.size())) {
         std::vector<float> data;
         for (const Quad& q : qs)
             for (const engine::render::Vertex& v : quadVertices(q))
@@ -77,11 +80,10 @@ struct HostFoliage {
         glBindVertexArray(vao);
         glBindBuffer(GL_ARRAY_BUFFER, buffer);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
-        using Loc = ssam::gl::AttributeLocations;
-        glEnableVertexAttribArray(Loc::position);
-        glVertexAttribPointer(Loc::position, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-        glEnableVertexAttribArray(Loc::color);
-        glVertexAttribPointer(Loc::color, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+        glEnableVertexAttribArray(at.position);
+        glVertexAttribPointer(at.position, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+        glEnableVertexAttribArray(at.color);
+        glVertexAttribPointer(at.color, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
                               reinterpret_cast<const void*>(3 * sizeof(float)));
         glBindVertexArray(0);
     }

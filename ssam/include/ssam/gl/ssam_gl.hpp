@@ -5,7 +5,7 @@
 // passes into its own framebuffers, composites onto the host's colour texture and writes the
 // foliage depth into the host's depth texture (for later transparent passes, §3.7).
 //
-// Host-neutral: this header uses only standard C++ and <ssam/version.hpp>. SSAM calls GL through
+// Host-neutral: this header uses only standard C++17 and <ssam/version.hpp>. SSAM calls GL through
 // entry points it resolves with the host's own loader (glfwGetProcAddress, SDL_GL_GetProcAddress,
 // eglGetProcAddress, wglGetProcAddress wrapped, ...); nothing throws into host code: every call
 // returns a Status, and the reason is passed to an optional message callback and kept for
@@ -13,7 +13,8 @@
 //
 // Two ways to draw the foliage:
 //  (a) SSAM's built-in foliage programs: render(frame, draw) calls `draw` twice (mask pass, then
-//      colour pass) with SSAM's program bound; the host binds its VAO at AttributeLocations and draws.
+//      colour pass) with SSAM's program bound; the host binds its VAO (attribute locations:
+//      Settings::attributes) and draws.
 //  (b) The host's own shaders: beginFrame(), then beginMaskPass() / draw / endMaskPass(),
 //      beginColorPass() / draw / endColorPass(), composite(). SSAM sets each pass's framebuffer,
 //      viewport, blend, depth and cull state; the host binds its own program, which must output
@@ -36,8 +37,24 @@
 //    in the same order (§3.8 only needs consistency); both faces are drawn (culling is off: a
 //    foliage card is seen from both sides) unless the host enables culling inside the pass.
 //
+// OpenGL 3.3+, core or compatibility profile. In a compatibility context SSAM also saves,
+// disables and restores the fixed-function state that would act on its shaders' output
+// (GL_ALPHA_TEST, GL_POLYGON_STIPPLE, glClampColor(GL_CLAMP_FRAGMENT_COLOR)): a host that leaves
+// alpha testing on does not cut SSAM's leaf edges.
+//
 // A GL context must be current on the calling thread for every call but the constructor,
 // setMessageCallback and lastMessage; the same context (or one sharing objects with it) for all.
+// That includes release() and the destructor: SSAM's objects belong to the context, so without
+// it current nothing can be deleted; release() then returns NoContext (and says so through the
+// message callback), and the objects go when the host destroys its context.
+//
+// The host's GL state: every piece SSAM changes is saved when a call (or a begin...Pass) starts
+// and restored when it returns (or at the matching end...Pass / composite), also on errors. That
+// includes what the host binds between a begin...Pass and its end...Pass: its program, VAO,
+// GL_ARRAY_BUFFER, active texture unit, GL_TEXTURE_2D bindings of units 0-3, generic vertex
+// attributes, and the enables, blend, depth and mask state listed in ssam/README.md are back as
+// they were before begin...Pass. Other state the host changes inside a pass (uniforms, sampler
+// objects, textures of units 3 and up, buffer contents) stays as the host left it.
 #include <cstddef>
 #include <memory>
 #include <type_traits>
@@ -52,10 +69,10 @@ enum class Status : int {
     Ok = 0,
     InvalidArgument,        // a bad setting, frame size, loader or callback (the message names it)
     InvalidCall,            // out of order: not initialised, a pass not begun, a frame still open
-    NoContext,              // no GL context current, or not OpenGL 3.3 core or newer
+    NoContext,              // no GL context current, or not OpenGL 3.3 or newer
     MissingEntryPoint,      // the loader returned no address for a GL function SSAM needs (named)
     UnsupportedFeature,     // e.g. MaskPrecision::Rg16f without per-buffer blend equations
-    InvalidTexture,         // not a 2D texture, an unsupported format, or the wrong size
+    InvalidTexture,         // not a 2D texture (or renderbuffer), an unsupported format, or the wrong size
     IncompleteFramebuffer,  // the driver refused SSAM's framebuffer with the host's textures
     ShaderFailed,           // one of SSAM's programs does not compile or link here
     CallbackFailed,         // the host's draw callback threw (the exception is not rethrown)
@@ -98,6 +115,20 @@ struct Light {
     float ambient[3] = {1.0f, 1.0f, 1.0f};
 };
 
+// Vertex attribute locations of SSAM's built-in foliage programs (way a), Settings::attributes:
+// set them to the locations the host's own VAOs already use (e.g. uv at 8, normal at 2) so its
+// vertex arrays are reused as they are. Each below 16 (GL's minimum GL_MAX_VERTEX_ATTRIBS), no two
+// overlapping (instanceModel takes four). An attribute the host's VAO does not enable reads SSAM's
+// generic value: normal (0,0,1), uv (0,0), colour (1,1,1,1), instance model columns the identity;
+// a plain mesh needs only position (+ uv for a texture). SSAM restores the generic values it sets.
+struct AttributeLocations {
+    unsigned int position = 0;       // vec3
+    unsigned int normal = 1;         // vec3, double-sided lighting (colour pass)
+    unsigned int uv = 2;             // vec2, base-colour texture coordinates
+    unsigned int color = 3;          // vec4, multiplies the base colour (straight alpha)
+    unsigned int instanceModel = 4;  // mat4 as 4 vec4 columns at instanceModel .. + 3 (divisor 1)
+};
+
 // Storage of the mask (§3.5.2): Rgba8 as in the paper (the sum saturates at 1); Rgba16f unclamped;
 // Rg16f as two single-channel R16F targets (MAX and SUM), which needs GL 4.0 or
 // GL_ARB_draw_buffers_blend.
@@ -113,6 +144,15 @@ struct Settings {
     bool squareMask = true;                                    // the squared alpha trick (§3.6.2)
     MaskPrecision maskPrecision = MaskPrecision::Rgba8;
     DepthTest depthTest = DepthTest::Less;
+    // Where the built-in programs read the host's vertex arrays (way a; way b ignores it).
+    AttributeLocations attributes;
+    // The host's depth keeps the foliage depth only where the composited mask reaches this
+    // value; elsewhere the opaque depth is put back. 0 (the paper's behaviour, §3.7): foliage
+    // depth wherever the colour pass wrote, so a later transparent pass behind a leaf edge is
+    // cut where the leaf is only partly opaque and a rim of the unfogged background shows round
+    // it. Above 0: those edges take the later pass instead, for a copy of the depth and one
+    // full-screen pass (ssam/README.md, "Later transparent passes" has both and their cost).
+    float depthMaskThreshold = 0.0f;
 };
 
 struct FrameDesc {
@@ -120,8 +160,11 @@ struct FrameDesc {
     // GL_FRAMEBUFFER_SRGB does), GL_RGBA16F or GL_RGBA32F; a single-sample GL_TEXTURE_2D.
     unsigned int colorTexture = 0;
     // Its depth: GL_DEPTH_COMPONENT16 / 24 / 32F, GL_DEPTH24_STENCIL8 or GL_DEPTH32F_STENCIL8, the
-    // same size. Receives the foliage depth.
+    // same size. Receives the foliage depth. Either a single-sample GL_TEXTURE_2D (depthTexture)
+    // or a single-sample renderbuffer (depthRenderbuffer), as the host keeps it; exactly one of
+    // the two is non-zero. SSAM only attaches the depth, it never samples it.
     unsigned int depthTexture = 0;
+    unsigned int depthRenderbuffer = 0;
     int width = 0;
     int height = 0;
     // Column-major (as GL and glm store it), in the host's clip conventions (SSAM reads
@@ -151,17 +194,6 @@ struct PassInfo {
     FoliagePass pass = FoliagePass::Mask;
     int drawBuffers = 1;          // mask pass: write vec4(alpha) to locations 0 .. drawBuffers - 1
     float alphaReference = 0.0f;  // colour pass: discard when !(alpha >= alphaReference); mask pass 0
-};
-
-// Vertex attribute locations of SSAM's built-in foliage programs (way a). An attribute the host's
-// VAO does not enable reads SSAM's generic value: normal (0,0,1), uv (0,0), colour (1,1,1,1),
-// instance model columns the identity; a plain mesh needs only position (+ uv for a texture).
-struct AttributeLocations {
-    static constexpr unsigned int position = 0;       // vec3
-    static constexpr unsigned int normal = 1;         // vec3, double-sided lighting (colour pass)
-    static constexpr unsigned int uv = 2;             // vec2, base-colour texture coordinates
-    static constexpr unsigned int color = 3;          // vec4, multiplies the base colour (straight alpha)
-    static constexpr unsigned int instanceModel = 4;  // mat4 as 4 vec4 columns at 4..7 (divisor 1)
 };
 
 namespace detail {
@@ -202,7 +234,7 @@ class ScreenSpaceAlphaMaskGl {
 public:
     ScreenSpaceAlphaMaskGl() noexcept;  // no GL yet
     // Deletes SSAM's GL objects (release()); the context must be current then, or release()
-    // must have been called while it was.
+    // must have been called while it was. Without one, the message callback is told (NoContext).
     ~ScreenSpaceAlphaMaskGl();
     ScreenSpaceAlphaMaskGl(ScreenSpaceAlphaMaskGl&&) noexcept;
     ScreenSpaceAlphaMaskGl& operator=(ScreenSpaceAlphaMaskGl&&) noexcept;
@@ -214,19 +246,24 @@ public:
     const char* lastMessage() const noexcept;
 
     // Resolves the GL entry points through the host's loader (MissingEntryPoint names the first
-    // one it has no address for), checks the current context (OpenGL 3.3 core or newer), compiles
+    // one it has no address for), checks the current context (OpenGL 3.3 or newer, core or
+    // compatibility), compiles
     // SSAM's programs. May be called again (e.g. after release()).
     Status initialize(GetProcAddress getProcAddress, const Settings& settings = {}) noexcept;
     Status initialize(GetProcAddressFunction getProcAddress, const Settings& settings = {}) noexcept;
-    // Deletes SSAM's GL objects; initialize() again to use it.
-    void release() noexcept;
+    // Deletes SSAM's GL objects; initialize() again to use it. Needs the context current: without
+    // one nothing is deleted and NoContext is returned (the objects then go with the context);
+    // SSAM is released either way. Ok when there was nothing to delete.
+    Status release() noexcept;
 
-    Status setSettings(const Settings& settings) noexcept;  // InvalidArgument naming the knob
+    // InvalidArgument naming the knob. New attribute locations recompile the built-in programs
+    // (the context must be current then; before initialize() they are only kept).
+    Status setSettings(const Settings& settings) noexcept;
     const Settings& settings() const noexcept;
 
     // Way (a): the three passes with SSAM's built-in programs. `draw(user, program)` runs twice,
     // mask pass then colour pass, with SSAM's program, framebuffer and state set: it binds its
-    // VAO(s) at AttributeLocations, sets per-draw values through `program` and draws; it may
+    // VAO(s) at Settings::attributes, sets per-draw values through `program` and draws; it may
     // instead bind its own program if that keeps the host-shader contract. Every piece of GL
     // state SSAM changes is restored before this returns, also when `draw` throws.
     using DrawFoliage = void (*)(void* user, const FoliageProgram& program);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Another engine's program using the installed ssam package (find_package(ssam 0.2 COMPONENTS
-// soft gl), or pkg-config ssam ssam-soft ssam-gl): renders one half-transparent red leaf over a
+// soft render_gl gl), or pkg-config ssam ssam-soft ssam-render-gl ssam-gl): renders one half-transparent red leaf over a
 // blue opaque scene through SSAM on the soft backend, then on the GL backend when a headless
 // context can be made here, and checks the composited centre pixel. Also links ssam::gl (the
 // raw-OpenGL entry point) and checks that a call before initialize() is a Status, not a throw or
