@@ -21,8 +21,7 @@ struct FrameGraphTextureDesc {
 // A transient sized relative to the frame: `frame`'s size divided by `divisor`, rounded up
 // (a half-resolution layer covers an odd last row and column too), in `format`.
 inline FrameGraphTextureDesc relativeTo(const FrameGraphTextureDesc& frame, std::uint32_t format,
-                                        std::uint32_t divisor = 1, std::uint32_t samples = 1,
-                                        std::uint32_t alpha = 0) {
+                                        std::uint32_t divisor = 1, std::uint32_t samples = 1, std::uint32_t alpha = 0) {
     return {(frame.width + divisor - 1) / divisor, (frame.height + divisor - 1) / divisor, format, samples, alpha};
 }
 
