@@ -47,7 +47,7 @@ std::size_t ViewUpload::foliageInstances() const {
 }
 
 FrameDrawer::FrameDrawer(Backend& backend, const engine::scene::MeshLibrary& library)
-    : backend_(backend), library_(library) {
+    : backend_(backend), library_(library), transients_(backend) {
     for (bool doubleSided : {false, true}) {
         PipelineDesc p;
         p.name = doubleSided ? "opaque (two-sided)" : "opaque";
@@ -83,7 +83,8 @@ void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Tech
     const ColorDepth frame = technique ? technique->addPasses(graph, targets, drawn, resolved, foliage)
                                        : targets.addResolvePass(graph, drawn, resolved);
     addSideEffectPass(graph, "present", frame);
-    graph.execute();
+    graph.execute(transients_.allocator());
+    transients_.endFrame();
 }
 
 void FrameDrawer::drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view) {

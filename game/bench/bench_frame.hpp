@@ -12,6 +12,7 @@
 
 #include "bench_scenes.hpp"
 #include "engine/render/backend.hpp"
+#include "engine/render/frame_graph/transient_texture_pool.hpp"
 #include "engine/render/frame_targets.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "foliage_upload.hpp"
@@ -53,7 +54,9 @@ public:
     FrameDrawer& operator=(const FrameDrawer&) = delete;
 
     // The frame as a frame graph, as racer builds it: the opaque pass, then the technique's
-    // passes (or the plain resolve when technique is null), then a present pass.
+    // passes (or the plain resolve when technique is null), then a present pass. The
+    // graph's transients (SSAM's mask and foliage, WBOIT's accumulators) come from a pool
+    // kept across frames, so timed frames after the first create no texture.
     void draw(engine::render::FrameTargets& targets, transparency::Technique* technique, const ViewUpload& view);
 
 private:
@@ -62,6 +65,7 @@ private:
     engine::render::Backend& backend_;
     const engine::scene::MeshLibrary& library_;
     engine::render::PipelineHandle culled_, twoSided_;
+    engine::render::TransientTexturePool transients_;
 };
 
 }  // namespace bench

@@ -7,6 +7,7 @@
 #include "engine/capture/image.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/frame_graph.hpp"
+#include "engine/render/frame_graph/backend_textures.hpp"
 #include "engine/render/frame_graph/side_effect_pass.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "compare_view.hpp"
@@ -138,13 +139,14 @@ void FrameRenderer::capture(TextureHandle target, const char* name) {
     if (options_.captureLayers) layers_.push_back(engine::capture::captureTarget(backend_, target, name));
 }
 
-// The technique's intermediates as layers. SSAM's mask target packs the MAX mask in r and
-// the ADD mask in a (or in a separate RG16F target, r), §3.5.2-3.5.3: they become the two
-// one-channel layers mask_max and mask_add, as the README's pictures show them.
-void FrameRenderer::captureIntermediates() {
+// The technique's intermediates as layers: `targets`, the graph's transients the capture
+// pass read, then those the technique keeps itself. SSAM's mask target packs the MAX mask in
+// r and the ADD mask in a (or in a separate RG16F target, r), §3.5.2-3.5.3: they become the
+// two one-channel layers mask_max and mask_add, as the README's pictures show them.
+void FrameRenderer::captureIntermediates(std::vector<transparency::NamedTarget> targets) {
     if (!options_.captureLayers) return;
     namespace cap = engine::capture;
-    const std::vector<transparency::NamedTarget> targets = technique_->intermediates();
+    for (transparency::NamedTarget& kept : technique_->intermediates()) targets.push_back(std::move(kept));
     auto find = [&](const char* name) -> TextureHandle {
         for (const auto& t : targets)
             if (t.name == name) return t.texture;
@@ -207,11 +209,7 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
     const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, options_.sun,
                                              foliage_.upload(lists, library_)};
     ColorDepth frame = technique_->addPasses(*graph, *opaque_, drawn, resolved, foliage);
-    if (options_.captureLayers)
-        addSideEffectPass(*graph, "capture foliage", frame, [this] {
-            captureIntermediates();
-            capture(opaque_->depth(), "foliage_depth");
-        });
+    if (options_.captureLayers) addCaptureFoliagePass(*graph, frame);
 
     // 3. The living scene's passes (grass, water, particles, light shafts) onto the colour,
     //    depth-tested against the opaque + foliage depth; without one, BLEND surfaces here.
@@ -246,6 +244,34 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
     graph->execute(transients_.allocator());
     transients_.endFrame();
     lastGraph_ = std::move(graph);
+}
+
+// --capture-layers: a side-effect pass after the technique that reads the frame and the
+// technique's transients, so the graph keeps them alive until it has captured them.
+void FrameRenderer::addCaptureFoliagePass(FrameGraph& graph, const ColorDepth& frame) {
+    struct Data {
+        std::vector<transparency::GraphTarget> kept;
+    };
+    graph.addPass<Data>(
+        "capture foliage",
+        [&](FrameGraph::Builder& b, Data& d) {
+            b.read(frame.color);
+            b.read(frame.depth);
+            for (const transparency::GraphTarget& t : technique_->graphIntermediates())
+                d.kept.push_back({t.layer, b.read(t.texture)});
+            b.sideEffect();
+        },
+        [this](const FrameGraph::Resources& r, const Data& d) {
+            std::vector<transparency::NamedTarget> targets;
+            for (const transparency::GraphTarget& t : d.kept)
+                targets.push_back({t.layer, toTextureHandle(r.get(t.texture))});
+            captureIntermediates(std::move(targets));
+            capture(opaque_->depth(), "foliage_depth");
+        });
+}
+
+std::uint64_t FrameRenderer::peakTransientBytes() const {
+    return lastGraph_ ? lastGraph_->peakTransientBytes(backendTextureBytes) : 0;
 }
 
 ColorDepth FrameRenderer::addOpaquePass(FrameGraph& graph, const ColorDepth& targets,
@@ -302,7 +328,7 @@ ColorDepth FrameRenderer::addBlendPass(FrameGraph& graph, const ColorDepth& targ
 
 void FrameRenderer::dumpGraph(std::ostream& out) const {
     if (!lastGraph_) throw engine::Error("no frame rendered yet: nothing to dump");
-    lastGraph_->dumpGraphviz(out);
+    lastGraph_->dumpGraphviz(out, backendTextureBytes);
 }
 
 }  // namespace racer

@@ -5,8 +5,10 @@
 // (SSAM, alpha testing, the rivals and the exact reference), then the living scene's passes
 // or BLEND surfaces (water) back to front, depth-tested against the depth the technique
 // leaves (SSAM: the foliage depth its colour pass wrote, [Hathaway 2010] §3.7), then present.
-// Per-frame instance buffers and the graph's transient targets come from pools, so a
-// steady-state frame creates no buffer or texture.
+// Per-frame instance buffers and the graph's transient targets (the technique's and the
+// living scene's intermediates) come from pools, so a steady-state frame creates no buffer
+// or texture.
+#include <cstdint>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -92,8 +94,12 @@ public:
     void setLivingScene(LivingScene* living);
 
     // Graphviz dot of the last frame's compiled graph (racer --dump-graph): culled passes
-    // and passes skipped as empty are marked so. Throws engine::Error before any frame.
+    // and passes skipped as empty are marked so; its label lists each transient's lifetime
+    // and bytes and the peak transient bytes. Throws engine::Error before any frame.
     void dumpGraph(std::ostream& out) const;
+    // The most bytes the last frame's transient targets (SSAM's mask and foliage, WBOIT's
+    // accumulators, the particle layer) held at once; 0 before any frame (the HUD shows it).
+    std::uint64_t peakTransientBytes() const;
 
     engine::render::TextureHandle color() const { return opaque_->color(); }
     const std::vector<engine::capture::CapturedLayer>& layers() const { return layers_; }
@@ -111,7 +117,8 @@ private:
     engine::render::PipelineHandle opaquePipeline(bool doubleSided);
     void ensureOpaqueTargets(int width, int height, int samples);
     void capture(engine::render::TextureHandle target, const char* name);
-    void captureIntermediates();
+    void captureIntermediates(std::vector<transparency::NamedTarget> targets);
+    void addCaptureFoliagePass(engine::render::FrameGraph& graph, const engine::render::ColorDepth& frame);
 
     engine::render::Backend& backend_;
     const engine::scene::MeshLibrary& library_;

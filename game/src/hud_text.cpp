@@ -30,6 +30,9 @@ std::vector<std::string> hudLines(const HudFacts& f) {
     }
     lines.push_back(format("frame %.1f ms (%.1f fps), %s, wall clock", f.frameMs,
                            f.frameMs > 0.0 ? 1000.0 / f.frameMs : 0.0, f.timeSpan.c_str()));
+    if (f.transientBytes >= 0)
+        lines.push_back(format("transient targets: peak %lld bytes (%.1f KiB), previous frame",
+                               static_cast<long long>(f.transientBytes), double(f.transientBytes) / 1024.0));
     if (f.passes.empty()) return lines;
     lines.push_back(format("passes, ms: %s", passClock(f.backend)));
     for (const auto& p : f.passes)

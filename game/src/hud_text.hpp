@@ -5,7 +5,8 @@
 // modules/hud. Times are of frames already drawn (a frame cannot show its own), labelled
 // with what they measure: racer's wall clock for the frame; for the passes the backend's
 // own timings (soft: wall time of each pass on the CPU; GL: GPU time from GL_TIME_ELAPSED
-// queries).
+// queries), and the bytes the frame graph's transient targets needed at once.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct HudFacts {
     double frameMs = -1.0;  // < 0: none measured yet
     std::vector<engine::render::PassTiming> passes;
     std::string extra;  // one more line when not empty (the compare's pair, the driver)
+    // The frame graph's peak transient bytes (FrameRenderer::peakTransientBytes) of the
+    // frame before; < 0: no line.
+    std::int64_t transientBytes = -1;
 };
 
 std::vector<std::string> hudLines(const HudFacts& facts);

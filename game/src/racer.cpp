@@ -61,7 +61,8 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
             const auto right = frame.comparedTechnique();
             frame.setHud(
                 hudLines({technique, backend.name(), frame.width(), frame.height(), "previous frame", lastMs,
-                          lastTimings, right ? compareHudLine(technique, transparency::techniqueName(*right)) : ""}));
+                          lastTimings, right ? compareHudLine(technique, transparency::techniqueName(*right)) : "",
+                          i > 0 ? std::int64_t(frame.peakTransientBytes()) : -1}));
         }
         const auto start = std::chrono::steady_clock::now();
         last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
@@ -247,6 +248,9 @@ int run(const CLI::App& app, const Options& o) {
             out.graphDot = dot.str();
         }
         writeOutputs(outputs, out, prefix, planes.nearPlane, planes.farPlane);
+        if (!outputs.graph.empty())
+            std::printf("racer: the last frame's transient targets peak at %llu bytes (lifetimes: %s)\n",
+                        static_cast<unsigned long long>(frame.peakTransientBytes()), outputs.graph.string().c_str());
     }
     return 0;
 }

@@ -394,6 +394,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
             hud.extra = std::string("camera ") + cameraName(camera) + (paused ? " (paused)" : "");
             if (const auto right = frame.comparedTechnique())
                 hud.extra += "; " + compareHudLine(hud.technique, transparency::techniqueName(*right));
+            hud.transientBytes = result.frames > 0 ? std::int64_t(frame.peakTransientBytes()) : -1;
             frame.setHud(hudLines(hud));
         } else {
             frame.setHud({});

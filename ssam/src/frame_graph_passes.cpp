@@ -9,24 +9,24 @@ namespace ssam {
 
 using namespace engine::render;
 
-ColorDepth addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const FoliageView& view,
+SsamPasses addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const FoliageView& view,
                          const ColorDepth& frame) {
     const FrameGraphTexture color = frame.color, depth = frame.depth;
     const FrameGraphTextureDesc colorDesc = graph.desc(color);
-    auto plan = std::make_shared<const FramePlan>(
-        ssam.plan(int(colorDesc.width), int(colorDesc.height), static_cast<Format>(colorDesc.format), view));
+    const int width = int(colorDesc.width), height = int(colorDesc.height);
+    auto plan = std::make_shared<const FramePlan>(ssam.cull(width, height, view));
     const bool empty = plan->empty();
 
-    // SSAM owns its intermediates across frames, so the graph imports them; with nothing in
-    // view they don't exist and the passes that would write them are empty.
-    Backend& backend = ssam.backend();
-    const Intermediates targets = ssam.intermediates();
-    auto import = [&](const char* name, TextureHandle h) {
-        return h ? graph.importTexture(name, graphDescOf(backend.describe(h)), toConcrete(h)) : FrameGraphTexture{};
+    // The intermediates are transients of the frame's size (rt_foliage in its colour format).
+    const IntermediateDescs descs = ssam.intermediateDescs(width, height, static_cast<Format>(colorDesc.format));
+    auto targetsOf = [](const FrameGraph::Resources& r, FrameGraphTexture mask, FrameGraphTexture maskAdd,
+                        FrameGraphTexture foliage) {
+        Intermediates t;
+        if (mask.isValid()) t.mask = toTextureHandle(r.get(mask));
+        if (maskAdd.isValid()) t.maskAdd = toTextureHandle(r.get(maskAdd));
+        if (foliage.isValid()) t.foliage = toTextureHandle(r.get(foliage));
+        return t;
     };
-    const FrameGraphTexture mask = import("rt_mask", targets.mask);
-    const FrameGraphTexture maskAdd = import("rt_mask_add", targets.maskAdd);
-    const FrameGraphTexture foliage = import("rt_foliage", targets.foliage);
 
     struct MaskData {
         FrameGraphTexture depth, mask, maskAdd;
@@ -35,16 +35,12 @@ ColorDepth addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
         "ssam mask",
         [&](FrameGraph::Builder& b, MaskData& d) {
             d.depth = b.read(depth);
-            if (empty) {
-                d.mask = b.write(b.create("rt_mask", colorDesc));
-                b.markEmpty();
-                return;
-            }
-            d.mask = b.write(mask);
-            if (maskAdd.isValid()) d.maskAdd = b.write(maskAdd);
+            d.mask = b.write(b.create(descs.mask.name, graphDescOf(descs.mask)));
+            if (descs.maskAdd) d.maskAdd = b.write(b.create(descs.maskAdd->name, graphDescOf(*descs.maskAdd)));
+            if (empty) b.markEmpty();
         },
-        [&ssam, &view, plan](const FrameGraph::Resources& r, const MaskData& d) {
-            ssam.maskPass(*plan, view, toTextureHandle(r.get(d.depth)));
+        [&ssam, &view, plan, targetsOf](const FrameGraph::Resources& r, const MaskData& d) {
+            ssam.maskPass(*plan, view, toTextureHandle(r.get(d.depth)), targetsOf(r, d.mask, d.maskAdd, {}));
         });
 
     struct ColorData {
@@ -54,15 +50,11 @@ ColorDepth addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
         "ssam colour",
         [&](FrameGraph::Builder& b, ColorData& d) {
             d.depth = b.write(b.read(maskPass.depth));  // foliage depth joins the opaque depth
-            if (empty) {
-                d.foliage = b.write(b.create("rt_foliage", colorDesc));
-                b.markEmpty();
-                return;
-            }
-            d.foliage = b.write(foliage);
+            d.foliage = b.write(b.create(descs.foliage.name, graphDescOf(descs.foliage)));
+            if (empty) b.markEmpty();
         },
-        [&ssam, &view, plan](const FrameGraph::Resources& r, const ColorData& d) {
-            ssam.colorPass(*plan, view, toTextureHandle(r.get(d.depth)));
+        [&ssam, &view, plan, targetsOf](const FrameGraph::Resources& r, const ColorData& d) {
+            ssam.colorPass(*plan, view, toTextureHandle(r.get(d.depth)), targetsOf(r, {}, {}, d.foliage));
         });
 
     struct CompositeData {
@@ -77,11 +69,14 @@ ColorDepth addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
             d.color = b.write(b.read(color));  // blended in place onto the opaque colour
             if (empty) b.markEmpty();
         },
-        [&ssam, plan](const FrameGraph::Resources& r, const CompositeData& d) {
-            ssam.compositePass(*plan, toTextureHandle(r.get(d.color)));
+        [&ssam, plan, targetsOf, &maskPass, &colorPass](const FrameGraph::Resources& r, const CompositeData& d) {
+            ssam.compositePass(*plan, toTextureHandle(r.get(d.color)),
+                               targetsOf(r, maskPass.mask, maskPass.maskAdd, colorPass.foliage));
         });
 
-    return {compositePass.color, colorPass.depth};
+    SsamPasses out{{compositePass.color, colorPass.depth}, {}, {}, {}};
+    if (!empty) out.mask = maskPass.mask, out.maskAdd = maskPass.maskAdd, out.foliage = colorPass.foliage;
+    return out;
 }
 
 }  // namespace ssam

@@ -103,21 +103,28 @@ void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFo
         targetPrecision_ == config_.maskPrecision)
         return;
     destroyTargets();
-    auto target = [&](const char* name, Format format) {
-        return backend_.createTexture(renderTargetDesc(name, width, height, format));
-    };
-    switch (config_.maskPrecision) {
-        case MaskPrecision::RGBA8: mask_ = target("rt_mask", Format::RGBA8_UNORM); break;
-        case MaskPrecision::RGBA16F: mask_ = target("rt_mask", Format::RGBA16F); break;
-        case MaskPrecision::RG16F:
-            mask_ = target("rt_mask_max", Format::R16F);
-            maskAdd_ = target("rt_mask_add", Format::R16F);
-            break;
-    }
-    foliage_ = target("rt_foliage", foliageFormat);
+    const IntermediateDescs descs = intermediateDescs(width, height, foliageFormat);
+    mask_ = backend_.createTexture(descs.mask);
+    if (descs.maskAdd) maskAdd_ = backend_.createTexture(*descs.maskAdd);
+    foliage_ = backend_.createTexture(descs.foliage);
     width_ = width, height_ = height;
     foliageFormat_ = foliageFormat;
     targetPrecision_ = config_.maskPrecision;
+}
+
+IntermediateDescs ScreenSpaceAlphaMask::intermediateDescs(int width, int height, Format colorFormat) const {
+    IntermediateDescs descs;
+    switch (config_.maskPrecision) {
+        case MaskPrecision::RGBA8: descs.mask = renderTargetDesc("rt_mask", width, height, Format::RGBA8_UNORM); break;
+        case MaskPrecision::RGBA16F: descs.mask = renderTargetDesc("rt_mask", width, height, Format::RGBA16F); break;
+        case MaskPrecision::RG16F:
+            // Two R16F targets, one blend equation each (maskPipelineDesc).
+            descs.mask = renderTargetDesc("rt_mask_max", width, height, Format::R16F);
+            descs.maskAdd = renderTargetDesc("rt_mask_add", width, height, Format::R16F);
+            break;
+    }
+    descs.foliage = renderTargetDesc("rt_foliage", width, height, colorFormat);
+    return descs;
 }
 
 void ScreenSpaceAlphaMask::destroyTargets() {
@@ -136,6 +143,13 @@ FramePlan ScreenSpaceAlphaMask::plan(const FrameTargets& targets, const FoliageV
 }
 
 FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, const FoliageView& view) {
+    const FramePlan planned = cull(width, height, view);
+    // Targets are only needed (and only created) once some foliage is in view.
+    if (!planned.empty()) ensureTargets(planned.width, planned.height, colorFormat);
+    return planned;
+}
+
+FramePlan ScreenSpaceAlphaMask::cull(int width, int height, const FoliageView& view) const {
     FramePlan plan;
     plan.width = width;
     plan.height = height;
@@ -146,16 +160,27 @@ FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, 
         plan.visible.push_back(&batch);
         plan.compositeRegion = unite(plan.compositeRegion, *region);
     }
-    // Targets are only needed (and only created) once some foliage is in view.
-    if (!plan.empty()) ensureTargets(plan.width, plan.height, colorFormat);
     return plan;
 }
 
 void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
+    maskPass(plan, view, depth, intermediates());
+}
+
+void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
+    colorPass(plan, view, depth, intermediates());
+}
+
+void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color) {
+    compositePass(plan, color, intermediates());
+}
+
+void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
+                                    const Intermediates& targets) {
     PassDesc pass;
     pass.name = "ssam mask";
-    pass.color[0] = {mask_, LoadOp::Clear, glm::vec4(0.0f)};  // black background (§3.5.2)
-    if (maskAdd_) pass.color[1] = {maskAdd_, LoadOp::Clear, glm::vec4(0.0f)};
+    pass.color[0] = {targets.mask, LoadOp::Clear, glm::vec4(0.0f)};  // black background (§3.5.2)
+    if (targets.maskAdd) pass.color[1] = {targets.maskAdd, LoadOp::Clear, glm::vec4(0.0f)};
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
     for (const MaskedBatch* batch : plan.visible) {
@@ -168,10 +193,11 @@ void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& vi
     passScope.end();
 }
 
-void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
+void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
+                                     const Intermediates& targets) {
     PassDesc pass;
     pass.name = "ssam colour";
-    pass.color[0] = {foliage_, LoadOp::Clear, config_.foliageClearColor};  // the clear-colour fix (§3.6.1)
+    pass.color[0] = {targets.foliage, LoadOp::Clear, config_.foliageClearColor};  // the clear-colour fix (§3.6.1)
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
     for (const MaskedBatch* batch : plan.visible) {
@@ -185,15 +211,15 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
     passScope.end();
 }
 
-void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color) {
+void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color, const Intermediates& targets) {
     PassDesc pass;
     pass.name = "ssam composite";
     pass.color[0] = {color, LoadOp::Load};
     PassScope passScope(backend_, pass);
     CompositeParams params;
-    params.foliage = foliage_;
-    params.mask = mask_;
-    params.maskAdd = maskAdd_;
+    params.foliage = targets.foliage;
+    params.mask = targets.mask;
+    params.maskAdd = targets.maskAdd;
     params.maskLerp = config_.maskLerp;
     params.squareMask = config_.squareMask;
     DrawDesc d;

@@ -16,6 +16,9 @@ using frame_graph_detail::PassNode;
 using frame_graph_detail::VirtualResource;
 
 void FrameGraph::execute(const TextureAllocator& allocator) {
+    // Refused rather than repeated: passes may hold references to data of the frame the
+    // graph was built for (frame_graph.hpp).
+    if (ran_) throw Error("frame graph: execute() was already called; a graph runs once, build a new one per frame");
     compile();
     executed_.clear();
 
@@ -34,6 +37,7 @@ void FrameGraph::execute(const TextureAllocator& allocator) {
         if (resources_[r].imported) textures[r] = resources_[r].importedTexture;
     }
 
+    ran_ = true;
     std::vector<std::uint32_t> live;  // allocated and not yet released, for cleanup if a pass throws
     try {
         for (std::size_t position = 0; position < executionOrder_.size(); ++position) {

@@ -44,7 +44,7 @@ constexpr const char* kGrey = "color=gray, fontcolor=gray";
 
 }  // namespace
 
-void FrameGraph::dumpGraphviz(std::ostream& out) const {
+void FrameGraph::dumpGraphviz(std::ostream& out, const TextureBytes& bytesOf) const {
     auto runs = [&](std::uint32_t pass) {
         return pass != kNone && (!compiled_ || passes_[pass].status == PassStatus::Executes);
     };
@@ -105,6 +105,20 @@ void FrameGraph::dumpGraphviz(std::ostream& out) const {
         if (!compiled_ || node.content == kNone || node.content == n) continue;
         out << "  " << versionId(nodes_[node.content]) << " -> " << versionId(node)
             << " [style=dotted, label=\"unchanged\"];\n";
+    }
+    if (compiled_) {
+        // What the graph allocates, as the graph's label (left-aligned lines: "\l").
+        out << "  labelloc=b;\n  labeljust=l;\n  label=\"transients (lifetime: first pass -> last pass):\\l";
+        const std::vector<TransientInfo> list = transients();
+        if (list.empty()) out << "  none\\l";
+        for (const TransientInfo& t : list) {
+            out << "  " << escaped(t.name) << " " << t.desc.width << "x" << t.desc.height << ": "
+                << escaped(t.firstPass) << " -> " << escaped(t.lastPass);
+            if (bytesOf) out << ", " << bytesOf(t.desc) << " bytes";
+            out << "\\l";
+        }
+        if (bytesOf) out << "peak transient bytes: " << peakTransientBytes(bytesOf) << "\\l";
+        out << "\";\n";
     }
     out << "}\n";
 }

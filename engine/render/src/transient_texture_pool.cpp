@@ -22,8 +22,7 @@ ConcreteTexture TransientTexturePool::allocate(std::string_view name, const Fram
         std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return !e.inUse && e.desc == desc; });
     if (free == entries_.end()) {
         // The first user's name labels the texture (debuggers, validation messages).
-        const TextureHandle t = backend_.createTexture(renderTargetDesc(
-            std::string(name), int(desc.width), int(desc.height), Format(desc.format), int(desc.samples)));
+        const TextureHandle t = backend_.createTexture(backendDescOf(name, desc));
         entries_.push_back({desc, t});
         free = entries_.end() - 1;
     }

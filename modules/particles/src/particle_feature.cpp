@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "engine/render/frame_graph.hpp"
+#include "engine/render/frame_graph/backend_textures.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "engine/scene/bounds.hpp"
 #include "particles/particle_programs.hpp"
@@ -34,20 +36,47 @@ void ParticleFeature::registerSystems(engine::ecs::Scheduler& scheduler) {
         [this](engine::ecs::Registry& registry, engine::ecs::CommandBuffer&) { simulation_.update(registry, dt_); });
 }
 
+namespace {
+
+// The layer for a frame of width x height at 1/stride of its resolution (rounded up).
+TextureDesc layerDesc(int width, int height, int stride) {
+    TextureDesc desc = renderTargetDesc("particle layer", (width + stride - 1) / stride, (height + stride - 1) / stride,
+                                        Format::RGBA16F);  // HDR: additive spray may exceed 1 ([Turánszki 2017])
+    desc.alpha = AlphaMode::Premultiplied;
+    return desc;
+}
+
+}  // namespace
+
 void ParticleFeature::ensureLayer(int width, int height) {
     if (layer_.get()) {
         const TextureDesc& d = backend_.describe(layer_);
         if (d.width == width && d.height == height) return;
         layer_.reset();  // a create that throws below leaves no stale handle behind
     }
-    TextureDesc desc;
-    desc.name = "particle layer";
-    desc.width = width;
-    desc.height = height;
-    desc.format = Format::RGBA16F;  // HDR: additive spray may exceed 1 ([Turánszki 2017])
-    desc.usage = UsageRenderTarget | UsageSampled;
-    desc.alpha = AlphaMode::Premultiplied;
-    layer_ = Owned<TextureHandle>(backend_, backend_.createTexture(desc));
+    layer_ = Owned<TextureHandle>(backend_, backend_.createTexture(layerDesc(width, height, 1)));
+}
+
+ColorDepth ParticleFeature::addPasses(FrameGraph& graph, const engine::scene::FeatureFrame& frame,
+                                      const ColorDepth& targets) {
+    struct Data {
+        ColorDepth out;
+        FrameGraphTexture layer;
+    };
+    const bool empty = !prepare(frame);
+    return graph
+        .addPass<Data>(
+            std::string(name()),
+            [&](FrameGraph::Builder& b, Data& d) {
+                d.out = {b.write(b.read(targets.color)), b.read(targets.depth)};
+                if (empty) return b.markEmpty();
+                const TextureDesc layer = layerDesc(frame.width, frame.height, layerStride());
+                d.layer = b.write(b.create(layer.name, graphDescOf(layer)));
+            },
+            [this, frame](const FrameGraph::Resources& r, const Data& d) {
+                drawInto(frame, toTextureHandle(r.get(d.layer)));
+            })
+        .out;
 }
 
 bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
@@ -94,11 +123,15 @@ bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
 }
 
 void ParticleFeature::draw(const engine::scene::FeatureFrame& frame) {
+    const int stride = layerStride();
+    ensureLayer(std::max(1, (frame.width + stride - 1) / stride), std::max(1, (frame.height + stride - 1) / stride));
+    drawInto(frame, layer_);
+}
+
+void ParticleFeature::drawInto(const engine::scene::FeatureFrame& frame, TextureHandle layer) {
     const ParticleOptions& o = simulation_.options();
     const Rect& region = region_;
-
-    const int stride = o.halfResolution ? 2 : 1;
-    ensureLayer(std::max(1, (frame.width + stride - 1) / stride), std::max(1, (frame.height + stride - 1) / stride));
+    const int stride = layerStride();
     const BufferHandle vertices = buffers_.upload("particles", BufferKind::Vertex, std::as_bytes(std::span(vertices_)));
     const BufferHandle indices =
         buffers_.upload("particle indices", BufferKind::Index, std::as_bytes(std::span(indices_)));
@@ -108,7 +141,7 @@ void ParticleFeature::draw(const engine::scene::FeatureFrame& frame) {
 
     PassDesc pass;
     pass.name = "particles";
-    pass.color[0] = {layer_, LoadOp::Clear, glm::vec4(0.0f)};
+    pass.color[0] = {layer, LoadOp::Clear, glm::vec4(0.0f)};
     PassScope passScope(backend_, pass);
     DrawDesc d;
     d.pipeline = particlePipeline_;
@@ -128,7 +161,7 @@ void ParticleFeature::draw(const engine::scene::FeatureFrame& frame) {
     PassScope compositeScope(backend_, composite);
     DrawDesc c;
     c.pipeline = compositePipeline_;
-    c.params = LayerCompositeParams{layer_, frame.depth, stride, depthScale, depthOffset, greater};
+    c.params = LayerCompositeParams{layer, frame.depth, stride, depthScale, depthOffset, greater};
     c.scissor = region;
     backend_.draw(c);
     compositeScope.end();

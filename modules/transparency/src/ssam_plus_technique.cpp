@@ -52,15 +52,41 @@ public:
     TechniqueKind kind() const override { return TechniqueKind::SsamPlus; }
 
     void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+        // Without a graph SSAM keeps its own targets (made by plan()).
+        draw(opaque, frame, nullptr);
+    }
+
+    // In a frame graph (Technique::addPasses): SSAM's targets are the graph's transients.
+    std::vector<TransientTarget> transientTargets(int width, int height, Format colorFormat,
+                                                  const FoliageFrame& frame) const override {
+        const std::vector<engine::render::MaskedBatch> batches = batchesOf(frame);
+        if (ssam_.cull(width, height, {frame.viewProj, frame.light, batches}).empty()) return {};
+        return ssamTransients(ssam_.intermediateDescs(width, height, colorFormat));
+    }
+    void renderInto(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                    std::span<const TextureHandle> targets) override {
+        if (targets.empty()) return draw(opaque, frame, nullptr);
+        const bool separateAdd = targets.size() == 3;
+        const ssam::Intermediates t{targets[0], separateAdd ? targets[1] : TextureHandle{}, targets.back()};
+        draw(opaque, frame, &t);
+    }
+
+    std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
+
+private:
+    // `targets` null: SSAM's own.
+    void draw(engine::render::FrameTargets& opaque, const FoliageFrame& frame, const ssam::Intermediates* targets) {
         opaque.resolve();
         batches_ = batchesOf(frame);
         const ssam::FoliageView view{frame.viewProj, frame.light, batches_};
-        const ssam::FramePlan plan = ssam_.plan({opaque.color(), opaque.depth()}, view);
+        const TextureDesc& color = backend_.describe(opaque.color());
+        const ssam::FramePlan plan =
+            targets ? ssam_.cull(color.width, color.height, view) : ssam_.plan({opaque.color(), opaque.depth()}, view);
         if (plan.empty()) return;
-        ssam_.maskPass(plan, view, opaque.depth());
-        ssam_.colorPass(plan, view, opaque.depth());
+        const ssam::Intermediates t = targets ? *targets : ssam_.intermediates();
+        ssam_.maskPass(plan, view, opaque.depth(), t);
+        ssam_.colorPass(plan, view, opaque.depth(), t);
 
-        const ssam::Intermediates t = ssam_.intermediates();
         PassDesc pass;
         pass.name = "ssam+ composite";
         pass.color[0] = {opaque.color(), LoadOp::Load};
@@ -73,9 +99,6 @@ public:
         passScope.end();
     }
 
-    std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
-
-private:
     Backend& backend_;
     ssam::ScreenSpaceAlphaMask ssam_;
     CoverageModel model_;

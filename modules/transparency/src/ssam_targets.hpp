@@ -8,12 +8,22 @@
 
 namespace transparency::detail {
 
-// mask (or mask_max + mask_add), foliage.
+// The layer names: mask (or mask_max + mask_add), foliage.
+inline const char* maskLayer(bool separateAdd) { return separateAdd ? "mask_max" : "mask"; }
+
 inline std::vector<NamedTarget> ssamTargets(const ssam::Intermediates& t) {
     std::vector<NamedTarget> out;
-    if (t.mask) out.push_back({t.maskAdd ? "mask_max" : "mask", t.mask});
+    if (t.mask) out.push_back({maskLayer(bool(t.maskAdd)), t.mask});
     if (t.maskAdd) out.push_back({"mask_add", t.maskAdd});
     if (t.foliage) out.push_back({"foliage", t.foliage});
+    return out;
+}
+
+// SSAM's targets as transients of a frame graph, in the order of ssam::Intermediates.
+inline std::vector<TransientTarget> ssamTransients(const ssam::IntermediateDescs& d) {
+    std::vector<TransientTarget> out{{maskLayer(d.maskAdd.has_value()), d.mask}};
+    if (d.maskAdd) out.push_back({"mask_add", *d.maskAdd});
+    out.push_back({"foliage", d.foliage});
     return out;
 }
 

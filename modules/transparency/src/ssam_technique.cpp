@@ -2,7 +2,8 @@
 // SSAM as the paper describes it ([Hathaway 2010]), with options.ssam's knobs: the opaque targets
 // are resolved first (SSAM reads the single-sampled rt_opaque and rt_depth, §3.5.1), then
 // ssam::ScreenSpaceAlphaMask runs the mask, colour and composite passes (in a frame graph:
-// ssam::addSsamPasses, so with no foliage in view they are skipped as empty).
+// ssam::addSsamPasses, so with no foliage in view they are skipped as empty, and SSAM's
+// targets are the graph's transients).
 #include "foliage_draws.hpp"
 #include "ssam/frame_graph_passes.hpp"
 #include "ssam/ssam.hpp"
@@ -32,7 +33,13 @@ public:
         const engine::render::ColorDepth frameTargets = opaque.addResolvePass(graph, drawn, resolved);
         batches_ = batchesOf(frame);
         view_ = {frame.viewProj, frame.light, batches_};
-        return ssam::addSsamPasses(graph, ssam_, view_, frameTargets);
+        const ssam::SsamPasses passes = ssam::addSsamPasses(graph, ssam_, view_, frameTargets);
+        // The intermediates are the graph's transients; none when the passes are empty.
+        graphTargets_.clear();
+        if (passes.mask.isValid()) graphTargets_.push_back({maskLayer(passes.maskAdd.isValid()), passes.mask});
+        if (passes.maskAdd.isValid()) graphTargets_.push_back({"mask_add", passes.maskAdd});
+        if (passes.foliage.isValid()) graphTargets_.push_back({"foliage", passes.foliage});
+        return passes.frame;
     }
 
     std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }

@@ -68,11 +68,38 @@ public:
     TechniqueKind kind() const override { return TechniqueKind::Wboit; }
 
     void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+        draw(opaque, frame, {});  // its own targets
+    }
+
+    // In a frame graph (Technique::addPasses): the accumulators are the graph's transients.
+    std::vector<TransientTarget> transientTargets(int width, int height, Format,
+                                                  const FoliageFrame& frame) const override {
+        if (visibleDraws(frame, width, height).empty()) return {};
+        return {{"wboit_accumulation", renderTargetDesc("rt_wboit_accumulation", width, height, kAccumulation)},
+                {"wboit_revealage", renderTargetDesc("rt_wboit_revealage", width, height, kRevealage)}};
+    }
+    void renderInto(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                    std::span<const TextureHandle> targets) override {
+        draw(opaque, frame, targets);
+    }
+
+    std::vector<NamedTarget> intermediates() const override {
+        if (!accumulation_.get()) return {};
+        return {{"wboit_accumulation", accumulation_}, {"wboit_revealage", revealageTarget_}};
+    }
+
+private:
+    static constexpr Format kAccumulation = Format::RGBA16F, kRevealage = Format::R16F;
+
+    // Into `targets` (accumulation, revealage) when given, else into its own.
+    void draw(engine::render::FrameTargets& opaque, const FoliageFrame& frame, std::span<const TextureHandle> targets) {
         opaque.resolve();
         const int width = opaque.desc().width, height = opaque.desc().height;
         const auto visible = visibleDraws(frame, width, height);
         if (visible.empty()) return;
-        ensureTargets(width, height);
+        if (targets.empty()) ensureTargets(width, height);
+        const TextureHandle accumulation = targets.empty() ? accumulation_.get() : targets[0];
+        const TextureHandle revealage = targets.empty() ? revealageTarget_.get() : targets[1];
         Rect region;
         for (const FoliageDraw* draw : visible)
             if (auto r = engine::render::screenBounds(draw->batch.worldBounds, frame.viewProj, width, height))
@@ -80,7 +107,7 @@ public:
 
         PassDesc accumulate;
         accumulate.name = "wboit accumulate";
-        accumulate.color[0] = {accumulation_, LoadOp::Clear, glm::vec4(0.0f)};
+        accumulate.color[0] = {accumulation, LoadOp::Clear, glm::vec4(0.0f)};
         accumulate.depth = {opaque.depth(), LoadOp::Load};
         PassScope accumulateScope(backend_, accumulate);
         for (const FoliageDraw* draw : visible) {
@@ -92,7 +119,7 @@ public:
 
         PassDesc reveal;
         reveal.name = "wboit revealage";
-        reveal.color[0] = {revealageTarget_, LoadOp::Clear, glm::vec4(1.0f)};
+        reveal.color[0] = {revealage, LoadOp::Clear, glm::vec4(1.0f)};
         reveal.depth = {opaque.depth(), LoadOp::Load};
         PassScope revealScope(backend_, reveal);
         for (const FoliageDraw* draw : visible) {
@@ -111,18 +138,12 @@ public:
         PassScope compositeScope(backend_, composite);
         DrawDesc d;
         d.pipeline = resolvePipeline_;
-        d.params = WboitResolveParams{accumulation_, revealageTarget_};
+        d.params = WboitResolveParams{accumulation, revealage};
         d.scissor = region;
         backend_.draw(d);
         compositeScope.end();
     }
 
-    std::vector<NamedTarget> intermediates() const override {
-        if (!accumulation_.get()) return {};
-        return {{"wboit_accumulation", accumulation_}, {"wboit_revealage", revealageTarget_}};
-    }
-
-private:
     void ensureTargets(int width, int height) {
         if (width == width_ && height == height_) return;
         destroyTargets();
@@ -130,8 +151,8 @@ private:
             return Owned<TextureHandle>(backend_,
                                         backend_.createTexture(renderTargetDesc(name, width, height, format)));
         };
-        accumulation_ = target("rt_wboit_accumulation", Format::RGBA16F);
-        revealageTarget_ = target("rt_wboit_revealage", Format::R16F);
+        accumulation_ = target("rt_wboit_accumulation", kAccumulation);
+        revealageTarget_ = target("rt_wboit_revealage", kRevealage);
         width_ = width, height_ = height;
     }
     void destroyTargets() {

@@ -48,6 +48,16 @@ struct Intermediates {
     engine::render::TextureHandle foliage;  // rt_foliage
 };
 
+// What those targets are for a frame: render targets of the frame's size, the mask in the
+// configured precision, rt_foliage in the frame colour's format. SSAM makes them from these
+// when it keeps its own (render(), plan()); a frame graph creates them as transients
+// (ssam::addSsamPasses).
+struct IntermediateDescs {
+    engine::render::TextureDesc mask;                    // rt_mask, or rt_mask_max with RG16F
+    std::optional<engine::render::TextureDesc> maskAdd;  // rt_mask_add, RG16F precision only
+    engine::render::TextureDesc foliage;                 // rt_foliage
+};
+
 class ScreenSpaceAlphaMask {
 public:
     explicit ScreenSpaceAlphaMask(engine::render::Backend& backend, const Config& config = {});
@@ -59,16 +69,29 @@ public:
     void setConfig(const Config& config);
     const Config& config() const { return config_; }
 
-    // All three passes; nothing runs when no batch is in view.
+    // All three passes; nothing runs when no batch is in view. SSAM keeps its intermediate
+    // targets from frame to frame (made when foliage is first in view, remade on a resize).
     FrameReport render(const FrameTargets& targets, const FoliageView& view);
 
-    // The same, one step at a time, for frame graphs: plan, then each pass.
+    // The same, one step at a time: plan (which makes SSAM's own targets when foliage is in
+    // view), then each pass into them.
     FramePlan plan(const FrameTargets& targets, const FoliageView& view);
     FramePlan plan(int width, int height, engine::render::Format colorFormat, const FoliageView& view);
     void maskPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
     void colorPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
     void compositePass(const FramePlan& plan, engine::render::TextureHandle color);
 
+    // For a caller that owns the targets (a frame graph's transients): the plan without
+    // making any target, the targets' descriptors, and each pass into `targets`.
+    FramePlan cull(int width, int height, const FoliageView& view) const;
+    IntermediateDescs intermediateDescs(int width, int height, engine::render::Format colorFormat) const;
+    void maskPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth,
+                  const Intermediates& targets);
+    void colorPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth,
+                   const Intermediates& targets);
+    void compositePass(const FramePlan& plan, engine::render::TextureHandle color, const Intermediates& targets);
+
+    // SSAM's own targets (null until render() or plan() made them; never made for a graph).
     Intermediates intermediates() const { return {mask_, maskAdd_, foliage_}; }
     engine::render::Backend& backend() const { return backend_; }
 

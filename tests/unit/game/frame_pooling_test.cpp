@@ -6,8 +6,12 @@
 // frame_pooling_gl_test.cpp (label gl).
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include "engine/render/forwarding_backend.hpp"
 
 #include "engine/render/soft/soft_backend.hpp"
 #include "racing_frame.hpp"
@@ -21,6 +25,71 @@ TEST(FramePooling, SteadyRacingFramesCreateNothingOnSoft) {
     auto soft = engine::render::soft::createSoftBackend({2, 64, false});
     racer::testing::expectNoCreationsInSteadyState(*soft);
 }
+
+// Counts the textures created through it.
+class TextureCounter final : public engine::render::ForwardingBackend {
+public:
+    using ForwardingBackend::ForwardingBackend;
+    int textures = 0;
+    engine::render::TextureHandle createTexture(const engine::render::TextureDesc& desc,
+                                                const engine::render::TextureData* data) override {
+        ++textures;
+        return inner_.createTexture(desc, data);
+    }
+};
+
+// The frame graph owns the frame's intermediates: SSAM's mask and foliage, SSAM+'s, WBOIT's
+// accumulators and the particle layer are its transients, created by the passes that draw
+// them and backed by the renderer's pool. The same steady frame (paused, chase camera, the
+// dust in view) built and executed twice: the second creates no texture, and the dumped
+// graph lists those transients with the peak the HUD shows.
+struct SteadyFrameCase {
+    transparency::TechniqueKind technique;
+    std::vector<std::string> transients;  // as the dump's label names them
+    std::uint64_t peakBytes;              // the technique's transients, alive together until its last pass
+};
+
+class SteadyFrame : public ::testing::TestWithParam<SteadyFrameCase> {};
+
+TEST_P(SteadyFrame, CreatesNoTextureTheSecondTime) {
+    auto soft = engine::render::soft::createSoftBackend({2, 64, false});
+    TextureCounter backend(*soft);
+    RacingFrame frame(backend);
+    frame.renderer.setTechnique(GetParam().technique);
+    frame.run(0, 30);  // the car drives off and raises dust
+    frame.run(30, 1, CameraMode::Chase, /*paused=*/true);
+    const int before = backend.textures;
+    frame.run(30, 1, CameraMode::Chase, /*paused=*/true);  // the same frame again
+    EXPECT_EQ(backend.textures - before, 0) << "textures created by the second of two equal frames";
+
+    std::ostringstream dot;
+    frame.renderer.dumpGraph(dot);
+    for (const std::string& name : GetParam().transients)
+        EXPECT_NE(dot.str().find("  " + name + " "), std::string::npos) << name << " is no transient:\n" << dot.str();
+    EXPECT_EQ(frame.renderer.peakTransientBytes(), GetParam().peakBytes) << dot.str();
+    EXPECT_NE(dot.str().find("peak transient bytes: " + std::to_string(GetParam().peakBytes)), std::string::npos);
+}
+
+// Bytes at 96x54 (racing_frame.hpp): RGBA8 and sRGB 4 per pixel, RGBA16F 8, R16F 2; the
+// particle layer (RGBA16F, half resolution: 48x27) lives after the technique's, so it is
+// never part of the peak here.
+constexpr std::uint64_t kPixels = std::uint64_t(racer::testing::kWidth) * racer::testing::kHeight;
+INSTANTIATE_TEST_SUITE_P(
+    Techniques, SteadyFrame,
+    ::testing::Values(SteadyFrameCase{transparency::TechniqueKind::Ssam,
+                                      {"rt_mask", "rt_foliage", "particle layer"},
+                                      kPixels*(4 + 4)},
+                      SteadyFrameCase{transparency::TechniqueKind::SsamPlus,
+                                      {"rt_mask_max", "rt_mask_add", "rt_foliage", "particle layer"},
+                                      kPixels*(2 + 2 + 4)},
+                      SteadyFrameCase{transparency::TechniqueKind::Wboit,
+                                      {"rt_wboit_accumulation", "rt_wboit_revealage", "particle layer"},
+                                      kPixels*(8 + 2)}),
+    [](const auto& info) {
+        return std::string(transparency::techniqueName(info.param.technique)) == "ssam-plus"
+                   ? std::string("ssam_plus")
+                   : std::string(transparency::techniqueName(info.param.technique));
+    });
 
 // racer --dump-graph: SSAM's passes run in the chase view, and under the sky camera (no
 // foliage in view) they are skipped as empty, as is the wheel dust that is out of view.

@@ -28,6 +28,8 @@ TEST(HudText, SaysTechniqueBackendSizeAndWhatTheTimesAre) {
     EXPECT_EQ(racer::hudLines(f)[3], "passes, ms: GPU time of each pass (GL_TIME_ELAPSED)");
     EXPECT_EQ(racer::compareHudLine("ssam", "alpha-test"),
               "side by side: ssam | alpha-test (passes: alpha-test's frame, then ssam's)");
+    f.transientBytes = 115200;  // the previous frame's peak (FrameRenderer::peakTransientBytes)
+    EXPECT_EQ(racer::hudLines(f)[3], "transient targets: peak 115200 bytes (112.5 KiB), previous frame");
     f.frameMs = -1.0;
     EXPECT_EQ(racer::hudLines(f).back(), "frame time: none yet (first frame)");
 }

@@ -433,9 +433,19 @@ TEST(FrameGraphExecute, RunsSurvivorsInDeclarationOrder) {
 
     fg.execute(recordingAllocator(events));
     EXPECT_THAT(fg.executedPassNames(), ElementsAre("depth", "shadow", "lighting", "fog", "present"));
+}
+
+// A graph runs once (frame_graph.hpp): its passes may hold references to the frame's data.
+TEST(FrameGraphExecute, RefusesASecondExecute) {
+    FrameGraph fg;
+    Events events;
+    present(fg, events, "present", {produce(fg, events, "opaque", "color")});
+    EXPECT_FALSE(fg.hasExecuted());
+    fg.execute(recordingAllocator(events));
+    EXPECT_TRUE(fg.hasExecuted());
     events.clear();
-    fg.execute(recordingAllocator(events));  // a compiled graph can run again
-    EXPECT_THAT(fg.executedPassNames(), ElementsAre("depth", "shadow", "lighting", "fog", "present"));
+    EXPECT_THAT(errorOf([&] { fg.execute(recordingAllocator(events)); }), HasSubstr("a graph runs once"));
+    EXPECT_THAT(events, IsEmpty());  // nothing allocated, nothing run
 }
 
 TEST(FrameGraphExecute, WritingTwiceInOnePassIsOneWrite) {
@@ -506,12 +516,35 @@ TEST(FrameGraphLifetime, TransientsLiveFromFirstToLastUser) {
                                     "release t3"));
 }
 
+// The transients of the frame above in allocation order with their first and last pass, and
+// the peak: t1 and t2 while B runs, all three while C runs, t1 and t3 while D runs (the
+// culled pass's t4 never exists).
+TEST(FrameGraphLifetime, TransientsAreListedAndTheirPeakBytesCounted) {
+    FrameGraph fg;
+    Events events;
+    const FrameGraphTexture t1 = produce(fg, events, "A", "t1");
+    const FrameGraphTexture t2 = produce(fg, events, "B", "t2", {t1});
+    const FrameGraphTexture t3 = produce(fg, events, "C", "t3", {t2});
+    produce(fg, events, "unused", "t4", {t1});
+    present(fg, events, "D", {t3, t1});
+    fg.compile();
+
+    std::vector<std::string> lives;
+    for (const engine::render::TransientInfo& t : fg.transients())
+        lives.push_back(t.name + ": " + t.firstPass + " -> " + t.lastPass);
+    EXPECT_THAT(lives, ElementsAre("t1: A -> D", "t2: B -> C", "t3: C -> D"));
+
+    EXPECT_EQ(fg.peakTransientBytes([](const FrameGraphTextureDesc& d) { return std::uint64_t(d.width); }),
+              3u * kDesc.width);
+}
+
 TEST(FrameGraphLifetime, QueriesNeedCompile) {
     FrameGraph fg;
     Events events;
     const FrameGraphTexture t = produce(fg, events, "A", "t");
     EXPECT_THAT(errorOf([&] { (void)fg.lifetime(t); }), HasSubstr("after compile()"));
     EXPECT_THAT(errorOf([&] { (void)fg.executionOrder(); }), HasSubstr("after compile()"));
+    EXPECT_THAT(errorOf([&] { (void)fg.transients(); }), HasSubstr("after compile()"));
 }
 
 // --- graphviz ------------------------------------------------------------------------
@@ -575,6 +608,25 @@ TEST(FrameGraphGraphviz, LinksAVersionAnEmptyPassWroteToTheContentsItHolds) {
     EXPECT_THAT(text, HasSubstr("R0_1 -> P1 [color=gray];"));
     EXPECT_THAT(text, HasSubstr("R0_2 -> P2;"));
     EXPECT_THAT(text, HasSubstr("R0_1 -> R0_2 [style=dotted, label=\"unchanged\"];"));
+}
+
+// The graph's label: each transient with its lifetime and bytes, then the frame's peak.
+TEST(FrameGraphGraphviz, LabelsTransientLifetimesAndThePeakBytes) {
+    FrameGraph fg;
+    Events events;
+    const FrameGraphTexture t1 = produce(fg, events, "A", "t1");
+    present(fg, events, "D", {produce(fg, events, "B", "t2", {t1})});
+    fg.compile();
+    std::ostringstream dot;
+    fg.dumpGraphviz(dot, [](const FrameGraphTextureDesc& d) { return std::uint64_t(d.width) * d.height * 4; });
+    EXPECT_THAT(dot.str(), HasSubstr("label=\"transients (lifetime: first pass -> last pass):\\l"
+                                     "  t1 64x32: A -> B, 8192 bytes\\l"
+                                     "  t2 64x32: B -> D, 8192 bytes\\l"
+                                     "peak transient bytes: 16384\\l\";"));
+    std::ostringstream withoutBytes;
+    fg.dumpGraphviz(withoutBytes);
+    EXPECT_THAT(withoutBytes.str(), HasSubstr("  t1 64x32: A -> B\\l"));
+    EXPECT_THAT(withoutBytes.str(), testing::Not(HasSubstr("peak")));
 }
 
 }  // namespace

@@ -301,7 +301,7 @@ inline std::vector<std::string> runGraph(Frame<BackendKind>& f, ssam::ScreenSpac
                                            toConcrete(f.opaque.color()));
     const auto depth = graph.importTexture("rt_depth", graphDescOf(f.backend->describe(f.opaque.depth())),
                                            toConcrete(f.opaque.depth()));
-    addSideEffectPass(graph, "present", ssam::addSsamPasses(graph, ssam, view, {color, depth}));
+    addSideEffectPass(graph, "present", ssam::addSsamPasses(graph, ssam, view, {color, depth}).frame);
     graph.execute(backendTextureAllocator(*f.backend));
     return graph.executedPassNames();
 }
@@ -314,6 +314,9 @@ TYPED_TEST_P(SsamCases, FrameGraphRunsThreePassesWithFoliageAndNoneWithout) {
     EXPECT_EQ(runGraph(f, ssam, viewOf(visible)),
               (std::vector<std::string>{"ssam mask", "ssam colour", "ssam composite", "present"}));
     const Readback viaGraph = f.backend->readback(f.opaque.color());
+    // In a graph the intermediates are its transients: SSAM made no target of its own.
+    EXPECT_FALSE(ssam.intermediates().mask.valid());
+    EXPECT_FALSE(ssam.intermediates().foliage.valid());
 
     // The same frame through render() gives the same image.
     Frame<TypeParam> direct;

@@ -8,7 +8,9 @@
 //       soft against the opaque + foliage depth (so a tree in front hides them, §3.7)
 //   pass "particles composite": the LayerComposite program, the layer over the frame with
 //       the premultiplied blend; a half-resolution layer is upsampled by nearest depth.
-// No live particle in view: neither pass runs.
+// No live particle in view: neither pass runs. In a frame graph the layer is the graph's
+// transient, created by the "particles" pass and gone after it; render() without a graph
+// keeps a layer of its own (layer()).
 #include <memory>
 
 #include "engine/render/frame_buffer_pool.hpp"
@@ -30,14 +32,19 @@ public:
     void beginFrame(const engine::scene::SimulationFrame& frame) override { dt_ = frame.dt; }
     bool prepare(const engine::scene::FeatureFrame& frame) override;
     void draw(const engine::scene::FeatureFrame& frame) override;
+    // Feature::addPasses's one pass, which also creates the layer as a transient.
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
+                                         const engine::render::ColorDepth& targets) override;
 
     ParticleSimulation& simulation() { return simulation_; }
-    // The layer of the last frame (null before one was drawn), for tests and captures.
+    // The layer render() drew the last frame into (null before one was, and in a graph).
     engine::render::TextureHandle layer() const { return layer_.get(); }
     std::size_t drawnLastFrame() const { return drawn_; }
 
 private:
     void ensureLayer(int width, int height);
+    void drawInto(const engine::scene::FeatureFrame& frame, engine::render::TextureHandle layer);
+    int layerStride() const { return simulation_.options().halfResolution ? 2 : 1; }
 
     engine::render::Backend& backend_;
     ParticleSimulation simulation_;

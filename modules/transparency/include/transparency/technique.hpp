@@ -15,6 +15,7 @@
 
 #include "engine/render/backend.hpp"
 #include "engine/render/frame_graph/color_depth.hpp"
+#include "engine/render/frame_graph/texture_handle.hpp"
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/masked_batch.hpp"
 #include "engine/render/vertex.hpp"
@@ -66,6 +67,19 @@ struct NamedTarget {
     engine::render::TextureHandle texture;
 };
 
+// A target a technique draws a frame through and needs no longer: in a frame graph, a
+// transient the technique's pass creates (Technique::transientTargets).
+struct TransientTarget {
+    std::string layer;                 // its name among the captured layers (racer --capture-layers)
+    engine::render::TextureDesc desc;  // a render target of the frame's size (renderTargetDesc)
+};
+
+// One of those as the graph knows it after addPasses: the version the technique wrote.
+struct GraphTarget {
+    std::string layer;
+    engine::render::FrameGraphTexture texture;
+};
+
 class Technique {
 public:
     virtual ~Technique() = default;
@@ -84,15 +98,39 @@ public:
     // one pass named after the technique reads and writes all of them and calls render()
     // (which may draw into the MSAA targets before resolving, as alpha testing does); SSAM
     // declares its mask, colour and composite passes, which are empty with no foliage in view.
-    // `frame` and what it points to must outlive the graph's execute().
+    // `frame` and what it points to must outlive the graph's execute(), which must be given
+    // an allocator backed by the technique's backend (a TransientTexturePool): the default
+    // pass creates the technique's transientTargets() as the graph's transients and draws
+    // through them (renderInto), so the graph, not the technique, owns them.
     virtual engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph,
                                                  engine::render::FrameTargets& opaque,
                                                  const engine::render::ColorDepth& drawn,
                                                  const engine::render::ColorDepth& resolved, const FoliageFrame& frame);
-    // The intermediate targets of the last frame, for captures; empty when there are none.
+    // The targets a frame of width x height with colour in `colorFormat` needs, in the order
+    // renderInto() takes them; none when there is nothing to draw (no foliage in view) or
+    // the technique needs none.
+    virtual std::vector<TransientTarget> transientTargets(int /*width*/, int /*height*/,
+                                                          engine::render::Format /*colorFormat*/,
+                                                          const FoliageFrame& /*frame*/) const {
+        return {};
+    }
+    // render() drawing through `targets` (backend textures as transientTargets() described
+    // them) instead of targets of its own. The default is render(): no targets.
+    virtual void renderInto(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                            std::span<const engine::render::TextureHandle> /*targets*/) {
+        render(opaque, frame);
+    }
+    // The transients the last addPasses() wrote, by layer name, for a later pass of the same
+    // graph to read (a capture: reading one keeps it alive until then); empty when none.
+    const std::vector<GraphTarget>& graphIntermediates() const { return graphTargets_; }
+    // The targets the technique keeps itself (render() without a graph; textures it
+    // uploads), for captures; empty when there are none.
     virtual std::vector<NamedTarget> intermediates() const { return {}; }
     // The reference's report on its last frame; nullopt for every other technique.
     virtual std::optional<ReferenceReport> referenceReport() const { return std::nullopt; }
+
+protected:
+    std::vector<GraphTarget> graphTargets_;  // set by addPasses()
 };
 
 }  // namespace transparency

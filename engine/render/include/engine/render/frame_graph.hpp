@@ -33,7 +33,15 @@
 //
 // execute(allocator) runs the surviving passes, allocating each transient just before its
 // first user and releasing it just after its last. Imported textures are never allocated
-// or released by the graph. A graph is built for one frame; execute() may be repeated.
+// or released by the graph. The graph owns the frame's intermediates this way: a pass
+// declares what it creates (Builder::create: a size relative to the frame, a format,
+// samples) and the allocator (a TransientTexturePool) backs it only for its lifetime;
+// keeping one longer (a capture of it) is one more pass reading it.
+//
+// A graph runs once. It is built for one frame and execute() refuses a second call
+// (engine::Error): execute callbacks may therefore capture by reference what lives as long
+// as that frame (the frame's draw lists, the technique's per-frame view), which a second
+// run, a frame later, would find changed or gone.
 #include "engine/render/frame_graph/builder.hpp"
 #include "engine/render/frame_graph/compile_results.hpp"
 #include "engine/render/frame_graph/graph_nodes.hpp"
@@ -86,15 +94,26 @@ public:
     bool isCompiled() const { return compiled_; }
 
     // Compiles if needed, then runs the surviving passes. Throws before running anything if
-    // a transient texture is needed and the allocator lacks a callback. If a pass throws,
-    // the transients allocated so far are released and the exception propagates.
+    // a transient texture is needed and the allocator lacks a callback, or if the graph has
+    // already run (a graph runs once: see above). If a pass throws, the transients
+    // allocated so far are released and the exception propagates.
     void execute(const TextureAllocator& allocator = {});
+    bool hasExecuted() const { return ran_; }
 
     // After compile():
     PassStatus passStatus(std::string_view pass) const;
     std::vector<std::string> executionOrder() const;
     // Empty when no running pass uses the texture (imported textures get one too, for information).
     std::optional<ResourceLifetime> lifetime(FrameGraphTexture texture) const;
+
+    // The transients some running pass uses, in the order they are allocated, each with the
+    // first and last pass of its lifetime.
+    std::vector<TransientInfo> transients() const;
+    // The most bytes the transients hold at once during execute(): the largest sum, over
+    // the running passes, of the transients alive while that pass runs. Textures the
+    // allocator hands back within the frame are counted once per transient, so this is
+    // what the frame needs, not what a pool happens to keep.
+    std::uint64_t peakTransientBytes(const TextureBytes& bytesOf) const;
 
     // The passes the last execute() ran, in order (empty before any execute()).
     const std::vector<std::string>& executedPassNames() const { return executed_; }
@@ -103,8 +122,10 @@ public:
     // double border), reads and writes are edges. Culled passes and unused versions are
     // grey; empty and input-empty passes are grey and dashed, and a dotted edge links a
     // version such a pass wrote to the older version whose contents it still holds. Works
-    // before compile(), when everything is drawn as alive.
-    void dumpGraphviz(std::ostream& out) const;
+    // before compile(), when everything is drawn as alive. After compile() the graph's label
+    // lists each transient's lifetime (first and last pass) and, given `bytesOf`, its bytes
+    // and the frame's peak transient bytes.
+    void dumpGraphviz(std::ostream& out, const TextureBytes& bytesOf = {}) const;
 
 private:
     friend class FrameGraphBuilder;
@@ -149,6 +170,7 @@ private:
     std::vector<std::vector<std::uint32_t>> allocateBefore_;  // per executionOrder_ position: transients
     std::vector<std::vector<std::uint32_t>> releaseAfter_;
     std::vector<std::string> executed_;
+    bool ran_ = false;
 };
 
 template <typename Data, typename Setup, typename Execute>

@@ -2,7 +2,12 @@
 #pragma once
 // What FrameGraph::compile() decides about each pass and each transient texture.
 #include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
 #include <string_view>
+
+#include "engine/render/frame_graph/texture_desc.hpp"
 
 namespace engine::render {
 
@@ -31,5 +36,17 @@ struct ResourceLifetime {
 
     bool operator==(const ResourceLifetime&) const = default;
 };
+
+// A transient texture of the compiled frame, named by the passes that bound its life.
+struct TransientInfo {
+    std::string name;
+    FrameGraphTextureDesc desc;
+    std::string firstPass;  // allocated just before this pass runs
+    std::string lastPass;   // released just after this pass has run
+};
+
+// What a texture of a descriptor weighs in bytes; only the backend knows its formats
+// (backend_textures.hpp backendTextureBytes).
+using TextureBytes = std::function<std::uint64_t(const FrameGraphTextureDesc&)>;
 
 }  // namespace engine::render
