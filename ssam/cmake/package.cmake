@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # The installed package: what another engine finds with
-#   find_package(ssam 0.2 REQUIRED COMPONENTS soft render_gl gl)               (CMake)
+#   find_package(ssam 0.3 REQUIRED COMPONENTS soft render_gl gl)               (CMake)
 #   pkg-config --static --cflags --libs ssam ssam-soft ssam-render-gl ssam-gl  (anything else)
 # Included by ssam/CMakeLists.txt once every library of the package exists. Layout:
 #   include/ssam/            ssam's headers and the generated version.hpp
@@ -66,7 +66,7 @@ endforeach()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ssamConfig.cmake.in
                               ${CMAKE_CURRENT_BINARY_DIR}/ssamConfig.cmake
                               INSTALL_DESTINATION ${_ssam_cmake_dir})
-# 0.x: a minor version may change the API, so 0.2 accepts only 0.2.*.
+# 0.x: a minor version may change the API, so 0.3 accepts only 0.3.*.
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/ssamConfigVersion.cmake
                                  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/ssamConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/ssamConfigVersion.cmake
