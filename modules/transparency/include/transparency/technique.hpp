@@ -48,6 +48,8 @@ struct FoliageFrame {
     glm::vec3 eye{0.0f};
     engine::render::DirectionalLight light;
     std::span<const FoliageDraw> draws;
+    // The frame's number in its sequence: hashed+taa varies its threshold with it.
+    std::uint64_t frameIndex = 0;
 };
 
 // What the exact reference found in its last frame (Technique::referenceReport).
