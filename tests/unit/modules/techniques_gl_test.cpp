@@ -28,7 +28,7 @@ Readback runOn(Backend& backend, TechniqueKind kind) {
 TEST(TechniquesGl, EachTechniqueMatchesTheSoftBackend) {
     for (TechniqueKind kind :
          {TechniqueKind::Ssam, TechniqueKind::SsamPlus, TechniqueKind::AlphaTest, TechniqueKind::AlphaToCoverage,
-          TechniqueKind::BlendUnsorted, TechniqueKind::BlendSorted, TechniqueKind::Wboit}) {
+          TechniqueKind::BlendUnsorted, TechniqueKind::BlendSorted, TechniqueKind::Wboit, TechniqueKind::Hashed}) {
         auto soft = soft::createSoftBackend({.threads = 1});
         auto gl = gl::createGlBackend();
         const Readback s = runOn(*soft, kind), g = runOn(*gl, kind);
