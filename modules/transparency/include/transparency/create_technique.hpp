@@ -11,6 +11,7 @@
 #include "ssam/config.hpp"
 #include "transparency/programs.hpp"
 #include "transparency/technique.hpp"
+#include "transparency/temporal.hpp"
 
 namespace transparency {
 
@@ -40,6 +41,7 @@ struct TechniqueOptions {
     float wboitDepthScale = 1.0f;
     SsamPlusOptions ssamPlus;
     HashedOptions hashed;
+    TemporalOptions temporal;  // the +taa techniques' temporal pass
 };
 
 // Throws engine::Error when the backend cannot run the technique (the message says why).
