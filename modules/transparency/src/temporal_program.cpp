@@ -90,6 +90,7 @@ glm::vec2 haltonJitter(std::uint64_t frameIndex, int phases) {
 }
 
 glm::mat4 jitteredViewProj(const glm::mat4& viewProj, glm::vec2 jitterPixels, int width, int height) {
+    if (jitterPixels == glm::vec2(0.0f)) return viewProj;  // the same bits, not a product with the identity
     glm::mat4 j(1.0f);
     j[3][0] = 2.0f * jitterPixels.x / float(width);
     j[3][1] = -2.0f * jitterPixels.y / float(height);  // rows grow downwards

@@ -35,7 +35,7 @@ glm::vec2 haltonJitter(std::uint64_t frameIndex, int phases);
 
 // viewProj moved on screen by `jitterPixels` in a width x height target: clip x gains
 // 2 jx / width * w, so every point moves by jx pixels right and jy pixels down (the engine's
-// rows grow downwards: NDC y = 1 at row 0).
+// rows grow downwards: NDC y = 1 at row 0). A zero jitter returns viewProj itself.
 glm::mat4 jitteredViewProj(const glm::mat4& viewProj, glm::vec2 jitterPixels, int width, int height);
 
 // The matrix that takes (pixel x + 0.5, pixel y + 0.5, depth, 1) of the current frame to
