@@ -5,13 +5,13 @@
 // and a full-screen pass blends it with the history, the previous output, fetched where the
 // pixel's surface was in the previous frame: reprojected through the pixel's depth and the
 // previous camera, both without jitter, then clamped to the current frame's 3x3 neighbourhood
-// so that what was disoccluded or changed does not leave a trail (Karis 2014, "High Quality
+// so that what was disoccluded or changed does not leave a trail ([Karis 2014] "High Quality
 // Temporal Supersampling", SIGGRAPH Advances in Real-Time Rendering; Yang et al. 2020, "A Survey
 // of Temporal Antialiasing Techniques", EG STAR).
 //
 // What it cannot see: motion within the scene. The reprojection knows the camera, not the
 // wind, so wind-bent foliage fetches history from where the leaf was not and the clamp only
-// bounds that trail (ghosting): ssam-bench measures it on the pan rather than hiding it.
+// bounds that trail (ghosting): modules/README.md measures it on racer's pan.
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -23,8 +23,8 @@ namespace transparency {
 
 struct TemporalOptions {
     // The weight of the current frame: history + (current - history) * blend, an exponential
-    // average over about 1 / blend frames (Karis 2014 uses 0.04 to 0.1; higher follows motion
-    // sooner, lower averages more noise away). In (0, 1].
+    // average over about 1 / blend frames ([Karis 2014]'s exponential history; higher follows
+    // motion sooner, lower averages more noise away). In (0, 1].
     float blend = 0.1f;
     int jitterPhases = 8;  // the Halton (2, 3) sequence repeats after this many frames; >= 1
 };
