@@ -60,7 +60,7 @@ Readback sixFrames(Backend& backend, TechniqueKind kind) {
 }
 
 TEST(TemporalGl, SixFramesMatchTheSoftBackend) {
-    for (TechniqueKind kind : {TechniqueKind::HashedTaa, TechniqueKind::AlphaTestTaa, TechniqueKind::SsamTaa}) {
+    for (TechniqueKind kind : {TechniqueKind::HashedTaa, TechniqueKind::AlphaTestTaa}) {
         auto soft = soft::createSoftBackend({.threads = 1});
         auto gl = gl::createGlBackend();
         const Readback s = sixFrames(*soft, kind), g = sixFrames(*gl, kind);
@@ -73,8 +73,7 @@ TEST(TemporalGl, SixFramesMatchTheSoftBackend) {
         }
         std::printf("%s soft vs GL after 6 frames: worst %.6f, %d of %zu values over 1e-3\n", techniqueName(kind),
                     worst, over, s.values.size());
-        // Measured: hashed+taa 148 of 16384 (its flips, carried on by the history), alpha-test+taa 10,
-        // ssam+taa 0.
+        // Measured: hashed+taa 148 of 16384 (its flips, carried on by the history), alpha-test+taa 10.
         EXPECT_LE(over, int(s.values.size() / 50)) << techniqueName(kind) << ": at most 2% of the values over 1e-3";
     }
 }

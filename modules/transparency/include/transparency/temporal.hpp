@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The temporal pass (TAA) that `hashed+taa`, `alpha-test+taa` and `ssam+taa` run after their
+// The temporal pass (TAA) that `hashed+taa` and `alpha-test+taa` run after their
 // technique: each frame is drawn with its projection moved by a sub-pixel jitter (Halton 2, 3),
 // and a full-screen pass blends it with the history, the previous output, fetched where the
 // pixel's surface was in the previous frame: reprojected through the pixel's depth and the
