@@ -31,9 +31,9 @@ ViewUpload::~ViewUpload() {
     for (BufferHandle b : opaqueInstances_) backend_.destroy(b);
 }
 
-transparency::FoliageFrame ViewUpload::foliageFrame() const {
+transparency::FoliageFrame ViewUpload::foliageFrame(const glm::mat4& viewProj) const {
     transparency::FoliageFrame frame;
-    frame.viewProj = camera_.viewProj;
+    frame.viewProj = viewProj;
     frame.eye = camera_.eye;
     frame.light = kSun;
     frame.draws = draws_;
@@ -64,22 +64,30 @@ FrameDrawer::~FrameDrawer() {
 }
 
 void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Technique* technique,
-                       const ViewUpload& view) {
+                       const ViewUpload& view, std::uint64_t frameIndex, bool cut) {
+    // Temporal techniques move the projection by a sub-pixel jitter, opaque pass and foliage alike.
+    const glm::mat4 viewProj =
+        technique ? transparency::jitteredViewProj(view.camera().viewProj, technique->projectionJitter(frameIndex),
+                                                   targets.desc().width, targets.desc().height)
+                  : view.camera().viewProj;
     FrameGraph graph;
     const FrameTargets::InGraph in = targets.importInto(graph);
     struct Drawn {
         ColorDepth out;
     };
-    const ColorDepth drawn = graph
-                                 .addPass<Drawn>(
-                                     "opaque",
-                                     [&](FrameGraph::Builder& b, Drawn& d) {
-                                         d.out = {b.write(in.drawn.color), b.write(in.drawn.depth)};
-                                     },
-                                     [&](const FrameGraph::Resources&, const Drawn&) { drawOpaque(targets, view); })
-                                 .out;
+    const ColorDepth drawn =
+        graph
+            .addPass<Drawn>(
+                "opaque",
+                [&](FrameGraph::Builder& b, Drawn& d) {
+                    d.out = {b.write(in.drawn.color), b.write(in.drawn.depth)};
+                },
+                [&](const FrameGraph::Resources&, const Drawn&) { drawOpaque(targets, view, viewProj); })
+            .out;
     const ColorDepth resolved = in.drawn != in.resolved ? in.resolved : drawn;
-    const transparency::FoliageFrame foliage = view.foliageFrame();
+    transparency::FoliageFrame foliage = view.foliageFrame(viewProj);
+    foliage.frameIndex = frameIndex;
+    foliage.cut = cut;
     const ColorDepth frame = technique ? technique->addPasses(graph, targets, drawn, resolved, foliage)
                                        : targets.addResolvePass(graph, drawn, resolved);
     addSideEffectPass(graph, "present", frame);
@@ -87,13 +95,13 @@ void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Tech
     transients_.endFrame();
 }
 
-void FrameDrawer::drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view) {
+void FrameDrawer::drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view, const glm::mat4& viewProj) {
     PassScope scope(backend_, targets.passDesc(kSky));
     const auto& opaque = view.lists().opaque;
     for (std::size_t i = 0; i < opaque.size(); ++i) {
         const engine::scene::MeshPart& part = library_.part(opaque[i].part);
         SurfaceParams s;
-        s.viewProj = view.camera().viewProj;
+        s.viewProj = viewProj;
         s.baseColorFactor = part.material.baseColorFactor;
         s.baseColor = part.material.baseColor;
         s.light = kSun;

@@ -17,8 +17,13 @@
 #include "engine/scene/draw_lists.hpp"
 #include "foliage_upload.hpp"
 #include "transparency/create_technique.hpp"
+#include "transparency/temporal.hpp"
 
 namespace bench {
+
+// Frames a technique that needs history (the temporal pass) is drawn before it is measured:
+// with a blend of 0.1 the first frame's weight is then 0.9^16 = 0.19 of what it was.
+inline constexpr int kHistoryFrames = 16;
 
 inline constexpr engine::render::CompareFunc kDepthFunc = engine::render::CompareFunc::Greater;  // reverse-Z
 
@@ -33,7 +38,7 @@ public:
     const BenchCamera& camera() const { return camera_; }
     const engine::scene::DrawLists& lists() const { return lists_; }
     std::span<const engine::render::BufferHandle> opaqueInstances() const { return opaqueInstances_; }
-    transparency::FoliageFrame foliageFrame() const;
+    transparency::FoliageFrame foliageFrame(const glm::mat4& viewProj) const;
     std::size_t foliageInstances() const;
 
 private:
@@ -56,11 +61,14 @@ public:
     // The frame as a frame graph, as racer builds it: the opaque pass, then the technique's
     // passes (or the plain resolve when technique is null), then a present pass. The
     // graph's transients (SSAM's mask and foliage, WBOIT's accumulators) come from a pool
-    // kept across frames, so timed frames after the first create no texture.
-    void draw(engine::render::FrameTargets& targets, transparency::Technique* technique, const ViewUpload& view);
+    // kept across frames, so timed frames after the first create no texture. Frame
+    // `frameIndex` of a sequence (temporal techniques: its projection jitter, and the history
+    // kept from the frame before unless `cut`).
+    void draw(engine::render::FrameTargets& targets, transparency::Technique* technique, const ViewUpload& view,
+              std::uint64_t frameIndex = 0, bool cut = false);
 
 private:
-    void drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view);
+    void drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view, const glm::mat4& viewProj);
 
     engine::render::Backend& backend_;
     const engine::scene::MeshLibrary& library_;

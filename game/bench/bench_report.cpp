@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/core/error.hpp"
+#include "bench_frame.hpp"
 #include "report_text.hpp"
 
 namespace bench {
@@ -37,14 +38,45 @@ std::string primaryBackend(const std::vector<BenchRow>& rows) {
     return backends.empty() ? "" : backends.front();
 }
 
+// The temporal measures (bench_temporal.hpp), one table for every backend that has them.
+void writeTemporalMarkdown(std::ostream& out, const std::vector<BenchRow>& rows) {
+    bool any = false;
+    for (const BenchRow& r : rows) any = any || r.temporalFrames > 0;
+    if (!any) return;
+    out << "## temporal: error per frame of a pan\n\n"
+           "Each frame of a sideways pan against that frame's exact reference, over the foliage pixels (where "
+           "the reference differs from the opaque-only frame): converged = median over the last half of the "
+           "frames, worst = the worst frame. Techniques with history start the pan after "
+        << kHistoryFrames
+        << " frames of its first view, so none is measured on its first frame. The reprojection sees the "
+           "camera, not the wind: what the temporal pass would ghost under wind is not in these (static) scenes.\n\n";
+    out << "| scene | technique | backend | frames | ꟻLIP converged | ꟻLIP worst | RMSE converged | RMSE worst |\n"
+           "|---|---|---|---:|---:|---:|---:|---:|\n";
+    for (const BenchRow& r : rows) {
+        if (r.temporalFrames == 0) continue;
+        out << "| " << r.scene << " | " << r.technique << " | " << r.backend << " | " << r.temporalFrames << " | "
+            << num(r.temporalFlip, "%.4f") << " | " << num(r.temporalFlipWorst, "%.4f") << " | "
+            << num(r.temporalRmse, "%.5f") << " | " << num(r.temporalRmseWorst, "%.5f") << " |\n";
+    }
+    out << "\n";
+}
+
 }  // namespace
 
 const std::vector<std::string>& csvColumns() {
-    static const std::vector<std::string> columns{"scene",         "technique",      "backend",     "width",
-                                                  "height",        "time_ms_median", "time_ms_min", "time_ms_max",
-                                                  "cpu_ms_median", "rmse_linear",    "psnr_linear", "rmse_srgb",
-                                                  "psnr_srgb",     "ssim",           "flip_mean",   "flicker",
-                                                  "flicker_raw",   "peak_mem_mb",    "peak_rss_mb", "note"};
+    static const std::vector<std::string> columns{"scene",         "technique",
+                                                  "backend",       "width",
+                                                  "height",        "time_ms_median",
+                                                  "time_ms_min",   "time_ms_max",
+                                                  "cpu_ms_median", "rmse_linear",
+                                                  "psnr_linear",   "rmse_srgb",
+                                                  "psnr_srgb",     "ssim",
+                                                  "flip_mean",     "flicker",
+                                                  "flicker_raw",   "peak_mem_mb",
+                                                  "peak_rss_mb",   "temporal_frames",
+                                                  "temporal_flip", "temporal_flip_worst",
+                                                  "temporal_rmse", "temporal_rmse_worst",
+                                                  "note"};
     return columns;
 }
 
@@ -58,7 +90,9 @@ void writeCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
             << num(r.timeMaxMs, "%.3f") << ',' << num(r.cpuMedianMs, "%.3f") << ',' << num(r.rmseLinear) << ','
             << num(r.psnrLinear) << ',' << num(r.rmseSrgb) << ',' << num(r.psnrSrgb) << ',' << num(r.ssim) << ','
             << num(r.flipMean) << ',' << num(r.flicker) << ',' << num(r.flickerRaw) << ',' << num(r.peakMemMb, "%.3f")
-            << ',' << num(r.peakRssMb, "%.1f") << ',' << csvField(r.note) << "\n";
+            << ',' << num(r.peakRssMb, "%.1f") << ',' << r.temporalFrames << ',' << num(r.temporalFlip) << ','
+            << num(r.temporalFlipWorst) << ',' << num(r.temporalRmse) << ',' << num(r.temporalRmseWorst) << ','
+            << csvField(r.note) << "\n";
     }
 }
 
@@ -101,6 +135,8 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
         }
         out << "\n";
     }
+
+    writeTemporalMarkdown(out, rows);
 
     // Goal ratios (SSAM against its rivals, game/bench/FIGURES.md), from this run.
     const std::string primary = primaryBackend(rows);

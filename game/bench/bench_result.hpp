@@ -35,6 +35,12 @@ struct BenchRow {
     double flicker = kMissing;     // flickerRaw minus the reference's over the same pan
     double peakMemMb = kMissing;   // peak bytes of targets/buffers the technique allocated, MiB
     double peakRssMb = kMissing;   // growth of the process's peak RSS while it ran, MiB (CPU memory too)
+    // The temporal measures (bench_temporal.hpp): ꟻLIP and RMSE of each frame of a pan against
+    // that frame's reference, over the foliage pixels; converged = the median over the last
+    // half of the frames, worst = the largest.
+    int temporalFrames = 0;
+    double temporalFlip = kMissing, temporalFlipWorst = kMissing;
+    double temporalRmse = kMissing, temporalRmseWorst = kMissing;
     std::string note;
 };
 

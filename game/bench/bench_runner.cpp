@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "bench_frame.hpp"
+#include "bench_temporal.hpp"
 #include "counting_backend.hpp"
 #include "engine/capture/image_write.hpp"
 #include "engine/capture/metrics.hpp"
@@ -64,8 +65,13 @@ Image frameImage(Backend& backend, const engine::render::FrameTargets& targets) 
 std::vector<Image> panImages(Backend& backend, FrameDrawer& drawer, engine::render::FrameTargets& targets,
                              transparency::Technique* technique, const SceneViews& views) {
     std::vector<Image> frames;
+    std::uint64_t index = 0;
+    // A technique with history starts the pan converged on its first view (the first drawn cut).
+    if (technique && technique->needsHistory())
+        for (; index < kHistoryFrames; ++index) drawer.draw(targets, technique, *views.pan.front(), index, index == 0);
     for (const auto& view : views.pan) {
-        drawer.draw(targets, technique, *view);
+        drawer.draw(targets, technique, *view, index, index == 0);
+        ++index;
         backend.takeTimings();
         frames.push_back(frameImage(backend, targets));
     }
@@ -126,6 +132,12 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         engine::render::FrameTargets targets(
             *counting, {o.width, o.height, technique ? technique->opaqueSamples() : 1, Format::RGBA8_SRGB, kDepthFunc});
         FrameDrawer drawer(backend, scene.library());
+        // A technique with history is measured after kHistoryFrames of the still view, never on
+        // its first frame; the timed frames continue the sequence.
+        std::uint64_t frameIndex = 0;
+        if (technique && technique->needsHistory())
+            for (; frameIndex < kHistoryFrames; ++frameIndex)
+                drawer.draw(targets, technique.get(), *views.still, frameIndex, frameIndex == 0);
         backend.takeTimings();  // drop whatever earlier work left
 
         std::vector<double> times, cpuTimes;
@@ -134,7 +146,8 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
         for (int i = 0; i < o.warmup + o.reps; ++i) {
             const auto start = std::chrono::steady_clock::now();
             const double cpuStart = processCpuMs();
-            drawer.draw(targets, technique.get(), *views.still);
+            drawer.draw(targets, technique.get(), *views.still, frameIndex, frameIndex == 0);
+            ++frameIndex;
             // GL: waiting for the passes' GL_TIME_ELAPSED results also waits for the frame.
             const std::vector<PassTiming> timings = backend.takeTimings();
             const double ms =
@@ -243,6 +256,9 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
         const ReferenceFrames ref = computeReference(*soft, softScene, softViews, o);
         if (!ref.note.empty()) std::printf("[ssam-bench] %s\n", ref.note.c_str());
 
+        // The soft backend first: its reference judges every backend's frames.
+        std::vector<TemporalBackend> temporal{{"soft", soft.get(), &softScene}};
+        std::vector<std::unique_ptr<BenchScene>> glScenes;  // kept for the temporal pan
         for (const std::string& backendName : o.backends) {
             if (backendName == "gl" && !glBackend) {
                 for (const BenchSubject& s : o.subjects) {
@@ -263,7 +279,11 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
             const SceneViews& views = ownScene ? ownViews : softViews;
             for (const BenchSubject& s : o.subjects)
                 rows.push_back(measure(backend, backendName, scene, views, s, ref, o));
+            if (ownScene)
+                temporal.push_back({backendName, &backend, ownScene.get()}), glScenes.push_back(std::move(ownScene));
         }
+        // Every backend's techniques through the pan, frame by frame against the soft reference.
+        measureTemporal(temporal, o, rows);
     }
     return rows;
 }

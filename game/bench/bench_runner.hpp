@@ -34,8 +34,9 @@ struct BenchOptions {
     std::vector<std::string> backends;  // "soft", "gl"
     int width = 1280, height = 720;
     int reps = 5, warmup = 1;
-    int panFrames = 8;                                  // frames of the flicker pan (at least 2)
-    int threads = 0;                                    // soft backend threads, and LP_NUM_THREADS for llvmpipe; 0: all
+    int panFrames = 8;        // frames of the flicker pan (at least 2)
+    int temporalFrames = 32;  // frames of the pan measured frame by frame (bench_temporal.hpp); 0: none
+    int threads = 0;          // soft backend threads, and LP_NUM_THREADS for llvmpipe; 0: all
     std::optional<engine::render::soft::SimdIsa> simd;  // the soft kernels' instruction set; unset: the widest
     std::filesystem::path contentDir;
     // When set: each still frame as <scene>_<technique>_<backend>.png, and its per-pixel ꟻLIP

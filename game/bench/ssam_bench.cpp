@@ -41,6 +41,7 @@ struct Options {
     int reps = 5;
     int warmup = 1;
     int panFrames = 8;
+    int temporalFrames = 32;
     int threads = 0;
     std::string simd = "auto";
     bool quick = false;
@@ -180,6 +181,7 @@ BenchOptions parse(const Options& o) {
     b.reps = o.reps;
     b.warmup = o.warmup;
     b.panFrames = o.panFrames;
+    b.temporalFrames = o.temporalFrames;
     b.threads = o.threads;
     b.simd = racer::simdFromFlag(o.simd);
     b.contentDir = o.contentDir;
@@ -193,6 +195,7 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         if (!app.count("--reps")) o.reps = 1;
         if (!app.count("--warmup")) o.warmup = 0;
         if (!app.count("--pan-frames")) o.panFrames = 3;
+        if (!app.count("--temporal-frames")) o.temporalFrames = 4;
     }
     // Every flag and sweep value is checked before the first frame (a bad one costs no
     // reference render), and so is every output: the directory is made and proven writable,
@@ -281,11 +284,17 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     app.add_option("--pan-frames", o.panFrames, "frames of the sideways pan for the flicker measure")
         ->check(CLI::Range(2, 1000))
         ->capture_default_str();
+    app.add_option("--temporal-frames", o.temporalFrames,
+                   "frames of the pan on which every technique's error is measured frame by frame against that "
+                   "frame's reference (converged: median of the last half; worst frame); 0: none")
+        ->check(CLI::Range(0, 1000))
+        ->capture_default_str();
     app.add_option("--threads", o.threads, "soft backend threads and LP_NUM_THREADS for gl (0: all)")
         ->check(CLI::Range(0, 256))
         ->capture_default_str();
     racer::addSimdOption(app, o.simd);
-    app.add_flag("--quick", o.quick, "CI mode: 160x90, 1 rep, no warm-up, 3 pan frames (explicit flags win)");
+    app.add_flag("--quick", o.quick,
+                 "CI mode: 160x90, 1 rep, no warm-up, 3 pan frames, 4 temporal frames (explicit flags win)");
     app.add_flag("--images", o.images,
                  "also write each still frame, and its per-pixel FLIP error (_flip), as a PNG into OUT/images");
     CLI::Option* sweep = app.add_flag("--sweep", o.sweep,
@@ -314,7 +323,7 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                      "resolution (forest, 360p..2160p) and foliage depth complexity (1..64 full-view leaf layers "
                      "at 720p); --quick: 160x90..320x180 and 1..4 layers; writes scaling.csv, scaling.svg");
     scaling->excludes(sweep);
-    for (const char* flag : {"--scenes", "--techniques", "--size", "--pan-frames", "--images"})
+    for (const char* flag : {"--scenes", "--techniques", "--size", "--pan-frames", "--temporal-frames", "--images"})
         scaling->excludes(app.get_option(flag));
     app.add_option("--out", o.out, "output directory (created if missing; checked before the first frame)")
         ->capture_default_str();

@@ -9,6 +9,7 @@
 #include "engine/render/frame_graph.hpp"
 #include "engine/render/frame_graph/backend_textures.hpp"
 #include "engine/render/frame_graph/side_effect_pass.hpp"
+#include "transparency/temporal.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "compare_view.hpp"
 #include "living_scene.hpp"
@@ -172,9 +173,17 @@ void FrameRenderer::captureIntermediates(std::vector<transparency::NamedTarget> 
         if (t.name != "mask" && t.name != "mask_max" && t.name != "mask_add") capture(t.texture, t.name.c_str());
 }
 
-void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraView& camera) {
+void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraView& unjittered) {
     // B's frame first, by its own renderer and graph (the compare passes below read it).
-    if (compare_) compare_->right().render(lists, camera);
+    if (compare_) {
+        if (cut_) compare_->right().cutHistory();
+        compare_->right().render(lists, unjittered);
+    }
+    // The opaque pass and the technique draw with the technique's jitter (none but for the
+    // temporal techniques: the same matrix).
+    CameraView camera = unjittered;
+    camera.viewProj = transparency::jitteredViewProj(unjittered.viewProj, technique_->projectionJitter(frameIndex_),
+                                                     options_.width, options_.height);
     layers_.clear();
     instances_.beginFrame();
     overlay_.beginFrame();
@@ -206,18 +215,30 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
 
     // 2. Foliage by the technique: it draws, resolves the frame targets and leaves the
     //    colour and the depth later passes test against in them.
-    const transparency::FoliageFrame foliage{camera.viewProj, camera.eye, options_.sun,
-                                             foliage_.upload(lists, library_)};
+    const transparency::FoliageFrame foliage{
+        camera.viewProj, camera.eye, options_.sun, foliage_.upload(lists, library_), frameIndex_, cut_};
+    ++frameIndex_;
+    cut_ = false;
     ColorDepth frame = technique_->addPasses(*graph, *opaque_, drawn, resolved, foliage);
     if (options_.captureLayers) addCaptureFoliagePass(*graph, frame);
 
     // 3. The living scene's passes (grass, water, particles, light shafts) onto the colour,
     //    depth-tested against the opaque + foliage depth; without one, BLEND surfaces here.
-    const engine::scene::FeatureFrame features{
-        backend_,       library_,        lists,       opaque_->color(),  opaque_->depth(),
-        options_.width, options_.height, camera.view, camera.projection, camera.viewProj,
-        camera.eye,     options_.sun,    0.0f,        kDepthFunc};
-    frame = living_ ? living_->addPasses(*graph, features, frame) : addBlendPass(*graph, frame, features, camera);
+    const engine::scene::FeatureFrame features{backend_,
+                                               library_,
+                                               lists,
+                                               opaque_->color(),
+                                               opaque_->depth(),
+                                               options_.width,
+                                               options_.height,
+                                               unjittered.view,
+                                               unjittered.projection,
+                                               unjittered.viewProj,
+                                               unjittered.eye,
+                                               options_.sun,
+                                               0.0f,
+                                               kDepthFunc};
+    frame = living_ ? living_->addPasses(*graph, features, frame) : addBlendPass(*graph, frame, features, unjittered);
 
     // 4. Side by side: B's right half, the insets and labels over A's frame (compare_view.hpp).
     const int scale = hud::textScaleFor(options_.height);

@@ -70,7 +70,12 @@ public:
     int width() const { return options_.width; }
     int height() const { return options_.height; }
 
+    // One frame. A temporal technique (hashed+taa, ...) gets its projection jitter on the
+    // opaque pass and the foliage; the living scene's passes, drawn after its temporal pass,
+    // keep the unjittered camera.
     void render(const engine::scene::DrawLists& lists, const CameraView& camera);
+    // The camera jumped (a camera switch): a temporal technique drops its history next frame.
+    void cutHistory() { cut_ = true; }
 
     // Side by side (compare_view.hpp): the current technique on the left, `right` on the
     // right; nullopt ends it. Throws engine::Error, keeping the current state, when `right`
@@ -136,6 +141,8 @@ private:
     std::unique_ptr<CompareView> compare_;
     std::vector<std::string> hudLines_;
     hud::PixelRect hudBox_;
+    std::uint64_t frameIndex_ = 0;  // frames rendered: FoliageFrame::frameIndex
+    bool cut_ = false;
 };
 
 }  // namespace racer

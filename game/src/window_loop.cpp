@@ -336,6 +336,7 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
                 case WindowAction::PreviousTechnique: stepTechnique(frame, -1); break;
                 case WindowAction::NextCamera:
                     camera = nextCamera(camera);
+                    frame.cutHistory();  // a temporal technique must not blend the old view in
                     std::printf("racer: camera %s\n", cameraName(camera));
                     if (camera == CameraMode::Free) std::printf("racer: free camera: %s\n", flyKeysHelp());
                     if (camera == CameraMode::Chase) std::printf("racer: drive: %s\n", driveKeysHelp());

@@ -11,8 +11,8 @@
 namespace engine::render {
 
 FrameTargets::FrameTargets(Backend& backend, const FrameTargetsDesc& desc) : backend_(backend), desc_(desc) {
-    if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4)
-        throw engine::Error("frame targets: " + std::to_string(desc.samples) + " samples (use 1, 2 or 4)");
+    if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4 && desc.samples != 8)
+        throw engine::Error("frame targets: " + std::to_string(desc.samples) + " samples (use 1, 2, 4 or 8)");
     auto target = [&](const char* name, Format format, int samples) {
         return backend_.createTexture(renderTargetDesc(name, desc.width, desc.height, format, samples));
     };

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Alpha-to-coverage ([Moore 2015]): the opaque pass runs at 4x MSAA and the foliage is drawn
-// into those targets with each fragment covering round(alpha * 4) of its samples (the
-// engine's deterministic rule, AlphaTest::alphaToCoverage), with depth test and write; the
-// resolve then averages the samples, so alpha becomes a 5-level coverage fraction.
+// Alpha-to-coverage ([Moore 2015]): the opaque pass runs at 4x MSAA (`a2c`; 8x for `a2c8`,
+// alpha_to_coverage8_technique.cpp) and the foliage is drawn into those targets with each
+// fragment covering round(alpha * 4) of its samples (the engine's deterministic rule,
+// AlphaTest::alphaToCoverage), with depth test and write; the resolve then averages the
+// samples, so alpha becomes a 5-level (9-level at 8x) coverage fraction.
 // Overlapping fragments of equal alpha cover the same samples (no dithering), as in
 // hardware with a fixed coverage pattern.
 #include <string>
@@ -10,6 +11,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
+#include "alpha_to_coverage_technique.hpp"
 #include "foliage_draws.hpp"
 #include "technique_table.hpp"
 
@@ -19,11 +21,10 @@ namespace {
 
 using namespace engine::render;
 
-constexpr int kSamples = 4;
-
 class AlphaToCoverageTechnique final : public Technique {
 public:
-    AlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options) : backend_(backend) {
+    AlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind, int samples)
+        : backend_(backend), kind_(kind), samples_(samples) {
         PipelineDesc p = foliagePipeline("foliage alpha-to-coverage");
         p.depth = DepthState::testAndWrite(options.ssam.depthFunc);
         p.alphaTest.alphaToCoverage = true;
@@ -31,15 +32,17 @@ public:
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
 
-    TechniqueKind kind() const override { return TechniqueKind::AlphaToCoverage; }
-    int opaqueSamples() const override { return kSamples; }
+    TechniqueKind kind() const override { return kind_; }
+    int opaqueSamples() const override { return samples_; }
 
     void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (!visible.empty()) {
-            if (opaque.desc().samples != kSamples)
-                throw engine::Error("a2c: the opaque targets have " + std::to_string(opaque.desc().samples) +
-                                    " sample(s); draw the opaque pass with opaqueSamples() = 4");
+            if (opaque.desc().samples != samples_)
+                throw engine::Error(
+                    std::string(techniqueName(kind_)) + ": the opaque targets have " +
+                    std::to_string(opaque.desc().samples) +
+                    " sample(s); draw the opaque pass with opaqueSamples() = " + std::to_string(samples_));
             PassDesc pass = opaque.loadPassDesc();
             pass.name = "foliage alpha-to-coverage";
             PassScope passScope(backend_, pass);
@@ -52,13 +55,20 @@ public:
 
 private:
     Backend& backend_;
+    TechniqueKind kind_;
+    int samples_;
     Owned<PipelineHandle> pipeline_;
 };
 
 }  // namespace
 
+std::unique_ptr<Technique> makeAlphaToCoverageWith(Backend& backend, const TechniqueOptions& options,
+                                                   TechniqueKind kind, int samples) {
+    return std::make_unique<AlphaToCoverageTechnique>(backend, options, kind, samples);
+}
+
 std::unique_ptr<Technique> makeAlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options) {
-    return std::make_unique<AlphaToCoverageTechnique>(backend, options);
+    return makeAlphaToCoverageWith(backend, options, TechniqueKind::AlphaToCoverage, 4);
 }
 
 }  // namespace transparency::detail

@@ -6,13 +6,16 @@
 #     not, the error columns are empty and the note says so;
 #   - bench.md and bench.svg exist, the SVG opens with <svg ...> and closes with </svg>;
 #   - the two runs (the second on one thread) give identical error columns: the soft backend
-#     is deterministic for any thread count.
+#     is deterministic for any thread count;
+#   - the tree and forest rows have the temporal measures (bench_temporal.hpp), finite.
 cmake_minimum_required(VERSION 3.20)  # IN_LIST and the other modern if() forms in -P scripts
 set(required scene technique backend width height time_ms_median time_ms_min time_ms_max rmse_linear
     psnr_srgb ssim flip_mean flicker peak_mem_mb)
-set(deterministic rmse_linear psnr_linear rmse_srgb psnr_srgb ssim flip_mean flicker flicker_raw peak_mem_mb)
+set(deterministic rmse_linear psnr_linear rmse_srgb psnr_srgb ssim flip_mean flicker flicker_raw peak_mem_mb
+    temporal_flip temporal_flip_worst temporal_rmse temporal_rmse_worst)
 set(scenes tree forest vista empty)
-set(techniques opaque-only ssam ssam-plus alpha-test a2c blend-unsorted blend-sorted wboit reference)
+set(techniques opaque-only ssam ssam-plus alpha-test a2c blend-unsorted blend-sorted wboit reference hashed a2c8
+    hashed+taa alpha-test+taa)
 
 function(fail what)
   message(FATAL_ERROR "ssam-bench quick run: ${what}")
@@ -108,8 +111,11 @@ foreach(i RANGE 1 ${last})
       set(finite TRUE)
     endif()
     set(needed TRUE)
-    if(c MATCHES "^flicker" AND NOT scene MATCHES "^(tree|forest)$")
+    if(c MATCHES "^(flicker|temporal)" AND NOT scene MATCHES "^(tree|forest)$")
       set(needed FALSE)  # only the tree and forest scenes have a pan
+    endif()
+    if(c MATCHES "^temporal" AND technique STREQUAL "opaque-only")
+      set(needed FALSE)  # the judge of which pixels are foliage, not judged itself
     endif()
     if(note MATCHES "no reference" AND NOT c MATCHES "^(flicker_raw|peak_mem_mb)$")
       if(NOT v1 STREQUAL "")

@@ -70,7 +70,8 @@ TEST_P(TechniqueExceptionSafety, LeaksNothingAndLeavesTheBackendUsableWhenACreat
 
 std::string nameOf(const ::testing::TestParamInfo<TechniqueKind>& info) {
     std::string name = techniqueName(info.param);
-    std::replace(name.begin(), name.end(), '-', '_');
+    std::replace(name.begin(), name.end(), '-', '_');  // a2c, alpha-test
+    std::replace(name.begin(), name.end(), '+', '_');  // hashed+taa: "hashed_taa"
     return name;
 }
 

@@ -199,6 +199,23 @@ TEST(Techniques, AlphaToCoverageRefusesSingleSampledTargets) {
     EXPECT_THROW(f.run(*technique), engine::Error);
 }
 
+// a2c8: round(alpha * 8) of 8 samples, the first ones in sample order, so that nearer layers
+// of lower alpha leave the later samples to those behind: A (0.4) covers 3, B (0.6) 5.
+TEST(Techniques, AlphaToCoverage8CoversRoundAlphaTimesEightSamples) {
+    auto backend = softBackend();
+    auto technique = createTechnique(TechniqueKind::AlphaToCoverage8, *backend, {});
+    ASSERT_EQ(technique->opaqueSamples(), 8);
+    TechniqueFrame f(*backend, technique->opaqueSamples(),
+                     {kQuadA, kQuadB, {-1.0f, -1.0f, 1.0f, -0.5f, 0.1f, {0, 0, 1, 0.9f}}});
+    const Readback r = f.run(*technique);
+    const glm::vec3 opaque(kOpaqueColor), red(1, 0, 0), green(0, 1, 0), blue(0, 0, 1);
+    expectRgbNear(rgbAt(r, kOnlyA, kRow), (3.0f * red + 5.0f * opaque) / 8.0f, 1e-6f, "only A");
+    expectRgbNear(rgbAt(r, kOverlap, kRow), (3.0f * red + 2.0f * green + 3.0f * opaque) / 8.0f, 1e-6f, "overlap");
+    expectRgbNear(rgbAt(r, kOnlyB, kRow), (5.0f * green + 3.0f * opaque) / 8.0f, 1e-6f, "only B");
+    // The blue strip (alpha 0.9, nearest) covers round(7.2) = 7 samples.
+    expectRgbNear(rgbAt(r, kOnlyB, 14), (7.0f * blue + opaque) / 8.0f, 1e-6f, "blue strip");
+}
+
 // McGuire & Bavoil 2013: with an identity projection every fragment has view depth 1, so
 // eq. (7)'s depth factor g is the same for all and cancels in the average:
 //   average = sum(C a^2) / sum(a^2),  revealage = prod(1 - a),

@@ -11,6 +11,7 @@
 #include "ssam/config.hpp"
 #include "transparency/programs.hpp"
 #include "transparency/technique.hpp"
+#include "transparency/temporal.hpp"
 
 namespace transparency {
 
@@ -23,6 +24,12 @@ struct SsamPlusOptions {
     float colorAlphaReference = 64.0f / 255.0f;                      // the colour pass's ([Hathaway 2010] §3.5.3)
 };
 
+// Hashed alpha testing (transparency/hashed_alpha.hpp).
+struct HashedOptions {
+    float hashScale = 1.0f;    // the hash cell in pixels, (0, 1e6): [Wyman & McGuire 2017]'s g_HashScale
+    bool anisotropic = false;  // a scale per uv axis (the paper's anisotropic variant)
+};
+
 struct TechniqueOptions {
     ssam::Config ssam;  // SSAM's knobs; ssam.depthFunc is the scene's depth function for all
     // alpha-test's reference: unset, each material's own (FoliageDraw::alphaCutoff, glTF's
@@ -33,6 +40,8 @@ struct TechniqueOptions {
     // 0.1 to 500: view depth * wboitDepthScale is what it sees.
     float wboitDepthScale = 1.0f;
     SsamPlusOptions ssamPlus;
+    HashedOptions hashed;
+    TemporalOptions temporal;  // the +taa techniques' temporal pass
 };
 
 // Throws engine::Error when the backend cannot run the technique (the message says why).

@@ -49,6 +49,10 @@ struct FoliageFrame {
     glm::vec3 eye{0.0f};
     engine::render::DirectionalLight light;
     std::span<const FoliageDraw> draws;
+    // The frame's number in its sequence: hashed+taa varies its threshold with it, and the
+    // temporal pass keeps its history only from one index to the next.
+    std::uint64_t frameIndex = 0;
+    bool cut = false;  // the camera jumped: temporal techniques drop their history
 };
 
 // What the exact reference found in its last frame (Technique::referenceReport).
@@ -86,6 +90,13 @@ public:
     virtual TechniqueKind kind() const = 0;
     // Samples the caller must draw the opaque pass with (alpha-to-coverage needs 4).
     virtual int opaqueSamples() const { return 1; }
+    // The sub-pixel offset, in pixels, the caller moves frame `frameIndex`'s projection by,
+    // for the opaque pass and FoliageFrame::viewProj alike (transparency/temporal.hpp
+    // jitteredViewProj); zero but for temporal techniques.
+    virtual glm::vec2 projectionJitter(std::uint64_t /*frameIndex*/) const { return glm::vec2(0.0f); }
+    // Whether the technique's frame depends on the frames before it (the temporal pass): such
+    // a technique is measured only after frames of history.
+    virtual bool needsHistory() const { return false; }
     // Called after the opaque pass was drawn into `opaque` and BEFORE opaque.resolve():
     // draws the foliage, resolves, and leaves the final colour in opaque.color() and, in
     // opaque.depth(), the depth later passes test against (the foliage depth where the

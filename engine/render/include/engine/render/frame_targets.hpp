@@ -17,7 +17,7 @@ class FrameGraph;
 struct FrameTargetsDesc {
     int width = 0;
     int height = 0;
-    int samples = 1;  // 1, 2 or 4 (Pure used 2)
+    int samples = 1;  // 1, 2, 4 or 8 (Pure used 2; 8 where the backend has it: a2c8)
     Format colorFormat = Format::RGBA8_SRGB;
     CompareFunc depthFunc = CompareFunc::Less;
 };

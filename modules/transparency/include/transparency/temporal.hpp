@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The temporal pass (TAA) that `hashed+taa` and `alpha-test+taa` run after their
+// technique: each frame is drawn with its projection moved by a sub-pixel jitter (Halton 2, 3),
+// and a full-screen pass blends it with the history, the previous output, fetched where the
+// pixel's surface was in the previous frame: reprojected through the pixel's depth and the
+// previous camera, both without jitter, then clamped to the current frame's 3x3 neighbourhood
+// so that what was disoccluded or changed does not leave a trail ([Karis 2014] "High Quality
+// Temporal Supersampling", SIGGRAPH Advances in Real-Time Rendering; Yang et al. 2020, "A Survey
+// of Temporal Antialiasing Techniques", EG STAR).
+//
+// What it cannot see: motion within the scene. The reprojection knows the camera, not the
+// wind, so wind-bent foliage fetches history from where the leaf was not and the clamp only
+// bounds that trail (ghosting): modules/README.md measures it on racer's pan.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "engine/render/program_desc.hpp"
+#include "engine/render/texture.hpp"
+
+namespace transparency {
+
+struct TemporalOptions {
+    // The weight of the current frame: history + (current - history) * blend, an exponential
+    // average over about 1 / blend frames ([Karis 2014]'s exponential history; higher follows
+    // motion sooner, lower averages more noise away). In (0, 1].
+    float blend = 0.1f;
+    int jitterPhases = 8;  // the Halton (2, 3) sequence repeats after this many frames; >= 1
+};
+
+// The sub-pixel offset, in pixels within (-0.5, 0.5), of frame `frameIndex`: the Halton (2, 3)
+// point of index 1 + frameIndex % phases, minus one half, rounded to 1/256 pixel.
+glm::vec2 haltonJitter(std::uint64_t frameIndex, int phases);
+
+// viewProj moved on screen by `jitterPixels` in a width x height target: clip x gains
+// 2 jx / width * w, so every point moves by jx pixels right and jy pixels down (the engine's
+// rows grow downwards: NDC y = 1 at row 0). A zero jitter returns viewProj itself.
+glm::mat4 jitteredViewProj(const glm::mat4& viewProj, glm::vec2 jitterPixels, int width, int height);
+
+// The matrix that takes (pixel x + 0.5, pixel y + 0.5, depth, 1) of the current frame to
+// (previous pixel position * w, ..., w): the previous frame's pixel coordinates (centres at
+// + 0.5) after division by the last component. Computed in double from the unjittered
+// view-projections; nullopt-like false when `current` cannot be inverted.
+bool reprojectionMatrix(const glm::mat4& current, const glm::mat4& previous, int width, int height, glm::mat4& out);
+
+// TemporalResolve, one texel per pixel, into the frame and the next history (the same value):
+//   p    = reprojection * (x + 0.5, y + 0.5, depth(x, y), 1); prev = p.xy / p.w
+//   hist = history bilinear at prev (clamped to the edge), or none when prev is off screen,
+//          not finite, or hasHistory is false
+//   lo, hi = min, max of current over the 3x3 neighbourhood (clamped to the edge)
+//   out  = hist ? h + (current - h) * blend with h = clamp(hist, lo, hi) : current
+//          (exactly current where the clamped history equals it: a still pixel does not drift)
+// Non-finite current components come out as 0.
+struct TemporalResolveParams {
+    glm::mat4 reprojection{1.0f};
+    engine::render::TextureHandle current;  // the frame as the technique left it
+    engine::render::TextureHandle depth;    // its depth (resolved, D32F)
+    engine::render::TextureHandle history;  // the previous output
+    float blend = 0.1f;
+    bool hasHistory = false;
+    bool copyOnly = false;  // out = current at the pixel: the copy the resolve reads from
+};
+
+engine::render::ProgramDesc temporalResolveProgram();
+
+}  // namespace transparency

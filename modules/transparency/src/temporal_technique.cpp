@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+// The temporal pass after a technique (transparency/temporal.hpp). Each frame: the technique
+// draws as usual (the caller has moved its projection by projectionJitter()); its frame is
+// copied into an RGBA16F `current`, and TemporalResolve writes the blend of current and the
+// reprojected, clamped history both into the frame and into the next history target.
+//
+// The history is dropped (the frame passes through unchanged) on a cut: FoliageFrame::cut,
+// a frame index that does not follow the last one, a new size, or a camera whose matrix does
+// not invert.
+#include <string>
+#include <utility>
+
+#include "engine/core/error.hpp"
+#include "engine/render/owned.hpp"
+#include "engine/render/pass_scope.hpp"
+#include "technique_table.hpp"
+#include "temporal_technique.hpp"
+#include "transparency/temporal.hpp"
+
+namespace transparency::detail {
+
+namespace {
+
+using namespace engine::render;
+
+class TemporalTechnique final : public Technique {
+public:
+    TemporalTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind,
+                      std::unique_ptr<Technique> inner)
+        : backend_(backend), options_(options.temporal), kind_(kind), inner_(std::move(inner)),
+          program_(backend, backend.createProgram(temporalResolveProgram())) {
+        if (!(options_.blend > 0.0f && options_.blend <= 1.0f))
+            throw engine::Error(std::string(techniqueName(kind)) + ": temporal blend " +
+                                std::to_string(options_.blend) + " must be in (0, 1]");
+        if (options_.jitterPhases < 1)
+            throw engine::Error(std::string(techniqueName(kind)) + ": jitterPhases " +
+                                std::to_string(options_.jitterPhases) + " must be >= 1");
+        PipelineDesc p;
+        p.name = "temporal resolve";
+        p.program = program_.get();
+        pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
+    }
+
+    TechniqueKind kind() const override { return kind_; }
+    int opaqueSamples() const override { return inner_->opaqueSamples(); }
+    glm::vec2 projectionJitter(std::uint64_t frameIndex) const override {
+        return haltonJitter(frameIndex, options_.jitterPhases);
+    }
+    bool needsHistory() const override { return true; }
+
+    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+        inner_->render(opaque, frame);
+        const int width = opaque.desc().width, height = opaque.desc().height;
+        const bool sameSize = ensureTargets(width, height, opaque.desc().colorFormat);
+        const glm::mat4 unjittered =
+            jitteredViewProj(frame.viewProj, -projectionJitter(frame.frameIndex), width, height);
+        TemporalResolveParams params;
+        params.blend = options_.blend;
+        params.hasHistory = hasHistory_ && sameSize && !frame.cut && frame.frameIndex == lastFrame_ + 1 &&
+                            reprojectionMatrix(unjittered, previous_, width, height, params.reprojection);
+        hasHistory_ = false;  // until this frame's history is written
+
+        PassDesc copy;
+        copy.name = "temporal copy";
+        copy.color[0] = {current_, LoadOp::Clear};
+        PassScope copyScope(backend_, copy);
+        TemporalResolveParams copyParams;
+        copyParams.current = opaque.color();
+        copyParams.copyOnly = true;
+        backend_.draw(fullscreen(copyParams));
+        copyScope.end();
+
+        PassDesc resolve;
+        resolve.name = "temporal resolve";
+        resolve.color[0] = {opaque.color(), LoadOp::Load};
+        resolve.color[1] = {history_[1], LoadOp::Clear};
+        PassScope resolveScope(backend_, resolve);
+        params.current = current_;
+        params.depth = opaque.depth();
+        params.history = history_[0];
+        backend_.draw(fullscreen(params));
+        resolveScope.end();
+
+        std::swap(history_[0], history_[1]);
+        previous_ = unjittered;
+        lastFrame_ = frame.frameIndex;
+        hasHistory_ = true;
+    }
+
+    std::vector<NamedTarget> intermediates() const override {
+        std::vector<NamedTarget> targets = inner_->intermediates();
+        if (history_[0].get()) targets.push_back({"taa_history", history_[0].get()});
+        return targets;
+    }
+
+private:
+    DrawDesc fullscreen(const TemporalResolveParams& params) const {
+        DrawDesc d;
+        d.pipeline = pipeline_;
+        d.params = params;
+        return d;
+    }
+
+    // Whether the targets were already of this size (else they are made anew, history lost).
+    // `current` has the frame's format, so that a frame without history passes unchanged;
+    // the history is RGBA16F, finer than an 8-bit frame for the small steps of the average.
+    bool ensureTargets(int width, int height, Format format) {
+        if (current_.get() && width_ == width && height_ == height && format_ == format) return true;
+        hasHistory_ = false;
+        current_.reset(), history_[0].reset(), history_[1].reset();
+        width_ = height_ = 0;
+        current_ = makeTarget("taa current", width, height, format);
+        history_[0] = makeTarget("taa history a", width, height, Format::RGBA16F);
+        history_[1] = makeTarget("taa history b", width, height, Format::RGBA16F);
+        width_ = width, height_ = height, format_ = format;
+        return false;
+    }
+    Owned<TextureHandle> makeTarget(const char* name, int width, int height, Format format) {
+        return Owned<TextureHandle>(backend_, backend_.createTexture(renderTargetDesc(name, width, height, format)));
+    }
+
+    Backend& backend_;
+    TemporalOptions options_;
+    TechniqueKind kind_;
+    std::unique_ptr<Technique> inner_;
+    Owned<ProgramHandle> program_;
+    Owned<PipelineHandle> pipeline_;
+    Owned<TextureHandle> current_;
+    Owned<TextureHandle> history_[2];
+    int width_ = 0, height_ = 0;
+    Format format_ = Format::RGBA16F;
+    bool hasHistory_ = false;
+    std::uint64_t lastFrame_ = 0;
+    glm::mat4 previous_{1.0f};
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makeTemporalTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind,
+                                                 std::unique_ptr<Technique> inner) {
+    return std::make_unique<TemporalTechnique>(backend, options, kind, std::move(inner));
+}
+
+}  // namespace transparency::detail
