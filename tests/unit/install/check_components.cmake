@@ -26,7 +26,7 @@ function(probe expect pattern)
   message(STATUS "ok (${expect}): ${probe_env} ${ARGN}")
 endfunction()
 
-set(v -DSSAM_VERSION_WANTED=0.2)
+set(v -DSSAM_VERSION_WANTED=0.3)
 set(all_targets "ssam::ssam;ssam::render;ssam::core;ssam::render_soft;ssam::render_gl;ssam::gl")
 probe(ok "ssam targets: ${all_targets}\n" ${v} "-DSSAM_COMPONENTS=soft render_gl gl")
 probe(ok "ssam targets: ${all_targets}\n" ${v})  # no COMPONENTS: every one that can load
@@ -44,8 +44,8 @@ set(hidden -DCMAKE_DISABLE_FIND_PACKAGE_glm=ON -DCMAKE_DISABLE_FIND_PACKAGE_Thre
 set(probe_env PKG_CONFIG_LIBDIR= PKG_CONFIG_PATH=)
 probe(ok "ssam targets: ssam::gl\n" ${v} -DSSAM_COMPONENTS=gl ${hidden})
 probe(fail "component 'render_gl': it needs glm" ${v} "-DSSAM_COMPONENTS=render_gl gl" ${hidden})
-probe(fail "ssam 0\\.2\\.0: it needs glm" ${v} ${hidden})  # no COMPONENTS: the core is required
+probe(fail "ssam 0\\.3\\.0: it needs glm" ${v} ${hidden})  # no COMPONENTS: the core is required
 set(probe_env "")
 # 0.x: another minor version is another API.
-probe(fail "version: 0\\.2\\.0" -DSSAM_VERSION_WANTED=0.3)
-probe(fail "version: 0\\.2\\.0" -DSSAM_VERSION_WANTED=0.1)
+probe(fail "version: 0\\.3\\.0" -DSSAM_VERSION_WANTED=0.4)
+probe(fail "version: 0\\.3\\.0" -DSSAM_VERSION_WANTED=0.2)
