@@ -160,7 +160,9 @@ VkSampler VulkanBackendImpl::sampler(const SamplerState& s) {
     VkSamplerCreateInfo ci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     ci.magFilter = s.filter == Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
     ci.minFilter = ci.magFilter;
-    ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    // Linear between levels only for trilinear (which reads levels itself with textureLod):
+    // formats without linear filtering (R32F, D32F) are read with the nearest samplers.
+    ci.mipmapMode = s.filter == Filter::Trilinear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
     ci.addressModeU = vkAddress(s.addressU);
     ci.addressModeV = vkAddress(s.addressV);
     ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -231,10 +233,11 @@ VkPipeline VulkanBackendImpl::pipeline(const VulkanProgram& program, const Pipel
     raster.cullMode = cull == std::uint8_t(CullMode::Back)    ? VK_CULL_MODE_BACK_BIT
                       : cull == std::uint8_t(CullMode::Front) ? VK_CULL_MODE_FRONT_BIT
                                                               : VK_CULL_MODE_NONE;
-    // The negative-height viewport flips framebuffer-space winding: counter-clockwise as
-    // displayed (and in NDC, as GL decides with ARB_clip_control) is clockwise to Vulkan.
+    // Facing as displayed: Vulkan decides it in framebuffer space, where the negative-height
+    // viewport has put row 0 at the top, so counter-clockwise as displayed is Vulkan's
+    // counter-clockwise (RasterConformance.CullingAndFrontFace).
     raster.frontFace =
-        desc.raster.frontFace == Winding::CounterClockwise ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
+        desc.raster.frontFace == Winding::CounterClockwise ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
     raster.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VkSampleCountFlagBits(pass.samples);
