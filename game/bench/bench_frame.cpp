@@ -84,6 +84,7 @@ void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Tech
                                        : targets.addResolvePass(graph, drawn, resolved);
     addSideEffectPass(graph, "present", frame);
     graph.execute();
+    backend_.endFrame();  // the frame boundary (Backend::endFrame): Vulkan submits here
 }
 
 void FrameDrawer::drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view) {

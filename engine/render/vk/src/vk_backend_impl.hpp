@@ -150,6 +150,7 @@ private:
     DrawTargets targets_;
     std::vector<TextureHandle> colorHandles_;
     std::vector<RecordedDraw> draws_;
+    bool drawsRun_ = true;  // false: drawOnlyIfSamplesIn found no sample
 
     // Occlusion queries (one pool, a slot per query handle) and pass timestamps.
     VkQueryPool occlusion_ = VK_NULL_HANDLE, timestamps_ = VK_NULL_HANDLE;

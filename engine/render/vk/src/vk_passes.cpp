@@ -72,12 +72,17 @@ void VulkanBackendImpl::beginPass(const PassDesc& pass) {
     targets_.height = extent.height;
     extent_ = extent;
     draws_.clear();
+    // Whether the draws run, read now (a result wait) rather than at endPass: the submission it
+    // needs moves the frame ring on, and the draws' uniform blocks and descriptor sets must come
+    // from the slot that records them.
+    drawsRun_ = pass.drawOnlyIfSamplesIn ? anySamplesPassed(pass.drawOnlyIfSamplesIn) : true;
     pass_ = pass;
 }
 
 void VulkanBackendImpl::draw(const DrawDesc& d) {
     if (!pass_) throw Error("draw outside a pass");
     validateDraw(d, *pass_, extent_, lookup_);
+    if (!drawsRun_) return;  // checked, not recorded: the pass's condition found no sample
     const VulkanPipeline& pipeline = pipelines_.get(d.pipeline);
     RecordedDraw r;
     r.pipeline = &pipeline;
@@ -189,10 +194,7 @@ void VulkanBackendImpl::abortPass() noexcept {
 
 void VulkanBackendImpl::recordPass() {
     const PassDesc& pass = *pass_;
-    // Whether the draws run: a pass drawing only if another counted samples reads that result
-    // (a result wait) before it records them.
-    bool drawsRun = true;
-    if (pass.drawOnlyIfSamplesIn) drawsRun = anySamplesPassed(pass.drawOnlyIfSamplesIn);
+    const bool drawsRun = drawsRun_;
     const VkCommandBuffer cmd = frames_->cmd();
 
     // Barriers first: sampled images to shader reads, attachments to their layouts.
@@ -362,6 +364,11 @@ bool VulkanBackendImpl::anySamplesPassed(QueryHandle h) {
     const VulkanQuery& q = queries_.get(h);
     checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, false);
     if (!q.counted) throw uncountedQueryError(q.name);
+    // The result needs a submission, and an open pass's recorded draws hold the recording
+    // slot's uniform blocks and sets: results are read between passes on Vulkan.
+    if (pass_)
+        throw Error("occlusion query " + quotedName(q.name) + " read while pass " + quotedName(pass_->name) +
+                    " is open: the Vulkan backend reads results between passes");
     frames_->submit(true);  // the result of what is recorded: a result wait (when there is any)
     std::uint64_t samples = 0;
     check(vkGetQueryPoolResults(context_->device, occlusion_, q.slot, 1, sizeof samples, &samples, sizeof samples,
@@ -373,6 +380,9 @@ bool VulkanBackendImpl::anySamplesPassed(QueryHandle h) {
 std::vector<PassTiming> VulkanBackendImpl::takeTimings() {
     std::vector<PassTiming> out;
     if (pendingTimings_.empty()) return out;
+    if (pass_)
+        throw Error("takeTimings while pass " + quotedName(pass_->name) +
+                    " is open: the Vulkan backend reads results between passes");
     frames_->submit(true);
     const double period = double(context_->properties.limits.timestampPeriod);  // ns per tick
     for (const PendingTiming& p : pendingTimings_) {

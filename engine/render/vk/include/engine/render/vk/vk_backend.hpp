@@ -6,8 +6,8 @@
 // Conventions (so images match the soft backend without flips): a negative-height viewport
 // (Vulkan 1.1 core) maps NDC +y to framebuffer row 0, the first stored row and the top of a
 // Readback, as the GL backend's glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE) does; depth is
-// z/w in [0, 1] natively. Facing follows NDC winding as on GL, so the front face given to
-// Vulkan (which decides in framebuffer space, flipped by the viewport) is the opposite one.
+// z/w in [0, 1] natively. Vulkan decides facing in framebuffer space, where row 0 is then at the
+// top: counter-clockwise as displayed is Vulkan's counter-clockwise, as on GL.
 //
 // Explicit done right: draws are recorded until endPass, so the barriers for what they sample
 // precede the render pass; every image's layout and last access are tracked here, not by a
@@ -66,9 +66,8 @@ public:
     virtual const VulkanCounters& counters() const = 0;
     // Validation warnings and errors reported since the backend was made.
     virtual std::uint64_t validationMessages() const = 0;
-    // Submits what is recorded and moves to the next frame slot (the frame boundary the fence
-    // ring turns on); waits only when that slot's previous submission is still running.
-    virtual void endFrame() = 0;
+    // endFrame() (Backend) submits what is recorded and moves to the next frame slot; the next
+    // use of a slot waits only when its previous submission is still running.
 };
 
 // Throws engine::Error when there is no Vulkan loader, no Vulkan 1.3 device, no device `device`
