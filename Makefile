@@ -12,13 +12,15 @@ BUILD_DIR := build
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Debian 12 packages: compilers and tools, then the libraries found by find_package,
-# then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests,
+# then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests, Vulkan
+# (loader, lavapipe, the validation layers, shaderc) for the Vulkan backend and its tests,
 # then Node.js for the Khronos glTF Validator the content test runs.
 PACKAGES := build-essential cmake pkg-config ccache \
             libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libpng-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
             libepoxy-dev libstb-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
+            libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc libshaderc-dev spirv-tools \
             clang-format-14 \
             $(NODE_PACKAGES)
 # Debian's nodejs + npm, unless an npm is already on the PATH (e.g. a NodeSource nodejs,

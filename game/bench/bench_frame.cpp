@@ -93,6 +93,7 @@ void FrameDrawer::draw(engine::render::FrameTargets& targets, transparency::Tech
     addSideEffectPass(graph, "present", frame);
     graph.execute(transients_.allocator());
     transients_.endFrame();
+    backend_.endFrame();  // the frame boundary (Backend::endFrame): Vulkan submits here
 }
 
 void FrameDrawer::drawOpaque(engine::render::FrameTargets& targets, const ViewUpload& view, const glm::mat4& viewProj) {

@@ -19,6 +19,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/vk/vk_backend.hpp"
 #include "frame_timing.hpp"
 #include "rss_peak.hpp"
 
@@ -243,6 +244,19 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
             std::printf("[ssam-bench] %s\n", glError.c_str());
         }
     }
+    std::unique_ptr<vk::VulkanBackend> vkBackend;
+    std::string vkError;
+    if (std::find(o.backends.begin(), o.backends.end(), "vk") != o.backends.end()) {
+        // lavapipe reads its thread count when the device is created: the same as soft's.
+        setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+        try {
+            vkBackend = vk::createVulkanBackend({});
+            std::printf("[ssam-bench] vk: %s (LP_NUM_THREADS=%d)\n", vkBackend->info().device.c_str(), threads);
+        } catch (const std::exception& e) {
+            vkError = std::string("vk backend unavailable: ") + e.what();
+            std::printf("[ssam-bench] %s\n", vkError.c_str());
+        }
+    }
     std::printf("[ssam-bench] %dx%d, %d rep(s) after %d warm-up, %d pan frames, soft backend %d thread(s)\n", o.width,
                 o.height, o.reps, o.warmup, o.panFrames, threads);
 
@@ -260,15 +274,17 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
         std::vector<TemporalBackend> temporal{{"soft", soft.get(), &softScene}};
         std::vector<std::unique_ptr<BenchScene>> glScenes;  // kept for the temporal pan
         for (const std::string& backendName : o.backends) {
-            if (backendName == "gl" && !glBackend) {
+            if ((backendName == "gl" && !glBackend) || (backendName == "vk" && !vkBackend)) {
                 for (const BenchSubject& s : o.subjects) {
                     BenchRow row = skippedRow(sceneName(kind), s.name, backendName, o);
-                    row.note = glError;
+                    row.note = backendName == "gl" ? glError : vkError;
                     rows.push_back(row);
                 }
                 continue;
             }
-            Backend& backend = backendName == "gl" ? static_cast<Backend&>(*glBackend) : *soft;
+            Backend& backend = backendName == "gl"   ? static_cast<Backend&>(*glBackend)
+                               : backendName == "vk" ? static_cast<Backend&>(*vkBackend)
+                                                     : *soft;
             std::unique_ptr<BenchScene> ownScene;
             SceneViews ownViews;
             if (&backend != soft.get()) {

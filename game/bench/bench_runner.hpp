@@ -31,7 +31,7 @@ std::vector<BenchSubject> techniqueSubjects(const std::vector<transparency::Tech
 struct BenchOptions {
     std::vector<SceneKind> scenes;
     std::vector<BenchSubject> subjects;
-    std::vector<std::string> backends;  // "soft", "gl"
+    std::vector<std::string> backends;  // "soft", "gl", "vk"
     int width = 1280, height = 720;
     int reps = 5, warmup = 1;
     int panFrames = 8;        // frames of the flicker pan (at least 2)

@@ -15,6 +15,7 @@
 #include "bench_runner.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/vk/vk_backend.hpp"
 #include "report_text.hpp"
 
 namespace bench {
@@ -101,6 +102,13 @@ std::vector<ScalingRow> runScaling(const ScalingOptions& o) {
                 backend = gl::createGlBackend({});
             } catch (const std::exception& e) {
                 unavailable = std::string("gl backend unavailable: ") + e.what();
+            }
+        } else if (backendName == "vk") {
+            setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);  // read at device creation
+            try {
+                backend = engine::render::vk::createVulkanBackend({});
+            } catch (const std::exception& e) {
+                unavailable = std::string("vk backend unavailable: ") + e.what();
             }
         } else {
             backend = soft::createSoftBackend({.threads = threads, .tileSize = 64, .simd = o.simd});

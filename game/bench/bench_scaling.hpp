@@ -18,7 +18,7 @@ struct ScalingSize {
 };
 
 struct ScalingOptions {
-    std::vector<std::string> backends;                  // "soft", "gl"
+    std::vector<std::string> backends;                  // "soft", "gl", "vk"
     int threads = 0;                                    // soft threads and LP_NUM_THREADS; 0: all
     std::optional<engine::render::soft::SimdIsa> simd;  // the soft kernels' instruction set; unset: the widest
     int reps = 2, warmup = 1;

@@ -165,8 +165,8 @@ BenchOptions parse(const Options& o) {
         b.subjects = techniqueSubjects(techniques);
     }
     for (const std::string& name : splitList(o.backends, "--backend")) {
-        if (name != "soft" && name != "gl")
-            throw engine::UsageError("--backend: unknown backend '" + name + "' (known: soft, gl)");
+        if (name != "soft" && name != "gl" && name != "vk")
+            throw engine::UsageError("--backend: unknown backend '" + name + "' (known: soft, gl, vk)");
         b.backends.push_back(name);
     }
     std::smatch m;

@@ -264,6 +264,7 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
 
     graph->execute(transients_.allocator());
     transients_.endFrame();
+    backend_.endFrame();  // the frame boundary (Backend::endFrame): Vulkan submits here
     lastGraph_ = std::move(graph);
 }
 

@@ -18,6 +18,7 @@
 #include "engine/cli/command_line.hpp"
 #include "engine/core/usage_error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
+#include "engine/render/vk/vk_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "frame_renderer.hpp"
@@ -112,7 +113,8 @@ int run(const CLI::App& app, const Options& o) {
     auto displaySet = [](const char* name) { return std::getenv(name) && *std::getenv(name); };
     std::shared_ptr<gl::GlfwWindowContext> window;
     std::unique_ptr<gl::GlBackend> glBackend;
-    if (!o.headless && (displaySet("DISPLAY") || displaySet("WAYLAND_DISPLAY"))) {
+    // --backend vk renders headless: its window (a GLFW Vulkan surface) is not built yet.
+    if (!o.headless && o.backend != "vk" && (displaySet("DISPLAY") || displaySet("WAYLAND_DISPLAY"))) {
         gl::GlfwWindowOptions wo;
         wo.title = "racer";
         wo.width = renderer.width;
@@ -134,6 +136,15 @@ int run(const CLI::App& app, const Options& o) {
     } else if (backendName == "gl") {
         glBackend = gl::createGlBackend({});  // headless through EGL (Mesa llvmpipe without a GPU)
     }
+    std::unique_ptr<engine::render::vk::VulkanBackend> vkBackend;
+    if (backendName == "vk") {
+        engine::render::vk::VulkanOptions vo;
+        vo.device = o.device;
+        // SSAM_VK_VALIDATION=1: under the validation layer (the vk golden tests): every message is
+        // printed, and any makes the run fail at its end.
+        vo.validation = std::getenv("SSAM_VK_VALIDATION") != nullptr;
+        vkBackend = engine::render::vk::createVulkanBackend(vo);  // lavapipe without a GPU
+    }
     std::string kernels;  // the soft backend's instruction set, for the first line
     if (backendName == "soft") {
         auto soft = engine::render::soft::createSoftBackend(
@@ -141,7 +152,9 @@ int run(const CLI::App& app, const Options& o) {
         kernels = std::string(", ") + engine::render::soft::simdIsaName(*soft->options().simd);
         softBackend = std::move(soft);
     }
-    engine::render::Backend& backend = softBackend ? *softBackend : *glBackend;
+    engine::render::Backend& backend = softBackend ? *softBackend
+                                       : vkBackend ? static_cast<engine::render::Backend&>(*vkBackend)
+                                                   : *glBackend;
 
     // --scene FILE: the file's scene and camera replace the racing scene (gltf_scene.hpp).
     std::unique_ptr<RacingScene> racing;
@@ -252,6 +265,9 @@ int run(const CLI::App& app, const Options& o) {
             std::printf("racer: the last frame's transient targets peak at %llu bytes (lifetimes: %s)\n",
                         static_cast<unsigned long long>(frame.peakTransientBytes()), outputs.graph.string().c_str());
     }
+    if (vkBackend && vkBackend->validationMessages() > 0)
+        throw engine::Error("racer: " + std::to_string(vkBackend->validationMessages()) +
+                            " Vulkan validation messages (above)");
     return 0;
 }
 

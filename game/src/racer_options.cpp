@@ -25,8 +25,10 @@ std::vector<std::string> techniqueNames() {
 }  // namespace
 
 void addOptions(CLI::App& app, Options& o) {
-    app.add_option("--backend", o.backend, "render backend (auto: gl in a window, soft headless)")
-        ->check(CLI::IsMember({"auto", "soft", "gl"}))
+    app.add_option("--backend", o.backend, "render backend (auto: gl in a window, soft headless; vk: headless)")
+        ->check(CLI::IsMember({"auto", "soft", "gl", "vk"}))
+        ->capture_default_str();
+    app.add_option("--device", o.device, "--backend vk: the Vulkan device (-1: the first usable)")
         ->capture_default_str();
     app.add_option("--technique", o.technique, "how foliage is drawn")
         ->check(CLI::IsMember(techniqueNames()))
@@ -117,6 +119,10 @@ void checkCombinations(const CLI::App& app, const Options& o) {
     if (given("--threads") && o.backend == "gl")
         refuse("--threads sets the soft backend's threads; --backend gl does not use them");
     if (given("--simd") && o.backend == "gl") refuse("--simd picks the soft backend's kernels; --backend gl has none");
+    if (given("--threads") && o.backend == "vk")
+        refuse("--threads sets the soft backend's threads; --backend vk does not use them");
+    if (given("--simd") && o.backend == "vk") refuse("--simd picks the soft backend's kernels; --backend vk has none");
+    if (given("--device") && o.backend != "vk") refuse("--device picks a Vulkan device: it needs --backend vk");
     simdFromFlag(o.simd);  // refuses a set this CPU does not run
 }
 

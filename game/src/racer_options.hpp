@@ -27,6 +27,7 @@ struct Options {
     std::string camera = "chase";
     std::uint32_t seed = 1;
     int threads = 0;
+    int device = -1;            // --device: the Vulkan device (--backend vk)
     std::string simd = "auto";  // --simd: the soft backend's kernels' instruction set
     std::string capturePath;
     bool captureLayers = false;

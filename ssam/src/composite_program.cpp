@@ -20,9 +20,6 @@ std::string fragment() {
 layout(binding = 0) uniform sampler2D u_foliage;
 layout(binding = 1) uniform sampler2D u_mask;
 layout(binding = 2) uniform sampler2D u_maskAdd;
-uniform bool u_hasMaskAdd;
-uniform float u_maskLerp;
-uniform bool u_squareMask;
 )") + glsl::kComposite +
            R"(
 void main() { finish(ssamComposite(ivec2(gl_FragCoord.xy))); }

@@ -13,7 +13,6 @@ namespace {
 using namespace engine::render;
 
 constexpr const char* kFillFragment = R"(
-in vec4 v_color;
 void main() {
     finish(v_color);
 }
@@ -22,11 +21,6 @@ void main() {
 // OverlayPanelKernel::shade, integer for integer.
 constexpr const char* kPanelFragment = R"(
 layout(binding = 0) uniform sampler2D u_panelSource;
-uniform int u_sourceX;
-uniform int u_sourceY;
-uniform int u_targetX;
-uniform int u_targetY;
-uniform int u_zoom;
 int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 void main() {
     int zoom = max(u_zoom, 1);

@@ -18,15 +18,6 @@ using namespace engine::render;
 // through the same texels as the soft backend.
 constexpr const char* kFragment = R"(
 layout(binding = 0) uniform sampler2D u_shaftDepth;
-uniform vec2 u_sunPixel;
-uniform float u_farDepth;
-uniform bool u_shaftGreater;
-uniform vec3 u_shaftColor;
-uniform float u_intensity;
-uniform float u_decay;
-uniform float u_density;
-uniform int u_samples;
-uniform float u_glowRadius;
 float sunGlow(vec2 q) {
     if (!(u_glowRadius > 0.0)) return 1.0;
     float t = max(0.0, 1.0 - length(q - u_sunPixel) / u_glowRadius);

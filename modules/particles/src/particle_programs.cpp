@@ -17,7 +17,6 @@ using namespace engine::render;
 // Both programs: the closest-sample scene depth for half-resolution layers.
 constexpr const char* kParticleDepth = R"(
 layout(binding = 0) uniform sampler2D u_sceneDepth;
-uniform bool u_greaterIsCloser;
 float saturateOrZero(float v) { return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; }
 float closestDepth(ivec2 p, int stride) {
     stride = clamp(stride, 1, 4);
@@ -34,14 +33,6 @@ float closestDepth(ivec2 p, int stride) {
 
 // Particle (particle_kernels.hpp ParticleKernel).
 constexpr const char* kParticleFragment = R"(
-in vec2 v_uv;
-in vec3 v_normal;
-in vec4 v_color;
-uniform bool u_hasDepth;
-uniform int u_depthStride;
-uniform float u_distanceScale;
-uniform float u_distanceOffset;
-uniform float u_softness;
 void main() {
     if (llvmpipeGuard()) discard;
     vec2 q = v_uv * 2.0 - 1.0;
@@ -64,10 +55,6 @@ void main() {
 // LayerComposite (particle_kernels.hpp LayerCompositeKernel): the layer texel, nearest-depth upsampled.
 constexpr const char* kLayerCompositeFragment = R"(
 layout(binding = 1) uniform sampler2D u_layer;
-uniform int u_layerScale;
-uniform bool u_hasDepth;
-uniform float u_distanceScale;
-uniform float u_distanceOffset;
 float distanceOf(float z) { return u_distanceScale / (z + u_distanceOffset); }
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);

@@ -18,7 +18,6 @@ using namespace engine::render;
 // the view depth |z| = clip w = 1 / gl_FragCoord.w.
 constexpr const char* kWboitWeight = R"(
 #define SURFACE_OUTPUT wboitWeighted
-uniform float u_depthScale;
 vec4 wboitWeighted(vec4 c) {
     precise float z = abs((1.0 / gl_FragCoord.w) * u_depthScale);
     precise float near = z / 5.0, far = z / 200.0;
@@ -52,8 +51,6 @@ constexpr const char* kCoverageCompositeFragment = R"(
 layout(binding = 0) uniform sampler2D u_foliage;
 layout(binding = 1) uniform sampler2D u_mask;
 layout(binding = 2) uniform sampler2D u_maskAdd;
-uniform bool u_hasMaskAdd;
-uniform int u_coverageModel;  // CoverageModel: 0 equal layers, 1 exponential
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 m = texelFetch(u_mask, p, 0);

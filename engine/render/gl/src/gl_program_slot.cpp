@@ -54,7 +54,8 @@ std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc
     auto s = std::make_shared<ProgramSlot>();
     s->program = compileProgram(
         desc->name, withGlslVersion(vertexSource(desc->vertexInput), target.major, target.minor),
-        withGlslVersion(fragmentSource(desc->vertexInput, desc->gl.fragment), target.major, target.minor));
+        withGlslVersion(fragmentSource(desc->vertexInput, uniformBlockLayout(desc->name, desc->gl), desc->gl.fragment),
+                        target.major, target.minor));
     for (const UniformField& u : desc->gl.uniforms) s->uniforms.push_back(s->program.uniform(u.name));
     for (const TextureField& t : desc->gl.textures) {
         ProgramSlot::TextureUniforms& l = s->textures.emplace_back();

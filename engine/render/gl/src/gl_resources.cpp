@@ -13,7 +13,7 @@
 #include "gl_check.hpp"
 #include "gl_enums.hpp"
 #include "gl_shaders.hpp"
-#include "texel_codec.hpp"
+#include "engine/render/texel_codec.hpp"
 
 namespace engine::render::gl {
 

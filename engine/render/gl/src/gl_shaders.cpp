@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "gl_shaders.hpp"
 
-#include "engine/render/glsl/lit_surface.hpp"
+#include "engine/render/glsl/standard_programs.hpp"
 
 namespace engine::render::gl {
 namespace {
@@ -26,7 +26,7 @@ uniform mat4 u_viewProj;
 out vec2 v_uv;
 out vec3 v_normal;
 out vec4 v_color;
-flat out int v_instance;  // see kMeshFragmentGuard
+flat out int v_instance;  // see glsl::kMeshFragmentGuard
 
 vec4 mulColumn(mat4 a, vec4 b) {
     precise vec4 r = a[0] * b.x + a[1] * b.y + a[2] * b.z + a[3] * b.w;
@@ -56,89 +56,14 @@ void main() {
 }
 )";
 
-// Shared tail of every program kind: alpha-to-coverage with the soft backend's rule, the
-// GS alpha test as a fragment selection, and the colour broadcast to every bound target.
-constexpr const char* kFragmentCommon = R"(#version 450 core
-layout(location = 0) out vec4 o_color0;
-layout(location = 1) out vec4 o_color1;
-layout(location = 2) out vec4 o_color2;
-layout(location = 3) out vec4 o_color3;
-
-uniform int u_alphaSelect;   // 0 all fragments, 1 those passing the alpha test, 2 those failing it
-uniform int u_alphaFunc;     // CompareFunc
+// The GL declarations of the shared tail's inputs (glsl::kFinish lists them).
+constexpr const char* kTailUniforms = R"(
+uniform int u_alphaSelect;
+uniform int u_alphaFunc;
 uniform float u_alphaRef;
-uniform int u_a2cSamples;    // samples of the target as created (0: alpha-to-coverage off)
-uniform int u_a2cActual;     // samples GL really allocated (llvmpipe turns 2 into 4)
-uniform ivec4 u_scissor;     // x0, y0, x1, y1 of the draw's scissor; x1 = 0: not checked here
-
-float clamp01(float v) { return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; }
-
-bool alphaPasses(float a) {
-    switch (u_alphaFunc) {
-        case 0: return false;
-        case 1: return a < u_alphaRef;
-        case 2: return a == u_alphaRef;
-        case 3: return a <= u_alphaRef;
-        case 4: return a > u_alphaRef;
-        case 5: return a != u_alphaRef;
-        case 6: return a >= u_alphaRef;
-        default: return true;
-    }
-}
-
-void finish(vec4 color) {
-    // Multisampled targets: the scissor again, per pixel. llvmpipe (Mesa 22.x) tests the
-    // scissor rectangle at sample positions half a pixel off and lets the column left of it
-    // and the row above it through; glScissor still bounds the work.
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    if (u_scissor.z > 0 && (any(lessThan(pixel, u_scissor.xy)) || any(greaterThanEqual(pixel, u_scissor.zw)))) discard;
-    int mask = -1;
-    if (u_a2cSamples > 1) {
-        // round(alpha * samples) samples, the first ones (tile_rasterizer.cpp); a 2x target that
-        // GL made 4x covers the same fraction of its samples.
-        precise float scaled = clamp01(color.a) * float(u_a2cSamples) + 0.5;
-        int covered = int(scaled) * u_a2cActual / u_a2cSamples;
-        mask = (1 << covered) - 1;
-    }
-    gl_SampleMask[0] = mask;
-    if (u_alphaSelect != 0 && alphaPasses(color.a) != (u_alphaSelect == 1)) discard;
-    o_color0 = color;
-    o_color1 = color;
-    o_color2 = color;
-    o_color3 = color;
-}
-)";
-
-// Mesh programs read one flat input. llvmpipe (Mesa 22.x) has a fast path for non-indexed
-// draws of exactly three triangles whose last one has zero area (lp_setup_analyse_triangles,
-// meant for one Windows compositor's rectangles) that draws nothing at all unless the pattern
-// is that rectangle; it is skipped when the fragment shader has a flat ("constant") input.
-constexpr const char* kMeshFragmentGuard = R"(
-flat in int v_instance;
-bool llvmpipeGuard() { return v_instance < 0; }  // never true; keeps the input alive
-)";
-
-constexpr const char* kFlatFragment = R"(
-in vec4 v_color;
-uniform vec4 u_color;
-void main() {
-    if (llvmpipeGuard()) discard;
-    finish(u_color * v_color);
-}
-)";
-
-// [Hathaway 2010] Listing 3.1: alpha only, replicated; no lighting, no colour fetch.
-constexpr const char* kAlphaOnlyFragment = R"(
-in vec2 v_uv;
-in vec4 v_color;
-uniform float u_alphaFactor;
-uniform bool u_hasTexture;
-void main() {
-    if (llvmpipeGuard()) discard;
-    float a = u_alphaFactor * v_color.a;
-    if (u_hasTexture) a *= sampleBase(v_uv).a;
-    finish(vec4(a));
-}
+uniform int u_a2cSamples;
+uniform int u_a2cActual;
+uniform ivec4 u_scissor;
 )";
 
 // Colour resolve: the average of the samples in the linear domain (the fetch decodes sRGB,
@@ -179,23 +104,13 @@ std::string vertexSource(VertexInput input) {
     return input == VertexInput::Fullscreen ? kFullscreenVertex : kMeshVertex;
 }
 
-std::string fragmentSource(VertexInput input, const std::string& body) {
-    std::string s = kFragmentCommon;
-    if (input == VertexInput::Mesh) s += kMeshFragmentGuard;
-    return s + body;
+std::string fragmentSource(VertexInput input, const UniformBlockLayout& layout, const std::string& body) {
+    std::string s = std::string("#version 450 core\n") + glsl::kFragmentOutputs + kTailUniforms + glsl::kFinish;
+    if (input == VertexInput::Mesh) s += meshInterpolants(GlslDialect::OpenGl, false) + glsl::kMeshFragmentGuard;
+    return s + uniformDeclarations(layout, GlslDialect::OpenGl, 0, 0) + body;
 }
 
-std::string standardFragment(ProgramKind kind) {
-    switch (kind) {
-        case ProgramKind::Flat: return kFlatFragment;
-        case ProgramKind::OpaqueLit:
-            return std::string(glsl::kBaseColorSampling) + "#define ALPHA_MASKED 0\n" + glsl::kLitSurface;
-        case ProgramKind::MaskedLit:
-            return std::string(glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + glsl::kLitSurface;
-        case ProgramKind::AlphaOnly: return std::string(glsl::kBaseColorSampling) + kAlphaOnlyFragment;
-    }
-    return {};
-}
+std::string standardFragment(ProgramKind kind) { return glsl::standardFragmentBody(kind); }
 
 std::string withGlslVersion(std::string source, int major, int minor) {
     if (major > 4 || (major == 4 && minor >= 5)) return source;

@@ -6,6 +6,7 @@
 
 #include "engine/render/program.hpp"
 #include "engine/render/program_desc.hpp"
+#include "engine/render/shader_interface.hpp"
 
 namespace engine::render::gl {
 
@@ -13,9 +14,9 @@ namespace engine::render::gl {
 enum AlphaSelect : int { kSelectAll = 0, kSelectPassing = 1, kSelectFailing = 2 };
 
 // The vertex stage for a program's input, and its fragment stage: the shared head (outputs,
-// finish()) before the program's body.
+// finish(), the interpolants) and the layout's uniforms (shader_interface.hpp) before the body.
 std::string vertexSource(VertexInput input);
-std::string fragmentSource(VertexInput input, const std::string& body);
+std::string fragmentSource(VertexInput input, const UniformBlockLayout& layout, const std::string& body);
 // The fragment body of a standard program (standard_programs.hpp).
 std::string standardFragment(ProgramKind kind);
 

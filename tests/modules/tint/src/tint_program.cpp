@@ -13,7 +13,6 @@ namespace {
 using namespace engine::render;
 
 constexpr const char* kFragment = R"(
-uniform vec3 u_tint;
 void main() {
     finish(vec4(u_tint, 1.0));
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The render backend interface, chosen at run time (--backend soft|gl). In the spirit of
+// The render backend interface, chosen at run time (--backend soft|gl|vk). In the spirit of
 // bgfx's RendererContextI and Filament's driver API: typed generation-checked handles,
 // plain descriptor structs whose defaults are the sensible choice, state as data.
 // Every misuse (stale handle, wrong format, bad size) throws engine::Error naming it.
@@ -96,6 +96,11 @@ public:
 
     // Per-pass timings since the last call, in execution order.
     virtual std::vector<PassTiming> takeTimings() = 0;
+
+    // The end of a frame, called by the game loop and the benchmark after the frame graph ran: a
+    // backend with per-frame resources in flight (Vulkan's ring of fenced frame slots) submits
+    // the frame here; soft and GL have nothing to do. Never inside a pass.
+    virtual void endFrame() {}
 
     // Capabilities only some backends have: null where this one has none (asked for through
     // the interface, so no caller downcasts a Backend).

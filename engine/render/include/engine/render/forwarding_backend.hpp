@@ -40,6 +40,7 @@ public:
     void resolve(const ResolveDesc& resolve) override { inner_.resolve(resolve); }
     Readback readback(TextureHandle texture) override { return inner_.readback(texture); }
     std::vector<PassTiming> takeTimings() override { return inner_.takeTimings(); }
+    void endFrame() override { inner_.endFrame(); }
     FragmentCapture* fragmentCapture() override { return inner_.fragmentCapture(); }
 
 protected:

@@ -73,9 +73,10 @@ struct TextureField {
 
 struct GlslProgram {
     // The fragment stage's body, ending in finish(color). The driver puts before it the version
-    // line, the outputs and finish(vec4) (alpha test, alpha-to-coverage, every target written);
-    // a Mesh program's body declares the interpolants it reads (in vec2 v_uv; in vec3 v_normal;
-    // in vec4 v_color: what the driver's vertex stage writes).
+    // line, the outputs and finish(vec4) (alpha test, alpha-to-coverage, every target written),
+    // a Mesh program's interpolants (v_uv, v_normal, v_color: what its vertex stage writes) and
+    // the uniforms of `uniforms` and `textures`: the body declares none of them, only its
+    // samplers (shader_interface.hpp states the rule, the same for GL and Vulkan).
     std::string fragment;
     std::vector<UniformField> uniforms;
     std::vector<TextureField> textures;

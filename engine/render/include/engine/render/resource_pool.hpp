@@ -38,6 +38,13 @@ public:
                slots_[h.index].generation == h.generation;
     }
 
+    // Calls f on every live value (a backend's tear-down releases what they own).
+    template <typename F>
+    void forEach(F&& f) const {
+        for (const Slot& slot : slots_)
+            if (slot.alive) f(slot.value);
+    }
+
     void remove(Handle<Tag> h) {
         Slot& slot = slots_[check(h)];
         slot.value = T{};

@@ -13,7 +13,6 @@ inline constexpr const char* kBaseColorSampling = R"(
 // implementation (llvmpipe quantizes the fraction); here the derivatives are analytic:
 // uv/w and 1/w (gl_FragCoord.w) are linear in screen space, so their differences are exact and
 // d(uv)/dx = (d(uv/w)/dx - uv * d(1/w)/dx) * w (soft: tile_rasterizer.cpp interpolate()).
-uniform int u_filter;  // 0 nearest, 1 bilinear, 2 trilinear
 layout(binding = 0) uniform sampler2D u_baseColor;
 vec4 sampleBase(vec2 uv) {
     float inverseW = gl_FragCoord.w;
@@ -41,15 +40,8 @@ vec4 sampleBase(vec2 uv) {
 // `1` (double-sided, alpha kept); a program that post-processes the masked colour defines
 // SURFACE_OUTPUT(c) as a function of it (transparency's WBOIT accumulation does).
 inline constexpr const char* kLitSurface = R"(
-in vec2 v_uv;
-in vec3 v_normal;
-in vec4 v_color;
-uniform vec4 u_color;
-uniform bool u_hasTexture;
-uniform bool u_premultiplied;
-uniform vec3 u_towardLight;  // normalised on the CPU, as glm::normalize does in the soft backend
-uniform vec3 u_lightColor;
-uniform vec3 u_ambient;
+// u_towardLight is normalised on the CPU, as glm::normalize does in the soft backend
+// (UniformType::Direction).
 
 vec4 toStraight(vec4 t) {
     if (!u_premultiplied || !(t.a > 0.0)) return t;

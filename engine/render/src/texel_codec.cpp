@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "texel_codec.hpp"
+#include "engine/render/texel_codec.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "engine/render/pixel_codec.hpp"
 
-namespace engine::render::gl {
+namespace engine::render {
 namespace {
 
 bool isHalf(Format f) { return f == Format::RGBA16F || f == Format::RG16F || f == Format::R16F; }
@@ -52,4 +52,4 @@ std::vector<std::byte> generateMip(Format format, std::span<const std::byte> abo
     return out;
 }
 
-}  // namespace engine::render::gl
+}  // namespace engine::render

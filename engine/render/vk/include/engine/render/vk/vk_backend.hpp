@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The Vulkan 1.3 backend: the same Backend semantics as the soft backend (the reference) and
+// the GL backend, on an explicit API. Headless on any Vulkan 1.3 device (Mesa's lavapipe on CI).
+//
+// Conventions (so images match the soft backend without flips): a negative-height viewport
+// (Vulkan 1.1 core) maps NDC +y to framebuffer row 0, the first stored row and the top of a
+// Readback, as the GL backend's glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE) does; depth is
+// z/w in [0, 1] natively. Vulkan decides facing in framebuffer space, where row 0 is then at the
+// top: counter-clockwise as displayed is Vulkan's counter-clockwise, as on GL.
+//
+// Explicit done right: draws are recorded until endPass, so the barriers for what they sample
+// precede the render pass; every image's layout and last access are tracked here, not by a
+// frame graph; per-submission data (uniform blocks, uploads, descriptor sets) lives in a ring
+// of frame slots, each reused once its fence has signalled.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/render/backend.hpp"
+
+namespace engine::render::vk {
+
+enum class FailModeStrategy : std::uint8_t {
+    TwoPass,      // passing fragments, then failing ones: fast, inexact where one draw overlaps itself
+    PerTriangle,  // the same two steps per triangle: exact, two draws per triangle
+};
+
+struct VulkanOptions {
+    // -1: the first device with Vulkan 1.3 and a graphics queue; >= 0: that device (the error
+    // lists the devices when it does not exist).
+    int device = -1;
+    // VK_LAYER_KHRONOS_validation with synchronization validation and a debug messenger. Every
+    // warning or error it reports is counted (validationMessages()) and passed to onValidation
+    // (default: logged as a warning). Tests turn it on and fail on any message.
+    bool validation = false;
+    std::function<void(const std::string& message)> onValidation;
+    FailModeStrategy failModes = FailModeStrategy::TwoPass;
+    int framesInFlight = 2;  // frame slots in the ring (1..4)
+};
+
+struct VulkanInfo {
+    std::string device;  // "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string driver;  // driver name and info
+    std::uint32_t apiVersion = 0;
+    int deviceIndex = 0;
+    bool validation = false;
+};
+
+// What a frame did, for the steady-frame checks: counted since the backend was made.
+struct VulkanCounters {
+    std::uint64_t pipelinesCreated = 0;
+    std::uint64_t imagesCreated = 0;
+    std::uint64_t buffersCreated = 0;  // VkBuffers, the ring's own chunks included
+    std::uint64_t descriptorPoolsCreated = 0;
+    std::uint64_t fenceWaits = 0;   // waits for a frame slot to come free
+    std::uint64_t resultWaits = 0;  // waits for readback or query results
+    std::uint64_t submits = 0;
+};
+
+class VulkanBackend : public Backend {
+public:
+    virtual const VulkanInfo& info() const = 0;
+    virtual const VulkanCounters& counters() const = 0;
+    // Validation warnings and errors reported since the backend was made.
+    virtual std::uint64_t validationMessages() const = 0;
+    // endFrame() (Backend) submits what is recorded and moves to the next frame slot; the next
+    // use of a slot waits only when its previous submission is still running.
+};
+
+// Throws engine::Error when there is no Vulkan loader, no Vulkan 1.3 device, no device `device`
+// (the message lists them) or, with validation, no validation layer.
+std::unique_ptr<VulkanBackend> createVulkanBackend(const VulkanOptions& options = {});
+
+// Empty when a backend with these options can be made here, else why not (for test skips).
+std::string vulkanUnavailableReason(const VulkanOptions& options = {});
+
+}  // namespace engine::render::vk
