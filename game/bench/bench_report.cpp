@@ -110,6 +110,10 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
         out << rows.front().width << "x" << rows.front().height << ", " << info.reps << " timed repetition(s) after "
             << info.warmup << " warm-up, flicker over " << info.panFrames << " pan frames, " << info.threads
             << " thread(s) (soft backend; LP_NUM_THREADS for gl).\n\n";
+    if (!info.ssamPreset.empty())
+        out << "Technique `ssam` runs preset `" << info.ssamPreset
+            << "` (`--ssam-preset`; `measured` is the knob sweep's best across tree, forest and vista within 1.25x "
+               "the paper's time: ssam/docs/knobs.md \"Presets\").\n\n";
     out << "Time: wall clock of one frame (opaque pass + the technique, including its resolve; GL waits for the "
            "frame's timer queries), median (min-max). Errors against the exact reference (technique `reference` "
            "on the soft backend). Flicker: mean |change| of sRGB luma between consecutive frames of a slow sideways "

@@ -16,6 +16,7 @@ struct RunInfo {
     std::string command;  // as typed, for the reports
     int threads = 0;
     int reps = 0, warmup = 0, panFrames = 0;
+    std::string ssamPreset;  // technique ssam's knobs (ssam::Preset); empty: not said
 };
 
 // The columns of bench.csv, in order.

@@ -27,6 +27,7 @@
 #include "engine/core/usage_error.hpp"
 #include "report_text.hpp"
 #include "simd_flag.hpp"
+#include "ssam/preset.hpp"
 #include "sweep_report.hpp"
 
 namespace {
@@ -36,6 +37,7 @@ using namespace bench;
 struct Options {
     std::string scenes = "tree,forest,vista,empty";
     std::string techniques = "all";
+    std::string ssamPreset = ssam::presetName(ssam::kRecommendedPreset);
     std::string backends = "soft";
     std::string size = "1280x720";
     int reps = 5;
@@ -164,6 +166,10 @@ BenchOptions parse(const Options& o) {
     } else {
         b.subjects = techniqueSubjects(techniques);
     }
+    // Technique ssam's knobs (CLI11 checked the name); the sweep's settings carry their own.
+    for (BenchSubject& subject : b.subjects)
+        if (subject.kind == transparency::TechniqueKind::Ssam)
+            subject.options.ssam = ssam::presetConfig(*ssam::parsePreset(o.ssamPreset));
     for (const std::string& name : splitList(o.backends, "--backend")) {
         if (name != "soft" && name != "gl" && name != "vk")
             throw engine::UsageError("--backend: unknown backend '" + name + "' (known: soft, gl, vk)");
@@ -219,7 +225,8 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
 
     std::string command = "ssam-bench";
     for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
-    const RunInfo info{command, resolvedThreads(options.threads), options.reps, options.warmup, options.panFrames};
+    const RunInfo info{command,     resolvedThreads(options.threads), options.reps, options.warmup, options.panFrames,
+                       o.ssamPreset};
     engine::PendingFiles files;  // the reports appear together, each whole, or none does
     if (o.scaling) {
         ScalingOptions scaling = defaultScaling(o.quick);
@@ -271,6 +278,11 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                    "comma list of techniques (" + allTechniqueNames() +
                        ") or all; with --sweep, the ones measured beside the settings (default there: "
                        "alpha-test,ssam-plus; or none)")
+        ->capture_default_str();
+    app.add_option("--ssam-preset", o.ssamPreset,
+                   "technique ssam's knobs: paper ([Hathaway 2010]'s values) or measured (the knob sweep's best "
+                   "within 1.25x the paper's time; ssam/docs/knobs.md)")
+        ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
         ->capture_default_str();
     app.add_option("--backend", o.backends, "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU)")
         ->capture_default_str();

@@ -30,6 +30,7 @@
 #include "racer_outputs.hpp"
 #include "racing_scene.hpp"
 #include "simd_flag.hpp"
+#include "ssam/preset.hpp"
 #include "window_keys.hpp"
 #include "window_loop.hpp"
 
@@ -103,6 +104,7 @@ int run(const CLI::App& app, const Options& o) {
         comparedWith = pair.right;
     }
     renderer.msaa = o.msaa;
+    renderer.techniqueOptions.ssam = ssam::presetConfig(*ssam::parsePreset(o.ssamPreset));  // checked by CLI11
     renderer.captureLayers = o.captureLayers;
     const CameraMode cameraMode = parseCamera(o.camera);
     const float aspect = float(renderer.width) / float(renderer.height);

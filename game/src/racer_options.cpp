@@ -33,6 +33,12 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--technique", o.technique, "how foliage is drawn")
         ->check(CLI::IsMember(techniqueNames()))
         ->capture_default_str();
+    app.add_option(
+           "--ssam-preset", o.ssamPreset,
+           "SSAM's knobs (technique ssam): paper ([Hathaway 2010]'s values) or measured (chosen by ssam-bench's "
+           "sweep: lower error at the paper's cost; ssam/docs/knobs.md)")
+        ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
+        ->capture_default_str();
     app.add_option("--size", o.size, "frame size WIDTHxHEIGHT (a window's first size: it renders at its window's)")
         ->capture_default_str();
     app.add_option_function<int>(

@@ -8,6 +8,7 @@
 
 #include "camera_rig.hpp"
 #include "content_dir.hpp"
+#include "ssam/preset.hpp"
 #include "transparency/technique.hpp"
 
 namespace CLI {
@@ -19,6 +20,7 @@ namespace racer {
 struct Options {
     std::string backend = "auto";  // auto: gl in a window, soft headless
     std::string technique = "ssam";
+    std::string ssamPreset = ssam::presetName(ssam::kRecommendedPreset);  // --ssam-preset: SSAM's knobs
     std::string size = "1280x720";
     int frames = 60;  // headless; a window runs until closed unless --frames is given
     bool framesGiven = false;

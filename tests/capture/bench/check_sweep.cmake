@@ -3,7 +3,9 @@
 #   - sweep.csv has one row per setting of the default grid (every maskLerp x squareMask, then
 #     each other knob alone, the rest at the defaults), each setting once, one defaults row;
 #   - the error columns are finite and identical across two runs (the second on one thread);
-#   - the defaults row has the same numbers as technique `ssam` in a plain run;
+#   - the defaults row has the same numbers as technique `ssam` in a plain run with
+#     --ssam-preset paper, and the measured knobs' row as a plain run with the default preset
+#     (measured: ssam/preset.hpp), whose ꟻLIP differs from the paper's;
 #   - every setting that differs from the defaults in one knob only has a different ꟻLIP:
 #     the sweep really applies each knob;
 #   - --sweep-full measures the product of the values (plus the defaults);
@@ -54,7 +56,10 @@ endfunction()
 
 run(${OUT}/sweep1 --sweep)
 run(${OUT}/sweep2 --sweep --threads 1)
-run(${OUT}/plain --techniques ssam)
+run(${OUT}/plain --techniques ssam --ssam-preset paper)
+run(${OUT}/plain_measured --techniques ssam)
+run(${OUT}/measured --sweep --sweep-full --sweep-lerp 0.9 --sweep-square off --sweep-reference 96
+    --sweep-precision rgba8 --techniques none)
 run(${OUT}/full --sweep --sweep-full --sweep-lerp 0.5,1 --sweep-square on --sweep-reference 64
     --sweep-precision rgba8,rgba16f --techniques none)
 
@@ -62,6 +67,8 @@ read_csv(${OUT}/sweep1/sweep.csv s1)
 read_csv(${OUT}/sweep2/sweep.csv s2)
 read_csv(${OUT}/plain/bench.csv plain)
 read_csv(${OUT}/full/sweep.csv full)
+read_csv(${OUT}/plain_measured/bench.csv plainMeasured)
+read_csv(${OUT}/measured/sweep.csv measured)
 
 list(LENGTH lerps nl)
 list(LENGTH squares ns)
@@ -124,6 +131,37 @@ foreach(c IN LISTS compared)
     fail("the defaults row's ${c} is '${a}', the plain ssam row's '${b}'")
   endif()
 endforeach()
+
+# The default preset (measured) is the sweep's maskLerp 0.9, no squaring, reference 96, RGBA8.
+set(plainMeasuredSsam "")
+foreach(row IN LISTS plainMeasured_rows)
+  field("${row}" "${plainMeasured_header}" technique t)
+  if(t STREQUAL "ssam")
+    set(plainMeasuredSsam "${row}")
+  endif()
+endforeach()
+set(measuredRow "")
+foreach(row IN LISTS measured_rows)
+  field("${row}" "${measured_header}" is_default isDefault)
+  if(isDefault STREQUAL "0")
+    set(measuredRow "${row}")
+  endif()
+endforeach()
+if(plainMeasuredSsam STREQUAL "" OR measuredRow STREQUAL "")
+  fail("no ssam row in the default-preset run, or no measured setting in its sweep")
+endif()
+foreach(c IN LISTS compared)
+  field("${measuredRow}" "${measured_header}" ${c} a)
+  field("${plainMeasuredSsam}" "${plainMeasured_header}" ${c} b)
+  if(NOT a STREQUAL b)
+    fail("the measured knobs' ${c} is '${a}', the default preset's ssam row's '${b}'")
+  endif()
+endforeach()
+field("${plainMeasuredSsam}" "${plainMeasured_header}" flip_mean fm)
+field("${plainSsam}" "${plain_header}" flip_mean fp)
+if(fm STREQUAL fp)
+  fail("--ssam-preset measured and paper give the same ꟻLIP ${fm}: the preset was not applied")
+endif()
 
 # Deterministic, finite; and each knob changes the error.
 set(varied "")
