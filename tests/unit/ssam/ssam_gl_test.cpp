@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "ssam/preset.hpp"
 #include "ssam/ssam.hpp"
 #include "ssam_gl_host.hpp"
 
@@ -111,6 +112,19 @@ TEST(SsamGl, SettingsDefaultToTheConfigDefaults) {
     EXPECT_EQ(defaults.squareMask, fromConfig.squareMask);
     EXPECT_EQ(defaults.maskPrecision, fromConfig.maskPrecision);
     EXPECT_EQ(defaults.depthTest, fromConfig.depthTest);
+}
+
+// ssam::gl::measuredSettings() is ssam::presetConfig(Preset::Measured), knob for knob.
+TEST(SsamGl, MeasuredSettingsAreTheMeasuredPreset) {
+    const ssam::gl::Settings fromConfig = settingsOf(ssam::presetConfig(ssam::Preset::Measured));
+    const ssam::gl::Settings measured = ssam::gl::measuredSettings();
+    EXPECT_EQ(measured.maskLerp, fromConfig.maskLerp);
+    EXPECT_EQ(measured.colorAlphaReference, fromConfig.colorAlphaReference);
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(measured.foliageClearColor[i], fromConfig.foliageClearColor[i]);
+    EXPECT_EQ(measured.squareMask, fromConfig.squareMask);
+    EXPECT_EQ(measured.maskPrecision, fromConfig.maskPrecision);
+    EXPECT_EQ(measured.depthTest, fromConfig.depthTest);
+    EXPECT_NE(measured.squareMask, ssam::gl::Settings{}.squareMask);
 }
 
 TEST(SsamGl, CallbackSeesTheMaskPassThenTheColourPass) {

@@ -155,6 +155,17 @@ struct Settings {
     float depthMaskThreshold = 0.0f;
 };
 
+// ssam::Preset::Measured's knobs (ssam/preset.hpp; ssam/docs/knobs.md "Presets": lower error than
+// the paper's at its cost), the rest Settings{}'s. Spelled out here because ssam::gl uses no engine
+// type; a test checks it against ssam::presetConfig.
+inline Settings measuredSettings() {
+    Settings s;
+    s.maskLerp = 0.9f;
+    s.squareMask = false;
+    s.colorAlphaReference = 96.0f / 255.0f;
+    return s;
+}
+
 struct FrameDesc {
     // The host's opaque colour: GL_RGBA8, GL_SRGB8_ALPHA8 (blended in linear, as
     // GL_FRAMEBUFFER_SRGB does), GL_RGBA16F or GL_RGBA32F; a single-sample GL_TEXTURE_2D.
