@@ -18,10 +18,6 @@ using namespace engine::render;
 // SURFACE_OUTPUT is expanded inside the lit surface's main(), after v_uv is declared.
 constexpr const char* kHashed = R"(
 #define SURFACE_OUTPUT(c) hashedOutput(c, v_uv)
-uniform int u_seed;
-uniform float u_hashScale;
-uniform bool u_anisotropic;
-uniform bool u_outputThreshold;
 
 uvec3 pcg3d(uvec3 v) {
     v = v * 1664525u + 1013904223u;

@@ -18,12 +18,6 @@ constexpr const char* kTemporalResolveFragment = R"(
 layout(binding = 0) uniform sampler2D u_current;
 layout(binding = 1) uniform sampler2D u_depth;
 layout(binding = 2) uniform sampler2D u_history;
-uniform mat4 u_reprojection;
-uniform float u_blend;
-uniform bool u_hasHistory;
-uniform bool u_copyOnly;
-uniform bool u_hasDepth;
-uniform bool u_hasHistoryTexture;
 vec4 finiteOf(vec4 c) {
     for (int i = 0; i < 4; ++i)
         if (isnan(c[i]) || isinf(c[i])) c[i] = 0.0;
