@@ -102,6 +102,15 @@ std::string uniformDeclarations(const UniformBlockLayout& layout, GlslDialect di
     return s;
 }
 
+std::string parameterDeclarations(std::span<const ShaderParameter> parameters, GlslDialect dialect,
+                                  const char* blockName) {
+    const bool block = dialect == GlslDialect::Vulkan;
+    std::string s = block ? std::string("layout(push_constant) uniform ") + blockName + " {\n" : std::string();
+    for (const ShaderParameter& p : parameters)
+        s += std::string(block ? "    " : "uniform ") + p.glslType + " " + p.name + ";\n";
+    return block ? s + "};\n" : s;
+}
+
 std::string meshInterpolants(GlslDialect dialect, bool vertexStage) {
     const char* dir = vertexStage ? "out" : "in";
     const bool vk = dialect == GlslDialect::Vulkan;

@@ -3,9 +3,9 @@
 
 #include <string>
 
-#include "../composite_glsl.hpp"
 #include "gl_functions.hpp"
 #include "gl_objects.hpp"
+#include "shaders.hpp"
 
 namespace ssam::gl::detail {
 
@@ -15,30 +15,18 @@ namespace {
 // threshold: below it, the opaque depth saved before the colour pass goes back. u_foliage reads
 // the mask texture: the foliage colour is not needed, and rt_foliage is attached to the
 // framebuffer this pass draws into (sampling it would be a feedback loop, GL 4.5 §9.3.1).
-const std::string kRestoreFragment = std::string(R"(#version 330 core
-#define PRECISE
-uniform sampler2D u_foliage;
-uniform sampler2D u_mask;
-uniform sampler2D u_maskAdd;
-uniform bool u_hasMaskAdd;
-uniform float u_maskLerp;
-uniform bool u_squareMask;
+// A function, not a global: kCompositeHead is another file's global, initialised in no set order.
+std::string restoreFragment() {
+    return shaders::kCompositeHead + R"(
 uniform sampler2D u_opaqueDepth;
 uniform float u_threshold;
-)") + ssam::glsl::kComposite + R"(
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     if (ssamComposite(p).a >= u_threshold) discard;
     gl_FragDepth = texelFetch(u_opaqueDepth, p, 0).r;
 }
 )";
-
-const char* const kFullscreenVertex = R"(#version 330 core
-void main() {
-    vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
-    gl_Position = vec4(p, 0.0, 1.0);
 }
-)";
 
 bool hasStencil(int format) { return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8; }
 
@@ -54,7 +42,7 @@ void DepthRestore::destroy(const GlFunctions& gl) {
 void DepthRestore::saveOpaqueDepth(const GlFunctions& gl, unsigned int source, int depthFormat, int width, int height,
                                    const Rect& region) {
     if (!program_) {
-        program_ = compileProgram(gl, "ssam::gl depth restore", kFullscreenVertex, kRestoreFragment.c_str());
+        program_ = compileProgram(gl, "ssam::gl depth restore", shaders::kFullscreenVertex, restoreFragment().c_str());
         foliage_ = gl.GetUniformLocation(program_, "u_foliage");
         mask_ = gl.GetUniformLocation(program_, "u_mask");
         maskAdd_ = gl.GetUniformLocation(program_, "u_maskAdd");

@@ -87,7 +87,7 @@ void main() {
 // ONE_MINUS_SRC_ALPHA onto the engine's colour, which is lerp(opaque, foliage, mask) and keeps
 // the colour's alpha. GLSL 3.30 has no `precise`; nothing here can be contracted into an FMA
 // that changes which side of 0 or 1 the mask falls anyway.
-const std::string kCompositeFragment = std::string(R"(#version 330 core
+const std::string kCompositeHead = std::string(R"(#version 330 core
 #define PRECISE
 uniform sampler2D u_foliage;
 uniform sampler2D u_mask;
@@ -95,8 +95,10 @@ uniform sampler2D u_maskAdd;
 uniform bool u_hasMaskAdd;
 uniform float u_maskLerp;
 uniform bool u_squareMask;
+)") + ssam::glsl::kComposite;
+
+const std::string kCompositeFragment = kCompositeHead + R"(
 layout(location = 0) out vec4 o_color;
-)") + ssam::glsl::kComposite + R"(
 void main() { o_color = ssamComposite(ivec2(gl_FragCoord.xy)); }
 )";
 

@@ -52,10 +52,10 @@ void setUniform(GLuint p, GLint location, const UniformField& field, const std::
 
 std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc, GlslTarget target) {
     auto s = std::make_shared<ProgramSlot>();
+    const UniformBlockLayout layout = uniformBlockLayout(desc->name, desc->gl);
     s->program = compileProgram(
-        desc->name, withGlslVersion(vertexSource(desc->vertexInput), target.major, target.minor),
-        withGlslVersion(fragmentSource(desc->vertexInput, uniformBlockLayout(desc->name, desc->gl), desc->gl.fragment),
-                        target.major, target.minor));
+        desc->name, withGlslVersion(vertexSource(desc->vertexInput, desc->name, layout), target.major, target.minor),
+        withGlslVersion(fragmentSource(desc->vertexInput, layout, desc->gl.fragment), target.major, target.minor));
     for (const UniformField& u : desc->gl.uniforms) s->uniforms.push_back(s->program.uniform(u.name));
     for (const TextureField& t : desc->gl.textures) {
         ProgramSlot::TextureUniforms& l = s->textures.emplace_back();

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // GLSL 4.50 sources of the standard programs (what soft/kernel/programs.hpp computes, line for
-// line) and of the backend's internal programs (resolves).
+// line) and of the backend's internal programs (resolves), in the GL dialect of driver_stages.hpp.
 #include <string>
 
 #include "engine/render/program.hpp"
@@ -14,8 +14,9 @@ namespace engine::render::gl {
 enum AlphaSelect : int { kSelectAll = 0, kSelectPassing = 1, kSelectFailing = 2 };
 
 // The vertex stage for a program's input, and its fragment stage: the shared head (outputs,
-// finish(), the interpolants) and the layout's uniforms (shader_interface.hpp) before the body.
-std::string vertexSource(VertexInput input);
+// finish(), the interpolants) and the layout's uniforms before the body, in the GL dialect of
+// the one source every GLSL driver uses (driver_stages.hpp).
+std::string vertexSource(VertexInput input, const std::string& programName, const UniformBlockLayout& layout);
 std::string fragmentSource(VertexInput input, const UniformBlockLayout& layout, const std::string& body);
 // The fragment body of a standard program (standard_programs.hpp).
 std::string standardFragment(ProgramKind kind);

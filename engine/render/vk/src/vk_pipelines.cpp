@@ -8,6 +8,7 @@
 
 #include "engine/core/error.hpp"
 #include "vk_backend_impl.hpp"
+#include "vk_pipeline_builder.hpp"
 
 namespace engine::render::vk {
 namespace {
@@ -198,11 +199,6 @@ VkPipeline VulkanBackendImpl::pipeline(const VulkanProgram& program, const Pipel
     auto it = program.pipelines.find(bytes);
     if (it != program.pipelines.end()) return it->second;
 
-    const VkPipelineShaderStageCreateInfo stages[] = {
-        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, program.vertex,
-         "main", nullptr},
-        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
-         fragmentModule(program, state.colorTargetCount), "main", nullptr}};
     // The engine's one vertex layout (vertex.hpp): Vertex per vertex, Instance per instance.
     const VkVertexInputBindingDescription bindings[] = {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
                                                         {1, sizeof(Instance), VK_VERTEX_INPUT_RATE_INSTANCE}};
@@ -216,35 +212,6 @@ VkPipeline VulkanBackendImpl::pipeline(const VulkanProgram& program, const Pipel
         {6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, std::uint32_t(offsetof(Instance, model) + 32)},
         {7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, std::uint32_t(offsetof(Instance, model) + 48)},
         {8, 1, VK_FORMAT_R32G32B32A32_SFLOAT, std::uint32_t(offsetof(Instance, tint))}};
-    VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    if (!fullscreen) {
-        vertexInput.vertexBindingDescriptionCount = 2;
-        vertexInput.pVertexBindingDescriptions = bindings;
-        vertexInput.vertexAttributeDescriptionCount = 9;
-        vertexInput.pVertexAttributeDescriptions = attributes;
-    }
-    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = cull == std::uint8_t(CullMode::Back)    ? VK_CULL_MODE_BACK_BIT
-                      : cull == std::uint8_t(CullMode::Front) ? VK_CULL_MODE_FRONT_BIT
-                                                              : VK_CULL_MODE_NONE;
-    // Facing as displayed: Vulkan decides it in framebuffer space, where the negative-height
-    // viewport has put row 0 at the top, so counter-clockwise as displayed is Vulkan's
-    // counter-clockwise (RasterConformance.CullingAndFrontFace).
-    raster.frontFace =
-        desc.raster.frontFace == Winding::CounterClockwise ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VkSampleCountFlagBits(pass.samples);
-    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth.depthTestEnable = state.depthTest;
-    depth.depthWriteEnable = state.depthTest && step.depthWrite;
-    depth.depthCompareOp = vkCompare(state.depthFunc);
     std::vector<VkPipelineColorBlendAttachmentState> blends;
     for (int i = 0; i < state.colorTargetCount; ++i) {
         const BlendState& b = state.blend[std::size_t(i)];
@@ -262,30 +229,31 @@ VkPipeline VulkanBackendImpl::pipeline(const VulkanProgram& program, const Pipel
             ((m & WriteB) ? VK_COLOR_COMPONENT_B_BIT : 0) | ((m & WriteA) ? VK_COLOR_COMPONENT_A_BIT : 0);
         blends.push_back(a);
     }
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = std::uint32_t(blends.size());
-    blend.pAttachments = blends.data();
-    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                                      VK_DYNAMIC_STATE_BLEND_CONSTANTS};
-    VkPipelineDynamicStateCreateInfo dynamicState{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamicState.dynamicStateCount = 3;
-    dynamicState.pDynamicStates = dynamic;
-    VkGraphicsPipelineCreateInfo ci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    ci.stageCount = 2;
-    ci.pStages = stages;
-    ci.pVertexInputState = &vertexInput;
-    ci.pInputAssemblyState = &assembly;
-    ci.pViewportState = &viewport;
-    ci.pRasterizationState = &raster;
-    ci.pMultisampleState = &multisample;
-    ci.pDepthStencilState = &depth;
-    ci.pColorBlendState = &blend;
-    ci.pDynamicState = &dynamicState;
-    ci.layout = program.layout;
-    ci.renderPass = renderPass(compatible);
-    VkPipeline p = VK_NULL_HANDLE;
-    check(vkCreateGraphicsPipelines(context_->device, VK_NULL_HANDLE, 1, &ci, nullptr, &p),
-          "pipeline " + quotedName(desc.name) + ": vkCreateGraphicsPipelines");
+    GraphicsPipelineParts parts;
+    parts.vertex = program.vertex;
+    parts.fragment = fragmentModule(program, state.colorTargetCount);
+    if (!fullscreen) {
+        parts.bindings = bindings;
+        parts.attributes = attributes;
+    }
+    parts.cull = cull == std::uint8_t(CullMode::Back)    ? VK_CULL_MODE_BACK_BIT
+                 : cull == std::uint8_t(CullMode::Front) ? VK_CULL_MODE_FRONT_BIT
+                                                         : VK_CULL_MODE_NONE;
+    // Facing as displayed: Vulkan decides it in framebuffer space, where the negative-height
+    // viewport has put row 0 at the top, so counter-clockwise as displayed is Vulkan's
+    // counter-clockwise (RasterConformance.CullingAndFrontFace).
+    parts.frontFace =
+        desc.raster.frontFace == Winding::CounterClockwise ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
+    parts.samples = VkSampleCountFlagBits(pass.samples);
+    parts.depthTest = state.depthTest;
+    parts.depthWrite = state.depthTest && step.depthWrite;
+    parts.depthCompare = vkCompare(state.depthFunc);
+    parts.blends = blends;
+    parts.dynamicBlendConstants = true;
+    parts.layout = program.layout;
+    parts.renderPass = renderPass(compatible);
+    VkPipeline p = createGraphicsPipeline(context_->device, parts,
+                                          "pipeline " + quotedName(desc.name) + ": vkCreateGraphicsPipelines");
     ++counters_.pipelinesCreated;
     program.pipelines.emplace(std::move(bytes), p);
     return p;

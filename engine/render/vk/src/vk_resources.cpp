@@ -238,12 +238,8 @@ std::shared_ptr<const VulkanProgram> VulkanBackendImpl::buildProgram(std::shared
     if (p->block.size > kUniformWindow)
         throw Error("program '" + desc->name + "': its uniform block is " + std::to_string(p->block.size) +
                     " bytes, the Vulkan backend binds at most " + std::to_string(kUniformWindow));
-    if (desc->vertexInput == VertexInput::Mesh &&
-        std::none_of(p->block.members.begin(), p->block.members.end(),
-                     [](const UniformBlockMember& m) { return m.name == "u_viewProj"; }))
-        throw Error("program '" + desc->name + "': a mesh program's uniforms need u_viewProj (mat4)");
     const std::vector<std::uint32_t> vertex =
-        compileSpirv(desc->name, Stage::Vertex, vertexSource(desc->vertexInput, p->block));
+        compileSpirv(desc->name, Stage::Vertex, vertexSource(desc->vertexInput, desc->name, p->block));
     const VkDevice device = context_->device;
     auto module = [&](const std::vector<std::uint32_t>& code, VkShaderModule& out) {
         VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};

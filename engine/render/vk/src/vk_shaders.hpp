@@ -7,12 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "engine/render/driver_stages.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/shader_interface.hpp"
 
 namespace engine::render::vk {
 
-// The push constants of the shared fragment tail (glsl::kFinish's inputs), std430.
+// The push constants of the shared fragment tail (glsl::kFinish's inputs), std430, in the order
+// driver_stages.cpp declares them.
 struct TailConstants {
     std::int32_t alphaSelect = 0;  // 0 all, 1 passing, 2 failing (FailModePlan)
     std::int32_t alphaFunc = 7;
@@ -24,11 +26,12 @@ struct TailConstants {
 };
 static_assert(sizeof(TailConstants) == 48);
 
-// Descriptor sets: 0 holds the textures (binding = TextureField::unit), 1 the uniform block.
-inline constexpr int kTextureSet = 0;
-inline constexpr int kUniformSet = 1;
+// Descriptor sets (driver_stages.hpp): 0 holds the textures (binding = TextureField::unit), 1
+// the uniform block.
+inline constexpr int kTextureSet = kVulkanTextureSet;
+inline constexpr int kUniformSet = kVulkanUniformSet;
 
-std::string vertexSource(VertexInput input, const UniformBlockLayout& block);
+std::string vertexSource(VertexInput input, const std::string& programName, const UniformBlockLayout& block);
 // The fragment stage for a pass with `colorTargets` colour targets.
 std::string fragmentSource(VertexInput input, const UniformBlockLayout& block, const std::string& body,
                            int colorTargets);

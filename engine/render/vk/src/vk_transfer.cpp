@@ -8,6 +8,7 @@
 #include "engine/render/memory_budget.hpp"
 #include "engine/render/pixel_codec.hpp"
 #include "vk_backend_impl.hpp"
+#include "vk_pipeline_builder.hpp"
 
 namespace engine::render::vk {
 
@@ -140,7 +141,7 @@ VkPipeline VulkanBackendImpl::resolveProgramPipeline(VkFormat format, bool depth
         ci.pCode = code.data();
         check(vkCreateShaderModule(device, &ci, nullptr, &out), "Vulkan backend: the resolve shaders");
     };
-    module(vertexSource(VertexInput::Fullscreen, {}), Stage::Vertex, resolve_.vertex);
+    module(vertexSource(VertexInput::Fullscreen, "resolve", {}), Stage::Vertex, resolve_.vertex);
     module(depth ? resolveDepthSource() : resolveColorSource(), Stage::Fragment,
            depth ? resolve_.depth : resolve_.color);
     if (!resolve_.layout) {
@@ -158,48 +159,17 @@ VkPipeline VulkanBackendImpl::resolveProgramPipeline(VkFormat format, bool depth
         pci.pPushConstantRanges = &push;
         check(vkCreatePipelineLayout(device, &pci, nullptr, &resolve_.layout), "Vulkan backend: resolve layout");
     }
-    const VkPipelineShaderStageCreateInfo stages[] = {
-        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, resolve_.vertex,
-         "main", nullptr},
-        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
-         depth ? resolve_.depth : resolve_.color, "main", nullptr}};
-    VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineDepthStencilStateCreateInfo depthState{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depthState.depthTestEnable = depth;  // ALWAYS: every pixel written (GL: GL_ALWAYS, mask on)
-    depthState.depthWriteEnable = depth;
-    depthState.depthCompareOp = VK_COMPARE_OP_ALWAYS;
     VkPipelineColorBlendAttachmentState attachment{};
     attachment.colorWriteMask = 0xF;
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = depth ? 0 : 1;
-    blend.pAttachments = &attachment;
-    const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamicState{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamicState.dynamicStateCount = 2;
-    dynamicState.pDynamicStates = dynamic;
-    VkGraphicsPipelineCreateInfo ci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    ci.stageCount = 2;
-    ci.pStages = stages;
-    ci.pVertexInputState = &vertexInput;
-    ci.pInputAssemblyState = &assembly;
-    ci.pViewportState = &viewport;
-    ci.pRasterizationState = &raster;
-    ci.pMultisampleState = &multisample;
-    ci.pDepthStencilState = &depthState;
-    ci.pColorBlendState = &blend;
-    ci.pDynamicState = &dynamicState;
-    ci.layout = resolve_.layout;
-    ci.renderPass = pass;
-    VkPipeline p = VK_NULL_HANDLE;
-    check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &p), "Vulkan backend: a resolve pipeline");
+    GraphicsPipelineParts parts;
+    parts.vertex = resolve_.vertex;
+    parts.fragment = depth ? resolve_.depth : resolve_.color;
+    parts.depthTest = depth;  // ALWAYS: every pixel written (GL: GL_ALWAYS, mask on)
+    parts.depthWrite = depth;
+    if (!depth) parts.blends = {&attachment, 1};
+    parts.layout = resolve_.layout;
+    parts.renderPass = pass;
+    VkPipeline p = createGraphicsPipeline(device, parts, "Vulkan backend: a resolve pipeline");
     ++counters_.pipelinesCreated;
     resolve_.pipelines.emplace(format, p);
     return p;

@@ -52,6 +52,16 @@ const char* glslTypeName(UniformType type);
 std::string uniformDeclarations(const UniformBlockLayout& layout, GlslDialect dialect, int set, int binding,
                                 const char* blockName = "Params");
 
+// A driver's own parameters (the shared tail's, a resolve's), declared by the same rule: GL
+// loose uniforms; Vulkan one push-constant block named `blockName` (members in list order,
+// std430: the driver's C++ struct of push constants follows this order).
+struct ShaderParameter {
+    const char* glslType;
+    const char* name;
+};
+std::string parameterDeclarations(std::span<const ShaderParameter> parameters, GlslDialect dialect,
+                                  const char* blockName);
+
 // A Mesh program's interpolants, as the driver's vertex stage writes them (`out`, vertex) or
 // the fragment stage reads them (`in`).
 std::string meshInterpolants(GlslDialect dialect, bool vertexStage);

@@ -11,14 +11,8 @@
 
 namespace engine::render::glsl {
 
-// The colour outputs, one per possible target (every bound target gets the colour).
-inline constexpr const char* kFragmentOutputs = R"(layout(location = 0) out vec4 o_color0;
-layout(location = 1) out vec4 o_color1;
-layout(location = 2) out vec4 o_color2;
-layout(location = 3) out vec4 o_color3;
-)";
-
-// The tail's inputs, which the driver declares (GL: loose uniforms; Vulkan: push constants):
+// The tail's inputs, which the driver declares (driver_stages.cpp; GL: loose uniforms, Vulkan:
+// push constants):
 //   int u_alphaSelect   0 all fragments, 1 those passing the alpha test, 2 those failing it
 //   int u_alphaFunc     CompareFunc
 //   float u_alphaRef
