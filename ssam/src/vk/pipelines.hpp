@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// ssam::vk's Vulkan objects: those made once (shader modules from the embedded SPIR-V, descriptor
+// set and pipeline layouts, samplers) and a Generation -- what depends on the frame's formats and
+// size and on the settings (render passes, pipelines, intermediate images, framebuffers over the
+// host's views). A frame with another key makes a new Generation and retires the old one.
+#include <cstdint>
+#include <vector>
+
+#include "resources.hpp"
+
+namespace ssam::vk::detail {
+
+// Push constants of the foliage programs (glsl_variants.cpp: model 0, factor 64, hasTexture 80)
+// and of the composite (maskLerp 0, squareMask 4, hasMaskAdd 8).
+inline constexpr std::uint32_t kFoliagePushSize = 84;
+inline constexpr std::uint32_t kCompositePushSize = 12;
+
+struct SharedObjects {
+    VkShaderModule foliageVertex = VK_NULL_HANDLE, maskVertex = VK_NULL_HANDLE, maskFragment = VK_NULL_HANDLE,
+                   colorFragment = VK_NULL_HANDLE, fullscreenVertex = VK_NULL_HANDLE,
+                   compositeFragment = VK_NULL_HANDLE;
+    VkDescriptorSetLayout frameSetLayout = VK_NULL_HANDLE;      // set 0: the frame's uniform block
+    VkDescriptorSetLayout textureSetLayout = VK_NULL_HANDLE;    // set 1: the base-colour texture
+    VkDescriptorSetLayout compositeSetLayout = VK_NULL_HANDLE;  // rt_foliage, mask, mask (add)
+    VkPipelineLayout foliageLayout = VK_NULL_HANDLE, compositeLayout = VK_NULL_HANDLE;
+    VkSampler linearSampler = VK_NULL_HANDLE;   // host textures without a sampler of their own
+    VkSampler nearestSampler = VK_NULL_HANDLE;  // the composite's texelFetch
+
+    void create(const VkFunctions& vk);
+    void destroy(const VkFunctions& vk) noexcept;
+};
+
+struct GenerationKey {
+    VkFormat colorFormat = VK_FORMAT_UNDEFINED, depthFormat = VK_FORMAT_UNDEFINED, maskFormat = VK_FORMAT_UNDEFINED;
+    std::uint32_t width = 0, height = 0;
+    std::uint64_t settingsVersion = 0;
+    bool operator==(const GenerationKey& o) const {
+        return colorFormat == o.colorFormat && depthFormat == o.depthFormat && maskFormat == o.maskFormat &&
+               width == o.width && height == o.height && settingsVersion == o.settingsVersion;
+    }
+};
+
+struct FrameFramebuffers {
+    VkImageView hostColor = VK_NULL_HANDLE, hostDepth = VK_NULL_HANDLE;
+    VkFramebuffer mask = VK_NULL_HANDLE, color = VK_NULL_HANDLE, composite = VK_NULL_HANDLE;
+    std::uint64_t lastUsedFrame = 0;
+};
+
+struct Generation {
+    GenerationKey key;
+    VkRenderPass maskPass = VK_NULL_HANDLE, colorPass = VK_NULL_HANDLE, compositePass = VK_NULL_HANDLE;
+    VkPipeline maskPipeline = VK_NULL_HANDLE, colorPipeline = VK_NULL_HANDLE, compositePipeline = VK_NULL_HANDLE;
+    Image mask, foliage;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet compositeSet = VK_NULL_HANDLE;
+    std::vector<FrameFramebuffers> framebuffers;  // one per pair of host views seen lately
+    std::uint64_t lastUsedFrame = 0;
+
+    void create(const VkFunctions& vk, const MemorySource& memory, const SharedObjects& shared,
+                const GenerationKey& key, const Settings& settings);
+    void destroy(const VkFunctions& vk, const MemorySource& memory) noexcept;
+    // The framebuffers over the host's views (made on first use; the least recently used of
+    // more than a few retired to `retired`).
+    const FrameFramebuffers& framebuffersFor(const VkFunctions& vk, VkImageView color, VkImageView depth,
+                                             std::uint64_t frame, Retired& retired);
+};
+
+}  // namespace ssam::vk::detail
