@@ -120,7 +120,10 @@ struct VertexBinding {
 };
 struct VertexLayout {
     static constexpr std::size_t kMaxBindings = 4;
-    VertexBinding bindings[kMaxBindings] = {{0, 12, VK_VERTEX_INPUT_RATE_VERTEX}};
+    // Every element spelled out: GCC 12 rejects `Settings s; s = {};` when an array member's
+    // initializer leaves elements to brace elision.
+    VertexBinding bindings[kMaxBindings] = {VertexBinding{0, 12, VK_VERTEX_INPUT_RATE_VERTEX}, VertexBinding{},
+                                            VertexBinding{}, VertexBinding{}};
     std::uint32_t bindingCount = 1;
     VertexAttribute position{0, VK_FORMAT_R32G32B32_SFLOAT, 0};  // vec3, required
     VertexAttribute normal;                                      // vec3, double-sided lighting
@@ -220,7 +223,7 @@ public:
     // Resolves SSAM's Vulkan functions through the host's loader (MissingEntryPoint names the
     // first one missing) and creates what does not depend on a frame: shader modules, layouts,
     // samplers, its small constants buffer. May be called again after release().
-    Status initialize(const DeviceDesc& device, const Settings& settings = Settings()) noexcept;
+    Status initialize(const DeviceDesc& device, const Settings& settings = {}) noexcept;
     // Destroys every object SSAM made; the host's device must be idle for them (see Lifetime above).
     void release() noexcept;
 

@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: MIT
+// ssam::vk (ssam/vk/ssam_vk.hpp) in a plain Vulkan host under the validation layer with
+// synchronization validation: its errors come back as a Status and a message naming the cause,
+// it resolves every function through the host's loader, and a resized frame makes new
+// intermediates while the old ones wait for the frames in flight (FrameDesc::framesCompleted),
+// with device memory from the host's allocation callback, all given back by release().
+// The pictures are checked by the example's tests (SsamVk.* in tests/capture/gl).
+#include <cstring>
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <ssam/vk/ssam_vk.hpp>
+
+#include "vk_host.hpp"
+
+namespace {
+
+using ssam::vk::ScreenSpaceAlphaMaskVk;
+using ssam::vk::Status;
+using ::testing::HasSubstr;
+
+struct Messages {
+    std::vector<std::string> errors;
+    static void record(void* user, ssam::vk::Severity severity, const char* message) {
+        if (severity == ssam::vk::Severity::Error) static_cast<Messages*>(user)->errors.push_back(message);
+    }
+};
+
+ssam::vk::DeviceDesc describe(const vk_example::VulkanHost& host) {
+    ssam::vk::DeviceDesc d;
+    d.instance = host.instance;
+    d.physicalDevice = host.physical;
+    d.device = host.device;
+    d.queueFamily = host.queueFamily;
+    d.apiVersion = host.apiVersion;
+    d.getInstanceProcAddr = vkGetInstanceProcAddr;
+    return d;
+}
+
+class SsamVk : public ::testing::Test {
+protected:
+    void SetUp() override { ssam.setMessageCallback(Messages::record, &messages); }
+    void TearDown() override {
+        vkDeviceWaitIdle(host.device);
+        ssam.release();
+        for (const std::string& m : host.validationMessages) ADD_FAILURE() << "validation: " << m;
+    }
+    vk_example::VulkanHost host{true};
+    ScreenSpaceAlphaMaskVk ssam;
+    Messages messages;
+};
+
+TEST_F(SsamVk, CallsBeforeInitializeAreInvalid) {
+    ssam::vk::FrameDesc frame;
+    EXPECT_EQ(ssam.render(frame, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidCall);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("render before initialize()"));
+    ssam::vk::TextureId id = 7;
+    EXPECT_EQ(ssam.createTexture(VK_NULL_HANDLE, VK_NULL_HANDLE, &id), Status::InvalidCall);
+    EXPECT_EQ(id, 0u);
+    ASSERT_EQ(messages.errors.size(), 2u);
+}
+
+TEST_F(SsamVk, AnIncompleteDeviceDescriptionIsNamed) {
+    ssam::vk::DeviceDesc d = describe(host);
+    d.getInstanceProcAddr = nullptr;
+    EXPECT_EQ(ssam.initialize(d), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("getInstanceProcAddr"));
+}
+
+// Every function comes through the host's loader: one it does not resolve is named.
+PFN_vkVoidFunction VKAPI_CALL withoutCmdDraw(VkInstance instance, const char* name) {
+    if (std::strcmp(name, "vkCmdDraw") == 0) return nullptr;
+    return vkGetInstanceProcAddr(instance, name);
+}
+PFN_vkVoidFunction VKAPI_CALL withoutDeviceCmdDraw(VkDevice device, const char* name) {
+    if (std::strcmp(name, "vkCmdDraw") == 0) return nullptr;
+    return vkGetDeviceProcAddr(device, name);
+}
+
+TEST_F(SsamVk, AMissingEntryPointIsNamed) {
+    ssam::vk::DeviceDesc d = describe(host);
+    d.getInstanceProcAddr = withoutCmdDraw;
+    d.getDeviceProcAddr = withoutDeviceCmdDraw;
+    EXPECT_EQ(ssam.initialize(d), Status::MissingEntryPoint);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("vkCmdDraw"));
+}
+
+TEST_F(SsamVk, BadSettingsAreNamed) {
+    ssam::vk::Settings s;
+    s.vertexLayout.position.format = VK_FORMAT_UNDEFINED;
+    EXPECT_EQ(ssam.initialize(describe(host), s), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("vertexLayout.position"));
+    s = {};
+    s.vertexLayout.uv = {3, VK_FORMAT_R32G32_SFLOAT, 0};
+    EXPECT_EQ(ssam.initialize(describe(host), s), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("vertexLayout.uv reads binding 3"));
+    s = {};
+    s.maskLerp = 2.0f;
+    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+    EXPECT_EQ(ssam.setSettings(s), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("maskLerp"));
+}
+
+// The host's device memory callback: what SSAM allocates, by memory object, for the balance.
+struct HostMemory {
+    vk_example::VulkanHost* host = nullptr;
+    std::map<VkDeviceMemory, int> live;
+    int allocations = 0;
+    static VkResult allocate(void* user, const VkMemoryRequirements& r, VkMemoryPropertyFlags properties,
+                             VkDeviceMemory* memory, VkDeviceSize* offset) {
+        auto* self = static_cast<HostMemory*>(user);
+        VkPhysicalDeviceMemoryProperties p;
+        vkGetPhysicalDeviceMemoryProperties(self->host->physical, &p);
+        VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        info.allocationSize = r.size;
+        for (std::uint32_t i = 0; i < p.memoryTypeCount; ++i)
+            if ((r.memoryTypeBits & (1u << i)) && (p.memoryTypes[i].propertyFlags & properties) == properties) {
+                info.memoryTypeIndex = i;
+                break;
+            }
+        const VkResult result = vkAllocateMemory(self->host->device, &info, nullptr, memory);
+        if (result == VK_SUCCESS) ++self->live[*memory], ++self->allocations;
+        *offset = 0;
+        return result;
+    }
+    static void release(void* user, VkDeviceMemory memory, VkDeviceSize) {
+        auto* self = static_cast<HostMemory*>(user);
+        if (--self->live[memory] == 0) self->live.erase(memory);
+        vkFreeMemory(self->host->device, memory, nullptr);
+    }
+};
+
+// Host render targets of one size, cleared by a render pass of the host's own that leaves them as
+// ssam::vk's contract asks.
+struct Targets {
+    vk_example::VulkanHost& host;
+    vk_example::HostImage color, depth;
+    Targets(vk_example::VulkanHost& h, std::uint32_t w, std::uint32_t hgt) : host(h) {
+        color = host.createImage(VK_FORMAT_R8G8B8A8_UNORM, w, hgt, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                 VK_IMAGE_ASPECT_COLOR_BIT);
+        depth = host.createImage(VK_FORMAT_D32_SFLOAT, w, hgt, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                 VK_IMAGE_ASPECT_DEPTH_BIT);
+    }
+    ~Targets() {
+        host.destroy(color);
+        host.destroy(depth);
+    }
+    // Into the contract's entry layouts (attachment writes: an image barrier of attachment stages).
+    void prepare(VkCommandBuffer cb) const {
+        VkImageMemoryBarrier b[2]{{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER}, {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER}};
+        b[0].image = color.image;
+        b[0].newLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        b[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT;
+        b[0].subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        b[1].image = depth.image;
+        b[1].newLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        b[1].dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+        b[1].subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        for (auto& x : b) {
+            x.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+            x.srcQueueFamilyIndex = x.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        }
+        vkCmdPipelineBarrier(cb,
+                             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                             0, 0, nullptr, 0, nullptr, 2, b);
+    }
+};
+
+TEST_F(SsamVk, AResizeRetiresTheOldIntermediatesUntilTheirFramesComplete) {
+    HostMemory memory;
+    memory.host = &host;
+    ssam::vk::DeviceDesc d = describe(host);
+    d.memory = {&memory, HostMemory::allocate, HostMemory::release};
+    ASSERT_EQ(ssam.initialize(d), Status::Ok) << ssam.lastMessage();
+    const int atStart = memory.allocations;  // the constants buffer and the white texel
+    EXPECT_EQ(atStart, 2);
+    Targets big(host, 64, 48), small(host, 32, 16);
+    std::deque<VkFence> inFlight;
+    std::uint64_t completed = 0;
+    VkImage previousMask = VK_NULL_HANDLE;
+    int maskChanges = 0;
+    for (std::uint64_t frame = 0; frame < 6; ++frame) {
+        if (inFlight.size() == 2) {
+            host.wait(inFlight.front());
+            inFlight.pop_front();
+            ++completed;
+        }
+        const Targets& t = frame % 2 == 0 ? big : small;
+        const VkCommandBuffer cb = host.begin();
+        t.prepare(cb);
+        ssam::vk::FrameDesc f;
+        f.commandBuffer = cb;
+        f.colorView = t.color.view;
+        f.colorFormat = t.color.format;
+        f.depthView = t.depth.view;
+        f.depthFormat = t.depth.format;
+        f.width = frame % 2 == 0 ? 64 : 32;
+        f.height = frame % 2 == 0 ? 48 : 16;
+        f.frameIndex = frame;
+        f.framesCompleted = completed;
+        ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
+        inFlight.push_back(host.submit(cb));
+        if (ssam.intermediates().mask != previousMask) ++maskChanges;
+        previousMask = ssam.intermediates().mask;
+        // Two images per size change; at most the current ones and those of the two frames in flight.
+        EXPECT_LE(memory.live.size(), std::size_t(atStart + 2 * 3)) << "frame " << frame;
+    }
+    EXPECT_EQ(maskChanges, 6);  // every frame changed the size
+    for (VkFence f : inFlight) host.wait(f);
+    // Everything completed: the next frame (the same size as the last) destroys every retired
+    // generation, leaving SSAM's first two allocations and the current mask and rt_foliage.
+    const VkCommandBuffer cb = host.begin();
+    small.prepare(cb);
+    ssam::vk::FrameDesc f;
+    f.commandBuffer = cb;
+    f.colorView = small.color.view;
+    f.colorFormat = small.color.format;
+    f.depthView = small.depth.view;
+    f.depthFormat = small.depth.format;
+    f.width = 32;
+    f.height = 16;
+    f.frameIndex = f.framesCompleted = 6;
+    ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
+    EXPECT_EQ(memory.live.size(), std::size_t(atStart + 2));
+    host.wait(host.submit(cb));
+    vkDeviceWaitIdle(host.device);
+    ssam.release();
+    EXPECT_TRUE(memory.live.empty()) << memory.live.size() << " allocations not given back";
+}
+
+TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {
+    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+    Targets t(host, 8, 8);
+    const VkCommandBuffer cb = host.begin();
+    ssam::vk::FrameDesc f;
+    f.commandBuffer = cb;
+    f.colorView = t.color.view;
+    f.colorFormat = VK_FORMAT_R5G6B5_UNORM_PACK16;
+    f.depthView = t.depth.view;
+    f.depthFormat = t.depth.format;
+    f.width = f.height = 8;
+    EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("colorFormat"));
+    f.colorFormat = t.color.format;
+    f.framesCompleted = 3;
+    EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("framesCompleted 3 is past frameIndex 0"));
+    host.wait(host.submit(cb));
+}
+
+TEST_F(SsamVk, AThrowingDrawCallbackIsReported) {
+    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+    Targets t(host, 8, 8);
+    const VkCommandBuffer cb = host.begin();
+    t.prepare(cb);
+    ssam::vk::FrameDesc f;
+    f.commandBuffer = cb;
+    f.colorView = t.color.view;
+    f.colorFormat = t.color.format;
+    f.depthView = t.depth.view;
+    f.depthFormat = t.depth.format;
+    f.width = f.height = 8;
+    EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) { throw std::runtime_error("no cards"); }),
+              Status::CallbackFailed);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("threw in the mask pass: no cards"));
+    host.wait(host.submit(cb));  // the render pass was ended: the command buffer is still valid
+}
+
+}  // namespace
