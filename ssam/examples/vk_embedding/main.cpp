@@ -7,9 +7,11 @@
 // examples' (common/scene.hpp), so the picture is theirs.
 //
 //   ssam_vk_embedding [--out frame.png] [--mask mask.png] [--frames N] [--validation]
+//                     [--dynamic-rendering]
 //       headless; --frames records N frames (two in flight; frame N is written); --validation
 //       runs under VK_LAYER_KHRONOS_validation with synchronization validation, and any message
-//       it reports fails the run
+//       it reports fails the run; --dynamic-rendering enables Vulkan 1.3's feature and has SSAM
+//       record with vkCmdBeginRendering (ssam::vk::RenderingPath::DynamicRendering)
 // Exit codes: 0 ok, 1 error (or a validation message), 2 usage error, 77 no Vulkan device (or no
 // validation layer with --validation) -- 1 instead under CI=true, so CI cannot skip it.
 #include <algorithm>
@@ -40,6 +42,7 @@ struct Arguments {
     std::string mask;
     int frames = 1;
     bool validation = false;
+    bool dynamicRendering = false;
 };
 
 struct UsageError : std::runtime_error {
@@ -57,6 +60,7 @@ Arguments parse(int argc, char** argv) {
         if (arg == "--out") a.out = value();
         else if (arg == "--mask") a.mask = value();
         else if (arg == "--validation") a.validation = true;
+        else if (arg == "--dynamic-rendering") a.dynamicRendering = true;
         else if (arg == "--frames") {
             const std::string v = value();
             char* end = nullptr;
@@ -64,7 +68,10 @@ Arguments parse(int argc, char** argv) {
             if (v.empty() || *end || n < 1 || n > 1000) throw UsageError("--frames '" + v + "': expected 1 to 1000");
             a.frames = int(n);
         } else if (arg == "--help") {
-            std::printf("usage: %s [--out frame.png] [--mask mask.png] [--frames N] [--validation]\n", kTool);
+            std::printf(
+                "usage: %s [--out frame.png] [--mask mask.png] [--frames N] [--validation]"
+                " [--dynamic-rendering]\n",
+                kTool);
             std::exit(0);
         } else throw UsageError("unknown argument '" + arg + "'");
     }
@@ -294,10 +301,11 @@ void checkSsam(const ssam::vk::ScreenSpaceAlphaMaskVk& ssam, ssam::vk::Status st
 }
 
 int run(const Arguments& args) {
-    vk_example::VulkanHost host(args.validation);
+    vk_example::VulkanHost host(args.validation, args.dynamicRendering);
     std::printf("Vulkan: %s (API %u.%u)%s\n", host.deviceName.c_str(), VK_API_VERSION_MAJOR(host.apiVersion),
                 VK_API_VERSION_MINOR(host.apiVersion),
                 args.validation ? ", validation with synchronization validation" : "");
+    if (args.dynamicRendering) std::printf("SSAM records with dynamic rendering\n");
     {
         HostScene scene(host);
         ssam::vk::ScreenSpaceAlphaMaskVk ssam;
@@ -315,6 +323,8 @@ int run(const Arguments& args) {
         device.apiVersion = host.apiVersion;
         device.getInstanceProcAddr = vkGetInstanceProcAddr;
         device.getDeviceProcAddr = vkGetDeviceProcAddr;
+        device.dynamicRendering = host.dynamicRendering;
+        if (args.dynamicRendering) device.renderingPath = ssam::vk::RenderingPath::DynamicRendering;
         ssam::vk::Settings settings;  // the paper's knobs
         settings.vertexLayout.bindings[0] = {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
         settings.vertexLayout.position = {0, VK_FORMAT_R32G32B32_SFLOAT, 0};

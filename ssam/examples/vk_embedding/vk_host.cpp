@@ -32,7 +32,7 @@ bool hasLayer(const char* name) {
 
 }  // namespace
 
-VulkanHost::VulkanHost(bool withValidation) : validation(withValidation) {
+VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering) : validation(withValidation) {
     std::uint32_t loaderVersion = VK_API_VERSION_1_0;
     if (vkEnumerateInstanceVersion(&loaderVersion) != VK_SUCCESS) throw NoVulkan("the Vulkan loader does not answer");
     constexpr const char* kLayer = "VK_LAYER_KHRONOS_validation";
@@ -97,6 +97,18 @@ VulkanHost::VulkanHost(bool withValidation) : validation(withValidation) {
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
     VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    if (withDynamicRendering) {
+        if (apiVersion < VK_API_VERSION_1_3) throw NoVulkan("dynamic rendering asked for, but no Vulkan 1.3 here");
+        VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        supported.pNext = &features13;
+        vkGetPhysicalDeviceFeatures2(physical, &supported);
+        if (!features13.dynamicRendering) throw NoVulkan("the device has no dynamicRendering feature");
+        features13 = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        features13.dynamicRendering = VK_TRUE;
+        di.pNext = &features13;
+        dynamicRendering = true;
+    }
     di.queueCreateInfoCount = 1;
     di.pQueueCreateInfos = &queueInfo;
     check(vkCreateDevice(physical, &di, nullptr, &device), "vkCreateDevice");

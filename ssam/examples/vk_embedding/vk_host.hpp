@@ -34,7 +34,8 @@ struct HostBuffer {
 
 class VulkanHost {
 public:
-    explicit VulkanHost(bool validation);
+    // dynamicRendering: enable Vulkan 1.3's feature (NoVulkan where the device has not).
+    explicit VulkanHost(bool validation, bool dynamicRendering = false);
     ~VulkanHost();
     VulkanHost(const VulkanHost&) = delete;
     VulkanHost& operator=(const VulkanHost&) = delete;
@@ -58,6 +59,7 @@ public:
     std::uint32_t apiVersion = VK_API_VERSION_1_0;
     std::string deviceName;
     bool validation = false;
+    bool dynamicRendering = false;  // the feature is enabled
     std::vector<std::string> validationMessages;
 
 private:

@@ -146,8 +146,10 @@ VertexInput vertexInput(const VertexLayout& layout, bool withNormal) {
 
 enum class Kind { Mask, Color, Composite };
 
+// With `pass` null (RenderingPath::DynamicRendering) the attachment formats come from
+// VkPipelineRenderingCreateInfo instead.
 VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Kind kind, VkRenderPass pass,
-                          const Settings& settings) {
+                          VkFormat colorFormat, VkFormat depthFormat, const Settings& settings) {
     const bool composite = kind == Kind::Composite;
     VkPipelineShaderStageCreateInfo stages[2]{{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
@@ -222,6 +224,12 @@ VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Ki
     info.pDynamicState = &dynamic;
     info.layout = composite ? shared.compositeLayout : shared.foliageLayout;
     info.renderPass = pass;
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &colorFormat;
+    rendering.depthAttachmentFormat = depthFormat;
+    rendering.stencilAttachmentFormat = hasStencil(depthFormat) ? depthFormat : VK_FORMAT_UNDEFINED;
+    if (!pass) info.pNext = &rendering;
     VkPipeline pipeline = VK_NULL_HANDLE;
     check(vk.CreateGraphicsPipelines(vk.device, VK_NULL_HANDLE, 1, &info, vk.allocator, &pipeline),
           kind == Kind::Mask ? "vkCreateGraphicsPipelines, mask" : "vkCreateGraphicsPipelines");
@@ -302,16 +310,21 @@ void SharedObjects::destroy(const VkFunctions& vk) noexcept {
 }
 
 void Generation::create(const VkFunctions& vk, const MemorySource& memory, const SharedObjects& shared,
-                        const GenerationKey& k, const Settings& settings) {
+                        const GenerationKey& k, const Settings& settings, bool dynamicRendering) {
     key = k;
     try {
-        maskPass = createRenderPass(vk, k.maskFormat, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, k.depthFormat);
-        colorPass = createRenderPass(vk, k.colorFormat, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, k.depthFormat);
-        compositePass =
-            createRenderPass(vk, k.colorFormat, false, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_FORMAT_UNDEFINED);
-        maskPipeline = createPipeline(vk, shared, Kind::Mask, maskPass, settings);
-        colorPipeline = createPipeline(vk, shared, Kind::Color, colorPass, settings);
-        compositePipeline = createPipeline(vk, shared, Kind::Composite, compositePass, settings);
+        if (!dynamicRendering) {
+            maskPass =
+                createRenderPass(vk, k.maskFormat, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, k.depthFormat);
+            colorPass =
+                createRenderPass(vk, k.colorFormat, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, k.depthFormat);
+            compositePass = createRenderPass(vk, k.colorFormat, false, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                             VK_FORMAT_UNDEFINED);
+        }
+        maskPipeline = createPipeline(vk, shared, Kind::Mask, maskPass, k.maskFormat, k.depthFormat, settings);
+        colorPipeline = createPipeline(vk, shared, Kind::Color, colorPass, k.colorFormat, k.depthFormat, settings);
+        compositePipeline =
+            createPipeline(vk, shared, Kind::Composite, compositePass, k.colorFormat, VK_FORMAT_UNDEFINED, settings);
         constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // TRANSFER_SRC: hosts read them out
         mask = createImage(vk, memory, k.maskFormat, k.width, k.height, usage, "the mask");

@@ -57,8 +57,10 @@ struct Generation {
     std::vector<FrameFramebuffers> framebuffers;  // one per pair of host views seen lately
     std::uint64_t lastUsedFrame = 0;
 
+    // dynamicRendering: no render passes (the pipelines take VkPipelineRenderingCreateInfo) and
+    // no framebuffers.
     void create(const VkFunctions& vk, const MemorySource& memory, const SharedObjects& shared,
-                const GenerationKey& key, const Settings& settings);
+                const GenerationKey& key, const Settings& settings, bool dynamicRendering);
     void destroy(const VkFunctions& vk, const MemorySource& memory) noexcept;
     // The framebuffers over the host's views (made on first use; the least recently used of
     // more than a few retired to `retired`).

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../knob_rules.hpp"
+#include "dynamic_rendering.hpp"
 #include "failure.hpp"
 #include "pipelines.hpp"
 #include "resources.hpp"
@@ -233,6 +234,12 @@ struct ScreenSpaceAlphaMaskVk::Impl {
         if ((desc.memory.allocate != nullptr) != (desc.memory.release != nullptr))
             throw Failure(Status::InvalidArgument, "ssam::vk: DeviceMemoryCallbacks needs both allocate and release");
         validate(wanted);
+        if (desc.renderingPath != RenderingPath::RenderPass && desc.renderingPath != RenderingPath::DynamicRendering)
+            throw Failure(Status::InvalidArgument, "ssam::vk: DeviceDesc::renderingPath is not a RenderingPath");
+        if (desc.renderingPath == RenderingPath::DynamicRendering && !desc.dynamicRendering)
+            throw Failure(Status::UnsupportedFeature,
+                          "ssam::vk: RenderingPath::DynamicRendering needs the host's dynamicRendering feature "
+                          "(DeviceDesc::dynamicRendering: Vulkan 1.3's, or VK_KHR_dynamic_rendering's)");
         releaseObjects();
         detail::loadFunctions(vk, desc);
         device = desc;
@@ -391,6 +398,8 @@ struct ScreenSpaceAlphaMaskVk::Impl {
                                                        " is past frameIndex " + std::to_string(f.frameIndex));
     }
 
+    bool dynamic() const { return device.renderingPath == RenderingPath::DynamicRendering; }
+
     const detail::Generation& generationFor(const FrameDesc& f) {
         const detail::GenerationKey key{f.colorFormat, f.depthFormat, maskFormat(), f.width, f.height, settingsVersion};
         if (generation && generation->key == key) return *generation;
@@ -401,7 +410,7 @@ struct ScreenSpaceAlphaMaskVk::Impl {
         checkFormat(key.maskFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT,
                     "the mask");
         detail::Generation next;
-        next.create(vk, memory, shared, key, settings);  // destroys what it made if it fails
+        next.create(vk, memory, shared, key, settings, dynamic());  // destroys what it made if it fails
         if (generation) {
             auto old = std::make_shared<detail::Generation>(std::move(*generation));
             retired.add(old->lastUsedFrame, [this, old] { old->destroy(vk, memory); });
@@ -457,27 +466,43 @@ struct ScreenSpaceAlphaMaskVk::Impl {
         vk.CmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, kReaders, 0, 0, nullptr, 1, &buffer, 1, &image);
     }
 
-    void beginPass(VkCommandBuffer cb, VkRenderPass pass, VkFramebuffer framebuffer, const FrameDesc& f,
-                   const VkClearValue* clear, VkPipeline pipeline) {
-        VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-        begin.renderPass = pass;
-        begin.framebuffer = framebuffer;
-        begin.renderArea = {{0, 0}, {f.width, f.height}};
-        begin.clearValueCount = clear ? 1 : 0;
-        begin.pClearValues = clear;
-        vk.CmdBeginRenderPass(cb, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    // A pass begun on either path (RenderingPath), its pipeline bound, viewport and scissor the frame.
+    void beginPass(const FrameDesc& f, const detail::Generation& g, const detail::FrameFramebuffers* fb,
+                   detail::PassKind pass, const VkClearValue* clear, VkPipeline pipeline) {
+        const VkCommandBuffer cb = f.commandBuffer;
+        if (dynamic()) {
+            detail::beginDynamicPass(vk, cb, pass, g, {f.colorView, f.depthView, f.depthFormat, f.width, f.height},
+                                     clear);
+        } else {
+            VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+            begin.renderPass = pass == detail::PassKind::Mask    ? g.maskPass
+                               : pass == detail::PassKind::Color ? g.colorPass
+                                                                 : g.compositePass;
+            begin.framebuffer = pass == detail::PassKind::Mask    ? fb->mask
+                                : pass == detail::PassKind::Color ? fb->color
+                                                                  : fb->composite;
+            begin.renderArea = {{0, 0}, {f.width, f.height}};
+            begin.clearValueCount = clear ? 1 : 0;
+            begin.pClearValues = clear;
+            vk.CmdBeginRenderPass(cb, &begin, VK_SUBPASS_CONTENTS_INLINE);
+        }
         vk.CmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
         const VkViewport viewport{0.0f, 0.0f, float(f.width), float(f.height), 0.0f, 1.0f};
         const VkRect2D scissor{{0, 0}, {f.width, f.height}};
         vk.CmdSetViewport(cb, 0, 1, &viewport);
         vk.CmdSetScissor(cb, 0, 1, &scissor);
     }
+    void endPass(VkCommandBuffer cb, const detail::Generation& g, detail::PassKind pass) {
+        if (dynamic()) detail::endDynamicPass(vk, cb, pass, g);
+        else vk.CmdEndRenderPass(cb);
+    }
 
     // One foliage pass: SSAM's pipeline, sets and default push constants bound, then the host's draws.
-    void foliagePass(const FrameDesc& f, FoliagePass which, VkRenderPass pass, VkFramebuffer framebuffer,
-                     VkPipeline pipeline, const VkClearValue& clear, DrawFoliage draw, void* user) {
+    void foliagePass(const FrameDesc& f, const detail::Generation& g, const detail::FrameFramebuffers* fb,
+                     FoliagePass which, const VkClearValue& clear, DrawFoliage draw, void* user) {
         const VkCommandBuffer cb = f.commandBuffer;
-        beginPass(cb, pass, framebuffer, f, &clear, pipeline);
+        const detail::PassKind kind = which == FoliagePass::Mask ? detail::PassKind::Mask : detail::PassKind::Color;
+        beginPass(f, g, fb, kind, &clear, which == FoliagePass::Mask ? g.maskPipeline : g.colorPipeline);
         const VkDescriptorSet sets[] = {frameSet, whiteSet};
         vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.foliageLayout, 0, 2, sets, 0, nullptr);
         const VkDeviceSize offset = 0;
@@ -499,15 +524,15 @@ struct ScreenSpaceAlphaMaskVk::Impl {
         try {
             draw(user, program);
         } catch (const std::exception& e) {
-            vk.CmdEndRenderPass(cb);
+            endPass(cb, g, kind);
             throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
                                                       foliagePassName(which) + " pass: " + e.what());
         } catch (...) {
-            vk.CmdEndRenderPass(cb);
+            endPass(cb, g, kind);
             throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
                                                       foliagePassName(which) + " pass (not a std::exception)");
         }
-        vk.CmdEndRenderPass(cb);
+        endPass(cb, g, kind);
     }
 
     void render(const FrameDesc& f, DrawFoliage draw, void* user) {
@@ -515,18 +540,19 @@ struct ScreenSpaceAlphaMaskVk::Impl {
         checkFrame(f);
         retired.collect(f.framesCompleted);
         detail::Generation& g = const_cast<detail::Generation&>(generationFor(f));
-        const detail::FrameFramebuffers& fb = g.framebuffersFor(vk, f.colorView, f.depthView, f.frameIndex, retired);
+        const detail::FrameFramebuffers* fb =
+            dynamic() ? nullptr : &g.framebuffersFor(vk, f.colorView, f.depthView, f.frameIndex, retired);
         g.lastUsedFrame = f.frameIndex;
         const VkCommandBuffer cb = f.commandBuffer;
         updateConstants(f, cb);
         // 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD; depth tested, not written.
         VkClearValue clear{};
-        foliagePass(f, FoliagePass::Mask, g.maskPass, fb.mask, g.maskPipeline, clear, draw, user);
+        foliagePass(f, g, fb, FoliagePass::Mask, clear, draw, user);
         // 2. Colour pass (§3.5.3): cleared to the clear colour (§3.6.1); alpha-tested; depth written (§3.7).
         for (int i = 0; i < 4; ++i) clear.color.float32[i] = settings.foliageClearColor[i];
-        foliagePass(f, FoliagePass::Color, g.colorPass, fb.color, g.colorPipeline, clear, draw, user);
+        foliagePass(f, g, fb, FoliagePass::Color, clear, draw, user);
         // 3. Composite (§3.5.4, Listing 3.2) onto the host's colour.
-        beginPass(cb, g.compositePass, fb.composite, f, nullptr, g.compositePipeline);
+        beginPass(f, g, fb, detail::PassKind::Composite, nullptr, g.compositePipeline);
         vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.compositeLayout, 0, 1, &g.compositeSet, 0,
                                  nullptr);
         struct {
@@ -536,7 +562,7 @@ struct ScreenSpaceAlphaMaskVk::Impl {
         static_assert(sizeof push == detail::kCompositePushSize);
         vk.CmdPushConstants(cb, shared.compositeLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
         vk.CmdDraw(cb, 3, 1, 0, 0);
-        vk.CmdEndRenderPass(cb);
+        endPass(cb, g, detail::PassKind::Composite);
     }
 };
 

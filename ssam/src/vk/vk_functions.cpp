@@ -50,6 +50,18 @@ void loadFunctions(VkFunctions& vk, const DeviceDesc& desc) {
     SSAM_VK_DEVICE_FUNCTIONS(SSAM_VK_LOAD_DEVICE)
 #undef SSAM_VK_LOAD_INSTANCE
 #undef SSAM_VK_LOAD_DEVICE
+    if (desc.renderingPath == RenderingPath::DynamicRendering) {
+        const auto either = [&](const char* core, const char* khr) {
+            PFN_vkVoidFunction f = getDevice(desc.device, core);
+            return f ? f : getDevice(desc.device, khr);
+        };
+        vk.CmdBeginRendering =
+            reinterpret_cast<PFN_vkCmdBeginRendering>(either("vkCmdBeginRendering", "vkCmdBeginRenderingKHR"));
+        vk.CmdEndRendering =
+            reinterpret_cast<PFN_vkCmdEndRendering>(either("vkCmdEndRendering", "vkCmdEndRenderingKHR"));
+        if (!vk.CmdBeginRendering) throw missing("CmdBeginRendering (nor vkCmdBeginRenderingKHR)");
+        if (!vk.CmdEndRendering) throw missing("CmdEndRendering (nor vkCmdEndRenderingKHR)");
+    }
     vk.device = desc.device;
     vk.allocator = desc.allocationCallbacks;
 }

@@ -61,11 +61,15 @@ struct VkFunctions {
     SSAM_VK_INSTANCE_FUNCTIONS(SSAM_VK_MEMBER)
     SSAM_VK_DEVICE_FUNCTIONS(SSAM_VK_MEMBER)
 #undef SSAM_VK_MEMBER
+    // RenderingPath::DynamicRendering only: Vulkan 1.3's, else VK_KHR_dynamic_rendering's.
+    PFN_vkCmdBeginRendering CmdBeginRendering = nullptr;
+    PFN_vkCmdEndRendering CmdEndRendering = nullptr;
     VkDevice device = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator = nullptr;
 };
 
-// Every entry point above, or MissingEntryPoint naming the first the host's loader has not.
+// Every entry point above (and the dynamic-rendering ones when DeviceDesc asks for that path), or
+// MissingEntryPoint naming the first the host's loader has not.
 void loadFunctions(VkFunctions& vk, const DeviceDesc& desc);
 
 }  // namespace ssam::vk::detail

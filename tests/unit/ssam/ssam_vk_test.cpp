@@ -236,6 +236,55 @@ TEST_F(SsamVk, AResizeRetiresTheOldIntermediatesUntilTheirFramesComplete) {
     EXPECT_TRUE(memory.live.empty()) << memory.live.size() << " allocations not given back";
 }
 
+TEST_F(SsamVk, DynamicRenderingNeedsTheHostsFeature) {
+    ssam::vk::DeviceDesc d = describe(host);  // a device created without dynamicRendering
+    d.renderingPath = ssam::vk::RenderingPath::DynamicRendering;
+    EXPECT_EQ(ssam.initialize(d), Status::UnsupportedFeature);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("needs the host's dynamicRendering feature"));
+}
+
+// The dynamic-rendering path on a device with the feature: frames of two sizes, two in flight,
+// validation silent (its barriers stand in for the render passes' dependencies).
+TEST(SsamVkDynamicRendering, FramesOfTwoSizesRecordCleanly) {
+    vk_example::VulkanHost host(true, true);
+    ScreenSpaceAlphaMaskVk ssam;
+    ssam::vk::DeviceDesc d = describe(host);
+    d.dynamicRendering = true;
+    d.renderingPath = ssam::vk::RenderingPath::DynamicRendering;
+    ASSERT_EQ(ssam.initialize(d), Status::Ok) << ssam.lastMessage();
+    {
+        Targets big(host, 64, 48), small(host, 32, 16);
+        std::deque<VkFence> inFlight;
+        std::uint64_t completed = 0;
+        for (std::uint64_t frame = 0; frame < 4; ++frame) {
+            if (inFlight.size() == 2) {
+                host.wait(inFlight.front());
+                inFlight.pop_front();
+                ++completed;
+            }
+            const Targets& t = frame < 2 ? big : small;
+            const VkCommandBuffer cb = host.begin();
+            t.prepare(cb);
+            ssam::vk::FrameDesc f;
+            f.commandBuffer = cb;
+            f.colorView = t.color.view;
+            f.colorFormat = t.color.format;
+            f.depthView = t.depth.view;
+            f.depthFormat = t.depth.format;
+            f.width = frame < 2 ? 64 : 32;
+            f.height = frame < 2 ? 48 : 16;
+            f.frameIndex = frame;
+            f.framesCompleted = completed;
+            ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
+            inFlight.push_back(host.submit(cb));
+        }
+        for (VkFence f : inFlight) host.wait(f);
+        vkDeviceWaitIdle(host.device);
+    }
+    ssam.release();
+    for (const std::string& m : host.validationMessages) ADD_FAILURE() << "validation: " << m;
+}
+
 TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
     Targets t(host, 8, 8);

@@ -14,7 +14,8 @@
 // Way (a), SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
 // `draw` twice (mask pass, then colour pass) inside SSAM's render pass with SSAM's pipeline bound;
 // the host binds its vertex (and index) buffers as Settings::vertexLayout describes, sets per-draw
-// values through FoliageProgram and records its draws.
+// values through FoliageProgram and records its draws. With DeviceDesc::renderingPath
+// DynamicRendering, "render pass" below means SSAM's vkCmdBeginRendering scope.
 //
 // The synchronization contract (FrameDesc::commandBuffer, outside any render pass):
 //   image            on entry (host's last use)                          inside SSAM                          on exit
@@ -23,7 +24,7 @@
 //   host depth       DEPTH_STENCIL_ATTACHMENT_OPTIMAL; written at          mask: tested; colour: tested, written DEPTH_STENCIL_ATTACHMENT_OPTIMAL; SSAM's
 //                    EARLY/LATE_FRAGMENT_TESTS (DEPTH_STENCIL_ATTACHMENT_WRITE) (stencil loaded and stored as is)   writes at EARLY/LATE_FRAGMENT_TESTS
 // SSAM's render passes carry the external dependencies for exactly those stages and accesses, in
-// and out: a host whose last access was another stage (a transfer, a compute write, a sampled
+// and out (on the dynamic-rendering path, pipeline barriers of the same stages and accesses): a host whose last access was another stage (a transfer, a compute write, a sampled
 // read) records its own barrier into the entry row first, and one out of the exit row before it
 // uses the images another way (e.g. copies the colour out: COLOR_ATTACHMENT_OUTPUT /
 // COLOR_ATTACHMENT_WRITE -> TRANSFER / TRANSFER_READ). Between its passes SSAM records its own
@@ -78,6 +79,12 @@ struct DeviceMemoryCallbacks {
     void (*release)(void* user, VkDeviceMemory memory, VkDeviceSize offset) = nullptr;
 };
 
+// How SSAM records its passes. RenderPass: VkRenderPass + VkFramebuffer, whose external
+// dependencies are the contract (the 1.3.239 layers' synchronization validation checks this
+// path). DynamicRendering: vkCmdBeginRendering with pipeline barriers of the same stages and
+// accesses (no render pass or framebuffer objects); needs the host's dynamicRendering feature.
+enum class RenderingPath : int { RenderPass, DynamicRendering };
+
 // The host's Vulkan, as it created it. SSAM uses the device from one thread at a time (the
 // host's recording thread) and creates its objects with `allocationCallbacks`.
 struct DeviceDesc {
@@ -86,8 +93,11 @@ struct DeviceDesc {
     VkDevice device = VK_NULL_HANDLE;
     std::uint32_t queueFamily = 0;  // the family of the queue the host submits SSAM's frames on (graphics)
     std::uint32_t apiVersion = 0;   // what the host gave VkApplicationInfo::apiVersion; 1.0 or newer
-    bool dynamicRendering = false;  // enabled by the host (not used yet: SSAM records VkRenderPasses)
-    bool synchronization2 = false;  // enabled by the host (not used yet: SSAM records vkCmdPipelineBarrier)
+    // Features the host enabled. dynamicRendering: Vulkan 1.3's (or VK_KHR_dynamic_rendering's);
+    // synchronization2 is not used yet (SSAM records vkCmdPipelineBarrier).
+    bool dynamicRendering = false;
+    bool synchronization2 = false;
+    RenderingPath renderingPath = RenderingPath::RenderPass;
     PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
     PFN_vkGetDeviceProcAddr getDeviceProcAddr = nullptr;  // optional: resolved through the instance's
     const VkAllocationCallbacks* allocationCallbacks = nullptr;
