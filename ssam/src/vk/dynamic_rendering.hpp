@@ -8,8 +8,6 @@
 
 namespace ssam::vk::detail {
 
-enum class PassKind { Mask, Color, Composite };
-
 struct DynamicPassTargets {
     VkImageView hostColor = VK_NULL_HANDLE, hostDepth = VK_NULL_HANDLE;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;

@@ -144,7 +144,7 @@ VertexInput vertexInput(const VertexLayout& layout, bool withNormal) {
     return in;
 }
 
-enum class Kind { Mask, Color, Composite };
+using Kind = PassKind;
 
 // With `pass` null (RenderingPath::DynamicRendering) the attachment formats come from
 // VkPipelineRenderingCreateInfo instead.
@@ -173,40 +173,11 @@ VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Ki
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = viewport.scissorCount = 1;
-    // Both faces: a foliage card is seen from both sides (§3.5.2-3).
-    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    // Mask: tested, not written; colour: tested and written (§3.7); composite: none.
-    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth.depthTestEnable = composite ? VK_FALSE : VK_TRUE;
-    depth.depthWriteEnable = kind == Kind::Color ? VK_TRUE : VK_FALSE;
-    depth.depthCompareOp = toVk(settings.depthTest);
-    VkPipelineColorBlendAttachmentState blend{};
-    blend.colorWriteMask =
-        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    if (kind == Kind::Mask) {  // Table 3.1: RGB = MAX, A = ADD, all ONE
-        blend.blendEnable = VK_TRUE;
-        blend.srcColorBlendFactor = blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
-        blend.srcAlphaBlendFactor = blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        blend.colorBlendOp = VK_BLEND_OP_MAX;
-        blend.alphaBlendOp = VK_BLEND_OP_ADD;
-    } else if (composite) {  // Listing 3.2: lerp(opaque, foliage, mask'), the host's alpha kept
-        blend.blendEnable = VK_TRUE;
-        blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-        blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        blend.colorBlendOp = VK_BLEND_OP_ADD;
-        blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-        blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        blend.alphaBlendOp = VK_BLEND_OP_ADD;
-    }
+    PipelineState state;
+    fixedState(kind, settings, state);
     VkPipelineColorBlendStateCreateInfo blending{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blending.attachmentCount = 1;
-    blending.pAttachments = &blend;
+    blending.pAttachments = &state.blendAttachment;
     const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = 2;
@@ -217,9 +188,9 @@ VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Ki
     info.pVertexInputState = &vertex;
     info.pInputAssemblyState = &assembly;
     info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = composite ? nullptr : &depth;
+    info.pRasterizationState = &state.rasterization;
+    info.pMultisampleState = &state.multisample;
+    info.pDepthStencilState = composite ? nullptr : &state.depthStencil;
     info.pColorBlendState = &blending;
     info.pDynamicState = &dynamic;
     info.layout = composite ? shared.compositeLayout : shared.foliageLayout;
@@ -258,6 +229,47 @@ void destroyFramebuffers(const VkFunctions& vk, const FrameFramebuffers& f) noex
 constexpr std::size_t kFramebufferCacheSize = 8;  // e.g. a swapchain's images, each with its depth
 
 }  // namespace
+
+void fixedState(PassKind kind, const Settings& settings, PipelineState& state) {
+    // Both faces: a foliage card is seen from both sides (§3.5.2-3).
+    state.rasterization = {VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    state.rasterization.polygonMode = VK_POLYGON_MODE_FILL;
+    state.rasterization.cullMode = VK_CULL_MODE_NONE;
+    state.rasterization.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    state.rasterization.lineWidth = 1.0f;
+    state.multisample = {VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    state.multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    // Mask: tested, not written; colour: tested and written (§3.7); composite: none.
+    state.depthStencil = {VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    state.depthStencil.depthTestEnable = kind == Kind::Composite ? VK_FALSE : VK_TRUE;
+    state.depthStencil.depthWriteEnable = kind == Kind::Color ? VK_TRUE : VK_FALSE;
+    state.depthStencil.depthCompareOp = toVk(settings.depthTest);
+    VkPipelineColorBlendAttachmentState& blend = state.blendAttachment;
+    blend = {};
+    blend.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (kind == Kind::Mask) {  // Table 3.1: RGB = MAX, A = ADD, all ONE
+        blend.blendEnable = VK_TRUE;
+        blend.srcColorBlendFactor = blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+        blend.srcAlphaBlendFactor = blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        blend.colorBlendOp = VK_BLEND_OP_MAX;
+        blend.alphaBlendOp = VK_BLEND_OP_ADD;
+    } else if (kind == Kind::Composite) {  // Listing 3.2: lerp(opaque, foliage, mask'), the host's alpha kept
+        blend.blendEnable = VK_TRUE;
+        blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        blend.colorBlendOp = VK_BLEND_OP_ADD;
+        blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+        blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        blend.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
+}
+
+VkRenderPass createPassFor(const VkFunctions& vk, PassKind pass, VkFormat target, VkFormat depth) {
+    if (pass == Kind::Composite)
+        return createRenderPass(vk, target, false, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_FORMAT_UNDEFINED);
+    return createRenderPass(vk, target, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, depth);
+}
 
 void SharedObjects::create(const VkFunctions& vk) {
     try {
@@ -314,12 +326,9 @@ void Generation::create(const VkFunctions& vk, const MemorySource& memory, const
     key = k;
     try {
         if (!dynamicRendering) {
-            maskPass =
-                createRenderPass(vk, k.maskFormat, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, k.depthFormat);
-            colorPass =
-                createRenderPass(vk, k.colorFormat, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, k.depthFormat);
-            compositePass = createRenderPass(vk, k.colorFormat, false, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                             VK_FORMAT_UNDEFINED);
+            maskPass = createPassFor(vk, Kind::Mask, k.maskFormat, k.depthFormat);
+            colorPass = createPassFor(vk, Kind::Color, k.colorFormat, k.depthFormat);
+            compositePass = createPassFor(vk, Kind::Composite, k.colorFormat, VK_FORMAT_UNDEFINED);
         }
         maskPipeline = createPipeline(vk, shared, Kind::Mask, maskPass, k.maskFormat, k.depthFormat, settings);
         colorPipeline = createPipeline(vk, shared, Kind::Color, colorPass, k.colorFormat, k.depthFormat, settings);

@@ -16,6 +16,16 @@ namespace ssam::vk::detail {
 inline constexpr std::uint32_t kFoliagePushSize = 84;
 inline constexpr std::uint32_t kCompositePushSize = 12;
 
+enum class PassKind { Mask, Color, Composite };
+
+// The fixed-function state of a pass's pipeline: SSAM's own use it, and pipelineState() hands it
+// to the host's (way b).
+void fixedState(PassKind pass, const Settings& settings, PipelineState& state);
+
+// A render pass of SSAM's (RenderPass path): `target` cleared (mask, colour) or loaded (composite),
+// the host's depth loaded and stored (none for the composite: VK_FORMAT_UNDEFINED).
+VkRenderPass createPassFor(const VkFunctions& vk, PassKind pass, VkFormat target, VkFormat depth);
+
 struct SharedObjects {
     VkShaderModule foliageVertex = VK_NULL_HANDLE, maskVertex = VK_NULL_HANDLE, maskFragment = VK_NULL_HANDLE,
                    colorFragment = VK_NULL_HANDLE, fullscreenVertex = VK_NULL_HANDLE,

@@ -11,11 +11,20 @@
 // every call returns a Status, and the reason goes to an optional message callback and
 // lastMessage(). SPIR-V is compiled when SSAM is built and carried inside the library.
 //
-// Way (a), SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
+// Two ways to draw the foliage, as ssam::gl's:
+//  (a) SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
 // `draw` twice (mask pass, then colour pass) inside SSAM's render pass with SSAM's pipeline bound;
 // the host binds its vertex (and index) buffers as Settings::vertexLayout describes, sets per-draw
-// values through FoliageProgram and records its draws. With DeviceDesc::renderingPath
-// DynamicRendering, "render pass" below means SSAM's vkCmdBeginRendering scope.
+// values through FoliageProgram and records its draws.
+//  (b) The host's own pipelines: beginFrame(), then beginMaskPass() / draws / endMaskPass(),
+//      beginColorPass() / draws / endColorPass(), composite(). The host creates its mask and colour
+//      pipelines with the fixed-function state pipelineState() hands out (blend, depth-stencil,
+//      rasterization, multisample, the render pass or attachment formats; viewport and scissor
+//      dynamic: SSAM sets them), and its shaders keep ssam::gl's host-shader contract
+//      (ssam/gl/ssam_gl.hpp): the mask pass writes vec4(a) to location 0 and does not alpha-test,
+//      the colour pass writes (rgb, a) and discards !(a >= PassInfo::alphaReference).
+// With DeviceDesc::renderingPath DynamicRendering, "render pass" below means SSAM's
+// vkCmdBeginRendering scope.
 //
 // The synchronization contract (FrameDesc::commandBuffer, outside any render pass):
 //   image            on entry (host's last use)                          inside SSAM                          on exit
@@ -216,6 +225,31 @@ struct FoliageProgram {
     const detail::Recorder* recorder = nullptr;  // SSAM's (internal)
 };
 
+// What a pass of the host's own pipelines must know (way b).
+struct PassInfo {
+    FoliagePass pass = FoliagePass::Mask;
+    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;  // FrameDesc's, inside SSAM's render pass
+    float alphaReference = 0.0f;                     // colour pass: discard when !(alpha >= it); mask pass 0
+};
+
+// The fixed-function state of a pass's pipeline (way b): create the host's pipeline with these
+// (pColorBlendState: one attachment, blendAttachment), viewport and scissor dynamic, and
+// renderPass + subpass 0 (RenderingPath::RenderPass) or a VkPipelineRenderingCreateInfo of the
+// three formats (RenderingPath::DynamicRendering). `version` is pipelineStateVersion() when it
+// was handed out: a setSettings() that changes this state (depthTest, maskPrecision) changes it.
+struct PipelineState {
+    VkPipelineColorBlendAttachmentState blendAttachment{};
+    // Filled whole by pipelineState() (sType included; pNext null).
+    VkPipelineDepthStencilStateCreateInfo depthStencil{};
+    VkPipelineRasterizationStateCreateInfo rasterization{};
+    VkPipelineMultisampleStateCreateInfo multisample{};
+    VkRenderPass renderPass = VK_NULL_HANDLE;  // RenderPass path; SSAM's until release()
+    VkFormat colorAttachmentFormat = VK_FORMAT_UNDEFINED;
+    VkFormat depthAttachmentFormat = VK_FORMAT_UNDEFINED;
+    VkFormat stencilAttachmentFormat = VK_FORMAT_UNDEFINED;
+    std::uint64_t version = 0;
+};
+
 // ---- SSAM ----------------------------------------------------------------------------------
 
 class ScreenSpaceAlphaMaskVk {
@@ -260,6 +294,24 @@ public:
             frame, [](void* user, const FoliageProgram& p) { (*static_cast<Callable*>(user))(p); },
             const_cast<void*>(static_cast<const void*>(std::addressof(draw))));
     }
+
+    // Way (b): the host's own pipelines, one pass at a time, recorded into FrameDesc::commandBuffer.
+    // beginFrame checks the frame, (re)creates SSAM's targets and records its per-frame update;
+    // each begin...Pass begins SSAM's render pass (viewport and scissor set, nothing bound); the
+    // host binds its pipeline (pipelineState()), descriptor sets and buffers and draws; the
+    // matching end...Pass ends it; composite() records the composite and ends the frame. Out of
+    // order: InvalidCall; an open pass is then ended (the command buffer stays valid) and the frame
+    // abandoned.
+    Status beginFrame(const FrameDesc& frame) noexcept;
+    Status beginMaskPass(PassInfo* info = nullptr) noexcept;
+    Status endMaskPass() noexcept;
+    Status beginColorPass(PassInfo* info = nullptr) noexcept;
+    Status endColorPass() noexcept;
+    Status composite() noexcept;
+    // The state the host's pipeline for `pass` must use with the host's colour and depth formats.
+    Status pipelineState(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat,
+                         PipelineState* state) const noexcept;
+    std::uint64_t pipelineStateVersion() const noexcept;
 
     // SSAM's intermediates after render(), e.g. to show the paper's Figures 3.6-3.8: images in
     // SHADER_READ_ONLY_OPTIMAL, written at COLOR_ATTACHMENT_OUTPUT (VK_NULL_HANDLE until first used).

@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// ssam::vk's frame, recorded into the host's command buffer: the per-frame update, SSAM's three
+// passes on either rendering path, the built-in programs inside them (way a) and the host's
+// pipelines (way b).
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "impl.hpp"
+
+namespace ssam::vk {
+
+using detail::check;
+using detail::Constants;
+using detail::kFrameBlockSize;
+
+void FoliageProgram::setModel(const float columnMajor[16]) const noexcept {
+    if (recorder && columnMajor) recorder->push(0, 64, columnMajor);
+}
+void FoliageProgram::setBaseColorFactor(float r, float g, float b, float a) const noexcept {
+    const float factor[4] = {r, g, b, a};
+    if (recorder) recorder->push(64, 16, factor);
+}
+void FoliageProgram::bindBaseColorTexture(TextureId texture) const noexcept {
+    if (recorder) recorder->bindTexture(texture);
+}
+
+namespace {
+
+bool isColorFormat(VkFormat f) {
+    return f == VK_FORMAT_R8G8B8A8_UNORM || f == VK_FORMAT_R8G8B8A8_SRGB || f == VK_FORMAT_B8G8R8A8_UNORM ||
+           f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_R16G16B16A16_SFLOAT || f == VK_FORMAT_R32G32B32A32_SFLOAT;
+}
+bool isDepthFormat(VkFormat f) {
+    return f == VK_FORMAT_D16_UNORM || f == VK_FORMAT_X8_D24_UNORM_PACK32 || f == VK_FORMAT_D32_SFLOAT ||
+           f == VK_FORMAT_D24_UNORM_S8_UINT || f == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+}  // namespace
+
+VkFormat ScreenSpaceAlphaMaskVk::Impl::maskFormat() const {
+    return settings.maskPrecision == MaskPrecision::Rgba16f ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R8G8B8A8_UNORM;
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::checkFormat(VkFormat format, VkFormatFeatureFlags needed, const char* what) const {
+    VkFormatProperties p;
+    vk.GetPhysicalDeviceFormatProperties(device.physicalDevice, format, &p);
+    if ((p.optimalTilingFeatures & needed) != needed)
+        throw Failure(Status::UnsupportedFeature, std::string("ssam::vk: this device cannot use format ") +
+                                                      std::to_string(int(format)) + " as " + what);
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::checkFrame(const FrameDesc& f) const {
+    if (!f.commandBuffer) throw Failure(Status::InvalidArgument, "ssam::vk: FrameDesc::commandBuffer is null");
+    if (!f.colorView || !f.depthView)
+        throw Failure(Status::InvalidArgument, "ssam::vk: FrameDesc needs colorView and depthView");
+    if (f.width == 0 || f.height == 0)
+        throw Failure(Status::InvalidArgument, "ssam::vk: frame size " + std::to_string(f.width) + "x" +
+                                                   std::to_string(f.height) + " is not positive");
+    if (!isColorFormat(f.colorFormat))
+        throw Failure(Status::InvalidArgument,
+                      "ssam::vk: colorFormat " + std::to_string(int(f.colorFormat)) +
+                          " is not R8G8B8A8 / B8G8R8A8 UNORM or SRGB, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT");
+    if (!isDepthFormat(f.depthFormat))
+        throw Failure(Status::InvalidArgument, "ssam::vk: depthFormat " + std::to_string(int(f.depthFormat)) +
+                                                   " is not a depth format SSAM takes (ssam_vk.hpp)");
+    if (f.framesCompleted > f.frameIndex)
+        throw Failure(Status::InvalidArgument, "ssam::vk: framesCompleted " + std::to_string(f.framesCompleted) +
+                                                   " is past frameIndex " + std::to_string(f.frameIndex));
+}
+
+const detail::Generation& ScreenSpaceAlphaMaskVk::Impl::generationFor(const FrameDesc& f) {
+    const detail::GenerationKey key{f.colorFormat, f.depthFormat, maskFormat(), f.width, f.height, settingsVersion};
+    if (generation && generation->key == key) return *generation;
+    if (!generation || generation->key.colorFormat != key.colorFormat)
+        checkFormat(key.colorFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT,
+                    "a blended, sampled colour target");
+    checkFormat(key.maskFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT,
+                "the mask");
+    detail::Generation next;
+    next.create(vk, memory, shared, key, settings, dynamic());  // destroys what it made if it fails
+    if (generation) {
+        auto old = std::make_shared<detail::Generation>(std::move(*generation));
+        retired.add(old->lastUsedFrame, [this, old] { old->destroy(vk, memory); });
+    }
+    generation = std::move(next);
+    return *generation;
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::updateConstants(const FrameDesc& f, VkCommandBuffer cb) {
+    Constants c{};
+    std::memcpy(c.viewProj, f.viewProj, sizeof c.viewProj);
+    const Light& light = f.light;
+    const float length =
+        std::sqrt(light.towardLight[0] * light.towardLight[0] + light.towardLight[1] * light.towardLight[1] +
+                  light.towardLight[2] * light.towardLight[2]);
+    for (int i = 0; i < 3; ++i) {
+        c.towardLight[i] = length > 0.0f && std::isfinite(length) ? light.towardLight[i] / length : 0.0f;
+        c.lightColor[i] = light.color[i];
+        c.ambient[i] = light.ambient[i];
+    }
+    c.alphaReference = settings.colorAlphaReference;
+    c.normal[2] = 1.0f;
+    for (float& v : c.color) v = 1.0f;
+    for (int i = 0; i < 4; ++i) c.instanceModel[i * 5] = 1.0f;
+    // The previous frame's reads (vertex input, uniforms, the white texel) before these writes
+    // (an execution dependency is enough for a write after read), then the writes before this
+    // frame's reads.
+    VkBufferMemoryBarrier buffer{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+    buffer.srcQueueFamilyIndex = buffer.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    buffer.buffer = constants.buffer;
+    buffer.size = VK_WHOLE_SIZE;
+    buffer.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    VkImageMemoryBarrier image{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    image.srcQueueFamilyIndex = image.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    image.image = white.image;
+    image.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    image.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    image.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    image.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    constexpr VkPipelineStageFlags kReaders = VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    vk.CmdPipelineBarrier(cb, kReaders, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 1, &buffer, 1, &image);
+    vk.CmdUpdateBuffer(cb, constants.buffer, 0, sizeof c, &c);
+    const VkClearColorValue one{{1.0f, 1.0f, 1.0f, 1.0f}};
+    vk.CmdClearColorImage(cb, white.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1, &image.subresourceRange);
+    buffer.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    buffer.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_UNIFORM_READ_BIT;
+    image.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    image.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    image.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    image.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    vk.CmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, kReaders, 0, 0, nullptr, 1, &buffer, 1, &image);
+}
+
+// A pass begun on either path (RenderingPath), its pipeline bound, viewport and scissor the frame.
+void ScreenSpaceAlphaMaskVk::Impl::beginPass(const FrameDesc& f, const detail::Generation& g,
+                                             const detail::FrameFramebuffers* fb, detail::PassKind pass,
+                                             const VkClearValue* clear, VkPipeline pipeline) {
+    const VkCommandBuffer cb = f.commandBuffer;
+    if (dynamic()) {
+        detail::beginDynamicPass(vk, cb, pass, g, {f.colorView, f.depthView, f.depthFormat, f.width, f.height}, clear);
+    } else {
+        VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        begin.renderPass = pass == detail::PassKind::Mask    ? g.maskPass
+                           : pass == detail::PassKind::Color ? g.colorPass
+                                                             : g.compositePass;
+        begin.framebuffer = pass == detail::PassKind::Mask    ? fb->mask
+                            : pass == detail::PassKind::Color ? fb->color
+                                                              : fb->composite;
+        begin.renderArea = {{0, 0}, {f.width, f.height}};
+        begin.clearValueCount = clear ? 1 : 0;
+        begin.pClearValues = clear;
+        vk.CmdBeginRenderPass(cb, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    }
+    vk.CmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    const VkViewport viewport{0.0f, 0.0f, float(f.width), float(f.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {f.width, f.height}};
+    vk.CmdSetViewport(cb, 0, 1, &viewport);
+    vk.CmdSetScissor(cb, 0, 1, &scissor);
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::endPass(VkCommandBuffer cb, const detail::Generation& g, detail::PassKind pass) {
+    if (dynamic()) detail::endDynamicPass(vk, cb, pass, g);
+    else vk.CmdEndRenderPass(cb);
+}
+
+// One foliage pass: SSAM's pipeline, sets and default push constants bound, then the host's draws.
+void ScreenSpaceAlphaMaskVk::Impl::foliagePass(const FrameDesc& f, const detail::Generation& g,
+                                               const detail::FrameFramebuffers* fb, FoliagePass which,
+                                               const VkClearValue& clear, DrawFoliage draw, void* user) {
+    const VkCommandBuffer cb = f.commandBuffer;
+    const detail::PassKind kind = which == FoliagePass::Mask ? detail::PassKind::Mask : detail::PassKind::Color;
+    beginPass(f, g, fb, kind, &clear, which == FoliagePass::Mask ? g.maskPipeline : g.colorPipeline);
+    const VkDescriptorSet sets[] = {frameSet, whiteSet};
+    vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.foliageLayout, 0, 2, sets, 0, nullptr);
+    const VkDeviceSize offset = 0;
+    vk.CmdBindVertexBuffers(cb, settings.vertexLayout.constantsBinding, 1, &constants.buffer, &offset);
+    struct {
+        float model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        float factor[4] = {1, 1, 1, 1};
+        std::uint32_t hasTexture = 0;
+    } defaults;
+    static_assert(sizeof defaults == detail::kFoliagePushSize);
+    detail::Recorder recorder{&vk, cb, shared.foliageLayout, &textures, whiteSet};
+    recorder.push(0, detail::kFoliagePushSize, &defaults);
+    FoliageProgram program;
+    program.pass = which;
+    program.commandBuffer = cb;
+    program.layout = shared.foliageLayout;
+    program.alphaReference = which == FoliagePass::Color ? settings.colorAlphaReference : 0.0f;
+    program.recorder = &recorder;
+    try {
+        draw(user, program);
+    } catch (const std::exception& e) {
+        endPass(cb, g, kind);
+        throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
+                                                  foliagePassName(which) + " pass: " + e.what());
+    } catch (...) {
+        endPass(cb, g, kind);
+        throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
+                                                  foliagePassName(which) + " pass (not a std::exception)");
+    }
+    endPass(cb, g, kind);
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::render(const FrameDesc& f, DrawFoliage draw, void* user) {
+    expectInitialized("render");
+    checkFrame(f);
+    retired.collect(f.framesCompleted);
+    detail::Generation& g = const_cast<detail::Generation&>(generationFor(f));
+    const detail::FrameFramebuffers* fb =
+        dynamic() ? nullptr : &g.framebuffersFor(vk, f.colorView, f.depthView, f.frameIndex, retired);
+    g.lastUsedFrame = f.frameIndex;
+    const VkCommandBuffer cb = f.commandBuffer;
+    updateConstants(f, cb);
+    // 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD; depth tested, not written.
+    VkClearValue clear{};
+    foliagePass(f, g, fb, FoliagePass::Mask, clear, draw, user);
+    // 2. Colour pass (§3.5.3): cleared to the clear colour (§3.6.1); alpha-tested; depth written (§3.7).
+    for (int i = 0; i < 4; ++i) clear.color.float32[i] = settings.foliageClearColor[i];
+    foliagePass(f, g, fb, FoliagePass::Color, clear, draw, user);
+    // 3. Composite (§3.5.4, Listing 3.2) onto the host's colour.
+    beginPass(f, g, fb, detail::PassKind::Composite, nullptr, g.compositePipeline);
+    vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.compositeLayout, 0, 1, &g.compositeSet, 0,
+                             nullptr);
+    struct {
+        float maskLerp;
+        std::uint32_t squareMask, hasMaskAdd;
+    } push{settings.maskLerp, settings.squareMask ? 1u : 0u, 0u};
+    static_assert(sizeof push == detail::kCompositePushSize);
+    vk.CmdPushConstants(cb, shared.compositeLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
+    vk.CmdDraw(cb, 3, 1, 0, 0);
+    endPass(cb, g, detail::PassKind::Composite);
+}
+
+}  // namespace ssam::vk
