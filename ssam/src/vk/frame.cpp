@@ -57,16 +57,20 @@ void ScreenSpaceAlphaMaskVk::Impl::checkFrame(const FrameDesc& f) const {
     if (f.width == 0 || f.height == 0)
         throw Failure(Status::InvalidArgument, "ssam::vk: frame size " + std::to_string(f.width) + "x" +
                                                    std::to_string(f.height) + " is not positive");
-    if (!isColorFormat(f.colorFormat))
-        throw Failure(Status::InvalidArgument,
-                      "ssam::vk: colorFormat " + std::to_string(int(f.colorFormat)) +
-                          " is not R8G8B8A8 / B8G8R8A8 UNORM or SRGB, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT");
-    if (!isDepthFormat(f.depthFormat))
-        throw Failure(Status::InvalidArgument, "ssam::vk: depthFormat " + std::to_string(int(f.depthFormat)) +
-                                                   " is not a depth format SSAM takes (ssam_vk.hpp)");
+    checkFormats(f.colorFormat, f.depthFormat);
     if (f.framesCompleted > f.frameIndex)
         throw Failure(Status::InvalidArgument, "ssam::vk: framesCompleted " + std::to_string(f.framesCompleted) +
                                                    " is past frameIndex " + std::to_string(f.frameIndex));
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::checkFormats(VkFormat colorFormat, VkFormat depthFormat) const {
+    if (!isColorFormat(colorFormat))
+        throw Failure(Status::InvalidArgument,
+                      "ssam::vk: colorFormat " + std::to_string(int(colorFormat)) +
+                          " is not R8G8B8A8 / B8G8R8A8 UNORM or SRGB, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT");
+    if (!isDepthFormat(depthFormat))
+        throw Failure(Status::InvalidArgument, "ssam::vk: depthFormat " + std::to_string(int(depthFormat)) +
+                                                   " is not a depth format SSAM takes (ssam_vk.hpp)");
 }
 
 const detail::Generation& ScreenSpaceAlphaMaskVk::Impl::generationFor(const FrameDesc& f) {
@@ -153,7 +157,7 @@ void ScreenSpaceAlphaMaskVk::Impl::beginPass(const FrameDesc& f, const detail::G
         begin.pClearValues = clear;
         vk.CmdBeginRenderPass(cb, &begin, VK_SUBPASS_CONTENTS_INLINE);
     }
-    vk.CmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    if (pipeline) vk.CmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     const VkViewport viewport{0.0f, 0.0f, float(f.width), float(f.height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, {f.width, f.height}};
     vk.CmdSetViewport(cb, 0, 1, &viewport);
@@ -165,13 +169,81 @@ void ScreenSpaceAlphaMaskVk::Impl::endPass(VkCommandBuffer cb, const detail::Gen
     else vk.CmdEndRenderPass(cb);
 }
 
-// One foliage pass: SSAM's pipeline, sets and default push constants bound, then the host's draws.
-void ScreenSpaceAlphaMaskVk::Impl::foliagePass(const FrameDesc& f, const detail::Generation& g,
-                                               const detail::FrameFramebuffers* fb, FoliagePass which,
-                                               const VkClearValue& clear, DrawFoliage draw, void* user) {
-    const VkCommandBuffer cb = f.commandBuffer;
-    const detail::PassKind kind = which == FoliagePass::Mask ? detail::PassKind::Mask : detail::PassKind::Color;
-    beginPass(f, g, fb, kind, &clear, which == FoliagePass::Mask ? g.maskPipeline : g.colorPipeline);
+namespace {
+
+detail::PassKind kindOf(FoliagePass pass) {
+    return pass == FoliagePass::Mask ? detail::PassKind::Mask : detail::PassKind::Color;
+}
+
+const char* phaseName(detail::Phase phase) {
+    switch (phase) {
+        case detail::Phase::Idle: return "no frame is open";
+        case detail::Phase::FrameBegun: return "the frame is begun (beginMaskPass comes next)";
+        case detail::Phase::InMaskPass: return "the mask pass is open (endMaskPass comes next)";
+        case detail::Phase::MaskDone: return "the mask pass is done (beginColorPass comes next)";
+        case detail::Phase::InColorPass: return "the colour pass is open (endColorPass comes next)";
+        case detail::Phase::ColorDone: return "the colour pass is done (composite comes next)";
+    }
+    return "?";
+}
+
+}  // namespace
+
+void ScreenSpaceAlphaMaskVk::Impl::expect(detail::Phase expected, const char* call) const {
+    expectInitialized(call);
+    if (phase != expected)
+        throw Failure(Status::InvalidCall, std::string("ssam::vk: ") + call + " called when " + phaseName(phase));
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::abandonFrame() noexcept {
+    // An open pass is ended so that the host's command buffer stays valid.
+    if ((phase == detail::Phase::InMaskPass || phase == detail::Phase::InColorPass) && generation)
+        endPass(frame.commandBuffer, *generation,
+                phase == detail::Phase::InMaskPass ? detail::PassKind::Mask : detail::PassKind::Color);
+    phase = detail::Phase::Idle;
+    framebuffers = nullptr;
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::beginFrame(const FrameDesc& f) {
+    expect(detail::Phase::Idle, "beginFrame");
+    checkFrame(f);
+    retired.collect(f.framesCompleted);
+    detail::Generation& g = const_cast<detail::Generation&>(generationFor(f));
+    framebuffers = dynamic() ? nullptr : &g.framebuffersFor(vk, f.colorView, f.depthView, f.frameIndex, retired);
+    g.lastUsedFrame = f.frameIndex;
+    frame = f;
+    updateConstants(f, f.commandBuffer);
+    phase = detail::Phase::FrameBegun;
+}
+
+// 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD; depth tested, not written.
+// 2. Colour pass (§3.5.3): cleared to the clear colour (§3.6.1); alpha-tested; depth written (§3.7).
+// Nothing bound: the host's pipeline (way b) or SSAM's (drawBuiltIn) comes next.
+PassInfo ScreenSpaceAlphaMaskVk::Impl::beginFoliagePass(FoliagePass which) {
+    const bool mask = which == FoliagePass::Mask;
+    expect(mask ? detail::Phase::FrameBegun : detail::Phase::MaskDone, mask ? "beginMaskPass" : "beginColorPass");
+    VkClearValue clear{};
+    if (!mask)
+        for (int i = 0; i < 4; ++i) clear.color.float32[i] = settings.foliageClearColor[i];
+    const detail::Generation& g = *generation;
+    beginPass(frame, g, framebuffers, kindOf(which), &clear, VK_NULL_HANDLE);
+    phase = mask ? detail::Phase::InMaskPass : detail::Phase::InColorPass;
+    return {which, frame.commandBuffer, mask ? 0.0f : settings.colorAlphaReference};
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::endFoliagePass(FoliagePass which) {
+    const bool mask = which == FoliagePass::Mask;
+    expect(mask ? detail::Phase::InMaskPass : detail::Phase::InColorPass, mask ? "endMaskPass" : "endColorPass");
+    endPass(frame.commandBuffer, *generation, kindOf(which));
+    phase = mask ? detail::Phase::MaskDone : detail::Phase::ColorDone;
+}
+
+// Way (a) inside an open pass: SSAM's descriptor sets, constants binding and default push
+// constants, then the host's draws.
+void ScreenSpaceAlphaMaskVk::Impl::drawBuiltIn(const PassInfo& pass, DrawFoliage draw, void* user) {
+    const VkCommandBuffer cb = frame.commandBuffer;
+    vk.CmdBindPipeline(cb, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                       pass.pass == FoliagePass::Mask ? generation->maskPipeline : generation->colorPipeline);
     const VkDescriptorSet sets[] = {frameSet, whiteSet};
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.foliageLayout, 0, 2, sets, 0, nullptr);
     const VkDeviceSize offset = 0;
@@ -185,43 +257,28 @@ void ScreenSpaceAlphaMaskVk::Impl::foliagePass(const FrameDesc& f, const detail:
     detail::Recorder recorder{&vk, cb, shared.foliageLayout, &textures, whiteSet};
     recorder.push(0, detail::kFoliagePushSize, &defaults);
     FoliageProgram program;
-    program.pass = which;
+    program.pass = pass.pass;
     program.commandBuffer = cb;
     program.layout = shared.foliageLayout;
-    program.alphaReference = which == FoliagePass::Color ? settings.colorAlphaReference : 0.0f;
+    program.alphaReference = pass.alphaReference;
     program.recorder = &recorder;
     try {
         draw(user, program);
     } catch (const std::exception& e) {
-        endPass(cb, g, kind);
         throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
-                                                  foliagePassName(which) + " pass: " + e.what());
+                                                  foliagePassName(pass.pass) + " pass: " + e.what());
     } catch (...) {
-        endPass(cb, g, kind);
         throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
-                                                  foliagePassName(which) + " pass (not a std::exception)");
+                                                  foliagePassName(pass.pass) + " pass (not a std::exception)");
     }
-    endPass(cb, g, kind);
 }
 
-void ScreenSpaceAlphaMaskVk::Impl::render(const FrameDesc& f, DrawFoliage draw, void* user) {
-    expectInitialized("render");
-    checkFrame(f);
-    retired.collect(f.framesCompleted);
-    detail::Generation& g = const_cast<detail::Generation&>(generationFor(f));
-    const detail::FrameFramebuffers* fb =
-        dynamic() ? nullptr : &g.framebuffersFor(vk, f.colorView, f.depthView, f.frameIndex, retired);
-    g.lastUsedFrame = f.frameIndex;
-    const VkCommandBuffer cb = f.commandBuffer;
-    updateConstants(f, cb);
-    // 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD; depth tested, not written.
-    VkClearValue clear{};
-    foliagePass(f, g, fb, FoliagePass::Mask, clear, draw, user);
-    // 2. Colour pass (§3.5.3): cleared to the clear colour (§3.6.1); alpha-tested; depth written (§3.7).
-    for (int i = 0; i < 4; ++i) clear.color.float32[i] = settings.foliageClearColor[i];
-    foliagePass(f, g, fb, FoliagePass::Color, clear, draw, user);
-    // 3. Composite (§3.5.4, Listing 3.2) onto the host's colour.
-    beginPass(f, g, fb, detail::PassKind::Composite, nullptr, g.compositePipeline);
+// 3. Composite (§3.5.4, Listing 3.2) onto the host's colour.
+void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
+    expect(detail::Phase::ColorDone, "composite");
+    const detail::Generation& g = *generation;
+    const VkCommandBuffer cb = frame.commandBuffer;
+    beginPass(frame, g, framebuffers, detail::PassKind::Composite, nullptr, g.compositePipeline);
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.compositeLayout, 0, 1, &g.compositeSet, 0,
                              nullptr);
     struct {
@@ -232,6 +289,46 @@ void ScreenSpaceAlphaMaskVk::Impl::render(const FrameDesc& f, DrawFoliage draw, 
     vk.CmdPushConstants(cb, shared.compositeLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
     vk.CmdDraw(cb, 3, 1, 0, 0);
     endPass(cb, g, detail::PassKind::Composite);
+    phase = detail::Phase::Idle;
+    framebuffers = nullptr;
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::render(const FrameDesc& f, DrawFoliage draw, void* user) {
+    expectInitialized("render");
+    beginFrame(f);
+    for (FoliagePass pass : {FoliagePass::Mask, FoliagePass::Color}) {
+        const PassInfo info = beginFoliagePass(pass);
+        drawBuiltIn(info, draw, user);
+        endFoliagePass(pass);
+    }
+    compositeFrame();
+}
+
+// Way (b): the state of SSAM's own pipeline for the pass, and a render pass compatible with its
+// (made once per formats, kept until release()).
+PipelineState ScreenSpaceAlphaMaskVk::Impl::pipelineStateFor(FoliagePass pass, VkFormat colorFormat,
+                                                             VkFormat depthFormat) {
+    expectInitialized("pipelineState");
+    checkFormats(colorFormat, depthFormat);
+    PipelineState state;
+    detail::fixedState(kindOf(pass), settings, state);
+    const VkFormat target = pass == FoliagePass::Mask ? maskFormat() : colorFormat;
+    state.colorAttachmentFormat = target;
+    state.depthAttachmentFormat = depthFormat;
+    state.stencilAttachmentFormat =
+        depthFormat == VK_FORMAT_D24_UNORM_S8_UINT || depthFormat == VK_FORMAT_D32_SFLOAT_S8_UINT ? depthFormat
+                                                                                                  : VK_FORMAT_UNDEFINED;
+    state.version = pipelineStateVersion;
+    if (!dynamic()) {
+        for (const CompatiblePass& c : compatiblePasses)
+            if (c.kind == kindOf(pass) && c.target == target && c.depth == depthFormat) state.renderPass = c.pass;
+        if (!state.renderPass) {
+            compatiblePasses.reserve(compatiblePasses.size() + 1);  // no throw after the pass exists
+            state.renderPass = detail::createPassFor(vk, kindOf(pass), target, depthFormat);
+            compatiblePasses.push_back({kindOf(pass), target, depthFormat, state.renderPass});
+        }
+    }
+    return state;
 }
 
 }  // namespace ssam::vk

@@ -86,6 +86,20 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     std::vector<VkDescriptorPool> textureSetPools;
     std::optional<detail::Generation> generation;
     detail::Retired retired;
+
+    // The open frame (way b, and way a through it).
+    detail::Phase phase = detail::Phase::Idle;
+    FrameDesc frame;
+    const detail::FrameFramebuffers* framebuffers = nullptr;  // RenderPass path
+
+    // Way (b): render passes compatible with SSAM's, handed out by pipelineState().
+    struct CompatiblePass {
+        detail::PassKind kind;
+        VkFormat target, depth;
+        VkRenderPass pass;
+    };
+    std::vector<CompatiblePass> compatiblePasses;
+    std::uint64_t pipelineStateVersion = 0;  // changed by a setSettings() that changes PipelineState
     static constexpr std::uint32_t kTexturesPerPool = 64;
 
     // ---- Objects made once ----------------------------------------------------------------
@@ -113,17 +127,23 @@ struct ScreenSpaceAlphaMaskVk::Impl {
         return status;
     }
     template <class Body>
-    Status run(Body&& body) noexcept {
+    // Runs one public call: Ok, or the Failure's status with its message; a frame call that fails
+    // abandons the open frame (abandonFrame), a query (`frameCall` false) leaves it.
+    Status run(Body&& body, bool frameCall = true) noexcept {
         try {
             body();
             return Status::Ok;
         } catch (const Failure& e) {
+            if (frameCall) abandonFrame();
             return fail(e.status, e.what());
         } catch (const std::bad_alloc&) {
+            if (frameCall) abandonFrame();
             return fail(Status::OutOfMemory, "ssam::vk: out of memory");
         } catch (const std::exception& e) {
+            if (frameCall) abandonFrame();
             return fail(Status::Internal, (std::string("ssam::vk: unexpected error: ") + e.what()).c_str());
         } catch (...) {
+            if (frameCall) abandonFrame();
             return fail(Status::Internal, "ssam::vk: unexpected error");
         }
     }
@@ -144,10 +164,17 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     void beginPass(const FrameDesc& f, const detail::Generation& g, const detail::FrameFramebuffers* fb,
                    detail::PassKind pass, const VkClearValue* clear, VkPipeline pipeline);
     void endPass(VkCommandBuffer cb, const detail::Generation& g, detail::PassKind pass);
-    // One foliage pass: SSAM's pipeline, sets and default push constants bound, then the host's draws.
-    void foliagePass(const FrameDesc& f, const detail::Generation& g, const detail::FrameFramebuffers* fb,
-                     FoliagePass which, const VkClearValue& clear, DrawFoliage draw, void* user);
+    void checkFormats(VkFormat colorFormat, VkFormat depthFormat) const;
+    // The frame, one step at a time (way b; way a through it).
+    void expect(detail::Phase expected, const char* call) const;
+    void abandonFrame() noexcept;
+    void beginFrame(const FrameDesc& f);
+    PassInfo beginFoliagePass(FoliagePass which);
+    void endFoliagePass(FoliagePass which);
+    void drawBuiltIn(const PassInfo& pass, DrawFoliage draw, void* user);
+    void compositeFrame();
     void render(const FrameDesc& f, DrawFoliage draw, void* user);
+    PipelineState pipelineStateFor(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat);
 };
 
 }  // namespace ssam::vk

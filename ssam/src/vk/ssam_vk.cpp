@@ -170,7 +170,10 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
 
 void ScreenSpaceAlphaMaskVk::Impl::releaseObjects() noexcept {
     if (!initialized) return;
+    abandonFrame();
     retired.destroyAll();
+    for (const CompatiblePass& c : compatiblePasses) vk.DestroyRenderPass(vk.device, c.pass, vk.allocator);
+    compatiblePasses.clear();
     if (generation) generation->destroy(vk, memory);
     generation.reset();
     for (VkDescriptorPool p : texturePools) vk.DestroyDescriptorPool(vk.device, p, vk.allocator);
@@ -270,8 +273,13 @@ void ScreenSpaceAlphaMaskVk::release() noexcept {
 Status ScreenSpaceAlphaMaskVk::setSettings(const Settings& settings) noexcept {
     if (!impl_) return Status::InvalidCall;
     return impl_->run([&] {
+        if (impl_->phase != detail::Phase::Idle)
+            throw Failure(Status::InvalidCall, "ssam::vk: setSettings() inside a frame");
         validate(settings);
         if (!samePipelines(settings, impl_->settings)) ++impl_->settingsVersion;
+        // What PipelineState holds (way b): the depth test and the mask's format.
+        if (settings.depthTest != impl_->settings.depthTest || settings.maskPrecision != impl_->settings.maskPrecision)
+            ++impl_->pipelineStateVersion;
         impl_->settings = settings;
     });
 }
@@ -299,6 +307,55 @@ Status ScreenSpaceAlphaMaskVk::render(const FrameDesc& frame, DrawFoliage draw, 
     if (!impl_) return Status::InvalidCall;
     if (!draw) return impl_->fail(Status::InvalidArgument, "ssam::vk: render() without a draw callback");
     return impl_->run([&] { impl_->render(frame, draw, user); });
+}
+
+Status ScreenSpaceAlphaMaskVk::beginFrame(const FrameDesc& frame) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] { impl_->beginFrame(frame); });
+}
+
+Status ScreenSpaceAlphaMaskVk::beginMaskPass(PassInfo* info) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] {
+        const PassInfo pass = impl_->beginFoliagePass(FoliagePass::Mask);
+        if (info) *info = pass;
+    });
+}
+
+Status ScreenSpaceAlphaMaskVk::endMaskPass() noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] { impl_->endFoliagePass(FoliagePass::Mask); });
+}
+
+Status ScreenSpaceAlphaMaskVk::beginColorPass(PassInfo* info) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] {
+        const PassInfo pass = impl_->beginFoliagePass(FoliagePass::Color);
+        if (info) *info = pass;
+    });
+}
+
+Status ScreenSpaceAlphaMaskVk::endColorPass() noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] { impl_->endFoliagePass(FoliagePass::Color); });
+}
+
+Status ScreenSpaceAlphaMaskVk::composite() noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] { impl_->compositeFrame(); });
+}
+
+Status ScreenSpaceAlphaMaskVk::pipelineState(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat,
+                                             PipelineState* state) const noexcept {
+    if (!impl_) return Status::InvalidCall;
+    if (!state) return impl_->fail(Status::InvalidArgument, "ssam::vk: pipelineState() without a PipelineState");
+    if (pass != FoliagePass::Mask && pass != FoliagePass::Color)
+        return impl_->fail(Status::InvalidArgument, "ssam::vk: pipelineState() of a pass that is not a FoliagePass");
+    return impl_->run([&] { *state = impl_->pipelineStateFor(pass, colorFormat, depthFormat); }, false);
+}
+
+std::uint64_t ScreenSpaceAlphaMaskVk::pipelineStateVersion() const noexcept {
+    return impl_ ? impl_->pipelineStateVersion : 0;
 }
 
 ScreenSpaceAlphaMaskVk::Intermediates ScreenSpaceAlphaMaskVk::intermediates() const noexcept {

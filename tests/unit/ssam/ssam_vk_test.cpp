@@ -8,6 +8,7 @@
 #include <cstring>
 #include <deque>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -283,6 +284,78 @@ TEST(SsamVkDynamicRendering, FramesOfTwoSizesRecordCleanly) {
     }
     ssam.release();
     for (const std::string& m : host.validationMessages) ADD_FAILURE() << "validation: " << m;
+}
+
+// Way (b): the frame's steps in order only; an out-of-order call ends the open pass (the host's
+// command buffer stays valid: it is submitted here under validation) and abandons the frame.
+TEST_F(SsamVk, HostPipelineStepsOutOfOrderAreInvalidAndLeaveTheCommandBufferValid) {
+    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+    EXPECT_EQ(ssam.beginMaskPass(), Status::InvalidCall);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("beginMaskPass called when no frame is open"));
+    Targets t(host, 16, 16);
+    const VkCommandBuffer cb = host.begin();
+    t.prepare(cb);
+    ssam::vk::FrameDesc f;
+    f.commandBuffer = cb;
+    f.colorView = t.color.view;
+    f.colorFormat = t.color.format;
+    f.depthView = t.depth.view;
+    f.depthFormat = t.depth.format;
+    f.width = f.height = 16;
+    ASSERT_EQ(ssam.beginFrame(f), Status::Ok) << ssam.lastMessage();
+    ssam::vk::PassInfo info;
+    ASSERT_EQ(ssam.beginMaskPass(&info), Status::Ok);
+    EXPECT_EQ(info.pass, ssam::vk::FoliagePass::Mask);
+    EXPECT_EQ(info.commandBuffer, cb);
+    EXPECT_EQ(info.alphaReference, 0.0f);
+    // A query inside the pass does not disturb it, even when refused.
+    ssam::vk::PipelineState state;
+    EXPECT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Color, VK_FORMAT_R5G6B5_UNORM_PACK16, t.depth.format, &state),
+              Status::InvalidArgument);
+    EXPECT_EQ(ssam.endMaskPass(), Status::Ok);
+    EXPECT_EQ(ssam.composite(), Status::InvalidCall);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("the mask pass is done (beginColorPass comes next)"));
+    EXPECT_EQ(ssam.beginColorPass(), Status::InvalidCall);  // the frame was abandoned
+    ASSERT_EQ(ssam.beginFrame(f), Status::Ok);
+    ASSERT_EQ(ssam.beginMaskPass(), Status::Ok);
+    EXPECT_EQ(ssam.beginFrame(f), Status::InvalidCall);  // ends the open mask pass
+    host.wait(host.submit(cb));
+}
+
+// What the host's pipelines are created with: SSAM's own state, and a version that moves only
+// when a setting changes it.
+TEST_F(SsamVk, PipelineStateFollowsTheSettings) {
+    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+    ssam::vk::PipelineState mask, color;
+    ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Mask, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &mask),
+              Status::Ok);
+    ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Color, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &color),
+              Status::Ok);
+    // Table 3.1: RGB = MAX, A = ADD; the mask pass tests depth without writing it, the colour pass writes it.
+    EXPECT_EQ(mask.blendAttachment.colorBlendOp, VK_BLEND_OP_MAX);
+    EXPECT_EQ(mask.blendAttachment.alphaBlendOp, VK_BLEND_OP_ADD);
+    EXPECT_EQ(mask.depthStencil.depthWriteEnable, VK_FALSE);
+    EXPECT_EQ(color.blendAttachment.blendEnable, VK_FALSE);
+    EXPECT_EQ(color.depthStencil.depthWriteEnable, VK_TRUE);
+    EXPECT_EQ(color.depthStencil.depthCompareOp, VK_COMPARE_OP_LESS);
+    EXPECT_EQ(mask.rasterization.cullMode, VK_CULL_MODE_NONE);
+    EXPECT_EQ(mask.colorAttachmentFormat, VK_FORMAT_R8G8B8A8_UNORM);
+    EXPECT_NE(mask.renderPass, VK_NULL_HANDLE);
+    const std::uint64_t version = ssam.pipelineStateVersion();
+    EXPECT_EQ(mask.version, version);
+    ssam::vk::Settings s;
+    s.maskLerp = 0.5f;  // the composite's: the passes' state stays
+    ASSERT_EQ(ssam.setSettings(s), Status::Ok);
+    EXPECT_EQ(ssam.pipelineStateVersion(), version);
+    s.depthTest = ssam::vk::DepthTest::Greater;  // reverse-Z
+    s.maskPrecision = ssam::vk::MaskPrecision::Rgba16f;
+    ASSERT_EQ(ssam.setSettings(s), Status::Ok);
+    EXPECT_NE(ssam.pipelineStateVersion(), version);
+    ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Mask, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &mask),
+              Status::Ok);
+    EXPECT_EQ(mask.depthStencil.depthCompareOp, VK_COMPARE_OP_GREATER);
+    EXPECT_EQ(mask.colorAttachmentFormat, VK_FORMAT_R16G16B16A16_SFLOAT);
+    EXPECT_EQ(mask.version, ssam.pipelineStateVersion());
 }
 
 TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {

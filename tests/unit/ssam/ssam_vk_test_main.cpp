@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // main() of unit_ssam_vk: ssam::vk is host-neutral, so its tests make their Vulkan the way a host
-// does (the vk_embedding example's VulkanHost), not through the engine's backend. Skips (exit 77,
+// does (the Vulkan examples' VulkanHost), not through the engine's backend. Skips (exit 77,
 // ctest SKIP_RETURN_CODE) when there is no Vulkan device with the validation layer, and says why;
 // with CI=true that is a failure instead (exit 1). Listing tests never needs Vulkan.
 #include <cstdio>
