@@ -56,11 +56,13 @@ if(EXAMPLE_SOURCE)
       message(FATAL_ERROR "the installed-package example ${example} failed (${rc}):\n${err}")
     endif()
   endforeach()
-  # The Vulkan example (ssam::vk), built by the same project when the package has the vk component.
-  execute_process(COMMAND ${EXAMPLE_BUILD}/ssam_vk_embedding --out ${EXAMPLE_BUILD}/ssam_vk_embedding.png
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${out}")
-  if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)
-    message(FATAL_ERROR "the installed-package example ssam_vk_embedding failed (${rc}):\n${err}")
-  endif()
+  # The Vulkan examples (ssam::vk), built by the same project when the package has the vk component.
+  foreach(example ssam_vk_embedding ssam_vk_host_shaders)
+    execute_process(COMMAND ${EXAMPLE_BUILD}/${example} --out ${EXAMPLE_BUILD}/${example}.png
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message("${out}")
+    if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)
+      message(FATAL_ERROR "the installed-package example ${example} failed (${rc}):\n${err}")
+    endif()
+  endforeach()
 endif()
