@@ -77,7 +77,7 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
                 args.validation ? ", validation with synchronization validation" : "");
     if (args.dynamicRendering) std::printf("SSAM records with dynamic rendering\n");
     {
-        HostScene scene(host);
+        HostScene scene(host, args.wind);
         ssam::vk::ScreenSpaceAlphaMaskVk ssam;
         ssam.setMessageCallback(
             [](void*, ssam::vk::Severity severity, const char* message) {
@@ -122,6 +122,8 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             frame.width = kWidth;
             frame.height = kHeight;
             std::copy(std::begin(kViewProj), std::end(kViewProj), frame.viewProj);
+            frame.foliageBounds = scene.cardBounds.data();
+            frame.foliageBoundsCount = scene.cardBounds.size();
             frame.frameIndex = std::uint64_t(i);
             frame.framesCompleted = framesCompleted;
             foliage->record(ssam, frame);

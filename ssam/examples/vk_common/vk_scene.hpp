@@ -11,6 +11,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <ssam/vk/ssam_vk.hpp>
+
 #include "scene.hpp"
 #include "vk_host.hpp"
 
@@ -67,10 +69,12 @@ struct HostScene {
     vk_example::VulkanHost& host;
     vk_example::HostImage color, depth, leaf;
     vk_example::HostBuffer vertices, readback;
+    std::vector<ssam::vk::Box> cardBounds;  // FrameDesc::foliageBounds
     VkRenderPass opaquePass = VK_NULL_HANDLE;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
 
-    explicit HostScene(vk_example::VulkanHost& h) : host(h) {
+    // `wind`: how far (world units, in x) the host's shaders bend the cards' tops; 0 for none.
+    HostScene(vk_example::VulkanHost& h, float wind) : host(h) {
         color = host.createImage(VK_FORMAT_R8G8B8A8_UNORM, kWidth, kHeight,
                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                  VK_IMAGE_ASPECT_COLOR_BIT);
@@ -80,7 +84,13 @@ struct HostScene {
             host.createImage(VK_FORMAT_R8G8B8A8_UNORM, kLeafSize, kLeafSize,
                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
         std::vector<Vertex> cards;
-        for (const Rect3& r : kCards) appendStrip(cards, r, kCardRows);
+        for (const Rect3& r : kCards) {
+            appendStrip(cards, r, kCardRows);
+            // Bounds hold every pixel the card can reach, bent or not (or the composite's scissor
+            // would cut the bend off): the wind moves its top |wind| at most, in x.
+            cardBounds.push_back({{r.x0 + std::min(wind, 0.0f), r.y0, std::min(r.zLeft, r.zRight)},
+                                  {r.x1 + std::max(wind, 0.0f), r.y1, std::max(r.zLeft, r.zRight)}});
+        }
         vertices = host.createBuffer(cards.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         std::memcpy(vertices.mapped, cards.data(), cards.size() * sizeof(Vertex));
         readback = host.createBuffer(VkDeviceSize(kWidth) * kHeight * 4,

@@ -97,7 +97,9 @@ public:
             for (ssam::vk::FoliagePass pass : {ssam::vk::FoliagePass::Mask, ssam::vk::FoliagePass::Color})
                 pipelines_[int(pass)] = createPipeline(ssam, pass, frame.colorFormat, frame.depthFormat);
         }
-        checkSsam(ssam, ssam.beginFrame(frame), "ssam::vk beginFrame");
+        ssam::vk::FrameReport report;
+        checkSsam(ssam, ssam.beginFrame(frame, &report), "ssam::vk beginFrame");
+        if (!report.foliageInView) return;  // no card in view: the frame is over, nothing was recorded
         for (ssam::vk::FoliagePass pass : {ssam::vk::FoliagePass::Mask, ssam::vk::FoliagePass::Color}) {
             ssam::vk::PassInfo info;
             const bool mask = pass == ssam::vk::FoliagePass::Mask;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <string>
 
+#include "bounds.hpp"
 #include "impl.hpp"
 
 namespace ssam::vk {
@@ -58,6 +59,9 @@ void ScreenSpaceAlphaMaskVk::Impl::checkFrame(const FrameDesc& f) const {
         throw Failure(Status::InvalidArgument, "ssam::vk: frame size " + std::to_string(f.width) + "x" +
                                                    std::to_string(f.height) + " is not positive");
     checkFormats(f.colorFormat, f.depthFormat);
+    if (f.foliageBoundsCount > 0 && !f.foliageBounds)
+        throw Failure(Status::InvalidArgument, "ssam::vk: foliageBoundsCount is " +
+                                                   std::to_string(f.foliageBoundsCount) + " but foliageBounds is null");
     if (f.framesCompleted > f.frameIndex)
         throw Failure(Status::InvalidArgument, "ssam::vk: framesCompleted " + std::to_string(f.framesCompleted) +
                                                    " is past frameIndex " + std::to_string(f.frameIndex));
@@ -204,16 +208,24 @@ void ScreenSpaceAlphaMaskVk::Impl::abandonFrame() noexcept {
     framebuffers = nullptr;
 }
 
-void ScreenSpaceAlphaMaskVk::Impl::beginFrame(const FrameDesc& f) {
+FrameReport ScreenSpaceAlphaMaskVk::Impl::beginFrame(const FrameDesc& f) {
     expect(detail::Phase::Idle, "beginFrame");
     checkFrame(f);
     retired.collect(f.framesCompleted);
+    FrameReport report;
+    const std::optional<Rect> visible = detail::compositeRegion(f);
+    if (!visible) return report;  // no foliage in view: nothing recorded, not even SSAM's targets made
     detail::Generation& g = const_cast<detail::Generation&>(generationFor(f));
     framebuffers = dynamic() ? nullptr : &g.framebuffersFor(vk, f.colorView, f.depthView, f.frameIndex, retired);
     g.lastUsedFrame = f.frameIndex;
     frame = f;
     updateConstants(f, f.commandBuffer);
     phase = detail::Phase::FrameBegun;
+    region = *visible;
+    report.foliageInView = true;
+    report.passesRun = 3;
+    report.compositeRegion = region;
+    return report;
 }
 
 // 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD; depth tested, not written.
@@ -279,6 +291,8 @@ void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
     const detail::Generation& g = *generation;
     const VkCommandBuffer cb = frame.commandBuffer;
     beginPass(frame, g, framebuffers, detail::PassKind::Composite, nullptr, g.compositePipeline);
+    const VkRect2D scissor{{region.x, region.y}, {std::uint32_t(region.width), std::uint32_t(region.height)}};
+    vk.CmdSetScissor(cb, 0, 1, &scissor);  // only where the foliage can be
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.compositeLayout, 0, 1, &g.compositeSet, 0,
                              nullptr);
     struct {
@@ -293,15 +307,17 @@ void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
     framebuffers = nullptr;
 }
 
-void ScreenSpaceAlphaMaskVk::Impl::render(const FrameDesc& f, DrawFoliage draw, void* user) {
+FrameReport ScreenSpaceAlphaMaskVk::Impl::render(const FrameDesc& f, DrawFoliage draw, void* user) {
     expectInitialized("render");
-    beginFrame(f);
+    const FrameReport report = beginFrame(f);
+    if (!report.foliageInView) return report;
     for (FoliagePass pass : {FoliagePass::Mask, FoliagePass::Color}) {
         const PassInfo info = beginFoliagePass(pass);
         drawBuiltIn(info, draw, user);
         endFoliagePass(pass);
     }
     compositeFrame();
+    return report;
 }
 
 // Way (b): the state of SSAM's own pipeline for the pass, and a render pass compatible with its

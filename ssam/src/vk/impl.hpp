@@ -91,6 +91,7 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     detail::Phase phase = detail::Phase::Idle;
     FrameDesc frame;
     const detail::FrameFramebuffers* framebuffers = nullptr;  // RenderPass path
+    Rect region;                                              // the composite's scissor
 
     // Way (b): render passes compatible with SSAM's, handed out by pipelineState().
     struct CompatiblePass {
@@ -168,12 +169,12 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     // The frame, one step at a time (way b; way a through it).
     void expect(detail::Phase expected, const char* call) const;
     void abandonFrame() noexcept;
-    void beginFrame(const FrameDesc& f);
+    FrameReport beginFrame(const FrameDesc& f);
     PassInfo beginFoliagePass(FoliagePass which);
     void endFoliagePass(FoliagePass which);
     void drawBuiltIn(const PassInfo& pass, DrawFoliage draw, void* user);
     void compositeFrame();
-    void render(const FrameDesc& f, DrawFoliage draw, void* user);
+    FrameReport render(const FrameDesc& f, DrawFoliage draw, void* user);
     PipelineState pipelineStateFor(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat);
 };
 

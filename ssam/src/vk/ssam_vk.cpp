@@ -303,15 +303,24 @@ Status ScreenSpaceAlphaMaskVk::destroyTexture(TextureId id, std::uint64_t lastFr
     return impl_->run([&] { impl_->destroyTexture(id, lastFrameIndex); });
 }
 
-Status ScreenSpaceAlphaMaskVk::render(const FrameDesc& frame, DrawFoliage draw, void* user) noexcept {
+Status ScreenSpaceAlphaMaskVk::render(const FrameDesc& frame, DrawFoliage draw, void* user,
+                                      FrameReport* report) noexcept {
     if (!impl_) return Status::InvalidCall;
+    if (report) *report = {};
     if (!draw) return impl_->fail(Status::InvalidArgument, "ssam::vk: render() without a draw callback");
-    return impl_->run([&] { impl_->render(frame, draw, user); });
+    return impl_->run([&] {
+        const FrameReport done = impl_->render(frame, draw, user);
+        if (report) *report = done;
+    });
 }
 
-Status ScreenSpaceAlphaMaskVk::beginFrame(const FrameDesc& frame) noexcept {
+Status ScreenSpaceAlphaMaskVk::beginFrame(const FrameDesc& frame, FrameReport* report) noexcept {
     if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->beginFrame(frame); });
+    if (report) *report = {};
+    return impl_->run([&] {
+        const FrameReport begun = impl_->beginFrame(frame);
+        if (report) *report = begun;
+    });
 }
 
 Status ScreenSpaceAlphaMaskVk::beginMaskPass(PassInfo* info) noexcept {

@@ -358,6 +358,51 @@ TEST_F(SsamVk, PipelineStateFollowsTheSettings) {
     EXPECT_EQ(mask.version, ssam.pipelineStateVersion());
 }
 
+// FrameDesc::foliageBounds: none in view records nothing (the callback is not called); in view,
+// the composite's region is their screen rectangle, rows from the top (Vulkan's y down).
+TEST_F(SsamVk, FoliageBoundsOutOfViewRecordNothing) {
+    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+    Targets t(host, 64, 64);
+    const VkCommandBuffer cb = host.begin();
+    t.prepare(cb);
+    ssam::vk::FrameDesc f;
+    f.commandBuffer = cb;
+    f.colorView = t.color.view;
+    f.colorFormat = t.color.format;
+    f.depthView = t.depth.view;
+    f.depthFormat = t.depth.format;
+    f.width = f.height = 64;
+    const float vulkanViewProj[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // world y up
+    std::memcpy(f.viewProj, vulkanViewProj, sizeof f.viewProj);
+    const ssam::vk::Box behind{{-0.5f, -0.5f, -3.0f}, {0.5f, 0.5f, -2.0f}};  // z < 0: behind the camera
+    f.foliageBounds = &behind;
+    f.foliageBoundsCount = 1;
+    int calls = 0;
+    ssam::vk::FrameReport report;
+    ASSERT_EQ(ssam.render(
+                  f, [&](const ssam::vk::FoliageProgram&) { ++calls; }, &report),
+              Status::Ok);
+    EXPECT_FALSE(report.foliageInView);
+    EXPECT_EQ(report.passesRun, 0);
+    EXPECT_EQ(calls, 0);
+    EXPECT_EQ(ssam.intermediates().mask, VK_NULL_HANDLE);                  // not even its targets were made
+    const ssam::vk::Box topRight{{0.0f, 0.0f, 0.5f}, {1.0f, 1.0f, 0.5f}};  // world x, y >= 0
+    f.foliageBounds = &topRight;
+    ASSERT_EQ(ssam.render(
+                  f, [&](const ssam::vk::FoliageProgram&) { ++calls; }, &report),
+              Status::Ok);
+    EXPECT_TRUE(report.foliageInView);
+    EXPECT_EQ(report.passesRun, 3);
+    EXPECT_EQ(calls, 2);
+    EXPECT_GE(report.compositeRegion.x, 31);  // the right half
+    EXPECT_LE(report.compositeRegion.y, 0);   // the top half: rows from the top
+    EXPECT_LE(report.compositeRegion.height, 33);
+    f.foliageBounds = nullptr;
+    EXPECT_EQ(ssam.render(f, [&](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("foliageBoundsCount is 1 but foliageBounds is null"));
+    host.wait(host.submit(cb));
+}
+
 TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
     Targets t(host, 8, 8);

@@ -115,6 +115,16 @@ struct DeviceDesc {
 
 // ---- Plain data ----------------------------------------------------------------------------
 
+struct Rect {
+    int x = 0, y = 0, width = 0, height = 0;  // pixels, rows from the top (Vulkan's framebuffer y)
+};
+
+// An axis-aligned world-space box.
+struct Box {
+    float min[3] = {0.0f, 0.0f, 0.0f};
+    float max[3] = {0.0f, 0.0f, 0.0f};
+};
+
 // The directional light of SSAM's built-in colour program. The default is unlit: colour = base colour.
 struct Light {
     float towardLight[3] = {0.0f, 0.0f, 1.0f};  // world space, need not be normalised
@@ -187,12 +197,23 @@ struct FrameDesc {
     float viewProj[16] = {1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f,
                           0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
     Light light;
+    // World-space boxes around everything the host will draw. Given (count > 0): when none is in
+    // view nothing is recorded (SSAM costs nothing, the callback is not called) and the composite
+    // is scissored to their screen region. Not given: every pass covers the whole frame.
+    const Box* foliageBounds = nullptr;
+    std::size_t foliageBoundsCount = 0;
     // Deferred destruction (N frames in flight is the host's choice): `frameIndex` numbers the
     // frame being recorded (increasing); every frame numbered below `framesCompleted` has finished
     // on the device (its fence signalled). Objects SSAM retires are destroyed once no frame that
     // used them can still run. framesCompleted = frameIndex: nothing is in flight.
     std::uint64_t frameIndex = 0;
     std::uint64_t framesCompleted = 0;
+};
+
+struct FrameReport {
+    bool foliageInView = false;  // false: nothing was recorded (way b: the frame is over, call nothing)
+    int passesRun = 0;           // 0 or 3
+    Rect compositeRegion;        // where the composite ran
 };
 
 enum class FoliagePass : int { Mask, Color };
@@ -286,13 +307,13 @@ public:
     // Way (a): records the three passes with SSAM's built-in programs; `draw(user, program)` runs
     // twice (mask pass, colour pass) and records the same draws in the same order each time (§3.8).
     using DrawFoliage = void (*)(void* user, const FoliageProgram& program);
-    Status render(const FrameDesc& frame, DrawFoliage draw, void* user) noexcept;
+    Status render(const FrameDesc& frame, DrawFoliage draw, void* user, FrameReport* report = nullptr) noexcept;
     template <class Draw>
-    Status render(const FrameDesc& frame, Draw&& draw) noexcept {
+    Status render(const FrameDesc& frame, Draw&& draw, FrameReport* report = nullptr) noexcept {
         using Callable = std::remove_reference_t<Draw>;
         return render(
             frame, [](void* user, const FoliageProgram& p) { (*static_cast<Callable*>(user))(p); },
-            const_cast<void*>(static_cast<const void*>(std::addressof(draw))));
+            const_cast<void*>(static_cast<const void*>(std::addressof(draw))), report);
     }
 
     // Way (b): the host's own pipelines, one pass at a time, recorded into FrameDesc::commandBuffer.
@@ -302,7 +323,7 @@ public:
     // matching end...Pass ends it; composite() records the composite and ends the frame. Out of
     // order: InvalidCall; an open pass is then ended (the command buffer stays valid) and the frame
     // abandoned.
-    Status beginFrame(const FrameDesc& frame) noexcept;
+    Status beginFrame(const FrameDesc& frame, FrameReport* report = nullptr) noexcept;
     Status beginMaskPass(PassInfo* info = nullptr) noexcept;
     Status endMaskPass() noexcept;
     Status beginColorPass(PassInfo* info = nullptr) noexcept;
