@@ -13,9 +13,9 @@
 //
 // Two ways to draw the foliage, as ssam::gl's:
 //  (a) SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
-// `draw` twice (mask pass, then colour pass) inside SSAM's render pass with SSAM's pipeline bound;
-// the host binds its vertex (and index) buffers as Settings::vertexLayout describes, sets per-draw
-// values through FoliageProgram and records its draws.
+//      `draw` twice (mask pass, then colour pass) inside SSAM's render pass with SSAM's pipeline
+//      bound; the host binds its vertex (and index) buffers as Settings::vertexLayout describes,
+//      sets per-draw values through FoliageProgram and records its draws.
 //  (b) The host's own pipelines: beginFrame(), then beginMaskPass() / draws / endMaskPass(),
 //      beginColorPass() / draws / endColorPass(), composite(). The host creates its mask and colour
 //      pipelines with the fixed-function state pipelineState() hands out (blend, depth-stencil,
@@ -27,17 +27,21 @@
 // vkCmdBeginRendering scope.
 //
 // The synchronization contract (FrameDesc::commandBuffer, outside any render pass):
-//   image            on entry (host's last use)                          inside SSAM                          on exit
-//   host colour      COLOR_ATTACHMENT_OPTIMAL; written at                 composite: loaded, blended, stored    COLOR_ATTACHMENT_OPTIMAL; SSAM's writes at
-//                    COLOR_ATTACHMENT_OUTPUT (COLOR_ATTACHMENT_WRITE)                                           COLOR_ATTACHMENT_OUTPUT (COLOR_ATTACHMENT_WRITE)
-//   host depth       DEPTH_STENCIL_ATTACHMENT_OPTIMAL; written at          mask: tested; colour: tested, written DEPTH_STENCIL_ATTACHMENT_OPTIMAL; SSAM's
-//                    EARLY/LATE_FRAGMENT_TESTS (DEPTH_STENCIL_ATTACHMENT_WRITE) (stencil loaded and stored as is)   writes at EARLY/LATE_FRAGMENT_TESTS
+//   host colour  entry: COLOR_ATTACHMENT_OPTIMAL, last written at COLOR_ATTACHMENT_OUTPUT
+//                       (COLOR_ATTACHMENT_WRITE)
+//                SSAM:  the composite loads, blends and stores it
+//                exit:  COLOR_ATTACHMENT_OPTIMAL, SSAM's writes at COLOR_ATTACHMENT_OUTPUT
+//   host depth   entry: DEPTH_STENCIL_ATTACHMENT_OPTIMAL, last written at EARLY/LATE_FRAGMENT_TESTS
+//                       (DEPTH_STENCIL_ATTACHMENT_WRITE)
+//                SSAM:  mask pass tests it; colour pass tests and writes it; stencil kept as is
+//                exit:  DEPTH_STENCIL_ATTACHMENT_OPTIMAL, SSAM's writes at EARLY/LATE_FRAGMENT_TESTS
 // SSAM's render passes carry the external dependencies for exactly those stages and accesses, in
-// and out (on the dynamic-rendering path, pipeline barriers of the same stages and accesses): a host whose last access was another stage (a transfer, a compute write, a sampled
-// read) records its own barrier into the entry row first, and one out of the exit row before it
-// uses the images another way (e.g. copies the colour out: COLOR_ATTACHMENT_OUTPUT /
-// COLOR_ATTACHMENT_WRITE -> TRANSFER / TRANSFER_READ). Between its passes SSAM records its own
-// barriers (its uniform update, its intermediates), and it never waits on the device.
+// and out (on the dynamic-rendering path, pipeline barriers of the same stages and accesses): a
+// host whose last access was another stage (a transfer, a compute write, a sampled read) records
+// its own barrier into the entry row first, and one out of the exit row before it uses the images
+// another way (e.g. copies the colour out: COLOR_ATTACHMENT_OUTPUT / COLOR_ATTACHMENT_WRITE ->
+// TRANSFER / TRANSFER_READ). Between its passes SSAM records its own barriers (its uniform update,
+// its intermediates), and it never waits on the device.
 //
 // Lifetime: SSAM's objects (render passes, pipelines, its intermediate images, framebuffers over
 // the host's views) live until release() or the destructor, which need the host's device idle for
