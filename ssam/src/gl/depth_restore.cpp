@@ -25,13 +25,7 @@ uniform float u_maskLerp;
 uniform bool u_squareMask;
 uniform sampler2D u_opaqueDepth;
 uniform float u_threshold;
-)") + ssam::glsl::kComposite + R"(
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    if (ssamComposite(p).a >= u_threshold) discard;
-    gl_FragDepth = texelFetch(u_opaqueDepth, p, 0).r;
-}
-)";
+)") + ssam::glsl::kComposite + ssam::glsl::kDepthRestoreMain;
 
 const char* const kFullscreenVertex = R"(#version 330 core
 void main() {

@@ -40,7 +40,12 @@ bool isDepthFormat(VkFormat f) {
 }  // namespace
 
 VkFormat ScreenSpaceAlphaMaskVk::Impl::maskFormat() const {
-    return settings.maskPrecision == MaskPrecision::Rgba16f ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R8G8B8A8_UNORM;
+    switch (settings.maskPrecision) {
+        case MaskPrecision::Rgba8: break;
+        case MaskPrecision::Rgba16f: return VK_FORMAT_R16G16B16A16_SFLOAT;
+        case MaskPrecision::Rg16f: return detail::kMaskPairFormat;
+    }
+    return VK_FORMAT_R8G8B8A8_UNORM;
 }
 
 void ScreenSpaceAlphaMaskVk::Impl::checkFormat(VkFormat format, VkFormatFeatureFlags needed, const char* what) const {
@@ -62,6 +67,10 @@ void ScreenSpaceAlphaMaskVk::Impl::checkFrame(const FrameDesc& f) const {
     if (f.foliageBoundsCount > 0 && !f.foliageBounds)
         throw Failure(Status::InvalidArgument, "ssam::vk: foliageBoundsCount is " +
                                                    std::to_string(f.foliageBoundsCount) + " but foliageBounds is null");
+    if (settings.depthMaskThreshold > 0.0f && !f.depthImage)
+        throw Failure(Status::InvalidArgument,
+                      "ssam::vk: FrameDesc::depthImage is null, but Settings::depthMaskThreshold > 0 copies the "
+                      "host's depth (the image of depthView, with TRANSFER_SRC usage)");
     if (f.framesCompleted > f.frameIndex)
         throw Failure(Status::InvalidArgument, "ssam::vk: framesCompleted " + std::to_string(f.framesCompleted) +
                                                    " is past frameIndex " + std::to_string(f.frameIndex));
@@ -78,13 +87,24 @@ void ScreenSpaceAlphaMaskVk::Impl::checkFormats(VkFormat colorFormat, VkFormat d
 }
 
 const detail::Generation& ScreenSpaceAlphaMaskVk::Impl::generationFor(const FrameDesc& f) {
-    const detail::GenerationKey key{f.colorFormat, f.depthFormat, maskFormat(), f.width, f.height, settingsVersion};
+    const detail::GenerationKey key{f.colorFormat,
+                                    f.depthFormat,
+                                    maskFormat(),
+                                    f.width,
+                                    f.height,
+                                    settingsVersion,
+                                    settings.depthMaskThreshold > 0.0f};
     if (generation && generation->key == key) return *generation;
     if (!generation || generation->key.colorFormat != key.colorFormat)
         checkFormat(key.colorFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT,
                     "a blended, sampled colour target");
     checkFormat(key.maskFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT,
                 "the mask");
+    if (key.depthRestore)
+        checkFormat(key.depthFormat,
+                    VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+                        VK_FORMAT_FEATURE_TRANSFER_DST_BIT,
+                    "a copied and sampled depth (Settings::depthMaskThreshold)");
     detail::Generation next;
     next.create(vk, memory, shared, key, settings, dynamic());  // destroys what it made if it fails
     if (generation) {
@@ -150,14 +170,19 @@ void ScreenSpaceAlphaMaskVk::Impl::beginPass(const FrameDesc& f, const detail::G
         detail::beginDynamicPass(vk, cb, pass, g, {f.colorView, f.depthView, f.depthFormat, f.width, f.height}, clear);
     } else {
         VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-        begin.renderPass = pass == detail::PassKind::Mask    ? g.maskPass
-                           : pass == detail::PassKind::Color ? g.colorPass
-                                                             : g.compositePass;
-        begin.framebuffer = pass == detail::PassKind::Mask    ? fb->mask
-                            : pass == detail::PassKind::Color ? fb->color
-                                                              : fb->composite;
+        switch (pass) {
+            case detail::PassKind::Mask: begin.renderPass = g.maskPass, begin.framebuffer = fb->mask; break;
+            case detail::PassKind::Color: begin.renderPass = g.colorPass, begin.framebuffer = fb->color; break;
+            case detail::PassKind::Composite:
+                begin.renderPass = g.compositePass, begin.framebuffer = fb->composite;
+                break;
+            case detail::PassKind::DepthRestore:
+                begin.renderPass = g.restorePass, begin.framebuffer = fb->restore;
+                break;
+        }
         begin.renderArea = {{0, 0}, {f.width, f.height}};
-        begin.clearValueCount = clear ? 1 : 0;
+        // `clear` holds one value per colour target (Rg16f's mask pass: two).
+        begin.clearValueCount = clear ? (pass == detail::PassKind::Mask && g.key.maskPair() ? 2 : 1) : 0;
         begin.pClearValues = clear;
         vk.CmdBeginRenderPass(cb, &begin, VK_SUBPASS_CONTENTS_INLINE);
     }
@@ -234,13 +259,15 @@ FrameReport ScreenSpaceAlphaMaskVk::Impl::beginFrame(const FrameDesc& f) {
 PassInfo ScreenSpaceAlphaMaskVk::Impl::beginFoliagePass(FoliagePass which) {
     const bool mask = which == FoliagePass::Mask;
     expect(mask ? detail::Phase::FrameBegun : detail::Phase::MaskDone, mask ? "beginMaskPass" : "beginColorPass");
-    VkClearValue clear{};
+    VkClearValue clear[2]{};
     if (!mask)
-        for (int i = 0; i < 4; ++i) clear.color.float32[i] = settings.foliageClearColor[i];
+        for (int i = 0; i < 4; ++i) clear[0].color.float32[i] = settings.foliageClearColor[i];
     const detail::Generation& g = *generation;
-    beginPass(frame, g, framebuffers, kindOf(which), &clear, VK_NULL_HANDLE);
+    // Settings::depthMaskThreshold: the opaque depth, before the colour pass writes the foliage's.
+    if (!mask && g.key.depthRestore) saveOpaqueDepth(g);
+    beginPass(frame, g, framebuffers, kindOf(which), clear, VK_NULL_HANDLE);
     phase = mask ? detail::Phase::InMaskPass : detail::Phase::InColorPass;
-    return {which, frame.commandBuffer, mask ? 0.0f : settings.colorAlphaReference};
+    return {which, frame.commandBuffer, mask ? 0.0f : settings.colorAlphaReference, mask && g.key.maskPair() ? 2u : 1u};
 }
 
 void ScreenSpaceAlphaMaskVk::Impl::endFoliagePass(FoliagePass which) {
@@ -295,14 +322,12 @@ void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
     vk.CmdSetScissor(cb, 0, 1, &scissor);  // only where the foliage can be
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.compositeLayout, 0, 1, &g.compositeSet, 0,
                              nullptr);
-    struct {
-        float maskLerp;
-        std::uint32_t squareMask, hasMaskAdd;
-    } push{settings.maskLerp, settings.squareMask ? 1u : 0u, 0u};
-    static_assert(sizeof push == detail::kCompositePushSize);
-    vk.CmdPushConstants(cb, shared.compositeLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
+    const detail::CompositePush push{settings.maskLerp, settings.squareMask ? 1u : 0u, g.key.maskPair() ? 1u : 0u,
+                                     settings.depthMaskThreshold};
+    vk.CmdPushConstants(cb, shared.compositeLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, detail::kCompositePushSize, &push);
     vk.CmdDraw(cb, 3, 1, 0, 0);
     endPass(cb, g, detail::PassKind::Composite);
+    if (g.key.depthRestore) restoreDepth(g, push);
     phase = detail::Phase::Idle;
     framebuffers = nullptr;
 }
@@ -329,7 +354,7 @@ PipelineState ScreenSpaceAlphaMaskVk::Impl::pipelineStateFor(FoliagePass pass, V
     PipelineState state;
     detail::fixedState(kindOf(pass), settings, state);
     const VkFormat target = pass == FoliagePass::Mask ? maskFormat() : colorFormat;
-    state.colorAttachmentFormat = target;
+    for (std::uint32_t i = 0; i < state.colorAttachmentCount; ++i) state.colorAttachmentFormats[i] = target;
     state.depthAttachmentFormat = depthFormat;
     state.stencilAttachmentFormat =
         depthFormat == VK_FORMAT_D24_UNORM_S8_UINT || depthFormat == VK_FORMAT_D32_SFLOAT_S8_UINT ? depthFormat

@@ -5,8 +5,8 @@
 // the bodies' u_* names onto them, then the shared bodies unchanged. CMake compiles the files to
 // SPIR-V with glslc and embeds them (cmake/embed_spirv.cmake); nothing compiles GLSL at run time.
 //
-//   ssam_vk_glsl_variants OUT_DIR   writes foliage.vert, mask.vert, mask.frag, color.frag, fullscreen.vert,
-//                                   composite.frag
+//   ssam_vk_glsl_variants OUT_DIR   writes foliage.vert, mask.vert, mask.frag, maskpair.frag, color.frag,
+//                                   fullscreen.vert, composite.frag, restore.frag
 // The interface (set, binding, push-constant offsets) is the one ssam/src/vk/pipelines.cpp
 // creates its layouts for.
 #include <cstdio>
@@ -61,16 +61,19 @@ layout(location = 2) out vec4 v_color;
 constexpr const char* kNormalOut = "layout(location = 1) out vec3 v_normal;\n";
 constexpr const char* kNormalUnused = "vec3 v_normal;\n";
 
-// The fragment side of the same interface. One mask target (RGBA8 / RGBA16F): the body's second
-// output is a plain variable.
+// The fragment side of the same interface. One mask target (RGBA8 / RGBA16F, mask.frag): the
+// body's second output is a plain variable; two (Rg16f, maskpair.frag): MAX at 0, ADD at 1.
 constexpr const char* kFoliageFragment = R"(layout(set = 1, binding = 0) uniform sampler2D u_baseColor;
 layout(location = 0) in vec2 v_uv;
 layout(location = 2) in vec4 v_color;
 )";
 
 // Set 0: rt_foliage, the mask and the second mask target (the mask again when there is none);
-// push constants: maskLerp at 0, squareMask at 4, hasMaskAdd at 8.
-constexpr const char* kCompositeInterface = R"(#version 450
+// push constants: maskLerp at 0, squareMask at 4, hasMaskAdd at 8. Settings::depthMaskThreshold's
+// pass (restore.frag) adds the saved opaque depth at binding 3 and the threshold at 12 (one
+// push-constant block per shader, hence `extra`).
+std::string compositeInterface(const char* extra) {
+    return std::string(R"(#version 450
 #define PRECISE precise
 layout(set = 0, binding = 0) uniform sampler2D u_foliage;
 layout(set = 0, binding = 1) uniform sampler2D u_mask;
@@ -79,11 +82,16 @@ layout(push_constant, std430) uniform SsamComposite {
     layout(offset = 0) float maskLerp;
     layout(offset = 4) uint squareMask;
     layout(offset = 8) uint hasMaskAdd;
-} u_composite;
+)") + extra +
+           R"(} u_composite;
 #define u_maskLerp u_composite.maskLerp
 #define u_squareMask (u_composite.squareMask != 0u)
 #define u_hasMaskAdd (u_composite.hasMaskAdd != 0u)
-layout(location = 0) out vec4 o_color;
+)";
+}
+constexpr const char* kRestoreExtra = "    layout(offset = 12) float threshold;\n";
+constexpr const char* kRestoreInterface = R"(layout(set = 0, binding = 3) uniform sampler2D u_opaqueDepth;
+#define u_threshold u_composite.threshold
 )";
 
 bool write(const std::string& path, const std::string& text) {
@@ -112,13 +120,20 @@ int main(int argc, char** argv) {
         write(dir + "/mask.frag", foliage + kFoliageFragment +
                                       "layout(location = 0) out vec4 o_mask;\nvec4 o_maskAdd;\n" +
                                       ssam::glsl::kMaskFragmentMain) &&
+        write(dir + "/maskpair.frag", foliage + kFoliageFragment +
+                                          "layout(location = 0) out vec4 o_mask;\n"
+                                          "layout(location = 1) out vec4 o_maskAdd;\n" +
+                                          ssam::glsl::kMaskFragmentMain) &&
         write(dir + "/color.frag",
               foliage + kFoliageFragment +
                   "layout(location = 1) in vec3 v_normal;\nlayout(location = 0) out vec4 o_color;\n" +
                   ssam::glsl::kColorFragmentMain) &&
         write(dir + "/fullscreen.vert",
               std::string("#version 450\n#define VERTEX_INDEX gl_VertexIndex\n") + ssam::glsl::kFullscreenVertexMain) &&
-        write(dir + "/composite.frag", std::string(kCompositeInterface) + ssam::glsl::kComposite +
-                                           "void main() { o_color = ssamComposite(ivec2(gl_FragCoord.xy)); }\n");
+        write(dir + "/composite.frag", compositeInterface("") + "layout(location = 0) out vec4 o_color;\n" +
+                                           ssam::glsl::kComposite +
+                                           "void main() { o_color = ssamComposite(ivec2(gl_FragCoord.xy)); }\n") &&
+        write(dir + "/restore.frag", compositeInterface(kRestoreExtra) + kRestoreInterface + ssam::glsl::kComposite +
+                                         ssam::glsl::kDepthRestoreMain);
     return ok ? 0 : 1;
 }

@@ -2,6 +2,7 @@
 #pragma once
 // ssam::vk's state behind the public class: what initialize() made (ssam_vk.cpp) and the frame
 // being recorded (frame.cpp).
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <new>
@@ -57,6 +58,14 @@ struct Constants {
 };
 inline constexpr std::uint32_t kFrameBlockSize = 128;
 static_assert(sizeof(Constants) == 256 + 28 * 4, "Constants' layout is pipelines.cpp's and the shaders'");
+
+// The composite's push constants (glsl_variants.cpp); the depth restore's adds the threshold.
+struct CompositePush {
+    float maskLerp;
+    std::uint32_t squareMask, hasMaskAdd;
+    float threshold;  // the depth restore only
+};
+static_assert(sizeof(CompositePush) == kRestorePushSize && offsetof(CompositePush, threshold) == kCompositePushSize);
 
 // Where a frame is: each call of way (b) moves it one step, in this order only.
 enum class Phase { Idle, FrameBegun, InMaskPass, MaskDone, InColorPass, ColorDone };
@@ -174,6 +183,10 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     void endFoliagePass(FoliagePass which);
     void drawBuiltIn(const PassInfo& pass, DrawFoliage draw, void* user);
     void compositeFrame();
+    // Settings::depthMaskThreshold (depth_restore.cpp): the host's depth copied over the region
+    // before the colour pass; after the composite, written back where the mask is below it.
+    void saveOpaqueDepth(const detail::Generation& g);
+    void restoreDepth(const detail::Generation& g, const detail::CompositePush& push);
     FrameReport render(const FrameDesc& f, DrawFoliage draw, void* user);
     PipelineState pipelineStateFor(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat);
 };

@@ -24,7 +24,7 @@ VkShaderModule createModule(const VkFunctions& vk, const std::uint32_t* code, st
 
 VkDescriptorSetLayout createSetLayout(const VkFunctions& vk, VkDescriptorType type, std::uint32_t count,
                                       VkShaderStageFlags stages) {
-    std::array<VkDescriptorSetLayoutBinding, 3> bindings{};
+    std::array<VkDescriptorSetLayoutBinding, 4> bindings{};
     for (std::uint32_t i = 0; i < count; ++i) bindings[i] = {i, type, 1, stages, nullptr};
     VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     info.bindingCount = count;
@@ -47,36 +47,42 @@ VkSampler createSampler(const VkFunctions& vk, VkFilter filter) {
 
 bool hasStencil(VkFormat f) { return f == VK_FORMAT_D24_UNORM_S8_UINT || f == VK_FORMAT_D32_SFLOAT_S8_UINT; }
 
-// One subpass: a colour target (cleared, or loaded for the composite) and optionally the host's
-// depth (loaded and stored, stencil too). The external dependencies are the synchronization
+// One subpass: `colorCount` colour targets of format `color` (cleared, or loaded for the
+// composite; two: Rg16f's mask pair; none: the depth restore) and optionally the host's depth
+// (loaded and stored, stencil too) after them. The external dependencies are the synchronization
 // contract (ssam_vk.hpp): in, the host's or SSAM's previous attachment writes and SSAM's previous
 // sampled reads of its intermediates (WAR); out, these attachment writes for the next pass's
 // attachment use or sampling, and for the host's.
-VkRenderPass createRenderPass(const VkFunctions& vk, VkFormat color, bool clearColor, VkImageLayout colorFinal,
-                              VkFormat depth) {
-    std::array<VkAttachmentDescription, 2> attachments{};
-    attachments[0].format = color;
-    attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[0].loadOp = clearColor ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-    attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = clearColor ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    attachments[0].finalLayout = colorFinal;
-    attachments[1].format = depth;
-    attachments[1].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[1].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[1].stencilLoadOp = hasStencil(depth) ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[1].stencilStoreOp = hasStencil(depth) ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    const VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+VkRenderPass createRenderPass(const VkFunctions& vk, VkFormat color, std::uint32_t colorCount, bool clearColor,
+                              VkImageLayout colorFinal, VkFormat depth) {
+    std::array<VkAttachmentDescription, 3> attachments{};
+    std::array<VkAttachmentReference, 2> colorRefs{};
+    for (std::uint32_t i = 0; i < colorCount; ++i) {
+        VkAttachmentDescription& a = attachments[i];
+        a.format = color;
+        a.samples = VK_SAMPLE_COUNT_1_BIT;
+        a.loadOp = clearColor ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        a.initialLayout = clearColor ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        a.finalLayout = colorFinal;
+        colorRefs[i] = {i, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    }
+    VkAttachmentDescription& d = attachments[colorCount];
+    d.format = depth;
+    d.samples = VK_SAMPLE_COUNT_1_BIT;
+    d.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    d.stencilLoadOp = hasStencil(depth) ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    d.stencilStoreOp = hasStencil(depth) ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    d.initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    d.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    const VkAttachmentReference depthRef{colorCount, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &colorRef;
+    subpass.colorAttachmentCount = colorCount;
+    subpass.pColorAttachments = colorRefs.data();
     if (depth != VK_FORMAT_UNDEFINED) subpass.pDepthStencilAttachment = &depthRef;
     constexpr VkPipelineStageFlags kStages =
         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -90,7 +96,7 @@ VkRenderPass createRenderPass(const VkFunctions& vk, VkFormat color, bool clearC
         {0, VK_SUBPASS_EXTERNAL, kStages, kStages, kWrites, kAccesses, 0},
     }};
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = depth != VK_FORMAT_UNDEFINED ? 2 : 1;
+    info.attachmentCount = colorCount + (depth != VK_FORMAT_UNDEFINED ? 1 : 0);
     info.pAttachments = attachments.data();
     info.subpassCount = 1;
     info.pSubpasses = &subpass;
@@ -150,20 +156,24 @@ using Kind = PassKind;
 // VkPipelineRenderingCreateInfo instead.
 VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Kind kind, VkRenderPass pass,
                           VkFormat colorFormat, VkFormat depthFormat, const Settings& settings) {
-    const bool composite = kind == Kind::Composite;
+    const bool fullscreen = kind == Kind::Composite || kind == Kind::DepthRestore;
     VkPipelineShaderStageCreateInfo stages[2]{{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = composite            ? shared.fullscreenVertex
+    stages[0].module = fullscreen           ? shared.fullscreenVertex
                        : kind == Kind::Mask ? shared.maskVertex
                                             : shared.foliageVertex;
     stages[0].pName = "main";
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = composite            ? shared.compositeFragment
-                       : kind == Kind::Mask ? shared.maskFragment
-                                            : shared.colorFragment;
+    const bool maskPair = settings.maskPrecision == MaskPrecision::Rg16f;
+    switch (kind) {
+        case Kind::Mask: stages[1].module = maskPair ? shared.maskPairFragment : shared.maskFragment; break;
+        case Kind::Color: stages[1].module = shared.colorFragment; break;
+        case Kind::Composite: stages[1].module = shared.compositeFragment; break;
+        case Kind::DepthRestore: stages[1].module = shared.restoreFragment; break;
+    }
     stages[1].pName = "main";
-    const VertexInput input = composite ? VertexInput{} : vertexInput(settings.vertexLayout, kind == Kind::Color);
+    const VertexInput input = fullscreen ? VertexInput{} : vertexInput(settings.vertexLayout, kind == Kind::Color);
     VkPipelineVertexInputStateCreateInfo vertex{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex.vertexBindingDescriptionCount = std::uint32_t(input.bindings.size());
     vertex.pVertexBindingDescriptions = input.bindings.data();
@@ -176,8 +186,8 @@ VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Ki
     PipelineState state;
     fixedState(kind, settings, state);
     VkPipelineColorBlendStateCreateInfo blending{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blending.attachmentCount = 1;
-    blending.pAttachments = &state.blendAttachment;
+    blending.attachmentCount = state.colorAttachmentCount;
+    blending.pAttachments = state.blendAttachments;
     const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = 2;
@@ -190,20 +200,25 @@ VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Ki
     info.pViewportState = &viewport;
     info.pRasterizationState = &state.rasterization;
     info.pMultisampleState = &state.multisample;
-    info.pDepthStencilState = composite ? nullptr : &state.depthStencil;
+    info.pDepthStencilState = kind == Kind::Composite ? nullptr : &state.depthStencil;
     info.pColorBlendState = &blending;
     info.pDynamicState = &dynamic;
-    info.layout = composite ? shared.compositeLayout : shared.foliageLayout;
+    info.layout = kind == Kind::Composite      ? shared.compositeLayout
+                  : kind == Kind::DepthRestore ? shared.restoreLayout
+                                               : shared.foliageLayout;
     info.renderPass = pass;
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &colorFormat;
+    const VkFormat colorFormats[2] = {colorFormat, colorFormat};
+    rendering.colorAttachmentCount = state.colorAttachmentCount;
+    rendering.pColorAttachmentFormats = colorFormats;
     rendering.depthAttachmentFormat = depthFormat;
     rendering.stencilAttachmentFormat = hasStencil(depthFormat) ? depthFormat : VK_FORMAT_UNDEFINED;
     if (!pass) info.pNext = &rendering;
     VkPipeline pipeline = VK_NULL_HANDLE;
     check(vk.CreateGraphicsPipelines(vk.device, VK_NULL_HANDLE, 1, &info, vk.allocator, &pipeline),
-          kind == Kind::Mask ? "vkCreateGraphicsPipelines, mask" : "vkCreateGraphicsPipelines");
+          kind == Kind::Mask           ? "vkCreateGraphicsPipelines, mask"
+          : kind == Kind::DepthRestore ? "vkCreateGraphicsPipelines, depth restore"
+                                       : "vkCreateGraphicsPipelines");
     return pipeline;
 }
 
@@ -222,7 +237,7 @@ VkFramebuffer createFramebuffer(const VkFunctions& vk, VkRenderPass pass, std::i
 }
 
 void destroyFramebuffers(const VkFunctions& vk, const FrameFramebuffers& f) noexcept {
-    for (VkFramebuffer fb : {f.mask, f.color, f.composite})
+    for (VkFramebuffer fb : {f.mask, f.color, f.composite, f.restore})
         if (fb) vk.DestroyFramebuffer(vk.device, fb, vk.allocator);
 }
 
@@ -239,16 +254,29 @@ void fixedState(PassKind kind, const Settings& settings, PipelineState& state) {
     state.rasterization.lineWidth = 1.0f;
     state.multisample = {VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     state.multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    // Mask: tested, not written; colour: tested and written (§3.7); composite: none.
+    // Mask: tested, not written; colour: tested and written (§3.7); composite: none; the depth
+    // restore: written wherever its shader does not discard (ALWAYS).
     state.depthStencil = {VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     state.depthStencil.depthTestEnable = kind == Kind::Composite ? VK_FALSE : VK_TRUE;
-    state.depthStencil.depthWriteEnable = kind == Kind::Color ? VK_TRUE : VK_FALSE;
-    state.depthStencil.depthCompareOp = toVk(settings.depthTest);
-    VkPipelineColorBlendAttachmentState& blend = state.blendAttachment;
-    blend = {};
-    blend.colorWriteMask =
-        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    if (kind == Kind::Mask) {  // Table 3.1: RGB = MAX, A = ADD, all ONE
+    state.depthStencil.depthWriteEnable = kind == Kind::Color || kind == Kind::DepthRestore ? VK_TRUE : VK_FALSE;
+    state.depthStencil.depthCompareOp = kind == Kind::DepthRestore ? VK_COMPARE_OP_ALWAYS : toVk(settings.depthTest);
+    const bool maskPair = kind == Kind::Mask && settings.maskPrecision == MaskPrecision::Rg16f;
+    state.colorAttachmentCount = kind == Kind::DepthRestore ? 0 : maskPair ? 2 : 1;
+    for (VkPipelineColorBlendAttachmentState& b : state.blendAttachments) {
+        b = {};
+        b.colorWriteMask =
+            VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    }
+    VkPipelineColorBlendAttachmentState& blend = state.blendAttachments[0];
+    if (maskPair) {  // Table 3.1 in two targets (ssam::gl's Rg16f): MAX into the first, ADD into the second
+        for (int i = 0; i < 2; ++i) {
+            VkPipelineColorBlendAttachmentState& b = state.blendAttachments[i];
+            b.blendEnable = VK_TRUE;
+            b.srcColorBlendFactor = b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+            b.srcAlphaBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+            b.colorBlendOp = b.alphaBlendOp = i == 0 ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD;
+        }
+    } else if (kind == Kind::Mask) {  // Table 3.1: RGB = MAX, A = ADD, all ONE
         blend.blendEnable = VK_TRUE;
         blend.srcColorBlendFactor = blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
         blend.srcAlphaBlendFactor = blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
@@ -267,8 +295,11 @@ void fixedState(PassKind kind, const Settings& settings, PipelineState& state) {
 
 VkRenderPass createPassFor(const VkFunctions& vk, PassKind pass, VkFormat target, VkFormat depth) {
     if (pass == Kind::Composite)
-        return createRenderPass(vk, target, false, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_FORMAT_UNDEFINED);
-    return createRenderPass(vk, target, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, depth);
+        return createRenderPass(vk, target, 1, false, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_FORMAT_UNDEFINED);
+    if (pass == Kind::DepthRestore)
+        return createRenderPass(vk, VK_FORMAT_UNDEFINED, 0, false, VK_IMAGE_LAYOUT_UNDEFINED, depth);
+    const std::uint32_t targets = pass == Kind::Mask && target == kMaskPairFormat ? 2 : 1;
+    return createRenderPass(vk, target, targets, true, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, depth);
 }
 
 void SharedObjects::create(const VkFunctions& vk) {
@@ -276,6 +307,8 @@ void SharedObjects::create(const VkFunctions& vk) {
         foliageVertex = createModule(vk, spirv::kFoliageVert, spirv::kFoliageVertSize, "foliage.vert");
         maskVertex = createModule(vk, spirv::kMaskVert, spirv::kMaskVertSize, "mask.vert");
         maskFragment = createModule(vk, spirv::kMaskFrag, spirv::kMaskFragSize, "mask.frag");
+        maskPairFragment = createModule(vk, spirv::kMaskpairFrag, spirv::kMaskpairFragSize, "maskpair.frag");
+        restoreFragment = createModule(vk, spirv::kRestoreFrag, spirv::kRestoreFragSize, "restore.frag");
         colorFragment = createModule(vk, spirv::kColorFrag, spirv::kColorFragSize, "color.frag");
         fullscreenVertex = createModule(vk, spirv::kFullscreenVert, spirv::kFullscreenVertSize, "fullscreen.vert");
         compositeFragment = createModule(vk, spirv::kCompositeFrag, spirv::kCompositeFragSize, "composite.frag");
@@ -285,6 +318,8 @@ void SharedObjects::create(const VkFunctions& vk) {
             createSetLayout(vk, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT);
         compositeSetLayout =
             createSetLayout(vk, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3, VK_SHADER_STAGE_FRAGMENT_BIT);
+        restoreSetLayout =
+            createSetLayout(vk, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4, VK_SHADER_STAGE_FRAGMENT_BIT);
         const VkDescriptorSetLayout foliageSets[] = {frameSetLayout, textureSetLayout};
         const VkPushConstantRange foliagePush{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                               kFoliagePushSize};
@@ -299,6 +334,10 @@ void SharedObjects::create(const VkFunctions& vk) {
         info.pSetLayouts = &compositeSetLayout;
         info.pPushConstantRanges = &compositePush;
         check(vk.CreatePipelineLayout(vk.device, &info, vk.allocator, &compositeLayout), "vkCreatePipelineLayout");
+        const VkPushConstantRange restorePush{VK_SHADER_STAGE_FRAGMENT_BIT, 0, kRestorePushSize};
+        info.pSetLayouts = &restoreSetLayout;
+        info.pPushConstantRanges = &restorePush;
+        check(vk.CreatePipelineLayout(vk.device, &info, vk.allocator, &restoreLayout), "vkCreatePipelineLayout");
         linearSampler = createSampler(vk, VK_FILTER_LINEAR);
         nearestSampler = createSampler(vk, VK_FILTER_NEAREST);
     } catch (...) {
@@ -309,12 +348,12 @@ void SharedObjects::create(const VkFunctions& vk) {
 
 void SharedObjects::destroy(const VkFunctions& vk) noexcept {
     if (!vk.device) return;
-    for (VkShaderModule m :
-         {foliageVertex, maskVertex, maskFragment, colorFragment, fullscreenVertex, compositeFragment})
+    for (VkShaderModule m : {foliageVertex, maskVertex, maskFragment, maskPairFragment, colorFragment, fullscreenVertex,
+                             compositeFragment, restoreFragment})
         if (m) vk.DestroyShaderModule(vk.device, m, vk.allocator);
-    for (VkPipelineLayout l : {foliageLayout, compositeLayout})
+    for (VkPipelineLayout l : {foliageLayout, compositeLayout, restoreLayout})
         if (l) vk.DestroyPipelineLayout(vk.device, l, vk.allocator);
-    for (VkDescriptorSetLayout l : {frameSetLayout, textureSetLayout, compositeSetLayout})
+    for (VkDescriptorSetLayout l : {frameSetLayout, textureSetLayout, compositeSetLayout, restoreSetLayout})
         if (l) vk.DestroyDescriptorSetLayout(vk.device, l, vk.allocator);
     for (VkSampler s : {linearSampler, nearestSampler})
         if (s) vk.DestroySampler(vk.device, s, vk.allocator);
@@ -329,18 +368,27 @@ void Generation::create(const VkFunctions& vk, const MemorySource& memory, const
             maskPass = createPassFor(vk, Kind::Mask, k.maskFormat, k.depthFormat);
             colorPass = createPassFor(vk, Kind::Color, k.colorFormat, k.depthFormat);
             compositePass = createPassFor(vk, Kind::Composite, k.colorFormat, VK_FORMAT_UNDEFINED);
+            if (k.depthRestore) restorePass = createPassFor(vk, Kind::DepthRestore, VK_FORMAT_UNDEFINED, k.depthFormat);
         }
         maskPipeline = createPipeline(vk, shared, Kind::Mask, maskPass, k.maskFormat, k.depthFormat, settings);
         colorPipeline = createPipeline(vk, shared, Kind::Color, colorPass, k.colorFormat, k.depthFormat, settings);
         compositePipeline =
             createPipeline(vk, shared, Kind::Composite, compositePass, k.colorFormat, VK_FORMAT_UNDEFINED, settings);
+        if (k.depthRestore)
+            restorePipeline = createPipeline(vk, shared, Kind::DepthRestore, restorePass, VK_FORMAT_UNDEFINED,
+                                             k.depthFormat, settings);
         constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // TRANSFER_SRC: hosts read them out
         mask = createImage(vk, memory, k.maskFormat, k.width, k.height, usage, "the mask");
+        if (k.maskPair()) maskAdd = createImage(vk, memory, k.maskFormat, k.width, k.height, usage, "the ADD mask");
         foliage = createImage(vk, memory, k.colorFormat, k.width, k.height, usage, "rt_foliage");
-        const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3};
+        if (k.depthRestore)  // the depth aspect only: the stencil is never copied
+            savedDepth = createImage(vk, memory, k.depthFormat, k.width, k.height,
+                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                     "the saved opaque depth", VK_IMAGE_ASPECT_DEPTH_BIT);
+        const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 + 4};
         VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-        poolInfo.maxSets = 1;
+        poolInfo.maxSets = 2;
         poolInfo.poolSizeCount = 1;
         poolInfo.pPoolSizes = &size;
         check(vk.CreateDescriptorPool(vk.device, &poolInfo, vk.allocator, &pool), "vkCreateDescriptorPool");
@@ -349,17 +397,27 @@ void Generation::create(const VkFunctions& vk, const MemorySource& memory, const
         allocate.descriptorSetCount = 1;
         allocate.pSetLayouts = &shared.compositeSetLayout;
         check(vk.AllocateDescriptorSets(vk.device, &allocate, &compositeSet), "vkAllocateDescriptorSets");
-        // rt_foliage, the mask, and the mask again where the shader's second mask target would be.
-        const VkDescriptorImageInfo images[3] = {
+        // rt_foliage, the mask, the ADD mask (Rg16f; else the mask again, unread) and, for the depth
+        // restore, the saved opaque depth.
+        const VkDescriptorImageInfo images[4] = {
             {shared.nearestSampler, foliage.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
             {shared.nearestSampler, mask.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-            {shared.nearestSampler, mask.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
-        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        write.dstSet = compositeSet;
-        write.descriptorCount = 3;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-        write.pImageInfo = images;
-        vk.UpdateDescriptorSets(vk.device, 1, &write, 0, nullptr);
+            {shared.nearestSampler, k.maskPair() ? maskAdd.view : mask.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+            {shared.nearestSampler, savedDepth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
+        VkWriteDescriptorSet writes[2] = {{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},
+                                          {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+        writes[0].dstSet = compositeSet;
+        writes[0].descriptorCount = 3;
+        writes[0].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        writes[0].pImageInfo = images;
+        if (k.depthRestore) {
+            allocate.pSetLayouts = &shared.restoreSetLayout;
+            check(vk.AllocateDescriptorSets(vk.device, &allocate, &restoreSet), "vkAllocateDescriptorSets");
+            writes[1] = writes[0];
+            writes[1].dstSet = restoreSet;
+            writes[1].descriptorCount = 4;
+        }
+        vk.UpdateDescriptorSets(vk.device, k.depthRestore ? 2 : 1, writes, 0, nullptr);
     } catch (...) {
         destroy(vk, memory);
         throw;
@@ -368,13 +426,12 @@ void Generation::create(const VkFunctions& vk, const MemorySource& memory, const
 
 void Generation::destroy(const VkFunctions& vk, const MemorySource& memory) noexcept {
     for (const FrameFramebuffers& f : framebuffers) destroyFramebuffers(vk, f);
-    for (VkPipeline p : {maskPipeline, colorPipeline, compositePipeline})
+    for (VkPipeline p : {maskPipeline, colorPipeline, compositePipeline, restorePipeline})
         if (p) vk.DestroyPipeline(vk.device, p, vk.allocator);
-    for (VkRenderPass p : {maskPass, colorPass, compositePass})
+    for (VkRenderPass p : {maskPass, colorPass, compositePass, restorePass})
         if (p) vk.DestroyRenderPass(vk.device, p, vk.allocator);
     if (pool) vk.DestroyDescriptorPool(vk.device, pool, vk.allocator);
-    detail::destroy(vk, memory, mask);
-    detail::destroy(vk, memory, foliage);
+    for (Image* image : {&mask, &maskAdd, &foliage, &savedDepth}) detail::destroy(vk, memory, *image);
     *this = {};
 }
 
@@ -398,9 +455,12 @@ const FrameFramebuffers& Generation::framebuffersFor(const VkFunctions& vk, VkIm
     f.hostDepth = depth;
     f.lastUsedFrame = frame;
     try {
-        f.mask = createFramebuffer(vk, maskPass, {mask.view, depth}, key.width, key.height);
+        f.mask = key.maskPair()
+                     ? createFramebuffer(vk, maskPass, {mask.view, maskAdd.view, depth}, key.width, key.height)
+                     : createFramebuffer(vk, maskPass, {mask.view, depth}, key.width, key.height);
         f.color = createFramebuffer(vk, colorPass, {foliage.view, depth}, key.width, key.height);
         f.composite = createFramebuffer(vk, compositePass, {color}, key.width, key.height);
+        if (restorePass) f.restore = createFramebuffer(vk, restorePass, {depth}, key.width, key.height);
     } catch (...) {
         destroyFramebuffers(vk, f);
         throw;

@@ -49,7 +49,7 @@ void MemorySource::release(Memory& memory) const noexcept {
 }
 
 Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat format, std::uint32_t width,
-                  std::uint32_t height, VkImageUsageFlags usage, const char* what) {
+                  std::uint32_t height, VkImageUsageFlags usage, const char* what, VkImageAspectFlags aspect) {
     Image out;
     try {
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -73,7 +73,7 @@ Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat fo
         view.image = out.image;
         view.viewType = VK_IMAGE_VIEW_TYPE_2D;
         view.format = format;
-        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        view.subresourceRange = {aspect, 0, 1, 0, 1};
         check(vk.CreateImageView(vk.device, &view, vk.allocator, &out.view),
               (std::string("vkCreateImageView, ") + what).c_str());
     } catch (...) {

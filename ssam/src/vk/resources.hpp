@@ -35,9 +35,10 @@ struct Image {
     VkImageView view = VK_NULL_HANDLE;
     Memory memory;
 };
-// A single-sample 2D colour image of one level with a view, device-local.
+// A single-sample 2D image of one level with a view of `aspect`, device-local.
 Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat format, std::uint32_t width,
-                  std::uint32_t height, VkImageUsageFlags usage, const char* what);
+                  std::uint32_t height, VkImageUsageFlags usage, const char* what,
+                  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
 void destroy(const VkFunctions& vk, const MemorySource& memory, Image& image) noexcept;
 
 struct Buffer {

@@ -52,7 +52,7 @@ namespace {
 void validate(const Settings& s) {
     const auto precision = static_cast<int>(s.maskPrecision);
     const auto depth = static_cast<int>(s.depthTest);
-    if (precision < 0 || precision > static_cast<int>(MaskPrecision::Rgba16f))
+    if (precision < 0 || precision > static_cast<int>(MaskPrecision::Rg16f))
         throw Failure(Status::InvalidArgument,
                       "ssam::vk settings: maskPrecision " + std::to_string(precision) + " is not a MaskPrecision");
     if (depth < 0 || depth > static_cast<int>(DepthTest::GreaterEqual))
@@ -61,6 +61,9 @@ void validate(const Settings& s) {
     if (const std::string error = ssam::detail::knobError(s.maskLerp, s.colorAlphaReference, s.foliageClearColor);
         !error.empty())
         throw Failure(Status::InvalidArgument, "ssam::vk settings: " + error);
+    if (!std::isfinite(s.depthMaskThreshold) || s.depthMaskThreshold < 0.0f || s.depthMaskThreshold > 1.0f)
+        throw Failure(Status::InvalidArgument, "ssam::vk settings: depthMaskThreshold = " +
+                                                   std::to_string(s.depthMaskThreshold) + " is outside [0, 1]");
     const VertexLayout& v = s.vertexLayout;
     if (v.bindingCount == 0 || v.bindingCount > VertexLayout::kMaxBindings)
         throw Failure(Status::InvalidArgument, "ssam::vk settings: vertexLayout.bindingCount " +
@@ -94,6 +97,15 @@ void validate(const Settings& s) {
                                                        std::to_string(v.constantsBinding));
 }
 
+// The device features a setting needs, against those the host enabled (DeviceDesc).
+void checkFeatures(const Settings& s, const DeviceDesc& d) {
+    if (s.maskPrecision == MaskPrecision::Rg16f && !d.independentBlend)
+        throw Failure(Status::UnsupportedFeature,
+                      "ssam::vk settings: maskPrecision Rg16f needs the host's independentBlend feature (its two mask "
+                      "attachments blend MAX and ADD; VkPhysicalDeviceFeatures::independentBlend enabled at "
+                      "vkCreateDevice, then DeviceDesc::independentBlend = true)");
+}
+
 bool samePipelines(const Settings& a, const Settings& b) {
     return a.depthTest == b.depthTest && std::memcmp(&a.vertexLayout, &b.vertexLayout, sizeof(VertexLayout)) == 0;
 }
@@ -109,6 +121,7 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
     if ((desc.memory.allocate != nullptr) != (desc.memory.release != nullptr))
         throw Failure(Status::InvalidArgument, "ssam::vk: DeviceMemoryCallbacks needs both allocate and release");
     validate(wanted);
+    checkFeatures(wanted, desc);
     if (desc.renderingPath != RenderingPath::RenderPass && desc.renderingPath != RenderingPath::DynamicRendering)
         throw Failure(Status::InvalidArgument, "ssam::vk: DeviceDesc::renderingPath is not a RenderingPath");
     if (desc.renderingPath == RenderingPath::DynamicRendering && !desc.dynamicRendering)
@@ -276,6 +289,7 @@ Status ScreenSpaceAlphaMaskVk::setSettings(const Settings& settings) noexcept {
         if (impl_->phase != detail::Phase::Idle)
             throw Failure(Status::InvalidCall, "ssam::vk: setSettings() inside a frame");
         validate(settings);
+        if (impl_->initialized) checkFeatures(settings, impl_->device);
         if (!samePipelines(settings, impl_->settings)) ++impl_->settingsVersion;
         // What PipelineState holds (way b): the depth test and the mask's format.
         if (settings.depthTest != impl_->settings.depthTest || settings.maskPrecision != impl_->settings.maskPrecision)
@@ -369,7 +383,8 @@ std::uint64_t ScreenSpaceAlphaMaskVk::pipelineStateVersion() const noexcept {
 
 ScreenSpaceAlphaMaskVk::Intermediates ScreenSpaceAlphaMaskVk::intermediates() const noexcept {
     if (!impl_ || !impl_->generation) return {};
-    return {impl_->generation->mask.image, impl_->generation->foliage.image};
+    const detail::Generation& g = *impl_->generation;
+    return {g.mask.image, g.maskAdd.image, g.foliage.image};
 }
 
 }  // namespace ssam::vk

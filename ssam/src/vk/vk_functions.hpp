@@ -46,6 +46,7 @@ namespace ssam::vk::detail {
     X(CmdPipelineBarrier)           \
     X(CmdUpdateBuffer)              \
     X(CmdClearColorImage)           \
+    X(CmdCopyImage)                 \
     X(CmdBeginRenderPass)           \
     X(CmdEndRenderPass)             \
     X(CmdBindPipeline)              \

@@ -332,14 +332,15 @@ TEST_F(SsamVk, PipelineStateFollowsTheSettings) {
     ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Color, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &color),
               Status::Ok);
     // Table 3.1: RGB = MAX, A = ADD; the mask pass tests depth without writing it, the colour pass writes it.
-    EXPECT_EQ(mask.blendAttachment.colorBlendOp, VK_BLEND_OP_MAX);
-    EXPECT_EQ(mask.blendAttachment.alphaBlendOp, VK_BLEND_OP_ADD);
+    EXPECT_EQ(mask.colorAttachmentCount, 1u);
+    EXPECT_EQ(mask.blendAttachments[0].colorBlendOp, VK_BLEND_OP_MAX);
+    EXPECT_EQ(mask.blendAttachments[0].alphaBlendOp, VK_BLEND_OP_ADD);
     EXPECT_EQ(mask.depthStencil.depthWriteEnable, VK_FALSE);
-    EXPECT_EQ(color.blendAttachment.blendEnable, VK_FALSE);
+    EXPECT_EQ(color.blendAttachments[0].blendEnable, VK_FALSE);
     EXPECT_EQ(color.depthStencil.depthWriteEnable, VK_TRUE);
     EXPECT_EQ(color.depthStencil.depthCompareOp, VK_COMPARE_OP_LESS);
     EXPECT_EQ(mask.rasterization.cullMode, VK_CULL_MODE_NONE);
-    EXPECT_EQ(mask.colorAttachmentFormat, VK_FORMAT_R8G8B8A8_UNORM);
+    EXPECT_EQ(mask.colorAttachmentFormats[0], VK_FORMAT_R8G8B8A8_UNORM);
     EXPECT_NE(mask.renderPass, VK_NULL_HANDLE);
     const std::uint64_t version = ssam.pipelineStateVersion();
     EXPECT_EQ(mask.version, version);
@@ -354,8 +355,100 @@ TEST_F(SsamVk, PipelineStateFollowsTheSettings) {
     ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Mask, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &mask),
               Status::Ok);
     EXPECT_EQ(mask.depthStencil.depthCompareOp, VK_COMPARE_OP_GREATER);
-    EXPECT_EQ(mask.colorAttachmentFormat, VK_FORMAT_R16G16B16A16_SFLOAT);
+    EXPECT_EQ(mask.colorAttachmentFormats[0], VK_FORMAT_R16G16B16A16_SFLOAT);
     EXPECT_EQ(mask.version, ssam.pipelineStateVersion());
+}
+
+// MaskPrecision::Rg16f: two mask attachments blending differently (MAX, ADD), which needs the
+// independentBlend feature; without it the status names the feature, and the settings in force stay.
+TEST_F(SsamVk, Rg16fNeedsTheHostsIndependentBlend) {
+    ssam::vk::Settings s;
+    s.maskPrecision = ssam::vk::MaskPrecision::Rg16f;
+    ssam::vk::DeviceDesc d = describe(host);  // independentBlend not declared
+    EXPECT_EQ(ssam.initialize(d, s), Status::UnsupportedFeature);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("maskPrecision Rg16f needs the host's independentBlend feature"));
+    ASSERT_EQ(ssam.initialize(d), Status::Ok) << ssam.lastMessage();
+    EXPECT_EQ(ssam.setSettings(s), Status::UnsupportedFeature);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("independentBlend"));
+    EXPECT_EQ(ssam.settings().maskPrecision, ssam::vk::MaskPrecision::Rgba8);
+}
+
+// Way (b) with Rg16f: the mask pass's state has two attachments (R16_SFLOAT, MAX then ADD), the
+// version moves, the colour pass keeps one; the open mask pass says so (PassInfo), and a frame
+// of it records cleanly (validation) with both intermediates made.
+TEST_F(SsamVk, Rg16fPipelineStateHasTwoMaskAttachments) {
+    if (!host.independentBlend) GTEST_SKIP() << "this device has no independentBlend";
+    ssam::vk::DeviceDesc d = describe(host);
+    d.independentBlend = true;
+    ASSERT_EQ(ssam.initialize(d), Status::Ok) << ssam.lastMessage();
+    const std::uint64_t version = ssam.pipelineStateVersion();
+    ssam::vk::Settings s;
+    s.maskPrecision = ssam::vk::MaskPrecision::Rg16f;
+    ASSERT_EQ(ssam.setSettings(s), Status::Ok) << ssam.lastMessage();
+    EXPECT_NE(ssam.pipelineStateVersion(), version);
+    ssam::vk::PipelineState mask, color;
+    ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Mask, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &mask),
+              Status::Ok);
+    ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Color, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &color),
+              Status::Ok);
+    EXPECT_EQ(mask.version, ssam.pipelineStateVersion());
+    ASSERT_EQ(mask.colorAttachmentCount, 2u);
+    for (int i = 0; i < 2; ++i) {
+        EXPECT_EQ(mask.colorAttachmentFormats[i], VK_FORMAT_R16_SFLOAT) << i;
+        EXPECT_EQ(mask.blendAttachments[i].blendEnable, VK_TRUE) << i;
+        EXPECT_EQ(mask.blendAttachments[i].srcColorBlendFactor, VK_BLEND_FACTOR_ONE) << i;
+        EXPECT_EQ(mask.blendAttachments[i].dstColorBlendFactor, VK_BLEND_FACTOR_ONE) << i;
+    }
+    EXPECT_EQ(mask.blendAttachments[0].colorBlendOp, VK_BLEND_OP_MAX);
+    EXPECT_EQ(mask.blendAttachments[1].colorBlendOp, VK_BLEND_OP_ADD);
+    EXPECT_NE(mask.renderPass, VK_NULL_HANDLE);
+    EXPECT_EQ(color.colorAttachmentCount, 1u);
+    EXPECT_EQ(color.colorAttachmentFormats[0], VK_FORMAT_R8G8B8A8_UNORM);
+
+    Targets t(host, 16, 16);
+    const VkCommandBuffer cb = host.begin();
+    t.prepare(cb);
+    ssam::vk::FrameDesc f;
+    f.commandBuffer = cb;
+    f.colorView = t.color.view;
+    f.colorFormat = t.color.format;
+    f.depthView = t.depth.view;
+    f.depthFormat = t.depth.format;
+    f.width = f.height = 16;
+    ASSERT_EQ(ssam.beginFrame(f), Status::Ok) << ssam.lastMessage();
+    ssam::vk::PassInfo info;
+    ASSERT_EQ(ssam.beginMaskPass(&info), Status::Ok) << ssam.lastMessage();
+    EXPECT_EQ(info.colorAttachmentCount, 2u);
+    ASSERT_EQ(ssam.endMaskPass(), Status::Ok);
+    ASSERT_EQ(ssam.beginColorPass(&info), Status::Ok);
+    EXPECT_EQ(info.colorAttachmentCount, 1u);
+    ASSERT_EQ(ssam.endColorPass(), Status::Ok);
+    ASSERT_EQ(ssam.composite(), Status::Ok) << ssam.lastMessage();
+    EXPECT_NE(ssam.intermediates().maskAdd, VK_NULL_HANDLE);
+    host.wait(host.submit(cb));
+}
+
+// Settings::depthMaskThreshold: a value outside [0, 1] is named; above 0 a frame needs the host's
+// depth image (SSAM copies it), and says so.
+TEST_F(SsamVk, DepthMaskThresholdNeedsTheDepthImage) {
+    ssam::vk::Settings s;
+    s.depthMaskThreshold = 1.5f;
+    EXPECT_EQ(ssam.initialize(describe(host), s), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("depthMaskThreshold = 1.500000 is outside [0, 1]"));
+    s.depthMaskThreshold = 0.5f;
+    ASSERT_EQ(ssam.initialize(describe(host), s), Status::Ok) << ssam.lastMessage();
+    Targets t(host, 8, 8);
+    const VkCommandBuffer cb = host.begin();
+    ssam::vk::FrameDesc f;
+    f.commandBuffer = cb;
+    f.colorView = t.color.view;
+    f.colorFormat = t.color.format;
+    f.depthView = t.depth.view;
+    f.depthFormat = t.depth.format;
+    f.width = f.height = 8;
+    EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("FrameDesc::depthImage is null"));
+    host.wait(host.submit(cb));
 }
 
 // FrameDesc::foliageBounds: none in view records nothing (the callback is not called); in view,

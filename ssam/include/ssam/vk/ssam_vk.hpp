@@ -33,7 +33,9 @@
 //                exit:  COLOR_ATTACHMENT_OPTIMAL, SSAM's writes at COLOR_ATTACHMENT_OUTPUT
 //   host depth   entry: DEPTH_STENCIL_ATTACHMENT_OPTIMAL, last written at EARLY/LATE_FRAGMENT_TESTS
 //                       (DEPTH_STENCIL_ATTACHMENT_WRITE)
-//                SSAM:  mask pass tests it; colour pass tests and writes it; stencil kept as is
+//                SSAM:  mask pass tests it; colour pass tests and writes it; stencil kept as is;
+//                       depthMaskThreshold > 0: copied (TRANSFER_SRC_OPTIMAL, SSAM's barriers, back
+//                       before the colour pass) and rewritten by a depth-only pass after the composite
 //                exit:  DEPTH_STENCIL_ATTACHMENT_OPTIMAL, SSAM's writes at EARLY/LATE_FRAGMENT_TESTS
 // SSAM's render passes carry the external dependencies for exactly those stages and accesses, in
 // and out (on the dynamic-rendering path, pipeline barriers of the same stages and accesses): a
@@ -107,8 +109,10 @@ struct DeviceDesc {
     std::uint32_t queueFamily = 0;  // the family of the queue the host submits SSAM's frames on (graphics)
     std::uint32_t apiVersion = 0;   // what the host gave VkApplicationInfo::apiVersion; 1.0 or newer
     // Features the host enabled. dynamicRendering: Vulkan 1.3's (or VK_KHR_dynamic_rendering's);
-    // synchronization2 is not used yet (SSAM records vkCmdPipelineBarrier).
+    // independentBlend (VkPhysicalDeviceFeatures): needed by MaskPrecision::Rg16f, whose two mask
+    // attachments blend differently; synchronization2 is not used yet (SSAM records vkCmdPipelineBarrier).
     bool dynamicRendering = false;
+    bool independentBlend = false;
     bool synchronization2 = false;
     RenderingPath renderingPath = RenderingPath::RenderPass;
     PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
@@ -166,8 +170,10 @@ struct VertexLayout {
     std::uint32_t constantsBinding = 15;  // below maxVertexInputBindings (16 at least); not one of `bindings`
 };
 
-// Storage of the mask (§3.5.2): Rgba8 as in the paper (the sum saturates at 1); Rgba16f unclamped.
-enum class MaskPrecision : int { Rgba8, Rgba16f };
+// Storage of the mask (§3.5.2): Rgba8 as in the paper (the sum saturates at 1); Rgba16f unclamped;
+// Rg16f as two single-channel R16_SFLOAT attachments (MAX into the first, SUM into the second, as
+// ssam::gl's), which needs the host's independentBlend feature (DeviceDesc::independentBlend).
+enum class MaskPrecision : int { Rgba8, Rgba16f, Rg16f };
 // The host's depth convention: Less / LessEqual conventional, Greater / GreaterEqual reverse-Z.
 enum class DepthTest : int { Less, LessEqual, Greater, GreaterEqual };
 
@@ -180,6 +186,14 @@ struct Settings {
     MaskPrecision maskPrecision = MaskPrecision::Rgba8;
     DepthTest depthTest = DepthTest::Less;
     VertexLayout vertexLayout;  // what the built-in programs read (way a)
+    // The host's depth keeps the foliage depth only where the composited mask reaches this value;
+    // elsewhere the opaque depth is put back (ssam::gl's setting of the same name). 0 (the paper's,
+    // §3.7): foliage depth wherever the colour pass wrote, so a later transparent pass behind a
+    // leaf edge is cut where the leaf is only partly opaque (a rim of the unfogged background).
+    // Above 0: SSAM copies the opaque depth (FrameDesc::depthImage) before the colour pass and
+    // writes it back after the composite where the mask is below it, both over the composite's
+    // region: one depth copy and one full-screen depth-only pass.
+    float depthMaskThreshold = 0.0f;
 };
 
 struct FrameDesc {
@@ -194,6 +208,9 @@ struct FrameDesc {
     // DEPTH_STENCIL_ATTACHMENT usage, the same size. Receives the foliage depth.
     VkImageView depthView = VK_NULL_HANDLE;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+    // The image of depthView: needed only with Settings::depthMaskThreshold > 0, then created with
+    // TRANSFER_SRC usage (SSAM copies its depth aspect, see the contract above).
+    VkImage depthImage = VK_NULL_HANDLE;
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     // Column-major, in the host's clip conventions (Vulkan's: y down, z in [0, w] unless the
@@ -255,21 +272,26 @@ struct PassInfo {
     FoliagePass pass = FoliagePass::Mask;
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;  // FrameDesc's, inside SSAM's render pass
     float alphaReference = 0.0f;                     // colour pass: discard when !(alpha >= it); mask pass 0
+    // 2 in the mask pass with MaskPrecision::Rg16f: the host's shader writes vec4(a) to location 1 too.
+    std::uint32_t colorAttachmentCount = 1;
 };
 
 // The fixed-function state of a pass's pipeline (way b): create the host's pipeline with these
-// (pColorBlendState: one attachment, blendAttachment), viewport and scissor dynamic, and
-// renderPass + subpass 0 (RenderingPath::RenderPass) or a VkPipelineRenderingCreateInfo of the
-// three formats (RenderingPath::DynamicRendering). `version` is pipelineStateVersion() when it
-// was handed out: a setSettings() that changes this state (depthTest, maskPrecision) changes it.
+// (pColorBlendState: colorAttachmentCount attachments, blendAttachments), viewport and scissor
+// dynamic, and renderPass + subpass 0 (RenderingPath::RenderPass) or a
+// VkPipelineRenderingCreateInfo of these formats (RenderingPath::DynamicRendering). `version` is
+// pipelineStateVersion() when it was handed out: a setSettings() that changes this state
+// (depthTest, maskPrecision) changes it. The mask pass with MaskPrecision::Rg16f has two colour
+// attachments (MAX, then ADD: they blend differently, hence independentBlend).
 struct PipelineState {
-    VkPipelineColorBlendAttachmentState blendAttachment{};
+    std::uint32_t colorAttachmentCount = 1;
+    VkPipelineColorBlendAttachmentState blendAttachments[2]{};
     // Filled whole by pipelineState() (sType included; pNext null).
     VkPipelineDepthStencilStateCreateInfo depthStencil{};
     VkPipelineRasterizationStateCreateInfo rasterization{};
     VkPipelineMultisampleStateCreateInfo multisample{};
     VkRenderPass renderPass = VK_NULL_HANDLE;  // RenderPass path; SSAM's until release()
-    VkFormat colorAttachmentFormat = VK_FORMAT_UNDEFINED;
+    VkFormat colorAttachmentFormats[2] = {VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED};
     VkFormat depthAttachmentFormat = VK_FORMAT_UNDEFINED;
     VkFormat stencilAttachmentFormat = VK_FORMAT_UNDEFINED;
     std::uint64_t version = 0;
@@ -341,7 +363,8 @@ public:
     // SSAM's intermediates after render(), e.g. to show the paper's Figures 3.6-3.8: images in
     // SHADER_READ_ONLY_OPTIMAL, written at COLOR_ATTACHMENT_OUTPUT (VK_NULL_HANDLE until first used).
     struct Intermediates {
-        VkImage mask = VK_NULL_HANDLE;     // r = MAX, a = SUM (R8G8B8A8_UNORM / R16G16B16A16_SFLOAT)
+        VkImage mask = VK_NULL_HANDLE;     // r = MAX, a = SUM (R8G8B8A8_UNORM / R16G16B16A16_SFLOAT); Rg16f: MAX in r
+        VkImage maskAdd = VK_NULL_HANDLE;  // Rg16f only: SUM in r (R16_SFLOAT)
         VkImage foliage = VK_NULL_HANDLE;  // rt_foliage, the host colour's format
     };
     Intermediates intermediates() const noexcept;
