@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "png_writer.hpp"
+#include "vk_mist.hpp"
 
 namespace vk_example {
 
@@ -38,7 +39,24 @@ Arguments parse(const Tool& tool, int argc, char** argv) {
         else if (arg == "--mask") a.mask = value();
         else if (arg == "--validation") a.validation = true;
         else if (arg == "--dynamic-rendering") a.dynamicRendering = true;
-        else if (arg == "--wind" && tool.bendsInTheWind) {
+        else if (arg == "--mist") {
+            const std::string v = value();
+            if (v != "after" && v != "before") throw UsageError("--mist '" + v + "': expected after or before");
+            a.mist = v == "after" ? Arguments::Mist::After : Arguments::Mist::Before;
+        } else if (arg == "--depth-threshold") {
+            const std::string v = value();
+            char* end = nullptr;
+            const float t = std::strtof(v.c_str(), &end);
+            if (v.empty() || *end || !(t >= 0.0f && t <= 1.0f))
+                throw UsageError("--depth-threshold '" + v + "': expected a mask value in 0..1");
+            a.depthMaskThreshold = t;
+        } else if (arg == "--precision") {
+            const std::string v = value();
+            if (v == "rgba8") a.precision = ssam::vk::MaskPrecision::Rgba8;
+            else if (v == "rgba16f") a.precision = ssam::vk::MaskPrecision::Rgba16f;
+            else if (v == "rg16f") a.precision = ssam::vk::MaskPrecision::Rg16f;
+            else throw UsageError("--precision '" + v + "': expected rgba8, rgba16f or rg16f");
+        } else if (arg == "--wind" && tool.bendsInTheWind) {
             const std::string v = value();
             char* end = nullptr;
             const float w = std::strtof(v.c_str(), &end);
@@ -54,11 +72,13 @@ Arguments parse(const Tool& tool, int argc, char** argv) {
         } else if (arg == "--help") {
             std::printf(
                 "usage: %s [--out frame.png] [--mask mask.png] [--frames N] [--validation]"
-                " [--dynamic-rendering]%s\n",
+                " [--dynamic-rendering] [--mist after|before] [--depth-threshold T] [--precision P]%s\n",
                 tool.name, tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "");
             std::exit(0);
         } else throw UsageError("unknown argument '" + arg + "'");
     }
+    if (!a.mask.empty() && a.precision != ssam::vk::MaskPrecision::Rgba8)
+        throw UsageError("--mask writes an RGBA8 mask: only with --precision rgba8");
     for (const std::string& path : {a.out, a.mask})
         if (!path.empty() && (path.size() < 4 || path.compare(path.size() - 4, 4, ".png") != 0))
             throw UsageError("'" + path + "': the name must end in .png");
@@ -95,12 +115,17 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
         device.getDeviceProcAddr = vkGetDeviceProcAddr;
         device.dynamicRendering = host.dynamicRendering;
         if (args.dynamicRendering) device.renderingPath = ssam::vk::RenderingPath::DynamicRendering;
-        ssam::vk::Settings settings;  // the paper's knobs
+        device.independentBlend = host.independentBlend;  // MaskPrecision::Rg16f needs it
+        ssam::vk::Settings settings;  // the paper's knobs, but for --depth-threshold and --precision
+        settings.depthMaskThreshold = args.depthMaskThreshold;
+        settings.maskPrecision = args.precision;
         settings.vertexLayout.bindings[0] = {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
         settings.vertexLayout.position = {0, VK_FORMAT_R32G32B32_SFLOAT, 0};
         settings.vertexLayout.uv = {0, VK_FORMAT_R32G32_SFLOAT, 3 * sizeof(float)};
         checkSsam(ssam, ssam.initialize(device, settings), "ssam::vk initialize");
         const std::unique_ptr<FoliageRecorder> foliage = makeRecorder(scene, ssam, args);
+        std::unique_ptr<MistPass> mist;
+        if (args.mist != Arguments::Mist::None) mist = std::make_unique<MistPass>(scene);
 
         // Two frames in flight: frame i waits for frame i - 2's fence before it records.
         std::deque<VkFence> inFlight;
@@ -113,12 +138,14 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             }
             const VkCommandBuffer cb = host.begin();
             scene.recordOpaque(cb);
+            if (args.mist == Arguments::Mist::Before) mist->record(cb);
             ssam::vk::FrameDesc frame;
             frame.commandBuffer = cb;
             frame.colorView = scene.color.view;
             frame.colorFormat = scene.color.format;
             frame.depthView = scene.depth.view;
             frame.depthFormat = scene.depth.format;
+            frame.depthImage = scene.depth.image;  // Settings::depthMaskThreshold copies its depth
             frame.width = kWidth;
             frame.height = kHeight;
             std::copy(std::begin(kViewProj), std::end(kViewProj), frame.viewProj);
@@ -127,6 +154,8 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             frame.frameIndex = std::uint64_t(i);
             frame.framesCompleted = framesCompleted;
             foliage->record(ssam, frame);
+            // Later transparent passes after SSAM: they see the foliage depth.
+            if (args.mist == Arguments::Mist::After) mist->record(cb);
             inFlight.push_back(host.submit(cb));
         }
         for (VkFence f : inFlight) host.wait(f);
@@ -134,6 +163,7 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
         if (!args.mask.empty())
             writeOrThrow(args.mask, scene.read(ssam.intermediates().mask, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
         vkDeviceWaitIdle(host.device);  // SSAM's objects go with the device idle (ssam_vk.hpp, Lifetime)
+        mist.reset();
         ssam.release();
     }
     if (!host.validationMessages.empty()) {

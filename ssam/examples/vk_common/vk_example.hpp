@@ -31,6 +31,10 @@ struct Arguments {
     bool validation = false;
     bool dynamicRendering = false;
     float wind = 0.0f;  // --wind (tools that bend in the wind; their default kDefaultWind)
+    // The host's transparent pass (--mist after|before SSAM), as the GL examples'.
+    enum class Mist { None, After, Before } mist = Mist::None;
+    float depthMaskThreshold = 0.0f;                                     // --depth-threshold
+    ssam::vk::MaskPrecision precision = ssam::vk::MaskPrecision::Rgba8;  // --precision
 };
 
 // How the host's foliage reaches SSAM: made once SSAM is initialised, destroyed before it goes.

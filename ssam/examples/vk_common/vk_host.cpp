@@ -109,6 +109,12 @@ VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering) : validat
         di.pNext = &features13;
         dynamicRendering = true;
     }
+    // independentBlend where the device has it: SSAM's MaskPrecision::Rg16f needs it.
+    VkPhysicalDeviceFeatures supported{}, enabled{};
+    vkGetPhysicalDeviceFeatures(physical, &supported);
+    enabled.independentBlend = supported.independentBlend;
+    independentBlend = supported.independentBlend == VK_TRUE;
+    di.pEnabledFeatures = &enabled;
     di.queueCreateInfoCount = 1;
     di.pQueueCreateInfos = &queueInfo;
     check(vkCreateDevice(physical, &di, nullptr, &device), "vkCreateDevice");

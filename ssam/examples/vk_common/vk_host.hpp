@@ -60,6 +60,7 @@ public:
     std::string deviceName;
     bool validation = false;
     bool dynamicRendering = false;  // the feature is enabled
+    bool independentBlend = false;  // enabled (wherever the device has it)
     std::vector<std::string> validationMessages;
 
 private:

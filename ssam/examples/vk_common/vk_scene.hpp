@@ -78,7 +78,9 @@ struct HostScene {
         color = host.createImage(VK_FORMAT_R8G8B8A8_UNORM, kWidth, kHeight,
                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                  VK_IMAGE_ASPECT_COLOR_BIT);
-        depth = host.createImage(VK_FORMAT_D32_SFLOAT, kWidth, kHeight, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+        // TRANSFER_SRC: Settings::depthMaskThreshold has SSAM copy the opaque depth.
+        depth = host.createImage(VK_FORMAT_D32_SFLOAT, kWidth, kHeight,
+                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                  VK_IMAGE_ASPECT_DEPTH_BIT);
         leaf =
             host.createImage(VK_FORMAT_R8G8B8A8_UNORM, kLeafSize, kLeafSize,

@@ -160,15 +160,15 @@ private:
         VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
         viewport.viewportCount = viewport.scissorCount = 1;
         VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-        blend.attachmentCount = 1;
-        blend.pAttachments = &state.blendAttachment;
+        blend.attachmentCount = state.colorAttachmentCount;
+        blend.pAttachments = state.blendAttachments;
         const VkDynamicState dynamics[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};  // SSAM sets them
         VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
         dynamic.dynamicStateCount = 2;
         dynamic.pDynamicStates = dynamics;
         VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-        rendering.colorAttachmentCount = 1;
-        rendering.pColorAttachmentFormats = &state.colorAttachmentFormat;
+        rendering.colorAttachmentCount = state.colorAttachmentCount;
+        rendering.pColorAttachmentFormats = state.colorAttachmentFormats;
         rendering.depthAttachmentFormat = state.depthAttachmentFormat;
         rendering.stencilAttachmentFormat = state.stencilAttachmentFormat;
         VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
