@@ -21,7 +21,8 @@
 //      pipelines with the fixed-function state pipelineState() hands out (blend, depth-stencil,
 //      rasterization, multisample, the render pass or attachment formats; viewport and scissor
 //      dynamic: SSAM sets them), and its shaders keep ssam::gl's host-shader contract
-//      (ssam/gl/ssam_gl.hpp): the mask pass writes vec4(a) to location 0 and does not alpha-test,
+//      (ssam/gl/ssam_gl.hpp): the mask pass writes vec4(a) to location 0 (and to location 1 when
+//      PassInfo::colorAttachmentCount is 2: MaskPrecision::Rg16f) and does not alpha-test,
 //      the colour pass writes (rgb, a) and discards !(a >= PassInfo::alphaReference).
 // With DeviceDesc::renderingPath DynamicRendering, "render pass" below means SSAM's
 // vkCmdBeginRendering scope.
