@@ -1,14 +1,14 @@
 # SPDX-License-Identifier: MIT
 # The installed package: what another engine finds with
-#   find_package(ssam 0.3 REQUIRED COMPONENTS soft render_gl gl)               (CMake)
-#   pkg-config --static --cflags --libs ssam ssam-soft ssam-render-gl ssam-gl  (anything else)
+#   find_package(ssam 0.3 REQUIRED COMPONENTS soft render_gl gl vk)                   (CMake)
+#   pkg-config --static --cflags --libs ssam ssam-soft ssam-render-gl ssam-gl ssam-vk  (anything else)
 # Included by ssam/CMakeLists.txt once every library of the package exists. Layout:
 #   include/ssam/            ssam's headers and the generated version.hpp
 #   include/ssam/engine/     the engine headers ssam's API is written in (core errors and log,
 #                            render, the soft and GL backends); the ECS is not part of it
-#   lib/libssam*.a           ssam, ssam_core, ssam_render, ssam_render_soft, ssam_render_gl, ssam_gl
+#   lib/libssam*.a           ssam, ssam_core, ssam_render, ssam_render_soft, ssam_render_gl, ssam_gl, ssam_vk
 #   lib/cmake/ssam/          ssamConfig.cmake and one targets file per component
-#   lib/pkgconfig/           ssam.pc, ssam-soft.pc, ssam-render-gl.pc, ssam-gl.pc
+#   lib/pkgconfig/           ssam.pc, ssam-soft.pc, ssam-render-gl.pc, ssam-gl.pc, ssam-vk.pc
 # Everything here belongs to the install component `library` (the demo's is `demo`).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -45,6 +45,7 @@ install(TARGETS engine_render_soft EXPORT ssamSoftTargets COMPONENT library
 install(TARGETS engine_render_gl EXPORT ssamRenderGlTargets COMPONENT library
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${_ssam_engine_includes})
 install(TARGETS ssam_gl EXPORT ssamGlTargets COMPONENT library INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS ssam_vk EXPORT ssamVkTargets COMPONENT library INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT ssamTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} FILE ssam-targets.cmake
         COMPONENT library)
 install(EXPORT ssamSoftTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} FILE ssam-soft-targets.cmake
@@ -52,6 +53,8 @@ install(EXPORT ssamSoftTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} F
 install(EXPORT ssamRenderGlTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir}
         FILE ssam-render_gl-targets.cmake COMPONENT library)
 install(EXPORT ssamGlTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} FILE ssam-gl-targets.cmake
+        COMPONENT library)
+install(EXPORT ssamVkTargets NAMESPACE ssam:: DESTINATION ${_ssam_cmake_dir} FILE ssam-vk-targets.cmake
         COMPONENT library)
 
 install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ssam ${_ssam_generated}/ssam
@@ -85,7 +88,7 @@ set(SSAM_PC_DL_LIBS "")
 if(CMAKE_DL_LIBS)
   set(SSAM_PC_DL_LIBS "-l${CMAKE_DL_LIBS}")
 endif()
-foreach(_pc ssam ssam-soft ssam-render-gl ssam-gl)
+foreach(_pc ssam ssam-soft ssam-render-gl ssam-gl ssam-vk)
   configure_file(${CMAKE_CURRENT_LIST_DIR}/${_pc}.pc.in ${CMAKE_CURRENT_BINARY_DIR}/${_pc}.pc @ONLY)
   install(FILES ${CMAKE_CURRENT_BINARY_DIR}/${_pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
           COMPONENT library)

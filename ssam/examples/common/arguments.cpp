@@ -47,6 +47,13 @@ Arguments::Mist parseMist(const std::string& text) {
     throw UsageError("--mist '" + text + "': expected after or before");
 }
 
+Arguments::Precision parsePrecision(const std::string& text) {
+    if (text == "rgba8") return Arguments::Precision::Rgba8;
+    if (text == "rgba16f") return Arguments::Precision::Rgba16f;
+    if (text == "rg16f") return Arguments::Precision::Rg16f;
+    throw UsageError("--precision '" + text + "': expected rgba8, rgba16f or rg16f");
+}
+
 int parseRepeat(const std::string& text) {
     char* end = nullptr;
     errno = 0;
@@ -91,6 +98,7 @@ Arguments parseArguments(const Tool& tool, int argc, char** argv) {
         else if (arg == "--mist") args.mist = parseMist(value());
         else if (arg == "--repeat") args.repeat = parseRepeat(value()), args.headless = true;
         else if (arg == "--depth-threshold") args.depthMaskThreshold = parseThreshold(value());
+        else if (arg == "--precision") args.precision = parsePrecision(value());
         else if (arg == "--frames") args.frames = parseFrames(value()), framesGiven = true;
         else if (arg == "--wind" && tool.bendsInTheWind) args.wind = parseWind(value());
         else throw UsageError("unknown argument '" + arg + "' (see --help)");
@@ -106,7 +114,8 @@ std::string usage(const Tool& tool) {
     const std::string name = tool.name;
     return "usage: " + name + " [--headless] [--out PATH.png] [--mask PATH.png]" +
            (tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "") +
-           " [--mist after|before] [--depth-threshold T] [--repeat N] [--egl PLATFORM] [--frames N]\n"
+           " [--mist after|before] [--depth-threshold T] [--precision P] [--repeat N] [--egl PLATFORM]"
+           " [--frames N]\n"
            "  --headless    render one frame offscreen (EGL, no window) and write it (the default without a display)\n"
            "  --egl P       the headless context's EGL platform: device (EGL_EXT_platform_device: NVIDIA's and\n"
            "                AMD's headless EGL, Mesa's devices), surfaceless (Mesa), or auto (default: device,\n"
@@ -127,6 +136,7 @@ std::string usage(const Tool& tool) {
            "  --depth-threshold T  keep the foliage depth only where SSAM's mask reaches T (default 0: wherever\n"
            "                the colour pass wrote it, as the paper); above 0 the mist meets leaf edges without\n"
            "                a dark rim\n"
+           "  --precision P SSAM's mask storage: rgba8 (default, the paper's), rgba16f or rg16f (two R16F targets)\n"
            "  --repeat N    headless: draw the frame N times and print the median time of SSAM's passes\n"
            "                (glFinish before and after; implies --headless)\n"
            "  --frames N    in a window: close after N frames (default: when the window is closed)\n"

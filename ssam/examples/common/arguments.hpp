@@ -35,6 +35,7 @@ struct Arguments {
     enum class Mist { None, After, Before } mist = Mist::None;  // --mist: the host's transparent pass
     int repeat = 1;                   // --repeat: headless, time the SSAM frame this many times
     float depthMaskThreshold = 0.0f;  // --depth-threshold: ssam::gl::Settings::depthMaskThreshold
+    enum class Precision { Rgba8, Rgba16f, Rg16f } precision = Precision::Rgba8;  // --precision: maskPrecision
     bool help = false;
 };
 

@@ -377,6 +377,15 @@ void printSsamMessage(void* tool, ssam::gl::Severity severity, const char* messa
         std::fprintf(stderr, "%s: ssam warning: %s\n", static_cast<const Tool*>(tool)->name, message);
 }
 
+ssam::gl::MaskPrecision maskPrecisionOf(Arguments::Precision p) {
+    switch (p) {
+        case Arguments::Precision::Rgba8: break;
+        case Arguments::Precision::Rgba16f: return ssam::gl::MaskPrecision::Rgba16f;
+        case Arguments::Precision::Rg16f: return ssam::gl::MaskPrecision::Rg16f;
+    }
+    return ssam::gl::MaskPrecision::Rgba8;
+}
+
 int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
     EglHeadless context(args.egl);
     std::printf("OpenGL: %s, %s on the %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION),
@@ -385,9 +394,10 @@ int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRender
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
     // SSAM resolves its GL functions through the host's loader: here EGL's. The paper's settings
-    // but for --depth-threshold.
+    // but for --depth-threshold and --precision.
     ssam::gl::Settings settings;
     settings.depthMaskThreshold = args.depthMaskThreshold;
+    settings.maskPrecision = maskPrecisionOf(args.precision);
     check(ssam, ssam.initialize(eglGetProcAddress, settings), "ssam::gl initialize");
     const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
     std::vector<double> milliseconds;
@@ -421,6 +431,7 @@ int runWindow(const Tool& tool, const Arguments& args, const MakeFoliageRenderer
     ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
     ssam::gl::Settings settings;
     settings.depthMaskThreshold = args.depthMaskThreshold;
+    settings.maskPrecision = maskPrecisionOf(args.precision);
     check(ssam, ssam.initialize(glfwGetProcAddress, settings), "ssam::gl initialize");  // here GLFW's loader
     const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
     for (int frame = 0; !glfwWindowShouldClose(window.window) && (args.frames <= 0 || frame < args.frames); ++frame) {

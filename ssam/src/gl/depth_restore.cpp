@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "../composite_glsl.hpp"
 #include "gl_functions.hpp"
 #include "gl_objects.hpp"
 #include "shaders.hpp"
@@ -17,15 +18,8 @@ namespace {
 // framebuffer this pass draws into (sampling it would be a feedback loop, GL 4.5 §9.3.1).
 // A function, not a global: kCompositeHead is another file's global, initialised in no set order.
 std::string restoreFragment() {
-    return shaders::kCompositeHead + R"(
-uniform sampler2D u_opaqueDepth;
-uniform float u_threshold;
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    if (ssamComposite(p).a >= u_threshold) discard;
-    gl_FragDepth = texelFetch(u_opaqueDepth, p, 0).r;
-}
-)";
+    return shaders::kCompositeHead + "uniform sampler2D u_opaqueDepth;\nuniform float u_threshold;\n" +
+           ssam::glsl::kDepthRestoreMain;
 }
 
 bool hasStencil(int format) { return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8; }
@@ -42,7 +36,8 @@ void DepthRestore::destroy(const GlFunctions& gl) {
 void DepthRestore::saveOpaqueDepth(const GlFunctions& gl, unsigned int source, int depthFormat, int width, int height,
                                    const Rect& region) {
     if (!program_) {
-        program_ = compileProgram(gl, "ssam::gl depth restore", shaders::kFullscreenVertex, restoreFragment().c_str());
+        program_ =
+            compileProgram(gl, "ssam::gl depth restore", shaders::kFullscreenVertex.c_str(), restoreFragment().c_str());
         foliage_ = gl.GetUniformLocation(program_, "u_foliage");
         mask_ = gl.GetUniformLocation(program_, "u_mask");
         maskAdd_ = gl.GetUniformLocation(program_, "u_maskAdd");

@@ -9,9 +9,9 @@ namespace ssam::gl::shaders {
 
 // Shared by the mask and colour programs, reading the host's vertex arrays at `locations`.
 std::string foliageVertex(const AttributeLocations& locations);
-extern const char* const kMaskFragment;      // Listing 3.1: alpha only, replicated
-extern const char* const kColorFragment;     // alpha-tested, double-sided lit colour
-extern const char* const kFullscreenVertex;  // one triangle over the viewport
+extern const std::string kMaskFragment;      // Listing 3.1: alpha only, replicated
+extern const std::string kColorFragment;     // alpha-tested, double-sided lit colour
+extern const std::string kFullscreenVertex;  // one triangle over the viewport
 // The composite's inputs and ssamComposite() (composite_glsl.hpp), what every program reading
 // the mask starts with.
 extern const std::string kCompositeHead;

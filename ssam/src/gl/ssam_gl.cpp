@@ -259,7 +259,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
             gl.GenVertexArrays(1, &emptyVao);
             targets.createFramebuffers(gl);
             compileFoliagePrograms(wanted.attributes, mask, color);
-            composite = detail::compileProgram(gl, "ssam::gl composite", shaders::kFullscreenVertex,
+            composite = detail::compileProgram(gl, "ssam::gl composite", shaders::kFullscreenVertex.c_str(),
                                                shaders::kCompositeFragment.c_str());
         } catch (...) {
             deleteObjects();
@@ -278,9 +278,9 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     void compileFoliagePrograms(const AttributeLocations& locations, FoliageProgramObject& maskOut,
                                 FoliageProgramObject& colorOut) {
         const std::string vertex = shaders::foliageVertex(locations);
-        maskOut.id = detail::compileProgram(gl, "ssam::gl mask", vertex.c_str(), shaders::kMaskFragment);
+        maskOut.id = detail::compileProgram(gl, "ssam::gl mask", vertex.c_str(), shaders::kMaskFragment.c_str());
         maskOut.locate(gl);
-        colorOut.id = detail::compileProgram(gl, "ssam::gl colour", vertex.c_str(), shaders::kColorFragment);
+        colorOut.id = detail::compileProgram(gl, "ssam::gl colour", vertex.c_str(), shaders::kColorFragment.c_str());
         colorOut.locate(gl);
     }
 

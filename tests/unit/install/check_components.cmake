@@ -29,7 +29,7 @@ endfunction()
 set(v -DSSAM_VERSION_WANTED=0.3)
 set(all_targets "ssam::ssam;ssam::render;ssam::core;ssam::render_soft;ssam::render_gl;ssam::gl")
 probe(ok "ssam targets: ${all_targets}\n" ${v} "-DSSAM_COMPONENTS=soft render_gl gl")
-probe(ok "ssam targets: ${all_targets}\n" ${v})  # no COMPONENTS: every one that can load
+probe(ok "ssam targets: ${all_targets};ssam::vk\n" ${v})  # no COMPONENTS: every one that can load
 probe(ok "ssam targets: ssam::ssam;ssam::render;ssam::core;ssam::render_soft\n" ${v} -DSSAM_COMPONENTS=soft)
 probe(fail "no component 'vulkan'" ${v} "-DSSAM_COMPONENTS=soft vulkan")
 probe(fail "no component 'vulkan'" ${v} -DSSAM_OPTIONAL=vulkan)
@@ -38,11 +38,12 @@ probe(fail "component 'soft': it needs oneTBB" ${v} -DSSAM_COMPONENTS=soft -DCMA
 probe(ok "optional component 'soft' not loaded: it needs oneTBB.*ssam targets: ssam::ssam;ssam::render;ssam::core;ssam::render_gl;ssam::gl\n"
       ${v} "-DSSAM_COMPONENTS=render_gl gl" -DSSAM_OPTIONAL=soft -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON)
 # Each component needs only what it uses: with glm, Threads, oneTBB, pkg-config (and so Imath
-# and libepoxy) hidden, `gl` alone still loads; the others fail naming what they lack.
+# and libepoxy) hidden, `gl` or `vk` alone still loads; the others fail naming what they lack.
 set(hidden -DCMAKE_DISABLE_FIND_PACKAGE_glm=ON -DCMAKE_DISABLE_FIND_PACKAGE_Threads=ON
     -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_PkgConfig=ON -DCMAKE_DISABLE_FIND_PACKAGE_Imath=ON)
 set(probe_env PKG_CONFIG_LIBDIR= PKG_CONFIG_PATH=)
 probe(ok "ssam targets: ssam::gl\n" ${v} -DSSAM_COMPONENTS=gl ${hidden})
+probe(ok "ssam targets: ssam::vk\n" ${v} -DSSAM_COMPONENTS=vk ${hidden})
 probe(fail "component 'render_gl': it needs glm" ${v} "-DSSAM_COMPONENTS=render_gl gl" ${hidden})
 probe(fail "ssam 0\\.3\\.0: it needs glm" ${v} ${hidden})  # no COMPONENTS: the core is required
 set(probe_env "")

@@ -4,9 +4,10 @@
 # with find_package(ssam 0.3 COMPONENTS soft gl) (gl: the raw-OpenGL snippets) and with pkg-config, at -O3 with warnings as
 # errors, and run. The raw-OpenGL snippets ("// host_foliage.cpp" in README.md,
 # "// host_shaders.cpp" in ssam/README.md, "// loaders.cpp" in ssam/docs/gl_hosts.md: functions
-# a host calls, no main) are compiled the same way against ssam::gl. A README edit that breaks a
+# a host calls, no main) are compiled the same way against ssam::gl, and the Vulkan one
+# ("// vk_host.cpp" in ssam/docs/vk_hosts.md) against ssam::vk. A README edit that breaks a
 # snippet, or drops it, fails this test.
-#   -DBUILD_DIR= -DPREFIX= -DREADME= -DSSAM_README= -DGL_HOSTS= -DWORK= -DCXX= -DPKG_CONFIG=
+#   -DBUILD_DIR= -DPREFIX= -DREADME= -DSSAM_README= -DGL_HOSTS= -DVK_HOSTS= -DWORK= -DCXX= -DPKG_CONFIG=
 #   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
 install_library(${BUILD_DIR} ${PREFIX})
@@ -18,7 +19,7 @@ if(NOT readme MATCHES "```cpp\n(// leaves\\.cpp\n[^`]*)```")
 endif()
 file(WRITE ${WORK}/src/leaves.cpp "${CMAKE_MATCH_1}")
 # The raw-OpenGL snippets, each from its README.
-foreach(pair "${README}:host_foliage" "${SSAM_README}:host_shaders" "${GL_HOSTS}:loaders")
+foreach(pair "${README}:host_foliage" "${SSAM_README}:host_shaders" "${GL_HOSTS}:loaders" "${VK_HOSTS}:vk_host")
   string(REGEX MATCH "^(.*):([a-z_]+)$" _ "${pair}")
   set(snippet_readme ${CMAKE_MATCH_1})
   set(snippet ${CMAKE_MATCH_2})
@@ -31,7 +32,7 @@ endforeach()
 file(WRITE ${WORK}/src/CMakeLists.txt [=[
 cmake_minimum_required(VERSION 3.25)
 project(leaves CXX)
-find_package(ssam 0.3 REQUIRED COMPONENTS soft gl)
+find_package(ssam 0.3 REQUIRED COMPONENTS soft gl vk)
 add_executable(leaves leaves.cpp)
 target_compile_options(leaves PRIVATE -Wall -Wextra -Werror)
 target_link_libraries(leaves PRIVATE ssam::ssam ssam::render_soft)
@@ -41,6 +42,10 @@ pkg_check_modules(HOST_EPOXY REQUIRED IMPORTED_TARGET epoxy)
 add_library(raw_gl_snippets OBJECT host_foliage.cpp host_shaders.cpp loaders.cpp)
 target_compile_options(raw_gl_snippets PRIVATE -Wall -Wextra -Werror)
 target_link_libraries(raw_gl_snippets PRIVATE ssam::gl PkgConfig::HOST_EPOXY)
+# The Vulkan snippet: compiled against ssam::vk (the host's own <vulkan/vulkan.h>).
+add_library(vk_snippet OBJECT vk_host.cpp)
+target_compile_options(vk_snippet PRIVATE -Wall -Wextra -Werror)
+target_link_libraries(vk_snippet PRIVATE ssam::vk)
 ]=])
 
 run(${CMAKE_COMMAND} -S ${WORK}/src -B ${WORK}/cmake-build -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release
@@ -69,3 +74,6 @@ separate_arguments(flags UNIX_COMMAND "${run_output}")
 foreach(snippet host_foliage host_shaders loaders)
   run(${CXX} -std=c++17 -O3 -Wall -Wextra -Werror -c ${WORK}/src/${snippet}.cpp -o ${WORK}/${snippet}.o ${flags})
 endforeach()
+run(${PKG_CONFIG} --cflags ssam-vk)
+separate_arguments(flags UNIX_COMMAND "${run_output}")
+run(${CXX} -std=c++17 -O3 -Wall -Wextra -Werror -c ${WORK}/src/vk_host.cpp -o ${WORK}/vk_host.o ${flags})

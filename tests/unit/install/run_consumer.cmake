@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # cmake -P script: installs the library into a scratch prefix, checks the layout, then
 # configures (no warnings allowed), builds (-O3, warnings as errors) and runs the consumer with
-# find_package(ssam 0.3 COMPONENTS soft render_gl gl); then the raw-OpenGL examples the same way.
+# find_package(ssam 0.3 COMPONENTS soft render_gl gl); then the raw-OpenGL and Vulkan examples the same way.
 #   -DBUILD_DIR= -DPREFIX= -DCONSUMER_SOURCE= -DCONSUMER_BUILD= [-DEXAMPLE_SOURCE= -DEXAMPLE_BUILD=]
 #   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)
@@ -50,6 +50,15 @@ if(EXAMPLE_SOURCE)
   run(${CMAKE_COMMAND} --build ${EXAMPLE_BUILD})
   foreach(example ssam_gl_embedding ssam_gl_host_shaders)
     execute_process(COMMAND ${EXAMPLE_BUILD}/${example} --headless --out ${EXAMPLE_BUILD}/${example}.png
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message("${out}")
+    if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)
+      message(FATAL_ERROR "the installed-package example ${example} failed (${rc}):\n${err}")
+    endif()
+  endforeach()
+  # The Vulkan examples (ssam::vk), built by the same project when the package has the vk component.
+  foreach(example ssam_vk_embedding ssam_vk_host_shaders)
+    execute_process(COMMAND ${EXAMPLE_BUILD}/${example} --out ${EXAMPLE_BUILD}/${example}.png
                     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message("${out}")
     if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)

@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: MIT
+#include "vk_host.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace vk_example {
+
+void check(VkResult result, const char* what) {
+    if (result != VK_SUCCESS)
+        throw std::runtime_error(std::string(what) + " returned VkResult " + std::to_string(result));
+}
+
+namespace {
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidation(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                            VkDebugUtilsMessageTypeFlagsEXT,
+                                            const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    if (severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) return VK_FALSE;
+    static_cast<VulkanHost*>(user)->validationMessages.push_back(data->pMessage ? data->pMessage : "");
+    return VK_FALSE;
+}
+
+bool hasLayer(const char* name) {
+    std::uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    return std::any_of(layers.begin(), layers.end(),
+                       [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+}  // namespace
+
+VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering) : validation(withValidation) {
+    std::uint32_t loaderVersion = VK_API_VERSION_1_0;
+    if (vkEnumerateInstanceVersion(&loaderVersion) != VK_SUCCESS) throw NoVulkan("the Vulkan loader does not answer");
+    constexpr const char* kLayer = "VK_LAYER_KHRONOS_validation";
+    if (validation && !hasLayer(kLayer))
+        throw NoVulkan("no VK_LAYER_KHRONOS_validation (Debian: vulkan-validationlayers)");
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "ssam_vk_embedding";
+    app.apiVersion = std::min<std::uint32_t>(loaderVersion, VK_API_VERSION_1_3);
+    // Synchronization validation: the hazards a missing barrier leaves; messages of warning and
+    // error severity, every type (performance warnings included).
+    const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = enables;
+    VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messenger.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                            VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                            VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messenger.pfnUserCallback = onValidation;
+    messenger.pUserData = this;
+    const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    ci.pApplicationInfo = &app;
+    if (validation) {
+        features.pNext = &messenger;
+        ci.pNext = &features;
+        ci.enabledLayerCount = 1;
+        ci.ppEnabledLayerNames = &kLayer;
+        ci.enabledExtensionCount = 1;
+        ci.ppEnabledExtensionNames = &extension;
+    }
+    if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) throw NoVulkan("vkCreateInstance failed");
+    if (validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+        messenger.pNext = nullptr;
+        check(create(instance, &messenger, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
+    }
+    std::uint32_t count = 0;
+    vkEnumeratePhysicalDevices(instance, &count, nullptr);
+    std::vector<VkPhysicalDevice> devices(count);
+    vkEnumeratePhysicalDevices(instance, &count, devices.data());
+    for (VkPhysicalDevice d : devices) {
+        std::uint32_t families = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(d, &families, nullptr);
+        std::vector<VkQueueFamilyProperties> props(families);
+        vkGetPhysicalDeviceQueueFamilyProperties(d, &families, props.data());
+        for (std::uint32_t i = 0; i < families && !physical; ++i)
+            if (props[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) physical = d, queueFamily = i;
+        if (physical) break;
+    }
+    if (!physical) throw NoVulkan("no Vulkan device with a graphics queue (Debian: mesa-vulkan-drivers)");
+    VkPhysicalDeviceProperties properties;
+    vkGetPhysicalDeviceProperties(physical, &properties);
+    deviceName = properties.deviceName;
+    apiVersion = std::min(app.apiVersion, properties.apiVersion);
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queueInfo.queueFamilyIndex = queueFamily;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+    VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    if (withDynamicRendering) {
+        if (apiVersion < VK_API_VERSION_1_3) throw NoVulkan("dynamic rendering asked for, but no Vulkan 1.3 here");
+        VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        supported.pNext = &features13;
+        vkGetPhysicalDeviceFeatures2(physical, &supported);
+        if (!features13.dynamicRendering) throw NoVulkan("the device has no dynamicRendering feature");
+        features13 = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+        features13.dynamicRendering = VK_TRUE;
+        di.pNext = &features13;
+        dynamicRendering = true;
+    }
+    // independentBlend where the device has it: SSAM's MaskPrecision::Rg16f needs it.
+    VkPhysicalDeviceFeatures supported{}, enabled{};
+    vkGetPhysicalDeviceFeatures(physical, &supported);
+    enabled.independentBlend = supported.independentBlend;
+    independentBlend = supported.independentBlend == VK_TRUE;
+    di.pEnabledFeatures = &enabled;
+    di.queueCreateInfoCount = 1;
+    di.pQueueCreateInfos = &queueInfo;
+    check(vkCreateDevice(physical, &di, nullptr, &device), "vkCreateDevice");
+    vkGetDeviceQueue(device, queueFamily, 0, &queue);
+    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool.queueFamilyIndex = queueFamily;
+    check(vkCreateCommandPool(device, &pool, nullptr, &pool_), "vkCreateCommandPool");
+}
+
+VulkanHost::~VulkanHost() {
+    if (device) {
+        vkDeviceWaitIdle(device);
+        for (const InFlight& f : inFlight_) vkDestroyFence(device, f.fence, nullptr);
+        vkDestroyCommandPool(device, pool_, nullptr);
+        vkDestroyDevice(device, nullptr);
+    }
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        destroy(instance, messenger_, nullptr);
+    }
+    if (instance) vkDestroyInstance(instance, nullptr);
+}
+
+std::uint32_t VulkanHost::memoryType(std::uint32_t bits, VkMemoryPropertyFlags properties) const {
+    VkPhysicalDeviceMemoryProperties memory;
+    vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+    for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+        if ((bits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & properties) == properties) return i;
+    throw std::runtime_error("no suitable memory type");
+}
+
+HostImage VulkanHost::createImage(VkFormat format, std::uint32_t width, std::uint32_t height, VkImageUsageFlags usage,
+                                  VkImageAspectFlags aspect) {
+    HostImage out;
+    out.format = format;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {width, height, 1};
+    info.mipLevels = info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    check(vkCreateImage(device, &info, nullptr, &out.image), "vkCreateImage");
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device, out.image, &requirements);
+    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    allocate.allocationSize = requirements.size;
+    allocate.memoryTypeIndex = memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    check(vkAllocateMemory(device, &allocate, nullptr, &out.memory), "vkAllocateMemory");
+    check(vkBindImageMemory(device, out.image, out.memory, 0), "vkBindImageMemory");
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = out.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    check(vkCreateImageView(device, &view, nullptr, &out.view), "vkCreateImageView");
+    return out;
+}
+
+HostBuffer VulkanHost::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
+    HostBuffer out;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    check(vkCreateBuffer(device, &info, nullptr, &out.buffer), "vkCreateBuffer");
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device, out.buffer, &requirements);
+    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    allocate.allocationSize = requirements.size;
+    allocate.memoryTypeIndex = memoryType(requirements.memoryTypeBits,
+                                          VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+    check(vkAllocateMemory(device, &allocate, nullptr, &out.memory), "vkAllocateMemory");
+    check(vkBindBufferMemory(device, out.buffer, out.memory, 0), "vkBindBufferMemory");
+    check(vkMapMemory(device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped), "vkMapMemory");
+    return out;
+}
+
+void VulkanHost::destroy(HostImage& image) {
+    vkDestroyImageView(device, image.view, nullptr);
+    vkDestroyImage(device, image.image, nullptr);
+    vkFreeMemory(device, image.memory, nullptr);
+    image = {};
+}
+
+void VulkanHost::destroy(HostBuffer& buffer) {
+    vkDestroyBuffer(device, buffer.buffer, nullptr);
+    vkFreeMemory(device, buffer.memory, nullptr);
+    buffer = {};
+}
+
+VkCommandBuffer VulkanHost::begin() {
+    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocate.commandPool = pool_;
+    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocate.commandBufferCount = 1;
+    VkCommandBuffer cb = VK_NULL_HANDLE;
+    check(vkAllocateCommandBuffers(device, &allocate, &cb), "vkAllocateCommandBuffers");
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(cb, &begin), "vkBeginCommandBuffer");
+    return cb;
+}
+
+VkFence VulkanHost::submit(VkCommandBuffer cb) {
+    check(vkEndCommandBuffer(cb), "vkEndCommandBuffer");
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence = VK_NULL_HANDLE;
+    check(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cb;
+    check(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
+    inFlight_.push_back({fence, cb});
+    return fence;
+}
+
+void VulkanHost::wait(VkFence fence) {
+    check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    for (auto it = inFlight_.begin(); it != inFlight_.end(); ++it)
+        if (it->fence == fence) {
+            vkFreeCommandBuffers(device, pool_, 1, &it->commandBuffer);
+            vkDestroyFence(device, fence, nullptr);
+            inFlight_.erase(it);
+            return;
+        }
+}
+
+}  // namespace vk_example

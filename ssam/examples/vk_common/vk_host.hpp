@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The Vulkan host of the vk_embedding example: a plain Vulkan program not built on our engine (its
+// own instance, device, queue, images and buffers), headless. It links the Vulkan loader itself,
+// as an engine does; SSAM gets its vkGetInstanceProcAddr. With validation on it enables
+// VK_LAYER_KHRONOS_validation with synchronization validation and counts every message.
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace vk_example {
+
+// No Vulkan device here (or no validation layer when it is asked for): the example exits 77.
+struct NoVulkan : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+void check(VkResult result, const char* what);  // throws std::runtime_error naming `what`
+
+struct HostImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+};
+struct HostBuffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;  // host-visible, coherent, mapped for its lifetime
+};
+
+class VulkanHost {
+public:
+    // dynamicRendering: enable Vulkan 1.3's feature (NoVulkan where the device has not).
+    explicit VulkanHost(bool validation, bool dynamicRendering = false);
+    ~VulkanHost();
+    VulkanHost(const VulkanHost&) = delete;
+    VulkanHost& operator=(const VulkanHost&) = delete;
+
+    HostImage createImage(VkFormat format, std::uint32_t width, std::uint32_t height, VkImageUsageFlags usage,
+                          VkImageAspectFlags aspect);
+    HostBuffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);  // host-visible
+    void destroy(HostImage& image);
+    void destroy(HostBuffer& buffer);
+
+    // A primary command buffer, begun (one-time submit); submit() ends it, submits it with a fence.
+    VkCommandBuffer begin();
+    VkFence submit(VkCommandBuffer commandBuffer);
+    void wait(VkFence fence);  // waits, then frees the fence (and its command buffer)
+
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    std::uint32_t queueFamily = 0;
+    std::uint32_t apiVersion = VK_API_VERSION_1_0;
+    std::string deviceName;
+    bool validation = false;
+    bool dynamicRendering = false;  // the feature is enabled
+    bool independentBlend = false;  // enabled (wherever the device has it)
+    std::vector<std::string> validationMessages;
+
+private:
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    struct InFlight {
+        VkFence fence;
+        VkCommandBuffer commandBuffer;
+    };
+    std::vector<InFlight> inFlight_;
+    std::uint32_t memoryType(std::uint32_t bits, VkMemoryPropertyFlags properties) const;
+};
+
+}  // namespace vk_example

@@ -1,0 +1,379 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// SSAM for engines that bring their own Vulkan ([Hathaway 2010] §3.5-3.7). SSAM records its mask,
+// colour and composite passes into the host's command buffer, on the host's device: it composites
+// onto the host's colour image and writes the foliage depth into the host's depth image (for
+// later transparent passes, §3.7). It never submits, waits or touches a queue.
+//
+// Host-neutral: standard C++17 and <vulkan/vulkan.h> (types only; define VK_NO_PROTOTYPES or not,
+// as the host likes). No link-time dependency on libvulkan: every Vulkan function is resolved
+// through the host's vkGetInstanceProcAddr / vkGetDeviceProcAddr. Nothing throws into host code:
+// every call returns a Status, and the reason goes to an optional message callback and
+// lastMessage(). SPIR-V is compiled when SSAM is built and carried inside the library.
+//
+// Two ways to draw the foliage, as ssam::gl's:
+//  (a) SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
+//      `draw` twice (mask pass, then colour pass) inside SSAM's render pass with SSAM's pipeline
+//      bound; the host binds its vertex (and index) buffers as Settings::vertexLayout describes,
+//      sets per-draw values through FoliageProgram and records its draws.
+//  (b) The host's own pipelines: beginFrame(), then beginMaskPass() / draws / endMaskPass(),
+//      beginColorPass() / draws / endColorPass(), composite(). The host creates its mask and colour
+//      pipelines with the fixed-function state pipelineState() hands out (blend, depth-stencil,
+//      rasterization, multisample, the render pass or attachment formats; viewport and scissor
+//      dynamic: SSAM sets them), and its shaders keep ssam::gl's host-shader contract
+//      (ssam/gl/ssam_gl.hpp): the mask pass writes vec4(a) to location 0 (and to location 1 when
+//      PassInfo::colorAttachmentCount is 2: MaskPrecision::Rg16f) and does not alpha-test,
+//      the colour pass writes (rgb, a) and discards !(a >= PassInfo::alphaReference).
+// With DeviceDesc::renderingPath DynamicRendering, "render pass" below means SSAM's
+// vkCmdBeginRendering scope.
+//
+// The synchronization contract (FrameDesc::commandBuffer, outside any render pass):
+//   host colour  entry: COLOR_ATTACHMENT_OPTIMAL, last written at COLOR_ATTACHMENT_OUTPUT
+//                       (COLOR_ATTACHMENT_WRITE)
+//                SSAM:  the composite loads, blends and stores it
+//                exit:  COLOR_ATTACHMENT_OPTIMAL, SSAM's writes at COLOR_ATTACHMENT_OUTPUT
+//   host depth   entry: DEPTH_STENCIL_ATTACHMENT_OPTIMAL, last written at EARLY/LATE_FRAGMENT_TESTS
+//                       (DEPTH_STENCIL_ATTACHMENT_WRITE)
+//                SSAM:  mask pass tests it; colour pass tests and writes it; stencil kept as is;
+//                       depthMaskThreshold > 0: copied (TRANSFER_SRC_OPTIMAL, SSAM's barriers, back
+//                       before the colour pass) and rewritten by a depth-only pass after the composite
+//                exit:  DEPTH_STENCIL_ATTACHMENT_OPTIMAL, SSAM's writes at EARLY/LATE_FRAGMENT_TESTS
+// SSAM's render passes carry the external dependencies for exactly those stages and accesses, in
+// and out (on the dynamic-rendering path, pipeline barriers of the same stages and accesses): a
+// host whose last access was another stage (a transfer, a compute write, a sampled read) records
+// its own barrier into the entry row first, and one out of the exit row before it uses the images
+// another way (e.g. copies the colour out: COLOR_ATTACHMENT_OUTPUT / COLOR_ATTACHMENT_WRITE ->
+// TRANSFER / TRANSFER_READ). Between its passes SSAM records its own barriers (its uniform update,
+// its intermediates), and it never waits on the device.
+//
+// Lifetime: SSAM's objects (render passes, pipelines, its intermediate images, framebuffers over
+// the host's views) live until release() or the destructor, which need the host's device idle for
+// them (vkDeviceWaitIdle, or every command buffer SSAM recorded into completed). What SSAM
+// replaces while running (intermediates on a resize, framebuffers of views no longer used) it
+// destroys once FrameDesc::framesCompleted says no frame that used them is still in flight.
+// The host keeps alive until then: its device, its image views given in FrameDesc, its vertex
+// buffers and textures (and their samplers) bound through FoliageProgram.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <type_traits>
+
+#include <vulkan/vulkan.h>
+
+namespace ssam::vk {
+
+// ---- Results ---------------------------------------------------------------------------
+
+enum class Status : int {
+    Ok = 0,
+    InvalidArgument,     // a bad setting, frame, device description or callback (the message names it)
+    InvalidCall,         // out of order: not initialised, a frame from inside a render pass, ...
+    MissingEntryPoint,   // the host's loader returned no address for a function SSAM needs (named)
+    UnsupportedFeature,  // the device lacks what a setting needs (named), e.g. a format as attachment
+    DeviceError,         // a Vulkan call failed (the message names it and its VkResult)
+    CallbackFailed,      // the host's draw callback threw (the exception is not rethrown)
+    OutOfMemory,         // host or device memory (VK_ERROR_OUT_OF_*_MEMORY, std::bad_alloc)
+    Internal,            // an unexpected error inside SSAM (a bug: the message says what)
+};
+const char* statusName(Status status) noexcept;  // "ok", "invalid argument", ...
+
+enum class Severity : int { Info, Warning, Error };
+const char* severityName(Severity severity) noexcept;
+
+// Called for every error (Status other than Ok) and once with what was initialised (Info).
+// `message` is valid during the call only. A callback that throws is ignored.
+using MessageCallback = void (*)(void* user, Severity severity, const char* message);
+
+// Device memory for SSAM's intermediate images, from the host's allocator (optional: without one
+// SSAM makes one vkAllocateMemory per image). allocate() returns VK_SUCCESS with a block of
+// `requirements.size` bytes at `*offset` of `*memory`, aligned and of a type allowed by
+// `requirements`, with `properties` (DEVICE_LOCAL); release() gets back what allocate() gave.
+struct DeviceMemoryCallbacks {
+    void* user = nullptr;
+    VkResult (*allocate)(void* user, const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties,
+                         VkDeviceMemory* memory, VkDeviceSize* offset) = nullptr;
+    void (*release)(void* user, VkDeviceMemory memory, VkDeviceSize offset) = nullptr;
+};
+
+// How SSAM records its passes. RenderPass: VkRenderPass + VkFramebuffer, whose external
+// dependencies are the contract (the 1.3.239 layers' synchronization validation checks this
+// path). DynamicRendering: vkCmdBeginRendering with pipeline barriers of the same stages and
+// accesses (no render pass or framebuffer objects); needs the host's dynamicRendering feature.
+enum class RenderingPath : int { RenderPass, DynamicRendering };
+
+// The host's Vulkan, as it created it. SSAM uses the device from one thread at a time (the
+// host's recording thread) and creates its objects with `allocationCallbacks`.
+struct DeviceDesc {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    std::uint32_t queueFamily = 0;  // the family of the queue the host submits SSAM's frames on (graphics)
+    std::uint32_t apiVersion = 0;   // what the host gave VkApplicationInfo::apiVersion; 1.0 or newer
+    // Features the host enabled. dynamicRendering: Vulkan 1.3's (or VK_KHR_dynamic_rendering's);
+    // independentBlend (VkPhysicalDeviceFeatures): needed by MaskPrecision::Rg16f, whose two mask
+    // attachments blend differently; synchronization2 is not used yet (SSAM records vkCmdPipelineBarrier).
+    bool dynamicRendering = false;
+    bool independentBlend = false;
+    bool synchronization2 = false;
+    RenderingPath renderingPath = RenderingPath::RenderPass;
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
+    PFN_vkGetDeviceProcAddr getDeviceProcAddr = nullptr;  // optional: resolved through the instance's
+    const VkAllocationCallbacks* allocationCallbacks = nullptr;
+    DeviceMemoryCallbacks memory;  // optional
+};
+
+// ---- Plain data ----------------------------------------------------------------------------
+
+struct Rect {
+    int x = 0, y = 0, width = 0, height = 0;  // pixels, rows from the top (Vulkan's framebuffer y)
+};
+
+// An axis-aligned world-space box.
+struct Box {
+    float min[3] = {0.0f, 0.0f, 0.0f};
+    float max[3] = {0.0f, 0.0f, 0.0f};
+};
+
+// The directional light of SSAM's built-in colour program. The default is unlit: colour = base colour.
+struct Light {
+    float towardLight[3] = {0.0f, 0.0f, 1.0f};  // world space, need not be normalised
+    float color[3] = {0.0f, 0.0f, 0.0f};        // scales max(dot(n, towardLight), 0), double-sided
+    float ambient[3] = {1.0f, 1.0f, 1.0f};
+};
+
+// Where the built-in programs read the host's vertex buffers: each attribute's binding, format
+// and offset (any format Vulkan converts to the shader's float vector: e.g. R32G32B32_SFLOAT for
+// the position, R8G8B8A8_UNORM for the colour). An absent attribute (format VK_FORMAT_UNDEFINED)
+// reads SSAM's constant: normal (0,0,1), uv (0,0), colour (1,1,1,1), instance model the identity,
+// from a buffer SSAM binds at `constantsBinding`, which the host must leave alone in the draw callback.
+struct VertexAttribute {
+    std::uint32_t binding = 0;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::uint32_t offset = 0;
+};
+struct VertexBinding {
+    std::uint32_t binding = 0;
+    std::uint32_t stride = 0;
+    VkVertexInputRate inputRate = VK_VERTEX_INPUT_RATE_VERTEX;
+};
+struct VertexLayout {
+    static constexpr std::size_t kMaxBindings = 4;
+    // Every element spelled out: GCC 12 rejects `Settings s; s = {};` when an array member's
+    // initializer leaves elements to brace elision.
+    VertexBinding bindings[kMaxBindings] = {VertexBinding{0, 12, VK_VERTEX_INPUT_RATE_VERTEX}, VertexBinding{},
+                                            VertexBinding{}, VertexBinding{}};
+    std::uint32_t bindingCount = 1;
+    VertexAttribute position{0, VK_FORMAT_R32G32B32_SFLOAT, 0};  // vec3, required
+    VertexAttribute normal;                                      // vec3, double-sided lighting
+    VertexAttribute uv;                                          // vec2, base-colour texture coordinates
+    VertexAttribute color;                                       // vec4, multiplies the base colour
+    VertexAttribute instanceModel;        // mat4 as 4 vec4 columns at offset, + 16, + 32, + 48 (R32G32B32A32_SFLOAT)
+    std::uint32_t constantsBinding = 15;  // below maxVertexInputBindings (16 at least); not one of `bindings`
+};
+
+// Storage of the mask (§3.5.2): Rgba8 as in the paper (the sum saturates at 1); Rgba16f unclamped;
+// Rg16f as two single-channel R16_SFLOAT attachments (MAX into the first, SUM into the second, as
+// ssam::gl's), which needs the host's independentBlend feature (DeviceDesc::independentBlend).
+enum class MaskPrecision : int { Rgba8, Rgba16f, Rg16f };
+// The host's depth convention: Less / LessEqual conventional, Greater / GreaterEqual reverse-Z.
+enum class DepthTest : int { Less, LessEqual, Greater, GreaterEqual };
+
+// The paper's knobs, with its values as defaults (the same as ssam::Config's and ssam::gl's).
+struct Settings {
+    float maskLerp = 0.85f;                                    // mask = lerp(MAX, SUM, maskLerp) (§3.5.4, Listing 3.2)
+    float colorAlphaReference = 64.0f / 255.0f;                // colour-pass alpha test (§3.5.3)
+    float foliageClearColor[4] = {0.16f, 0.22f, 0.08f, 0.0f};  // where the mask covers but no colour (§3.6.1)
+    bool squareMask = true;                                    // the squared alpha trick (§3.6.2)
+    MaskPrecision maskPrecision = MaskPrecision::Rgba8;
+    DepthTest depthTest = DepthTest::Less;
+    VertexLayout vertexLayout;  // what the built-in programs read (way a)
+    // The host's depth keeps the foliage depth only where the composited mask reaches this value;
+    // elsewhere the opaque depth is put back (ssam::gl's setting of the same name). 0 (the paper's,
+    // §3.7): foliage depth wherever the colour pass wrote, so a later transparent pass behind a
+    // leaf edge is cut where the leaf is only partly opaque (a rim of the unfogged background).
+    // Above 0: SSAM copies the opaque depth (FrameDesc::depthImage) before the colour pass and
+    // writes it back after the composite where the mask is below it, both over the composite's
+    // region: one depth copy and one full-screen depth-only pass.
+    float depthMaskThreshold = 0.0f;
+};
+
+struct FrameDesc {
+    // In the recording state, outside a render pass, of the queue family DeviceDesc names.
+    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
+    // The host's opaque colour: a single-sample 2D view (one level, one layer) with
+    // COLOR_ATTACHMENT usage, in R8G8B8A8_UNORM / _SRGB, B8G8R8A8_UNORM / _SRGB,
+    // R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT (sRGB blends in linear, as Vulkan does).
+    VkImageView colorView = VK_NULL_HANDLE;
+    VkFormat colorFormat = VK_FORMAT_UNDEFINED;
+    // Its depth: D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D24_UNORM_S8_UINT or D32_SFLOAT_S8_UINT,
+    // DEPTH_STENCIL_ATTACHMENT usage, the same size. Receives the foliage depth.
+    VkImageView depthView = VK_NULL_HANDLE;
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+    // The image of depthView: needed only with Settings::depthMaskThreshold > 0, then created with
+    // TRANSFER_SRC usage (SSAM copies its depth aspect, see the contract above).
+    VkImage depthImage = VK_NULL_HANDLE;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    // Column-major, in the host's clip conventions (Vulkan's: y down, z in [0, w] unless the
+    // host's projection says otherwise; SSAM draws with a viewport of the whole frame, y down).
+    float viewProj[16] = {1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f,
+                          0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+    Light light;
+    // World-space boxes around everything the host will draw. Given (count > 0): when none is in
+    // view nothing is recorded (SSAM costs nothing, the callback is not called) and the composite
+    // is scissored to their screen region. Not given: every pass covers the whole frame.
+    const Box* foliageBounds = nullptr;
+    std::size_t foliageBoundsCount = 0;
+    // Deferred destruction (N frames in flight is the host's choice): `frameIndex` numbers the
+    // frame being recorded (increasing); every frame numbered below `framesCompleted` has finished
+    // on the device (its fence signalled). Objects SSAM retires are destroyed once no frame that
+    // used them can still run. framesCompleted = frameIndex: nothing is in flight.
+    std::uint64_t frameIndex = 0;
+    std::uint64_t framesCompleted = 0;
+};
+
+struct FrameReport {
+    bool foliageInView = false;  // false: nothing was recorded (way b: the frame is over, call nothing)
+    int passesRun = 0;           // 0 or 3
+    Rect compositeRegion;        // where the composite ran
+};
+
+enum class FoliagePass : int { Mask, Color };
+const char* foliagePassName(FoliagePass pass) noexcept;  // "mask", "colour"
+
+// A host texture for the built-in programs (createTexture); 0 is "none".
+using TextureId = std::uint32_t;
+
+namespace detail {
+struct Recorder;
+}
+
+// What the draw callback gets (way a). Clip position = viewProj (FrameDesc) * model (setModel) *
+// instanceModel (attribute) * position. Alpha = factor.a * colour.a * texel.a; the colour pass
+// discards alpha < alphaReference and writes base rgb * (ambient + light * lambert). SSAM's
+// pipeline is bound, with its descriptor sets and push constants: the host records
+// vkCmdBindVertexBuffers / vkCmdBindIndexBuffer / vkCmdDraw* (and nothing that binds another
+// pipeline, descriptor set or the constants binding) into `commandBuffer`.
+struct FoliageProgram {
+    FoliagePass pass = FoliagePass::Mask;
+    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;  // push constants: model (0), factor (64), hasTexture (80)
+    float alphaReference = 0.0f;               // colour pass: Settings::colorAlphaReference; mask pass: 0
+
+    void setModel(const float columnMajor[16]) const noexcept;                   // identity until set
+    void setBaseColorFactor(float r, float g, float b, float a) const noexcept;  // (1,1,1,1) until set
+    // A texture from createTexture (straight alpha), or 0 for none (texel = (1,1,1,1)).
+    void bindBaseColorTexture(TextureId texture) const noexcept;
+
+    const detail::Recorder* recorder = nullptr;  // SSAM's (internal)
+};
+
+// What a pass of the host's own pipelines must know (way b).
+struct PassInfo {
+    FoliagePass pass = FoliagePass::Mask;
+    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;  // FrameDesc's, inside SSAM's render pass
+    float alphaReference = 0.0f;                     // colour pass: discard when !(alpha >= it); mask pass 0
+    // 2 in the mask pass with MaskPrecision::Rg16f: the host's shader writes vec4(a) to location 1 too.
+    std::uint32_t colorAttachmentCount = 1;
+};
+
+// The fixed-function state of a pass's pipeline (way b): create the host's pipeline with these
+// (pColorBlendState: colorAttachmentCount attachments, blendAttachments), viewport and scissor
+// dynamic, and renderPass + subpass 0 (RenderingPath::RenderPass) or a
+// VkPipelineRenderingCreateInfo of these formats (RenderingPath::DynamicRendering). `version` is
+// pipelineStateVersion() when it was handed out: a setSettings() that changes this state
+// (depthTest, maskPrecision) changes it. The mask pass with MaskPrecision::Rg16f has two colour
+// attachments (MAX, then ADD: they blend differently, hence independentBlend).
+struct PipelineState {
+    std::uint32_t colorAttachmentCount = 1;
+    VkPipelineColorBlendAttachmentState blendAttachments[2]{};
+    // Filled whole by pipelineState() (sType included; pNext null).
+    VkPipelineDepthStencilStateCreateInfo depthStencil{};
+    VkPipelineRasterizationStateCreateInfo rasterization{};
+    VkPipelineMultisampleStateCreateInfo multisample{};
+    VkRenderPass renderPass = VK_NULL_HANDLE;  // RenderPass path; SSAM's until release()
+    VkFormat colorAttachmentFormats[2] = {VK_FORMAT_UNDEFINED, VK_FORMAT_UNDEFINED};
+    VkFormat depthAttachmentFormat = VK_FORMAT_UNDEFINED;
+    VkFormat stencilAttachmentFormat = VK_FORMAT_UNDEFINED;
+    std::uint64_t version = 0;
+};
+
+// ---- SSAM ----------------------------------------------------------------------------------
+
+class ScreenSpaceAlphaMaskVk {
+public:
+    ScreenSpaceAlphaMaskVk() noexcept;  // no Vulkan yet
+    ~ScreenSpaceAlphaMaskVk();          // release()
+    ScreenSpaceAlphaMaskVk(ScreenSpaceAlphaMaskVk&&) noexcept;
+    ScreenSpaceAlphaMaskVk& operator=(ScreenSpaceAlphaMaskVk&&) noexcept;
+    ScreenSpaceAlphaMaskVk(const ScreenSpaceAlphaMaskVk&) = delete;
+    ScreenSpaceAlphaMaskVk& operator=(const ScreenSpaceAlphaMaskVk&) = delete;
+
+    void setMessageCallback(MessageCallback callback, void* user) noexcept;
+    const char* lastMessage() const noexcept;  // of the last call that did not return Ok ("" before any)
+
+    // Resolves SSAM's Vulkan functions through the host's loader (MissingEntryPoint names the
+    // first one missing) and creates what does not depend on a frame: shader modules, layouts,
+    // samplers, its small constants buffer. May be called again after release().
+    Status initialize(const DeviceDesc& device, const Settings& settings = {}) noexcept;
+    // Destroys every object SSAM made; the host's device must be idle for them (see Lifetime above).
+    void release() noexcept;
+
+    // InvalidArgument naming the knob; a new vertex layout or depth test rebuilds the pipelines
+    // (the old ones retired until the frames using them completed).
+    Status setSettings(const Settings& settings) noexcept;
+    const Settings& settings() const noexcept;
+
+    // A host texture the built-in programs may sample (a 2D view in SHADER_READ_ONLY_OPTIMAL, ready
+    // for fragment-shader reads when the frame runs: the host's barrier), with the host's sampler
+    // or, for VK_NULL_HANDLE, SSAM's linear clamp-to-edge one. destroyTexture retires it: gone
+    // once FrameDesc::framesCompleted passes `lastFrameIndex`.
+    Status createTexture(VkImageView view, VkSampler sampler, TextureId* id) noexcept;
+    Status destroyTexture(TextureId id, std::uint64_t lastFrameIndex) noexcept;
+
+    // Way (a): records the three passes with SSAM's built-in programs; `draw(user, program)` runs
+    // twice (mask pass, colour pass) and records the same draws in the same order each time (§3.8).
+    using DrawFoliage = void (*)(void* user, const FoliageProgram& program);
+    Status render(const FrameDesc& frame, DrawFoliage draw, void* user, FrameReport* report = nullptr) noexcept;
+    template <class Draw>
+    Status render(const FrameDesc& frame, Draw&& draw, FrameReport* report = nullptr) noexcept {
+        using Callable = std::remove_reference_t<Draw>;
+        return render(
+            frame, [](void* user, const FoliageProgram& p) { (*static_cast<Callable*>(user))(p); },
+            const_cast<void*>(static_cast<const void*>(std::addressof(draw))), report);
+    }
+
+    // Way (b): the host's own pipelines, one pass at a time, recorded into FrameDesc::commandBuffer.
+    // beginFrame checks the frame, (re)creates SSAM's targets and records its per-frame update;
+    // each begin...Pass begins SSAM's render pass (viewport and scissor set, nothing bound); the
+    // host binds its pipeline (pipelineState()), descriptor sets and buffers and draws; the
+    // matching end...Pass ends it; composite() records the composite and ends the frame. Out of
+    // order: InvalidCall; an open pass is then ended (the command buffer stays valid) and the frame
+    // abandoned.
+    Status beginFrame(const FrameDesc& frame, FrameReport* report = nullptr) noexcept;
+    Status beginMaskPass(PassInfo* info = nullptr) noexcept;
+    Status endMaskPass() noexcept;
+    Status beginColorPass(PassInfo* info = nullptr) noexcept;
+    Status endColorPass() noexcept;
+    Status composite() noexcept;
+    // The state the host's pipeline for `pass` must use with the host's colour and depth formats.
+    Status pipelineState(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat,
+                         PipelineState* state) const noexcept;
+    std::uint64_t pipelineStateVersion() const noexcept;
+
+    // SSAM's intermediates after render(), e.g. to show the paper's Figures 3.6-3.8: images in
+    // SHADER_READ_ONLY_OPTIMAL, written at COLOR_ATTACHMENT_OUTPUT (VK_NULL_HANDLE until first used).
+    struct Intermediates {
+        VkImage mask = VK_NULL_HANDLE;     // r = MAX, a = SUM (R8G8B8A8_UNORM / R16G16B16A16_SFLOAT); Rg16f: MAX in r
+        VkImage maskAdd = VK_NULL_HANDLE;  // Rg16f only: SUM in r (R16_SFLOAT)
+        VkImage foliage = VK_NULL_HANDLE;  // rt_foliage, the host colour's format
+    };
+    Intermediates intermediates() const noexcept;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ssam::vk

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Inside ssam::vk errors travel as a Failure (a Status and its message); the public calls turn
+// them into their return value and the message callback (ssam_vk.cpp), so nothing throws into
+// host code.
+#include <stdexcept>
+#include <string>
+
+#include "ssam/vk/ssam_vk.hpp"
+
+namespace ssam::vk::detail {
+
+struct Failure : std::runtime_error {
+    Status status;
+    Failure(Status s, const std::string& message) : std::runtime_error(message), status(s) {}
+};
+
+const char* resultName(VkResult result) noexcept;
+
+// Throws DeviceError (OutOfMemory for the VK_ERROR_OUT_OF_*_MEMORY results) naming `what`.
+void check(VkResult result, const char* what);
+
+}  // namespace ssam::vk::detail
