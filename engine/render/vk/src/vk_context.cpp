@@ -7,6 +7,11 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
+#include "engine/render/vk/vk_window.hpp"
+
+#define GLFW_INCLUDE_NONE
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
 
 namespace engine::render::vk {
 namespace {
@@ -103,6 +108,9 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
     app.pEngineName = "ssam";
     app.apiVersion = VK_API_VERSION_1_3;
     std::vector<const char*> layers, extensions;
+    std::vector<std::string> windowExtensions;
+    if (options.window) windowExtensions = VulkanWindow::instanceExtensions();
+    for (const std::string& e : windowExtensions) extensions.push_back(e.c_str());
     // Synchronization validation: the hazards a missing barrier leaves ([Khronos validation]).
     const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
     VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
@@ -136,6 +144,10 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
         messenger.pNext = nullptr;
         check(create(c->instance, &messenger, nullptr, &c->messenger), "Vulkan backend: creating the debug messenger");
     }
+
+    if (options.window)
+        check(glfwCreateWindowSurface(c->instance, options.window->window(), nullptr, &c->surface),
+              "Vulkan backend: glfwCreateWindowSurface");
 
     std::uint32_t count = 0;
     vkEnumeratePhysicalDevices(c->instance, &count, nullptr);
@@ -183,6 +195,14 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
     std::vector<const char*> deviceExtensions;
+    if (c->surface) {
+        VkBool32 presents = VK_FALSE;
+        vkGetPhysicalDeviceSurfaceSupportKHR(c->physical, c->queueFamily, c->surface, &presents);
+        if (!presents || !hasDeviceExtension(c->physical, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+            throw Error(std::string("Vulkan backend: ") + c->properties.deviceName +
+                        "'s graphics queue cannot present to the window");
+        deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
     VkPhysicalDeviceConditionalRenderingFeaturesEXT conditional{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CONDITIONAL_RENDERING_FEATURES_EXT};
     VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
@@ -219,6 +239,7 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
 
 VulkanContext::~VulkanContext() {
     if (device) vkDestroyDevice(device, nullptr);
+    if (surface) vkDestroySurfaceKHR(instance, surface, nullptr);
     if (messenger) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));

@@ -17,6 +17,7 @@ struct VulkanContext {
     VkInstance instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
     VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkSurfaceKHR surface = VK_NULL_HANDLE;  // VulkanOptions::window's, when there is one
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
     std::uint32_t queueFamily = 0;
@@ -35,7 +36,8 @@ struct VulkanContext {
     std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted, const std::string& what) const;
 };
 
-// Throws engine::Error naming `what` and the VkResult when `result` is not VK_SUCCESS.
+// Throws engine::Error naming `what` and the VkResult when `result` is not VK_SUCCESS; a lost
+// device is named as such (deviceLostMessage).
 void check(VkResult result, const std::string& what);
 const char* resultName(VkResult result);
 
