@@ -388,10 +388,13 @@ WindowLoopResult runWindowLoop(LoopWindow& window, engine::render::Backend& rend
         }
         size.rendered();
         window.show(frame.color());
+        // The frame ends when its pass times are in (takeTimings waits for the queue on GL and
+        // Vulkan), so the frame time bounds their sum.
+        const std::vector<engine::render::PassTiming> timings = renderer.takeTimings();
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         totalMs += ms;
         ++result.frames;
-        stats.add(ms, renderer.takeTimings());
+        stats.add(ms, timings);
         if (std::chrono::duration<double>(Clock::now() - titleShown).count() >= kTitleInterval) {
             glfwSetWindowTitle(window.window(), stats.title(frame.technique(), camera, paused, size.current()).c_str());
             hud = stats.hudFacts();

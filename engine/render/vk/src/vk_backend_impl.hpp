@@ -106,6 +106,8 @@ private:
     int supportedSamples(VkFormat format, bool depth, int wanted, const std::string& what) const;
     void upload(VulkanTexture& t, const TextureData* data);
     void destroyTextureObjects(const VulkanTexture& t);
+    void checkDeviceLimits(const TextureDesc& desc, const std::string& what) const;
+    MemoryProbe memoryProbe() const;
     VulkanBuffer makeBuffer(const BufferDesc& desc, const std::string& what);
 
     // vk_pipelines.cpp
@@ -130,6 +132,7 @@ private:
     VulkanCounters counters_;
     std::unique_ptr<FrameRing> frames_;
     std::unique_ptr<Swapchain> swapchain_;  // with a window only
+    std::uint64_t heldBytes_ = 0;           // the images' memory (memoryProbe on a GPU)
     ResourcePool<TextureTag, VulkanTexture> textures_;
     ResourcePool<BufferTag, VulkanBuffer> buffers_;
     ResourcePool<PipelineTag, VulkanPipeline> pipelines_;

@@ -21,6 +21,7 @@ struct VulkanContext {
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
     std::uint32_t queueFamily = 0;
+    std::uint32_t timestampValidBits = 0;  // of the queue family's timestamps (0: none)
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memory{};
     bool conditionalRendering = false;  // VK_EXT_conditional_rendering enabled
@@ -36,8 +37,9 @@ struct VulkanContext {
     std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted, const std::string& what) const;
 };
 
-// Throws engine::Error naming `what` and the VkResult when `result` is not VK_SUCCESS; a lost
-// device is named as such (deviceLostMessage).
+// Throws engine::Error naming `what` and the VkResult when `result` is not VK_SUCCESS, with
+// vulkanResultMessage's words (vk_results.hpp): a lost device is named as such. Every submit,
+// fence wait, query-result read, acquire and present goes through it.
 void check(VkResult result, const std::string& what);
 const char* resultName(VkResult result);
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "engine/render/backend.hpp"
+#include "engine/render/memory_budget.hpp"
 
 namespace engine::render::vk {
 
@@ -44,6 +45,11 @@ struct VulkanOptions {
     // A window to present to (present()): its surface's instance extensions and
     // VK_KHR_swapchain are enabled, and the device's graphics queue must present to it.
     std::shared_ptr<VulkanWindow> window;
+    // What the device can still allocate, asked before each image and buffer is allocated
+    // (memory_budget.hpp: refused by name unless twice its size is free). Empty: the host's
+    // memory on a CPU device (lavapipe keeps images in host memory, as llvmpipe GL does), else
+    // the device-local heap's size less what this backend holds. Tests set a small one.
+    MemoryProbe memory;
 };
 
 struct VulkanInfo {
