@@ -284,7 +284,9 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                    "within 1.25x the paper's time; ssam/docs/knobs.md)")
         ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
         ->capture_default_str();
-    app.add_option("--backend", o.backends, "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU)")
+    app.add_option(
+           "--backend", o.backends,
+           "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU), vk (Vulkan; lavapipe without a GPU)")
         ->capture_default_str();
     app.add_option("--size", o.size, "frame size WIDTHxHEIGHT")->capture_default_str();
     app.add_option("--reps", o.reps, "timed repetitions per technique")

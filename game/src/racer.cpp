@@ -19,6 +19,7 @@
 #include "engine/core/usage_error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/vk/vk_backend.hpp"
+#include "engine/render/vk/vk_window.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "frame_renderer.hpp"
@@ -38,6 +39,7 @@ namespace {
 
 using namespace racer;
 namespace gl = engine::render::gl;
+namespace vk = engine::render::vk;
 
 std::string passTimings(const std::vector<engine::render::PassTiming>& timings) {
     std::string passes;
@@ -69,10 +71,13 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
         const auto start = std::chrono::steady_clock::now();
         last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
         frame.render(last.lists, last.camera);
+        // The pass times come with the frame's results (takeTimings waits for them on GL and
+        // Vulkan, whose queues run after render() returns): the frame ends there, so its time
+        // bounds the passes' sum.
+        lastTimings = backend.takeTimings();
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         totalMs += ms;
         lastMs = ms;
-        lastTimings = backend.takeTimings();
         const std::string passes = passTimings(lastTimings);
         if (i == 0 || (i + 1) % 10 == 0 || i + 1 == o.frames)
             std::printf("frame %d/%d  %.1f ms  (ms:%s)\n", i + 1, o.frames, ms, passes.c_str());
@@ -110,13 +115,15 @@ int run(const CLI::App& app, const Options& o) {
     const float aspect = float(renderer.width) / float(renderer.height);
 
     // A window needs a display and no --headless. The window's GL context presents; the
-    // frames are drawn by GL (auto, gl) or by the soft backend and uploaded (soft).
-    // A display that cannot be opened is reported and rendered headless, as without one.
+    // frames are drawn by GL (auto, gl) or by the soft backend and uploaded (soft). With
+    // --backend vk the window has no GL context (GLFW_NO_API) and the Vulkan backend presents
+    // to it through a swapchain. A display or Vulkan surface that cannot be had is reported
+    // and rendered headless, as without a display.
     auto displaySet = [](const char* name) { return std::getenv(name) && *std::getenv(name); };
+    const bool wantWindow = !o.headless && (displaySet("DISPLAY") || displaySet("WAYLAND_DISPLAY"));
     std::shared_ptr<gl::GlfwWindowContext> window;
     std::unique_ptr<gl::GlBackend> glBackend;
-    // --backend vk renders headless: its window (a GLFW Vulkan surface) is not built yet.
-    if (!o.headless && o.backend != "vk" && (displaySet("DISPLAY") || displaySet("WAYLAND_DISPLAY"))) {
+    if (wantWindow && o.backend != "vk") {
         gl::GlfwWindowOptions wo;
         wo.title = "racer";
         wo.width = renderer.width;
@@ -128,24 +135,35 @@ int run(const CLI::App& app, const Options& o) {
             std::printf("racer: no window (%s); rendering headless\n", e.what());
         }
     }
-    const bool windowed = window != nullptr;
+    std::shared_ptr<vk::VulkanWindow> vkWindow;
+    std::unique_ptr<vk::VulkanBackend> vkBackend;
+    if (o.backend == "vk") {
+        vk::VulkanOptions vo;
+        vo.device = o.device;
+        // SSAM_VK_VALIDATION=1: under the validation layer (the vk tests): every message is
+        // printed, and any makes the run fail at its end.
+        vo.validation = std::getenv("SSAM_VK_VALIDATION") != nullptr;
+        if (wantWindow) {
+            try {
+                vo.window = vk::VulkanWindow::create({"racer", renderer.width, renderer.height});
+                vkBackend = vk::createVulkanBackend(vo);
+                vkWindow = vo.window;
+            } catch (const engine::Error& e) {
+                std::printf("racer: no window (%s); rendering headless\n", e.what());
+                vo.window.reset();
+            }
+        }
+        if (!vkBackend) vkBackend = vk::createVulkanBackend(vo);  // headless: lavapipe without a GPU
+    }
+    const bool windowed = window != nullptr || vkWindow != nullptr;
     const std::string backendName = o.backend != "auto" ? o.backend : windowed ? "gl" : "soft";
     std::unique_ptr<engine::render::Backend> softBackend;
-    if (windowed) {
+    if (window) {
         gl::GlOptions go;
         go.context = window;
         glBackend = gl::createGlBackend(go);
     } else if (backendName == "gl") {
         glBackend = gl::createGlBackend({});  // headless through EGL (Mesa llvmpipe without a GPU)
-    }
-    std::unique_ptr<engine::render::vk::VulkanBackend> vkBackend;
-    if (backendName == "vk") {
-        engine::render::vk::VulkanOptions vo;
-        vo.device = o.device;
-        // SSAM_VK_VALIDATION=1: under the validation layer (the vk golden tests): every message is
-        // printed, and any makes the run fail at its end.
-        vo.validation = std::getenv("SSAM_VK_VALIDATION") != nullptr;
-        vkBackend = engine::render::vk::createVulkanBackend(vo);  // lavapipe without a GPU
     }
     std::string kernels;  // the soft backend's instruction set, for the first line
     if (backendName == "soft") {
@@ -222,9 +240,15 @@ int run(const CLI::App& app, const Options& o) {
         if (comparedWith) ws.compareWith = *comparedWith;
         std::printf(
             "racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, V compare, B compared technique, R autopilot, Esc quit\n");
-        const WindowLoopResult r = runWindowLoop(*window, *glBackend, backend, frame, source, ws);
+        const std::unique_ptr<LoopWindow> shown =
+            vkWindow ? vkLoopWindow(*vkWindow, *vkBackend) : glLoopWindow(*window, *glBackend, backend);
+        const WindowLoopResult r = runWindowLoop(*shown, backend, frame, source, ws);
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());
+        if (vkWindow)
+            std::printf("racer: Vulkan presented %llu frames, %llu swapchains made\n",
+                        static_cast<unsigned long long>(vkBackend->counters().framesPresented),
+                        static_cast<unsigned long long>(vkBackend->counters().swapchainsCreated));
     } else {
         if (!o.script.empty()) throw engine::UsageError("--script needs a window (a display and no --headless)");
         std::printf("racer: %d frames at dt %.4f s\n", o.frames, o.fixedDt);

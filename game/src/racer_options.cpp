@@ -25,7 +25,8 @@ std::vector<std::string> techniqueNames() {
 }  // namespace
 
 void addOptions(CLI::App& app, Options& o) {
-    app.add_option("--backend", o.backend, "render backend (auto: gl in a window, soft headless; vk: headless)")
+    app.add_option("--backend", o.backend,
+                   "render backend (auto: gl in a window, soft headless; vk: Vulkan, in a window or headless)")
         ->check(CLI::IsMember({"auto", "soft", "gl", "vk"}))
         ->capture_default_str();
     app.add_option("--device", o.device, "--backend vk: the Vulkan device (-1: the first usable)")

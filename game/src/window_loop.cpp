@@ -25,8 +25,6 @@ namespace racer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using engine::render::TextureHandle;
-using engine::render::gl::GlfwWindowContext;
 using transparency::TechniqueKind;
 
 constexpr double kTitleInterval = 0.25;                      // seconds between title updates
@@ -189,7 +187,7 @@ private:
 // Resizes the window as a user dragging its border would, and waits (at most
 // kWindowSettleTime) for it to take the size, so the next frame sees it: a window manager may
 // adjust or delay a resize (Xvfb has none and is immediate).
-void resizeWindow(GlfwWindowContext& window, int width, int height) {
+void resizeWindow(LoopWindow& window, int width, int height) {
     window.setSize(width, height);
     const Clock::time_point deadline = Clock::now() + kWindowSettleTime;
     for (;;) {
@@ -208,7 +206,7 @@ struct ScriptedRestore {
 };
 
 // A scripted window change, as a user would make it; a minimise returns its restore.
-std::optional<ScriptedRestore> applyWindowChange(GlfwWindowContext& window, const ScriptedWindowChange& change) {
+std::optional<ScriptedRestore> applyWindowChange(LoopWindow& window, const ScriptedWindowChange& change) {
     if (change.minimizeMs == 0) {
         resizeWindow(window, change.width, change.height);
         return std::nullopt;
@@ -225,7 +223,7 @@ std::optional<ScriptedRestore> applyWindowChange(GlfwWindowContext& window, cons
 // leaving with the number of wake-ups (a handful, where a spinning loop would count thousands).
 class MinimisedWait {
 public:
-    void wait(GlfwWindowContext& window, std::optional<ScriptedRestore>& restore) {
+    void wait(LoopWindow& window, std::optional<ScriptedRestore>& restore) {
         if (!waiting_) {
             std::printf("racer: window minimised, not rendering\n");
             waiting_ = true;
@@ -259,33 +257,14 @@ private:
     int wakeUps_ = 0;
 };
 
-// The soft backend's frame as a GL texture: the stored sRGB codes (readback gives code/255)
-// uploaded unchanged, so the window shows exactly the bytes a capture would hold.
-TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine::render::Readback& r) {
-    std::vector<std::byte> bytes(std::size_t(r.width) * std::size_t(r.height) * 4);
-    for (int y = 0; y < r.height; ++y)
-        for (int x = 0; x < r.width; ++x)
-            for (int c = 0; c < 4; ++c) {
-                const float v = c < r.channels ? r.at(x, y, c) : 1.0f;
-                bytes[(std::size_t(y) * std::size_t(r.width) + std::size_t(x)) * 4 + std::size_t(c)] =
-                    std::byte(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-            }
-    engine::render::TextureData data;
-    data.levels.push_back(bytes);
-    return presenter.createTexture(
-        {"racer soft frame", r.width, r.height, r.format, 1, 1, engine::render::UsageSampled}, &data);
-}
-
 }  // namespace
 
-WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::GlBackend& presenter,
-                               engine::render::Backend& renderer, FrameRenderer& frame, const FrameSource& source,
-                               const WindowLoopSettings& settings) {
+WindowLoopResult runWindowLoop(LoopWindow& window, engine::render::Backend& renderer, FrameRenderer& frame,
+                               const FrameSource& source, const WindowLoopSettings& settings) {
     const WindowScript script = parseWindowScript(settings.script);
     std::size_t nextKey = 0, nextChange = 0;
     std::optional<ScriptedRestore> restore;
     std::map<int, bool> wasDown;
-    const bool uploads = static_cast<engine::render::Backend*>(&presenter) != &renderer;
     CameraMode camera = settings.camera;
     PlayerInput input;  // the free camera starts at the overview a headless --camera free run renders
     MouseLook mouse(window.window());
@@ -408,18 +387,14 @@ WindowLoopResult runWindowLoop(GlfwWindowContext& window, engine::render::gl::Gl
             continue;
         }
         size.rendered();
-        if (uploads) {
-            const TextureHandle shown = uploadFrame(presenter, renderer.readback(frame.color()));
-            presenter.present(shown);
-            presenter.destroy(shown);
-            presenter.takeTimings();  // the upload's, not the frame's
-        } else {
-            presenter.present(frame.color());
-        }
+        window.show(frame.color());
+        // The frame ends when its pass times are in (takeTimings waits for the queue on GL and
+        // Vulkan), so the frame time bounds their sum.
+        const std::vector<engine::render::PassTiming> timings = renderer.takeTimings();
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         totalMs += ms;
         ++result.frames;
-        stats.add(ms, renderer.takeTimings());
+        stats.add(ms, timings);
         if (std::chrono::duration<double>(Clock::now() - titleShown).count() >= kTitleInterval) {
             glfwSetWindowTitle(window.window(), stats.title(frame.technique(), camera, paused, size.current()).c_str());
             hud = stats.hudFacts();

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// racer's window: frames rendered by a FrameRenderer (on the GL backend of the window, or on
-// the soft backend and uploaded to a GL texture to be shown), presented until the window
+// racer's window: frames rendered by a FrameRenderer (on the GL backend of the window, on the
+// soft backend and uploaded to a GL texture to be shown, or on the Vulkan backend presenting
+// to its window: loop_window.hpp), presented until the window
 // closes, Esc is pressed or `frames` have been shown. The frame is rendered at the window's
 // framebuffer size: a resize makes the frame's targets anew and the camera takes the new
 // aspect; a minimised window renders nothing and waits for events. Keys: window_keys.hpp;
@@ -11,9 +12,10 @@
 // fps and per-pass milliseconds, averaged over a quarter of a second.
 #include <string>
 
-#include "engine/render/gl/gl_backend.hpp"
+#include "engine/render/backend.hpp"
 #include "frame_renderer.hpp"
 #include "frame_source.hpp"
+#include "loop_window.hpp"
 #include "racer_options.hpp"
 
 namespace racer {
@@ -34,13 +36,10 @@ struct WindowLoopResult {
     double meanFrameMs = 0.0;
 };
 
-// `presenter` is the GL backend owning the window's context; `renderer` draws the frames and
-// is either the same backend or another one (soft), whose colour is then read back and
-// uploaded each frame. Technique keys that fail (not runnable here, not implemented yet)
+// `window` shows the frames `renderer` draws (loop_window.hpp). Technique keys that fail (not runnable here, not implemented yet)
 // print the engine::Error and keep the current technique; a render size the backend refuses
 // is reported and the frame keeps its last size (scaled to the window).
-WindowLoopResult runWindowLoop(engine::render::gl::GlfwWindowContext& window, engine::render::gl::GlBackend& presenter,
-                               engine::render::Backend& renderer, FrameRenderer& frame, const FrameSource& source,
-                               const WindowLoopSettings& settings);
+WindowLoopResult runWindowLoop(LoopWindow& window, engine::render::Backend& renderer, FrameRenderer& frame,
+                               const FrameSource& source, const WindowLoopSettings& settings);
 
 }  // namespace racer

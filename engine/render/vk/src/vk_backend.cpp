@@ -31,6 +31,7 @@ VulkanBackendImpl::VulkanBackendImpl(const VulkanOptions& options, std::unique_p
                                     return *pipelines_.get(h).program->desc;
                                 }} {
     frames_ = std::make_unique<FrameRing>(*context_, counters_, options_.framesInFlight);
+    if (options_.window) swapchain_ = std::make_unique<Swapchain>(*context_, counters_, frames_->slots());
     const Instance identity{};
     identityInstance_ = createHostBuffer(*context_, sizeof identity, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                                          "Vulkan backend: the identity instance");
@@ -50,6 +51,7 @@ VulkanBackendImpl::~VulkanBackendImpl() {
     pass_.reset();
     draws_.clear();
     frames_->drain();
+    swapchain_.reset();
     const VkDevice device = context_->device;
     pipelines_ = ResourcePool<PipelineTag, VulkanPipeline>("pipeline");
     programs_ = ResourcePool<ProgramTag, std::shared_ptr<const VulkanProgram>>("program");

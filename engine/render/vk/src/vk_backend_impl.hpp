@@ -6,6 +6,7 @@
 //   vk_pipelines.cpp  render passes, framebuffers, samplers and pipelines from resolved state
 //   vk_passes.cpp     passes: draws recorded until endPass, barriers, the render pass, queries
 //   vk_transfer.cpp   readback and resolve
+//   vk_swapchain.cpp  present to the window (the swapchain itself: vk_swapchain.hpp)
 // Validation and error messages are the shared ones (validation.hpp), as on soft and GL.
 #include <array>
 #include <map>
@@ -25,6 +26,7 @@
 #include "vk_frames.hpp"
 #include "vk_objects.hpp"
 #include "vk_shaders.hpp"
+#include "vk_swapchain.hpp"
 
 namespace engine::render::vk {
 
@@ -93,6 +95,9 @@ public:
     void resolve(const ResolveDesc& r) override;
     Readback readback(TextureHandle h) override;
 
+    // vk_swapchain.cpp
+    bool present(TextureHandle h) override;
+
 private:
     // vk_resources.cpp
     std::shared_ptr<const VulkanProgram> programFor(const ProgramRef& ref);
@@ -101,6 +106,8 @@ private:
     int supportedSamples(VkFormat format, bool depth, int wanted, const std::string& what) const;
     void upload(VulkanTexture& t, const TextureData* data);
     void destroyTextureObjects(const VulkanTexture& t);
+    void checkDeviceLimits(const TextureDesc& desc, const std::string& what) const;
+    MemoryProbe memoryProbe() const;
     VulkanBuffer makeBuffer(const BufferDesc& desc, const std::string& what);
 
     // vk_pipelines.cpp
@@ -124,6 +131,8 @@ private:
     std::unique_ptr<VulkanContext> context_;
     VulkanCounters counters_;
     std::unique_ptr<FrameRing> frames_;
+    std::unique_ptr<Swapchain> swapchain_;  // with a window only
+    std::uint64_t heldBytes_ = 0;           // the images' memory (memoryProbe on a GPU)
     ResourcePool<TextureTag, VulkanTexture> textures_;
     ResourcePool<BufferTag, VulkanBuffer> buffers_;
     ResourcePool<PipelineTag, VulkanPipeline> pipelines_;

@@ -7,6 +7,12 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
+#include "engine/render/vk/vk_results.hpp"
+#include "engine/render/vk/vk_window.hpp"
+
+#define GLFW_INCLUDE_NONE
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
 
 namespace engine::render::vk {
 namespace {
@@ -79,13 +85,35 @@ const char* resultName(VkResult result) {
         case VK_ERROR_TOO_MANY_OBJECTS: return "VK_ERROR_TOO_MANY_OBJECTS";
         case VK_ERROR_FORMAT_NOT_SUPPORTED: return "VK_ERROR_FORMAT_NOT_SUPPORTED";
         case VK_ERROR_OUT_OF_POOL_MEMORY: return "VK_ERROR_OUT_OF_POOL_MEMORY";
+        case VK_ERROR_SURFACE_LOST_KHR: return "VK_ERROR_SURFACE_LOST_KHR";
+        case VK_ERROR_OUT_OF_DATE_KHR: return "VK_ERROR_OUT_OF_DATE_KHR";
+        case VK_SUBOPTIMAL_KHR: return "VK_SUBOPTIMAL_KHR";
         default: return "VkResult";
     }
 }
 
+std::string vulkanResultMessage(int result, const std::string& what) {
+    std::string message = what + ": " + resultName(VkResult(result)) + " (" + std::to_string(result) + ")";
+    switch (VkResult(result)) {
+        case VK_ERROR_DEVICE_LOST:
+            return message +
+                   ": the Vulkan device was lost (a driver reset, hang or crash); nothing made on it can "
+                   "be used again: make a new backend";
+        case VK_ERROR_OUT_OF_DEVICE_MEMORY: return message + ": out of device memory";
+        case VK_ERROR_OUT_OF_HOST_MEMORY: return message + ": out of host memory";
+        default: return message;
+    }
+}
+
+double timestampMilliseconds(std::uint64_t begin, std::uint64_t end, std::uint32_t validBits, double periodNs) {
+    const std::uint64_t mask = validBits >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << validBits) - 1;
+    const std::uint64_t ticks = ((end & mask) - (begin & mask)) & mask;  // modulo 2^validBits
+    return double(ticks) * periodNs / 1.0e6;
+}
+
 void check(VkResult result, const std::string& what) {
     if (result == VK_SUCCESS) return;
-    throw Error(what + ": " + resultName(result) + " (" + std::to_string(int(result)) + ")");
+    throw Error(vulkanResultMessage(int(result), what));
 }
 
 std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& options) {
@@ -103,6 +131,9 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
     app.pEngineName = "ssam";
     app.apiVersion = VK_API_VERSION_1_3;
     std::vector<const char*> layers, extensions;
+    std::vector<std::string> windowExtensions;
+    if (options.window) windowExtensions = VulkanWindow::instanceExtensions();
+    for (const std::string& e : windowExtensions) extensions.push_back(e.c_str());
     // Synchronization validation: the hazards a missing barrier leaves ([Khronos validation]).
     const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
     VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
@@ -137,6 +168,10 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
         check(create(c->instance, &messenger, nullptr, &c->messenger), "Vulkan backend: creating the debug messenger");
     }
 
+    if (options.window)
+        check(glfwCreateWindowSurface(c->instance, options.window->window(), nullptr, &c->surface),
+              "Vulkan backend: glfwCreateWindowSurface");
+
     std::uint32_t count = 0;
     vkEnumeratePhysicalDevices(c->instance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
@@ -164,6 +199,13 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
     }
     c->physical = devices[std::size_t(chosen)];
     c->queueFamily = std::uint32_t(graphicsFamily(c->physical));
+    {
+        std::uint32_t families = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(c->physical, &families, nullptr);
+        std::vector<VkQueueFamilyProperties> properties(families);
+        vkGetPhysicalDeviceQueueFamilyProperties(c->physical, &families, properties.data());
+        c->timestampValidBits = properties[c->queueFamily].timestampValidBits;
+    }
     vkGetPhysicalDeviceProperties(c->physical, &c->properties);
     vkGetPhysicalDeviceMemoryProperties(c->physical, &c->memory);
 
@@ -183,6 +225,14 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
     std::vector<const char*> deviceExtensions;
+    if (c->surface) {
+        VkBool32 presents = VK_FALSE;
+        vkGetPhysicalDeviceSurfaceSupportKHR(c->physical, c->queueFamily, c->surface, &presents);
+        if (!presents || !hasDeviceExtension(c->physical, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+            throw Error(std::string("Vulkan backend: ") + c->properties.deviceName +
+                        "'s graphics queue cannot present to the window");
+        deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
     VkPhysicalDeviceConditionalRenderingFeaturesEXT conditional{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CONDITIONAL_RENDERING_FEATURES_EXT};
     VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
@@ -219,6 +269,7 @@ std::unique_ptr<VulkanContext> VulkanContext::create(const VulkanOptions& option
 
 VulkanContext::~VulkanContext() {
     if (device) vkDestroyDevice(device, nullptr);
+    if (surface) vkDestroySurfaceKHR(instance, surface, nullptr);
     if (messenger) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));

@@ -119,7 +119,7 @@ void FrameRing::reset(FrameSlot& s) {
 
 VkCommandBuffer FrameRing::cmd() { return begin().cmd; }
 
-void FrameRing::submit(bool wait) {
+void FrameRing::submit(bool wait, VkSemaphore waitFor, VkPipelineStageFlags waitStage, VkSemaphore signal) {
     FrameSlot& s = slots_[current_];
     if (!s.recording) return;
     s.recording = false;
@@ -127,6 +127,15 @@ void FrameRing::submit(bool wait) {
     VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     si.commandBufferCount = 1;
     si.pCommandBuffers = &s.cmd;
+    if (waitFor) {
+        si.waitSemaphoreCount = 1;
+        si.pWaitSemaphores = &waitFor;
+        si.pWaitDstStageMask = &waitStage;
+    }
+    if (signal) {
+        si.signalSemaphoreCount = 1;
+        si.pSignalSemaphores = &signal;
+    }
     check(vkQueueSubmit(context_.queue, 1, &si, s.fence), "Vulkan backend: vkQueueSubmit");
     ++counters_.submits;
     s.submitted = true;

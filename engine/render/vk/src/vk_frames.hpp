@@ -67,9 +67,16 @@ public:
     std::uint64_t recordingSerial() const { return nextSerial_; }
     std::uint64_t completedSerial() const { return completed_; }
 
+    // The recording slot's index (0..slots-1): per-slot objects (a swapchain's acquire
+    // semaphores) are free once cmd() has begun the slot.
+    std::size_t slot() const { return current_; }
+    std::size_t slots() const { return slots_.size(); }
+
     // Ends and submits what is recorded; with `wait`, waits for it (a result wait). Moves to the
-    // next slot. Nothing to submit: does nothing.
-    void submit(bool wait);
+    // next slot. Nothing to submit: does nothing. `waitFor` (at `waitStage`) and `signal` are a
+    // presentation's semaphores.
+    void submit(bool wait, VkSemaphore waitFor = VK_NULL_HANDLE, VkPipelineStageFlags waitStage = 0,
+                VkSemaphore signal = VK_NULL_HANDLE);
     // Waits until the queue has finished everything submitted (tear-down only).
     void drain();
 

@@ -35,7 +35,8 @@ struct VulkanTexture {
     VkImageView view = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
-    int actualSamples = 1;  // what the device supports at or above desc.samples
+    int actualSamples = 1;    // what the device supports at or above desc.samples
+    std::uint64_t bytes = 0;  // its memory's size
     ImageState state;
 };
 

@@ -8,6 +8,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/pixel_codec.hpp"
+#include "engine/render/vk/vk_results.hpp"
 #include "vk_backend_impl.hpp"
 
 namespace engine::render::vk {
@@ -240,11 +241,17 @@ void VulkanBackendImpl::recordPass() {
     const std::uint32_t query = pass.countSamplesInto ? queries_.get(pass.countSamplesInto).slot : 0;
     if (pass.countSamplesInto) vkCmdResetQueryPool(cmd, occlusion_, query, 1);
     std::uint32_t stamp = UINT32_MAX;
-    if (nextTimestamp_ + 2 <= kTimestampSlots) {
+    if (context_->timestampValidBits > 0 && nextTimestamp_ + 2 <= kTimestampSlots) {  // 0 bits: no timestamps
         stamp = nextTimestamp_;
         nextTimestamp_ += 2;
         vkCmdResetQueryPool(cmd, timestamps_, stamp, 2);
-        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, stamp);
+        // BOTTOM_OF_PIPE, not TOP_OF_PIPE: a top-of-pipe stamp is written as soon as the
+        // command is reached, while the passes before are still running (a GPU overlaps them;
+        // lavapipe writes it with no flush), so pass intervals overlapped and their sum
+        // exceeded the frame. At the bottom of the pipe it is written once everything before
+        // has completed: the pass's interval starts where the previous one ended (its barriers
+        // and clears included), and the passes' times add up to at most the span they cover.
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, stamp);
     }
 
     const VkRenderPass rp = renderPass(key);
@@ -385,6 +392,7 @@ std::vector<PassTiming> VulkanBackendImpl::takeTimings() {
                     " is open: the Vulkan backend reads results between passes");
     frames_->submit(true);
     const double period = double(context_->properties.limits.timestampPeriod);  // ns per tick
+    const std::uint32_t validBits = context_->timestampValidBits;
     for (const PendingTiming& p : pendingTimings_) {
         double ms = 0.0;
         if (p.first != UINT32_MAX) {
@@ -392,7 +400,7 @@ std::vector<PassTiming> VulkanBackendImpl::takeTimings() {
             check(vkGetQueryPoolResults(context_->device, timestamps_, p.first, 2, sizeof ticks, ticks, sizeof ticks[0],
                                         VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
                   "pass " + quotedName(p.pass) + ": reading its timestamps");
-            ms = double(ticks[1] - ticks[0]) * period / 1.0e6;
+            ms = timestampMilliseconds(ticks[0], ticks[1], validBits, period);
         }
         out.push_back({p.pass, ms, p.skipped});
     }

@@ -8,6 +8,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/render/glsl/standard_programs.hpp"
+#include "engine/render/memory_budget.hpp"
 #include "engine/render/texel_codec.hpp"
 #include "vk_backend_impl.hpp"
 
@@ -70,6 +71,7 @@ TextureHandle VulkanBackendImpl::createTexture(const TextureDesc& desc, const Te
     if (desc.samples > 1 && data && !data->levels.empty())
         throw Error(what + ": initial data for a multisampled texture (the Vulkan backend cannot upload samples)");
     if (data) validateTextureData(desc, *data, what);
+    checkDeviceLimits(desc, what);
 
     VkImageCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ci.imageType = VK_IMAGE_TYPE_2D;
@@ -93,9 +95,12 @@ TextureHandle VulkanBackendImpl::createTexture(const TextureDesc& desc, const Te
         VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         ai.allocationSize = req.size;
         ai.memoryTypeIndex = context_->memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+        // The image's own figure (padding, samples), before anything is allocated for it.
+        checkFitsInMemory(req.size, what + ": " + describeSize(desc), memoryProbe());
         check(vkAllocateMemory(device, &ai, nullptr, &t.memory),
-              what + ": allocating " + std::to_string(req.size) + " bytes for " + std::to_string(desc.width) + "x" +
-                  std::to_string(desc.height) + " " + std::string(formatName(desc.format)));
+              what + ": allocating " + std::to_string(req.size) + " bytes for " + describeSize(desc));
+        t.bytes = req.size;
+        heldBytes_ += t.bytes;
         check(vkBindImageMemory(device, t.image, t.memory, 0), what + ": binding memory");
         VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         vci.image = t.image;
@@ -154,7 +159,42 @@ void VulkanBackendImpl::destroyTextureObjects(const VulkanTexture& t) {
     const VkDevice device = context_->device;
     if (t.view) vkDestroyImageView(device, t.view, nullptr);
     if (t.image) vkDestroyImage(device, t.image, nullptr);
-    if (t.memory) vkFreeMemory(device, t.memory, nullptr);
+    if (t.memory) {
+        vkFreeMemory(device, t.memory, nullptr);
+        heldBytes_ -= t.bytes;
+    }
+}
+
+// The device's own caps beyond the engine's (validateTexture): an image side over
+// maxImageDimension2D, a render target over the framebuffer limits.
+void VulkanBackendImpl::checkDeviceLimits(const TextureDesc& desc, const std::string& what) const {
+    const VkPhysicalDeviceLimits& limits = context_->properties.limits;
+    const std::string device = " of " + context_->info.device;
+    if (std::uint32_t(desc.width) > limits.maxImageDimension2D ||
+        std::uint32_t(desc.height) > limits.maxImageDimension2D)
+        throw Error(what + ": " + describeSize(desc) + " exceeds maxImageDimension2D " +
+                    std::to_string(limits.maxImageDimension2D) + device);
+    if ((desc.usage & UsageRenderTarget) && (std::uint32_t(desc.width) > limits.maxFramebufferWidth ||
+                                             std::uint32_t(desc.height) > limits.maxFramebufferHeight))
+        throw Error(what + ": " + describeSize(desc) + " exceeds the largest framebuffer " +
+                    std::to_string(limits.maxFramebufferWidth) + "x" + std::to_string(limits.maxFramebufferHeight) +
+                    device);
+}
+
+MemoryProbe VulkanBackendImpl::memoryProbe() const {
+    if (options_.memory) return options_.memory;
+    if (context_->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) return hostMemoryAvailable;
+    // A GPU: the largest device-local heap less what this backend holds (other processes' use
+    // is not seen; the allocation's own VK_ERROR_OUT_OF_DEVICE_MEMORY covers that).
+    return [this]() -> std::optional<AvailableMemory> {
+        std::uint64_t heap = 0;
+        for (std::uint32_t i = 0; i < context_->memory.memoryHeapCount; ++i)
+            if (context_->memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+                heap = std::max(heap, std::uint64_t(context_->memory.memoryHeaps[i].size));
+        if (heap == 0) return std::nullopt;
+        return AvailableMemory{heap > heldBytes_ ? heap - heldBytes_ : 0,
+                               "the device-local heap of " + context_->info.device + " less this backend's images"};
+    };
 }
 
 void VulkanBackendImpl::destroy(TextureHandle h) {
@@ -167,6 +207,7 @@ void VulkanBackendImpl::destroy(TextureHandle h) {
 VulkanBuffer VulkanBackendImpl::makeBuffer(const BufferDesc& desc, const std::string& what) {
     const VkBufferUsageFlags usage =
         desc.kind == BufferKind::Index ? VK_BUFFER_USAGE_INDEX_BUFFER_BIT : VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+    checkFitsInMemory(desc.size, what + ": " + std::to_string(desc.size) + " bytes", memoryProbe());
     const MemoryBuffer m = createHostBuffer(*context_, desc.size, usage, what);
     ++counters_.buffersCreated;
     VulkanBuffer b;

@@ -20,8 +20,11 @@
 #include <vector>
 
 #include "engine/render/backend.hpp"
+#include "engine/render/memory_budget.hpp"
 
 namespace engine::render::vk {
+
+class VulkanWindow;  // vk_window.hpp
 
 enum class FailModeStrategy : std::uint8_t {
     TwoPass,      // passing fragments, then failing ones: fast, inexact where one draw overlaps itself
@@ -39,6 +42,14 @@ struct VulkanOptions {
     std::function<void(const std::string& message)> onValidation;
     FailModeStrategy failModes = FailModeStrategy::TwoPass;
     int framesInFlight = 2;  // frame slots in the ring (1..4)
+    // A window to present to (present()): its surface's instance extensions and
+    // VK_KHR_swapchain are enabled, and the device's graphics queue must present to it.
+    std::shared_ptr<VulkanWindow> window;
+    // What the device can still allocate, asked before each image and buffer is allocated
+    // (memory_budget.hpp: refused by name unless twice its size is free). Empty: the host's
+    // memory on a CPU device (lavapipe keeps images in host memory, as llvmpipe GL does), else
+    // the device-local heap's size less what this backend holds. Tests set a small one.
+    MemoryProbe memory;
 };
 
 struct VulkanInfo {
@@ -58,6 +69,8 @@ struct VulkanCounters {
     std::uint64_t fenceWaits = 0;   // waits for a frame slot to come free
     std::uint64_t resultWaits = 0;  // waits for readback or query results
     std::uint64_t submits = 0;
+    std::uint64_t swapchainsCreated = 0;  // the first, then one per recreation (resize, out of date)
+    std::uint64_t framesPresented = 0;
 };
 
 class VulkanBackend : public Backend {
@@ -66,6 +79,12 @@ public:
     virtual const VulkanCounters& counters() const = 0;
     // Validation warnings and errors reported since the backend was made.
     virtual std::uint64_t validationMessages() const = 0;
+    // Shows `color` (a colour texture, scaled to the window's size when it differs) in
+    // VulkanOptions::window through a FIFO swapchain, and submits what is recorded (so call it
+    // after endFrame or instead of it). False when nothing was shown: the window is minimised
+    // (its framebuffer is empty), or the swapchain was out of date and is made anew for the
+    // next frame. Throws engine::Error without a window or while a pass is open.
+    virtual bool present(TextureHandle color) = 0;
     // endFrame() (Backend) submits what is recorded and moves to the next frame slot; the next
     // use of a slot waits only when its previous submission is still running.
 };
