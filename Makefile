@@ -149,14 +149,18 @@ readme-chart: build
 content: build
 	$(BUILD_DIR)/bin/content-generator --out content
 
-# The benchmarks, then the speed table (game/bench/speed_table.sh): the soft backend against
-# Mesa llvmpipe with the same threads, measured in this one run. OLD_BIN=<dir of an older racer
-# and ssam-bench> adds a "before" column, old and new binaries run alternately.
+# The benchmarks, the speed table (game/bench/speed_table.sh: the soft backend against Mesa
+# llvmpipe with the same threads, measured in this one run; OLD_BIN=<dir of an older racer and
+# ssam-bench> adds a "before" column, old and new binaries run alternately), then ssam-bench,
+# which writes game/bench/FIGURES.md from its run with the speed table copied in.
+# BENCH_SIZE=320x180 for a shorter run (FIGURES.md names the size).
+BENCH_SIZE ?= 1280x720
 bench: build
 	$(BUILD_DIR)/bin/bench_ecs
 	$(BUILD_DIR)/bin/ssam_bench
-	$(BUILD_DIR)/bin/ssam-bench --out out/bench
 	BIN=$(BUILD_DIR)/bin OUT=out/bench OLD_BIN=$(OLD_BIN) game/bench/speed_table.sh
+	DISPLAY= $(BUILD_DIR)/bin/ssam-bench --threads 2 --size $(BENCH_SIZE) --with-paper-ssam --out out/bench \
+	  --figures game/bench/FIGURES.md --speed-table out/bench/speed_table.md
 
 # Fuzzing, outside CI (tests/fuzz/run_fuzzers.sh): the fuzz targets built with Clang as
 # libFuzzer binaries (ASan + UBSan) in build-fuzz, each run FUZZ_SECONDS on a copy of its
