@@ -130,6 +130,9 @@ readme-images: build
 	# SSAM against alpha testing side by side, with 4x insets where they differ most.
 	$(BUILD_DIR)/bin/racer --headless --size 640x360 --frames 90 --fixed-dt 0.0333333 \
 	  --compare ssam,alpha-test --capture content/readme/compare.png
+	# SSAM against hashed alpha testing resolved by TAA (ssam/README.md), after 90 frames of history.
+	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 90 --fixed-dt 0.0333333 --threads 2 \
+	  --compare ssam,hashed+taa --capture content/readme/compare_hashed_taa.png
 	# ssam::gl's dark rims (ssam/README.md): the host's mist after SSAM, with the paper's depth and
 	# with depthMaskThreshold 0.25, and the mist drawn before SSAM (exact here); a 2x crop of each.
 	mkdir -p out/readme
