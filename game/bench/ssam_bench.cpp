@@ -57,8 +57,9 @@ struct Options {
     bool sweepFull = false;
     bool scaling = false;
     bool withPaperSsam = false;
-    std::string figures;     // FIGURES.md to write from the run; empty: none
-    std::string speedTable;  // speed_table.sh's table to copy into it
+    std::string ssamPlusBlur = "on";  // SSAM+'s composite blur (transparency::SsamPlusOptions)
+    std::string figures;              // FIGURES.md to write from the run; empty: none
+    std::string speedTable;           // speed_table.sh's table to copy into it
     std::string sweepLerp = "0,0.25,0.5,0.85,1";
     std::string sweepSquare = "on,off";
     std::string sweepReference = "16,64,128";
@@ -178,6 +179,9 @@ BenchOptions parse(const Options& o) {
     for (BenchSubject& subject : b.subjects)
         if (subject.kind == transparency::TechniqueKind::Ssam)
             subject.options.ssam = ssam::presetConfig(*ssam::parsePreset(o.ssamPreset));
+    for (BenchSubject& subject : b.subjects)
+        if (subject.kind == transparency::TechniqueKind::SsamPlus)
+            subject.options.ssamPlus.compositeBlur = o.ssamPlusBlur == "on";
     // The paper preset beside the recommended one: the time goal's denominator (bench_goals.hpp).
     if (o.withPaperSsam && !o.sweep) {
         BenchSubject paper{kSsamPaperRow, transparency::TechniqueKind::Ssam, {}};
@@ -314,6 +318,11 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                    "technique ssam's knobs: paper ([Hathaway 2010]'s values) or measured (the knob sweep's best "
                    "within 1.25x the paper's time; ssam/docs/knobs.md)")
         ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
+        ->capture_default_str();
+    app.add_option("--ssam-plus-blur", o.ssamPlusBlur,
+                   "technique ssam-plus's composite averages the foliage colour over 3x3 (on) or takes the pixel's "
+                   "own (off; ssam/docs/ssam_plus.md)")
+        ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
     app.add_option("--backend", o.backends, "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU)")
         ->capture_default_str();
