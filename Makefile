@@ -145,7 +145,8 @@ readme-images: build
 # The README's chart and game/bench/FIGURES.md, from one ssam-bench run (soft backend, 2
 # threads, with the paper preset's row for the time goal); the speed table of the last
 # `make bench` is copied into FIGURES.md when out/bench/speed_table.md exists. At 320x180 the
-# run took 10 min 22 s on this project's shared 2-core machine; BENCH_SIZE=320x180 for that,
+# run took 6 min 55 s and 10 min 22 s on this project's shared 2-core machine (load average
+# about 10); BENCH_SIZE=320x180 for that,
 # BENCH_BACKENDS=soft,gl to add llvmpipe's rows.
 BENCH_SIZE ?= 1280x720
 BENCH_BACKENDS ?= soft

@@ -38,8 +38,8 @@ void writeIntro(std::ostream& out, const std::vector<BenchRow>& rows, const Figu
            "flicker, error per frame of a pan |\n"
            "| [Goals](#goals) | SSAM against alpha testing, met or not |\n"
            "| [SSAM and hashed+taa](#ssam-and-hashedtaa) | the two side by side, and which is better at what |\n\n"
-           "Wall times on a shared machine scatter by about ±10% from run to run; errors and memory are "
-           "deterministic on the soft backend. Every GL figure is Mesa llvmpipe's, a CPU rasterizer.\n\n";
+           "Wall times scatter from run to run on a shared machine; errors and memory are deterministic "
+           "on the soft backend. Every GL figure is Mesa llvmpipe's, a CPU rasterizer.\n\n";
 }
 
 void writeSpeed(std::ostream& out, const FiguresInput& in) {
