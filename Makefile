@@ -130,6 +130,9 @@ readme-images: build
 	# SSAM against alpha testing side by side, with 4x insets where they differ most.
 	$(BUILD_DIR)/bin/racer --headless --size 640x360 --frames 90 --fixed-dt 0.0333333 \
 	  --compare ssam,alpha-test --capture content/readme/compare.png
+	# SSAM against hashed alpha testing resolved by TAA (ssam/README.md), after 90 frames of history.
+	$(BUILD_DIR)/bin/racer --headless --size 480x270 --frames 90 --fixed-dt 0.0333333 --threads 2 \
+	  --compare ssam,hashed+taa --capture content/readme/compare_hashed_taa.png
 	# ssam::gl's dark rims (ssam/README.md): the host's mist after SSAM, with the paper's depth and
 	# with depthMaskThreshold 0.25, and the mist drawn before SSAM (exact here); a 2x crop of each.
 	mkdir -p out/readme
@@ -139,24 +142,33 @@ readme-images: build
 	oiiotool $(foreach f,0 0.25 reference,out/readme/rims_$(f).png --cut 160x112+40+250 --resample 320x224) \
 	  --mosaic:pad=4 3x1 --ch R,G,B -o content/readme/ssam_gl_rims.png
 
-# The README's chart: the full ssam-bench run on both backends with 2 threads (soft tiles and
-# llvmpipe's LP_NUM_THREADS), as the README's measured figures; its tables are in out/readme-bench/bench.md.
+# The README's chart and game/bench/FIGURES.md, from one ssam-bench run (soft backend, 2
+# threads, with the paper preset's row for the time goal); the speed table of the last
+# `make bench` is copied into FIGURES.md when out/bench/speed_table.md exists. At 320x180 the
+# run took 6 min 55 s and 10 min 22 s on this project's shared 2-core machine (load average
+# about 10); BENCH_SIZE=320x180 for that,
+# BENCH_BACKENDS=soft,gl to add llvmpipe's rows.
+BENCH_SIZE ?= 1280x720
+BENCH_BACKENDS ?= soft
 readme-chart: build
-	DISPLAY= $(BUILD_DIR)/bin/ssam-bench --backend soft,gl --threads 2 --out out/readme-bench
-	cp out/readme-bench/bench.svg content/readme/bench.svg
+	DISPLAY= $(BUILD_DIR)/bin/ssam-bench --backend $(BENCH_BACKENDS) --threads 2 --size $(BENCH_SIZE) \
+	  --with-paper-ssam --out out/bench --figures game/bench/FIGURES.md \
+	  $(if $(wildcard out/bench/speed_table.md),--speed-table out/bench/speed_table.md)
+	cp out/bench/bench.svg content/readme/bench.svg
 
 # Regenerates the committed assets (deterministic: a test checks the bytes match).
 content: build
 	$(BUILD_DIR)/bin/content-generator --out content
 
-# The benchmarks, then the speed table (game/bench/speed_table.sh): the soft backend against
-# Mesa llvmpipe with the same threads, measured in this one run. OLD_BIN=<dir of an older racer
-# and ssam-bench> adds a "before" column, old and new binaries run alternately.
+# The benchmarks, the speed table (game/bench/speed_table.sh: the soft backend against Mesa
+# llvmpipe with the same threads, measured in this one run; OLD_BIN=<dir of an older racer and
+# ssam-bench> adds a "before" column, old and new binaries run alternately), then readme-chart,
+# whose ssam-bench run writes game/bench/FIGURES.md with that speed table copied in.
 bench: build
 	$(BUILD_DIR)/bin/bench_ecs
 	$(BUILD_DIR)/bin/ssam_bench
-	$(BUILD_DIR)/bin/ssam-bench --out out/bench
 	BIN=$(BUILD_DIR)/bin OUT=out/bench OLD_BIN=$(OLD_BIN) game/bench/speed_table.sh
+	$(MAKE) readme-chart
 
 # Fuzzing, outside CI (tests/fuzz/run_fuzzers.sh): the fuzz targets built with Clang as
 # libFuzzer binaries (ASan + UBSan) in build-fuzz, each run FUZZ_SECONDS on a copy of its

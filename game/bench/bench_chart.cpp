@@ -50,8 +50,14 @@ std::vector<std::string> distinct(const std::vector<BenchRow>& rows, std::string
     return out;
 }
 
-bool charted(const BenchRow& r) {
-    return r.technique != kOpaqueOnly && has(r.timeMedianMs) && r.timeMedianMs > 0.0 && has(r.flipMean);
+double BenchRow::*measureField(ChartMeasure m) {
+    return m == ChartMeasure::Flip ? &BenchRow::flipMean : &BenchRow::flicker;
+}
+
+const char* measureName(ChartMeasure m) { return m == ChartMeasure::Flip ? "ꟻLIP" : "flicker"; }
+
+bool charted(const BenchRow& r, ChartMeasure m = ChartMeasure::Flip) {
+    return r.technique != kOpaqueOnly && has(r.timeMedianMs) && r.timeMedianMs > 0.0 && has(r.*measureField(m));
 }
 
 // Decade ticks of the log time axis; 2 and 5 between them when the axis spans one decade.
@@ -68,14 +74,16 @@ std::vector<double> timeTicks(double log0, double log1) {
     return ticks;
 }
 
-// A 1-2-5 step giving about four intervals up to `maxValue`, and the axis top it implies.
+// A 1-2-5 step giving about four intervals over [min(0, minValue), maxValue], and the axis
+// ends it implies (flicker can be negative: less than the reference's).
 struct ErrorAxis {
-    double step = 0.25, top = 1.0;
+    double step = 0.25, bottom = 0.0, top = 1.0;
     int decimals = 2;
 };
-ErrorAxis errorAxis(double maxValue) {
-    if (!(maxValue > 0.0)) return {};
-    const double raw = maxValue * 1.05 / 4.0;
+ErrorAxis errorAxis(double minValue, double maxValue) {
+    const double low = std::min(0.0, minValue), span = std::max(maxValue, 0.0) - low;
+    if (!(span > 0.0)) return {};
+    const double raw = span * 1.05 / 4.0;
     const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
     double step = 10.0 * magnitude;
     for (double m : {1.0, 2.0, 5.0})
@@ -85,7 +93,8 @@ ErrorAxis errorAxis(double maxValue) {
         }
     ErrorAxis axis;
     axis.step = step;
-    axis.top = std::ceil(maxValue * 1.05 / step - 1e-9) * step;
+    axis.bottom = low < 0.0 ? std::floor(low * 1.05 / step + 1e-9) * step : 0.0;
+    axis.top = std::max(step, std::ceil(std::max(maxValue, 0.0) * 1.05 / step - 1e-9) * step);
     axis.decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
     return axis;
 }
@@ -156,7 +165,8 @@ void placeLabels(ChartPanel& p) {
             taken.push_back(placed->box);
             p.labels.push_back(*placed);
         } else {
-            p.overflow.push_back({text + ": " + num(m.timeMs, "%.2f") + " ms, ꟻLIP " + num(m.error, "%.4f"),
+            p.overflow.push_back({text + ": " + num(m.timeMs, "%.2f") + " ms, " + measureName(p.measure) + " " +
+                                      num(m.error, p.measure == ChartMeasure::Flip ? "%.4f" : "%.5f"),
                                   p.frame.x0 + 8, overflowBaseline});
             overflowBaseline += kLabelHeight;
         }
@@ -164,38 +174,43 @@ void placeLabels(ChartPanel& p) {
     if (!p.overflow.empty()) p.frame.y1 = overflowBaseline;
 }
 
-ChartPanel layoutPanel(const std::string& scene, const std::vector<BenchRow>& rows,
+ChartPanel layoutPanel(const std::string& scene, ChartMeasure measure, const std::vector<BenchRow>& rows,
                        const std::vector<std::string>& backends) {
     ChartPanel p;
     p.scene = scene;
+    p.measure = measure;
     for (const std::string& backend : backends)
         for (const BenchRow& r : rows)
-            if (r.scene == scene && r.backend == backend && charted(r))
-                p.markers.push_back({r.technique, r.backend, r.timeMedianMs, r.flipMean, 0, 0, false});
+            if (r.scene == scene && r.backend == backend && charted(r, measure))
+                p.markers.push_back({r.technique, r.backend, r.timeMedianMs, r.*measureField(measure), 0, 0, false});
     for (ChartMarker& a : p.markers)  // Pareto front per backend: nothing as fast and as accurate, and better in one
         a.onFront = std::none_of(p.markers.begin(), p.markers.end(), [&](const ChartMarker& b) {
-            return b.backend == a.backend && b.timeMs <= a.timeMs && b.error <= a.error &&
-                   (b.timeMs < a.timeMs || b.error < a.error);
+            const double ea = std::abs(a.error), eb = std::abs(b.error);
+            return b.backend == a.backend && b.timeMs <= a.timeMs && eb <= ea && (b.timeMs < a.timeMs || eb < ea);
         });
 
-    double tMin = 1e300, tMax = 0.0, eMax = 0.0;
+    double tMin = 1e300, tMax = 0.0, eMin = 0.0, eMax = 0.0;
     for (const ChartMarker& m : p.markers) {
         tMin = std::min(tMin, m.timeMs);
         tMax = std::max(tMax, m.timeMs);
+        eMin = std::min(eMin, m.error);
         eMax = std::max(eMax, m.error);
     }
     const double log0 = std::floor(std::log10(tMin)), log1 = std::max(log0 + 1.0, std::ceil(std::log10(tMax)));
-    const ErrorAxis axis = errorAxis(eMax);
+    const ErrorAxis axis = errorAxis(eMin, eMax);
     double tickWidth = 0.0;
-    for (int k = 0; k * axis.step <= axis.top + axis.step / 2; ++k) {
-        p.yTicks.push_back({k * axis.step, fixed(k * axis.step, axis.decimals)});
+    for (int k = 0; axis.bottom + k * axis.step <= axis.top + axis.step / 2; ++k) {
+        const double v = std::abs(axis.bottom + k * axis.step) < axis.step / 2 ? 0.0 : axis.bottom + k * axis.step;
+        p.yTicks.push_back({v, fixed(v, axis.decimals)});
         tickWidth = std::max(tickWidth, chartTextWidth(p.yTicks.back().text, kLabelFontSize));
     }
     p.frame = {0, 0, kPanelWidth, kPanelHeight};
     // Left: the rotated axis title (a text line), the tick texts, the tick marks.
     p.plot = {kLabelHeight + 12 + tickWidth + 8, 28, kPanelWidth - 24, kPanelHeight - 52};
     auto X = [&](double t) { return p.plot.x0 + (std::log10(t) - log0) / (log1 - log0) * (p.plot.x1 - p.plot.x0); };
-    auto Y = [&](double e) { return p.plot.y1 - e / axis.top * (p.plot.y1 - p.plot.y0); };
+    auto Y = [&](double e) {
+        return p.plot.y1 - (e - axis.bottom) / (axis.top - axis.bottom) * (p.plot.y1 - p.plot.y0);
+    };
     for (ChartTick& t : p.yTicks) t.at = Y(t.at);
     for (double t : timeTicks(log0, log1)) p.xTicks.push_back({X(t), num(t, "%g")});
     for (ChartMarker& m : p.markers) {
@@ -235,7 +250,7 @@ void drawPanel(std::ostringstream& s, const Chart& chart, const ChartPanel& p) {
     const ChartBox& q = p.plot;
     s << "<g transform=\"translate(" << p.originX << ' ' << p.originY << ")\">\n";
     s << "<text x=\"" << (q.x0 + q.x1) / 2 << "\" y=\"16\" text-anchor=\"middle\" font-weight=\"bold\">scene "
-      << xmlEscape(p.scene) << "</text>\n";
+      << xmlEscape(p.scene) << ": " << measureName(p.measure) << "</text>\n";
     s << "<rect x=\"" << q.x0 << "\" y=\"" << q.y0 << "\" width=\"" << q.x1 - q.x0 << "\" height=\"" << q.y1 - q.y0
       << "\" fill=\"none\" stroke=\"#444\"/>\n";
     for (const ChartTick& t : p.xTicks)
@@ -249,7 +264,9 @@ void drawPanel(std::ostringstream& s, const Chart& chart, const ChartPanel& p) {
     s << "<text x=\"" << (q.x0 + q.x1) / 2 << "\" y=\"" << q.y1 + 36
       << "\" text-anchor=\"middle\">median frame time, ms (log scale)</text>\n";
     s << "<text transform=\"translate(" << kLabelHeight << ' ' << (q.y0 + q.y1) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">mean ꟻLIP vs reference</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">"
+      << (p.measure == ChartMeasure::Flip ? "mean ꟻLIP vs reference" : "flicker of a pan, minus the reference's")
+      << "</text>\n";
 
     for (std::size_t b = 0; b < chart.backends.size(); ++b) {
         std::vector<const ChartMarker*> front;
@@ -280,9 +297,9 @@ void drawPanel(std::ostringstream& s, const Chart& chart, const ChartPanel& p) {
     for (const ChartMarker& m : p.markers) {
         const auto b =
             std::size_t(std::find(chart.backends.begin(), chart.backends.end(), m.backend) - chart.backends.begin());
-        drawMarker(
-            s, b, m.x, m.y, m.onFront,
-            m.technique + " (" + m.backend + "): " + num(m.timeMs, "%.2f") + " ms, ꟻLIP " + num(m.error, "%.4f"));
+        drawMarker(s, b, m.x, m.y, m.onFront,
+                   m.technique + " (" + m.backend + "): " + num(m.timeMs, "%.2f") + " ms, " + measureName(p.measure) +
+                       " " + num(m.error, p.measure == ChartMeasure::Flip ? "%.4f" : "%.5f"));
     }
     for (const ChartLabel& l : p.labels)
         s << "<text x=\"" << l.box.x0 << "\" y=\"" << l.box.y0 + kLabelBaseline << "\">" << xmlEscape(l.text)
@@ -317,28 +334,38 @@ Chart layoutChart(const std::vector<BenchRow>& rows) {
     for (const BenchRow& r : rows)
         if (charted(r) && std::find(chart.backends.begin(), chart.backends.end(), r.backend) == chart.backends.end())
             chart.backends.push_back(r.backend);
-    for (const std::string& scene : distinct(rows, &BenchRow::scene)) {
-        const bool any =
-            std::any_of(rows.begin(), rows.end(), [&](const BenchRow& r) { return r.scene == scene && charted(r); });
-        if (any) chart.panels.push_back(layoutPanel(scene, rows, chart.backends));
-    }
+    // One row per scene: its ꟻLIP panel, then its flicker panel where it has one.
+    std::vector<std::size_t> rowStarts;
+    for (const std::string& scene : distinct(rows, &BenchRow::scene))
+        for (ChartMeasure measure : {ChartMeasure::Flip, ChartMeasure::Flicker}) {
+            const bool any = std::any_of(rows.begin(), rows.end(),
+                                         [&](const BenchRow& r) { return r.scene == scene && charted(r, measure); });
+            if (!any) continue;
+            if (measure == ChartMeasure::Flip || chart.panels.empty() || chart.panels.back().scene != scene)
+                rowStarts.push_back(chart.panels.size());
+            chart.panels.push_back(layoutPanel(scene, measure, rows, chart.backends));
+        }
 
     std::string backends;
     for (std::size_t b = 0; b < chart.backends.size(); ++b)
         backends += (b ? (b + 1 == chart.backends.size() ? " and " : ", ") : "") + chart.backends[b];
-    chart.header.push_back("ssam-bench: frame time against ꟻLIP error, " +
-                           (backends.empty() ? std::string("no backend") : backends) + " backend" +
+    const bool flicker = std::any_of(chart.panels.begin(), chart.panels.end(),
+                                     [](const ChartPanel& p) { return p.measure == ChartMeasure::Flicker; });
+    chart.header.push_back(std::string("ssam-bench: frame time against ꟻLIP error") + (flicker ? " and flicker" : "") +
+                           ", " + (backends.empty() ? std::string("no backend") : backends) + " backend" +
                            (chart.backends.size() > 1 ? "s" : ""));
     chart.header.push_back(chart.panels.empty()
                                ? "no error data: the exact reference was not available in this run"
                                : "filled: on that backend's Pareto front (dashed); grey lines join one technique");
 
-    const int cols = std::max(1, std::min(2, int(chart.panels.size())));
+    int cols = 1;
     double y = kMargin + kHeaderHeight;
-    for (std::size_t i = 0; i < chart.panels.size(); i += std::size_t(cols)) {
+    for (std::size_t i = 0; i < rowStarts.size(); ++i) {
+        const std::size_t end = i + 1 < rowStarts.size() ? rowStarts[i + 1] : chart.panels.size();
+        cols = std::max(cols, int(end - rowStarts[i]));
         double rowHeight = 0;
-        for (std::size_t k = i; k < std::min(chart.panels.size(), i + std::size_t(cols)); ++k) {
-            chart.panels[k].originX = kMargin + double(k - i) * kPanelWidth;
+        for (std::size_t k = rowStarts[i]; k < end; ++k) {
+            chart.panels[k].originX = kMargin + double(k - rowStarts[i]) * kPanelWidth;
             chart.panels[k].originY = y;
             rowHeight = std::max(rowHeight, chart.panels[k].frame.y1);
         }

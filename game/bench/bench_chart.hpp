@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// bench.svg: median frame time (log axis) against mean ꟻLIP error, one panel per scene, every
-// backend of the run in each panel (soft: circles, gl: squares; a grey line joins one
-// technique's markers). Filled markers lie on their backend's Pareto front, which a dashed
+// bench.svg: median frame time (log axis) against mean ꟻLIP error and, where the scene has a
+// pan, against flicker ([Hathaway 2010] §3.4: the change of luma between frames of a pan,
+// minus the reference's): one row per scene, the ꟻLIP panel left and the flicker panel right,
+// every backend of the run in each panel (soft: circles, gl: squares; a grey line joins one
+// technique's markers). Filled markers lie on their backend's Pareto front (for flicker, of
+// its magnitude: less flicker than the reference is no better than as much), which a dashed
 // staircase joins.
 //
 // The chart is laid out first (layoutChart: every mark and label as a box in SVG units) and
@@ -35,10 +38,10 @@ struct ChartTick {
 
 struct ChartMarker {
     std::string technique, backend;
-    double timeMs = 0.0, error = 0.0;
-    double x = 0.0, y = 0.0;  // centre
-    bool onFront = false;     // on its backend's Pareto front in this scene
-    ChartBox box() const;     // the drawn shape, stroke included
+    double timeMs = 0.0, error = 0.0;  // error: the panel's measure (ꟻLIP or flicker)
+    double x = 0.0, y = 0.0;           // centre
+    bool onFront = false;              // on its backend's Pareto front in this scene
+    ChartBox box() const;              // the drawn shape, stroke included
 };
 
 struct ChartLabel {
@@ -54,8 +57,12 @@ struct ChartOverflow {
     double x = 0.0, baseline = 0.0;
 };
 
+// What a panel's vertical axis shows.
+enum class ChartMeasure { Flip, Flicker };
+
 struct ChartPanel {
     std::string scene;
+    ChartMeasure measure = ChartMeasure::Flip;
     double originX = 0.0, originY = 0.0;  // where the panel sits in the chart; boxes are panel-local
     ChartBox frame, plot;
     std::vector<ChartTick> xTicks, yTicks;
@@ -77,7 +84,8 @@ inline constexpr double kLabelFontSize = 12.0;
 // sans-serif fonts, so a box reserved with it holds the text in any of them.
 double chartTextWidth(const std::string& text, double fontSize);
 
-// Rows that did not run or have no error are left out; so is the opaque-only frame.
+// Rows that did not run or have no error are left out; so is the opaque-only frame. A
+// scene's flicker panel holds the rows with a flicker value; a scene without any has none.
 Chart layoutChart(const std::vector<BenchRow>& rows);
 std::string chartSvg(const Chart& chart);
 void writeSvg(std::ostream& out, const std::vector<BenchRow>& rows);

@@ -11,31 +11,18 @@
 
 #include "engine/core/error.hpp"
 #include "bench_frame.hpp"
+#include "bench_goals.hpp"
 #include "report_text.hpp"
 
 namespace bench {
 
 namespace {
 
-const BenchRow* find(const std::vector<BenchRow>& rows, const std::string& scene, const std::string& technique,
-                     const std::string& backend) {
-    for (const BenchRow& r : rows)
-        if (r.scene == scene && r.technique == technique && r.backend == backend) return &r;
-    return nullptr;
-}
-
 std::vector<std::string> distinct(const std::vector<BenchRow>& rows, std::string BenchRow::*field) {
     std::vector<std::string> out;
     for (const BenchRow& r : rows)
         if (std::find(out.begin(), out.end(), r.*field) == out.end()) out.push_back(r.*field);
     return out;
-}
-
-// The backend goals and the chart are computed on: soft when it ran (deterministic errors).
-std::string primaryBackend(const std::vector<BenchRow>& rows) {
-    const auto backends = distinct(rows, &BenchRow::backend);
-    if (std::find(backends.begin(), backends.end(), "soft") != backends.end()) return "soft";
-    return backends.empty() ? "" : backends.front();
 }
 
 // The temporal measures (bench_temporal.hpp), one table for every backend that has them.
@@ -146,7 +133,7 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
     const std::string primary = primaryBackend(rows);
     auto value = [&](const std::string& scene, const std::string& technique, double BenchRow::*field,
                      const std::string& backend) -> std::optional<double> {
-        const BenchRow* r = find(rows, scene, technique, backend);
+        const BenchRow* r = findRow(rows, scene, technique, backend);
         if (!r || !has(r->*field)) return std::nullopt;
         return r->*field;
     };
@@ -208,6 +195,13 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
                  value(scene, "ssam", &BenchRow::cpuMedianMs, "soft"),
                  value(scene, "ssam", &BenchRow::cpuMedianMs, "gl"));
     else out << "| time ssam soft / gl | n/a |  | <= 0.50 | not measured (run with --backend soft,gl) |\n";
+    out << "\n## goals against the techniques engines ship (" << primary
+        << " backend)\n\nThe recommended preset's ꟻLIP at or below alpha testing's at no more than 1.25x the paper "
+           "preset's time (row `"
+        << kSsamPaperRow
+        << "`, added by --with-paper-ssam), SSAM+'s ꟻLIP at most 0.6x alpha testing's, SSAM's flicker in the "
+           "forest pan at most 0.3x alpha testing's.\n\n";
+    writeGoalTable(out, rivalGoals(rows));
     out << "\n";
 
     if (both) {
@@ -215,7 +209,7 @@ void writeMarkdown(std::ostream& out, const std::vector<BenchRow>& rows, const R
                "|---|---|---:|---:|---:|\n";
         for (const BenchRow& r : rows) {
             if (r.backend != "soft") continue;
-            const BenchRow* g = find(rows, r.scene, r.technique, "gl");
+            const BenchRow* g = findRow(rows, r.scene, r.technique, "gl");
             const double s = r.timeMedianMs, gms = g ? g->timeMedianMs : kMissing;
             out << "| " << r.scene << " | " << r.technique << " | " << num(s, "%.2f") << " | " << num(gms, "%.2f")
                 << " | " << (has(s) && has(gms) && gms > 0 ? num(s / gms, "%.3f") : "") << " |\n";

@@ -7,15 +7,20 @@
 // exit 2 for a bad flag, 1 for a failed run; --out is checked before the first frame.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <regex>
 #include <string>
 #include <vector>
 
 #include "bench_chart.hpp"
+#include "bench_figures.hpp"
+#include "bench_goals.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
 #include "bench_scaling.hpp"
@@ -51,6 +56,10 @@ struct Options {
     bool sweep = false;
     bool sweepFull = false;
     bool scaling = false;
+    bool withPaperSsam = false;
+    std::string ssamPlusBlur = "on";  // SSAM+'s composite blur (transparency::SsamPlusOptions)
+    std::string figures;              // FIGURES.md to write from the run; empty: none
+    std::string speedTable;           // speed_table.sh's table to copy into it
     std::string sweepLerp = "0,0.25,0.5,0.85,1";
     std::string sweepSquare = "on,off";
     std::string sweepReference = "16,64,128";
@@ -170,6 +179,17 @@ BenchOptions parse(const Options& o) {
     for (BenchSubject& subject : b.subjects)
         if (subject.kind == transparency::TechniqueKind::Ssam)
             subject.options.ssam = ssam::presetConfig(*ssam::parsePreset(o.ssamPreset));
+    for (BenchSubject& subject : b.subjects)
+        if (subject.kind == transparency::TechniqueKind::SsamPlus)
+            subject.options.ssamPlus.compositeBlur = o.ssamPlusBlur == "on";
+    // The paper preset beside the recommended one: the time goal's denominator (bench_goals.hpp).
+    if (o.withPaperSsam && !o.sweep) {
+        BenchSubject paper{kSsamPaperRow, transparency::TechniqueKind::Ssam, {}};
+        paper.options.ssam = ssam::presetConfig(ssam::Preset::Paper);
+        const auto ssamAt =
+            std::find_if(b.subjects.begin(), b.subjects.end(), [](const BenchSubject& s) { return s.name == "ssam"; });
+        b.subjects.insert(ssamAt == b.subjects.end() ? b.subjects.end() : ssamAt + 1, paper);
+    }
     for (const std::string& name : splitList(o.backends, "--backend")) {
         if (name != "soft" && name != "gl" && name != "vk")
             throw engine::UsageError("--backend: unknown backend '" + name + "' (known: soft, gl, vk)");
@@ -217,6 +237,16 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
                   : std::vector<const char*>{"bench.csv", "bench_passes.csv", "bench.md", "bench.svg"};
     engine::requireWritableDirectory(out, /*create=*/true);
     for (const char* name : reports) engine::requireWritableFile(out / name, /*createDirectory=*/false);
+    if (!o.figures.empty()) engine::requireWritableFile(o.figures, /*createDirectory=*/false);
+    std::string speedTable;
+    if (!o.speedTable.empty()) {
+        std::ifstream in(o.speedTable, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in || text.str().empty())
+            throw engine::Error("--speed-table '" + o.speedTable + "': cannot read it, or it is empty");
+        speedTable = text.str();
+    }
     BenchOptions run = options;
     if (o.images) {
         run.imagesDir = out / "images";
@@ -260,7 +290,12 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
     stageReport(files, out / "bench_passes.csv", [&](std::ostream& s) { writePassesCsv(s, rows); });
     stageReport(files, out / "bench.md", [&](std::ostream& s) { writeMarkdown(s, rows, info); });
     stageReport(files, out / "bench.svg", [&](std::ostream& s) { writeSvg(s, rows); });
+    if (!o.figures.empty()) {
+        const FiguresInput figures{info, options.temporalFrames, speedTable, o.speedTable};
+        stageReport(files, o.figures, [&](std::ostream& s) { writeFigures(s, rows, figures); });
+    }
     files.commit();
+    if (!o.figures.empty()) std::printf("ssam-bench: wrote %s\n", o.figures.c_str());
     std::printf("ssam-bench: wrote %s/bench.csv, bench_passes.csv, bench.md, bench.svg (%zu rows)\n",
                 out.string().c_str(), rows.size());
     return 0;
@@ -283,6 +318,11 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                    "technique ssam's knobs: paper ([Hathaway 2010]'s values) or measured (the knob sweep's best "
                    "within 1.25x the paper's time; ssam/docs/knobs.md)")
         ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
+        ->capture_default_str();
+    app.add_option("--ssam-plus-blur", o.ssamPlusBlur,
+                   "technique ssam-plus's composite averages the foliage colour over 3x3 (on) or takes the pixel's "
+                   "own (off; ssam/docs/ssam_plus.md)")
+        ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
     app.add_option(
            "--backend", o.backends,
@@ -331,12 +371,24 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     app.add_option("--sweep-precision", o.sweepPrecision, "maskPrecision values (§3.5.2): rgba8, rgba16f, rg16f")
         ->capture_default_str()
         ->needs(sweep);
+    CLI::Option* figures = app.add_option(
+        "--figures", o.figures,
+        "also write FIGURES.md (the figures the READMEs quote: every scene's techniques, the goals, ssam beside "
+        "hashed+taa) from this run to this file; make bench writes game/bench/FIGURES.md");
+    app.add_option("--speed-table", o.speedTable,
+                   "game/bench/speed_table.sh's table (its speed_table.md), copied into --figures' file")
+        ->check(CLI::ExistingFile)
+        ->needs(figures);
+    app.add_flag("--with-paper-ssam", o.withPaperSsam,
+                 "also run technique ssam with the paper's knobs, as row ssam-paper (the time goal against the "
+                 "paper preset, bench.md)");
     CLI::Option* scaling =
         app.add_flag("--scaling", o.scaling,
                      "instead of comparing techniques: each backend's SSAM and alpha-test frame time against "
                      "resolution (forest, 360p..2160p) and foliage depth complexity (1..64 full-view leaf layers "
                      "at 720p); --quick: 160x90..320x180 and 1..4 layers; writes scaling.csv, scaling.svg");
     scaling->excludes(sweep);
+    figures->excludes(sweep)->excludes(scaling);
     for (const char* flag : {"--scenes", "--techniques", "--size", "--pan-frames", "--temporal-frames", "--images"})
         scaling->excludes(app.get_option(flag));
     app.add_option("--out", o.out, "output directory (created if missing; checked before the first frame)")

@@ -110,6 +110,43 @@ struct CoverageCompositeKernel {
     }
 };
 
+// SSAM+'s blurred composite (programs.hpp CoverageBlurComposite): the same coverage, the
+// colour averaged over the written 3x3 neighbours in the order the GLSL sums them.
+struct CoverageBlurCompositeKernel {
+    static constexpr soft::ProgramNeeds kNeeds{};
+    static constexpr bool kReadsPixels = true;
+    CoverageModel model = CoverageModel::EqualLayers;
+    const soft::SoftTexture* foliage = nullptr;
+    const soft::SoftTexture* mask = nullptr;
+    const soft::SoftTexture* maskAdd = nullptr;
+
+    CoverageBlurCompositeKernel(const CoverageCompositeParams& p, const soft::TextureLookup& textures)
+        : model(p.model), foliage(textures.texture(p.foliage)), mask(textures.texture(p.mask)),
+          maskAdd(textures.texture(p.maskAdd)) {}
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const glm::vec4 m = soft::fetchTexel(*mask, f.x, f.y);
+        const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, f.x, f.y).r : m.a;
+        const int width = foliage->desc.width, height = foliage->desc.height;
+        glm::vec3 sum(0.0f);
+        float weights = 0.0f;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int x = f.x + dx, y = f.y + dy;
+                if (x < 0 || y < 0 || x >= width || y >= height) continue;
+                const glm::vec4 c = soft::fetchTexel(*foliage, x, y);
+                if (!(c.a > 0.0f)) continue;  // the colour pass wrote nothing here (NaN too)
+                const float weight = float((2 - dx * dx) * (2 - dy * dy));  // 1-2-1 by 1-2-1
+                sum += weight * glm::vec3(c);
+                weights += weight;
+            }
+        glm::vec3 color = weights > 0.0f ? sum / weights : glm::vec3(soft::fetchTexel(*foliage, f.x, f.y));
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(color[c])) color[c] = 0.0f;
+        return {color, layerCoverage(model, m.r, addMask)};
+    }
+};
+
 struct TransmittanceCompositeKernel {
     static constexpr soft::ProgramNeeds kNeeds{};
     static constexpr bool kReadsPixels = true;

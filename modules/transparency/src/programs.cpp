@@ -46,24 +46,55 @@ void main() {
 }
 )";
 
-// SSAM+'s composite (soft: program_kernels.hpp CoverageCompositeKernel, layerCoverage).
-constexpr const char* kCoverageCompositeFragment = R"(
+// SSAM+'s coverage from the MAX and ADD masks (soft: program_kernels.hpp layerCoverage).
+constexpr const char* kLayerCoverage = R"(
 layout(binding = 0) uniform sampler2D u_foliage;
 layout(binding = 1) uniform sampler2D u_mask;
 layout(binding = 2) uniform sampler2D u_maskAdd;
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
+float layerCoverage(ivec2 p) {
     vec4 m = texelFetch(u_mask, p, 0);
     float addMask = u_hasMaskAdd ? texelFetch(u_maskAdd, p, 0).r : m.a;
     float coverage = 0.0;
     if (u_coverageModel == 1) coverage = 1.0 - exp(-addMask);
     else if (m.r >= 1.0) coverage = 1.0;
     else if (m.r > 0.0) coverage = 1.0 - pow(1.0 - m.r, addMask / m.r);
-    coverage = clamp01(coverage);
+    return clamp01(coverage);
+}
+)";
+
+// SSAM+'s composite (soft: program_kernels.hpp CoverageCompositeKernel).
+constexpr const char* kCoverageCompositeMain = R"(
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
     vec3 color = texelFetch(u_foliage, p, 0).rgb;
     for (int c = 0; c < 3; ++c)
         if (isnan(color[c]) || isinf(color[c])) color[c] = 0.0;
-    finish(vec4(color, coverage));
+    finish(vec4(color, layerCoverage(p)));
+}
+)";
+
+// SSAM+'s blurred composite (soft: program_kernels.hpp CoverageBlurCompositeKernel, summed in
+// the same order).
+constexpr const char* kCoverageBlurCompositeMain = R"(
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 size = textureSize(u_foliage, 0);
+    vec3 sum = vec3(0.0);
+    float weights = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = p + ivec2(dx, dy);
+            if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) continue;
+            vec4 c = texelFetch(u_foliage, q, 0);
+            if (!(c.a > 0.0)) continue;
+            float weight = float((2 - dx * dx) * (2 - dy * dy));
+            sum += weight * c.rgb;
+            weights += weight;
+        }
+    vec3 color = weights > 0.0 ? sum / weights : texelFetch(u_foliage, p, 0).rgb;
+    for (int c = 0; c < 3; ++c)
+        if (isnan(color[c]) || isinf(color[c])) color[c] = 0.0;
+    finish(vec4(color, layerCoverage(p)));
 }
 )";
 
@@ -79,6 +110,29 @@ void main() {
     finish(vec4(color, clamp01(texelFetch(u_transmittance, p, 0).r)));
 }
 )";
+
+// Both SSAM+ composites: the same params, textures and checks; `blur` picks the colour.
+ProgramDesc coverageComposite(bool blur) {
+    ProgramDesc d =
+        describeProgram<CoverageCompositeParams>(blur ? "CoverageBlurComposite" : "CoverageComposite",
+                                                 VertexInput::Fullscreen, "transparency::CoverageCompositeParams");
+    d.gl.fragment = std::string(kLayerCoverage) + (blur ? kCoverageBlurCompositeMain : kCoverageCompositeMain);
+    d.gl.uniforms = {{"u_coverageModel", UniformType::Byte, offsetof(CoverageCompositeParams, model)}};
+    d.gl.textures = {
+        {"u_foliage", offsetof(CoverageCompositeParams, foliage), 0, TextureRead::Texel, TextureUse::FullSize},
+        {"u_mask", offsetof(CoverageCompositeParams, mask), 1, TextureRead::Texel, TextureUse::FullSize},
+        {"u_maskAdd", offsetof(CoverageCompositeParams, maskAdd), 2, TextureRead::Texel, TextureUse::FullSize, true,
+         "u_hasMaskAdd"},
+    };
+    d.check = [](const void* params, const DrawCheck& check) {
+        const CoverageModel model = static_cast<const CoverageCompositeParams*>(params)->model;
+        if (model != CoverageModel::EqualLayers && model != CoverageModel::Exponential)
+            check.fail("unknown coverage model " + std::to_string(int(model)));
+    };
+    d.soft = blur ? soft::makeKernel<CoverageBlurCompositeKernel, CoverageCompositeParams>()
+                  : soft::makeKernel<CoverageCompositeKernel, CoverageCompositeParams>();
+    return d;
+}
 
 }  // namespace
 
@@ -105,25 +159,8 @@ ProgramDesc wboitResolveProgram() {
     return d;
 }
 
-ProgramDesc coverageCompositeProgram() {
-    ProgramDesc d = describeProgram<CoverageCompositeParams>("CoverageComposite", VertexInput::Fullscreen,
-                                                             "transparency::CoverageCompositeParams");
-    d.gl.fragment = kCoverageCompositeFragment;
-    d.gl.uniforms = {{"u_coverageModel", UniformType::Byte, offsetof(CoverageCompositeParams, model)}};
-    d.gl.textures = {
-        {"u_foliage", offsetof(CoverageCompositeParams, foliage), 0, TextureRead::Texel, TextureUse::FullSize},
-        {"u_mask", offsetof(CoverageCompositeParams, mask), 1, TextureRead::Texel, TextureUse::FullSize},
-        {"u_maskAdd", offsetof(CoverageCompositeParams, maskAdd), 2, TextureRead::Texel, TextureUse::FullSize, true,
-         "u_hasMaskAdd"},
-    };
-    d.check = [](const void* params, const DrawCheck& check) {
-        const CoverageModel model = static_cast<const CoverageCompositeParams*>(params)->model;
-        if (model != CoverageModel::EqualLayers && model != CoverageModel::Exponential)
-            check.fail("unknown coverage model " + std::to_string(int(model)));
-    };
-    d.soft = soft::makeKernel<CoverageCompositeKernel, CoverageCompositeParams>();
-    return d;
-}
+ProgramDesc coverageCompositeProgram() { return coverageComposite(false); }
+ProgramDesc coverageBlurCompositeProgram() { return coverageComposite(true); }
 
 ProgramDesc transmittanceCompositeProgram() {
     ProgramDesc d = describeProgram<TransmittanceCompositeParams>("TransmittanceComposite", VertexInput::Fullscreen,

@@ -8,8 +8,11 @@
 //   - the composite estimates the pixel's covered fraction 1 - prod(1 - a_i) from the two
 //     masks (programs.hpp CoverageModel; by default n = ADD / MAX layers of alpha MAX:
 //     1 - (1 - MAX)^(ADD / MAX)) where the paper uses lerp(MAX, ADD, 0.85) squared, a
-//     hand-tuned stand-in for the same quantity (§3.5.4, §3.6.2).
-// Same passes, same geometry work; the composite does a pow() per pixel more.
+//     hand-tuned stand-in for the same quantity (§3.5.4, §3.6.2);
+//   - by default the composite averages the foliage colour over 3x3 (programs.hpp
+//     CoverageBlurComposite): the colour pass keeps one layer per pixel, the average stands
+//     in for the blend of several (ssam/docs/ssam_plus.md has what each idea tried gave).
+// Same passes, same geometry work; the composite does a pow() and 9 colour reads per pixel more.
 #include <string>
 
 #include "engine/core/error.hpp"
@@ -43,7 +46,8 @@ public:
             throw engine::Error("ssam-plus: unknown coverage model " + std::to_string(int(model_)));
         PipelineDesc composite;
         composite.name = "ssam+ composite";
-        program_ = {backend_, backend_.createProgram(coverageCompositeProgram())};
+        program_ = {backend_, backend_.createProgram(options.ssamPlus.compositeBlur ? coverageBlurCompositeProgram()
+                                                                                    : coverageCompositeProgram())};
         composite.program = program_.get();
         composite.blend[0] = BlendState::alphaOverKeepAlpha();  // as SSAM's composite
         composite_ = {backend_, backend_.createPipeline(composite)};
@@ -102,7 +106,7 @@ private:
     Backend& backend_;
     ssam::ScreenSpaceAlphaMask ssam_;
     CoverageModel model_;
-    Owned<ProgramHandle> program_;  // programs.hpp coverageCompositeProgram
+    Owned<ProgramHandle> program_;  // programs.hpp coverage(Blur)CompositeProgram
     Owned<PipelineHandle> composite_;
     std::vector<engine::render::MaskedBatch> batches_;
 };

@@ -7,7 +7,9 @@
 #   - bench.md and bench.svg exist, the SVG opens with <svg ...> and closes with </svg>;
 #   - the two runs (the second on one thread) give identical error columns: the soft backend
 #     is deterministic for any thread count;
-#   - the tree and forest rows have the temporal measures (bench_temporal.hpp), finite.
+#   - the tree and forest rows have the temporal measures (bench_temporal.hpp), finite;
+#   - --figures writes FIGURES.md (bench_figures.hpp) from the run: the command at its top, a
+#     table per scene with every technique, the goals, and every table row as wide as its header.
 cmake_minimum_required(VERSION 3.20)  # IN_LIST and the other modern if() forms in -P scripts
 set(required scene technique backend width height time_ms_median time_ms_min time_ms_max rmse_linear
     psnr_srgb ssim flip_mean flicker peak_mem_mb)
@@ -42,7 +44,7 @@ function(run_once dir)
   endforeach()
 endfunction()
 
-run_once(${OUT}/run1)
+run_once(${OUT}/run1 --figures ${OUT}/run1/FIGURES.md)
 run_once(${OUT}/run2 --threads 1)  # also: the same numbers for any soft-backend thread count
 
 file(STRINGS ${OUT}/run1/bench.csv lines1)
@@ -146,4 +148,47 @@ file(READ ${OUT}/run1/bench.md md)
 if(NOT md MATCHES "\\| scene \\| technique \\|" OR NOT md MATCHES "## goals")
   fail("bench.md lacks the results table or the goals")
 endif()
+file(STRINGS ${OUT}/run1/FIGURES.md figures ENCODING UTF-8)
+list(GET figures 0 first)
+if(NOT first STREQUAL "# Current figures")
+  fail("FIGURES.md opens with '${first}'")
+endif()
+file(READ ${OUT}/run1/FIGURES.md figuresText)
+if(NOT figuresText MATCHES "`ssam-bench --quick --out [^`]*--figures [^`]*FIGURES.md`" OR NOT figuresText MATCHES "\n## Goals\n")
+  fail("FIGURES.md lacks the command that wrote it or the goals")
+endif()
+foreach(scene IN LISTS scenes)
+  string(FIND "${figuresText}" "### ${scene}, soft" at)
+  if(at LESS 0)
+    fail("FIGURES.md has no table for ${scene}")
+  endif()
+  string(SUBSTRING "${figuresText}" ${at} -1 rest)
+  string(FIND "${rest}" "\n\n" headEnd)
+  math(EXPR tableStart "${headEnd} + 2")
+  string(SUBSTRING "${rest}" ${tableStart} -1 rest)
+  string(FIND "${rest}" "\n\n" tableEnd)
+  string(SUBSTRING "${rest}" 0 ${tableEnd} table)
+  foreach(technique IN LISTS techniques)
+    string(REPLACE "+" "\\+" escaped "${technique}")
+    if(NOT table MATCHES "\\| `?${escaped}`? \\|")
+      fail("FIGURES.md's ${scene} table lacks ${technique}")
+    endif()
+  endforeach()
+endforeach()
+# Every table row has as many cells as the header above it.
+set(width -1)
+foreach(line IN LISTS figures)
+  if(line MATCHES "^\\|")
+    string(REPLACE "\\|" "" bare "${line}")
+    string(REGEX MATCHALL "\\|" bars "${bare}")
+    list(LENGTH bars n)
+    if(width LESS 0)
+      set(width ${n})
+    elseif(NOT n EQUAL width)
+      fail("FIGURES.md row '${line}' has ${n} bars, its header ${width}")
+    endif()
+  else()
+    set(width -1)
+  endif()
+endforeach()
 message(STATUS "ssam-bench quick run: ${n1} lines, outputs complete, error columns identical across two runs")

@@ -104,11 +104,16 @@ void expectReadable(const Chart& chart, const std::vector<BenchRow>& rows, const
             EXPECT_LE(m.y, p.plot.y1 + 1e-9);
         }
     }
-    // Every charted row is a marker of its scene's panel.
-    std::size_t charted = 0, markers = 0;
-    for (const BenchRow& r : rows) charted += r.technique != kOpaqueOnly && has(r.timeMedianMs) && has(r.flipMean);
-    for (const ChartPanel& p : chart.panels) markers += p.markers.size();
+    // Every charted row is a marker of its scene's panel of each measure it has.
+    std::size_t charted = 0, chartedFlicker = 0, markers = 0, flickerMarkers = 0;
+    for (const BenchRow& r : rows) {
+        charted += r.technique != kOpaqueOnly && has(r.timeMedianMs) && has(r.flipMean);
+        chartedFlicker += r.technique != kOpaqueOnly && has(r.timeMedianMs) && has(r.flicker);
+    }
+    for (const ChartPanel& p : chart.panels)
+        (p.measure == ChartMeasure::Flip ? markers : flickerMarkers) += p.markers.size();
     EXPECT_EQ(markers, charted);
+    EXPECT_EQ(flickerMarkers, chartedFlicker);
 }
 
 TEST(BenchChart, BothBackendsOfARunAreDrawnAndNamed) {
@@ -165,9 +170,11 @@ TEST(BenchChart, RandomRunsStayReadable) {
         for (int s = 0; s < scenes; ++s)
             for (const std::string backend : {"soft", "gl"})
                 for (const std::string& technique : kTechniques)
-                    if (lcg.unit() < 0.9f)  // some rows missing, as when a technique did not run
+                    if (lcg.unit() < 0.9f) {  // some rows missing, as when a technique did not run
                         rows.push_back(row("scene" + std::to_string(s), technique, backend,
                                            t0 * std::pow(spread, lcg.unit()), eMax * lcg.unit()));
+                        if (s % 2 == 0) rows.back().flicker = eMax * (lcg.unit() - 0.3);  // a pan: flicker too
+                    }
         expectReadable(layoutChart(rows), rows, "random run " + std::to_string(run));
         if (HasFailure()) return;
     }
@@ -197,6 +204,37 @@ TEST(BenchChart, TheSvgDrawsEachLabelWhereTheLayoutPlacedIt) {
     }
     for (const ChartTick& t : chart.panels[0].yTicks) EXPECT_NE(svg.find(">" + t.text + "</text>"), std::string::npos);
     EXPECT_EQ(svg.rfind("</svg>\n"), svg.size() - 7);
+}
+
+// A scene with a pan gets a flicker panel right of its ꟻLIP panel; flicker below the
+// reference's (negative) stays on the plot, under a tick for zero, and its magnitude decides
+// the Pareto front.
+TEST(BenchChart, FlickerHasItsOwnPanelBesideTheScenesErrorPanel) {
+    std::vector<BenchRow> rows;
+    for (const std::string scene : {"forest", "vista"})
+        for (std::size_t t = 0; t < kTechniques.size(); ++t) {
+            BenchRow r = row(scene, kTechniques[t], "soft", 50.0 * double(t + 1), 0.1 - 0.01 * double(t));
+            if (scene == "forest") r.flicker = (t % 2 ? -0.0004 : 0.003) * double(t + 1);
+            rows.push_back(r);
+        }
+    rows[0].flicker = -0.0001;  // ssam: fastest, and the least flicker in magnitude
+    const Chart chart = layoutChart(rows);
+    ASSERT_EQ(chart.panels.size(), 3u);
+    EXPECT_EQ(chart.panels[0].measure, ChartMeasure::Flip);
+    EXPECT_EQ(chart.panels[1].measure, ChartMeasure::Flicker);
+    EXPECT_EQ(chart.panels[1].scene, "forest");
+    EXPECT_EQ(chart.panels[1].originY, chart.panels[0].originY);
+    EXPECT_GT(chart.panels[1].originX, chart.panels[0].originX);
+    EXPECT_EQ(chart.panels[2].scene, "vista");
+    EXPECT_GT(chart.panels[2].originY, chart.panels[0].originY);
+    EXPECT_NE(chart.header[0].find("flicker"), std::string::npos);
+    const ChartPanel& f = chart.panels[1];
+    EXPECT_LT(std::stod(f.yTicks.front().text), 0.0);
+    EXPECT_TRUE(
+        std::any_of(f.yTicks.begin(), f.yTicks.end(), [](const ChartTick& t) { return std::stod(t.text) == 0.0; }));
+    for (const ChartMarker& m : f.markers) EXPECT_EQ(m.onFront, m.technique == "ssam") << m.technique;
+    expectReadable(chart, rows, "flicker");
+    EXPECT_NE(chartSvg(chart).find("flicker of a pan, minus the reference's"), std::string::npos);
 }
 
 TEST(BenchChart, NoErrorDataSaysSo) {

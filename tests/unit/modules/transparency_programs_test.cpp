@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The programs and soft-backend hooks the transparency techniques added
-// (programs.hpp: WboitAccumulate, WboitResolve, CoverageComposite; SoftBackend::setFragmentSink): bad
+// (programs.hpp: WboitAccumulate, WboitResolve, CoverageComposite, CoverageBlurComposite; SoftBackend::setFragmentSink): bad
 // input is refused with engine::Error, and every technique is deterministic for any thread
 // count (the soft backend's promise, seeds of the goldens).
 #include <gtest/gtest.h>
@@ -92,6 +92,64 @@ TEST(TransparencyPrograms, WboitResolveNeverOutputsNaN) {
     drawFullscreen(*b, b->createProgram(wboitResolveProgram()), WboitResolveParams{acc, rev}, target);
     const Readback r = b->readback(target);
     for (float v : r.values) EXPECT_TRUE(std::isfinite(v));
+}
+
+// SSAM+'s blurred composite: the colour is the 1-2-1 x 1-2-1 average of the foliage texels
+// the colour pass wrote (alpha > 0) around the pixel and inside the target, the coverage the
+// unblurred composite's; with nothing written around it, the pixel's own texel; non-finite
+// colour comes out as 0.
+TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursOnly) {
+    auto b = soft::createSoftBackend({});
+    constexpr int n = 4;
+    std::vector<float> foliage(n * n * 4, 0.0f), mask(n * n * 4, 0.0f);
+    auto at = [&](std::vector<float>& v, int x, int y) { return v.begin() + (y * n + x) * 4; };
+    const float values[n * n] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const float v = values[y * n + x] / 16.0f;
+            const bool written = !(x == 1 && y == 1) && !(x == 3 && y == 3);  // two texels the pass missed
+            std::copy_n(std::vector<float>{v, v / 2, v / 4, written ? 1.0f : 0.0f}.begin(), 4, at(foliage, x, y));
+            std::copy_n(std::vector<float>{0.5f, 0.0f, 0.0f, 1.0f}.begin(), 4, at(mask, x, y));  // two layers of 0.5
+        }
+    at(foliage, 0, 3)[0] = std::numeric_limits<float>::quiet_NaN();  // poisons its neighbours' red
+    TextureDesc t;
+    t.name = "foliage";
+    t.width = t.height = n;
+    t.format = Format::RGBA32F;
+    t.usage = UsageSampled;
+    TextureData data;
+    data.levels.push_back(std::as_bytes(std::span(foliage)));
+    const TextureHandle f = b->createTexture(t, &data);
+    data.levels[0] = std::as_bytes(std::span(mask));
+    const TextureHandle m = b->createTexture(t, &data);
+    const TextureHandle target = texture(*b, n, Format::RGBA32F);
+    drawFullscreen(*b, b->createProgram(coverageBlurCompositeProgram()),
+                   CoverageCompositeParams{f, m, {}, CoverageModel::EqualLayers}, target);
+    const Readback r = b->readback(target);
+    auto expected = [&](int x, int y) {
+        glm::vec3 sum(0.0f);
+        float weights = 0.0f;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int u = x + dx, v = y + dy;
+                if (u < 0 || v < 0 || u >= n || v >= n || at(foliage, u, v)[3] == 0.0f) continue;
+                const float w = float((2 - dx * dx) * (2 - dy * dy));
+                sum += w * glm::vec3(at(foliage, u, v)[0], at(foliage, u, v)[1], at(foliage, u, v)[2]);
+                weights += w;
+            }
+        return sum / weights;
+    };
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            SCOPED_TRACE(std::to_string(x) + "," + std::to_string(y));
+            const float* out = &r.values[std::size_t(y * n + x) * 4];
+            const glm::vec3 e = expected(x, y);
+            for (int c = 0; c < 3; ++c) {
+                if (std::isfinite(e[c])) EXPECT_FLOAT_EQ(out[c], e[c]) << "channel " << c;
+                else EXPECT_EQ(out[c], 0.0f) << "channel " << c;  // a NaN neighbour: the composite's 0
+            }
+            EXPECT_FLOAT_EQ(out[3], 0.75f);  // 1 - (1 - 0.5)^2: two layers of 0.5
+        }
 }
 
 struct NullSink final : soft::FragmentSink {

@@ -22,6 +22,9 @@ struct SsamPlusOptions {
     CoverageModel coverage = CoverageModel::EqualLayers;
     ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::RG16F;  // ADD must not saturate at 1
     float colorAlphaReference = 64.0f / 255.0f;                      // the colour pass's ([Hathaway 2010] §3.5.3)
+    // The composite averages the foliage colour over 3x3 (programs.hpp CoverageBlurComposite):
+    // lower error on every bench scene (ssam/docs/ssam_plus.md).
+    bool compositeBlur = true;
 };
 
 // Hashed alpha testing (transparency/hashed_alpha.hpp).

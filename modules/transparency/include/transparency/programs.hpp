@@ -59,6 +59,13 @@ struct CoverageCompositeParams {
     CoverageModel model = CoverageModel::EqualLayers;
 };
 
+// CoverageBlurComposite (SSAM+'s composite by default): CoverageComposite with the same
+// params and coverage, its colour the 3x3 binomial (1-2-1) average of the foliage colours
+// the colour pass wrote (foliage alpha > 0) around the pixel, inside the target; the pixel's
+// own texel when none was written. The colour pass keeps one layer per pixel, a different one
+// from pixel to pixel in a canopy; the average stands in for the blend of the layers the
+// exact composite sees (measured: ssam/docs/ssam_plus.md).
+//
 // TransmittanceComposite (the exact reference): a premultiplied colour C and the
 // transmittance T of what lies in front of the target, one texel per pixel,
 //   out = (C.rgb, T), C's non-finite components as 0, T = transmittance.r clamped to [0,1]
@@ -74,6 +81,7 @@ struct TransmittanceCompositeParams {
 engine::render::ProgramDesc wboitAccumulateProgram();
 engine::render::ProgramDesc wboitResolveProgram();
 engine::render::ProgramDesc coverageCompositeProgram();
+engine::render::ProgramDesc coverageBlurCompositeProgram();  // CoverageCompositeParams
 engine::render::ProgramDesc transmittanceCompositeProgram();
 
 }  // namespace transparency

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The goals SSAM is held to against the techniques engines ship today (game/bench/bench.md):
+// each a ratio of two rows of one ssam-bench run, with its target and whether it was met.
+// bench.md and FIGURES.md (bench_figures.hpp) print the same list.
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bench_result.hpp"
+
+namespace bench {
+
+// The row named `ssam` with the paper's knobs, which ssam-bench --with-paper-ssam adds beside
+// technique ssam's recommended preset: the time goal's denominator.
+inline constexpr const char* kSsamPaperRow = "ssam-paper";
+
+struct Goal {
+    std::string what;             // e.g. "forest: ꟻLIP ssam / alpha-test"
+    std::optional<double> ratio;  // unset: a row is missing from the run
+    double target = 0.0;          // the ratio must be at most this
+    std::string missing;          // when ratio is unset: what the run lacked
+    bool met() const { return ratio && *ratio <= target; }
+};
+
+// From the rows of the primary backend (soft when it ran): per scene with foliage (tree,
+// forest, vista), SSAM's ꟻLIP at most alpha testing's and its time at most 1.25x the paper
+// preset's; SSAM+'s ꟻLIP at most 0.6x alpha testing's; in the forest, SSAM's flicker at most
+// 0.3x alpha testing's.
+std::vector<Goal> rivalGoals(const std::vector<BenchRow>& rows);
+
+// | goal | measured | target | met? |
+void writeGoalTable(std::ostream& out, const std::vector<Goal>& goals);
+
+// The backend the goals and the chart are computed on: soft when it ran (deterministic errors).
+std::string primaryBackend(const std::vector<BenchRow>& rows);
+
+const BenchRow* findRow(const std::vector<BenchRow>& rows, const std::string& scene, const std::string& technique,
+                        const std::string& backend);
+
+}  // namespace bench
