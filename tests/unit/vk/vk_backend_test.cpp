@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The Vulkan backend's first checks, under validation (any message fails the test): a device
 // that does not exist is refused with the list of devices, clears store the soft backend's
-// bits in every format, a Flat triangle draws what the soft backend draws, a buffer updated
+// bits in every format, a Flat triangle draws what the soft backend draws (also when pipelines
+// are made before its pass ends), a buffer updated
 // while a submission reads it is renamed, and a steady frame creates nothing and waits at most
 // once for a fence.
 #include <gtest/gtest.h>
@@ -96,6 +97,51 @@ TEST(VkBackend, FlatTriangleMatchesTheSoftBackend) {
     }
     EXPECT_GT(covered, 100);  // the triangle is there
     EXPECT_EQ(differ, 0);     // and within one code of the soft backend's everywhere
+    EXPECT_EQ(gfx->validationMessages(), 0u);
+}
+
+// Draws are recorded until endPass (on the soft backend too): pipelines created after a draw in
+// the same pass (the pipeline pool grows and moves its slots) must not change what the draw
+// records. Its pipeline culls the triangle (clockwise front faces, back faces culled): a draw
+// that lost its pipeline's state draws it, or reads freed memory (ASan reports it). Found by the
+// differential test, which creates pipelines mid-pass.
+TEST(VkBackend, PipelinesCreatedMidPassLeaveRecordedDrawsIntact) {
+    auto gfx = validatedVulkanBackend();
+    auto soft = soft::createSoftBackend();
+    const std::vector<Vertex> vertices = triangle();
+    const glm::vec4 clear(0.1f, 0.2f, 0.3f, 1.0f);
+    auto run = [&](Backend& b) {
+        const TextureHandle target = b.createTexture(renderTargetDesc("target", 32, 24, Format::RGBA8_UNORM));
+        const BufferHandle vb = b.createBuffer({"triangle", BufferKind::Vertex, vertices.size() * sizeof(Vertex)},
+                                               std::as_bytes(std::span<const Vertex>(vertices)));
+        PipelineDesc pd;
+        pd.name = "culls the triangle";
+        pd.program = ProgramKind::Flat;
+        pd.raster.cull = CullMode::Back;
+        pd.raster.frontFace = Winding::Clockwise;
+        const PipelineHandle pipeline = b.createPipeline(pd);
+        PassDesc pass;
+        pass.name = "triangle";
+        pass.color[0] = {target, LoadOp::Clear, clear};
+        b.beginPass(pass);
+        b.draw(meshDraw(pipeline, FlatParams{glm::mat4(1.0f), glm::vec4(1.0f, 0.9f, 0.8f, 1.0f)}, vb, 3));
+        std::vector<PipelineHandle> more;
+        for (int i = 0; i < 64; ++i) {
+            pd.name = "made mid-pass " + std::to_string(i);
+            more.push_back(b.createPipeline(pd));
+        }
+        b.endPass();
+        b.destroy(pipeline);
+        for (PipelineHandle h : more) b.destroy(h);
+        b.destroy(vb);
+        const Readback r = b.readback(target);
+        b.destroy(target);
+        return r;
+    };
+    const Readback got = run(*gfx), want = run(*soft);
+    EXPECT_EQ(got.values, want.values);
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x) ASSERT_EQ(got.at(x, y, 0), want.at(0, 0, 0)) << "drawn at " << x << "," << y;
     EXPECT_EQ(gfx->validationMessages(), 0u);
 }
 

@@ -44,9 +44,11 @@ struct RenderPassKey {
     auto operator<=>(const RenderPassKey&) const = default;
 };
 
-// A draw recorded in the open pass: what it reads was captured when it was recorded.
+// A draw recorded in the open pass: what it reads was captured when it was recorded. The
+// pipeline's description is copied, not pointed to: a pipeline created later in the same pass
+// may grow the pool and move its slots before endPass records the draw.
 struct RecordedDraw {
-    const VulkanPipeline* pipeline = nullptr;
+    PipelineDesc pipeline;
     std::shared_ptr<const VulkanProgram> program;
     ResolvedDrawState state;
     std::uint32_t first = 0, count = 0, instanceCount = 1;

@@ -86,7 +86,7 @@ void VulkanBackendImpl::draw(const DrawDesc& d) {
     if (!drawsRun_) return;  // checked, not recorded: the pass's condition found no sample
     const VulkanPipeline& pipeline = pipelines_.get(d.pipeline);
     RecordedDraw r;
-    r.pipeline = &pipeline;
+    r.pipeline = pipeline.desc;
     r.program = pipeline.program;
     r.state = resolveDrawState(pipeline.desc, targets_, d.scissor, failModeEmulation());
     if (r.state.scissor.empty()) return;  // nothing drawn, as on GL
@@ -288,8 +288,8 @@ void VulkanBackendImpl::recordPass() {
                 if (r.indices) vkCmdBindIndexBuffer(cmd, r.indices, 0, VK_INDEX_TYPE_UINT32);
             }
             TailConstants tail;
-            tail.alphaFunc = int(r.pipeline->desc.alphaTest.func);
-            tail.alphaRef = r.pipeline->desc.alphaTest.reference;
+            tail.alphaFunc = int(r.pipeline.alphaTest.func);
+            tail.alphaRef = r.pipeline.alphaTest.reference;
             tail.a2cSamples = state.alphaToCoverage ? extent_.samples : 0;
             tail.a2cActual = actualSamples_;
             // lavapipe shares llvmpipe's rasterizer and its multisampled scissor defect
@@ -311,7 +311,7 @@ void VulkanBackendImpl::recordPass() {
                     writes = writes || (state.blend[std::size_t(i)].writeMask & step.channels);
                 if (!writes) return false;
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                  pipeline(program, r.pipeline->desc, state, step, key));
+                                  pipeline(program, r.pipeline, state, step, key));
                 tail.alphaSelect = step.select == FragmentSelect::All       ? 0
                                    : step.select == FragmentSelect::Passing ? 1
                                                                             : 2;

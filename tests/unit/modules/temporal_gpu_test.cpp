@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
-// The temporal pass on GL against the soft backend: six frames of hashed+taa and
+// The temporal pass on GL and on Vulkan (gpu_backend.hpp) against the soft backend: six frames of hashed+taa and
 // alpha-test+taa under a perspective camera that moves sideways, so that the history is
 // reprojected with bilinear fetches. TemporalResolve's GLSL repeats the kernel's operations
 // (`precise`); what may differ is the technique's own frame (hashed: a pixel that flips by
-// rounding, hashed_gl_test.cpp) and GL's matrix-vector rounding, which the history carries on.
+// rounding, hashed_gpu_test.cpp) and GL's matrix-vector rounding, which the history carries on.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/render/frame_targets.hpp"
-#include "engine/render/gl/gl_backend.hpp"
+#include "gpu_backend.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "transparency/create_technique.hpp"
 #include "transparency/temporal.hpp"
@@ -18,6 +18,8 @@ namespace {
 
 using namespace engine::render;
 using namespace transparency;
+using transparency::testing::gpuBackend;
+using transparency::testing::kGpuName;
 
 constexpr int kSize = 64;
 
@@ -59,11 +61,11 @@ Readback sixFrames(Backend& backend, TechniqueKind kind) {
     return r;
 }
 
-TEST(TemporalGl, SixFramesMatchTheSoftBackend) {
+TEST(SSAM_GPU_SUITE(Temporal), SixFramesMatchTheSoftBackend) {
     for (TechniqueKind kind : {TechniqueKind::HashedTaa, TechniqueKind::AlphaTestTaa}) {
         auto soft = soft::createSoftBackend({.threads = 1});
-        auto gl = gl::createGlBackend();
-        const Readback s = sixFrames(*soft, kind), g = sixFrames(*gl, kind);
+        auto gpu = gpuBackend();
+        const Readback s = sixFrames(*soft, kind), g = sixFrames(*gpu, kind);
         float worst = 0.0f;
         int over = 0;
         for (std::size_t i = 0; i < s.values.size(); ++i) {
@@ -71,8 +73,8 @@ TEST(TemporalGl, SixFramesMatchTheSoftBackend) {
             worst = std::max(worst, d);
             over += d > 1e-3f;
         }
-        std::printf("%s soft vs GL after 6 frames: worst %.6f, %d of %zu values over 1e-3\n", techniqueName(kind),
-                    worst, over, s.values.size());
+        std::printf("%s soft vs %s after 6 frames: worst %.6f, %d of %zu values over 1e-3\n", techniqueName(kind),
+                    kGpuName, worst, over, s.values.size());
         // Measured: hashed+taa 148 of 16384 (its flips, carried on by the history), alpha-test+taa 10.
         EXPECT_LE(over, int(s.values.size() / 50)) << techniqueName(kind) << ": at most 2% of the values over 1e-3";
     }
