@@ -92,6 +92,7 @@ void measureTemporal(const std::vector<TemporalBackend>& backends, const BenchOp
 
     // History first, on the pan's first view.
     std::vector<std::unique_ptr<ViewUpload>> first;
+    first.reserve(backends.size());
     for (const TemporalBackend& b : backends)
         first.push_back(std::make_unique<ViewUpload>(*b.backend, *b.scene, b.scene->panCamera(aspect, 0)));
     for (Subject& s : subjects)
@@ -104,6 +105,7 @@ void measureTemporal(const std::vector<TemporalBackend>& backends, const BenchOp
         std::printf("[ssam-bench] %-6s temporal frame %d/%d\n", scene.c_str(), k + 1, o.temporalFrames);
         std::fflush(stdout);
         std::vector<std::unique_ptr<ViewUpload>> views;
+        views.reserve(backends.size());
         for (const TemporalBackend& b : backends)
             views.push_back(std::make_unique<ViewUpload>(*b.backend, *b.scene, b.scene->panCamera(aspect, k)));
         const Image ref = draw(soft, softDrawer, referenceTargets, reference.get(), *views.front(), 0);

@@ -143,7 +143,7 @@ FramePlan ScreenSpaceAlphaMask::plan(const FrameTargets& targets, const FoliageV
 }
 
 FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, const FoliageView& view) {
-    const FramePlan planned = cull(width, height, view);
+    FramePlan planned = cull(width, height, view);
     // Targets are only needed (and only created) once some foliage is in view.
     if (!planned.empty()) ensureTargets(planned.width, planned.height, colorFormat);
     return planned;
