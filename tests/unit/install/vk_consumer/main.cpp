@@ -6,12 +6,19 @@
 #include <cstdio>
 
 #include <vulkan/vulkan.h>
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+#endif
 
 #include <ssam/vk/ssam_vk.hpp>
 
 static_assert(__cplusplus == 201703L, "built as C++17: the package must not raise the consumer's standard");
 
 int main() {
+#if defined(__SANITIZE_ADDRESS__)
+    // Built by the sanitizer pass: lavapipe pinned, as in ssam/examples/vk_common/vk_host.cpp (why there).
+    dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
+#endif
     ssam::vk::ScreenSpaceAlphaMaskVk ssam;
     const ssam::vk::Status empty = ssam.initialize(ssam::vk::DeviceDesc{});
     std::printf("initialize without a device: %s (%s)\n", ssam::vk::statusName(empty), ssam.lastMessage());
