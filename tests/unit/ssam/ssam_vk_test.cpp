@@ -140,8 +140,9 @@ struct HostMemory {
 // ssam::vk's contract asks.
 struct Targets {
     vk_example::VulkanHost& host;
+    std::uint32_t width, height;
     vk_example::HostImage color, depth;
-    Targets(vk_example::VulkanHost& h, std::uint32_t w, std::uint32_t hgt) : host(h) {
+    Targets(vk_example::VulkanHost& h, std::uint32_t w, std::uint32_t hgt) : host(h), width(w), height(hgt) {
         color = host.createImage(VK_FORMAT_R8G8B8A8_UNORM, w, hgt, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
                                  VK_IMAGE_ASPECT_COLOR_BIT);
         depth = host.createImage(VK_FORMAT_D32_SFLOAT, w, hgt, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
@@ -150,6 +151,18 @@ struct Targets {
     ~Targets() {
         host.destroy(color);
         host.destroy(depth);
+    }
+    // A frame of SSAM's over these targets, recorded into `cb`.
+    ssam::vk::FrameDesc frame(VkCommandBuffer cb) const {
+        ssam::vk::FrameDesc f;
+        f.commandBuffer = cb;
+        f.colorView = color.view;
+        f.colorFormat = color.format;
+        f.depthView = depth.view;
+        f.depthFormat = depth.format;
+        f.width = width;
+        f.height = height;
+        return f;
     }
     // Into the contract's entry layouts (attachment writes: an image barrier of attachment stages).
     void prepare(VkCommandBuffer cb) const {
@@ -197,14 +210,7 @@ TEST_F(SsamVk, AResizeRetiresTheOldIntermediatesUntilTheirFramesComplete) {
         const Targets& t = frame % 2 == 0 ? big : small;
         const VkCommandBuffer cb = host.begin();
         t.prepare(cb);
-        ssam::vk::FrameDesc f;
-        f.commandBuffer = cb;
-        f.colorView = t.color.view;
-        f.colorFormat = t.color.format;
-        f.depthView = t.depth.view;
-        f.depthFormat = t.depth.format;
-        f.width = frame % 2 == 0 ? 64 : 32;
-        f.height = frame % 2 == 0 ? 48 : 16;
+        ssam::vk::FrameDesc f = t.frame(cb);
         f.frameIndex = frame;
         f.framesCompleted = completed;
         ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
@@ -220,14 +226,7 @@ TEST_F(SsamVk, AResizeRetiresTheOldIntermediatesUntilTheirFramesComplete) {
     // generation, leaving SSAM's first two allocations and the current mask and rt_foliage.
     const VkCommandBuffer cb = host.begin();
     small.prepare(cb);
-    ssam::vk::FrameDesc f;
-    f.commandBuffer = cb;
-    f.colorView = small.color.view;
-    f.colorFormat = small.color.format;
-    f.depthView = small.depth.view;
-    f.depthFormat = small.depth.format;
-    f.width = 32;
-    f.height = 16;
+    ssam::vk::FrameDesc f = small.frame(cb);
     f.frameIndex = f.framesCompleted = 6;
     ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
     EXPECT_EQ(memory.live.size(), std::size_t(atStart + 2));
@@ -266,14 +265,7 @@ TEST(SsamVkDynamicRendering, FramesOfTwoSizesRecordCleanly) {
             const Targets& t = frame < 2 ? big : small;
             const VkCommandBuffer cb = host.begin();
             t.prepare(cb);
-            ssam::vk::FrameDesc f;
-            f.commandBuffer = cb;
-            f.colorView = t.color.view;
-            f.colorFormat = t.color.format;
-            f.depthView = t.depth.view;
-            f.depthFormat = t.depth.format;
-            f.width = frame < 2 ? 64 : 32;
-            f.height = frame < 2 ? 48 : 16;
+            ssam::vk::FrameDesc f = t.frame(cb);
             f.frameIndex = frame;
             f.framesCompleted = completed;
             ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
@@ -295,13 +287,7 @@ TEST_F(SsamVk, HostPipelineStepsOutOfOrderAreInvalidAndLeaveTheCommandBufferVali
     Targets t(host, 16, 16);
     const VkCommandBuffer cb = host.begin();
     t.prepare(cb);
-    ssam::vk::FrameDesc f;
-    f.commandBuffer = cb;
-    f.colorView = t.color.view;
-    f.colorFormat = t.color.format;
-    f.depthView = t.depth.view;
-    f.depthFormat = t.depth.format;
-    f.width = f.height = 16;
+    ssam::vk::FrameDesc f = t.frame(cb);
     ASSERT_EQ(ssam.beginFrame(f), Status::Ok) << ssam.lastMessage();
     ssam::vk::PassInfo info;
     ASSERT_EQ(ssam.beginMaskPass(&info), Status::Ok);
@@ -408,13 +394,7 @@ TEST_F(SsamVk, Rg16fPipelineStateHasTwoMaskAttachments) {
     Targets t(host, 16, 16);
     const VkCommandBuffer cb = host.begin();
     t.prepare(cb);
-    ssam::vk::FrameDesc f;
-    f.commandBuffer = cb;
-    f.colorView = t.color.view;
-    f.colorFormat = t.color.format;
-    f.depthView = t.depth.view;
-    f.depthFormat = t.depth.format;
-    f.width = f.height = 16;
+    ssam::vk::FrameDesc f = t.frame(cb);
     ASSERT_EQ(ssam.beginFrame(f), Status::Ok) << ssam.lastMessage();
     ssam::vk::PassInfo info;
     ASSERT_EQ(ssam.beginMaskPass(&info), Status::Ok) << ssam.lastMessage();
@@ -439,13 +419,7 @@ TEST_F(SsamVk, DepthMaskThresholdNeedsTheDepthImage) {
     ASSERT_EQ(ssam.initialize(describe(host), s), Status::Ok) << ssam.lastMessage();
     Targets t(host, 8, 8);
     const VkCommandBuffer cb = host.begin();
-    ssam::vk::FrameDesc f;
-    f.commandBuffer = cb;
-    f.colorView = t.color.view;
-    f.colorFormat = t.color.format;
-    f.depthView = t.depth.view;
-    f.depthFormat = t.depth.format;
-    f.width = f.height = 8;
+    ssam::vk::FrameDesc f = t.frame(cb);
     EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("FrameDesc::depthImage is null"));
     host.wait(host.submit(cb));
@@ -458,13 +432,7 @@ TEST_F(SsamVk, FoliageBoundsOutOfViewRecordNothing) {
     Targets t(host, 64, 64);
     const VkCommandBuffer cb = host.begin();
     t.prepare(cb);
-    ssam::vk::FrameDesc f;
-    f.commandBuffer = cb;
-    f.colorView = t.color.view;
-    f.colorFormat = t.color.format;
-    f.depthView = t.depth.view;
-    f.depthFormat = t.depth.format;
-    f.width = f.height = 64;
+    ssam::vk::FrameDesc f = t.frame(cb);
     const float vulkanViewProj[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // world y up
     std::memcpy(f.viewProj, vulkanViewProj, sizeof f.viewProj);
     const ssam::vk::Box behind{{-0.5f, -0.5f, -3.0f}, {0.5f, 0.5f, -2.0f}};  // z < 0: behind the camera
@@ -500,13 +468,8 @@ TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
     Targets t(host, 8, 8);
     const VkCommandBuffer cb = host.begin();
-    ssam::vk::FrameDesc f;
-    f.commandBuffer = cb;
-    f.colorView = t.color.view;
+    ssam::vk::FrameDesc f = t.frame(cb);
     f.colorFormat = VK_FORMAT_R5G6B5_UNORM_PACK16;
-    f.depthView = t.depth.view;
-    f.depthFormat = t.depth.format;
-    f.width = f.height = 8;
     EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("colorFormat"));
     f.colorFormat = t.color.format;
@@ -521,13 +484,7 @@ TEST_F(SsamVk, AThrowingDrawCallbackIsReported) {
     Targets t(host, 8, 8);
     const VkCommandBuffer cb = host.begin();
     t.prepare(cb);
-    ssam::vk::FrameDesc f;
-    f.commandBuffer = cb;
-    f.colorView = t.color.view;
-    f.colorFormat = t.color.format;
-    f.depthView = t.depth.view;
-    f.depthFormat = t.depth.format;
-    f.width = f.height = 8;
+    ssam::vk::FrameDesc f = t.frame(cb);
     EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) { throw std::runtime_error("no cards"); }),
               Status::CallbackFailed);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("threw in the mask pass: no cards"));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A C++17 host of ssam::gl alone (tests/unit/install/gl_only_consumer.cmake): compiles the public
+// A C++17 host of ssam::gl alone (tests/unit/install/component_only_consumer.cmake): compiles the public
 // header as C++17, links libssam_gl and nothing of the engine, and calls it without a GL context
 // (a loader that resolves nothing), which must give statuses, not a crash.
 #include <cstdio>

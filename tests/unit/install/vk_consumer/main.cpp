@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A C++17 host of ssam::vk alone (tests/unit/install/vk_only_consumer.cmake): compiles the public
+// A C++17 host of ssam::vk alone (tests/unit/install/component_only_consumer.cmake): compiles the public
 // header as C++17, links libssam_vk and nothing of the engine. An empty device description gives a
 // status, not a crash; then, where this machine has a Vulkan device, SSAM is created from the
 // host's instance and device through the host's vkGetInstanceProcAddr and released.
