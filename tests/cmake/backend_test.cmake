@@ -40,9 +40,14 @@ function(ssam_backend_test name)
     TEST_FILTER "${T_TEST_FILTER}"
     PROPERTIES LABELS ${T_BACKEND} SKIP_RETURN_CODE 77)
   if(T_ALSO_LABELS)
-    set(labels ${T_BACKEND} ${T_ALSO_LABELS})
-    set(script ${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake)
-    file(WRITE ${script} "if(${name}_TESTS)\n  set_tests_properties(\${${name}_TESTS} PROPERTIES LABELS \"${labels}\")\nendif()\n")
-    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${script})
+    ssam_discovered_test_labels(${name} ${T_BACKEND} ${T_ALSO_LABELS})
   endif()
+endfunction()
+
+# ssam_discovered_test_labels(<name> <label>...): the whole list on the tests that
+# gtest_discover_tests(<name>) found, as ALSO_LABELS does (why: above).
+function(ssam_discovered_test_labels name)
+  set(script ${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake)
+  file(WRITE ${script} "if(${name}_TESTS)\n  set_tests_properties(\${${name}_TESTS} PROPERTIES LABELS \"${ARGN}\")\nendif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${script})
 endfunction()
