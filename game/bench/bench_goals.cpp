@@ -36,7 +36,8 @@ std::vector<Goal> rivalGoals(const std::vector<BenchRow>& rows) {
     std::vector<Goal> goals;
     for (const char* scene : {"tree", "forest", "vista"}) {
         goals.push_back(ratio("ꟻLIP ssam / alpha-test", scene, "ssam", "alpha-test", &BenchRow::flipMean, 1.0));
-        goals.push_back(ratio("time ssam / ssam-paper", scene, "ssam", kSsamPaperRow, &BenchRow::timeMedianMs, 1.25));
+        goals.push_back(ratio("time ssam / ssam-paper, frames alternated", scene, "ssam", kSsamPaperRow,
+                              &BenchRow::timeAlternatedMs, 1.25));
         if (!findRow(rows, scene, kSsamPaperRow, backend) && goals.back().missing.rfind("no ", 0) == 0)
             goals.back().missing = "no paper-preset row (run with --with-paper-ssam)";
     }

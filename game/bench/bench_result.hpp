@@ -27,6 +27,9 @@ struct BenchRow {
     // Median CPU time of the process (all threads, llvmpipe's included) per frame: unlike wall
     // time it barely moves when other processes compete for the cores.
     double cpuMedianMs = kMissing;
+    // Median wall time when timed alternately with its pair (ssam against ssam-paper,
+    // bench_alternate.hpp): the time goal's measure. Missing for the other rows.
+    double timeAlternatedMs = kMissing;
     std::vector<PassTime> passes;  // median per pass name over the timed repetitions, in execution order
     // Against the exact reference of the same view (soft backend).
     double rmseLinear = kMissing, psnrLinear = kMissing, rmseSrgb = kMissing, psnrSrgb = kMissing;

@@ -10,7 +10,9 @@
 #include <optional>
 #include <thread>
 
+#include "bench_alternate.hpp"
 #include "bench_frame.hpp"
+#include "bench_goals.hpp"
 #include "bench_temporal.hpp"
 #include "counting_backend.hpp"
 #include "engine/capture/image_write.hpp"
@@ -215,6 +217,40 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
     return row;
 }
 
+// The time goal's pair, ssam and ssam-paper, timed alternately (bench_alternate.hpp) where the run
+// measured both on this scene and backend: their rows get timeAlternatedMs.
+void timePresetsAlternately(Backend& backend, const std::string& backendName, BenchScene& scene,
+                            const SceneViews& views, const BenchOptions& o, std::vector<BenchRow>& rows) {
+    const std::string scenes = sceneName(scene.kind()), ssam = transparency::techniqueName(TechniqueKind::Ssam);
+    const auto subject = [&](const std::string& name) -> const BenchSubject* {
+        const auto s =
+            std::find_if(o.subjects.begin(), o.subjects.end(), [&](const auto& x) { return x.name == name; });
+        return s == o.subjects.end() ? nullptr : &*s;
+    };
+    const auto row = [&](const std::string& technique) -> BenchRow* {
+        const auto r = std::find_if(rows.begin(), rows.end(), [&](const BenchRow& x) {
+            return x.scene == scenes && x.technique == technique && x.backend == backendName && x.ran;
+        });
+        return r == rows.end() ? nullptr : &*r;
+    };
+    const BenchSubject *a = subject(ssam), *b = subject(kSsamPaperRow);
+    BenchRow *ra = row(ssam), *rb = row(kSsamPaperRow);
+    if (!a || !b || !ra || !rb) return;
+    std::printf("[ssam-bench] %-6s %s and %s alternately, %s:", scenes.c_str(), ssam.c_str(), kSsamPaperRow,
+                backendName.c_str());
+    std::fflush(stdout);
+    try {
+        const AlternatedTimes t =
+            timeAlternately(backend, scene, *views.still, *a, *b, o.warmup, o.reps, o.width, o.height);
+        ra->timeAlternatedMs = t.aMedianMs;
+        rb->timeAlternatedMs = t.bMedianMs;
+        std::printf(" medians %.2f and %.2f ms, ratio %.3f\n", t.aMedianMs, t.bMedianMs, t.aMedianMs / t.bMedianMs);
+    } catch (const std::exception& e) {
+        std::printf(" not timed: %s\n", e.what());
+    }
+    std::fflush(stdout);
+}
+
 }  // namespace
 
 std::vector<BenchSubject> techniqueSubjects(const std::vector<TechniqueKind>& techniques) {
@@ -295,6 +331,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
             const SceneViews& views = ownScene ? ownViews : softViews;
             for (const BenchSubject& s : o.subjects)
                 rows.push_back(measure(backend, backendName, scene, views, s, ref, o));
+            timePresetsAlternately(backend, backendName, scene, views, o, rows);
             if (ownScene)
                 temporal.push_back({backendName, &backend, ownScene.get()}), glScenes.push_back(std::move(ownScene));
         }
