@@ -18,9 +18,10 @@
 
 // Under the sanitizers (make test-asan) the validation layer and lavapipe are pinned (RTLD_NODELETE):
 // the Vulkan loader unloads both with the instance, and LeakSanitizer can name a module only while
-// it is loaded. The layer's own leaks are then suppressed by name (tests/lsan.supp says why nothing
-// of ours hides behind that); lavapipe pinned needs no suppression: unloaded, the blocks it
-// allocates once per load (128 bytes each time) would lose the globals that point to them.
+// it is loaded. Unloaded, lavapipe would also lose the globals that point to the blocks it
+// allocates once per load (128 bytes each time), which would then read as leaks of no module.
+// What these libraries leak themselves is suppressed by name (tests/lsan.supp says why nothing of
+// ours hides behind that).
 #endif
 
 int main(int argc, char** argv) {
