@@ -221,7 +221,7 @@ BenchRow measure(Backend& backend, const std::string& backendName, BenchScene& s
 // measured both on this scene and backend: their rows get timeAlternatedMs.
 void timePresetsAlternately(Backend& backend, const std::string& backendName, BenchScene& scene,
                             const SceneViews& views, const BenchOptions& o, std::vector<BenchRow>& rows) {
-    const std::string scenes = sceneName(scene.kind()), ssam = transparency::techniqueName(TechniqueKind::Ssam);
+    const std::string sceneLabel = sceneName(scene.kind()), ssam = transparency::techniqueName(TechniqueKind::Ssam);
     const auto subject = [&](const std::string& name) -> const BenchSubject* {
         const auto s =
             std::find_if(o.subjects.begin(), o.subjects.end(), [&](const auto& x) { return x.name == name; });
@@ -229,14 +229,14 @@ void timePresetsAlternately(Backend& backend, const std::string& backendName, Be
     };
     const auto row = [&](const std::string& technique) -> BenchRow* {
         const auto r = std::find_if(rows.begin(), rows.end(), [&](const BenchRow& x) {
-            return x.scene == scenes && x.technique == technique && x.backend == backendName && x.ran;
+            return x.scene == sceneLabel && x.technique == technique && x.backend == backendName && x.ran;
         });
         return r == rows.end() ? nullptr : &*r;
     };
     const BenchSubject *a = subject(ssam), *b = subject(kSsamPaperRow);
     BenchRow *ra = row(ssam), *rb = row(kSsamPaperRow);
     if (!a || !b || !ra || !rb) return;
-    std::printf("[ssam-bench] %-6s %s and %s alternately, %s:", scenes.c_str(), ssam.c_str(), kSsamPaperRow,
+    std::printf("[ssam-bench] %-6s %s and %s alternately, %s:", sceneLabel.c_str(), ssam.c_str(), kSsamPaperRow,
                 backendName.c_str());
     std::fflush(stdout);
     try {
