@@ -25,7 +25,7 @@ struct AlternatingSubject {
         : drawer(backend, scene.library()) {
         if (s.kind) {
             transparency::TechniqueOptions options = s.options;
-            options.ssam.depthFunc = kDepthFunc;
+            options.depthFunc = kDepthFunc;
             technique = transparency::createTechnique(*s.kind, backend, options);
         }
         targets = std::make_unique<engine::render::FrameTargets>(

@@ -57,7 +57,7 @@ SceneViews uploadViews(Backend& backend, BenchScene& scene, float aspect, int pa
 
 // The subject's options with the scenes' depth function (reverse-Z).
 transparency::TechniqueOptions withSceneDepth(transparency::TechniqueOptions o) {
-    o.ssam.depthFunc = kDepthFunc;
+    o.depthFunc = kDepthFunc;
     return o;
 }
 

@@ -17,11 +17,11 @@
 namespace bench {
 
 // One thing measured: a technique with its options (the knob sweep measures SSAM under
-// many ssam::Config values), or the opaque-only frame.
+// many ssam::Settings values), or the opaque-only frame.
 struct BenchSubject {
     std::string name;                                 // the rows' technique column and image names
     std::optional<transparency::TechniqueKind> kind;  // none: the opaque-only frame
-    // options.ssam.depthFunc is overwritten with the scenes' (reverse-Z, kDepthFunc).
+    // options.depthFunc is overwritten with the scenes' (reverse-Z, kDepthFunc).
     transparency::TechniqueOptions options;
 };
 

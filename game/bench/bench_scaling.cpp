@@ -33,7 +33,7 @@ constexpr TechniqueKind kTechniques[] = {TechniqueKind::Ssam, TechniqueKind::Alp
 void timeFrames(Backend& backend, BenchScene& scene, const ViewUpload& view, TechniqueKind kind, ScalingSize size,
                 const ScalingOptions& o, ScalingRow& row) {
     transparency::TechniqueOptions options;
-    options.ssam.depthFunc = kDepthFunc;
+    options.depthFunc = kDepthFunc;
     auto technique = transparency::createTechnique(kind, backend, options);
     FrameTargets targets(backend,
                          {size.width, size.height, technique->opaqueSamples(), Format::RGBA8_SRGB, kDepthFunc});

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "bench_sweep.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 #include "engine/core/error.hpp"
 
@@ -9,10 +11,11 @@ namespace bench {
 
 namespace {
 
-bool sameKnobs(const ssam::Config& a, const ssam::Config& b) {
+bool sameKnobs(const ssam::Settings& a, const ssam::Settings& b) {
     return a.maskLerp == b.maskLerp && a.squareMask == b.squareMask && a.colorAlphaReference == b.colorAlphaReference &&
-           a.maskPrecision == b.maskPrecision && a.foliageClearColor == b.foliageClearColor &&
-           a.depthFunc == b.depthFunc;
+           a.maskPrecision == b.maskPrecision &&
+           std::equal(std::begin(a.foliageClearColor), std::end(a.foliageClearColor), b.foliageClearColor) &&
+           a.depthTest == b.depthTest && a.depthMaskThreshold == b.depthMaskThreshold;
 }
 
 template <typename T>
@@ -22,7 +25,7 @@ void requireValues(const std::vector<T>& values, const char* knob) {
 
 }  // namespace
 
-std::string settingName(const ssam::Config& c) {
+std::string settingName(const ssam::Settings& c) {
     char buf[96];
     // The reference in 255ths, as the paper counts it (§3.5.3: "≈ 64", "≈ 128").
     std::snprintf(buf, sizeof buf, "ssam-lerp%g-%s-ref%.4g-%s", double(c.maskLerp), c.squareMask ? "sq" : "nosq",
@@ -35,10 +38,10 @@ std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
     requireValues(grid.squareMask, "squareMask");
     requireValues(grid.colorAlphaReference, "colorAlphaReference");
     requireValues(grid.maskPrecision, "maskPrecision");
-    const ssam::Config defaults;
+    const ssam::Settings defaults;
     std::vector<SweepSetting> settings;
-    auto add = [&](const ssam::Config& c) {
-        c.validate();
+    auto add = [&](const ssam::Settings& c) {
+        if (const std::string error = ssam::settingsError(c); !error.empty()) throw engine::Error(error);
         for (const SweepSetting& s : settings)
             if (sameKnobs(s.config, c)) return;
         settings.push_back({c, settingName(c), sameKnobs(c, defaults)});
@@ -49,7 +52,7 @@ std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
             for (bool square : grid.squareMask)
                 for (float reference : grid.colorAlphaReference)
                     for (ssam::MaskPrecision precision : grid.maskPrecision) {
-                        ssam::Config c = defaults;
+                        ssam::Settings c = defaults;
                         c.maskLerp = lerp;
                         c.squareMask = square;
                         c.colorAlphaReference = reference;
@@ -60,18 +63,18 @@ std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
     }
     for (float lerp : grid.maskLerp)
         for (bool square : grid.squareMask) {
-            ssam::Config c = defaults;
+            ssam::Settings c = defaults;
             c.maskLerp = lerp;
             c.squareMask = square;
             add(c);
         }
     for (float reference : grid.colorAlphaReference) {
-        ssam::Config c = defaults;
+        ssam::Settings c = defaults;
         c.colorAlphaReference = reference;
         add(c);
     }
     for (ssam::MaskPrecision precision : grid.maskPrecision) {
-        ssam::Config c = defaults;
+        ssam::Settings c = defaults;
         c.maskPrecision = precision;
         add(c);
     }

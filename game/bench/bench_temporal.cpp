@@ -54,7 +54,7 @@ void measureTemporal(const std::vector<TemporalBackend>& backends, const BenchOp
     BenchScene& softScene = *backends.front().scene;
     const std::string scene = sceneName(softScene.kind());
     auto withDepth = [](transparency::TechniqueOptions options) {
-        options.ssam.depthFunc = kDepthFunc;
+        options.depthFunc = kDepthFunc;
         return options;
     };
 

@@ -32,7 +32,7 @@
 #include "engine/core/usage_error.hpp"
 #include "report_text.hpp"
 #include "simd_flag.hpp"
-#include "ssam/preset.hpp"
+#include "ssam/core/settings.hpp"
 #include "sweep_report.hpp"
 
 namespace {
@@ -113,13 +113,10 @@ float parseNumber(const std::string& item, const char* flag) {
 }
 
 // Each value is checked on its own, with the other knobs at their defaults, so the message
-// names both the flag and the knob (ssam::Config::validate).
-void validateKnob(const ssam::Config& c, const char* flag) {
-    try {
-        c.validate();
-    } catch (const engine::Error& e) {
-        throw engine::UsageError(std::string(flag) + ": " + e.what());
-    }
+// names both the flag and the knob (ssam::settingsError).
+void validateKnob(const ssam::Settings& c, const char* flag) {
+    if (const std::string error = ssam::settingsError(c); !error.empty())
+        throw engine::UsageError(std::string(flag) + ": " + error);
 }
 
 SweepGrid parseSweepGrid(const Options& o) {
@@ -127,7 +124,7 @@ SweepGrid parseSweepGrid(const Options& o) {
     g.full = o.sweepFull;
     g.maskLerp.clear();
     for (const std::string& item : splitList(o.sweepLerp, "--sweep-lerp")) {
-        ssam::Config c;
+        ssam::Settings c;
         c.maskLerp = parseNumber(item, "--sweep-lerp");
         validateKnob(c, "--sweep-lerp");
         g.maskLerp.push_back(c.maskLerp);
@@ -140,7 +137,7 @@ SweepGrid parseSweepGrid(const Options& o) {
     }
     g.colorAlphaReference.clear();
     for (const std::string& item : splitList(o.sweepReference, "--sweep-reference")) {
-        ssam::Config c;
+        ssam::Settings c;
         c.colorAlphaReference = parseNumber(item, "--sweep-reference") / 255.0f;  // given in 255ths (§3.5.3)
         validateKnob(c, "--sweep-reference");
         g.colorAlphaReference.push_back(c.colorAlphaReference);
@@ -148,7 +145,7 @@ SweepGrid parseSweepGrid(const Options& o) {
     g.maskPrecision.clear();
     for (const std::string& item : splitList(o.sweepPrecision, "--sweep-precision")) {
         bool known = false;
-        for (auto p : {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F})
+        for (auto p : {ssam::MaskPrecision::Rgba8, ssam::MaskPrecision::Rgba16f, ssam::MaskPrecision::Rg16f})
             if (item == ssam::maskPrecisionName(p)) {
                 g.maskPrecision.push_back(p);
                 known = true;
@@ -178,14 +175,14 @@ BenchOptions parse(const Options& o) {
     // Technique ssam's knobs (CLI11 checked the name); the sweep's settings carry their own.
     for (BenchSubject& subject : b.subjects)
         if (subject.kind == transparency::TechniqueKind::Ssam)
-            subject.options.ssam = ssam::presetConfig(*ssam::parsePreset(o.ssamPreset));
+            subject.options.ssam = ssam::presetSettings(*ssam::parsePreset(o.ssamPreset));
     for (BenchSubject& subject : b.subjects)
         if (subject.kind == transparency::TechniqueKind::SsamPlus)
             subject.options.ssamPlus.compositeBlur = o.ssamPlusBlur == "on";
     // The paper preset beside the recommended one: the time goal's denominator (bench_goals.hpp).
     if (o.withPaperSsam && !o.sweep) {
         BenchSubject paper{kSsamPaperRow, transparency::TechniqueKind::Ssam, {}};
-        paper.options.ssam = ssam::presetConfig(ssam::Preset::Paper);
+        paper.options.ssam = ssam::presetSettings(ssam::Preset::Paper);
         const auto ssamAt =
             std::find_if(b.subjects.begin(), b.subjects.end(), [](const BenchSubject& s) { return s.name == "ssam"; });
         b.subjects.insert(ssamAt == b.subjects.end() ? b.subjects.end() : ssamAt + 1, paper);
@@ -353,7 +350,7 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                  "also write each still frame, and its per-pixel FLIP error (_flip), as a PNG into OUT/images");
     CLI::Option* sweep = app.add_flag("--sweep", o.sweep,
                                       "instead of comparing techniques: SSAM under a grid of its knobs "
-                                      "(ssam::Config), each against the exact reference; writes sweep.csv, sweep.md");
+                                      "(ssam::Settings), each against the exact reference; writes sweep.csv, sweep.md");
     app.add_flag("--sweep-full", o.sweepFull,
                  "every combination of the sweep values (default: every maskLerp x squareMask, then each "
                  "other knob alone, the rest at the paper's defaults)")

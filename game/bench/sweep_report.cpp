@@ -17,20 +17,20 @@ std::string referenceIn255ths(float reference) { return num(double(reference) * 
 // One knob of the sweep: its name, its value as a number (to order and compare) and as text.
 struct Knob {
     const char* name;
-    std::function<double(const ssam::Config&)> value;
-    std::function<std::string(const ssam::Config&)> print;
+    std::function<double(const ssam::Settings&)> value;
+    std::function<std::string(const ssam::Settings&)> print;
 };
 
 const std::vector<Knob>& knobs() {
     static const std::vector<Knob> k{
-        {"maskLerp", [](const ssam::Config& c) { return double(c.maskLerp); },
-         [](const ssam::Config& c) { return num(double(c.maskLerp), "%g"); }},
-        {"squareMask", [](const ssam::Config& c) { return c.squareMask ? 1.0 : 0.0; },
-         [](const ssam::Config& c) { return std::string(c.squareMask ? "on" : "off"); }},
-        {"colorAlphaReference", [](const ssam::Config& c) { return double(c.colorAlphaReference); },
-         [](const ssam::Config& c) { return referenceIn255ths(c.colorAlphaReference); }},
-        {"maskPrecision", [](const ssam::Config& c) { return double(c.maskPrecision); },
-         [](const ssam::Config& c) { return std::string(ssam::maskPrecisionName(c.maskPrecision)); }},
+        {"maskLerp", [](const ssam::Settings& c) { return double(c.maskLerp); },
+         [](const ssam::Settings& c) { return num(double(c.maskLerp), "%g"); }},
+        {"squareMask", [](const ssam::Settings& c) { return c.squareMask ? 1.0 : 0.0; },
+         [](const ssam::Settings& c) { return std::string(c.squareMask ? "on" : "off"); }},
+        {"colorAlphaReference", [](const ssam::Settings& c) { return double(c.colorAlphaReference); },
+         [](const ssam::Settings& c) { return referenceIn255ths(c.colorAlphaReference); }},
+        {"maskPrecision", [](const ssam::Settings& c) { return double(c.maskPrecision); },
+         [](const ssam::Settings& c) { return std::string(ssam::maskPrecisionName(c.maskPrecision)); }},
     };
     return k;
 }
@@ -81,7 +81,7 @@ void sweepTable(std::ostream& out, std::vector<const SweepResult*> results) {
         mark(r == bestRmse, "**best RMSE sRGB**");
         mark(r == bestSsim, "**best SSIM**");
         if (!r->row.note.empty()) marks += std::string(marks.empty() ? "" : "; ") + mdCell(r->row.note);
-        const ssam::Config& c = r->setting.config;
+        const ssam::Settings& c = r->setting.config;
         out << "| " << ++rank;
         for (const Knob& k : knobs()) out << " | " << k.print(c);
         out << " | " << num(r->row.flipMean, "%.4f") << " | " << num(r->row.rmseSrgb, "%.4f") << " | "
@@ -192,7 +192,7 @@ void writeSweepCsv(std::ostream& out, const std::vector<SweepResult>& results) {
     out << "\n";
     for (const SweepResult& s : results) {
         const BenchRow& r = s.row;
-        const ssam::Config& c = s.setting.config;
+        const ssam::Settings& c = s.setting.config;
         out << csvField(r.scene) << ',' << r.backend << ',' << csvField(s.setting.name) << ','
             << num(double(c.maskLerp)) << ',' << (c.squareMask ? 1 : 0) << ',' << num(double(c.colorAlphaReference))
             << ',' << ssam::maskPrecisionName(c.maskPrecision) << ',' << (s.setting.isDefault ? 1 : 0) << ',' << r.width
@@ -209,7 +209,7 @@ void writeSweepMarkdown(std::ostream& out, const SweepRun& run, const RunInfo& i
         out << run.results.front().row.width << "x" << run.results.front().row.height << ", " << info.reps
             << " timed repetition(s) after " << info.warmup << " warm-up, flicker over " << info.panFrames
             << " pan frames, " << info.threads << " thread(s).\n\n";
-    out << "SSAM (technique `ssam`) under each setting of its knobs (`ssam::Config`: maskLerp §3.5.4, squareMask "
+    out << "SSAM (technique `ssam`) under each setting of its knobs (`ssam::Settings`: maskLerp §3.5.4, squareMask "
            "§3.6.2, colour-pass alpha reference §3.5.3 in 255ths, mask precision §3.5.2; foliage clear colour at "
            "its default), judged against the exact reference like `ssam-bench`'s other rows. Sorted by mean ꟻLIP "
            "(lower is better); RMSE on sRGB-encoded and on linear colour; SSIM on luma (higher is better); "

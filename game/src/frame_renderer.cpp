@@ -28,7 +28,7 @@ FrameRenderer::FrameRenderer(Backend& backend, const engine::scene::MeshLibrary&
                              const RendererOptions& options)
     : backend_(backend), library_(library), options_(options), foliage_(backend), instances_(backend),
       transients_(backend), overlay_(backend) {
-    options_.techniqueOptions.ssam.depthFunc = kDepthFunc;
+    options_.techniqueOptions.depthFunc = kDepthFunc;
     setTechnique(options.technique);
     opaqueCulled_ = opaquePipeline(false);
     opaqueTwoSided_ = opaquePipeline(true);

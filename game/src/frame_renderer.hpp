@@ -39,7 +39,7 @@ struct RendererOptions {
     // The opaque pass's samples are max(msaa, technique->opaqueSamples()): --msaa asks for
     // at least this many (Pure used 2 under SSAM), alpha-to-coverage needs 4 whatever is asked.
     int msaa = 1;
-    transparency::TechniqueOptions techniqueOptions;  // its ssam.depthFunc is set to the scene's
+    transparency::TechniqueOptions techniqueOptions;  // its depthFunc is set to the scene's
     glm::vec4 background{0.55f, 0.70f, 0.88f, 1.0f};  // the opaque pass's clear colour (the racing scene's sky)
     // The scene's sun; this default is the one a glTF file without lights gets.
     engine::render::DirectionalLight sun{{0.45f, 0.80f, 0.35f}, {1.05f, 0.98f, 0.88f}, {0.32f, 0.36f, 0.42f}};

@@ -31,7 +31,7 @@
 #include "racer_outputs.hpp"
 #include "racing_scene.hpp"
 #include "simd_flag.hpp"
-#include "ssam/preset.hpp"
+#include "ssam/core/settings.hpp"
 #include "window_keys.hpp"
 #include "window_loop.hpp"
 
@@ -109,7 +109,7 @@ int run(const CLI::App& app, const Options& o) {
         comparedWith = pair.right;
     }
     renderer.msaa = o.msaa;
-    renderer.techniqueOptions.ssam = ssam::presetConfig(*ssam::parsePreset(o.ssamPreset));  // checked by CLI11
+    renderer.techniqueOptions.ssam = ssam::presetSettings(*ssam::parsePreset(o.ssamPreset));  // checked by CLI11
     renderer.captureLayers = o.captureLayers;
     const CameraMode cameraMode = parseCamera(o.camera);
     const float aspect = float(renderer.width) / float(renderer.height);

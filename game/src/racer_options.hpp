@@ -8,7 +8,7 @@
 
 #include "camera_rig.hpp"
 #include "content_dir.hpp"
-#include "ssam/preset.hpp"
+#include "ssam/core/settings.hpp"
 #include "transparency/technique.hpp"
 
 namespace CLI {

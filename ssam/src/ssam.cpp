@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "ssam/ssam.hpp"
 
+#include "core/passes.hpp"
+#include "engine/core/error.hpp"
 #include "engine/render/pass_scope.hpp"
-#include "ssam/composite_program.hpp"
 #include "engine/render/screen_bounds.hpp"
+#include "ssam/composite_program.hpp"
 
 namespace ssam {
 
@@ -11,54 +13,100 @@ using namespace engine::render;
 
 namespace {
 
-// Mask pass (§3.5.2, Table 3.1): RGB = MAX and A = ADD with ONE/ONE, depth test without
-// write, both faces, no alpha rejection (the paper's alpha reference of 0).
-PipelineDesc maskPipelineDesc(const Config& config) {
-    PipelineDesc mask;
-    mask.name = "ssam mask";
-    mask.program = ProgramKind::AlphaOnly;
-    mask.depth = DepthState::testOnly(config.depthFunc);
-    mask.raster.cull = CullMode::None;
-    if (config.maskPrecision == MaskPrecision::RG16F) {
-        // Two R16F targets, one blend equation each.
-        mask.blend[0] = BlendState::oneOne(BlendOp::Max, BlendOp::Max);
-        mask.blend[1] = BlendState::oneOne(BlendOp::Add, BlendOp::Add);
-    } else {
-        mask.blend[0] = BlendState::maxRgbAddAlpha();
+// The engine's spelling of the core's plan (core/passes.hpp): no SSAM decision is made here.
+BlendFactor toBlendFactor(core::BlendFactor f) {
+    switch (f) {
+        case core::BlendFactor::Zero: return BlendFactor::Zero;
+        case core::BlendFactor::One: return BlendFactor::One;
+        case core::BlendFactor::SrcAlpha: return BlendFactor::SrcAlpha;
+        case core::BlendFactor::OneMinusSrcAlpha: return BlendFactor::InvSrcAlpha;
     }
-    return mask;
+    return BlendFactor::One;
 }
 
-// Colour pass (§3.5.3): alpha test at the colour reference, depth test and write, no
-// culling, no blending.
-PipelineDesc colorPipelineDesc(const Config& config) {
-    PipelineDesc color;
-    color.name = "ssam colour";
-    color.program = ProgramKind::MaskedLit;
-    color.depth = DepthState::testAndWrite(config.depthFunc);
-    color.raster.cull = CullMode::None;
-    color.alphaTest = AlphaTest::discardBelow(config.colorAlphaReference);
-    return color;
+BlendOp toBlendOp(core::BlendOp op) { return op == core::BlendOp::Max ? BlendOp::Max : BlendOp::Add; }
+
+BlendState toBlendState(const core::TargetBlend& b) {
+    if (!b.enabled) return BlendState::opaque();
+    return {true,
+            toBlendFactor(b.srcColor),
+            toBlendFactor(b.dstColor),
+            toBlendOp(b.colorOp),
+            toBlendFactor(b.srcAlpha),
+            toBlendFactor(b.dstAlpha),
+            toBlendOp(b.alphaOp),
+            WriteAll};
 }
 
-// Composite (§3.5.4): out = (foliage, mask) blended SRC_ALPHA / INV_SRC_ALPHA onto the
-// opaque colour = lerp(opaque, foliage, mask); the target's alpha is kept.
-PipelineDesc compositePipelineDesc(ProgramHandle program) {
-    PipelineDesc composite;
-    composite.name = "ssam composite";
-    composite.program = program;
-    composite.blend[0] = BlendState::alphaOverKeepAlpha();
-    return composite;
+Format toFormat(core::TargetFormat format, Format hostColor) {
+    switch (format) {
+        case core::TargetFormat::Rgba8Unorm: return Format::RGBA8_UNORM;
+        case core::TargetFormat::Rgba16f: return Format::RGBA16F;
+        case core::TargetFormat::R16f: return Format::R16F;
+        case core::TargetFormat::HostColor: return hostColor;
+    }
+    return hostColor;
+}
+
+// A foliage pass's pipeline (the mask and colour passes draw the host's batches with the engine's
+// standard programs) or the composite's (SSAM's full-screen program).
+PipelineDesc pipelineDesc(const core::PassDescription& pass, ProgramHandle fullScreenProgram) {
+    PipelineDesc d;
+    d.name = pass.name;
+    if (pass.fullScreen)
+        d.program = fullScreenProgram;
+    else
+        d.program = pass.kind == core::PassKind::Mask ? ProgramKind::AlphaOnly : ProgramKind::MaskedLit;
+    if (pass.depthTest)
+        d.depth = pass.depthWrite ? DepthState::testAndWrite(compareFuncOf(pass.depthCompare))
+                                  : DepthState::testOnly(compareFuncOf(pass.depthCompare));
+    d.raster.cull = pass.cullBackFaces ? CullMode::Back : CullMode::None;
+    if (pass.alphaTest) d.alphaTest = AlphaTest::discardBelow(pass.alphaReference);
+    for (int t = 0; t < pass.colorTargetCount; ++t) d.blend[t] = toBlendState(pass.colorTargets[t].blend);
+    return d;
+}
+
+glm::vec4 clearColorOf(const core::ColorTarget& target) {
+    return {target.clearColor[0], target.clearColor[1], target.clearColor[2], target.clearColor[3]};
 }
 
 }  // namespace
 
-ScreenSpaceAlphaMask::ScreenSpaceAlphaMask(Backend& backend, const Config& config) : backend_(backend) {
-    config.validate();
-    config_ = config;
+CompareFunc compareFuncOf(DepthTest test) {
+    switch (test) {
+        case DepthTest::Less: return CompareFunc::Less;
+        case DepthTest::LessEqual: return CompareFunc::LessEqual;
+        case DepthTest::Greater: return CompareFunc::Greater;
+        case DepthTest::GreaterEqual: return CompareFunc::GreaterEqual;
+    }
+    return CompareFunc::Less;
+}
+
+std::optional<DepthTest> depthTestOf(CompareFunc func) {
+    for (DepthTest test : {DepthTest::Less, DepthTest::LessEqual, DepthTest::Greater, DepthTest::GreaterEqual})
+        if (compareFuncOf(test) == func) return test;
+    return std::nullopt;
+}
+
+namespace {
+
+void throwIfInvalid(const Settings& settings) {
+    if (const std::string error = settingsError(settings); !error.empty()) throw engine::Error(error);
+    // The depth restore needs a full-screen pass that writes depth, which the engine's backends
+    // do not have yet: refused by name rather than drawn without it.
+    if (core::describePasses(settings).restoresDepth)
+        throw engine::Error("ssam settings: depthMaskThreshold = " + std::to_string(settings.depthMaskThreshold) +
+                            " is not drawn by the engine-hosted SSAM yet (ssam::gl and ssam::vk draw it); use 0");
+}
+
+}  // namespace
+
+ScreenSpaceAlphaMask::ScreenSpaceAlphaMask(Backend& backend, const Settings& settings) : backend_(backend) {
+    throwIfInvalid(settings);
+    settings_ = settings;
     compositeProgram_ = backend_.createProgram(compositeProgram());
     try {
-        pipelines_ = createPipelines(config_);
+        pipelines_ = createPipelines(settings_);
     } catch (...) {
         backend_.destroy(compositeProgram_);
         throw;
@@ -71,21 +119,22 @@ ScreenSpaceAlphaMask::~ScreenSpaceAlphaMask() {
     backend_.destroy(compositeProgram_);
 }
 
-void ScreenSpaceAlphaMask::setConfig(const Config& config) {
-    config.validate();
-    // The new pipelines first: if one cannot be made, the old configuration stays in force.
-    const Pipelines next = createPipelines(config);
+void ScreenSpaceAlphaMask::setSettings(const Settings& settings) {
+    throwIfInvalid(settings);
+    // The new pipelines first: if one cannot be made, the old settings stay in force.
+    const Pipelines next = createPipelines(settings);
     destroy(pipelines_);
     pipelines_ = next;
-    config_ = config;
+    settings_ = settings;
 }
 
-ScreenSpaceAlphaMask::Pipelines ScreenSpaceAlphaMask::createPipelines(const Config& config) {
+ScreenSpaceAlphaMask::Pipelines ScreenSpaceAlphaMask::createPipelines(const Settings& settings) {
+    const core::PassPlan passes = core::describePasses(settings);
     Pipelines made;
     try {
-        made.mask = backend_.createPipeline(maskPipelineDesc(config));
-        made.color = backend_.createPipeline(colorPipelineDesc(config));
-        made.composite = backend_.createPipeline(compositePipelineDesc(compositeProgram_));
+        made.mask = backend_.createPipeline(pipelineDesc(passes.mask, {}));
+        made.color = backend_.createPipeline(pipelineDesc(passes.color, {}));
+        made.composite = backend_.createPipeline(pipelineDesc(passes.composite, compositeProgram_));
     } catch (...) {
         destroy(made);
         throw;
@@ -100,7 +149,7 @@ void ScreenSpaceAlphaMask::destroy(const Pipelines& pipelines) {
 
 void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFormat) {
     if (width == width_ && height == height_ && foliageFormat_ == foliageFormat &&
-        targetPrecision_ == config_.maskPrecision)
+        targetPrecision_ == settings_.maskPrecision)
         return;
     destroyTargets();
     const IntermediateDescs descs = intermediateDescs(width, height, foliageFormat);
@@ -109,21 +158,18 @@ void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFo
     foliage_ = backend_.createTexture(descs.foliage);
     width_ = width, height_ = height;
     foliageFormat_ = foliageFormat;
-    targetPrecision_ = config_.maskPrecision;
+    targetPrecision_ = settings_.maskPrecision;
 }
 
 IntermediateDescs ScreenSpaceAlphaMask::intermediateDescs(int width, int height, Format colorFormat) const {
+    const core::PassPlan passes = core::describePasses(settings_);
+    const auto desc = [&](const core::ColorTarget& target) {
+        return renderTargetDesc(target.name, width, height, toFormat(target.format, colorFormat));
+    };
     IntermediateDescs descs;
-    switch (config_.maskPrecision) {
-        case MaskPrecision::RGBA8: descs.mask = renderTargetDesc("rt_mask", width, height, Format::RGBA8_UNORM); break;
-        case MaskPrecision::RGBA16F: descs.mask = renderTargetDesc("rt_mask", width, height, Format::RGBA16F); break;
-        case MaskPrecision::RG16F:
-            // Two R16F targets, one blend equation each (maskPipelineDesc).
-            descs.mask = renderTargetDesc("rt_mask_max", width, height, Format::R16F);
-            descs.maskAdd = renderTargetDesc("rt_mask_add", width, height, Format::R16F);
-            break;
-    }
-    descs.foliage = renderTargetDesc("rt_foliage", width, height, colorFormat);
+    descs.mask = desc(passes.mask.colorTargets[0]);
+    if (passes.mask.colorTargetCount == 2) descs.maskAdd = desc(passes.mask.colorTargets[1]);
+    descs.foliage = desc(passes.color.colorTargets[0]);
     return descs;
 }
 
@@ -155,7 +201,7 @@ FramePlan ScreenSpaceAlphaMask::cull(int width, int height, const FoliageView& v
     plan.height = height;
     for (const MaskedBatch& batch : view.batches) {
         if (batch.count == 0 || batch.instanceCount == 0) continue;
-        const std::optional<Rect> region = screenBounds(batch.worldBounds, view.viewProj, plan.width, plan.height);
+        const std::optional<engine::render::Rect> region = screenBounds(batch.worldBounds, view.viewProj, plan.width, plan.height);
         if (!region) continue;
         plan.visible.push_back(&batch);
         plan.compositeRegion = unite(plan.compositeRegion, *region);
@@ -178,9 +224,10 @@ void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle co
 void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
                                     const Intermediates& targets) {
     PassDesc pass;
-    pass.name = "ssam mask";
-    pass.color[0] = {targets.mask, LoadOp::Clear, glm::vec4(0.0f)};  // black background (§3.5.2)
-    if (targets.maskAdd) pass.color[1] = {targets.maskAdd, LoadOp::Clear, glm::vec4(0.0f)};
+    const core::PassDescription mask = core::describePasses(settings_).mask;
+    pass.name = mask.name;
+    pass.color[0] = {targets.mask, LoadOp::Clear, clearColorOf(mask.colorTargets[0])};
+    if (targets.maskAdd) pass.color[1] = {targets.maskAdd, LoadOp::Clear, clearColorOf(mask.colorTargets[1])};
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
     for (const MaskedBatch* batch : plan.visible) {
@@ -196,8 +243,9 @@ void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& vi
 void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
                                      const Intermediates& targets) {
     PassDesc pass;
-    pass.name = "ssam colour";
-    pass.color[0] = {targets.foliage, LoadOp::Clear, config_.foliageClearColor};  // the clear-colour fix (§3.6.1)
+    const core::PassDescription color = core::describePasses(settings_).color;
+    pass.name = color.name;
+    pass.color[0] = {targets.foliage, LoadOp::Clear, clearColorOf(color.colorTargets[0])};
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
     for (const MaskedBatch* batch : plan.visible) {
@@ -213,15 +261,15 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
 
 void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color, const Intermediates& targets) {
     PassDesc pass;
-    pass.name = "ssam composite";
+    pass.name = core::describePasses(settings_).composite.name;
     pass.color[0] = {color, LoadOp::Load};
     PassScope passScope(backend_, pass);
     CompositeParams params;
     params.foliage = targets.foliage;
     params.mask = targets.mask;
     params.maskAdd = targets.maskAdd;
-    params.maskLerp = config_.maskLerp;
-    params.squareMask = config_.squareMask;
+    params.maskLerp = settings_.maskLerp;
+    params.squareMask = settings_.squareMask;
     DrawDesc d;
     d.pipeline = pipelines_.composite;
     d.params = params;
@@ -234,8 +282,10 @@ FrameReport ScreenSpaceAlphaMask::render(const FrameTargets& targets, const Foli
     const FramePlan p = plan(targets, view);
     FrameReport report;
     report.batchesVisible = static_cast<int>(p.visible.size());
-    report.compositeRegion = p.compositeRegion;
     if (p.empty()) return report;  // no foliage in view: SSAM costs nothing
+    report.foliageInView = true;
+    report.compositeRegion = {p.compositeRegion.x, p.compositeRegion.y, p.compositeRegion.width,
+                              p.compositeRegion.height};
     maskPass(p, view, targets.depth);
     colorPass(p, view, targets.depth);
     compositePass(p, targets.color);

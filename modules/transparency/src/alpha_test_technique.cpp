@@ -22,7 +22,7 @@ using namespace engine::render;
 class AlphaTestTechnique final : public Technique {
 public:
     AlphaTestTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), reference_(options.alphaTestReference), depthFunc_(options.ssam.depthFunc) {
+        : backend_(backend), reference_(options.alphaTestReference), depthFunc_(options.depthFunc) {
         if (reference_) checkReference(*reference_, "alphaTestReference");
     }
 

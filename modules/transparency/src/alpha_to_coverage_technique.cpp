@@ -26,7 +26,7 @@ public:
     AlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind, int samples)
         : backend_(backend), kind_(kind), samples_(samples) {
         PipelineDesc p = foliagePipeline("foliage alpha-to-coverage");
-        p.depth = DepthState::testAndWrite(options.ssam.depthFunc);
+        p.depth = DepthState::testAndWrite(options.depthFunc);
         p.alphaTest.alphaToCoverage = true;
         p.blend[0].writeMask = WriteRGB;  // the frame's alpha stays 1
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));

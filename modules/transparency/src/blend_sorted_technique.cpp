@@ -39,7 +39,7 @@ struct Run {
 class BlendSortedTechnique final : public Technique {
 public:
     BlendSortedTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), depthFunc_(options.ssam.depthFunc) {
+        : backend_(backend), depthFunc_(options.depthFunc) {
         PipelineDesc p = foliagePipeline("foliage blend (sorted)");
         p.depth = DepthState::testOnly(depthFunc_);
         p.blend[0] = BlendState::alphaOver();

@@ -19,7 +19,7 @@ class BlendUnsortedTechnique final : public Technique {
 public:
     BlendUnsortedTechnique(Backend& backend, const TechniqueOptions& options) : backend_(backend) {
         PipelineDesc p = foliagePipeline("foliage blend (unsorted)");
-        p.depth = DepthState::testOnly(options.ssam.depthFunc);
+        p.depth = DepthState::testOnly(options.depthFunc);
         p.blend[0] = BlendState::alphaOver();
         p.blend[0].writeMask = WriteRGB;
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));

@@ -36,7 +36,7 @@ public:
             throw engine::Error("hashed: hashScale " + std::to_string(options_.hashScale) + " must be in (0, 1e6)");
         PipelineDesc p = foliagePipeline("foliage hashed alpha test");
         p.program = program_.get();
-        p.depth = DepthState::testAndWrite(options.ssam.depthFunc);
+        p.depth = DepthState::testAndWrite(options.depthFunc);
         p.alphaTest = AlphaTest::discardBelow(0.5f);  // HashedLit outputs alpha 0 or 1
         p.blend[0].writeMask = WriteRGB;              // the frame's alpha stays 1
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));

@@ -85,7 +85,7 @@ class ReferenceTechnique final : public Technique {
 public:
     ReferenceTechnique(Backend& backend, const TechniqueOptions& options)
         : backend_(backend), fragments_(backend.fragmentCapture()), cap_(options.referenceFragmentsPerPixel),
-          depthFunc_(options.ssam.depthFunc) {
+          depthFunc_(options.depthFunc) {
         if (!fragments_)
             throw engine::Error("reference: the exact reference needs the soft backend's fragment capture (backend '" +
                                 backend.name() + "'); render it with --backend soft and compare against that image");

@@ -30,18 +30,18 @@ namespace {
 
 using namespace engine::render;
 
-ssam::Config plusConfig(const TechniqueOptions& options) {
-    ssam::Config config = options.ssam;
-    config.maskPrecision = options.ssamPlus.maskPrecision;
-    config.colorAlphaReference = options.ssamPlus.colorAlphaReference;
-    config.squareMask = false;  // not used by the coverage composite
-    return config;
+ssam::Settings plusSettings(const TechniqueOptions& options) {
+    ssam::Settings settings = ssamSettings(options);
+    settings.maskPrecision = options.ssamPlus.maskPrecision;
+    settings.colorAlphaReference = options.ssamPlus.colorAlphaReference;
+    settings.squareMask = false;  // not used by the coverage composite
+    return settings;
 }
 
 class SsamPlusTechnique final : public Technique {
 public:
     SsamPlusTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), ssam_(backend, plusConfig(options)), model_(options.ssamPlus.coverage) {
+        : backend_(backend), ssam_(backend, plusSettings(options)), model_(options.ssamPlus.coverage) {
         if (model_ != CoverageModel::EqualLayers && model_ != CoverageModel::Exponential)
             throw engine::Error("ssam-plus: unknown coverage model " + std::to_string(int(model_)));
         PipelineDesc composite;

@@ -38,7 +38,7 @@ public:
             throw engine::Error("wboit: wboitDepthScale " + std::to_string(depthScale_) + " must be finite and > 0");
         PipelineDesc accumulate = foliagePipeline("wboit accumulate");
         accumulate.program = accumulateProgram_.get();
-        accumulate.depth = DepthState::testOnly(options.ssam.depthFunc);
+        accumulate.depth = DepthState::testOnly(options.depthFunc);
         accumulate.blend[0] = {true,         BlendFactor::One, BlendFactor::One,
                                BlendOp::Add, BlendFactor::One, BlendFactor::One,
                                BlendOp::Add, WriteAll};
@@ -46,7 +46,7 @@ public:
 
         PipelineDesc revealage = foliagePipeline("wboit revealage");
         revealage.program = ProgramKind::AlphaOnly;
-        revealage.depth = DepthState::testOnly(options.ssam.depthFunc);
+        revealage.depth = DepthState::testOnly(options.depthFunc);
         revealage.blend[0] = {true,         BlendFactor::Zero, BlendFactor::InvSrcAlpha,
                               BlendOp::Add, BlendFactor::Zero, BlendFactor::InvSrcAlpha,
                               BlendOp::Add, WriteAll};

@@ -15,7 +15,8 @@
 #include <vector>
 
 #include "engine/render/backend.hpp"
-#include "ssam/config.hpp"
+#include "ssam/core/frame.hpp"
+#include "ssam/core/settings.hpp"
 #include "ssam/foliage.hpp"
 
 namespace ssam {
@@ -35,12 +36,6 @@ struct FramePlan {
     bool empty() const { return visible.empty(); }
 };
 
-struct FrameReport {
-    int batchesVisible = 0;
-    int passesRun = 0;  // 0 when no foliage is in view, else 3
-    engine::render::Rect compositeRegion;
-};
-
 // The intermediate targets, e.g. for captures (the paper's Figures 3.6-3.9).
 struct Intermediates {
     engine::render::TextureHandle mask;     // r = MAX mask; a = ADD mask unless maskAdd is set
@@ -58,16 +53,22 @@ struct IntermediateDescs {
     engine::render::TextureDesc foliage;                 // rt_foliage
 };
 
+// The engine's depth function for a DepthTest and back (none for a function that cannot order
+// surfaces: Never, Always, Equal, NotEqual).
+engine::render::CompareFunc compareFuncOf(DepthTest test);
+std::optional<DepthTest> depthTestOf(engine::render::CompareFunc func);
+
 class ScreenSpaceAlphaMask {
 public:
-    explicit ScreenSpaceAlphaMask(engine::render::Backend& backend, const Config& config = {});
+    // Throws engine::Error naming the knob when settingsError(settings) is not empty.
+    explicit ScreenSpaceAlphaMask(engine::render::Backend& backend, const Settings& settings = {});
     ~ScreenSpaceAlphaMask();
     ScreenSpaceAlphaMask(const ScreenSpaceAlphaMask&) = delete;
     ScreenSpaceAlphaMask& operator=(const ScreenSpaceAlphaMask&) = delete;
 
     // Validates (engine::Error on a bad knob) and rebuilds what the change affects.
-    void setConfig(const Config& config);
-    const Config& config() const { return config_; }
+    void setSettings(const Settings& settings);
+    const Settings& settings() const { return settings_; }
 
     // All three passes; nothing runs when no batch is in view. SSAM keeps its intermediate
     // targets from frame to frame (made when foliage is first in view, remade on a resize).
@@ -99,14 +100,14 @@ private:
     struct Pipelines {
         engine::render::PipelineHandle mask, color, composite;
     };
-    // All three for `config`, or none: a create that throws destroys those made before it.
-    Pipelines createPipelines(const Config& config);
+    // All three for `settings`, or none: a create that throws destroys those made before it.
+    Pipelines createPipelines(const Settings& settings);
     void destroy(const Pipelines& pipelines);
     void ensureTargets(int width, int height, engine::render::Format foliageFormat);
     void destroyTargets();
 
     engine::render::Backend& backend_;
-    Config config_;
+    Settings settings_;
     engine::render::ProgramHandle compositeProgram_;  // composite_program.hpp
     Pipelines pipelines_;
     engine::render::TextureHandle mask_, maskAdd_, foliage_;

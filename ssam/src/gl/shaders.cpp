@@ -6,7 +6,7 @@
 
 namespace ssam::gl::shaders {
 
-// The host's attribute locations (Settings::attributes) written into the layout qualifiers, so
+// The host's attribute locations (initialize(), setAttributeLocations()) written into the layout qualifiers, so
 // the host's own VAOs are read as they are. Unset attributes read the generic values SSAM sets
 // before each pass (identity instance model, white colour).
 std::string foliageVertex(const AttributeLocations& at) {

@@ -10,7 +10,9 @@
 #include <optional>
 #include <string>
 
-#include "../knob_rules.hpp"
+#include "../core/frame_sequence.hpp"
+#include "../core/host_channel.hpp"
+#include "../core/passes.hpp"
 #include "depth_restore.hpp"
 #include "failure.hpp"
 #include "frame_targets.hpp"
@@ -24,35 +26,6 @@ namespace ssam::gl {
 using detail::Failure;
 using detail::GlFunctions;
 using detail::GlStateGuard;
-
-const char* statusName(Status status) noexcept {
-    switch (status) {
-        case Status::Ok: return "ok";
-        case Status::InvalidArgument: return "invalid argument";
-        case Status::InvalidCall: return "invalid call";
-        case Status::NoContext: return "no context";
-        case Status::MissingEntryPoint: return "missing entry point";
-        case Status::UnsupportedFeature: return "unsupported feature";
-        case Status::InvalidTexture: return "invalid texture";
-        case Status::IncompleteFramebuffer: return "incomplete framebuffer";
-        case Status::ShaderFailed: return "shader failed";
-        case Status::CallbackFailed: return "callback failed";
-        case Status::OutOfMemory: return "out of memory";
-        case Status::Internal: return "internal error";
-    }
-    return "unknown status";
-}
-
-const char* severityName(Severity severity) noexcept {
-    switch (severity) {
-        case Severity::Info: return "info";
-        case Severity::Warning: return "warning";
-        case Severity::Error: return "error";
-    }
-    return "unknown severity";
-}
-
-const char* foliagePassName(FoliagePass pass) noexcept { return pass == FoliagePass::Mask ? "mask" : "colour"; }
 
 void FoliageProgram::setModel(const float columnMajor[16]) const noexcept {
     if (gl) gl->UniformMatrix4fv(modelUniform, 1, GL_FALSE, columnMajor);
@@ -68,6 +41,40 @@ void FoliageProgram::bindBaseColorTexture(unsigned int texture) const noexcept {
 }
 
 namespace {
+
+GLenum toGl(core::BlendFactor factor) {
+    switch (factor) {
+        case core::BlendFactor::Zero: return GL_ZERO;
+        case core::BlendFactor::One: return GL_ONE;
+        case core::BlendFactor::SrcAlpha: return GL_SRC_ALPHA;
+        case core::BlendFactor::OneMinusSrcAlpha: return GL_ONE_MINUS_SRC_ALPHA;
+    }
+    return GL_ONE;
+}
+
+GLenum toGl(core::BlendOp op) { return op == core::BlendOp::Max ? GL_MAX : GL_FUNC_ADD; }
+
+// A pass's blend (core/passes.hpp) as GL state: one blend for every draw buffer, or one per buffer
+// (two mask targets, MaskPrecision::Rg16f: needs per-buffer blend equations, checked at settings).
+void applyBlend(const GlFunctions& gl, const core::PassDescription& pass) {
+    const core::TargetBlend& first = pass.colorTargets[0].blend;
+    if (!first.enabled) {
+        gl.Disable(GL_BLEND);
+        return;
+    }
+    gl.Enable(GL_BLEND);
+    if (pass.colorTargetCount == 1) {
+        gl.BlendFuncSeparate(toGl(first.srcColor), toGl(first.dstColor), toGl(first.srcAlpha), toGl(first.dstAlpha));
+        gl.BlendEquationSeparate(toGl(first.colorOp), toGl(first.alphaOp));
+        return;
+    }
+    for (int t = 0; t < pass.colorTargetCount; ++t) {
+        const core::TargetBlend& b = pass.colorTargets[t].blend;
+        const auto buffer = static_cast<GLuint>(t);
+        gl.BlendFuncSeparatei(buffer, toGl(b.srcColor), toGl(b.dstColor), toGl(b.srcAlpha), toGl(b.dstAlpha));
+        gl.BlendEquationSeparatei(buffer, toGl(b.colorOp), toGl(b.alphaOp));
+    }
+}
 
 GLenum toGl(DepthTest test) {
     switch (test) {
@@ -115,26 +122,10 @@ bool sameLocations(const AttributeLocations& a, const AttributeLocations& b) {
            a.instanceModel == b.instanceModel;
 }
 
-// Settings are checked by ssam::Config's rules (knob_rules.hpp), so both entry points accept the
-// same knobs.
+// Settings are checked by the core's rules (ssam::settingsError): every SSAM accepts the same knobs.
 void validate(const Settings& settings) {
-    const auto precision = static_cast<int>(settings.maskPrecision);
-    const auto depth = static_cast<int>(settings.depthTest);
-    if (precision < 0 || precision > static_cast<int>(MaskPrecision::Rg16f))
-        throw Failure(Status::InvalidArgument,
-                      "ssam::gl settings: maskPrecision " + std::to_string(precision) + " is not a MaskPrecision");
-    if (depth < 0 || depth > static_cast<int>(DepthTest::GreaterEqual))
-        throw Failure(Status::InvalidArgument,
-                      "ssam::gl settings: depthTest " + std::to_string(depth) + " is not a DepthTest");
-    if (const std::string error =
-            ssam::detail::knobError(settings.maskLerp, settings.colorAlphaReference, settings.foliageClearColor);
-        !error.empty())
-        throw Failure(Status::InvalidArgument, "ssam::gl settings: " + error);
-    if (!std::isfinite(settings.depthMaskThreshold) || settings.depthMaskThreshold < 0.0f ||
-        settings.depthMaskThreshold > 1.0f)
-        throw Failure(Status::InvalidArgument, "ssam::gl settings: depthMaskThreshold = " +
-                                                   std::to_string(settings.depthMaskThreshold) + " is outside [0, 1]");
-    validateAttributes(settings.attributes);
+    if (const std::string error = ssam::settingsError(settings); !error.empty())
+        throw Failure(Status::InvalidArgument, "ssam::gl: " + error);
 }
 
 // A built-in foliage program and its uniforms.
@@ -155,30 +146,16 @@ struct FoliageProgramObject {
     }
 };
 
-// Where a frame is: each public call of way (b) moves it one step, in this order only.
-enum class Phase { Idle, FrameBegun, InMaskPass, MaskDone, InColorPass, ColorDone };
-
-const char* phaseName(Phase phase) {
-    switch (phase) {
-        case Phase::Idle: return "no frame is open";
-        case Phase::FrameBegun: return "the frame is begun (beginMaskPass comes next)";
-        case Phase::InMaskPass: return "the mask pass is open (endMaskPass comes next)";
-        case Phase::MaskDone: return "the mask pass is done (beginColorPass comes next)";
-        case Phase::InColorPass: return "the colour pass is open (endColorPass comes next)";
-        case Phase::ColorDone: return "the colour pass is done (composite comes next)";
-    }
-    return "?";
-}
-
 }  // namespace
+
+using core::Phase;
 
 struct ScreenSpaceAlphaMaskGl::Impl {
     GlFunctions gl;
     bool initialized = false;
     Settings settings;
-    MessageCallback onMessage = nullptr;
-    void* messageUser = nullptr;
-    std::string lastMessage;
+    AttributeLocations attributes;
+    core::HostChannel channel{"ssam::gl"};
 
     FoliageProgramObject mask, color;
     GLuint composite = 0;
@@ -194,23 +171,8 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     Rect region;
     std::optional<GlStateGuard> passState;  // the host's state while a pass is open
 
-    void message(Severity severity, const std::string& text) noexcept {
-        if (!onMessage) return;
-        try {
-            onMessage(messageUser, severity, text.c_str());
-        } catch (...) {  // the host's callback must not unwind through SSAM
-        }
-    }
-
-    Status fail(Status status, const char* text) noexcept {
-        try {
-            lastMessage = text;
-        } catch (...) {
-            lastMessage.clear();
-        }
-        message(Severity::Error, text);
-        return status;
-    }
+    void message(Severity severity, const std::string& text) noexcept { channel.message(severity, text); }
+    Status fail(Status status, const char* text) noexcept { return channel.fail(status, text); }
 
     // Ends an open frame early: the host's state back, nothing half-done left for the next one.
     void abandonFrame() noexcept {
@@ -221,44 +183,29 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     // Runs one public call: Ok, or the Failure's status with its message (the frame abandoned).
     template <class Body>
     Status run(Body&& body) noexcept {
-        try {
-            body();
-            return Status::Ok;
-        } catch (const Failure& e) {
-            abandonFrame();
-            return fail(e.status, e.what());
-        } catch (const std::bad_alloc&) {
-            abandonFrame();
-            return fail(Status::OutOfMemory, "ssam::gl: out of memory");
-        } catch (const std::exception& e) {
-            abandonFrame();
-            return fail(Status::Internal, (std::string("ssam::gl: unexpected error: ") + e.what()).c_str());
-        } catch (...) {
-            abandonFrame();
-            return fail(Status::Internal, "ssam::gl: unexpected error");
-        }
+        return channel.run(std::forward<Body>(body), [this]() noexcept { abandonFrame(); });
     }
 
     void expect(Phase expected, const char* call) const {
-        if (!initialized) throw Failure(Status::InvalidCall, std::string("ssam::gl: ") + call + " before initialize()");
-        if (phase != expected)
-            throw Failure(Status::InvalidCall, std::string("ssam::gl: ") + call + " called when " + phaseName(phase));
+        core::expectPhase("ssam::gl", initialized, phase, expected, call);
     }
 
-    void initialize(const detail::Loader& load, const Settings& wanted) {
+    void initialize(const detail::Loader& load, const Settings& wanted, const AttributeLocations& wantedAttributes) {
         if (phase != Phase::Idle) throw Failure(Status::InvalidCall, "ssam::gl: initialize() inside a frame");
         deleteObjects();
         validate(wanted);
+        validateAttributes(wantedAttributes);
         detail::loadFunctions(gl, load);
         const std::string context = detail::checkContext(gl);
         if (wanted.maskPrecision == MaskPrecision::Rg16f && !gl.perBufferBlend)
             throw Failure(Status::UnsupportedFeature, kRg16fNeedsPerBufferBlend);
         settings = wanted;
+        attributes = wantedAttributes;
         initialized = true;  // from here release() deletes what exists if a program does not compile
         try {
             gl.GenVertexArrays(1, &emptyVao);
             targets.createFramebuffers(gl);
-            compileFoliagePrograms(wanted.attributes, mask, color);
+            compileFoliagePrograms(wantedAttributes, mask, color);
             composite = detail::compileProgram(gl, "ssam::gl composite", shaders::kFullscreenVertex.c_str(),
                                                shaders::kCompositeFragment.c_str());
         } catch (...) {
@@ -370,8 +317,29 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Enable(GL_FRAMEBUFFER_SRGB);
         gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        gl.Enable(GL_DEPTH_TEST);
-        gl.DepthFunc(toGl(settings.depthTest));
+    }
+
+    // The core's pass (core/passes.hpp) as GL state: culling, depth test and write, blend, and the
+    // targets' clears.
+    void applyPass(const core::PassDescription& pass) {
+        // No SSAM pass culls today (cards are seen from both sides); a culling pass would cull the
+        // faces the host's glCullFace names.
+        if (pass.cullBackFaces)
+            gl.Enable(GL_CULL_FACE);
+        else
+            gl.Disable(GL_CULL_FACE);
+        if (pass.depthTest) {
+            gl.Enable(GL_DEPTH_TEST);
+            gl.DepthFunc(toGl(pass.depthCompare));
+        } else {
+            gl.Disable(GL_DEPTH_TEST);
+        }
+        gl.DepthMask(pass.depthWrite ? GL_TRUE : GL_FALSE);
+        applyBlend(gl, pass);
+    }
+    void clearTargets(const core::PassDescription& pass) {
+        for (int t = 0; t < pass.colorTargetCount; ++t)
+            if (pass.colorTargets[t].clear) gl.ClearBufferfv(GL_COLOR, t, pass.colorTargets[t].clearColor);
     }
 
     // 1. Mask pass (§3.5.2, Table 3.1): cleared to black; RGB = MAX, A = ADD, all ONE (Rg16f:
@@ -381,20 +349,11 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         passState.emplace(gl);
         phase = Phase::InMaskPass;
         setFoliagePassState();
+        const core::PassDescription pass = core::describePasses(settings).mask;
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.maskFramebuffer());
-        const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-        gl.ClearBufferfv(GL_COLOR, 0, black);
-        if (targets.maskAdd()) gl.ClearBufferfv(GL_COLOR, 1, black);
-        gl.DepthMask(GL_FALSE);
-        gl.Enable(GL_BLEND);
-        gl.BlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-        if (targets.maskAdd()) {
-            gl.BlendEquationi(0, GL_MAX);
-            gl.BlendEquationi(1, GL_FUNC_ADD);
-        } else {
-            gl.BlendEquationSeparate(GL_MAX, GL_FUNC_ADD);
-        }
-        return {FoliagePass::Mask, targets.maskAdd() ? 2 : 1, 0.0f};
+        clearTargets(pass);
+        applyPass(pass);
+        return {FoliagePass::Mask, pass.colorTargetCount, pass.alphaReference};
     }
 
     void endPass(Phase open, const char* call) {
@@ -410,14 +369,14 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         passState.emplace(gl);
         phase = Phase::InColorPass;
         setFoliagePassState();
-        if (settings.depthMaskThreshold > 0.0f)  // the opaque depth, before the colour pass writes the foliage's
+        if (core::describePasses(settings).restoresDepth)  // the opaque depth, before the colour pass writes the foliage's
             depthRestore.saveOpaqueDepth(gl, targets.maskFramebuffer(), targets.depthFormat(), frame.width,
                                          frame.height, region);
+        const core::PassDescription pass = core::describePasses(settings).color;
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.foliageFramebuffer());
-        gl.ClearBufferfv(GL_COLOR, 0, settings.foliageClearColor);
-        gl.Disable(GL_BLEND);
-        gl.DepthMask(GL_TRUE);
-        return {FoliagePass::Color, 1, settings.colorAlphaReference};
+        clearTargets(pass);
+        applyPass(pass);
+        return {FoliagePass::Color, pass.colorTargetCount, pass.alphaReference};
     }
 
     // 3. Composite (§3.5.4, Listing 3.2): (foliage, mask') blended SRC_ALPHA / INV_SRC_ALPHA onto
@@ -427,9 +386,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         const GlStateGuard hostState(gl);
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.compositeFramebuffer());
         gl.Viewport(0, 0, frame.width, frame.height);
-        gl.Disable(GL_DEPTH_TEST);
-        gl.DepthMask(GL_FALSE);
-        gl.Disable(GL_CULL_FACE);
+        applyPass(core::describePasses(settings).composite);
         gl.Disable(GL_STENCIL_TEST);
         gl.Disable(GL_COLOR_LOGIC_OP);
         gl.Disable(GL_RASTERIZER_DISCARD);
@@ -437,9 +394,6 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         detail::disableFixedFunction(gl);
         gl.Enable(GL_FRAMEBUFFER_SRGB);
         gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        gl.Enable(GL_BLEND);
-        gl.BlendEquation(GL_FUNC_ADD);
-        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         gl.Enable(GL_SCISSOR_TEST);
         gl.Scissor(region.x, region.y, region.width, region.height);
         gl.UseProgram(composite);
@@ -456,7 +410,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Uniform1i(compositeSquare, settings.squareMask ? 1 : 0);
         gl.BindVertexArray(emptyVao);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
-        if (settings.depthMaskThreshold > 0.0f)
+        if (core::describePasses(settings).restoresDepth)
             depthRestore.restoreWhereMaskIsLow(gl, targets.foliageFramebuffer(), targets.maskAdd() != 0, settings);
         phase = Phase::Idle;
     }
@@ -464,9 +418,9 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     // ---- Way (a): the built-in programs inside the passes ---------------------------------
 
     void drawBuiltIn(const FoliageProgramObject& p, const PassInfo& pass, DrawFoliage draw, void* user) {
-        // Generic values for attributes the host's VAO leaves disabled (Settings::attributes). A
+        // Generic values for attributes the host's VAO leaves disabled (initialize(), setAttributeLocations()). A
         // compatibility context has no generic value at location 0 (it is the vertex position).
-        const AttributeLocations& at = settings.attributes;
+        const AttributeLocations& at = attributes;
         const auto generic = [&](GLuint location, float x, float y, float z, float w) {
             if (location != 0 || !gl.compatibility) gl.VertexAttrib4f(location, x, y, z, w);
         };
@@ -545,24 +499,25 @@ ScreenSpaceAlphaMaskGl& ScreenSpaceAlphaMaskGl::operator=(ScreenSpaceAlphaMaskGl
 
 void ScreenSpaceAlphaMaskGl::setMessageCallback(MessageCallback callback, void* user) noexcept {
     if (!impl_) return;
-    impl_->onMessage = callback;
-    impl_->messageUser = user;
+    impl_->channel.setCallback(callback, user);
 }
 
 const char* ScreenSpaceAlphaMaskGl::lastMessage() const noexcept {
-    return impl_ ? impl_->lastMessage.c_str() : kMovedFrom;
+    return impl_ ? impl_->channel.lastMessage() : kMovedFrom;
 }
 
-Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddress getProcAddress, const Settings& settings) noexcept {
+Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddress getProcAddress, const Settings& settings,
+                                          const AttributeLocations& attributes) noexcept {
     if (!impl_) return Status::InvalidCall;
     if (!getProcAddress) return impl_->fail(Status::InvalidArgument, "ssam::gl: initialize() without a GL loader");
-    return impl_->run([&] { impl_->initialize({getProcAddress, nullptr}, settings); });
+    return impl_->run([&] { impl_->initialize({getProcAddress, nullptr}, settings, attributes); });
 }
 
-Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddressFunction getProcAddress, const Settings& settings) noexcept {
+Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddressFunction getProcAddress, const Settings& settings,
+                                          const AttributeLocations& attributes) noexcept {
     if (!impl_) return Status::InvalidCall;
     if (!getProcAddress) return impl_->fail(Status::InvalidArgument, "ssam::gl: initialize() without a GL loader");
-    return impl_->run([&] { impl_->initialize({nullptr, getProcAddress}, settings); });
+    return impl_->run([&] { impl_->initialize({nullptr, getProcAddress}, settings, attributes); });
 }
 
 Status ScreenSpaceAlphaMaskGl::release() noexcept { return impl_ ? impl_->release() : Status::Ok; }
@@ -573,14 +528,22 @@ Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
         validate(settings);
         if (s.initialized && settings.maskPrecision == MaskPrecision::Rg16f && !s.gl.perBufferBlend)
             throw Failure(Status::UnsupportedFeature, Impl::kRg16fNeedsPerBufferBlend);
-        if (s.initialized && !sameLocations(settings.attributes, s.settings.attributes)) {
+        s.settings = settings;
+    });
+}
+
+Status ScreenSpaceAlphaMaskGl::setAttributeLocations(const AttributeLocations& attributes) noexcept {
+    return runStep(impl_, [&](Impl& s) {
+        if (s.phase != Phase::Idle)
+            throw Failure(Status::InvalidCall, "ssam::gl: setAttributeLocations() inside a frame");
+        validateAttributes(attributes);
+        if (s.initialized && !sameLocations(attributes, s.attributes)) {
             // The new programs first: if they fail, the ones in use stay.
             if (!s.gl.GetString(GL_VERSION))
-                throw Failure(Status::NoContext,
-                              "ssam::gl: setSettings() with new attribute locations needs the GL context current");
+                throw Failure(Status::NoContext, "ssam::gl: setAttributeLocations() needs the GL context current");
             FoliageProgramObject newMask, newColor;
             try {
-                s.compileFoliagePrograms(settings.attributes, newMask, newColor);
+                s.compileFoliagePrograms(attributes, newMask, newColor);
             } catch (...) {
                 if (newMask.id) s.gl.DeleteProgram(newMask.id);
                 throw;
@@ -589,8 +552,13 @@ Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
             s.gl.DeleteProgram(s.color.id);
             s.mask = newMask, s.color = newColor;
         }
-        s.settings = settings;
+        s.attributes = attributes;
     });
+}
+
+const AttributeLocations& ScreenSpaceAlphaMaskGl::attributeLocations() const noexcept {
+    static const AttributeLocations defaults;
+    return impl_ ? impl_->attributes : defaults;
 }
 
 const Settings& ScreenSpaceAlphaMaskGl::settings() const noexcept {

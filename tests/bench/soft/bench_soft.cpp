@@ -247,7 +247,7 @@ struct FoliageLayers {
     }
 };
 
-// How the mask pass stores its mask (ssam::Config::maskPrecision).
+// How the mask pass stores its mask (ssam::Settings::maskPrecision).
 enum class MaskTargets { Rgba8, TwoR16f, Rgba16f };
 
 // One SSAM foliage pass over FoliageLayers(repeats): `mask` the mask pass (into `targets`),

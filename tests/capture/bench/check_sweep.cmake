@@ -5,7 +5,7 @@
 #   - the error columns are finite and identical across two runs (the second on one thread);
 #   - the defaults row has the same numbers as technique `ssam` in a plain run with
 #     --ssam-preset paper, and the measured knobs' row as a plain run with the default preset
-#     (measured: ssam/preset.hpp), whose ꟻLIP differs from the paper's;
+#     (measured: ssam/core/settings.hpp), whose ꟻLIP differs from the paper's;
 #   - every setting that differs from the defaults in one knob only has a different ꟻLIP:
 #     the sweep really applies each knob;
 #   - --sweep-full measures the product of the values (plus the defaults);
@@ -111,7 +111,7 @@ foreach(expectedKnob "mask_lerp=0.850000024" "square_mask=1" "color_alpha_refere
   list(GET kv 1 v)
   field("${defaults}" "${s1_header}" ${k} got)
   if(NOT got STREQUAL v)
-    fail("the defaults row has ${k} = '${got}', expected '${v}' (ssam::Config's default)")
+    fail("the defaults row has ${k} = '${got}', expected '${v}' (ssam::Settings's default)")
   endif()
 endforeach()
 set(plainSsam "")

@@ -78,8 +78,8 @@ struct TwoTrees {
     // shows the scene really is order-sensitive.
     Frame render(bool reversed, bool unsortedBlend = false) {
         engine::render::FrameTargets opaque(*backend, {kWidth, kHeight, 1, Format::RGBA8_SRGB, CompareFunc::Greater});
-        ssam::Config config;
-        config.depthFunc = CompareFunc::Greater;
+        ssam::Settings config;
+        config.depthTest = ssam::DepthTest::Greater;
         ssam::ScreenSpaceAlphaMask ssam(*backend, config);
         const scene::DrawLists lists = scene::extractDrawLists(registry, library, viewProj, eye);
         std::vector<BufferHandle> buffers;

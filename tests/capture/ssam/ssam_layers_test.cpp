@@ -26,8 +26,8 @@ TEST(SsamCapture, EveryIntermediateIsALayerOfOneExr) {
                                                 {-0.25f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 0.2f}}});
     const DirectionalLight unlit{{0, 0, 1}, glm::vec3(0.0f), glm::vec3(1.0f)};
     ssam::ScreenSpaceAlphaMask ssam(*backend, [] {
-        ssam::Config c;
-        c.maskPrecision = ssam::MaskPrecision::RGBA16F;
+        ssam::Settings c;
+        c.maskPrecision = ssam::MaskPrecision::Rgba16f;
         return c;
     }());
 

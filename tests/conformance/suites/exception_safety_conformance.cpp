@@ -2,7 +2,7 @@
 // Exception safety: after any error thrown by a draw, by code inside a pass, or by a create
 // in a module's constructor or reconfiguration, the backend is usable and nothing leaks
 // (PassScope, Backend::abortPass, engine::render::Owned; ScreenSpaceAlphaMask's strong
-// guarantee in setConfig). Every backend runs these.
+// guarantee in setSettings). Every backend runs these.
 #include <stdexcept>
 
 #include "../backend_fixture.hpp"
@@ -91,19 +91,19 @@ TEST_P(ExceptionSafetyConformance, SsamSetConfigKeepsTheOldConfigurationWhenACre
     testing::FailingBackend failing(gfx());
     ScreenSpaceAlphaMask ssam(failing);
     const int live = failing.live;
-    Config next;
-    next.maskPrecision = MaskPrecision::RG16F;
+    ssam::Settings next;
+    next.maskPrecision = MaskPrecision::Rg16f;
     next.maskLerp = 0.5f;
     for (int n = 0; n < 3; ++n) {
         failing.failAt = failing.creates + n;
-        EXPECT_THROW(ssam.setConfig(next), engine::Error);
-        EXPECT_EQ(failing.live, live) << "setConfig leaked or lost pipelines after create " << n << " failed";
-        EXPECT_EQ(ssam.config().maskPrecision, MaskPrecision::RGBA8);
-        EXPECT_EQ(ssam.config().maskLerp, 0.85f);
+        EXPECT_THROW(ssam.setSettings(next), engine::Error);
+        EXPECT_EQ(failing.live, live) << "setSettings leaked or lost pipelines after create " << n << " failed";
+        EXPECT_EQ(ssam.settings().maskPrecision, MaskPrecision::Rgba8);
+        EXPECT_EQ(ssam.settings().maskLerp, 0.85f);
     }
     failing.failAt = -1;
-    ssam.setConfig(next);
-    EXPECT_EQ(ssam.config().maskPrecision, MaskPrecision::RG16F);
+    ssam.setSettings(next);
+    EXPECT_EQ(ssam.settings().maskPrecision, MaskPrecision::Rg16f);
     EXPECT_EQ(failing.live, live);
 }
 

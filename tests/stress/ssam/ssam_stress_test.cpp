@@ -37,7 +37,7 @@ Result renderLayers(ssam::MaskPrecision precision, const std::vector<Quad>& quad
     engine::render::FrameTargets opaque(*backend, {kSize, kSize, 1, Format(colorFormat), CompareFunc::Less});
     backend->beginPass(opaque.passDesc(kOpaque));
     backend->endPass();
-    ssam::Config config;
+    ssam::Settings config;
     config.maskPrecision = precision;
     ssam::ScreenSpaceAlphaMask ssam(*backend, config);
     QuadBatches q(*backend, quads);
@@ -81,14 +81,14 @@ float halfStagnation(float a) {
 TEST(SsamStress, DepthComplexityUpTo4096LayersForEveryPrecision) {
     const float alpha = 0.1f;  // stored in RGBA8 as 26/255
     for (const auto precision :
-         {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F}) {
+         {ssam::MaskPrecision::Rgba8, ssam::MaskPrecision::Rgba16f, ssam::MaskPrecision::Rg16f}) {
         for (const int n : {1, 2, 9, 10, 11, 64, 512, 4096}) {
             const Result r = renderLayers(precision, layers(n, alpha));
             SCOPED_TRACE(::testing::Message() << ssam::maskPrecisionName(precision) << " layers=" << n);
             expectFiniteAndBounded(r.color);
             EXPECT_GE(r.addMask, 0.0f);
             ASSERT_TRUE(std::isfinite(r.addMask));
-            if (precision == ssam::MaskPrecision::RGBA8) {
+            if (precision == ssam::MaskPrecision::Rgba8) {
                 // Saturates once n * 26 >= 255, i.e. from 10 layers on (§3.5.2), and stays at 1.
                 EXPECT_FLOAT_EQ(r.addMask, std::min(255.0f, 26.0f * n) / 255.0f);
                 EXPECT_FLOAT_EQ(r.maxMask, 26.0f / 255.0f);
@@ -111,7 +111,7 @@ TEST(SsamStress, DepthComplexityUpTo4096LayersForEveryPrecision) {
 }
 
 TEST(SsamStress, AlphaOutsideUnitRangeIsSaturated) {
-    for (const auto precision : {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F}) {
+    for (const auto precision : {ssam::MaskPrecision::Rgba8, ssam::MaskPrecision::Rgba16f}) {
         for (const float alpha : {-1.0f, 4.0f, 1e30f, -INFINITY, INFINITY}) {
             const Result r = renderLayers(precision, layers(3, alpha));
             SCOPED_TRACE(::testing::Message() << ssam::maskPrecisionName(precision) << " alpha=" << alpha);
@@ -120,7 +120,7 @@ TEST(SsamStress, AlphaOutsideUnitRangeIsSaturated) {
             // interpolated (inf - inf in the plane set-up, as on GPUs) and NaN saturates to 0.
             const float saturated = std::isfinite(alpha) && alpha > 0.0f ? 1.0f : 0.0f;
             EXPECT_FLOAT_EQ(r.maxMask, saturated);
-            EXPECT_FLOAT_EQ(r.addMask, precision == ssam::MaskPrecision::RGBA8 ? saturated : 3.0f * saturated);
+            EXPECT_FLOAT_EQ(r.addMask, precision == ssam::MaskPrecision::Rgba8 ? saturated : 3.0f * saturated);
         }
     }
 }
@@ -133,7 +133,7 @@ TEST(SsamStress, NonFiniteVertexDataNeverReachesTheImage) {
         quads[1].color = {b, b, b, 0.5f};  // colour
         quads[2].color.a = b;              // alpha
         quads[3].depth = b;                // depth
-        const Result r = renderLayers(ssam::MaskPrecision::RGBA16F, quads, std::uint8_t(Format::RGBA16F));
+        const Result r = renderLayers(ssam::MaskPrecision::Rgba16f, quads, std::uint8_t(Format::RGBA16F));
         SCOPED_TRACE(::testing::Message() << "value=" << b);
         for (float v : r.color.values) ASSERT_TRUE(std::isfinite(v));
         EXPECT_TRUE(std::isfinite(r.addMask));
@@ -209,8 +209,8 @@ TEST(SsamStress, ReverseZResolvesThirtyKilometreVistas) {
             b.worldBounds = {{-3e4f, -3e4f, -3e4f}, {3e4f, 3e4f, -2.8e4f}};
             batches.push_back(b);
         }
-        ssam::Config config;
-        config.depthFunc = CompareFunc::Greater;
+        ssam::Settings config;
+        config.depthTest = ssam::DepthTest::Greater;
         ssam::ScreenSpaceAlphaMask ssam(*backend, config);
         ssam.render({opaque.color(), opaque.depth()}, {proj, unlit(), batches});
         const Readback foliage = backend->readback(ssam.intermediates().foliage);

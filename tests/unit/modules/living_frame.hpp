@@ -38,8 +38,8 @@ struct LivingFrame {
     engine::render::FrameTargets opaque{
         backend, {width, height, 1, engine::render::Format::RGBA8_UNORM, engine::render::CompareFunc::Greater}};
     std::unique_ptr<ssam::ScreenSpaceAlphaMask> ssam = [this] {
-        ssam::Config c;
-        c.depthFunc = engine::render::CompareFunc::Greater;
+        ssam::Settings c;
+        c.depthTest = ssam::DepthTest::Greater;
         return std::make_unique<ssam::ScreenSpaceAlphaMask>(backend, c);
     }();
     engine::render::PipelineHandle opaquePipeline = [this] {

@@ -139,7 +139,7 @@ TEST(Techniques, SortedBlendingSortsTheInstancesOfOneBatch) {
     for (CompareFunc func : {CompareFunc::Less, CompareFunc::Greater}) {
         auto backend = softBackend();
         TechniqueOptions options;
-        options.ssam.depthFunc = func;
+        options.depthFunc = func;
         auto technique = createTechnique(TechniqueKind::BlendSorted, *backend, options);
         const bool reverse = func == CompareFunc::Greater;
         auto depthOf = [&](float d) { return reverse ? 1.0f - d : d; };
@@ -336,7 +336,7 @@ TEST(Techniques, SsamPlusExponentialModel) {
     auto backend = softBackend();
     TechniqueOptions options;
     options.ssamPlus.coverage = CoverageModel::Exponential;
-    options.ssamPlus.maskPrecision = ssam::MaskPrecision::RGBA16F;
+    options.ssamPlus.maskPrecision = ssam::MaskPrecision::Rgba16f;
     auto technique = createTechnique(TechniqueKind::SsamPlus, *backend, options);
     TechniqueFrame f(*backend, 1, {kQuadA, kQuadB});
     const Readback r = f.run(*technique);

@@ -107,9 +107,9 @@ TYPED_TEST_P(SsamCases, ColourPassAlphaTestsAndWritesFoliageDepth) {
     ssam.render(f.targets(), viewOf(q));
     const Readback foliage = f.backend->readback(ssam.intermediates().foliage);
     const Readback depth = f.backend->readback(f.opaque.depth());
-    const glm::vec4 clear = ssam::Config{}.foliageClearColor;
-    EXPECT_FLOAT_EQ(foliage.at(kOverlap, 4, 0), 1.0f);       // A's red
-    EXPECT_FLOAT_EQ(foliage.at(kOnlyB, 4, 1), q8(clear.g));  // B rejected: the clear colour shows
+    const float clearGreen = ssam::Settings{}.foliageClearColor[1];
+    EXPECT_FLOAT_EQ(foliage.at(kOverlap, 4, 0), 1.0f);        // A's red
+    EXPECT_FLOAT_EQ(foliage.at(kOnlyB, 4, 1), q8(clearGreen));  // B rejected: the clear colour shows
     EXPECT_NEAR(depth.at(kOverlap, 4, 0), 0.3f, 1e-6f);
     EXPECT_NEAR(depth.at(kOnlyB, 4, 0), 1.0f, 1e-6f);  // nothing written where B was rejected
 }
@@ -119,7 +119,7 @@ TYPED_TEST_P(SsamCases, CompositeFollowsListing32) {
         for (const float lerp : {0.0f, 0.85f, 1.0f}) {
             Frame<TypeParam> f;
             f.opaquePass();
-            ssam::Config config;
+            ssam::Settings config;
             config.squareMask = square;
             config.maskLerp = lerp;
             ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
@@ -140,7 +140,7 @@ TYPED_TEST_P(SsamCases, CompositeFollowsListing32) {
 }
 
 TYPED_TEST_P(SsamCases, SquaringAndLerpChangeTheResultAsTheFormulaSays) {
-    auto overlapRed = [](ssam::Config config) {
+    auto overlapRed = [](ssam::Settings config) {
         Frame<TypeParam> f;
         f.opaquePass();
         ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
@@ -148,7 +148,7 @@ TYPED_TEST_P(SsamCases, SquaringAndLerpChangeTheResultAsTheFormulaSays) {
         ssam.render(f.targets(), viewOf(q));
         return f.backend->readback(f.opaque.color()).at(kOverlap, 4, 0);
     };
-    ssam::Config squared, linear, maxOnly;
+    ssam::Settings squared, linear, maxOnly;
     linear.squareMask = false;
     maxOnly.maskLerp = 0.0f;
     // m in (0,1): squaring lowers the foliage weight; more ADD (0.6 > 0.4) raises it.
@@ -161,10 +161,10 @@ TYPED_TEST_P(SsamCases, Rgba8AddMaskSaturatesWhereFloatMasksDoNot) {
     std::vector<Quad> quads;
     for (int i = 0; i < kLayers; ++i) quads.push_back({-1, -1, 1, 1, 0.1f + 0.05f * i, {0.5f, 0.5f, 0.5f, 0.1f}});
     for (const auto precision :
-         {ssam::MaskPrecision::RGBA8, ssam::MaskPrecision::RGBA16F, ssam::MaskPrecision::RG16F}) {
+         {ssam::MaskPrecision::Rgba8, ssam::MaskPrecision::Rgba16f, ssam::MaskPrecision::Rg16f}) {
         Frame<TypeParam> f;
         f.opaquePass();
-        ssam::Config config;
+        ssam::Settings config;
         config.maskPrecision = precision;
         ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
         QuadBatches q(*f.backend, quads);
@@ -174,7 +174,7 @@ TYPED_TEST_P(SsamCases, Rgba8AddMaskSaturatesWhereFloatMasksDoNot) {
         const float add = layers.maskAdd ? f.backend->readback(layers.maskAdd).at(3, 3, 0) : mask.at(3, 3, 3);
         SCOPED_TRACE(ssam::maskPrecisionName(precision));
         EXPECT_NEAR(mask.at(3, 3, 0), 0.1f, 1.0f / 255.0f);                       // MAX
-        if (precision == ssam::MaskPrecision::RGBA8) EXPECT_FLOAT_EQ(add, 1.0f);  // 255/alpha layers saturate (§3.5.2)
+        if (precision == ssam::MaskPrecision::Rgba8) EXPECT_FLOAT_EQ(add, 1.0f);  // 255/alpha layers saturate (§3.5.2)
         else EXPECT_NEAR(add, 1.2f, 4e-3f);                                       // half precision accumulates past 1
     }
 }
@@ -265,7 +265,7 @@ TYPED_TEST_P(SsamCases, MaskProgramIgnoresColour) {
 
 TYPED_TEST_P(SsamCases, BadConfigurationIsRejectedWithTheKnobName) {
     auto backend = TypeParam::create();
-    auto expectError = [&](ssam::Config c, const std::string& knob) {
+    auto expectError = [&](ssam::Settings c, const std::string& knob) {
         try {
             ssam::ScreenSpaceAlphaMask ssam(*backend, c);
             ADD_FAILURE() << "accepted bad " << knob;
@@ -273,7 +273,7 @@ TYPED_TEST_P(SsamCases, BadConfigurationIsRejectedWithTheKnobName) {
             EXPECT_NE(std::string(e.what()).find(knob), std::string::npos) << e.what();
         }
     };
-    ssam::Config c;
+    ssam::Settings c;
     c.maskLerp = 1.5f;
     expectError(c, "maskLerp");
     c = {};
@@ -283,11 +283,14 @@ TYPED_TEST_P(SsamCases, BadConfigurationIsRejectedWithTheKnobName) {
     c.colorAlphaReference = -0.1f;
     expectError(c, "colorAlphaReference");
     c = {};
-    c.foliageClearColor.r = INFINITY;
+    c.foliageClearColor[0] = INFINITY;
     expectError(c, "foliageClearColor");
     c = {};
-    c.depthFunc = CompareFunc::Always;
-    expectError(c, "depthFunc");
+    c.depthMaskThreshold = 2.0f;
+    expectError(c, "depthMaskThreshold");
+    c = {};
+    c.depthTest = static_cast<ssam::DepthTest>(9);
+    expectError(c, "depthTest");
 }
 
 // ---- SSAM as a frame-graph pass group -----------------------------------------------

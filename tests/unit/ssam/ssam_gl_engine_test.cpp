@@ -128,14 +128,14 @@ TEST(SsamGlEngine, BuiltInProgramsReadTheHostsAttributeLocations) {
     ASSERT_EQ(defaults->render(host.frameOf(*targets), kDraw(atDefaults)), Status::Ok) << defaults->lastMessage();
     const engine::render::Readback expected = host.backend->readback(targets->color());
 
-    ssam::gl::Settings settings;
-    settings.attributes.position = 5;
-    settings.attributes.normal = 2;
-    settings.attributes.uv = 8;
-    settings.attributes.color = 9;
-    settings.attributes.instanceModel = 11;
-    HostFoliage atHosts(quads, settings.attributes);
-    auto moved = initializedSsam(settings);
+    ssam::gl::AttributeLocations attributes;
+    attributes.position = 5;
+    attributes.normal = 2;
+    attributes.uv = 8;
+    attributes.color = 9;
+    attributes.instanceModel = 11;
+    HostFoliage atHosts(quads, attributes);
+    auto moved = initializedSsam({}, attributes);
     auto again = host.opaque();
     glVertexAttrib4f(9, 0.25f, 0.5f, 0.75f, 1.0f);  // the host's own generic value at colour's location
     ASSERT_EQ(moved->render(host.frameOf(*again), kDraw(atHosts)), Status::Ok) << moved->lastMessage();
@@ -144,24 +144,24 @@ TEST(SsamGlEngine, BuiltInProgramsReadTheHostsAttributeLocations) {
     glGetVertexAttribfv(9, GL_CURRENT_VERTEX_ATTRIB, value);
     EXPECT_EQ((std::vector<float>(value, value + 4)), (std::vector<float>{0.25f, 0.5f, 0.75f, 1.0f}));
 
-    // setSettings() with new locations recompiles: the defaults' object now reads the moved arrays.
+    // setAttributeLocations() with new locations recompiles: the defaults' object now reads the moved arrays.
     auto third = host.opaque();
-    ASSERT_EQ(defaults->setSettings(settings), Status::Ok) << defaults->lastMessage();
+    ASSERT_EQ(defaults->setAttributeLocations(attributes), Status::Ok) << defaults->lastMessage();
     ASSERT_EQ(defaults->render(host.frameOf(*third), kDraw(atHosts)), Status::Ok) << defaults->lastMessage();
     EXPECT_EQ(host.backend->readback(third->color()).values, expected.values);
 
-    ssam::gl::Settings bad;
-    bad.attributes.uv = 5;  // inside instanceModel's 4..7
-    EXPECT_EQ(defaults->setSettings(bad), Status::InvalidArgument);
+    ssam::gl::AttributeLocations bad;
+    bad.uv = 5;  // inside instanceModel's 4..7
+    EXPECT_EQ(defaults->setAttributeLocations(bad), Status::InvalidArgument);
     EXPECT_STREQ(defaults->lastMessage(),
                  "ssam::gl settings: attributes.uv (5) and attributes.instanceModel (4) overlap");
     bad = {};
-    bad.attributes.instanceModel = 13;
-    EXPECT_EQ(defaults->setSettings(bad), Status::InvalidArgument);
+    bad.instanceModel = 13;
+    EXPECT_EQ(defaults->setAttributeLocations(bad), Status::InvalidArgument);
     EXPECT_NE(std::string(defaults->lastMessage()).find("attributes.instanceModel = 13 (it takes 4 locations)"),
               std::string::npos)
         << defaults->lastMessage();
-    EXPECT_EQ(defaults->settings().attributes.uv, 8u);  // the settings in force stay
+    EXPECT_EQ(defaults->attributeLocations().uv, 8u);  // the locations in force stay
 }
 
 // Settings::depthMaskThreshold: the host's depth keeps the foliage depth only where the composited
@@ -199,7 +199,7 @@ TEST(SsamGlEngine, DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskIsHigh) {
     bad.depthMaskThreshold = 1.5f;
     auto ssam = initializedSsam();
     EXPECT_EQ(ssam->setSettings(bad), Status::InvalidArgument);
-    EXPECT_STREQ(ssam->lastMessage(), "ssam::gl settings: depthMaskThreshold = 1.500000 is outside [0, 1]");
+    EXPECT_STREQ(ssam->lastMessage(), "ssam::gl: ssam settings: depthMaskThreshold = 1.5 is outside [0, 1]");
 }
 
 // release() without a current context deletes nothing and says so (a status and the message

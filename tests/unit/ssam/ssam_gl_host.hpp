@@ -18,7 +18,7 @@
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/gl/gl_backend.hpp"
 #include "quad_scene.hpp"
-#include "ssam/config.hpp"
+#include "ssam/core/settings.hpp"
 #include "ssam/gl/ssam_gl.hpp"
 
 namespace ssam::testing {
@@ -30,35 +30,19 @@ inline const engine::render::DirectionalLight kUnlit{{0.0f, 0.0f, 1.0f}, glm::ve
 inline const Quad kQuadA{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.4f}};
 inline const Quad kQuadB{-0.25f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 0.2f}};
 
-// One setting a comparison runs: SSAM's configuration and the host's colour format.
+// One setting a comparison runs: SSAM's settings (the same struct for the engine-hosted SSAM and
+// ssam::gl) and the host's colour format.
 struct ConfigCase {
     const char* name;
-    Config config;
+    Settings config;
     engine::render::Format colorFormat = engine::render::Format::RGBA8_UNORM;
 };
 
-// ssam::Config's knobs as ssam::gl::Settings (the same values, the host-neutral types).
-inline ssam::gl::Settings settingsOf(const Config& c) {
-    ssam::gl::Settings s;
-    s.maskLerp = c.maskLerp;
-    s.colorAlphaReference = c.colorAlphaReference;
-    for (int i = 0; i < 4; ++i) s.foliageClearColor[i] = c.foliageClearColor[i];
-    s.squareMask = c.squareMask;
-    s.maskPrecision = c.maskPrecision == MaskPrecision::RGBA8     ? ssam::gl::MaskPrecision::Rgba8
-                      : c.maskPrecision == MaskPrecision::RGBA16F ? ssam::gl::MaskPrecision::Rgba16f
-                                                                  : ssam::gl::MaskPrecision::Rg16f;
-    using engine::render::CompareFunc;
-    s.depthTest = c.depthFunc == CompareFunc::Less        ? ssam::gl::DepthTest::Less
-                  : c.depthFunc == CompareFunc::LessEqual ? ssam::gl::DepthTest::LessEqual
-                  : c.depthFunc == CompareFunc::Greater   ? ssam::gl::DepthTest::Greater
-                                                          : ssam::gl::DepthTest::GreaterEqual;
-    return s;
-}
-
 // SSAM initialised with the host's loader; fails the test with SSAM's message otherwise.
-inline std::unique_ptr<ssam::gl::ScreenSpaceAlphaMaskGl> initializedSsam(const ssam::gl::Settings& settings = {}) {
+inline std::unique_ptr<ssam::gl::ScreenSpaceAlphaMaskGl> initializedSsam(
+    const ssam::gl::Settings& settings = {}, const ssam::gl::AttributeLocations& attributes = {}) {
     auto ssam = std::make_unique<ssam::gl::ScreenSpaceAlphaMaskGl>();
-    const ssam::gl::Status status = ssam->initialize(eglGetProcAddress, settings);
+    const ssam::gl::Status status = ssam->initialize(eglGetProcAddress, settings, attributes);
     EXPECT_EQ(status, ssam::gl::Status::Ok) << ssam->lastMessage();
     return ssam;
 }
@@ -67,7 +51,7 @@ inline std::unique_ptr<ssam::gl::ScreenSpaceAlphaMaskGl> initializedSsam(const s
 struct HostFoliage {
     GLuint vao = 0, buffer = 0;
     int quads = 0;
-    // `at`: where the host's VAO puts position and colour (Settings::attributes must say the same).
+    // `at`: where the host's VAO puts position and colour (the AttributeLocations given to SSAM must say the same).
     explicit HostFoliage(const std::vector<Quad>& qs, const ssam::gl::AttributeLocations& at = {})
         : quads(static_cast<int>(qs.size())) {
         std::vector<float> data;

@@ -84,15 +84,15 @@ Status renderWithHostShaders(ssam::gl::ScreenSpaceAlphaMaskGl& ssam, const ssam:
 TEST(SsamGlHostShaders, MimickingTheBuiltInProgramsGivesTheSameImage) {
     std::vector<ConfigCase> cases;
     cases.push_back({"defaults", {}});
-    ssam::Config c;
-    c.maskPrecision = ssam::MaskPrecision::RG16F;  // two draw buffers in the mask pass
+    ssam::Settings c;
+    c.maskPrecision = ssam::MaskPrecision::Rg16f;  // two draw buffers in the mask pass
     cases.push_back({"rg16f mask", c});
     c = {};
-    c.maskPrecision = ssam::MaskPrecision::RGBA16F;
+    c.maskPrecision = ssam::MaskPrecision::Rgba16f;
     c.squareMask = false;
     cases.push_back({"rgba16f mask, not squared", c});
     c = {};
-    c.depthFunc = CompareFunc::Greater;
+    c.depthTest = ssam::DepthTest::Greater;
     cases.push_back({"reverse-Z (Greater)", c});
     c = {};
     c.colorAlphaReference = 0.3f;  // B (alpha 0.2) fails the colour pass, A passes
@@ -104,21 +104,21 @@ TEST(SsamGlHostShaders, MimickingTheBuiltInProgramsGivesTheSameImage) {
     for (const ConfigCase& k : cases) {
         SCOPED_TRACE(k.name);
         std::vector<Quad> quads{kQuadA, kQuadB};
-        if (k.config.depthFunc == CompareFunc::Greater)
+        if (k.config.depthTest == ssam::DepthTest::Greater)
             for (Quad& q : quads) q.depth = 1.0f - q.depth;  // the nearer stays nearer
         HostFoliage foliage(quads);
         const std::vector<ssam::gl::Box> bounds = boxesOf(quads);
 
-        auto builtIn = initializedSsam(settingsOf(k.config));
-        auto builtInTargets = host.opaque(k.config.depthFunc, k.colorFormat);
+        auto builtIn = initializedSsam(k.config);
+        auto builtInTargets = host.opaque(ssam::compareFuncOf(k.config.depthTest), k.colorFormat);
         ssam::gl::FrameDesc frame = host.frameOf(*builtInTargets);
         frame.foliageBounds = bounds.data();
         frame.foliageBoundsCount = bounds.size();
         ASSERT_EQ(builtIn->render(frame, [&](const ssam::gl::FoliageProgram&) { foliage.draw(); }), Status::Ok)
             << builtIn->lastMessage();
 
-        auto hosted = initializedSsam(settingsOf(k.config));
-        auto hostTargets = host.opaque(k.config.depthFunc, k.colorFormat);
+        auto hosted = initializedSsam(k.config);
+        auto hostTargets = host.opaque(ssam::compareFuncOf(k.config.depthTest), k.colorFormat);
         ssam::gl::FrameDesc hostFrame = host.frameOf(*hostTargets);
         hostFrame.foliageBounds = bounds.data();
         hostFrame.foliageBoundsCount = bounds.size();
@@ -129,8 +129,8 @@ TEST(SsamGlHostShaders, MimickingTheBuiltInProgramsGivesTheSameImage) {
         expectNear(host.backend->readback(hostTargets->depth()), host.backend->readback(builtInTargets->depth()), 0.0f,
                    "opaque + foliage depth");
         const ssam::gl::Intermediates a = builtIn->intermediates(), b = hosted->intermediates();
-        const Format maskFormat = k.config.maskPrecision == ssam::MaskPrecision::RGBA8     ? Format::RGBA8_UNORM
-                                  : k.config.maskPrecision == ssam::MaskPrecision::RGBA16F ? Format::RGBA16F
+        const Format maskFormat = k.config.maskPrecision == ssam::MaskPrecision::Rgba8     ? Format::RGBA8_UNORM
+                                  : k.config.maskPrecision == ssam::MaskPrecision::Rgba16f ? Format::RGBA16F
                                                                                            : Format::R16F;
         const Readback mask = host.readGl(b.mask, maskFormat);
         expectNear(mask, host.readGl(a.mask, maskFormat), 0.0f, "mask");

@@ -12,7 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "ssam/preset.hpp"
+#include "ssam/core/settings.hpp"
 #include "ssam/ssam.hpp"
 #include "ssam_gl_host.hpp"
 
@@ -22,13 +22,13 @@ using namespace engine::render;
 using namespace ssam::testing;
 using ssam::gl::Status;
 
-// Every knob of ssam::Config: ssam::gl gives the image, depth and masks that ssam::ScreenSpaceAlphaMask
+// Every knob of ssam::Settings: ssam::gl gives the image, depth and masks that ssam::ScreenSpaceAlphaMask
 // gives on the GL backend for the same scene. Same GPU, same blending: masks and depth exact; the
 // composite within 1 code (the two composite shaders round their arithmetic differently).
 TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
     std::vector<ConfigCase> cases;
     cases.push_back({"defaults", {}});
-    ssam::Config c;
+    ssam::Settings c;
     c.squareMask = false;
     cases.push_back({"squareMask off", c});
     c = {};
@@ -38,17 +38,17 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
     c.maskLerp = 1.0f;
     cases.push_back({"maskLerp 1 (add only)", c});
     c = {};
-    c.maskPrecision = ssam::MaskPrecision::RGBA16F;
+    c.maskPrecision = ssam::MaskPrecision::Rgba16f;
     cases.push_back({"rgba16f mask", c});
     c = {};
-    c.maskPrecision = ssam::MaskPrecision::RG16F;
+    c.maskPrecision = ssam::MaskPrecision::Rg16f;
     cases.push_back({"rg16f mask (two r16f targets)", c});
     c = {};
     c.colorAlphaReference = 0.5f;  // both quads fail the colour pass: the clear colour shows
     c.foliageClearColor = {0.9f, 0.1f, 0.5f, 0.0f};
     cases.push_back({"colour reference 0.5 + clear colour", c});
     c = {};
-    c.depthFunc = CompareFunc::Greater;
+    c.depthTest = ssam::DepthTest::Greater;
     cases.push_back({"reverse-Z (Greater)", c});
     cases.push_back({"sRGB colour", {}, Format::RGBA8_SRGB});
     cases.push_back({"rgba16f colour", {}, Format::RGBA16F});
@@ -56,12 +56,12 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
     GlHost host;
     for (const ConfigCase& k : cases) {
         SCOPED_TRACE(k.name);
-        const bool reversed = k.config.depthFunc == CompareFunc::Greater;
+        const bool reversed = k.config.depthTest == ssam::DepthTest::Greater;
         std::vector<Quad> quads{kQuadA, kQuadB};
         if (reversed)
             for (Quad& q : quads) q.depth = 1.0f - q.depth;  // the nearer stays nearer
         // The GL backend's SSAM.
-        auto reference = host.opaque(k.config.depthFunc, k.colorFormat);
+        auto reference = host.opaque(ssam::compareFuncOf(k.config.depthTest), k.colorFormat);
         ssam::ScreenSpaceAlphaMask backendSsam(*host.backend, k.config);
         QuadBatches batches(*host.backend, quads);
         ASSERT_EQ(
@@ -69,8 +69,8 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
                 .passesRun,
             3);
         // ssam::gl on identical targets.
-        auto targets = host.opaque(k.config.depthFunc, k.colorFormat);
-        auto glSsam = initializedSsam(settingsOf(k.config));
+        auto targets = host.opaque(ssam::compareFuncOf(k.config.depthTest), k.colorFormat);
+        auto glSsam = initializedSsam(k.config);
         HostFoliage foliage(quads);
         const std::vector<ssam::gl::Box> bounds = boxesOf(quads);
         ssam::gl::FrameDesc frame = host.frameOf(*targets);
@@ -102,28 +102,11 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
     }
 }
 
-// ssam::gl::Settings' defaults are ssam::Config's: the two entry points start from the paper's values.
-TEST(SsamGl, SettingsDefaultToTheConfigDefaults) {
-    const ssam::gl::Settings fromConfig = settingsOf(ssam::Config{});
-    const ssam::gl::Settings defaults;
-    EXPECT_EQ(defaults.maskLerp, fromConfig.maskLerp);
-    EXPECT_EQ(defaults.colorAlphaReference, fromConfig.colorAlphaReference);
-    for (int i = 0; i < 4; ++i) EXPECT_EQ(defaults.foliageClearColor[i], fromConfig.foliageClearColor[i]);
-    EXPECT_EQ(defaults.squareMask, fromConfig.squareMask);
-    EXPECT_EQ(defaults.maskPrecision, fromConfig.maskPrecision);
-    EXPECT_EQ(defaults.depthTest, fromConfig.depthTest);
-}
-
-// ssam::gl::measuredSettings() is ssam::presetConfig(Preset::Measured), knob for knob.
+// ssam::gl::measuredSettings() is the core's measured preset (the struct is the core's).
 TEST(SsamGl, MeasuredSettingsAreTheMeasuredPreset) {
-    const ssam::gl::Settings fromConfig = settingsOf(ssam::presetConfig(ssam::Preset::Measured));
     const ssam::gl::Settings measured = ssam::gl::measuredSettings();
-    EXPECT_EQ(measured.maskLerp, fromConfig.maskLerp);
-    EXPECT_EQ(measured.colorAlphaReference, fromConfig.colorAlphaReference);
-    for (int i = 0; i < 4; ++i) EXPECT_EQ(measured.foliageClearColor[i], fromConfig.foliageClearColor[i]);
-    EXPECT_EQ(measured.squareMask, fromConfig.squareMask);
-    EXPECT_EQ(measured.maskPrecision, fromConfig.maskPrecision);
-    EXPECT_EQ(measured.depthTest, fromConfig.depthTest);
+    EXPECT_EQ(ssam::settingsError(measured), "");
+    EXPECT_EQ(measured.maskLerp, ssam::presetSettings(ssam::Preset::Measured).maskLerp);
     EXPECT_NE(measured.squareMask, ssam::gl::Settings{}.squareMask);
 }
 
@@ -146,7 +129,7 @@ TEST(SsamGl, CallbackSeesTheMaskPassThenTheColourPass) {
     EXPECT_EQ(seen[0].pass, ssam::gl::FoliagePass::Mask);
     EXPECT_EQ(seen[0].alphaReference, 0.0f);  // §3.5.2: nothing rejected
     EXPECT_EQ(seen[1].pass, ssam::gl::FoliagePass::Color);
-    EXPECT_EQ(seen[1].alphaReference, ssam::Config{}.colorAlphaReference);
+    EXPECT_EQ(seen[1].alphaReference, ssam::Settings{}.colorAlphaReference);
     EXPECT_NE(seen[0].program, seen[1].program);
 }
 

@@ -8,7 +8,8 @@
 #include <memory>
 #include <optional>
 
-#include "ssam/config.hpp"
+#include "engine/render/compare_func.hpp"
+#include "ssam/core/settings.hpp"
 #include "transparency/programs.hpp"
 #include "transparency/technique.hpp"
 #include "transparency/temporal.hpp"
@@ -20,7 +21,7 @@ namespace transparency {
 // CoverageModel) instead of lerp(max, add, 0.85) squared.
 struct SsamPlusOptions {
     CoverageModel coverage = CoverageModel::EqualLayers;
-    ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::RG16F;  // ADD must not saturate at 1
+    ssam::MaskPrecision maskPrecision = ssam::MaskPrecision::Rg16f;  // ADD must not saturate at 1
     float colorAlphaReference = 64.0f / 255.0f;                      // the colour pass's ([Hathaway 2010] §3.5.3)
     // The composite averages the foliage colour over 3x3 (programs.hpp CoverageBlurComposite):
     // lower error on every bench scene (ssam/docs/ssam_plus.md).
@@ -34,7 +35,9 @@ struct HashedOptions {
 };
 
 struct TechniqueOptions {
-    ssam::Config ssam;  // SSAM's knobs; ssam.depthFunc is the scene's depth function for all
+    // The scene's depth function, for every technique (SSAM's and SSAM+'s depthTest follow it).
+    engine::render::CompareFunc depthFunc = engine::render::CompareFunc::Less;
+    ssam::Settings ssam;  // SSAM's knobs (its depthTest is depthFunc's)
     // alpha-test's reference: unset, each material's own (FoliageDraw::alphaCutoff, glTF's
     // alphaCutoff, 0.5 by default); set, one reference for every draw.
     std::optional<float> alphaTestReference;
@@ -46,6 +49,10 @@ struct TechniqueOptions {
     HashedOptions hashed;
     TemporalOptions temporal;  // the +taa techniques' temporal pass
 };
+
+// SSAM's settings for `options`: options.ssam with the scene's depth function; engine::Error when
+// that function cannot order surfaces (Always, Never, Equal, NotEqual).
+ssam::Settings ssamSettings(const TechniqueOptions& options);
 
 // Throws engine::Error when the backend cannot run the technique (the message says why).
 std::unique_ptr<Technique> createTechnique(TechniqueKind kind, engine::render::Backend& backend,

@@ -14,7 +14,7 @@
 // Two ways to draw the foliage:
 //  (a) SSAM's built-in foliage programs: render(frame, draw) calls `draw` twice (mask pass, then
 //      colour pass) with SSAM's program bound; the host binds its VAO (attribute locations:
-//      Settings::attributes) and draws.
+//      attributeLocations()) and draws.
 //  (b) The host's own shaders: beginFrame(), then beginMaskPass() / draw / endMaskPass(),
 //      beginColorPass() / draw / endColorPass(), composite(). SSAM sets each pass's framebuffer,
 //      viewport, blend, depth and cull state; the host binds its own program, which must output
@@ -59,35 +59,21 @@
 #include <memory>
 #include <type_traits>
 
+#include "ssam/core/frame.hpp"
+#include "ssam/core/settings.hpp"
+#include "ssam/core/status.hpp"
 #include "ssam/version.hpp"
 
 namespace ssam::gl {
 
-// ---- Results ---------------------------------------------------------------------------
+// ---- Results (the core's: ssam/core/status.hpp) -------------------------------------------
 
-enum class Status : int {
-    Ok = 0,
-    InvalidArgument,        // a bad setting, frame size, loader or callback (the message names it)
-    InvalidCall,            // out of order: not initialised, a pass not begun, a frame still open
-    NoContext,              // no GL context current, or not OpenGL 3.3 or newer
-    MissingEntryPoint,      // the loader returned no address for a GL function SSAM needs (named)
-    UnsupportedFeature,     // e.g. MaskPrecision::Rg16f without per-buffer blend equations
-    InvalidTexture,         // not a 2D texture (or renderbuffer), an unsupported format, or the wrong size
-    IncompleteFramebuffer,  // the driver refused SSAM's framebuffer with the host's textures
-    ShaderFailed,           // one of SSAM's programs does not compile or link here
-    CallbackFailed,         // the host's draw callback threw (the exception is not rethrown)
-    OutOfMemory,
-    Internal,  // an unexpected error inside SSAM (a bug: the message says what)
-};
-const char* statusName(Status status) noexcept;  // "ok", "invalid argument", ...
-
-enum class Severity : int { Info, Warning, Error };
-const char* severityName(Severity severity) noexcept;
-
-// Called for every error (Status other than Ok), for warnings (a GL error the host left pending
-// and SSAM cleared) and once with what was initialised (Info). `message` is valid during the call
-// only. A callback that throws is ignored.
-using MessageCallback = void (*)(void* user, Severity severity, const char* message);
+using ssam::MessageCallback;
+using ssam::Severity;
+using ssam::severityName;
+using ssam::Status;
+using ssam::StatusCode;
+using ssam::statusName;
 
 // The host's GL loader. Both common shapes are taken: returning void* (SDL2's
 // SDL_GL_GetProcAddress, glad's GLADloadproc) or a function pointer (glfwGetProcAddress,
@@ -97,25 +83,14 @@ using GetProcAddressFunction = void (*(*)(const char* name))();
 
 // ---- Plain data ----------------------------------------------------------------------------
 
-struct Rect {
-    int x = 0, y = 0, width = 0, height = 0;
-};
+// The core's (ssam/core/frame.hpp): Rect (GL window coordinates here: rows from the bottom unless
+// GL_UPPER_LEFT), Box, Light (the built-in colour program's, way a).
+using ssam::Box;
+using ssam::Light;
+using ssam::Rect;
 
-// An axis-aligned world-space box.
-struct Box {
-    float min[3] = {0.0f, 0.0f, 0.0f};
-    float max[3] = {0.0f, 0.0f, 0.0f};
-};
-
-// The directional light of SSAM's built-in colour program (way a; the host's own shaders light
-// as they like). The default is unlit: colour = base colour.
-struct Light {
-    float towardLight[3] = {0.0f, 0.0f, 1.0f};  // world space, need not be normalised
-    float color[3] = {0.0f, 0.0f, 0.0f};        // scales max(dot(n, towardLight), 0), double-sided
-    float ambient[3] = {1.0f, 1.0f, 1.0f};
-};
-
-// Vertex attribute locations of SSAM's built-in foliage programs (way a), Settings::attributes:
+// Vertex attribute locations of SSAM's built-in foliage programs (way a; initialize() and
+// setAttributeLocations()):
 // set them to the locations the host's own VAOs already use (e.g. uv at 8, normal at 2) so its
 // vertex arrays are reused as they are. Each below 16 (GL's minimum GL_MAX_VERTEX_ATTRIBS), no two
 // overlapping (instanceModel takes four). An attribute the host's VAO does not enable reads SSAM's
@@ -129,42 +104,15 @@ struct AttributeLocations {
     unsigned int instanceModel = 4;  // mat4 as 4 vec4 columns at instanceModel .. + 3 (divisor 1)
 };
 
-// Storage of the mask (§3.5.2): Rgba8 as in the paper (the sum saturates at 1); Rgba16f unclamped;
-// Rg16f as two single-channel R16F targets (MAX and SUM), which needs GL 4.0 or
-// GL_ARB_draw_buffers_blend.
-enum class MaskPrecision : int { Rgba8, Rgba16f, Rg16f };
-// The host's depth convention: Less / LessEqual conventional, Greater / GreaterEqual reverse-Z.
-enum class DepthTest : int { Less, LessEqual, Greater, GreaterEqual };
+// The paper's knobs (ssam/core/settings.hpp), the same struct for every SSAM. Rg16f needs GL 4.0 or
+// GL_ARB_draw_buffers_blend (two mask targets blended differently). depthMaskThreshold > 0: a copy
+// of the host's depth and one full-screen pass (ssam/README.md, "Later transparent passes").
+using ssam::DepthTest;
+using ssam::MaskPrecision;
+using ssam::Settings;
 
-// The paper's knobs, with its values as defaults (the same as ssam::Config's).
-struct Settings {
-    float maskLerp = 0.85f;                                    // mask = lerp(MAX, SUM, maskLerp) (§3.5.4, Listing 3.2)
-    float colorAlphaReference = 64.0f / 255.0f;                // colour-pass alpha test (§3.5.3)
-    float foliageClearColor[4] = {0.16f, 0.22f, 0.08f, 0.0f};  // where the mask covers but no colour (§3.6.1)
-    bool squareMask = true;                                    // the squared alpha trick (§3.6.2)
-    MaskPrecision maskPrecision = MaskPrecision::Rgba8;
-    DepthTest depthTest = DepthTest::Less;
-    // Where the built-in programs read the host's vertex arrays (way a; way b ignores it).
-    AttributeLocations attributes;
-    // The host's depth keeps the foliage depth only where the composited mask reaches this
-    // value; elsewhere the opaque depth is put back. 0 (the paper's behaviour, §3.7): foliage
-    // depth wherever the colour pass wrote, so a later transparent pass behind a leaf edge is
-    // cut where the leaf is only partly opaque and a rim of the unfogged background shows round
-    // it. Above 0: those edges take the later pass instead, for a copy of the depth and one
-    // full-screen pass (ssam/README.md, "Later transparent passes" has both and their cost).
-    float depthMaskThreshold = 0.0f;
-};
-
-// ssam::Preset::Measured's knobs (ssam/preset.hpp; ssam/docs/knobs.md "Presets": lower error than
-// the paper's at its cost), the rest Settings{}'s. Spelled out here because ssam::gl uses no engine
-// type; a test checks it against ssam::presetConfig.
-inline Settings measuredSettings() {
-    Settings s;
-    s.maskLerp = 0.9f;
-    s.squareMask = false;
-    s.colorAlphaReference = 96.0f / 255.0f;
-    return s;
-}
+// ssam::Preset::Measured's knobs (ssam/docs/knobs.md "Presets": lower error than the paper's at its cost).
+inline Settings measuredSettings() { return ssam::presetSettings(ssam::Preset::Measured); }
 
 struct FrameDesc {
     // The host's opaque colour: GL_RGBA8, GL_SRGB8_ALPHA8 (blended in linear, as
@@ -191,14 +139,11 @@ struct FrameDesc {
     std::size_t foliageBoundsCount = 0;
 };
 
-struct FrameReport {
-    bool foliageInView = false;  // false: the frame is already over (way b: draw nothing, call nothing)
-    int passesRun = 0;           // 0 or 3
-    Rect compositeRegion;        // GL window coordinates (rows from the bottom unless GL_UPPER_LEFT)
-};
-
-enum class FoliagePass : int { Mask, Color };
-const char* foliagePassName(FoliagePass pass) noexcept;  // "mask", "colour"
+// The core's (ssam/core/frame.hpp): FrameReport::compositeRegion in GL window coordinates;
+// FoliagePass and foliagePassName.
+using ssam::FoliagePass;
+using ssam::foliagePassName;
+using ssam::FrameReport;
 
 // What a pass of the host's own shaders must know (way b; see the contract above).
 struct PassInfo {
@@ -260,21 +205,27 @@ public:
     // one it has no address for), checks the current context (OpenGL 3.3 or newer, core or
     // compatibility), compiles
     // SSAM's programs. May be called again (e.g. after release()).
-    Status initialize(GetProcAddress getProcAddress, const Settings& settings = {}) noexcept;
-    Status initialize(GetProcAddressFunction getProcAddress, const Settings& settings = {}) noexcept;
+    // `attributes`: where the built-in programs read the host's vertex arrays (way a).
+    Status initialize(GetProcAddress getProcAddress, const Settings& settings = {},
+                      const AttributeLocations& attributes = {}) noexcept;
+    Status initialize(GetProcAddressFunction getProcAddress, const Settings& settings = {},
+                      const AttributeLocations& attributes = {}) noexcept;
     // Deletes SSAM's GL objects; initialize() again to use it. Needs the context current: without
     // one nothing is deleted and NoContext is returned (the objects then go with the context);
     // SSAM is released either way. Ok when there was nothing to delete.
     Status release() noexcept;
 
-    // InvalidArgument naming the knob. New attribute locations recompile the built-in programs
-    // (the context must be current then; before initialize() they are only kept).
+    // InvalidArgument naming the knob (the core's rules, ssam::settingsError).
     Status setSettings(const Settings& settings) noexcept;
     const Settings& settings() const noexcept;
+    // New locations recompile the built-in programs (the context must be current then; before
+    // initialize() they are only kept). InvalidArgument naming the attribute.
+    Status setAttributeLocations(const AttributeLocations& attributes) noexcept;
+    const AttributeLocations& attributeLocations() const noexcept;
 
     // Way (a): the three passes with SSAM's built-in programs. `draw(user, program)` runs twice,
     // mask pass then colour pass, with SSAM's program, framebuffer and state set: it binds its
-    // VAO(s) at Settings::attributes, sets per-draw values through `program` and draws; it may
+    // VAO(s) at attributeLocations(), sets per-draw values through `program` and draws; it may
     // instead bind its own program if that keeps the host-shader contract. Every piece of GL
     // state SSAM changes is restored before this returns, also when `draw` throws.
     using DrawFoliage = void (*)(void* user, const FoliageProgram& program);
