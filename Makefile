@@ -14,7 +14,10 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # Debian 12 packages: compilers and tools, then the libraries found by find_package,
 # then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests, Vulkan
 # (loader, lavapipe, the validation layers, shaderc) for the Vulkan backend and its tests,
-# then Node.js for the Khronos glTF Validator the content test runs.
+# then the frame-capture tools engine teams use, whose captures of SSAM's frames the tests replay
+# (tests/capture/tools: apitrace, with apitrace-tracers' EGL wrapper, for GL; gfxreconstruct 0.9.18,
+# capture layer and replayer, for Vulkan), then Node.js for the Khronos glTF Validator the content
+# test runs.
 PACKAGES := build-essential cmake pkg-config ccache \
             libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libpng-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
@@ -22,6 +25,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
             libepoxy-dev libstb-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
             libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc libshaderc-dev spirv-tools \
             clang-format-14 \
+            apitrace apitrace-tracers gfxreconstruct \
             $(NODE_PACKAGES)
 # Debian's nodejs + npm, unless an npm is already on the PATH (e.g. a NodeSource nodejs,
 # which bundles npm and which Debian's npm package would try to replace).
@@ -61,12 +65,14 @@ test: build node-tools
 # the largest share of the pass's time, and their pictures are proven the same in every build
 # by `make test`; hostile input is the fuzzers' and the unit tests' under the sanitizers), tests
 # that also carry the label `slow` (too long under the sanitizers; `make test` still runs them)
-# and the glTF validator (Node.js, none of our code runs). The Vulkan unit and conformance
+# and the glTF validator (Node.js, none of our code runs), and apitrace's replay of the GL example
+# (label gl beside capture: its EGL wrapper is preloaded ahead of ASan's runtime, which refuses
+# to run so, and its replay runs none of our code). The Vulkan unit and conformance
 # binaries carry `unit` / `conformance` beside `vk`, so they run here; the rest of `vk` (racer's
 # goldens, the EXR layers) is capture work. The asan test preset sets ASAN_OPTIONS and
 # UBSAN_OPTIONS (CMakePresets.json; why: tests/README.md "What CI runs").
 ASAN_LABELS ?= unit|conformance|stress|gl
-ASAN_EXCLUDE ?= ^Content\.GltfValidatorFindsNoErrors$$
+ASAN_EXCLUDE ?= ^Content\.GltfValidatorFindsNoErrors$$|^Capture\.ApitraceReplaysSsamGlFrame$$
 test-asan: deps
 	@[ -f build-asan/CMakeCache.txt ] || cmake --preset asan
 	cmake --build --preset asan -j $(JOBS)

@@ -11,6 +11,7 @@
 
 #include "png_writer.hpp"
 #include "vk_mist.hpp"
+#include "vk_present.hpp"
 
 namespace vk_example {
 
@@ -39,6 +40,7 @@ Arguments parse(const Tool& tool, int argc, char** argv) {
         else if (arg == "--mask") a.mask = value();
         else if (arg == "--validation") a.validation = true;
         else if (arg == "--dynamic-rendering") a.dynamicRendering = true;
+        else if (arg == "--present") a.present = true;
         else if (arg == "--mist") {
             const std::string v = value();
             if (v != "after" && v != "before") throw UsageError("--mist '" + v + "': expected after or before");
@@ -72,7 +74,7 @@ Arguments parse(const Tool& tool, int argc, char** argv) {
         } else if (arg == "--help") {
             std::printf(
                 "usage: %s [--out frame.png] [--mask mask.png] [--frames N] [--validation]"
-                " [--dynamic-rendering] [--mist after|before] [--depth-threshold T] [--precision P]%s\n",
+                " [--dynamic-rendering] [--present] [--mist after|before] [--depth-threshold T] [--precision P]%s\n",
                 tool.name, tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "");
             std::exit(0);
         } else throw UsageError("unknown argument '" + arg + "'");
@@ -91,7 +93,11 @@ void writeOrThrow(const std::string& path, const std::vector<std::uint8_t>& rgba
 }
 
 int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorder) {
-    vk_example::VulkanHost host(args.validation, args.dynamicRendering);
+    std::unique_ptr<PresentWindow> window;  // --present: made first, the instance needs its extensions
+    if (args.present)
+        window = std::make_unique<PresentWindow>(std::uint32_t(kWidth), std::uint32_t(kHeight), tool.name);
+    vk_example::VulkanHost host(args.validation, args.dynamicRendering,
+                                window ? window->instanceExtensions() : std::vector<const char*>{});
     std::printf("Vulkan: %s (API %u.%u)%s\n", host.deviceName.c_str(), VK_API_VERSION_MAJOR(host.apiVersion),
                 VK_API_VERSION_MINOR(host.apiVersion),
                 args.validation ? ", validation with synchronization validation" : "");
@@ -126,6 +132,8 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
         const std::unique_ptr<FoliageRecorder> foliage = makeRecorder(scene, ssam, args);
         std::unique_ptr<MistPass> mist;
         if (args.mist != Arguments::Mist::None) mist = std::make_unique<MistPass>(scene);
+        std::unique_ptr<Presenter> presenter;  // --present: each frame shown in the window
+        if (window) presenter = std::make_unique<Presenter>(host, *window);
 
         // Two frames in flight: frame i waits for frame i - 2's fence before it records.
         std::deque<VkFence> inFlight;
@@ -156,7 +164,9 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             foliage->record(ssam, frame);
             // Later transparent passes after SSAM: they see the foliage depth.
             if (args.mist == Arguments::Mist::After) mist->record(cb);
-            inFlight.push_back(host.submit(cb));
+            if (presenter) presenter->record(cb, scene.color.image);
+            inFlight.push_back(host.submit(cb, presenter ? presenter->rendered() : VK_NULL_HANDLE));
+            if (presenter) presenter->present();
         }
         for (VkFence f : inFlight) host.wait(f);
         writeOrThrow(args.out, scene.read(scene.color.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL));
@@ -164,6 +174,7 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             writeOrThrow(args.mask, scene.read(ssam.intermediates().mask, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
         vkDeviceWaitIdle(host.device);  // SSAM's objects go with the device idle (ssam_vk.hpp, Lifetime)
         mist.reset();
+        presenter.reset();
         ssam.release();
     }
     if (!host.validationMessages.empty()) {

@@ -30,7 +30,8 @@ struct Arguments {
     int frames = 1;    // two in flight; the last is written
     bool validation = false;
     bool dynamicRendering = false;
-    float wind = 0.0f;  // --wind (tools that bend in the wind; their default kDefaultWind)
+    bool present = false;  // --present: each frame shown in a window (vk_present.hpp)
+    float wind = 0.0f;     // --wind (tools that bend in the wind; their default kDefaultWind)
     // The host's transparent pass (--mist after|before SSAM), as the GL examples'.
     enum class Mist { None, After, Before } mist = Mist::None;
     float depthMaskThreshold = 0.0f;                                     // --depth-threshold

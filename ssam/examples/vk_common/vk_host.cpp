@@ -2,6 +2,7 @@
 #include "vk_host.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -17,10 +18,25 @@ void check(VkResult result, const char* what) {
 
 namespace {
 
+// The loader's notice that the environment added a layer (VK_INSTANCE_LAYERS or
+// VK_LOADER_LAYERS_ENABLE: a capture layer such as gfxreconstruct's, tests/capture/tools) is a
+// warning of the loader's about its set-up, not a misuse of the API: it is printed, not counted.
+bool isLayerFromTheEnvironment(VkDebugUtilsMessageTypeFlagsEXT type, const VkDebugUtilsMessengerCallbackDataEXT* data) {
+    if (type != VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT || !data->pMessage || !data->pMessageIdName ||
+        std::strcmp(data->pMessageIdName, "Loader Message") != 0)
+        return false;
+    return std::strstr(data->pMessage, "env var 'VK_INSTANCE_LAYERS' defined and adding layers") ||
+           std::strstr(data->pMessage, "forced enabled due to env var 'VK_LOADER_LAYERS_ENABLE'");
+}
+
 VKAPI_ATTR VkBool32 VKAPI_CALL onValidation(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                            VkDebugUtilsMessageTypeFlagsEXT,
+                                            VkDebugUtilsMessageTypeFlagsEXT type,
                                             const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     if (severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) return VK_FALSE;
+    if (isLayerFromTheEnvironment(type, data)) {
+        std::printf("Vulkan loader: %s\n", data->pMessage);
+        return VK_FALSE;
+    }
     static_cast<VulkanHost*>(user)->validationMessages.push_back(data->pMessage ? data->pMessage : "");
     return VK_FALSE;
 }
@@ -32,6 +48,15 @@ bool hasLayer(const char* name) {
     vkEnumerateInstanceLayerProperties(&count, layers.data());
     return std::any_of(layers.begin(), layers.end(),
                        [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+bool hasInstanceExtension(const char* name) {
+    std::uint32_t count = 0;
+    vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data());
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
 // Only in a build with AddressSanitizer (CI's sanitizer pass builds the examples so): the Vulkan
@@ -48,7 +73,9 @@ void pinVulkanLibrariesForLeakSanitizer() {
 
 }  // namespace
 
-VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering) : validation(withValidation) {
+VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering,
+                       const std::vector<const char*>& surfaceExtensions)
+    : validation(withValidation) {
     pinVulkanLibrariesForLeakSanitizer();
     std::uint32_t loaderVersion = VK_API_VERSION_1_0;
     if (vkEnumerateInstanceVersion(&loaderVersion) != VK_SUCCESS) throw NoVulkan("the Vulkan loader does not answer");
@@ -72,7 +99,12 @@ VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering) : validat
                             VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messenger.pfnUserCallback = onValidation;
     messenger.pUserData = this;
-    const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    std::vector<const char*> extensions;
+    if (validation) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    for (const char* name : surfaceExtensions) {
+        if (!hasInstanceExtension(name)) throw NoVulkan(std::string("no ") + name + " for --present");
+        extensions.push_back(name);
+    }
     VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     ci.pApplicationInfo = &app;
     if (validation) {
@@ -80,9 +112,9 @@ VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering) : validat
         ci.pNext = &features;
         ci.enabledLayerCount = 1;
         ci.ppEnabledLayerNames = &kLayer;
-        ci.enabledExtensionCount = 1;
-        ci.ppEnabledExtensionNames = &extension;
     }
+    ci.enabledExtensionCount = std::uint32_t(extensions.size());
+    ci.ppEnabledExtensionNames = extensions.data();
     if (vkCreateInstance(&ci, nullptr, &instance) != VK_SUCCESS) throw NoVulkan("vkCreateInstance failed");
     if (validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -134,6 +166,18 @@ VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering) : validat
     di.pEnabledFeatures = &enabled;
     di.queueCreateInfoCount = 1;
     di.pQueueCreateInfos = &queueInfo;
+    const char* swapchain = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+    if (!surfaceExtensions.empty()) {
+        std::uint32_t n = 0;
+        vkEnumerateDeviceExtensionProperties(physical, nullptr, &n, nullptr);
+        std::vector<VkExtensionProperties> available(n);
+        vkEnumerateDeviceExtensionProperties(physical, nullptr, &n, available.data());
+        if (std::none_of(available.begin(), available.end(),
+                         [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, swapchain) == 0; }))
+            throw NoVulkan("the device has no VK_KHR_swapchain for --present");
+        di.enabledExtensionCount = 1;
+        di.ppEnabledExtensionNames = &swapchain;
+    }
     check(vkCreateDevice(physical, &di, nullptr, &device), "vkCreateDevice");
     vkGetDeviceQueue(device, queueFamily, 0, &queue);
     VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -237,7 +281,7 @@ VkCommandBuffer VulkanHost::begin() {
     return cb;
 }
 
-VkFence VulkanHost::submit(VkCommandBuffer cb) {
+VkFence VulkanHost::submit(VkCommandBuffer cb, VkSemaphore signal) {
     check(vkEndCommandBuffer(cb), "vkEndCommandBuffer");
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VkFence fence = VK_NULL_HANDLE;
@@ -245,6 +289,10 @@ VkFence VulkanHost::submit(VkCommandBuffer cb) {
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &cb;
+    if (signal) {
+        submit.signalSemaphoreCount = 1;
+        submit.pSignalSemaphores = &signal;
+    }
     check(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
     inFlight_.push_back({fence, cb});
     return fence;

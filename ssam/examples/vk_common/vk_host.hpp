@@ -35,7 +35,10 @@ struct HostBuffer {
 class VulkanHost {
 public:
     // dynamicRendering: enable Vulkan 1.3's feature (NoVulkan where the device has not).
-    explicit VulkanHost(bool validation, bool dynamicRendering = false);
+    // surfaceExtensions: a window's instance extensions (vk_present.hpp); given, VK_KHR_swapchain
+    // is enabled too (NoVulkan where one is missing).
+    explicit VulkanHost(bool validation, bool dynamicRendering = false,
+                        const std::vector<const char*>& surfaceExtensions = {});
     ~VulkanHost();
     VulkanHost(const VulkanHost&) = delete;
     VulkanHost& operator=(const VulkanHost&) = delete;
@@ -46,9 +49,10 @@ public:
     void destroy(HostImage& image);
     void destroy(HostBuffer& buffer);
 
-    // A primary command buffer, begun (one-time submit); submit() ends it, submits it with a fence.
+    // A primary command buffer, begun (one-time submit); submit() ends it, submits it with a fence
+    // (and `signal`, where one is given).
     VkCommandBuffer begin();
-    VkFence submit(VkCommandBuffer commandBuffer);
+    VkFence submit(VkCommandBuffer commandBuffer, VkSemaphore signal = VK_NULL_HANDLE);
     void wait(VkFence fence);  // waits, then frees the fence (and its command buffer)
 
     VkInstance instance = VK_NULL_HANDLE;

@@ -7,14 +7,16 @@
 // buffer. The scene is the GL examples' (common/scene.hpp), so the picture is theirs.
 //
 //   ssam_vk_embedding [--out frame.png] [--mask mask.png] [--frames N] [--validation]
-//                     [--dynamic-rendering] [--mist after|before] [--depth-threshold T]
+//                     [--dynamic-rendering] [--present] [--mist after|before] [--depth-threshold T]
 //                     [--precision rgba8|rgba16f|rg16f]
 //       headless; --frames records N frames (two in flight; frame N is written); --validation
 //       runs under VK_LAYER_KHRONOS_validation with synchronization validation, and any message
 //       it reports fails the run; --dynamic-rendering enables Vulkan 1.3's feature and has SSAM
 //       record with vkCmdBeginRendering (ssam::vk::RenderingPath::DynamicRendering); --mist,
 //       --depth-threshold and --precision as the GL examples' (the host's transparent pass,
-//       Settings::depthMaskThreshold, Settings::maskPrecision; --mask with rgba8 only)
+//       Settings::depthMaskThreshold, Settings::maskPrecision; --mask with rgba8 only); --present
+//       also shows each frame in a window (vk_common/vk_present.hpp: the presents capture tools
+//       count frames by; ssam/docs/vk_hosts.md "Capturing a frame")
 // Exit codes: vk_common/vk_example.hpp.
 #include "vk_example.hpp"
 

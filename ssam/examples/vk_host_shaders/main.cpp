@@ -7,7 +7,7 @@
 // render pass or attachment formats), and the host rebuilds them when pipelineStateVersion() moves.
 //
 //   ssam_vk_host_shaders [--out frame.png] [--mask mask.png] [--frames N] [--validation]
-//                        [--dynamic-rendering] [--wind AMPLITUDE]
+//                        [--dynamic-rendering] [--present] [--wind AMPLITUDE]
 //       as ssam_vk_embedding; --wind moves a card's top AMPLITUDE world units in x (default 0.3;
 //       0 draws what the built-in programs draw)
 // Exit codes: vk_common/vk_example.hpp.
