@@ -19,6 +19,7 @@
 #include "engine/render/gl/gl_backend.hpp"
 #include "quad_scene.hpp"
 #include "ssam/core/settings.hpp"
+#include "ssam/ssam.hpp"
 #include "ssam/gl/ssam_gl.hpp"
 
 namespace ssam::testing {

@@ -45,7 +45,7 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
     cases.push_back({"rg16f mask (two r16f targets)", c});
     c = {};
     c.colorAlphaReference = 0.5f;  // both quads fail the colour pass: the clear colour shows
-    c.foliageClearColor = {0.9f, 0.1f, 0.5f, 0.0f};
+    c.foliageClearColor[0] = 0.9f, c.foliageClearColor[1] = 0.1f, c.foliageClearColor[2] = 0.5f;
     cases.push_back({"colour reference 0.5 + clear colour", c});
     c = {};
     c.depthTest = ssam::DepthTest::Greater;
