@@ -35,7 +35,10 @@ struct HostBuffer {
 class VulkanHost {
 public:
     // dynamicRendering: enable Vulkan 1.3's feature (NoVulkan where the device has not).
-    explicit VulkanHost(bool validation, bool dynamicRendering = false);
+    // uniqueHandles false (with validation): the layer hands out the driver's own handle values
+    // (VK_VALIDATION_FEATURE_DISABLE_UNIQUE_HANDLES_EXT), so an object made after one is destroyed
+    // can get its value back, as without the layer; a test of what SSAM keeps by handle needs that.
+    explicit VulkanHost(bool validation, bool dynamicRendering = false, bool uniqueHandles = true);
     ~VulkanHost();
     VulkanHost(const VulkanHost&) = delete;
     VulkanHost& operator=(const VulkanHost&) = delete;

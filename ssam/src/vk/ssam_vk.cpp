@@ -176,6 +176,9 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
     }
     VkPhysicalDeviceProperties properties;
     vk.GetPhysicalDeviceProperties(desc.physicalDevice, &properties);
+    maxFramebufferWidth = properties.limits.maxFramebufferWidth;
+    maxFramebufferHeight = properties.limits.maxFramebufferHeight;
+    maxImageDimension2D = properties.limits.maxImageDimension2D;
     message(Severity::Info, std::string("ssam::vk initialised on ") + properties.deviceName + " (Vulkan " +
                                 std::to_string(VK_API_VERSION_MAJOR(desc.apiVersion)) + "." +
                                 std::to_string(VK_API_VERSION_MINOR(desc.apiVersion)) + ")");
@@ -184,7 +187,11 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
 void ScreenSpaceAlphaMaskVk::Impl::releaseObjects() noexcept {
     if (!initialized) return;
     abandonFrame();
+    frameFramebuffers.destroyAll([this](const detail::FrameFramebuffers& fb) { detail::destroyFramebuffers(vk, fb); });
     retired.destroyAll();
+    lastFrameIndex.reset();
+    lastFramesCompleted = 0;
+    warnedFramesNotCompleting = false;
     for (const CompatiblePass& c : compatiblePasses) vk.DestroyRenderPass(vk.device, c.pass, vk.allocator);
     compatiblePasses.clear();
     if (generation) generation->destroy(vk, memory);
@@ -204,7 +211,7 @@ void ScreenSpaceAlphaMaskVk::Impl::releaseObjects() noexcept {
 
 TextureId ScreenSpaceAlphaMaskVk::Impl::createTexture(VkImageView view, VkSampler sampler) {
     expectInitialized("createTexture");
-    if (!view) throw Failure(Status::InvalidArgument, "ssam::vk: createTexture without an image view");
+    if (!view) throw Failure(Status::InvalidArgument, "ssam::vk: createTexture() with view VK_NULL_HANDLE");
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocate.descriptorSetCount = 1;
@@ -306,15 +313,18 @@ const Settings& ScreenSpaceAlphaMaskVk::settings() const noexcept {
 Status ScreenSpaceAlphaMaskVk::createTexture(VkImageView view, VkSampler sampler, TextureId* id) noexcept {
     if (!impl_) return Status::InvalidCall;
     if (id) *id = 0;
-    return impl_->run([&] {
-        const TextureId made = impl_->createTexture(view, sampler);
-        if (id) *id = made;
-    });
+    return impl_->run(
+        [&] {
+            // Checked before anything is made: a texture without its id could never be bound or destroyed.
+            if (!id) throw Failure(Status::InvalidArgument, "ssam::vk: createTexture() with id null");
+            *id = impl_->createTexture(view, sampler);
+        },
+        false);
 }
 
 Status ScreenSpaceAlphaMaskVk::destroyTexture(TextureId id, std::uint64_t lastFrameIndex) noexcept {
     if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->destroyTexture(id, lastFrameIndex); });
+    return impl_->run([&] { impl_->destroyTexture(id, lastFrameIndex); }, false);
 }
 
 Status ScreenSpaceAlphaMaskVk::render(const FrameDesc& frame, DrawFoliage draw, void* user,
