@@ -6,10 +6,10 @@
 // later transparent passes, §3.7). It never submits, waits or touches a queue.
 //
 // Host-neutral: standard C++17, <ssam/version.hpp> and <vulkan/vulkan.h> (types only; define
-// VK_NO_PROTOTYPES or not, as the host likes). No link-time dependency on libvulkan: every Vulkan function is resolved
-// through the host's vkGetInstanceProcAddr / vkGetDeviceProcAddr. Nothing throws into host code:
-// every call returns a Status, and the reason goes to an optional message callback and
-// lastMessage(). SPIR-V is compiled when SSAM is built and carried inside the library.
+// VK_NO_PROTOTYPES or not, as the host likes). No link-time dependency on libvulkan: every Vulkan
+// function is resolved through the host's vkGetInstanceProcAddr / vkGetDeviceProcAddr. Nothing
+// throws into host code: every call returns a Status, and the reason goes to an optional message
+// callback and lastMessage(). SPIR-V is compiled when SSAM is built and carried inside the library.
 //
 // Two ways to draw the foliage, as ssam::gl's:
 //  (a) SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
@@ -63,7 +63,7 @@
 // matrices and bounds, frame numbers). What only the validation layer sees (Vulkan has no query
 // for them): a command buffer not recording or inside a render pass, images not in the contract's
 // layouts, destroyed or wrong views (another image, level, usage or a format unlike the one
-// declared), extents declared wrong, and the host's own draws (ssam/docs/vk_hosts.md).
+// declared), extents declared wrong, and the host's own draws (ssam/docs/vk_host_checks.md).
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -80,7 +80,7 @@ namespace ssam::vk {
 enum class Status : int {
     Ok = 0,
     InvalidArgument,     // a bad setting, frame, device description or callback (the message names it)
-    InvalidCall,         // out of order: not initialised, a pass outside a frame, a frame inside a frame, ...
+    InvalidCall,         // out of order: not initialised, a pass outside a frame, a frame in a frame, ...
     MissingEntryPoint,   // the host's loader returned no address for a function SSAM needs (named)
     UnsupportedFeature,  // the device lacks what a setting needs (named), e.g. a format as attachment
     DeviceError,         // a Vulkan call failed (the message names it and its VkResult)
