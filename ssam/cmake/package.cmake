@@ -18,6 +18,7 @@ set(_ssam_generated ${CMAKE_CURRENT_BINARY_DIR}/generated)
 configure_file(${CMAKE_CURRENT_LIST_DIR}/version.hpp.in ${_ssam_generated}/ssam/version.hpp @ONLY)
 target_include_directories(ssam PUBLIC $<BUILD_INTERFACE:${_ssam_generated}>)
 target_include_directories(ssam_gl PUBLIC $<BUILD_INTERFACE:${_ssam_generated}>)
+target_include_directories(ssam_vk PUBLIC $<BUILD_INTERFACE:${_ssam_generated}>)
 
 # The engine's and ssam's public headers use C++20 (std::span, designated initialisers): their
 # consumers get it from the targets. ssam::gl's header is C++17 and asks for no more

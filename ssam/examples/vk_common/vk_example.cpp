@@ -151,8 +151,10 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             frame.commandBuffer = cb;
             frame.colorView = scene.color.view;
             frame.colorFormat = scene.color.format;
+            frame.colorImageExtent = {kWidth, kHeight};  // as the images were created: SSAM renders no further
             frame.depthView = scene.depth.view;
             frame.depthFormat = scene.depth.format;
+            frame.depthImageExtent = {kWidth, kHeight};
             frame.depthImage = scene.depth.image;  // Settings::depthMaskThreshold copies its depth
             frame.width = kWidth;
             frame.height = kHeight;

@@ -74,7 +74,7 @@ void pinVulkanLibrariesForLeakSanitizer() {
 }  // namespace
 
 VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering,
-                       const std::vector<const char*>& surfaceExtensions)
+                       const std::vector<const char*>& surfaceExtensions, bool uniqueHandles)
     : validation(withValidation) {
     pinVulkanLibrariesForLeakSanitizer();
     std::uint32_t loaderVersion = VK_API_VERSION_1_0;
@@ -91,6 +91,11 @@ VulkanHost::VulkanHost(bool withValidation, bool withDynamicRendering,
     VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
     features.enabledValidationFeatureCount = 1;
     features.pEnabledValidationFeatures = enables;
+    const VkValidationFeatureDisableEXT disables[] = {VK_VALIDATION_FEATURE_DISABLE_UNIQUE_HANDLES_EXT};
+    if (!uniqueHandles) {
+        features.disabledValidationFeatureCount = 1;
+        features.pDisabledValidationFeatures = disables;
+    }
     VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     messenger.messageSeverity =
         VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;

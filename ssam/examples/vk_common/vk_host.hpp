@@ -37,8 +37,11 @@ public:
     // dynamicRendering: enable Vulkan 1.3's feature (NoVulkan where the device has not).
     // surfaceExtensions: a window's instance extensions (vk_present.hpp); given, VK_KHR_swapchain
     // is enabled too (NoVulkan where one is missing).
+    // uniqueHandles false (with validation): the layer hands out the driver's own handle values
+    // (VK_VALIDATION_FEATURE_DISABLE_UNIQUE_HANDLES_EXT), so an object made after one is destroyed
+    // can get its value back, as without the layer; a test of what SSAM keeps by handle needs that.
     explicit VulkanHost(bool validation, bool dynamicRendering = false,
-                        const std::vector<const char*>& surfaceExtensions = {});
+                        const std::vector<const char*>& surfaceExtensions = {}, bool uniqueHandles = true);
     ~VulkanHost();
     VulkanHost(const VulkanHost&) = delete;
     VulkanHost& operator=(const VulkanHost&) = delete;

@@ -13,6 +13,7 @@
 #include "../core/frame_sequence.hpp"
 #include "../core/host_channel.hpp"
 #include "../core/passes.hpp"
+#include "../core/frame_rules.hpp"
 #include "depth_restore.hpp"
 #include "failure.hpp"
 #include "frame_targets.hpp"
@@ -270,12 +271,21 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         if (!gl.GetString(GL_VERSION))
             throw Failure(Status::NoContext, "ssam::gl: no OpenGL context is current on this thread");
         if (desc.width <= 0 || desc.height <= 0)
-            throw Failure(Status::InvalidArgument, "ssam::gl: frame size " + std::to_string(desc.width) + "x" +
-                                                       std::to_string(desc.height) + " is not positive");
+            throw Failure(Status::InvalidArgument, "ssam::gl: frame size (FrameDesc::width x height) " +
+                                                       std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                                                       " is not positive");
         if (desc.foliageBoundsCount > 0 && !desc.foliageBounds)
-            throw Failure(Status::InvalidArgument, "ssam::gl: foliageBoundsCount is " +
+            throw Failure(Status::InvalidArgument, "ssam::gl: FrameDesc::foliageBoundsCount is " +
                                                        std::to_string(desc.foliageBoundsCount) +
                                                        " but foliageBounds is null");
+        // The rules ssam::vk keeps too (frame_rules.hpp): finite matrices, boxes that can hold a card.
+        if (const std::string error = ssam::detail::matrixError(desc.viewProj, "FrameDesc::viewProj"); !error.empty())
+            throw Failure(Status::InvalidArgument, "ssam::gl: " + error);
+        for (std::size_t i = 0; i < desc.foliageBoundsCount; ++i)
+            if (const std::string error = ssam::detail::boxError(desc.foliageBounds[i].min, desc.foliageBounds[i].max,
+                                                                 "FrameDesc::foliageBounds[" + std::to_string(i) + "]");
+                !error.empty())
+                throw Failure(Status::InvalidArgument, "ssam::gl: " + error);
         if (const GLenum pending = gl.GetError(); pending != GL_NO_ERROR) {
             char text[160];
             std::snprintf(text, sizeof text,
@@ -573,6 +583,7 @@ Status ScreenSpaceAlphaMaskGl::render(const FrameDesc& frame, DrawFoliage draw, 
     if (report) *report = {};
     if (!draw) return s.fail(Status::InvalidArgument, "ssam::gl: render() without a draw callback");
     return s.run([&] {
+        s.expect(Phase::Idle, "render");  // named as the host called it, not as beginFrame
         const FrameReport begun = s.beginFrame(frame);
         if (!begun.foliageInView) return;
         const PassInfo maskPass = s.beginMaskPass();

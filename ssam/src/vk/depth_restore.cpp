@@ -72,7 +72,7 @@ void ScreenSpaceAlphaMaskVk::Impl::saveOpaqueDepth(const detail::Generation& g) 
 // threshold (elsewhere the shader discards and the foliage depth stays).
 void ScreenSpaceAlphaMaskVk::Impl::restoreDepth(const detail::Generation& g, const detail::CompositePush& push) {
     const VkCommandBuffer cb = frame.commandBuffer;
-    beginPass(frame, g, framebuffers, detail::PassKind::DepthRestore, nullptr, g.restorePipeline);
+    beginPass(frame, g, &framebuffers, detail::PassKind::DepthRestore, nullptr, g.restorePipeline);
     const VkRect2D scissor{{region.x, region.y}, {std::uint32_t(region.width), std::uint32_t(region.height)}};
     vk.CmdSetScissor(cb, 0, 1, &scissor);
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.restoreLayout, 0, 1, &g.restoreSet, 0,

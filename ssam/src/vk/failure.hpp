@@ -16,6 +16,9 @@ struct Failure : std::runtime_error {
 };
 
 const char* resultName(VkResult result) noexcept;
+// "VK_FORMAT_R8G8B8A8_SRGB", or "VkFormat <n>" for a value Vulkan's headers do not name (messages
+// name what the host passed, not its number).
+std::string formatName(VkFormat format);
 
 // Throws DeviceError (OutOfMemory for the VK_ERROR_OUT_OF_*_MEMORY results) naming `what`.
 void check(VkResult result, const char* what);

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
+#include "../core/frame_rules.hpp"
 #include "bounds.hpp"
 #include "impl.hpp"
 
@@ -52,38 +54,92 @@ void ScreenSpaceAlphaMaskVk::Impl::checkFormat(VkFormat format, VkFormatFeatureF
     VkFormatProperties p;
     vk.GetPhysicalDeviceFormatProperties(device.physicalDevice, format, &p);
     if ((p.optimalTilingFeatures & needed) != needed)
-        throw Failure(Status::UnsupportedFeature, std::string("ssam::vk: this device cannot use format ") +
-                                                      std::to_string(int(format)) + " as " + what);
+        throw Failure(Status::UnsupportedFeature,
+                      "ssam::vk: this device cannot use format " + detail::formatName(format) + " as " + what);
 }
 
 void ScreenSpaceAlphaMaskVk::Impl::checkFrame(const FrameDesc& f) const {
-    if (!f.commandBuffer) throw Failure(Status::InvalidArgument, "ssam::vk: FrameDesc::commandBuffer is null");
-    if (!f.colorView || !f.depthView)
-        throw Failure(Status::InvalidArgument, "ssam::vk: FrameDesc needs colorView and depthView");
-    if (f.width == 0 || f.height == 0)
-        throw Failure(Status::InvalidArgument, "ssam::vk: frame size " + std::to_string(f.width) + "x" +
-                                                   std::to_string(f.height) + " is not positive");
+    const auto invalid = [](const std::string& what) { return Failure(Status::InvalidArgument, "ssam::vk: " + what); };
+    if (!f.commandBuffer) throw invalid("FrameDesc::commandBuffer is VK_NULL_HANDLE");
+    if (!f.colorView) throw invalid("FrameDesc::colorView is VK_NULL_HANDLE");
+    if (!f.depthView) throw invalid("FrameDesc::depthView is VK_NULL_HANDLE");
+    checkSize(f);
     checkFormats(f.colorFormat, f.depthFormat);
+    if (const std::string error = ssam::detail::matrixError(f.viewProj, "FrameDesc::viewProj"); !error.empty())
+        throw invalid(error);
     if (f.foliageBoundsCount > 0 && !f.foliageBounds)
-        throw Failure(Status::InvalidArgument, "ssam::vk: foliageBoundsCount is " +
-                                                   std::to_string(f.foliageBoundsCount) + " but foliageBounds is null");
+        throw invalid("FrameDesc::foliageBoundsCount is " + std::to_string(f.foliageBoundsCount) +
+                      " but foliageBounds is null");
+    for (std::size_t i = 0; i < f.foliageBoundsCount; ++i)
+        if (const std::string error = ssam::detail::boxError(f.foliageBounds[i].min, f.foliageBounds[i].max,
+                                                             "FrameDesc::foliageBounds[" + std::to_string(i) + "]");
+            !error.empty())
+            throw invalid(error);
     if (settings.depthMaskThreshold > 0.0f && !f.depthImage)
-        throw Failure(Status::InvalidArgument,
-                      "ssam::vk: FrameDesc::depthImage is null, but Settings::depthMaskThreshold > 0 copies the "
-                      "host's depth (the image of depthView, with TRANSFER_SRC usage)");
+        throw invalid(
+            "FrameDesc::depthImage is null, but Settings::depthMaskThreshold > 0 copies the host's depth (the image "
+            "of depthView, with TRANSFER_SRC usage)");
+    // Frame numbers decide when SSAM destroys what frames in flight may still use: numbers that go
+    // back would have it destroy objects of a frame still running.
     if (f.framesCompleted > f.frameIndex)
-        throw Failure(Status::InvalidArgument, "ssam::vk: framesCompleted " + std::to_string(f.framesCompleted) +
-                                                   " is past frameIndex " + std::to_string(f.frameIndex));
+        throw invalid("FrameDesc::framesCompleted " + std::to_string(f.framesCompleted) + " is past frameIndex " +
+                      std::to_string(f.frameIndex));
+    if (lastFrameIndex && f.frameIndex < *lastFrameIndex)
+        throw invalid("FrameDesc::frameIndex " + std::to_string(f.frameIndex) + " is below the last frame's " +
+                      std::to_string(*lastFrameIndex) + " (frame numbers go up)");
+    if (f.framesCompleted < lastFramesCompleted)
+        throw invalid("FrameDesc::framesCompleted " + std::to_string(f.framesCompleted) +
+                      " is below the last frame's " + std::to_string(lastFramesCompleted) +
+                      " (a frame that completed stays completed)");
+}
+
+// The frame against what the host declared of its images and against the device's limits
+// (VkPhysicalDeviceLimits): SSAM makes its intermediates and framebuffers of the frame's size,
+// and renders that much of the host's images.
+void ScreenSpaceAlphaMaskVk::Impl::checkSize(const FrameDesc& f) const {
+    const auto invalid = [](const std::string& what) { return Failure(Status::InvalidArgument, "ssam::vk: " + what); };
+    const auto extent = [](VkExtent2D e) { return std::to_string(e.width) + "x" + std::to_string(e.height); };
+    if (f.width == 0 || f.height == 0)
+        throw invalid("FrameDesc::" + std::string(f.width == 0 ? "width" : "height") + " is 0 (frame " +
+                      std::to_string(f.width) + "x" + std::to_string(f.height) + ")");
+    for (const auto& [name, declared] :
+         {std::pair{"colorImageExtent", f.colorImageExtent}, std::pair{"depthImageExtent", f.depthImageExtent}}) {
+        if (declared.width == 0 || declared.height == 0)
+            throw invalid(std::string("FrameDesc::") + name + " is " + extent(declared) +
+                          ": declare the extent of the view's image (Vulkan cannot tell SSAM a view's size)");
+    }
+    struct Limit {
+        const char* name;
+        std::uint32_t value;
+        bool width, height;  // which of the frame's sides it bounds
+    };
+    const Limit limits[] = {{"maxFramebufferWidth", maxFramebufferWidth, true, false},
+                            {"maxFramebufferHeight", maxFramebufferHeight, false, true},
+                            {"maxImageDimension2D", maxImageDimension2D, true, true}};
+    for (const Limit& l : limits) {
+        if (l.width && f.width > l.value)
+            throw invalid("FrameDesc::width " + std::to_string(f.width) + " is above this device's " + l.name + " " +
+                          std::to_string(l.value));
+        if (l.height && f.height > l.value)
+            throw invalid("FrameDesc::height " + std::to_string(f.height) + " is above this device's " + l.name + " " +
+                          std::to_string(l.value));
+    }
+    for (const auto& [name, declared] :
+         {std::pair{"colorImageExtent", f.colorImageExtent}, std::pair{"depthImageExtent", f.depthImageExtent}})
+        if (f.width > declared.width || f.height > declared.height)
+            throw invalid("the frame " + std::to_string(f.width) + "x" + std::to_string(f.height) +
+                          " (FrameDesc::width x height) is larger than FrameDesc::" + name + " " + extent(declared));
 }
 
 void ScreenSpaceAlphaMaskVk::Impl::checkFormats(VkFormat colorFormat, VkFormat depthFormat) const {
     if (!isColorFormat(colorFormat))
         throw Failure(Status::InvalidArgument,
-                      "ssam::vk: colorFormat " + std::to_string(int(colorFormat)) +
+                      "ssam::vk: colorFormat " + detail::formatName(colorFormat) +
                           " is not R8G8B8A8 / B8G8R8A8 UNORM or SRGB, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT");
     if (!isDepthFormat(depthFormat))
-        throw Failure(Status::InvalidArgument, "ssam::vk: depthFormat " + std::to_string(int(depthFormat)) +
-                                                   " is not a depth format SSAM takes (ssam_vk.hpp)");
+        throw Failure(Status::InvalidArgument, "ssam::vk: depthFormat " + detail::formatName(depthFormat) +
+                                                   " is not D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, "
+                                                   "D24_UNORM_S8_UINT or D32_SFLOAT_S8_UINT");
 }
 
 const detail::Generation& ScreenSpaceAlphaMaskVk::Impl::generationFor(const FrameDesc& f) {
@@ -230,18 +286,38 @@ void ScreenSpaceAlphaMaskVk::Impl::abandonFrame() noexcept {
         endPass(frame.commandBuffer, *generation,
                 phase == detail::Phase::InMaskPass ? detail::PassKind::Mask : detail::PassKind::Color);
     phase = detail::Phase::Idle;
-    framebuffers = nullptr;
+    framebuffers = {};
+}
+
+void ScreenSpaceAlphaMaskVk::Impl::warnIfFramesDoNotComplete() noexcept {
+    constexpr std::size_t kMany = 256;  // far more frames in flight than any host keeps
+    if (warnedFramesNotCompleting || frameFramebuffers.size() < kMany) return;
+    warnedFramesNotCompleting = true;
+    message(Severity::Warning, "ssam::vk: " + std::to_string(frameFramebuffers.size()) +
+                                   " frames' framebuffers wait for FrameDesc::framesCompleted (" +
+                                   std::to_string(lastFramesCompleted) +
+                                   ") to pass them: it must rise as the host's frames complete");
 }
 
 FrameReport ScreenSpaceAlphaMaskVk::Impl::beginFrame(const FrameDesc& f) {
     expect(detail::Phase::Idle, "beginFrame");
     checkFrame(f);
+    lastFrameIndex = f.frameIndex;
+    lastFramesCompleted = f.framesCompleted;
+    frameFramebuffers.collect(f.framesCompleted,
+                              [this](const detail::FrameFramebuffers& fb) { detail::destroyFramebuffers(vk, fb); });
     retired.collect(f.framesCompleted);
     FrameReport report;
     const std::optional<Rect> visible = detail::compositeRegion(f);
     if (!visible) return report;  // no foliage in view: nothing recorded, not even SSAM's targets made
     detail::Generation& g = const_cast<detail::Generation&>(generationFor(f));
-    framebuffers = dynamic() ? nullptr : &g.framebuffersFor(vk, f.colorView, f.depthView, f.frameIndex, retired);
+    if (!dynamic()) {
+        // New ones every frame, whatever the views' handle values (frame_scoped.hpp).
+        frameFramebuffers.reserveOne();
+        framebuffers = g.createFramebuffers(vk, f.colorView, f.depthView);
+        frameFramebuffers.add(f.frameIndex, framebuffers);
+        warnIfFramesDoNotComplete();
+    }
     g.lastUsedFrame = f.frameIndex;
     frame = f;
     updateConstants(f, f.commandBuffer);
@@ -265,7 +341,7 @@ PassInfo ScreenSpaceAlphaMaskVk::Impl::beginFoliagePass(FoliagePass which) {
     const detail::Generation& g = *generation;
     // Settings::depthMaskThreshold: the opaque depth, before the colour pass writes the foliage's.
     if (!mask && g.key.depthRestore) saveOpaqueDepth(g);
-    beginPass(frame, g, framebuffers, kindOf(which), clear, VK_NULL_HANDLE);
+    beginPass(frame, g, &framebuffers, kindOf(which), clear, VK_NULL_HANDLE);
     phase = mask ? detail::Phase::InMaskPass : detail::Phase::InColorPass;
     return {which, frame.commandBuffer, mask ? 0.0f : settings.colorAlphaReference, mask && g.key.maskPair() ? 2u : 1u};
 }
@@ -317,7 +393,7 @@ void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
     expect(detail::Phase::ColorDone, "composite");
     const detail::Generation& g = *generation;
     const VkCommandBuffer cb = frame.commandBuffer;
-    beginPass(frame, g, framebuffers, detail::PassKind::Composite, nullptr, g.compositePipeline);
+    beginPass(frame, g, &framebuffers, detail::PassKind::Composite, nullptr, g.compositePipeline);
     const VkRect2D scissor{{region.x, region.y}, {std::uint32_t(region.width), std::uint32_t(region.height)}};
     vk.CmdSetScissor(cb, 0, 1, &scissor);  // only where the foliage can be
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.compositeLayout, 0, 1, &g.compositeSet, 0,
@@ -329,11 +405,11 @@ void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
     endPass(cb, g, detail::PassKind::Composite);
     if (g.key.depthRestore) restoreDepth(g, push);
     phase = detail::Phase::Idle;
-    framebuffers = nullptr;
+    framebuffers = {};
 }
 
 FrameReport ScreenSpaceAlphaMaskVk::Impl::render(const FrameDesc& f, DrawFoliage draw, void* user) {
-    expectInitialized("render");
+    expect(detail::Phase::Idle, "render");  // named as the host called it, not as beginFrame
     const FrameReport report = beginFrame(f);
     if (!report.foliageInView) return report;
     for (FoliagePass pass : {FoliagePass::Mask, FoliagePass::Color}) {

@@ -12,6 +12,7 @@
 
 #include "dynamic_rendering.hpp"
 #include "failure.hpp"
+#include "frame_scoped.hpp"
 #include "pipelines.hpp"
 #include "resources.hpp"
 #include "vk_functions.hpp"
@@ -95,12 +96,20 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     std::vector<VkDescriptorPool> textureSetPools;
     std::optional<detail::Generation> generation;
     detail::Retired retired;
+    // RenderPass path: each frame's framebuffers over the host's views, until the frame completes.
+    detail::FrameScoped<detail::FrameFramebuffers> frameFramebuffers;
+    // The last frame begun (beginFrame): frame numbers may repeat, not go back.
+    std::optional<std::uint64_t> lastFrameIndex;
+    std::uint64_t lastFramesCompleted = 0;
+    bool warnedFramesNotCompleting = false;
+    // VkPhysicalDeviceLimits SSAM's targets must keep to (initialize).
+    std::uint32_t maxFramebufferWidth = 0, maxFramebufferHeight = 0, maxImageDimension2D = 0;
 
     // The open frame (way b, and way a through it).
     detail::Phase phase = detail::Phase::Idle;
     FrameDesc frame;
-    const detail::FrameFramebuffers* framebuffers = nullptr;  // RenderPass path
-    Rect region;                                              // the composite's scissor
+    detail::FrameFramebuffers framebuffers;  // RenderPass path: this frame's (also in frameFramebuffers)
+    Rect region;                             // the composite's scissor
 
     // Way (b): render passes compatible with SSAM's, handed out by pipelineState().
     struct CompatiblePass {
@@ -138,7 +147,7 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     }
     template <class Body>
     // Runs one public call: Ok, or the Failure's status with its message; a frame call that fails
-    // abandons the open frame (abandonFrame), a query (`frameCall` false) leaves it.
+    // abandons the open frame (abandonFrame), a query or a texture call (`frameCall` false) leaves it.
     Status run(Body&& body, bool frameCall = true) noexcept {
         try {
             body();
@@ -168,6 +177,9 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     VkFormat maskFormat() const;
     void checkFormat(VkFormat format, VkFormatFeatureFlags needed, const char* what) const;
     void checkFrame(const FrameDesc& f) const;
+    void checkSize(const FrameDesc& f) const;
+    // A host whose framesCompleted stays put piles up per-frame framebuffers: said once (Warning).
+    void warnIfFramesDoNotComplete() noexcept;
     const detail::Generation& generationFor(const FrameDesc& f);
     void updateConstants(const FrameDesc& f, VkCommandBuffer cb);
     // A pass begun on either path (RenderingPath), its pipeline bound, viewport and scissor the frame.

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "pipelines.hpp"
 
-#include <algorithm>
 #include <array>
 #include <string>
 
@@ -236,13 +235,6 @@ VkFramebuffer createFramebuffer(const VkFunctions& vk, VkRenderPass pass, std::i
     return framebuffer;
 }
 
-void destroyFramebuffers(const VkFunctions& vk, const FrameFramebuffers& f) noexcept {
-    for (VkFramebuffer fb : {f.mask, f.color, f.composite, f.restore})
-        if (fb) vk.DestroyFramebuffer(vk.device, fb, vk.allocator);
-}
-
-constexpr std::size_t kFramebufferCacheSize = 8;  // e.g. a swapchain's images, each with its depth
-
 }  // namespace
 
 void fixedState(PassKind kind, const Settings& settings, PipelineState& state) {
@@ -424,8 +416,12 @@ void Generation::create(const VkFunctions& vk, const MemorySource& memory, const
     }
 }
 
+void destroyFramebuffers(const VkFunctions& vk, const FrameFramebuffers& f) noexcept {
+    for (VkFramebuffer fb : {f.mask, f.color, f.composite, f.restore})
+        if (fb) vk.DestroyFramebuffer(vk.device, fb, vk.allocator);
+}
+
 void Generation::destroy(const VkFunctions& vk, const MemorySource& memory) noexcept {
-    for (const FrameFramebuffers& f : framebuffers) destroyFramebuffers(vk, f);
     for (VkPipeline p : {maskPipeline, colorPipeline, compositePipeline, restorePipeline})
         if (p) vk.DestroyPipeline(vk.device, p, vk.allocator);
     for (VkRenderPass p : {maskPass, colorPass, compositePass, restorePass})
@@ -435,25 +431,8 @@ void Generation::destroy(const VkFunctions& vk, const MemorySource& memory) noex
     *this = {};
 }
 
-const FrameFramebuffers& Generation::framebuffersFor(const VkFunctions& vk, VkImageView color, VkImageView depth,
-                                                     std::uint64_t frame, Retired& retired) {
-    for (FrameFramebuffers& f : framebuffers)
-        if (f.hostColor == color && f.hostDepth == depth) {
-            f.lastUsedFrame = frame;
-            return f;
-        }
-    if (framebuffers.size() >= kFramebufferCacheSize) {
-        const auto oldest = std::min_element(
-            framebuffers.begin(), framebuffers.end(),
-            [](const FrameFramebuffers& a, const FrameFramebuffers& b) { return a.lastUsedFrame < b.lastUsedFrame; });
-        const FrameFramebuffers old = *oldest;
-        retired.add(old.lastUsedFrame, [&vk, old] { destroyFramebuffers(vk, old); });
-        framebuffers.erase(oldest);
-    }
+FrameFramebuffers Generation::createFramebuffers(const VkFunctions& vk, VkImageView color, VkImageView depth) const {
     FrameFramebuffers f;
-    f.hostColor = color;
-    f.hostDepth = depth;
-    f.lastUsedFrame = frame;
     try {
         f.mask = key.maskPair()
                      ? createFramebuffer(vk, maskPass, {mask.view, maskAdd.view, depth}, key.width, key.height)
@@ -465,8 +444,7 @@ const FrameFramebuffers& Generation::framebuffersFor(const VkFunctions& vk, VkIm
         destroyFramebuffers(vk, f);
         throw;
     }
-    framebuffers.push_back(f);
-    return framebuffers.back();
+    return f;
 }
 
 }  // namespace ssam::vk::detail

@@ -2,8 +2,9 @@
 #pragma once
 // ssam::vk's Vulkan objects: those made once (shader modules from the embedded SPIR-V, descriptor
 // set and pipeline layouts, samplers) and a Generation -- what depends on the frame's formats and
-// size and on the settings (render passes, pipelines, intermediate images, framebuffers over the
-// host's views). A frame with another key makes a new Generation and retires the old one.
+// size and on the settings (render passes, pipelines, intermediate images). A frame with another
+// key makes a new Generation and retires the old one. The framebuffers over the host's views are
+// made per frame (FrameFramebuffers, frame_scoped.hpp): they name objects SSAM does not own.
 #include <cstdint>
 #include <vector>
 
@@ -61,11 +62,11 @@ struct GenerationKey {
     }
 };
 
+// One frame's framebuffers (RenderPass path) over the host's views and SSAM's intermediates.
 struct FrameFramebuffers {
-    VkImageView hostColor = VK_NULL_HANDLE, hostDepth = VK_NULL_HANDLE;
     VkFramebuffer mask = VK_NULL_HANDLE, color = VK_NULL_HANDLE, composite = VK_NULL_HANDLE, restore = VK_NULL_HANDLE;
-    std::uint64_t lastUsedFrame = 0;
 };
+void destroyFramebuffers(const VkFunctions& vk, const FrameFramebuffers& framebuffers) noexcept;
 
 struct Generation {
     GenerationKey key;
@@ -77,7 +78,6 @@ struct Generation {
     Image savedDepth;              // depthRestore only: the opaque depth, copied before the colour pass
     VkDescriptorPool pool = VK_NULL_HANDLE;
     VkDescriptorSet compositeSet = VK_NULL_HANDLE, restoreSet = VK_NULL_HANDLE;
-    std::vector<FrameFramebuffers> framebuffers;  // one per pair of host views seen lately
     std::uint64_t lastUsedFrame = 0;
 
     // dynamicRendering: no render passes (the pipelines take VkPipelineRenderingCreateInfo) and
@@ -85,10 +85,9 @@ struct Generation {
     void create(const VkFunctions& vk, const MemorySource& memory, const SharedObjects& shared,
                 const GenerationKey& key, const Settings& settings, bool dynamicRendering);
     void destroy(const VkFunctions& vk, const MemorySource& memory) noexcept;
-    // The framebuffers over the host's views (made on first use; the least recently used of
-    // more than a few retired to `retired`).
-    const FrameFramebuffers& framebuffersFor(const VkFunctions& vk, VkImageView color, VkImageView depth,
-                                             std::uint64_t frame, Retired& retired);
+    // New framebuffers over the host's views for one frame (never reused for another: the
+    // caller keeps them in a FrameScoped); none made if one fails.
+    FrameFramebuffers createFramebuffers(const VkFunctions& vk, VkImageView color, VkImageView depth) const;
 };
 
 }  // namespace ssam::vk::detail

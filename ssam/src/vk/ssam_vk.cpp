@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "../knob_rules.hpp"
+#include "ssam/core/settings.hpp"
 #include "impl.hpp"
 
 namespace ssam::vk {
@@ -58,12 +58,17 @@ void validate(const Settings& s) {
     if (depth < 0 || depth > static_cast<int>(DepthTest::GreaterEqual))
         throw Failure(Status::InvalidArgument,
                       "ssam::vk settings: depthTest " + std::to_string(depth) + " is not a DepthTest");
-    if (const std::string error = ssam::detail::knobError(s.maskLerp, s.colorAlphaReference, s.foliageClearColor);
-        !error.empty())
-        throw Failure(Status::InvalidArgument, "ssam::vk settings: " + error);
-    if (!std::isfinite(s.depthMaskThreshold) || s.depthMaskThreshold < 0.0f || s.depthMaskThreshold > 1.0f)
-        throw Failure(Status::InvalidArgument, "ssam::vk settings: depthMaskThreshold = " +
-                                                   std::to_string(s.depthMaskThreshold) + " is outside [0, 1]");
+    // The knobs by the core's rules (ssam::settingsError), as every SSAM checks them.
+    ssam::Settings knobs;
+    knobs.maskLerp = s.maskLerp;
+    knobs.colorAlphaReference = s.colorAlphaReference;
+    for (int c = 0; c < 4; ++c) knobs.foliageClearColor[c] = s.foliageClearColor[c];
+    knobs.squareMask = s.squareMask;
+    knobs.maskPrecision = static_cast<ssam::MaskPrecision>(precision);
+    knobs.depthTest = static_cast<ssam::DepthTest>(depth);
+    knobs.depthMaskThreshold = s.depthMaskThreshold;
+    if (const std::string error = ssam::settingsError(knobs); !error.empty())
+        throw Failure(Status::InvalidArgument, "ssam::vk: " + error);
     const VertexLayout& v = s.vertexLayout;
     if (v.bindingCount == 0 || v.bindingCount > VertexLayout::kMaxBindings)
         throw Failure(Status::InvalidArgument, "ssam::vk settings: vertexLayout.bindingCount " +
@@ -176,6 +181,9 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
     }
     VkPhysicalDeviceProperties properties;
     vk.GetPhysicalDeviceProperties(desc.physicalDevice, &properties);
+    maxFramebufferWidth = properties.limits.maxFramebufferWidth;
+    maxFramebufferHeight = properties.limits.maxFramebufferHeight;
+    maxImageDimension2D = properties.limits.maxImageDimension2D;
     message(Severity::Info, std::string("ssam::vk initialised on ") + properties.deviceName + " (Vulkan " +
                                 std::to_string(VK_API_VERSION_MAJOR(desc.apiVersion)) + "." +
                                 std::to_string(VK_API_VERSION_MINOR(desc.apiVersion)) + ")");
@@ -184,7 +192,11 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
 void ScreenSpaceAlphaMaskVk::Impl::releaseObjects() noexcept {
     if (!initialized) return;
     abandonFrame();
+    frameFramebuffers.destroyAll([this](const detail::FrameFramebuffers& fb) { detail::destroyFramebuffers(vk, fb); });
     retired.destroyAll();
+    lastFrameIndex.reset();
+    lastFramesCompleted = 0;
+    warnedFramesNotCompleting = false;
     for (const CompatiblePass& c : compatiblePasses) vk.DestroyRenderPass(vk.device, c.pass, vk.allocator);
     compatiblePasses.clear();
     if (generation) generation->destroy(vk, memory);
@@ -204,7 +216,7 @@ void ScreenSpaceAlphaMaskVk::Impl::releaseObjects() noexcept {
 
 TextureId ScreenSpaceAlphaMaskVk::Impl::createTexture(VkImageView view, VkSampler sampler) {
     expectInitialized("createTexture");
-    if (!view) throw Failure(Status::InvalidArgument, "ssam::vk: createTexture without an image view");
+    if (!view) throw Failure(Status::InvalidArgument, "ssam::vk: createTexture() with view VK_NULL_HANDLE");
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocate.descriptorSetCount = 1;
@@ -306,15 +318,18 @@ const Settings& ScreenSpaceAlphaMaskVk::settings() const noexcept {
 Status ScreenSpaceAlphaMaskVk::createTexture(VkImageView view, VkSampler sampler, TextureId* id) noexcept {
     if (!impl_) return Status::InvalidCall;
     if (id) *id = 0;
-    return impl_->run([&] {
-        const TextureId made = impl_->createTexture(view, sampler);
-        if (id) *id = made;
-    });
+    return impl_->run(
+        [&] {
+            // Checked before anything is made: a texture without its id could never be bound or destroyed.
+            if (!id) throw Failure(Status::InvalidArgument, "ssam::vk: createTexture() with id null");
+            *id = impl_->createTexture(view, sampler);
+        },
+        false);
 }
 
 Status ScreenSpaceAlphaMaskVk::destroyTexture(TextureId id, std::uint64_t lastFrameIndex) noexcept {
     if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->destroyTexture(id, lastFrameIndex); });
+    return impl_->run([&] { impl_->destroyTexture(id, lastFrameIndex); }, false);
 }
 
 Status ScreenSpaceAlphaMaskVk::render(const FrameDesc& frame, DrawFoliage draw, void* user,

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "failure.hpp"
+#include "ssam_vk_enum_names.hpp"  // generated from <vulkan/vulkan_core.h> (cmake/vk_enum_names.cmake)
 
 namespace ssam::vk::detail {
 
@@ -20,6 +21,11 @@ const char* resultName(VkResult result) noexcept {
         case VK_ERROR_INVALID_SHADER_NV: return "VK_ERROR_INVALID_SHADER_NV";
         default: return "a VkResult";
     }
+}
+
+std::string formatName(VkFormat format) {
+    const char* name = enumName(format);
+    return name ? name : "VkFormat " + std::to_string(static_cast<int>(format));
 }
 
 void check(VkResult result, const char* what) {

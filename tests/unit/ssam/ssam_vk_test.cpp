@@ -17,6 +17,7 @@
 
 #include <ssam/vk/ssam_vk.hpp>
 
+#include "ssam_vk_support.hpp"
 #include "vk_host.hpp"
 
 namespace {
@@ -25,23 +26,7 @@ using ssam::vk::ScreenSpaceAlphaMaskVk;
 using ssam::vk::Status;
 using ::testing::HasSubstr;
 
-struct Messages {
-    std::vector<std::string> errors;
-    static void record(void* user, ssam::vk::Severity severity, const char* message) {
-        if (severity == ssam::vk::Severity::Error) static_cast<Messages*>(user)->errors.push_back(message);
-    }
-};
-
-ssam::vk::DeviceDesc describe(const vk_example::VulkanHost& host) {
-    ssam::vk::DeviceDesc d;
-    d.instance = host.instance;
-    d.physicalDevice = host.physical;
-    d.device = host.device;
-    d.queueFamily = host.queueFamily;
-    d.apiVersion = host.apiVersion;
-    d.getInstanceProcAddr = vkGetInstanceProcAddr;
-    return d;
-}
+using namespace ssam_vk_test;
 
 class SsamVk : public ::testing::Test {
 protected:
@@ -133,58 +118,6 @@ struct HostMemory {
         auto* self = static_cast<HostMemory*>(user);
         if (--self->live[memory] == 0) self->live.erase(memory);
         vkFreeMemory(self->host->device, memory, nullptr);
-    }
-};
-
-// Host render targets of one size, cleared by a render pass of the host's own that leaves them as
-// ssam::vk's contract asks.
-struct Targets {
-    vk_example::VulkanHost& host;
-    std::uint32_t width, height;
-    vk_example::HostImage color, depth;
-    Targets(vk_example::VulkanHost& h, std::uint32_t w, std::uint32_t hgt) : host(h), width(w), height(hgt) {
-        color = host.createImage(VK_FORMAT_R8G8B8A8_UNORM, w, hgt, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                                 VK_IMAGE_ASPECT_COLOR_BIT);
-        depth = host.createImage(VK_FORMAT_D32_SFLOAT, w, hgt, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                 VK_IMAGE_ASPECT_DEPTH_BIT);
-    }
-    ~Targets() {
-        host.destroy(color);
-        host.destroy(depth);
-    }
-    // A frame of SSAM's over these targets, recorded into `cb`.
-    ssam::vk::FrameDesc frame(VkCommandBuffer cb) const {
-        ssam::vk::FrameDesc f;
-        f.commandBuffer = cb;
-        f.colorView = color.view;
-        f.colorFormat = color.format;
-        f.depthView = depth.view;
-        f.depthFormat = depth.format;
-        f.width = width;
-        f.height = height;
-        return f;
-    }
-    // Into the contract's entry layouts (attachment writes: an image barrier of attachment stages).
-    void prepare(VkCommandBuffer cb) const {
-        VkImageMemoryBarrier b[2]{{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER}, {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER}};
-        b[0].image = color.image;
-        b[0].newLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        b[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT;
-        b[0].subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        b[1].image = depth.image;
-        b[1].newLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-        b[1].dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-        b[1].subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-        for (auto& x : b) {
-            x.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-            x.srcQueueFamilyIndex = x.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        }
-        vkCmdPipelineBarrier(cb,
-                             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                             0, 0, nullptr, 0, nullptr, 2, b);
     }
 };
 
@@ -414,7 +347,7 @@ TEST_F(SsamVk, DepthMaskThresholdNeedsTheDepthImage) {
     ssam::vk::Settings s;
     s.depthMaskThreshold = 1.5f;
     EXPECT_EQ(ssam.initialize(describe(host), s), Status::InvalidArgument);
-    EXPECT_THAT(ssam.lastMessage(), HasSubstr("depthMaskThreshold = 1.500000 is outside [0, 1]"));
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("depthMaskThreshold = 1.5 is outside [0, 1]"));
     s.depthMaskThreshold = 0.5f;
     ASSERT_EQ(ssam.initialize(describe(host), s), Status::Ok) << ssam.lastMessage();
     Targets t(host, 8, 8);

@@ -5,11 +5,11 @@
 // onto the host's colour image and writes the foliage depth into the host's depth image (for
 // later transparent passes, §3.7). It never submits, waits or touches a queue.
 //
-// Host-neutral: standard C++17 and <vulkan/vulkan.h> (types only; define VK_NO_PROTOTYPES or not,
-// as the host likes). No link-time dependency on libvulkan: every Vulkan function is resolved
-// through the host's vkGetInstanceProcAddr / vkGetDeviceProcAddr. Nothing throws into host code:
-// every call returns a Status, and the reason goes to an optional message callback and
-// lastMessage(). SPIR-V is compiled when SSAM is built and carried inside the library.
+// Host-neutral: standard C++17, <ssam/version.hpp> and <vulkan/vulkan.h> (types only; define
+// VK_NO_PROTOTYPES or not, as the host likes). No link-time dependency on libvulkan: every Vulkan
+// function is resolved through the host's vkGetInstanceProcAddr / vkGetDeviceProcAddr. Nothing
+// throws into host code: every call returns a Status, and the reason goes to an optional message
+// callback and lastMessage(). SPIR-V is compiled when SSAM is built and carried inside the library.
 //
 // Two ways to draw the foliage, as ssam::gl's:
 //  (a) SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
@@ -46,19 +46,32 @@
 // TRANSFER / TRANSFER_READ). Between its passes SSAM records its own barriers (its uniform update,
 // its intermediates), and it never waits on the device.
 //
-// Lifetime: SSAM's objects (render passes, pipelines, its intermediate images, framebuffers over
-// the host's views) live until release() or the destructor, which need the host's device idle for
-// them (vkDeviceWaitIdle, or every command buffer SSAM recorded into completed). What SSAM
-// replaces while running (intermediates on a resize, framebuffers of views no longer used) it
-// destroys once FrameDesc::framesCompleted says no frame that used them is still in flight.
+// Lifetime: SSAM's own objects (render passes, pipelines, its intermediate images) live until
+// release() or the destructor, which need the host's device idle for them (vkDeviceWaitIdle, or
+// every command buffer SSAM recorded into completed). What SSAM replaces while running
+// (intermediates on a resize) it destroys once FrameDesc::framesCompleted says no frame that used
+// them is still in flight. Nothing SSAM keeps outlives a host object it names: the framebuffers
+// over the host's views (RenderPass path) are made for each frame and destroyed once
+// framesCompleted passes it, never looked up again by the views' handle values (a recreated view
+// may get a destroyed one's value back), so the host may destroy and recreate its targets as soon
+// as the frames that used them completed, with no call to SSAM.
 // The host keeps alive until then: its device, its image views given in FrameDesc, its vertex
 // buffers and textures (and their samplers) bound through FoliageProgram.
+//
+// What SSAM checks: its own call order, every FrameDesc / Settings / DeviceDesc field it can
+// judge (sizes against the device's limits and the declared image extents, formats, finite
+// matrices and bounds, frame numbers). What only the validation layer sees (Vulkan has no query
+// for them): a command buffer not recording or inside a render pass, images not in the contract's
+// layouts, destroyed or wrong views (another image, level, usage or a format unlike the one
+// declared), extents declared wrong, and the host's own draws (ssam/docs/vk_host_checks.md).
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <type_traits>
 
 #include <vulkan/vulkan.h>
+
+#include "ssam/version.hpp"  // SSAM_VERSION_MAJOR / MINOR / PATCH, generated (cmake/package.cmake)
 
 namespace ssam::vk {
 
@@ -67,7 +80,7 @@ namespace ssam::vk {
 enum class Status : int {
     Ok = 0,
     InvalidArgument,     // a bad setting, frame, device description or callback (the message names it)
-    InvalidCall,         // out of order: not initialised, a frame from inside a render pass, ...
+    InvalidCall,         // out of order: not initialised, a pass outside a frame, a frame in a frame, ...
     MissingEntryPoint,   // the host's loader returned no address for a function SSAM needs (named)
     UnsupportedFeature,  // the device lacks what a setting needs (named), e.g. a format as attachment
     DeviceError,         // a Vulkan call failed (the message names it and its VkResult)
@@ -205,29 +218,39 @@ struct FrameDesc {
     // R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT (sRGB blends in linear, as Vulkan does).
     VkImageView colorView = VK_NULL_HANDLE;
     VkFormat colorFormat = VK_FORMAT_UNDEFINED;
+    // Required: the extent of colorView's image at the view's level (VkImageCreateInfo::extent for
+    // a view of level 0). Vulkan cannot tell SSAM a view's size: SSAM renders width x height into
+    // it, and refuses a frame larger than this (InvalidArgument) instead of writing past the image.
+    VkExtent2D colorImageExtent{0, 0};
     // Its depth: D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D24_UNORM_S8_UINT or D32_SFLOAT_S8_UINT,
-    // DEPTH_STENCIL_ATTACHMENT usage, the same size. Receives the foliage depth.
+    // DEPTH_STENCIL_ATTACHMENT usage. Receives the foliage depth.
     VkImageView depthView = VK_NULL_HANDLE;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+    VkExtent2D depthImageExtent{0, 0};  // required: as colorImageExtent, of depthView's image
     // The image of depthView: needed only with Settings::depthMaskThreshold > 0, then created with
     // TRANSFER_SRC usage (SSAM copies its depth aspect, see the contract above).
     VkImage depthImage = VK_NULL_HANDLE;
+    // The frame SSAM renders, from the images' top-left corner: 1 to the device's
+    // maxFramebufferWidth / Height and maxImageDimension2D, and within both declared extents.
     std::uint32_t width = 0;
     std::uint32_t height = 0;
-    // Column-major, in the host's clip conventions (Vulkan's: y down, z in [0, w] unless the
+    // Column-major, finite, in the host's clip conventions (Vulkan's: y down, z in [0, w] unless the
     // host's projection says otherwise; SSAM draws with a viewport of the whole frame, y down).
     float viewProj[16] = {1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f,
                           0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f};
     Light light;
     // World-space boxes around everything the host will draw. Given (count > 0): when none is in
     // view nothing is recorded (SSAM costs nothing, the callback is not called) and the composite
-    // is scissored to their screen region. Not given: every pass covers the whole frame.
+    // is scissored to their screen region. Not given: every pass covers the whole frame. Each box
+    // finite, min <= max, with an extent in two axes at least (flat in one: a card is fine).
     const Box* foliageBounds = nullptr;
     std::size_t foliageBoundsCount = 0;
     // Deferred destruction (N frames in flight is the host's choice): `frameIndex` numbers the
     // frame being recorded (increasing); every frame numbered below `framesCompleted` has finished
     // on the device (its fence signalled). Objects SSAM retires are destroyed once no frame that
-    // used them can still run. framesCompleted = frameIndex: nothing is in flight.
+    // used them can still run. framesCompleted = frameIndex: nothing is in flight. Neither may go
+    // back from one frame to the next (several SSAM frames in one host frame may share numbers);
+    // framesCompleted must move on, or what SSAM retires (each frame's framebuffers) piles up.
     std::uint64_t frameIndex = 0;
     std::uint64_t framesCompleted = 0;
 };
@@ -326,8 +349,8 @@ public:
 
     // A host texture the built-in programs may sample (a 2D view in SHADER_READ_ONLY_OPTIMAL, ready
     // for fragment-shader reads when the frame runs: the host's barrier), with the host's sampler
-    // or, for VK_NULL_HANDLE, SSAM's linear clamp-to-edge one. destroyTexture retires it: gone
-    // once FrameDesc::framesCompleted passes `lastFrameIndex`.
+    // or, for VK_NULL_HANDLE, SSAM's linear clamp-to-edge one; `id` is required. destroyTexture
+    // retires it: gone once FrameDesc::framesCompleted passes `lastFrameIndex`.
     Status createTexture(VkImageView view, VkSampler sampler, TextureId* id) noexcept;
     Status destroyTexture(TextureId id, std::uint64_t lastFrameIndex) noexcept;
 
