@@ -53,10 +53,8 @@ Format toFormat(core::TargetFormat format, Format hostColor) {
 PipelineDesc pipelineDesc(const core::PassDescription& pass, ProgramHandle fullScreenProgram) {
     PipelineDesc d;
     d.name = pass.name;
-    if (pass.fullScreen)
-        d.program = fullScreenProgram;
-    else
-        d.program = pass.kind == core::PassKind::Mask ? ProgramKind::AlphaOnly : ProgramKind::MaskedLit;
+    if (pass.fullScreen) d.program = fullScreenProgram;
+    else d.program = pass.kind == core::PassKind::Mask ? ProgramKind::AlphaOnly : ProgramKind::MaskedLit;
     if (pass.depthTest)
         d.depth = pass.depthWrite ? DepthState::testAndWrite(compareFuncOf(pass.depthCompare))
                                   : DepthState::testOnly(compareFuncOf(pass.depthCompare));
@@ -201,7 +199,8 @@ FramePlan ScreenSpaceAlphaMask::cull(int width, int height, const FoliageView& v
     plan.height = height;
     for (const MaskedBatch& batch : view.batches) {
         if (batch.count == 0 || batch.instanceCount == 0) continue;
-        const std::optional<engine::render::Rect> region = screenBounds(batch.worldBounds, view.viewProj, plan.width, plan.height);
+        const std::optional<engine::render::Rect> region =
+            screenBounds(batch.worldBounds, view.viewProj, plan.width, plan.height);
         if (!region) continue;
         plan.visible.push_back(&batch);
         plan.compositeRegion = unite(plan.compositeRegion, *region);

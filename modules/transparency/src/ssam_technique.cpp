@@ -16,7 +16,8 @@ namespace {
 
 class SsamTechnique final : public Technique {
 public:
-    SsamTechnique(engine::render::Backend& backend, const TechniqueOptions& options) : ssam_(backend, ssamSettings(options)) {}
+    SsamTechnique(engine::render::Backend& backend, const TechniqueOptions& options)
+        : ssam_(backend, ssamSettings(options)) {}
 
     TechniqueKind kind() const override { return TechniqueKind::Ssam; }
 

@@ -40,10 +40,10 @@ struct PassDescription {
     bool depthTest = false;  // against the host's depth, with `depthCompare`
     bool depthWrite = false;
     DepthTest depthCompare = DepthTest::Less;
-    bool alphaTest = false;       // the colour pass: fragments with !(alpha >= alphaReference) are discarded
+    bool alphaTest = false;  // the colour pass: fragments with !(alpha >= alphaReference) are discarded
     float alphaReference = 0.0f;
-    bool cullBackFaces = false;   // foliage cards are seen from both sides (§3.5.2-3)
-    bool fullScreen = false;      // one triangle over the frame, scissored to the composite region
+    bool cullBackFaces = false;  // foliage cards are seen from both sides (§3.5.2-3)
+    bool fullScreen = false;     // one triangle over the frame, scissored to the composite region
 };
 
 // The passes of a frame with foliage in view, in order. depthRestore runs only when

@@ -334,10 +334,8 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     void applyPass(const core::PassDescription& pass) {
         // No SSAM pass culls today (cards are seen from both sides); a culling pass would cull the
         // faces the host's glCullFace names.
-        if (pass.cullBackFaces)
-            gl.Enable(GL_CULL_FACE);
-        else
-            gl.Disable(GL_CULL_FACE);
+        if (pass.cullBackFaces) gl.Enable(GL_CULL_FACE);
+        else gl.Disable(GL_CULL_FACE);
         if (pass.depthTest) {
             gl.Enable(GL_DEPTH_TEST);
             gl.DepthFunc(toGl(pass.depthCompare));
@@ -379,7 +377,8 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         passState.emplace(gl);
         phase = Phase::InColorPass;
         setFoliagePassState();
-        if (core::describePasses(settings).restoresDepth)  // the opaque depth, before the colour pass writes the foliage's
+        if (core::describePasses(settings)
+                .restoresDepth)  // the opaque depth, before the colour pass writes the foliage's
             depthRestore.saveOpaqueDepth(gl, targets.maskFramebuffer(), targets.depthFormat(), frame.width,
                                          frame.height, region);
         const core::PassDescription pass = core::describePasses(settings).color;

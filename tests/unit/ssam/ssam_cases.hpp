@@ -108,7 +108,7 @@ TYPED_TEST_P(SsamCases, ColourPassAlphaTestsAndWritesFoliageDepth) {
     const Readback foliage = f.backend->readback(ssam.intermediates().foliage);
     const Readback depth = f.backend->readback(f.opaque.depth());
     const float clearGreen = ssam::Settings{}.foliageClearColor[1];
-    EXPECT_FLOAT_EQ(foliage.at(kOverlap, 4, 0), 1.0f);        // A's red
+    EXPECT_FLOAT_EQ(foliage.at(kOverlap, 4, 0), 1.0f);          // A's red
     EXPECT_FLOAT_EQ(foliage.at(kOnlyB, 4, 1), q8(clearGreen));  // B rejected: the clear colour shows
     EXPECT_NEAR(depth.at(kOverlap, 4, 0), 0.3f, 1e-6f);
     EXPECT_NEAR(depth.at(kOnlyB, 4, 0), 1.0f, 1e-6f);  // nothing written where B was rejected

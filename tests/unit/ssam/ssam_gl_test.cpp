@@ -300,7 +300,7 @@ TEST(SsamGl, BadInputIsRejectedWithAStatusAndAMessage) {
     expectStatus(ssam->setSettings(bad), invalidArgument, "maskLerp");
     bad = {};
     bad.depthTest = static_cast<ssam::gl::DepthTest>(42);
-    expectStatus(ssam->setSettings(bad), invalidArgument, "depthTest 42 is not a DepthTest");
+    expectStatus(ssam->setSettings(bad), invalidArgument, "depthTest = 42 is not a DepthTest");
     bad = {};
     bad.foliageClearColor[2] = NAN;
     expectStatus(ssam->setSettings(bad), invalidArgument, "foliageClearColor");
