@@ -50,7 +50,7 @@ set(probe_env "")
 # 0.x: another minor version is another API (CHANGELOG.md): an older or newer request fails, saying
 # why; any 0.4.x satisfies 0.4.
 probe(ok "ssam targets: " -DSSAM_VERSION_WANTED=0.4.0)
-probe(fail "version: 0\\.4\\.0.*ssam 0\\.4\\.0 does not satisfy a request for 0\\.3: while ssam is 0\\.x"
+probe(fail "ssam 0\\.4\\.0 \\([^)]*\\) does not satisfy a request for 0\\.3: while ssam is 0\\.x.*version: 0\\.4\\.0"
       -DSSAM_VERSION_WANTED=0.3)
-probe(fail "version: 0\\.4\\.0.*does not satisfy a request for 0\\.5" -DSSAM_VERSION_WANTED=0.5)
+probe(fail "does not satisfy a request for 0\\.5.*version: 0\\.4\\.0" -DSSAM_VERSION_WANTED=0.5)
 probe(fail "version: 0\\.4\\.0" -DSSAM_VERSION_WANTED=0.2)
