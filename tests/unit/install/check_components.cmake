@@ -26,7 +26,7 @@ function(probe expect pattern)
   message(STATUS "ok (${expect}): ${probe_env} ${ARGN}")
 endfunction()
 
-set(v -DSSAM_VERSION_WANTED=0.3)
+set(v -DSSAM_VERSION_WANTED=0.4)
 set(all_targets "ssam::ssam;ssam::render;ssam::core;ssam::render_soft;ssam::render_gl;ssam::gl")
 probe(ok "ssam targets: ${all_targets}\n" ${v} "-DSSAM_COMPONENTS=soft render_gl gl")
 probe(ok "ssam targets: ${all_targets};ssam::vk\n" ${v})  # no COMPONENTS: every one that can load
@@ -45,8 +45,12 @@ set(probe_env PKG_CONFIG_LIBDIR= PKG_CONFIG_PATH=)
 probe(ok "ssam targets: ssam::gl\n" ${v} -DSSAM_COMPONENTS=gl ${hidden})
 probe(ok "ssam targets: ssam::vk\n" ${v} -DSSAM_COMPONENTS=vk ${hidden})
 probe(fail "component 'render_gl': it needs glm" ${v} "-DSSAM_COMPONENTS=render_gl gl" ${hidden})
-probe(fail "ssam 0\\.3\\.0: it needs glm" ${v} ${hidden})  # no COMPONENTS: the core is required
+probe(fail "ssam 0\\.4\\.0: it needs glm" ${v} ${hidden})  # no COMPONENTS: the core is required
 set(probe_env "")
-# 0.x: another minor version is another API.
-probe(fail "version: 0\\.3\\.0" -DSSAM_VERSION_WANTED=0.4)
-probe(fail "version: 0\\.3\\.0" -DSSAM_VERSION_WANTED=0.2)
+# 0.x: another minor version is another API (CHANGELOG.md): an older or newer request fails, saying
+# why; any 0.4.x satisfies 0.4.
+probe(ok "ssam targets: " -DSSAM_VERSION_WANTED=0.4.0)
+probe(fail "ssam 0\\.4\\.0 \\([^)]*\\) does not satisfy a request for 0\\.3: while ssam is 0\\.x.*version: 0\\.4\\.0"
+      -DSSAM_VERSION_WANTED=0.3)
+probe(fail "does not satisfy a request for 0\\.5.*version: 0\\.4\\.0" -DSSAM_VERSION_WANTED=0.5)
+probe(fail "version: 0\\.4\\.0" -DSSAM_VERSION_WANTED=0.2)

@@ -13,7 +13,7 @@ list(GET pc_files 0 pc_file)
 get_filename_component(pc_dir ${pc_file} DIRECTORY)
 set(ENV{PKG_CONFIG_PATH} ${pc_dir})
 
-run(${PKG_CONFIG} --exists --print-errors "ssam >= 0.3" ssam-soft ssam-render-gl ssam-gl)
+run(${PKG_CONFIG} --exists --print-errors "ssam >= 0.4" ssam-soft ssam-render-gl ssam-gl)
 run(${PKG_CONFIG} --modversion ssam)
 string(STRIP "${run_output}" version)
 # The static archives' private needs (oneTBB, libepoxy) only with --static, as pkg-config means.

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # cmake -P script: the README's embedding program (the ```cpp block that starts with
 # "// leaves.cpp"), taken from README.md unchanged, built against an installed prefix twice,
-# with find_package(ssam 0.3 COMPONENTS soft gl) (gl: the raw-OpenGL snippets) and with pkg-config, at -O3 with warnings as
+# with find_package(ssam 0.4 COMPONENTS soft gl) (gl: the raw-OpenGL snippets) and with pkg-config, at -O3 with warnings as
 # errors, and run. The raw-OpenGL snippets ("// host_foliage.cpp" in README.md,
 # "// host_shaders.cpp" in ssam/README.md, "// loaders.cpp" in ssam/docs/gl_hosts.md: functions
 # a host calls, no main) are compiled the same way against ssam::gl, and the Vulkan one
@@ -32,7 +32,7 @@ endforeach()
 file(WRITE ${WORK}/src/CMakeLists.txt [=[
 cmake_minimum_required(VERSION 3.25)
 project(leaves CXX)
-find_package(ssam 0.3 REQUIRED COMPONENTS soft gl vk)
+find_package(ssam 0.4 REQUIRED COMPONENTS soft gl vk)
 add_executable(leaves leaves.cpp)
 target_compile_options(leaves PRIVATE -Wall -Wextra -Werror)
 target_link_libraries(leaves PRIVATE ssam::ssam ssam::render_soft)

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # cmake -P script: installs the library into a scratch prefix, checks the layout, then
 # configures (no warnings allowed), builds (-O3, warnings as errors) and runs the consumer with
-# find_package(ssam 0.3 COMPONENTS soft render_gl gl); then the raw-OpenGL and Vulkan examples the same way.
+# find_package(ssam 0.4 COMPONENTS soft render_gl gl); then the raw-OpenGL and Vulkan examples the same way.
 #   -DBUILD_DIR= -DPREFIX= -DCONSUMER_SOURCE= -DCONSUMER_BUILD= [-DEXAMPLE_SOURCE= -DEXAMPLE_BUILD=]
 #   [-DBUILD_CXX_FLAGS= -DBUILD_LINKER_FLAGS=]
 include(${CMAKE_CURRENT_LIST_DIR}/install_steps.cmake)

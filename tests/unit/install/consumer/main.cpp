@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Another engine's program using the installed ssam package (find_package(ssam 0.3 COMPONENTS
+// Another engine's program using the installed ssam package (find_package(ssam 0.4 COMPONENTS
 // soft render_gl gl), or pkg-config ssam ssam-soft ssam-render-gl ssam-gl): renders one half-transparent red leaf over a
 // blue opaque scene through SSAM on the soft backend, then on the GL backend when a headless
 // context can be made here, and checks the composited centre pixel. Also links ssam::gl (the
