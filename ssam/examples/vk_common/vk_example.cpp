@@ -125,10 +125,11 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
         ssam::vk::Settings settings;  // the paper's knobs, but for --depth-threshold and --precision
         settings.depthMaskThreshold = args.depthMaskThreshold;
         settings.maskPrecision = args.precision;
-        settings.vertexLayout.bindings[0] = {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-        settings.vertexLayout.position = {0, VK_FORMAT_R32G32B32_SFLOAT, 0};
-        settings.vertexLayout.uv = {0, VK_FORMAT_R32G32_SFLOAT, 3 * sizeof(float)};
-        checkSsam(ssam, ssam.initialize(device, settings), "ssam::vk initialize");
+        ssam::vk::VertexLayout layout;  // what the built-in programs read of the scene's vertex buffer
+        layout.bindings[0] = {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+        layout.position = {0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+        layout.uv = {0, VK_FORMAT_R32G32_SFLOAT, 3 * sizeof(float)};
+        checkSsam(ssam, ssam.initialize(device, settings, layout), "ssam::vk initialize");
         const std::unique_ptr<FoliageRecorder> foliage = makeRecorder(scene, ssam, args);
         std::unique_ptr<MistPass> mist;
         if (args.mist != Arguments::Mist::None) mist = std::make_unique<MistPass>(scene);

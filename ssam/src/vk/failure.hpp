@@ -3,17 +3,14 @@
 // Inside ssam::vk errors travel as a Failure (a Status and its message); the public calls turn
 // them into their return value and the message callback (ssam_vk.cpp), so nothing throws into
 // host code.
-#include <stdexcept>
 #include <string>
 
+#include "../core/failure.hpp"
 #include "ssam/vk/ssam_vk.hpp"
 
 namespace ssam::vk::detail {
 
-struct Failure : std::runtime_error {
-    Status status;
-    Failure(Status s, const std::string& message) : std::runtime_error(message), status(s) {}
-};
+using core::Failure;
 
 const char* resultName(VkResult result) noexcept;
 // "VK_FORMAT_R8G8B8A8_SRGB", or "VkFormat <n>" for a value Vulkan's headers do not name (messages

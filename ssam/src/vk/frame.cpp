@@ -162,7 +162,7 @@ const detail::Generation& ScreenSpaceAlphaMaskVk::Impl::generationFor(const Fram
                         VK_FORMAT_FEATURE_TRANSFER_DST_BIT,
                     "a copied and sampled depth (Settings::depthMaskThreshold)");
     detail::Generation next;
-    next.create(vk, memory, shared, key, settings, dynamic());  // destroys what it made if it fails
+    next.create(vk, memory, shared, key, settings, vertexLayout, dynamic());  // destroys what it made if it fails
     if (generation) {
         auto old = std::make_shared<detail::Generation>(std::move(*generation));
         retired.add(old->lastUsedFrame, [this, old] { old->destroy(vk, memory); });
@@ -260,24 +260,10 @@ detail::PassKind kindOf(FoliagePass pass) {
     return pass == FoliagePass::Mask ? detail::PassKind::Mask : detail::PassKind::Color;
 }
 
-const char* phaseName(detail::Phase phase) {
-    switch (phase) {
-        case detail::Phase::Idle: return "no frame is open";
-        case detail::Phase::FrameBegun: return "the frame is begun (beginMaskPass comes next)";
-        case detail::Phase::InMaskPass: return "the mask pass is open (endMaskPass comes next)";
-        case detail::Phase::MaskDone: return "the mask pass is done (beginColorPass comes next)";
-        case detail::Phase::InColorPass: return "the colour pass is open (endColorPass comes next)";
-        case detail::Phase::ColorDone: return "the colour pass is done (composite comes next)";
-    }
-    return "?";
-}
-
 }  // namespace
 
 void ScreenSpaceAlphaMaskVk::Impl::expect(detail::Phase expected, const char* call) const {
-    expectInitialized(call);
-    if (phase != expected)
-        throw Failure(Status::InvalidCall, std::string("ssam::vk: ") + call + " called when " + phaseName(phase));
+    core::expectPhase("ssam::vk", initialized, phase, expected, call);
 }
 
 void ScreenSpaceAlphaMaskVk::Impl::abandonFrame() noexcept {
@@ -362,7 +348,7 @@ void ScreenSpaceAlphaMaskVk::Impl::drawBuiltIn(const PassInfo& pass, DrawFoliage
     const VkDescriptorSet sets[] = {frameSet, whiteSet};
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.foliageLayout, 0, 2, sets, 0, nullptr);
     const VkDeviceSize offset = 0;
-    vk.CmdBindVertexBuffers(cb, settings.vertexLayout.constantsBinding, 1, &constants.buffer, &offset);
+    vk.CmdBindVertexBuffers(cb, vertexLayout.constantsBinding, 1, &constants.buffer, &offset);
     struct {
         float model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
         float factor[4] = {1, 1, 1, 1};

@@ -8,8 +8,11 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "../core/frame_sequence.hpp"
+#include "../core/host_channel.hpp"
 #include "dynamic_rendering.hpp"
 #include "failure.hpp"
 #include "frame_scoped.hpp"
@@ -68,8 +71,8 @@ struct CompositePush {
 };
 static_assert(sizeof(CompositePush) == kRestorePushSize && offsetof(CompositePush, threshold) == kCompositePushSize);
 
-// Where a frame is: each call of way (b) moves it one step, in this order only.
-enum class Phase { Idle, FrameBegun, InMaskPass, MaskDone, InColorPass, ColorDone };
+// Where a frame is: each call of way (b) moves it one step, in this order only (the core's).
+using core::Phase;
 
 }  // namespace detail
 
@@ -81,9 +84,8 @@ struct ScreenSpaceAlphaMaskVk::Impl {
     bool initialized = false;
     Settings settings;
     std::uint64_t settingsVersion = 0;
-    MessageCallback onMessage = nullptr;
-    void* messageUser = nullptr;
-    std::string lastMessage;
+    VertexLayout vertexLayout;
+    core::HostChannel channel{"ssam::vk"};
 
     detail::MemorySource memory;
     detail::SharedObjects shared;
@@ -129,48 +131,21 @@ struct ScreenSpaceAlphaMaskVk::Impl {
 
     bool dynamic() const { return device.renderingPath == RenderingPath::DynamicRendering; }
 
-    void message(Severity severity, const std::string& text) noexcept {
-        if (!onMessage) return;
-        try {
-            onMessage(messageUser, severity, text.c_str());
-        } catch (...) {  // the host's callback must not unwind through SSAM
-        }
-    }
-    Status fail(Status status, const char* text) noexcept {
-        try {
-            lastMessage = text;
-        } catch (...) {
-            lastMessage.clear();
-        }
-        message(Severity::Error, text);
-        return status;
-    }
-    template <class Body>
+    void message(Severity severity, const std::string& text) noexcept { channel.message(severity, text); }
+    Status fail(Status status, const char* text) noexcept { return channel.fail(status, text); }
     // Runs one public call: Ok, or the Failure's status with its message; a frame call that fails
     // abandons the open frame (abandonFrame), a query or a texture call (`frameCall` false) leaves it.
+    template <class Body>
     Status run(Body&& body, bool frameCall = true) noexcept {
-        try {
-            body();
-            return Status::Ok;
-        } catch (const Failure& e) {
+        return channel.run(std::forward<Body>(body), [this, frameCall]() noexcept {
             if (frameCall) abandonFrame();
-            return fail(e.status, e.what());
-        } catch (const std::bad_alloc&) {
-            if (frameCall) abandonFrame();
-            return fail(Status::OutOfMemory, "ssam::vk: out of memory");
-        } catch (const std::exception& e) {
-            if (frameCall) abandonFrame();
-            return fail(Status::Internal, (std::string("ssam::vk: unexpected error: ") + e.what()).c_str());
-        } catch (...) {
-            if (frameCall) abandonFrame();
-            return fail(Status::Internal, "ssam::vk: unexpected error");
-        }
+        });
     }
     void expectInitialized(const char* call) const {
         if (!initialized) throw Failure(Status::InvalidCall, std::string("ssam::vk: ") + call + " before initialize()");
     }
 
-    void initialize(const DeviceDesc& desc, const Settings& wanted);
+    void initialize(const DeviceDesc& desc, const Settings& wanted, const VertexLayout& wantedLayout);
     void releaseObjects() noexcept;
     TextureId createTexture(VkImageView view, VkSampler sampler);
     void destroyTexture(TextureId id, std::uint64_t lastFrame);

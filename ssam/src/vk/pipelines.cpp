@@ -4,6 +4,7 @@
 #include <array>
 #include <string>
 
+#include "../core/passes.hpp"
 #include "failure.hpp"
 #include "ssam_vk_spirv.hpp"  // generated: glslc's output of glsl_variants.cpp's sources
 
@@ -154,7 +155,8 @@ using Kind = PassKind;
 // With `pass` null (RenderingPath::DynamicRendering) the attachment formats come from
 // VkPipelineRenderingCreateInfo instead.
 VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Kind kind, VkRenderPass pass,
-                          VkFormat colorFormat, VkFormat depthFormat, const Settings& settings) {
+                          VkFormat colorFormat, VkFormat depthFormat, const Settings& settings,
+                          const VertexLayout& layout) {
     const bool fullscreen = kind == Kind::Composite || kind == Kind::DepthRestore;
     VkPipelineShaderStageCreateInfo stages[2]{{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
@@ -172,7 +174,7 @@ VkPipeline createPipeline(const VkFunctions& vk, const SharedObjects& shared, Ki
         case Kind::DepthRestore: stages[1].module = shared.restoreFragment; break;
     }
     stages[1].pName = "main";
-    const VertexInput input = fullscreen ? VertexInput{} : vertexInput(settings.vertexLayout, kind == Kind::Color);
+    const VertexInput input = fullscreen ? VertexInput{} : vertexInput(layout, kind == Kind::Color);
     VkPipelineVertexInputStateCreateInfo vertex{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex.vertexBindingDescriptionCount = std::uint32_t(input.bindings.size());
     vertex.pVertexBindingDescriptions = input.bindings.data();
@@ -237,51 +239,63 @@ VkFramebuffer createFramebuffer(const VkFunctions& vk, VkRenderPass pass, std::i
 
 }  // namespace
 
+namespace {
+
+VkBlendFactor toVk(core::BlendFactor factor) {
+    switch (factor) {
+        case core::BlendFactor::Zero: return VK_BLEND_FACTOR_ZERO;
+        case core::BlendFactor::One: return VK_BLEND_FACTOR_ONE;
+        case core::BlendFactor::SrcAlpha: return VK_BLEND_FACTOR_SRC_ALPHA;
+        case core::BlendFactor::OneMinusSrcAlpha: return VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    }
+    return VK_BLEND_FACTOR_ONE;
+}
+
+VkBlendOp toVk(core::BlendOp op) { return op == core::BlendOp::Max ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD; }
+
+const core::PassDescription& passOf(const core::PassPlan& plan, PassKind kind) {
+    switch (kind) {
+        case Kind::Mask: return plan.mask;
+        case Kind::Color: return plan.color;
+        case Kind::Composite: return plan.composite;
+        case Kind::DepthRestore: return plan.depthRestore;
+    }
+    return plan.mask;
+}
+
+}  // namespace
+
+// The core's pass (core/passes.hpp) as Vulkan fixed-function state. Vulkan writes depth only with
+// the depth test enabled: a pass that writes without testing (the depth restore) tests ALWAYS.
 void fixedState(PassKind kind, const Settings& settings, PipelineState& state) {
-    // Both faces: a foliage card is seen from both sides (§3.5.2-3).
+    const core::PassPlan plan = core::describePasses(settings);
+    const core::PassDescription& pass = passOf(plan, kind);
     state.rasterization = {VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     state.rasterization.polygonMode = VK_POLYGON_MODE_FILL;
-    state.rasterization.cullMode = VK_CULL_MODE_NONE;
+    state.rasterization.cullMode = pass.cullBackFaces ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
     state.rasterization.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     state.rasterization.lineWidth = 1.0f;
     state.multisample = {VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     state.multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    // Mask: tested, not written; colour: tested and written (§3.7); composite: none; the depth
-    // restore: written wherever its shader does not discard (ALWAYS).
     state.depthStencil = {VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    state.depthStencil.depthTestEnable = kind == Kind::Composite ? VK_FALSE : VK_TRUE;
-    state.depthStencil.depthWriteEnable = kind == Kind::Color || kind == Kind::DepthRestore ? VK_TRUE : VK_FALSE;
-    state.depthStencil.depthCompareOp = kind == Kind::DepthRestore ? VK_COMPARE_OP_ALWAYS : toVk(settings.depthTest);
-    const bool maskPair = kind == Kind::Mask && settings.maskPrecision == MaskPrecision::Rg16f;
-    state.colorAttachmentCount = kind == Kind::DepthRestore ? 0 : maskPair ? 2 : 1;
-    for (VkPipelineColorBlendAttachmentState& b : state.blendAttachments) {
+    state.depthStencil.depthTestEnable = pass.depthTest || pass.depthWrite ? VK_TRUE : VK_FALSE;
+    state.depthStencil.depthWriteEnable = pass.depthWrite ? VK_TRUE : VK_FALSE;
+    state.depthStencil.depthCompareOp = pass.depthTest ? toVk(pass.depthCompare) : VK_COMPARE_OP_ALWAYS;
+    state.colorAttachmentCount = static_cast<std::uint32_t>(pass.colorTargetCount);
+    for (int t = 0; t < 2; ++t) {
+        VkPipelineColorBlendAttachmentState& b = state.blendAttachments[t];
         b = {};
         b.colorWriteMask =
             VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    }
-    VkPipelineColorBlendAttachmentState& blend = state.blendAttachments[0];
-    if (maskPair) {  // Table 3.1 in two targets (ssam::gl's Rg16f): MAX into the first, ADD into the second
-        for (int i = 0; i < 2; ++i) {
-            VkPipelineColorBlendAttachmentState& b = state.blendAttachments[i];
-            b.blendEnable = VK_TRUE;
-            b.srcColorBlendFactor = b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
-            b.srcAlphaBlendFactor = b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-            b.colorBlendOp = b.alphaBlendOp = i == 0 ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD;
-        }
-    } else if (kind == Kind::Mask) {  // Table 3.1: RGB = MAX, A = ADD, all ONE
-        blend.blendEnable = VK_TRUE;
-        blend.srcColorBlendFactor = blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
-        blend.srcAlphaBlendFactor = blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        blend.colorBlendOp = VK_BLEND_OP_MAX;
-        blend.alphaBlendOp = VK_BLEND_OP_ADD;
-    } else if (kind == Kind::Composite) {  // Listing 3.2: lerp(opaque, foliage, mask'), the host's alpha kept
-        blend.blendEnable = VK_TRUE;
-        blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-        blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        blend.colorBlendOp = VK_BLEND_OP_ADD;
-        blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-        blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        blend.alphaBlendOp = VK_BLEND_OP_ADD;
+        const core::TargetBlend& blend = pass.colorTargets[t].blend;
+        if (t >= pass.colorTargetCount || !blend.enabled) continue;
+        b.blendEnable = VK_TRUE;
+        b.srcColorBlendFactor = toVk(blend.srcColor);
+        b.dstColorBlendFactor = toVk(blend.dstColor);
+        b.colorBlendOp = toVk(blend.colorOp);
+        b.srcAlphaBlendFactor = toVk(blend.srcAlpha);
+        b.dstAlphaBlendFactor = toVk(blend.dstAlpha);
+        b.alphaBlendOp = toVk(blend.alphaOp);
     }
 }
 
@@ -353,7 +367,8 @@ void SharedObjects::destroy(const VkFunctions& vk) noexcept {
 }
 
 void Generation::create(const VkFunctions& vk, const MemorySource& memory, const SharedObjects& shared,
-                        const GenerationKey& k, const Settings& settings, bool dynamicRendering) {
+                        const GenerationKey& k, const Settings& settings, const VertexLayout& layout,
+                        bool dynamicRendering) {
     key = k;
     try {
         if (!dynamicRendering) {
@@ -362,13 +377,14 @@ void Generation::create(const VkFunctions& vk, const MemorySource& memory, const
             compositePass = createPassFor(vk, Kind::Composite, k.colorFormat, VK_FORMAT_UNDEFINED);
             if (k.depthRestore) restorePass = createPassFor(vk, Kind::DepthRestore, VK_FORMAT_UNDEFINED, k.depthFormat);
         }
-        maskPipeline = createPipeline(vk, shared, Kind::Mask, maskPass, k.maskFormat, k.depthFormat, settings);
-        colorPipeline = createPipeline(vk, shared, Kind::Color, colorPass, k.colorFormat, k.depthFormat, settings);
-        compositePipeline =
-            createPipeline(vk, shared, Kind::Composite, compositePass, k.colorFormat, VK_FORMAT_UNDEFINED, settings);
+        maskPipeline = createPipeline(vk, shared, Kind::Mask, maskPass, k.maskFormat, k.depthFormat, settings, layout);
+        colorPipeline =
+            createPipeline(vk, shared, Kind::Color, colorPass, k.colorFormat, k.depthFormat, settings, layout);
+        compositePipeline = createPipeline(vk, shared, Kind::Composite, compositePass, k.colorFormat,
+                                           VK_FORMAT_UNDEFINED, settings, layout);
         if (k.depthRestore)
             restorePipeline = createPipeline(vk, shared, Kind::DepthRestore, restorePass, VK_FORMAT_UNDEFINED,
-                                             k.depthFormat, settings);
+                                             k.depthFormat, settings, layout);
         constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // TRANSFER_SRC: hosts read them out
         mask = createImage(vk, memory, k.maskFormat, k.width, k.height, usage, "the mask");

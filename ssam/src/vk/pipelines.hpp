@@ -83,7 +83,7 @@ struct Generation {
     // dynamicRendering: no render passes (the pipelines take VkPipelineRenderingCreateInfo) and
     // no framebuffers.
     void create(const VkFunctions& vk, const MemorySource& memory, const SharedObjects& shared,
-                const GenerationKey& key, const Settings& settings, bool dynamicRendering);
+                const GenerationKey& key, const Settings& settings, const VertexLayout& layout, bool dynamicRendering);
     void destroy(const VkFunctions& vk, const MemorySource& memory) noexcept;
     // New framebuffers over the host's views for one frame (never reused for another: the
     // caller keeps them in a FrameScoped); none made if one fails.

@@ -21,62 +21,23 @@ using detail::Constants;
 using detail::kFrameBlockSize;
 using detail::Failure;
 
-const char* statusName(Status status) noexcept {
-    switch (status) {
-        case Status::Ok: return "ok";
-        case Status::InvalidArgument: return "invalid argument";
-        case Status::InvalidCall: return "invalid call";
-        case Status::MissingEntryPoint: return "missing entry point";
-        case Status::UnsupportedFeature: return "unsupported feature";
-        case Status::DeviceError: return "device error";
-        case Status::CallbackFailed: return "callback failed";
-        case Status::OutOfMemory: return "out of memory";
-        case Status::Internal: return "internal error";
-    }
-    return "unknown status";
-}
-
-const char* severityName(Severity severity) noexcept {
-    switch (severity) {
-        case Severity::Info: return "info";
-        case Severity::Warning: return "warning";
-        case Severity::Error: return "error";
-    }
-    return "unknown severity";
-}
-
-const char* foliagePassName(FoliagePass pass) noexcept { return pass == FoliagePass::Mask ? "mask" : "colour"; }
-
 namespace {
 
+// The knobs by the core's rules (ssam::settingsError), as every SSAM checks them.
 void validate(const Settings& s) {
-    const auto precision = static_cast<int>(s.maskPrecision);
-    const auto depth = static_cast<int>(s.depthTest);
-    if (precision < 0 || precision > static_cast<int>(MaskPrecision::Rg16f))
-        throw Failure(Status::InvalidArgument,
-                      "ssam::vk settings: maskPrecision " + std::to_string(precision) + " is not a MaskPrecision");
-    if (depth < 0 || depth > static_cast<int>(DepthTest::GreaterEqual))
-        throw Failure(Status::InvalidArgument,
-                      "ssam::vk settings: depthTest " + std::to_string(depth) + " is not a DepthTest");
-    // The knobs by the core's rules (ssam::settingsError), as every SSAM checks them.
-    ssam::Settings knobs;
-    knobs.maskLerp = s.maskLerp;
-    knobs.colorAlphaReference = s.colorAlphaReference;
-    for (int c = 0; c < 4; ++c) knobs.foliageClearColor[c] = s.foliageClearColor[c];
-    knobs.squareMask = s.squareMask;
-    knobs.maskPrecision = static_cast<ssam::MaskPrecision>(precision);
-    knobs.depthTest = static_cast<ssam::DepthTest>(depth);
-    knobs.depthMaskThreshold = s.depthMaskThreshold;
-    if (const std::string error = ssam::settingsError(knobs); !error.empty())
+    if (const std::string error = ssam::settingsError(s); !error.empty())
         throw Failure(Status::InvalidArgument, "ssam::vk: " + error);
-    const VertexLayout& v = s.vertexLayout;
+}
+
+// Where the built-in programs read the host's vertex buffers: bindings that exist, a position.
+void validate(const VertexLayout& v) {
     if (v.bindingCount == 0 || v.bindingCount > VertexLayout::kMaxBindings)
-        throw Failure(Status::InvalidArgument, "ssam::vk settings: vertexLayout.bindingCount " +
-                                                   std::to_string(v.bindingCount) + " is not 1 to 4");
+        throw Failure(Status::InvalidArgument,
+                      "ssam::vk: vertexLayout.bindingCount " + std::to_string(v.bindingCount) + " is not 1 to 4");
     if (v.position.format == VK_FORMAT_UNDEFINED)
-        throw Failure(Status::InvalidArgument, "ssam::vk settings: vertexLayout.position has no format");
+        throw Failure(Status::InvalidArgument, "ssam::vk: vertexLayout.position has no format");
     if (v.constantsBinding >= 16)
-        throw Failure(Status::InvalidArgument, "ssam::vk settings: vertexLayout.constantsBinding " +
+        throw Failure(Status::InvalidArgument, "ssam::vk: vertexLayout.constantsBinding " +
                                                    std::to_string(v.constantsBinding) +
                                                    " is past 15 (Vulkan guarantees 16 vertex bindings)");
     const auto known = [&](const VertexAttribute& a) {
@@ -92,12 +53,12 @@ void validate(const Settings& s) {
                                                                          {"instanceModel", &v.instanceModel}};
     for (const auto& [name, a] : attributes)
         if (!known(*a))
-            throw Failure(Status::InvalidArgument, std::string("ssam::vk settings: vertexLayout.") + name +
-                                                       " reads binding " + std::to_string(a->binding) +
+            throw Failure(Status::InvalidArgument, std::string("ssam::vk: vertexLayout.") + name + " reads binding " +
+                                                       std::to_string(a->binding) +
                                                        ", which vertexLayout.bindings does not describe");
     for (std::uint32_t i = 0; i < v.bindingCount; ++i)
         if (v.bindings[i].binding == v.constantsBinding)
-            throw Failure(Status::InvalidArgument, "ssam::vk settings: vertexLayout.bindings[" + std::to_string(i) +
+            throw Failure(Status::InvalidArgument, "ssam::vk: vertexLayout.bindings[" + std::to_string(i) +
                                                        "] is the constants binding " +
                                                        std::to_string(v.constantsBinding));
 }
@@ -111,13 +72,12 @@ void checkFeatures(const Settings& s, const DeviceDesc& d) {
                       "vkCreateDevice, then DeviceDesc::independentBlend = true)");
 }
 
-bool samePipelines(const Settings& a, const Settings& b) {
-    return a.depthTest == b.depthTest && std::memcmp(&a.vertexLayout, &b.vertexLayout, sizeof(VertexLayout)) == 0;
-}
+bool sameLayout(const VertexLayout& a, const VertexLayout& b) { return std::memcmp(&a, &b, sizeof(VertexLayout)) == 0; }
 
 }  // namespace
 
-void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Settings& wanted) {
+void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Settings& wanted,
+                                              const VertexLayout& wantedLayout) {
     if (!desc.instance || !desc.physicalDevice || !desc.device || !desc.getInstanceProcAddr)
         throw Failure(Status::InvalidArgument,
                       "ssam::vk: DeviceDesc needs instance, physicalDevice, device and getInstanceProcAddr");
@@ -126,6 +86,7 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
     if ((desc.memory.allocate != nullptr) != (desc.memory.release != nullptr))
         throw Failure(Status::InvalidArgument, "ssam::vk: DeviceMemoryCallbacks needs both allocate and release");
     validate(wanted);
+    validate(wantedLayout);
     checkFeatures(wanted, desc);
     if (desc.renderingPath != RenderingPath::RenderPass && desc.renderingPath != RenderingPath::DynamicRendering)
         throw Failure(Status::InvalidArgument, "ssam::vk: DeviceDesc::renderingPath is not a RenderingPath");
@@ -137,6 +98,7 @@ void ScreenSpaceAlphaMaskVk::Impl::initialize(const DeviceDesc& desc, const Sett
     detail::loadFunctions(vk, desc);
     device = desc;
     settings = wanted;
+    vertexLayout = wantedLayout;
     initialized = true;  // from here release() destroys what exists if a step fails
     try {
         memory.reset(vk, desc.physicalDevice, desc.memory);
@@ -277,18 +239,18 @@ ScreenSpaceAlphaMaskVk& ScreenSpaceAlphaMaskVk::operator=(ScreenSpaceAlphaMaskVk
 
 void ScreenSpaceAlphaMaskVk::setMessageCallback(MessageCallback callback, void* user) noexcept {
     if (!impl_) return;
-    impl_->onMessage = callback;
-    impl_->messageUser = user;
+    impl_->channel.setCallback(callback, user);
 }
 
 const char* ScreenSpaceAlphaMaskVk::lastMessage() const noexcept {
-    return impl_ ? impl_->lastMessage.c_str()
+    return impl_ ? impl_->channel.lastMessage()
                  : "ssam::vk: this ScreenSpaceAlphaMaskVk was moved from (or out of memory)";
 }
 
-Status ScreenSpaceAlphaMaskVk::initialize(const DeviceDesc& device, const Settings& settings) noexcept {
+Status ScreenSpaceAlphaMaskVk::initialize(const DeviceDesc& device, const Settings& settings,
+                                          const VertexLayout& vertexLayout) noexcept {
     if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->initialize(device, settings); });
+    return impl_->run([&] { impl_->initialize(device, settings, vertexLayout); });
 }
 
 void ScreenSpaceAlphaMaskVk::release() noexcept {
@@ -302,7 +264,7 @@ Status ScreenSpaceAlphaMaskVk::setSettings(const Settings& settings) noexcept {
             throw Failure(Status::InvalidCall, "ssam::vk: setSettings() inside a frame");
         validate(settings);
         if (impl_->initialized) checkFeatures(settings, impl_->device);
-        if (!samePipelines(settings, impl_->settings)) ++impl_->settingsVersion;
+        if (settings.depthTest != impl_->settings.depthTest) ++impl_->settingsVersion;  // the pipelines' depth test
         // What PipelineState holds (way b): the depth test and the mask's format.
         if (settings.depthTest != impl_->settings.depthTest || settings.maskPrecision != impl_->settings.maskPrecision)
             ++impl_->pipelineStateVersion;
@@ -313,6 +275,22 @@ Status ScreenSpaceAlphaMaskVk::setSettings(const Settings& settings) noexcept {
 const Settings& ScreenSpaceAlphaMaskVk::settings() const noexcept {
     static const Settings defaults;
     return impl_ ? impl_->settings : defaults;
+}
+
+Status ScreenSpaceAlphaMaskVk::setVertexLayout(const VertexLayout& vertexLayout) noexcept {
+    if (!impl_) return Status::InvalidCall;
+    return impl_->run([&] {
+        if (impl_->phase != detail::Phase::Idle)
+            throw Failure(Status::InvalidCall, "ssam::vk: setVertexLayout() inside a frame");
+        validate(vertexLayout);
+        if (!sameLayout(vertexLayout, impl_->vertexLayout)) ++impl_->settingsVersion;  // new pipelines
+        impl_->vertexLayout = vertexLayout;
+    });
+}
+
+const VertexLayout& ScreenSpaceAlphaMaskVk::vertexLayout() const noexcept {
+    static const VertexLayout defaults;
+    return impl_ ? impl_->vertexLayout : defaults;
 }
 
 Status ScreenSpaceAlphaMaskVk::createTexture(VkImageView view, VkSampler sampler, TextureId* id) noexcept {

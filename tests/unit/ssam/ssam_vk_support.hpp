@@ -164,7 +164,7 @@ struct Targets {
 };
 
 // A quad over the middle half of the frame at depth 0.5, drawn by SSAM's built-in programs (the
-// default Settings::vertexLayout: positions only, binding 0) in `rgb`, opaque: the composite
+// default VertexLayout: positions only, binding 0) in `rgb`, opaque: the composite
 // shows exactly that colour there (mask 1, squared 1).
 struct CentreQuad {
     vk_example::VulkanHost& host;

@@ -77,15 +77,15 @@ TEST_F(SsamVk, AMissingEntryPointIsNamed) {
 }
 
 TEST_F(SsamVk, BadSettingsAreNamed) {
-    ssam::vk::Settings s;
-    s.vertexLayout.position.format = VK_FORMAT_UNDEFINED;
-    EXPECT_EQ(ssam.initialize(describe(host), s), Status::InvalidArgument);
+    ssam::vk::VertexLayout layout;
+    layout.position.format = VK_FORMAT_UNDEFINED;
+    EXPECT_EQ(ssam.initialize(describe(host), {}, layout), Status::InvalidArgument);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("vertexLayout.position"));
-    s = {};
-    s.vertexLayout.uv = {3, VK_FORMAT_R32G32_SFLOAT, 0};
-    EXPECT_EQ(ssam.initialize(describe(host), s), Status::InvalidArgument);
+    layout = {};
+    layout.uv = {3, VK_FORMAT_R32G32_SFLOAT, 0};
+    EXPECT_EQ(ssam.initialize(describe(host), {}, layout), Status::InvalidArgument);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("vertexLayout.uv reads binding 3"));
-    s = {};
+    ssam::vk::Settings s;
     s.maskLerp = 2.0f;
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
     EXPECT_EQ(ssam.setSettings(s), Status::InvalidArgument);

@@ -6,7 +6,7 @@
 //
 // X11's <X11/Xlib.h> (pulled in by <epoxy/glx.h>, <GL/glx.h>, <vulkan/vulkan_xlib.h>, ...)
 // defines `Status` as a macro for int. Included before this header it would turn
-// `enum class Status` into `enum class int`; the macro is set aside while SSAM declares its
+// SSAM's status enum into an enum named int; the macro is set aside while SSAM declares its
 // types and put back after. Code that sees the macro spells the type ssam::StatusCode (the same
 // type under a name X11 does not take).
 #pragma push_macro("Status")

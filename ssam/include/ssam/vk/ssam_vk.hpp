@@ -14,7 +14,7 @@
 // Two ways to draw the foliage, as ssam::gl's:
 //  (a) SSAM's built-in foliage programs: render(frame, draw) records the three passes and calls
 //      `draw` twice (mask pass, then colour pass) inside SSAM's render pass with SSAM's pipeline
-//      bound; the host binds its vertex (and index) buffers as Settings::vertexLayout describes,
+//      bound; the host binds its vertex (and index) buffers as the VertexLayout given to initialize() describes,
 //      sets per-draw values through FoliageProgram and records its draws.
 //  (b) The host's own pipelines: beginFrame(), then beginMaskPass() / draws / endMaskPass(),
 //      beginColorPass() / draws / endColorPass(), composite(). The host creates its mask and colour
@@ -71,31 +71,21 @@
 
 #include <vulkan/vulkan.h>
 
+#include "ssam/core/frame.hpp"
+#include "ssam/core/settings.hpp"
+#include "ssam/core/status.hpp"
 #include "ssam/version.hpp"  // SSAM_VERSION_MAJOR / MINOR / PATCH, generated (cmake/package.cmake)
 
 namespace ssam::vk {
 
-// ---- Results ---------------------------------------------------------------------------
+// ---- Results (the core's: ssam/core/status.hpp) -------------------------------------------
 
-enum class Status : int {
-    Ok = 0,
-    InvalidArgument,     // a bad setting, frame, device description or callback (the message names it)
-    InvalidCall,         // out of order: not initialised, a pass outside a frame, a frame in a frame, ...
-    MissingEntryPoint,   // the host's loader returned no address for a function SSAM needs (named)
-    UnsupportedFeature,  // the device lacks what a setting needs (named), e.g. a format as attachment
-    DeviceError,         // a Vulkan call failed (the message names it and its VkResult)
-    CallbackFailed,      // the host's draw callback threw (the exception is not rethrown)
-    OutOfMemory,         // host or device memory (VK_ERROR_OUT_OF_*_MEMORY, std::bad_alloc)
-    Internal,            // an unexpected error inside SSAM (a bug: the message says what)
-};
-const char* statusName(Status status) noexcept;  // "ok", "invalid argument", ...
-
-enum class Severity : int { Info, Warning, Error };
-const char* severityName(Severity severity) noexcept;
-
-// Called for every error (Status other than Ok) and once with what was initialised (Info).
-// `message` is valid during the call only. A callback that throws is ignored.
-using MessageCallback = void (*)(void* user, Severity severity, const char* message);
+using ssam::MessageCallback;
+using ssam::Severity;
+using ssam::severityName;
+using ssam::Status;
+using ssam::StatusCode;
+using ssam::statusName;
 
 // Device memory for SSAM's intermediate images, from the host's allocator (optional: without one
 // SSAM makes one vkAllocateMemory per image). allocate() returns VK_SUCCESS with a block of
@@ -137,22 +127,11 @@ struct DeviceDesc {
 
 // ---- Plain data ----------------------------------------------------------------------------
 
-struct Rect {
-    int x = 0, y = 0, width = 0, height = 0;  // pixels, rows from the top (Vulkan's framebuffer y)
-};
-
-// An axis-aligned world-space box.
-struct Box {
-    float min[3] = {0.0f, 0.0f, 0.0f};
-    float max[3] = {0.0f, 0.0f, 0.0f};
-};
-
-// The directional light of SSAM's built-in colour program. The default is unlit: colour = base colour.
-struct Light {
-    float towardLight[3] = {0.0f, 0.0f, 1.0f};  // world space, need not be normalised
-    float color[3] = {0.0f, 0.0f, 0.0f};        // scales max(dot(n, towardLight), 0), double-sided
-    float ambient[3] = {1.0f, 1.0f, 1.0f};
-};
+// The core's (ssam/core/frame.hpp): Rect (pixels, rows from the top: Vulkan's framebuffer y), Box,
+// Light (the built-in colour program's).
+using ssam::Box;
+using ssam::Light;
+using ssam::Rect;
 
 // Where the built-in programs read the host's vertex buffers: each attribute's binding, format
 // and offset (any format Vulkan converts to the shader's float vector: e.g. R32G32B32_SFLOAT for
@@ -184,31 +163,14 @@ struct VertexLayout {
     std::uint32_t constantsBinding = 15;  // below maxVertexInputBindings (16 at least); not one of `bindings`
 };
 
-// Storage of the mask (§3.5.2): Rgba8 as in the paper (the sum saturates at 1); Rgba16f unclamped;
-// Rg16f as two single-channel R16_SFLOAT attachments (MAX into the first, SUM into the second, as
-// ssam::gl's), which needs the host's independentBlend feature (DeviceDesc::independentBlend).
-enum class MaskPrecision : int { Rgba8, Rgba16f, Rg16f };
-// The host's depth convention: Less / LessEqual conventional, Greater / GreaterEqual reverse-Z.
-enum class DepthTest : int { Less, LessEqual, Greater, GreaterEqual };
-
-// The paper's knobs, with its values as defaults (the same as ssam::Config's and ssam::gl's).
-struct Settings {
-    float maskLerp = 0.85f;                                    // mask = lerp(MAX, SUM, maskLerp) (§3.5.4, Listing 3.2)
-    float colorAlphaReference = 64.0f / 255.0f;                // colour-pass alpha test (§3.5.3)
-    float foliageClearColor[4] = {0.16f, 0.22f, 0.08f, 0.0f};  // where the mask covers but no colour (§3.6.1)
-    bool squareMask = true;                                    // the squared alpha trick (§3.6.2)
-    MaskPrecision maskPrecision = MaskPrecision::Rgba8;
-    DepthTest depthTest = DepthTest::Less;
-    VertexLayout vertexLayout;  // what the built-in programs read (way a)
-    // The host's depth keeps the foliage depth only where the composited mask reaches this value;
-    // elsewhere the opaque depth is put back (ssam::gl's setting of the same name). 0 (the paper's,
-    // §3.7): foliage depth wherever the colour pass wrote, so a later transparent pass behind a
-    // leaf edge is cut where the leaf is only partly opaque (a rim of the unfogged background).
-    // Above 0: SSAM copies the opaque depth (FrameDesc::depthImage) before the colour pass and
-    // writes it back after the composite where the mask is below it, both over the composite's
-    // region: one depth copy and one full-screen depth-only pass.
-    float depthMaskThreshold = 0.0f;
-};
+// The paper's knobs (ssam/core/settings.hpp), the same struct for every SSAM. Rg16f needs the
+// host's independentBlend feature (DeviceDesc::independentBlend: its two mask attachments blend
+// MAX and ADD). depthMaskThreshold > 0: SSAM copies the opaque depth (FrameDesc::depthImage)
+// before the colour pass and writes it back after the composite where the mask is below it, both
+// over the composite's region (one depth copy and one full-screen depth-only pass).
+using ssam::DepthTest;
+using ssam::MaskPrecision;
+using ssam::Settings;
 
 struct FrameDesc {
     // In the recording state, outside a render pass, of the queue family DeviceDesc names.
@@ -255,14 +217,10 @@ struct FrameDesc {
     std::uint64_t framesCompleted = 0;
 };
 
-struct FrameReport {
-    bool foliageInView = false;  // false: nothing was recorded (way b: the frame is over, call nothing)
-    int passesRun = 0;           // 0 or 3
-    Rect compositeRegion;        // where the composite ran
-};
-
-enum class FoliagePass : int { Mask, Color };
-const char* foliagePassName(FoliagePass pass) noexcept;  // "mask", "colour"
+// The core's (ssam/core/frame.hpp): FrameReport (compositeRegion rows from the top), FoliagePass.
+using ssam::FoliagePass;
+using ssam::foliagePassName;
+using ssam::FrameReport;
 
 // A host texture for the built-in programs (createTexture); 0 is "none".
 using TextureId = std::uint32_t;
@@ -338,14 +296,20 @@ public:
     // Resolves SSAM's Vulkan functions through the host's loader (MissingEntryPoint names the
     // first one missing) and creates what does not depend on a frame: shader modules, layouts,
     // samplers, its small constants buffer. May be called again after release().
-    Status initialize(const DeviceDesc& device, const Settings& settings = {}) noexcept;
+    // `vertexLayout`: what the built-in programs read of the host's vertex buffers (way a).
+    Status initialize(const DeviceDesc& device, const Settings& settings = {},
+                      const VertexLayout& vertexLayout = {}) noexcept;
     // Destroys every object SSAM made; the host's device must be idle for them (see Lifetime above).
     void release() noexcept;
 
-    // InvalidArgument naming the knob; a new vertex layout or depth test rebuilds the pipelines
-    // (the old ones retired until the frames using them completed).
+    // InvalidArgument naming the knob (the core's rules, ssam::settingsError); a new depth test
+    // rebuilds the pipelines (the old ones retired until the frames using them completed).
     Status setSettings(const Settings& settings) noexcept;
     const Settings& settings() const noexcept;
+    // InvalidArgument naming the attribute or binding; a new layout rebuilds the pipelines (the
+    // old ones retired likewise).
+    Status setVertexLayout(const VertexLayout& vertexLayout) noexcept;
+    const VertexLayout& vertexLayout() const noexcept;
 
     // A host texture the built-in programs may sample (a 2D view in SHADER_READ_ONLY_OPTIMAL, ready
     // for fragment-shader reads when the frame runs: the host's barrier), with the host's sampler
