@@ -110,6 +110,7 @@ int run(const CLI::App& app, const Options& o) {
     }
     renderer.msaa = o.msaa;
     renderer.techniqueOptions.ssam = ssam::presetSettings(*ssam::parsePreset(o.ssamPreset));  // checked by CLI11
+    renderer.techniqueOptions.ssam.depthMaskThreshold = o.ssamDepthThreshold;
     renderer.captureLayers = o.captureLayers;
     const CameraMode cameraMode = parseCamera(o.camera);
     const float aspect = float(renderer.width) / float(renderer.height);

@@ -40,6 +40,13 @@ void addOptions(CLI::App& app, Options& o) {
            "sweep: lower error at the paper's cost; ssam/docs/knobs.md)")
         ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
         ->capture_default_str();
+    app.add_option("--ssam-depth-threshold", o.ssamDepthThreshold,
+                   "technique ssam: the depth later passes (particles, grass, light shafts, water) test against "
+                   "keeps the foliage only where SSAM's mask reaches this value (0: wherever the colour pass "
+                   "wrote, the paper's; above 0 no unfogged rim round soft leaf edges, for a depth copy and a "
+                   "depth-only redraw of the foliage)")
+        ->check(CLI::Range(0.0f, 1.0f))
+        ->capture_default_str();
     app.add_option("--size", o.size, "frame size WIDTHxHEIGHT (a window's first size: it renders at its window's)")
         ->capture_default_str();
     app.add_option_function<int>(

@@ -21,6 +21,7 @@ struct Options {
     std::string backend = "auto";  // auto: gl in a window, soft headless
     std::string technique = "ssam";
     std::string ssamPreset = ssam::presetName(ssam::kRecommendedPreset);  // --ssam-preset: SSAM's knobs
+    float ssamDepthThreshold = 0.0f;  // --ssam-depth-threshold: Settings::depthMaskThreshold
     std::string size = "1280x720";
     int frames = 60;  // headless; a window runs until closed unless --frames is given
     bool framesGiven = false;

@@ -20,7 +20,8 @@ std::string fragment() {
 layout(binding = 0) uniform sampler2D u_foliage;
 layout(binding = 1) uniform sampler2D u_mask;
 layout(binding = 2) uniform sampler2D u_maskAdd;
-)") + glsl::kComposite +
+)") + glsl::kCompositeMask +
+           glsl::kComposite +
            R"(
 void main() { finish(ssamComposite(ivec2(gl_FragCoord.xy))); }
 )";

@@ -20,11 +20,12 @@ SsamPasses addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
     // The intermediates are transients of the frame's size (rt_foliage in its colour format).
     const IntermediateDescs descs = ssam.intermediateDescs(width, height, static_cast<Format>(colorDesc.format));
     auto targetsOf = [](const FrameGraph::Resources& r, FrameGraphTexture mask, FrameGraphTexture maskAdd,
-                        FrameGraphTexture foliage) {
+                        FrameGraphTexture foliage, FrameGraphTexture depthCopy = {}) {
         Intermediates t;
         if (mask.isValid()) t.mask = toTextureHandle(r.get(mask));
         if (maskAdd.isValid()) t.maskAdd = toTextureHandle(r.get(maskAdd));
         if (foliage.isValid()) t.foliage = toTextureHandle(r.get(foliage));
+        if (depthCopy.isValid()) t.depthCopy = toTextureHandle(r.get(depthCopy));
         return t;
     };
 
@@ -44,17 +45,22 @@ SsamPasses addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
         });
 
     struct ColorData {
-        FrameGraphTexture depth, foliage;
+        FrameGraphTexture depth, foliage, depthCopy;
     };
     const ColorData& colorPass = graph.addPass<ColorData>(
         "ssam colour",
         [&](FrameGraph::Builder& b, ColorData& d) {
-            d.depth = b.write(b.read(maskPass.depth));  // foliage depth joins the opaque depth
+            if (descs.depthCopy) {  // depthMaskThreshold > 0: drawn into a copy of the opaque depth
+                d.depth = b.read(maskPass.depth);
+                d.depthCopy = b.write(b.create(descs.depthCopy->name, graphDescOf(*descs.depthCopy)));
+            } else {
+                d.depth = b.write(b.read(maskPass.depth));  // foliage depth joins the opaque depth
+            }
             d.foliage = b.write(b.create(descs.foliage.name, graphDescOf(descs.foliage)));
             if (empty) b.markEmpty();
         },
         [&ssam, &view, plan, targetsOf](const FrameGraph::Resources& r, const ColorData& d) {
-            ssam.colorPass(*plan, view, toTextureHandle(r.get(d.depth)), targetsOf(r, {}, {}, d.foliage));
+            ssam.colorPass(*plan, view, toTextureHandle(r.get(d.depth)), targetsOf(r, {}, {}, d.foliage, d.depthCopy));
         });
 
     struct CompositeData {
@@ -74,7 +80,29 @@ SsamPasses addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
                                targetsOf(r, maskPass.mask, maskPass.maskAdd, colorPass.foliage));
         });
 
-    SsamPasses out{{compositePass.color, colorPass.depth}, {}, {}, {}};
+    FrameGraphTexture depthOut = colorPass.depth;
+    if (descs.depthCopy) {
+        // depthMaskThreshold > 0: the foliage depth where the composited mask reaches it.
+        struct DepthData {
+            FrameGraphTexture depth;
+        };
+        const DepthData& depthPass = graph.addPass<DepthData>(
+            "ssam depth restore",
+            [&](FrameGraph::Builder& b, DepthData& d) {
+                b.read(maskPass.mask);
+                if (maskPass.maskAdd.isValid()) b.read(maskPass.maskAdd);
+                b.read(compositePass.color);  // after the composite, as the other hosts' restore
+                d.depth = b.write(b.read(colorPass.depth));
+                if (empty) b.markEmpty();
+            },
+            [&ssam, &view, plan, targetsOf, &maskPass](const FrameGraph::Resources& r, const DepthData& d) {
+                ssam.foliageDepthPass(*plan, view, toTextureHandle(r.get(d.depth)),
+                                      targetsOf(r, maskPass.mask, maskPass.maskAdd, {}));
+            });
+        depthOut = depthPass.depth;
+    }
+
+    SsamPasses out{{compositePass.color, depthOut}, {}, {}, {}};
     if (!empty) out.mask = maskPass.mask, out.maskAdd = maskPass.maskAdd, out.foliage = colorPass.foliage;
     return out;
 }

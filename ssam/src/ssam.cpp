@@ -2,6 +2,7 @@
 #include "ssam/ssam.hpp"
 
 #include "core/passes.hpp"
+#include "foliage_depth_program.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "engine/render/screen_bounds.hpp"
@@ -90,11 +91,6 @@ namespace {
 
 void throwIfInvalid(const Settings& settings) {
     if (const std::string error = settingsError(settings); !error.empty()) throw engine::Error(error);
-    // The depth restore needs a full-screen pass that writes depth, which the engine's backends
-    // do not have yet: refused by name rather than drawn without it.
-    if (core::describePasses(settings).restoresDepth)
-        throw engine::Error("ssam settings: depthMaskThreshold = " + std::to_string(settings.depthMaskThreshold) +
-                            " is not drawn by the engine-hosted SSAM yet (ssam::gl and ssam::vk draw it); use 0");
 }
 
 }  // namespace
@@ -133,6 +129,16 @@ ScreenSpaceAlphaMask::Pipelines ScreenSpaceAlphaMask::createPipelines(const Sett
         made.mask = backend_.createPipeline(pipelineDesc(passes.mask, {}));
         made.color = backend_.createPipeline(pipelineDesc(passes.color, {}));
         made.composite = backend_.createPipeline(pipelineDesc(passes.composite, compositeProgram_));
+        if (passes.restoresDepth) {
+            // The depth restore's result, drawn as the engine can (foliage_depth_program.hpp): the
+            // colour pass's depth state and alpha test, no colour target.
+            made.foliageDepthProgram = backend_.createProgram(foliageDepthProgram());
+            PipelineDesc d = pipelineDesc(passes.color, {});
+            d.name = passes.depthRestore.name;
+            d.program = made.foliageDepthProgram;
+            d.blend[0] = BlendState::opaque();
+            made.foliageDepth = backend_.createPipeline(d);
+        }
     } catch (...) {
         destroy(made);
         throw;
@@ -141,19 +147,23 @@ ScreenSpaceAlphaMask::Pipelines ScreenSpaceAlphaMask::createPipelines(const Sett
 }
 
 void ScreenSpaceAlphaMask::destroy(const Pipelines& pipelines) {
-    for (PipelineHandle p : {pipelines.mask, pipelines.color, pipelines.composite})
+    for (PipelineHandle p : {pipelines.mask, pipelines.color, pipelines.composite, pipelines.foliageDepth})
         if (p) backend_.destroy(p);
+    if (pipelines.foliageDepthProgram) backend_.destroy(pipelines.foliageDepthProgram);
 }
 
 void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFormat) {
+    const bool copyDepth = core::describePasses(settings_).restoresDepth;
     if (width == width_ && height == height_ && foliageFormat_ == foliageFormat &&
-        targetPrecision_ == settings_.maskPrecision)
+        targetPrecision_ == settings_.maskPrecision && targetsCopyDepth_ == copyDepth)
         return;
     destroyTargets();
     const IntermediateDescs descs = intermediateDescs(width, height, foliageFormat);
     mask_ = backend_.createTexture(descs.mask);
     if (descs.maskAdd) maskAdd_ = backend_.createTexture(*descs.maskAdd);
     foliage_ = backend_.createTexture(descs.foliage);
+    if (descs.depthCopy) depthCopy_ = backend_.createTexture(*descs.depthCopy);
+    targetsCopyDepth_ = copyDepth;
     width_ = width, height_ = height;
     foliageFormat_ = foliageFormat;
     targetPrecision_ = settings_.maskPrecision;
@@ -168,17 +178,19 @@ IntermediateDescs ScreenSpaceAlphaMask::intermediateDescs(int width, int height,
     descs.mask = desc(passes.mask.colorTargets[0]);
     if (passes.mask.colorTargetCount == 2) descs.maskAdd = desc(passes.mask.colorTargets[1]);
     descs.foliage = desc(passes.color.colorTargets[0]);
+    if (passes.restoresDepth) descs.depthCopy = renderTargetDesc("rt_depth_copy", width, height, Format::D32F);
     return descs;
 }
 
 void ScreenSpaceAlphaMask::destroyTargets() {
-    for (TextureHandle* t : {&mask_, &maskAdd_, &foliage_}) {
+    for (TextureHandle* t : {&mask_, &maskAdd_, &foliage_, &depthCopy_}) {
         if (*t) backend_.destroy(*t);
         *t = {};
     }
     width_ = height_ = 0;
     foliageFormat_.reset();
     targetPrecision_.reset();
+    targetsCopyDepth_ = false;
 }
 
 FramePlan ScreenSpaceAlphaMask::plan(const FrameTargets& targets, const FoliageView& view) {
@@ -246,6 +258,12 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
     pass.name = color.name;
     pass.color[0] = {targets.foliage, LoadOp::Clear, clearColorOf(color.colorTargets[0])};
     pass.depth = {depth, LoadOp::Load};
+    if (targets.depthCopy) {
+        // depthMaskThreshold > 0: the colour pass picks the nearest leaf in a copy of the opaque
+        // depth; the host's depth gets the foliage later (foliageDepthPass), where the mask allows.
+        backend_.resolve({depth, targets.depthCopy, compareFuncOf(settings_.depthTest)});
+        pass.depth.texture = targets.depthCopy;
+    }
     PassScope passScope(backend_, pass);
     for (const MaskedBatch* batch : plan.visible) {
         SurfaceParams params;
@@ -277,6 +295,29 @@ void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle co
     passScope.end();
 }
 
+void ScreenSpaceAlphaMask::foliageDepthPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
+                                            const Intermediates& targets) {
+    if (!pipelines_.foliageDepth) return;  // depthMaskThreshold 0: the colour pass wrote the host's depth
+    PassDesc pass;
+    pass.name = core::describePasses(settings_).depthRestore.name;
+    pass.depth = {depth, LoadOp::Load};
+    PassScope passScope(backend_, pass);
+    for (const MaskedBatch* batch : plan.visible) {
+        FoliageDepthParams params;
+        params.viewProj = view.viewProj;
+        params.baseColorFactor = batch->baseColorFactor;
+        params.baseColor = batch->baseColor;
+        params.light = batch->unlit ? engine::render::unlitLight() : view.light;
+        params.mask = targets.mask;
+        params.maskAdd = targets.maskAdd;
+        params.maskLerp = settings_.maskLerp;
+        params.squareMask = settings_.squareMask;
+        params.threshold = settings_.depthMaskThreshold;
+        backend_.draw(maskedBatchDraw(*batch, pipelines_.foliageDepth, params));
+    }
+    passScope.end();
+}
+
 FrameReport ScreenSpaceAlphaMask::render(const FrameTargets& targets, const FoliageView& view) {
     const FramePlan p = plan(targets, view);
     FrameReport report;
@@ -288,6 +329,7 @@ FrameReport ScreenSpaceAlphaMask::render(const FrameTargets& targets, const Foli
     maskPass(p, view, targets.depth);
     colorPass(p, view, targets.depth);
     compositePass(p, targets.color);
+    foliageDepthPass(p, view, targets.depth, intermediates());
     report.passesRun = 3;
     return report;
 }

@@ -32,6 +32,10 @@ using namespace engine::render;
 
 ssam::Settings plusSettings(const TechniqueOptions& options) {
     ssam::Settings settings = ssamSettings(options);
+    // The threshold is tested against SSAM's composited mask; SSAM+'s coverage composite has another.
+    if (settings.depthMaskThreshold > 0.0f)
+        throw engine::Error("ssam-plus: depthMaskThreshold = " + std::to_string(settings.depthMaskThreshold) +
+                            " is SSAM's (its mask); SSAM+'s coverage composite has none: use 0");
     settings.maskPrecision = options.ssamPlus.maskPrecision;
     settings.colorAlphaReference = options.ssamPlus.colorAlphaReference;
     settings.squareMask = false;  // not used by the coverage composite
@@ -71,7 +75,7 @@ public:
                     std::span<const TextureHandle> targets) override {
         if (targets.empty()) return draw(opaque, frame, nullptr);
         const bool separateAdd = targets.size() == 3;
-        const ssam::Intermediates t{targets[0], separateAdd ? targets[1] : TextureHandle{}, targets.back()};
+        const ssam::Intermediates t{targets[0], separateAdd ? targets[1] : TextureHandle{}, targets.back(), {}};
         draw(opaque, frame, &t);
     }
 

@@ -10,6 +10,9 @@
 //                                 no culling, no blending, cleared to the clear colour (§3.5.3)
 //   3. composite    colour     <- lerp(colour, foliage, mask'), mask' = lerp(max, add, maskLerp)
 //                                 squared (§3.5.4, §3.6.2), scissored to the foliage's bounds.
+//   4. depthMaskThreshold > 0: the colour pass draws into a copy of the opaque depth, and the
+//      foliage is drawn again, depth only, into rt_depth where the composited mask reaches the
+//      threshold (foliage_depth_program.hpp): elsewhere later passes see the opaque depth.
 // Depends only on engine/render: works with any Backend, in any engine.
 #include <optional>
 #include <vector>
@@ -41,6 +44,9 @@ struct Intermediates {
     engine::render::TextureHandle mask;     // r = MAX mask; a = ADD mask unless maskAdd is set
     engine::render::TextureHandle maskAdd;  // RG16F precision: the ADD mask (r)
     engine::render::TextureHandle foliage;  // rt_foliage
+    // depthMaskThreshold > 0: the colour pass's depth (a copy of the opaque depth it draws into),
+    // so that the host's depth keeps the foliage only where the mask reaches the threshold.
+    engine::render::TextureHandle depthCopy;
 };
 
 // What those targets are for a frame: render targets of the frame's size, the mask in the
@@ -48,9 +54,10 @@ struct Intermediates {
 // when it keeps its own (render(), plan()); a frame graph creates them as transients
 // (ssam::addSsamPasses).
 struct IntermediateDescs {
-    engine::render::TextureDesc mask;                    // rt_mask, or rt_mask_max with RG16F
-    std::optional<engine::render::TextureDesc> maskAdd;  // rt_mask_add, RG16F precision only
-    engine::render::TextureDesc foliage;                 // rt_foliage
+    engine::render::TextureDesc mask;                      // rt_mask, or rt_mask_max with RG16F
+    std::optional<engine::render::TextureDesc> maskAdd;    // rt_mask_add, RG16F precision only
+    engine::render::TextureDesc foliage;                   // rt_foliage
+    std::optional<engine::render::TextureDesc> depthCopy;  // depthMaskThreshold > 0 only (D32F)
 };
 
 // The engine's depth function for a DepthTest and back (none for a function that cannot order
@@ -91,14 +98,21 @@ public:
     void colorPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth,
                    const Intermediates& targets);
     void compositePass(const FramePlan& plan, engine::render::TextureHandle color, const Intermediates& targets);
+    // depthMaskThreshold > 0, after the composite: the foliage depth into `depth` where the
+    // composited mask reaches the threshold (nothing to do otherwise).
+    void foliageDepthPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth,
+                          const Intermediates& targets);
 
     // SSAM's own targets (null until render() or plan() made them; never made for a graph).
-    Intermediates intermediates() const { return {mask_, maskAdd_, foliage_}; }
+    Intermediates intermediates() const { return {mask_, maskAdd_, foliage_, depthCopy_}; }
     engine::render::Backend& backend() const { return backend_; }
 
 private:
     struct Pipelines {
         engine::render::PipelineHandle mask, color, composite;
+        // depthMaskThreshold > 0 only: the foliage depth program and its pipeline.
+        engine::render::ProgramHandle foliageDepthProgram;
+        engine::render::PipelineHandle foliageDepth;
     };
     // All three for `settings`, or none: a create that throws destroys those made before it.
     Pipelines createPipelines(const Settings& settings);
@@ -110,10 +124,11 @@ private:
     Settings settings_;
     engine::render::ProgramHandle compositeProgram_;  // composite_program.hpp
     Pipelines pipelines_;
-    engine::render::TextureHandle mask_, maskAdd_, foliage_;
+    engine::render::TextureHandle mask_, maskAdd_, foliage_, depthCopy_;
     int width_ = 0, height_ = 0;
     std::optional<engine::render::Format> foliageFormat_;
     std::optional<MaskPrecision> targetPrecision_;
+    bool targetsCopyDepth_ = false;
 };
 
 }  // namespace ssam

@@ -65,7 +65,7 @@ uniform sampler2D u_maskAdd;
 uniform bool u_hasMaskAdd;
 uniform float u_maskLerp;
 uniform bool u_squareMask;
-)") + ssam::glsl::kComposite;
+)") + ssam::glsl::kCompositeMask + ssam::glsl::kComposite;
 
 const std::string kCompositeFragment = kCompositeHead + R"(
 layout(location = 0) out vec4 o_color;

@@ -131,9 +131,10 @@ int main(int argc, char** argv) {
         write(dir + "/fullscreen.vert",
               std::string("#version 450\n#define VERTEX_INDEX gl_VertexIndex\n") + ssam::glsl::kFullscreenVertexMain) &&
         write(dir + "/composite.frag", compositeInterface("") + "layout(location = 0) out vec4 o_color;\n" +
-                                           ssam::glsl::kComposite +
+                                           ssam::glsl::kCompositeMask + ssam::glsl::kComposite +
                                            "void main() { o_color = ssamComposite(ivec2(gl_FragCoord.xy)); }\n") &&
-        write(dir + "/restore.frag", compositeInterface(kRestoreExtra) + kRestoreInterface + ssam::glsl::kComposite +
+        write(dir + "/restore.frag", compositeInterface(kRestoreExtra) + kRestoreInterface +
+                                         ssam::glsl::kCompositeMask + ssam::glsl::kComposite +
                                          ssam::glsl::kDepthRestoreMain);
     return ok ? 0 : 1;
 }

@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -338,12 +340,46 @@ TYPED_TEST_P(SsamCases, FrameGraphRunsThreePassesWithFoliageAndNoneWithout) {
     EXPECT_EQ(ssamPassesTimed(*g.backend), 0);
 }
 
+// Settings::depthMaskThreshold on the engine's backends: rt_depth keeps the foliage depth only
+// where the composited mask reaches the threshold, through render() and through a frame graph;
+// the composited colour is the same as without it. A alone: mask 0.4 -> 0.16 squared; the
+// overlap: lerp(0.4, 0.6, 0.85) = 0.57 -> 0.325; B is cut by the colour pass (0.2 < 64/255).
+TYPED_TEST_P(SsamCases, DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskReachesIt) {
+    const auto run = [](float threshold, bool graph) {
+        auto f = std::make_unique<Frame<TypeParam>>();
+        f->opaquePass();
+        ssam::Settings settings;
+        settings.depthMaskThreshold = threshold;
+        ssam::ScreenSpaceAlphaMask ssam(*f->backend, settings);
+        QuadBatches q(*f->backend, {kQuadA, kQuadB});
+        if (graph) {
+            const std::vector<std::string> passes = runGraph(*f, ssam, viewOf(q));
+            EXPECT_EQ(std::count(passes.begin(), passes.end(), "ssam depth restore"), threshold > 0.0f ? 1 : 0);
+        } else {
+            ssam.render(f->targets(), viewOf(q));
+        }
+        return std::pair{f->backend->readback(f->opaque.color()), f->backend->readback(f->opaque.depth())};
+    };
+    const auto [paperColor, paperDepth] = run(0.0f, false);
+    EXPECT_NEAR(paperDepth.at(kOnlyA, 4, 0), 0.3f, 1e-6f);
+    for (bool graph : {false, true}) {
+        const auto [color, depth] = run(0.2f, graph);
+        EXPECT_EQ(color.values, paperColor.values) << "graph " << graph;
+        EXPECT_NEAR(depth.at(kOnlyA, 4, 0), 1.0f, 1e-6f) << "graph " << graph;    // 0.16 < 0.2: opaque depth
+        EXPECT_NEAR(depth.at(kOverlap, 4, 0), 0.3f, 1e-6f) << "graph " << graph;  // 0.325: A's depth
+        EXPECT_NEAR(depth.at(kOnlyB, 4, 0), 1.0f, 1e-6f) << "graph " << graph;
+        const auto [lowColor, lowDepth] = run(0.1f, graph);
+        EXPECT_NEAR(lowDepth.at(kOnlyA, 4, 0), 0.3f, 1e-6f) << "graph " << graph;  // 0.16 >= 0.1
+    }
+}
+
 REGISTER_TYPED_TEST_SUITE_P(SsamCases, CrossingQuadsGiveMaxAndAddMasks, ColourPassAlphaTestsAndWritesFoliageDepth,
                             CompositeFollowsListing32, SquaringAndLerpChangeTheResultAsTheFormulaSays,
                             Rgba8AddMaskSaturatesWhereFloatMasksDoNot, OpaqueGeometryOccludesFoliageInEveryPass,
                             FoliageDepthOccludesLaterDrawsBehindNotInFront, NoFoliageInViewRunsNoPass,
                             ClosestSampleDepthResolveWithMsaaOpaquePass, MaskProgramIgnoresColour,
                             BadConfigurationIsRejectedWithTheKnobName,
-                            FrameGraphRunsThreePassesWithFoliageAndNoneWithout);
+                            FrameGraphRunsThreePassesWithFoliageAndNoneWithout,
+                            DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskReachesIt);
 
 }  // namespace ssam_cases

@@ -534,6 +534,7 @@ private:
     struct Textures final : TextureLookup {
         explicit Textures(const ResourcePool<TextureTag, SoftTexture>& pool) : pool(pool) {}
         const SoftTexture* texture(TextureHandle h) const override { return h ? &pool.get(h) : nullptr; }
+        SampleFunction sampleFunction() const override { return &sampleTexture<SampledChannels::All>; }
         const ResourcePool<TextureTag, SoftTexture>& pool;
     } textureLookup_{textures_};
     std::optional<PassDesc> pass_;

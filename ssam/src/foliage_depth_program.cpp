@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#include "foliage_depth_program.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include "composite_glsl.hpp"
+#include "engine/render/glsl/lit_surface.hpp"
+#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "foliage_depth_kernel.hpp"
+
+namespace ssam {
+namespace {
+
+using namespace engine::render;
+
+// SURFACE_OUTPUT is expanded inside the lit surface's main(): MaskedLit's output, discarded where
+// the composited mask is below the threshold (the soft kernel's NaN alpha fails the alpha test).
+constexpr const char* kFoliageDepth = R"(
+#define PRECISE precise
+#define SURFACE_OUTPUT(c) foliageDepthOutput(c)
+layout(binding = 1) uniform sampler2D u_mask;
+layout(binding = 2) uniform sampler2D u_maskAdd;
+)";
+
+constexpr const char* kFoliageDepthOutput = R"(
+vec4 foliageDepthOutput(vec4 c) {
+    if (!(ssamCompositeMask(ivec2(gl_FragCoord.xy)) >= u_threshold)) discard;
+    return c;
+}
+)";
+
+}  // namespace
+
+ProgramDesc foliageDepthProgram() {
+    ProgramDesc d =
+        describeProgram<FoliageDepthParams>("SsamFoliageDepth", VertexInput::Mesh, "ssam::FoliageDepthParams");
+    d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + kFoliageDepth +
+                    ssam::glsl::kCompositeMask + kFoliageDepthOutput + engine::render::glsl::kLitSurface;
+    litSurfaceLayout<FoliageDepthParams>(d.gl);
+    d.gl.uniforms.push_back({"u_maskLerp", UniformType::Float, offsetof(FoliageDepthParams, maskLerp)});
+    d.gl.uniforms.push_back({"u_squareMask", UniformType::Bool, offsetof(FoliageDepthParams, squareMask)});
+    d.gl.uniforms.push_back({"u_threshold", UniformType::Float, offsetof(FoliageDepthParams, threshold)});
+    // Read at the fragment's pixel: at least the target's size.
+    d.gl.textures.push_back(
+        {"u_mask", offsetof(FoliageDepthParams, mask), 1, TextureRead::Texel, TextureUse::FullSize});
+    d.gl.textures.push_back({"u_maskAdd", offsetof(FoliageDepthParams, maskAdd), 2, TextureRead::Texel,
+                             TextureUse::FullSize, true, "u_hasMaskAdd"});
+    d.check = [](const void* params, const DrawCheck& check) {
+        const auto* p = static_cast<const FoliageDepthParams*>(params);
+        if (!std::isfinite(p->maskLerp)) check.fail("maskLerp is not finite");
+        if (!std::isfinite(p->threshold)) check.fail("threshold is not finite");
+    };
+    d.soft = soft::makeKernel<FoliageDepthKernel, FoliageDepthParams>();
+    return d;
+}
+
+}  // namespace ssam

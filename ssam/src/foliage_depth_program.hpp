@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The engine-hosted SSAM's Settings::depthMaskThreshold: the depth SSAM leaves for later passes
+// keeps the foliage depth only where the composited mask reaches the threshold ([Hathaway 2010]
+// §3.7; core/passes.hpp's depth restore). ssam::gl and ssam::vk put the opaque depth back with a
+// full-screen pass that writes depth; the engine's programs cannot write depth, so the engine-hosted
+// SSAM draws the colour pass into a copy of the opaque depth and then this program into the host's:
+// the foliage again, depth only, with the colour pass's surface and alpha test, discarding where
+// the composited mask is below the threshold. Where the mask reaches it the host's depth is the
+// colour pass's; below it, the opaque depth: the same depth as the full-screen restore.
+#include "engine/render/program.hpp"
+#include "engine/render/program_desc.hpp"
+#include "engine/render/texture.hpp"
+
+namespace ssam {
+
+struct FoliageDepthParams {
+    // The colour pass's surface (MaskedLit's): its alpha is the one the alpha test sees.
+    glm::mat4 viewProj{1.0f};
+    glm::vec4 baseColorFactor{1.0f};
+    engine::render::TextureBinding baseColor;
+    engine::render::DirectionalLight light;
+    // The composite's mask (composite_program.hpp's fields) and the threshold.
+    engine::render::TextureHandle mask;
+    engine::render::TextureHandle maskAdd;
+    float maskLerp = 0.85f;
+    bool squareMask = true;
+    float threshold = 0.0f;
+};
+
+// Draws output alpha NaN (so any alpha test discards them) where the composited mask is below the
+// threshold; elsewhere MaskedLit's colour and alpha.
+engine::render::ProgramDesc foliageDepthProgram();
+
+}  // namespace ssam
