@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "composite_glsl.hpp"
+#include "ssam_glsl.hpp"  // generated from core/glsl/
 #include "composite_kernel.hpp"
 #include "engine/render/soft/kernel/program_kernel.hpp"
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "composite_glsl.hpp"
+#include "ssam_glsl.hpp"  // generated from core/glsl/
 #include "engine/render/glsl/lit_surface.hpp"
 #include "engine/render/soft/kernel/program_kernel.hpp"
 #include "foliage_depth_kernel.hpp"
@@ -15,20 +15,13 @@ namespace {
 
 using namespace engine::render;
 
-// SURFACE_OUTPUT is expanded inside the lit surface's main(): MaskedLit's output, discarded where
-// the composited mask is below the threshold (the soft kernel's NaN alpha fails the alpha test).
+// The engine dialect's head: SURFACE_OUTPUT (expanded inside the lit surface's main()) is
+// foliage_depth_output.glsl's; the soft kernel's NaN alpha fails the alpha test where it discards.
 constexpr const char* kFoliageDepth = R"(
 #define PRECISE precise
 #define SURFACE_OUTPUT(c) foliageDepthOutput(c)
 layout(binding = 1) uniform sampler2D u_mask;
 layout(binding = 2) uniform sampler2D u_maskAdd;
-)";
-
-constexpr const char* kFoliageDepthOutput = R"(
-vec4 foliageDepthOutput(vec4 c) {
-    if (!(ssamCompositeMask(ivec2(gl_FragCoord.xy)) >= u_threshold)) discard;
-    return c;
-}
 )";
 
 }  // namespace
@@ -37,7 +30,7 @@ ProgramDesc foliageDepthProgram() {
     ProgramDesc d =
         describeProgram<FoliageDepthParams>("SsamFoliageDepth", VertexInput::Mesh, "ssam::FoliageDepthParams");
     d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + kFoliageDepth +
-                    ssam::glsl::kCompositeMask + kFoliageDepthOutput + engine::render::glsl::kLitSurface;
+                    ssam::glsl::kCompositeMask + ssam::glsl::kFoliageDepthOutput + engine::render::glsl::kLitSurface;
     litSurfaceLayout<FoliageDepthParams>(d.gl);
     d.gl.uniforms.push_back({"u_maskLerp", UniformType::Float, offsetof(FoliageDepthParams, maskLerp)});
     d.gl.uniforms.push_back({"u_squareMask", UniformType::Bool, offsetof(FoliageDepthParams, squareMask)});

@@ -8,7 +8,7 @@
 // Listing 3.2's lerp(opaque, foliage, mask) done by the blend unit, as §3.5 describes the
 // post-process ("resembles frame-buffer blending ... SRCALPHA and INVSRCALPHA"). Composing in
 // place lets a scissor limit the work to the foliage's screen bounds.
-// One GLSL source serves both the engine backend's program and ssam::gl (composite_glsl.hpp).
+// One GLSL source serves both the engine backend's program and ssam::gl (ssam/src/core/glsl/composite*.glsl).
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "../composite_glsl.hpp"
+#include "ssam_glsl.hpp"  // generated from core/glsl/
 #include "gl_functions.hpp"
 #include "gl_objects.hpp"
 #include "shaders.hpp"

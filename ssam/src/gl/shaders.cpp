@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "shaders.hpp"
 
-#include "../composite_glsl.hpp"
-#include "../foliage_glsl.hpp"
+#include "ssam_glsl.hpp"  // generated from core/glsl/
 
 namespace ssam::gl::shaders {
 
@@ -24,7 +23,7 @@ out vec4 v_color;
 )" + ssam::glsl::kFoliageVertexMain;
 }
 
-// The formulas are ssam::glsl's (foliage_glsl.hpp), shared with ssam::vk.
+// The formulas are ssam::glsl's (core/glsl/*.glsl), shared with ssam::vk.
 const std::string kMaskFragment = std::string(R"(#version 330 core
 in vec2 v_uv;
 in vec4 v_color;
@@ -53,7 +52,7 @@ const std::string kFullscreenVertex =
     std::string("#version 330 core\n#define VERTEX_INDEX gl_VertexID\n") + ssam::glsl::kFullscreenVertexMain;
 
 // §3.5.4 / Listing 3.2, one texel per pixel: the same function as the engine backend's
-// composite program (composite_glsl.hpp); the output (foliage, mask) is blended SRC_ALPHA /
+// composite program (core/glsl/composite*.glsl); the output (foliage, mask) is blended SRC_ALPHA /
 // ONE_MINUS_SRC_ALPHA onto the engine's colour, which is lerp(opaque, foliage, mask) and keeps
 // the colour's alpha. GLSL 3.30 has no `precise`; nothing here can be contracted into an FMA
 // that changes which side of 0 or 1 the mask falls anyway.

@@ -12,7 +12,7 @@ std::string foliageVertex(const AttributeLocations& locations);
 extern const std::string kMaskFragment;      // Listing 3.1: alpha only, replicated
 extern const std::string kColorFragment;     // alpha-tested, double-sided lit colour
 extern const std::string kFullscreenVertex;  // one triangle over the viewport
-// The composite's inputs and ssamComposite() (composite_glsl.hpp), what every program reading
+// The composite's inputs and ssamComposite() (core/glsl/composite.glsl), what every program reading
 // the mask starts with.
 extern const std::string kCompositeHead;
 extern const std::string kCompositeFragment;  // Listing 3.2 as (foliage, mask) for SRC_ALPHA blending

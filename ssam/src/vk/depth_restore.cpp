@@ -5,7 +5,7 @@
 // transparent pass is cut there (a rim of the unblended background round the leaves). With a
 // threshold the host's opaque depth is copied before the colour pass and written back after the
 // composite wherever the composited mask is below it: one depth copy and one full-screen
-// depth-only pass (restore.frag: composite_glsl.hpp's kComposite and kDepthRestoreMain), both over
+// depth-only pass (restore.frag: core/glsl/composite*.glsl and depth_restore_main.glsl), both over
 // the composite's region.
 #include "impl.hpp"
 

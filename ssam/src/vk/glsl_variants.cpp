@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Build-time tool: writes the Vulkan variants of SSAM's GLSL (GLSL 4.50 for glslc) from the one
-// source ssam::gl uses too (foliage_glsl.hpp, composite_glsl.hpp): a Vulkan preamble (explicit
+// source ssam::gl uses too (core/glsl/*.glsl): a Vulkan preamble (explicit
 // locations, the per-frame uniform block, push constants, descriptor sets) with #defines that map
 // the bodies' u_* names onto them, then the shared bodies unchanged. CMake compiles the files to
 // SPIR-V with glslc and embeds them (cmake/embed_spirv.cmake); nothing compiles GLSL at run time.
@@ -13,8 +13,7 @@
 #include <fstream>
 #include <string>
 
-#include "../composite_glsl.hpp"
-#include "../foliage_glsl.hpp"
+#include "ssam_glsl.hpp"  // generated from core/glsl/
 
 namespace {
 

@@ -1,0 +1,7 @@
+// SPDX-License-Identifier: MIT
+// One triangle over the whole viewport from the vertex index (VERTEX_INDEX: gl_VertexID in GL,
+// gl_VertexIndex in Vulkan).
+void main() {
+    vec2 p = vec2(float((VERTEX_INDEX & 1) << 2) - 1.0, float((VERTEX_INDEX & 2) << 1) - 1.0);
+    gl_Position = vec4(p, 0.0, 1.0);
+}
