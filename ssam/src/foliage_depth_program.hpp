@@ -11,6 +11,7 @@
 #include "engine/render/program.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
+#include "ssam/composite_program.hpp"
 
 namespace ssam {
 
@@ -27,6 +28,13 @@ struct FoliageDepthParams {
     bool squareMask = true;
     float threshold = 0.0f;
 };
+
+// The colour pass's surface, the composite's mask and the threshold as one draw's parameters.
+inline FoliageDepthParams foliageDepthParams(const engine::render::SurfaceParams& surface,
+                                             const CompositeParams& composite, float threshold) {
+    return {surface.viewProj,  surface.baseColorFactor, surface.baseColor,    surface.light, composite.mask,
+            composite.maskAdd, composite.maskLerp,      composite.squareMask, threshold};
+}
 
 // Draws output alpha NaN (so any alpha test discards them) where the composited mask is below the
 // threshold; elsewhere MaskedLit's colour and alpha.

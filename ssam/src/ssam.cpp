@@ -65,6 +65,16 @@ PipelineDesc pipelineDesc(const core::PassDescription& pass, ProgramHandle fullS
     return d;
 }
 
+// The colour pass's surface for `batch`: the view's sun unless the batch is unlit.
+SurfaceParams surfaceOf(const MaskedBatch& batch, const FoliageView& view) {
+    SurfaceParams params;
+    params.viewProj = view.viewProj;
+    params.baseColorFactor = batch.baseColorFactor;
+    params.baseColor = batch.baseColor;
+    params.light = batch.unlit ? engine::render::unlitLight() : view.light;
+    return params;
+}
+
 glm::vec4 clearColorOf(const core::ColorTarget& target) {
     return {target.clearColor[0], target.clearColor[1], target.clearColor[2], target.clearColor[3]};
 }
@@ -265,15 +275,19 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
         pass.depth.texture = targets.depthCopy;
     }
     PassScope passScope(backend_, pass);
-    for (const MaskedBatch* batch : plan.visible) {
-        SurfaceParams params;
-        params.viewProj = view.viewProj;
-        params.baseColorFactor = batch->baseColorFactor;
-        params.baseColor = batch->baseColor;
-        params.light = batch->unlit ? engine::render::unlitLight() : view.light;
-        backend_.draw(maskedBatchDraw(*batch, pipelines_.color, params));
-    }
+    for (const MaskedBatch* batch : plan.visible)
+        backend_.draw(maskedBatchDraw(*batch, pipelines_.color, surfaceOf(*batch, view)));
     passScope.end();
+}
+
+CompositeParams ScreenSpaceAlphaMask::compositeParams(const Intermediates& targets) const {
+    CompositeParams params;
+    params.foliage = targets.foliage;
+    params.mask = targets.mask;
+    params.maskAdd = targets.maskAdd;
+    params.maskLerp = settings_.maskLerp;
+    params.squareMask = settings_.squareMask;
+    return params;
 }
 
 void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color, const Intermediates& targets) {
@@ -281,15 +295,9 @@ void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle co
     pass.name = core::describePasses(settings_).composite.name;
     pass.color[0] = {color, LoadOp::Load};
     PassScope passScope(backend_, pass);
-    CompositeParams params;
-    params.foliage = targets.foliage;
-    params.mask = targets.mask;
-    params.maskAdd = targets.maskAdd;
-    params.maskLerp = settings_.maskLerp;
-    params.squareMask = settings_.squareMask;
     DrawDesc d;
     d.pipeline = pipelines_.composite;
-    d.params = params;
+    d.params = compositeParams(targets);
     d.scissor = plan.compositeRegion;
     backend_.draw(d);
     passScope.end();
@@ -302,19 +310,10 @@ void ScreenSpaceAlphaMask::foliageDepthPass(const FramePlan& plan, const Foliage
     pass.name = core::describePasses(settings_).depthRestore.name;
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
-    for (const MaskedBatch* batch : plan.visible) {
-        FoliageDepthParams params;
-        params.viewProj = view.viewProj;
-        params.baseColorFactor = batch->baseColorFactor;
-        params.baseColor = batch->baseColor;
-        params.light = batch->unlit ? engine::render::unlitLight() : view.light;
-        params.mask = targets.mask;
-        params.maskAdd = targets.maskAdd;
-        params.maskLerp = settings_.maskLerp;
-        params.squareMask = settings_.squareMask;
-        params.threshold = settings_.depthMaskThreshold;
-        backend_.draw(maskedBatchDraw(*batch, pipelines_.foliageDepth, params));
-    }
+    const CompositeParams mask = compositeParams(targets);
+    for (const MaskedBatch* batch : plan.visible)
+        backend_.draw(maskedBatchDraw(*batch, pipelines_.foliageDepth,
+                                      foliageDepthParams(surfaceOf(*batch, view), mask, settings_.depthMaskThreshold)));
     passScope.end();
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "engine/render/backend.hpp"
+#include "ssam/composite_program.hpp"
 #include "ssam/core/frame.hpp"
 #include "ssam/core/settings.hpp"
 #include "ssam/foliage.hpp"
@@ -117,6 +118,7 @@ private:
     // All three for `settings`, or none: a create that throws destroys those made before it.
     Pipelines createPipelines(const Settings& settings);
     void destroy(const Pipelines& pipelines);
+    CompositeParams compositeParams(const Intermediates& targets) const;  // the composite's inputs and knobs
     void ensureTargets(int width, int height, engine::render::Format foliageFormat);
     void destroyTargets();
 

@@ -98,22 +98,18 @@ struct Targets {
                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, kAttachmentStages, 0, kAttachmentStages,
                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
     }
-    // Cleared by transfers, then handed over in the contract's entry layouts (the host's barrier
-    // from its transfer into the attachment stages: the contract's "another stage" case).
-    void clear(VkCommandBuffer cb, const float rgba[4], float z) const {
+    // Both images made transfer destinations (their contents discarded).
+    void toTransferDestination(VkCommandBuffer cb) const {
         imageBarrier(cb, color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
         imageBarrier(cb, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-        VkClearColorValue c;
-        std::memcpy(c.float32, rgba, sizeof c.float32);
-        const VkImageSubresourceRange colorRange{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        const VkImageSubresourceRange depthRange{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-        vkCmdClearColorImage(cb, color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1, &colorRange);
-        const VkClearDepthStencilValue d{z, 0};
-        vkCmdClearDepthStencilImage(cb, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &d, 1, &depthRange);
+    }
+    // From the transfers that wrote them into the contract's entry layouts (the host's barrier from
+    // its transfer into the attachment stages: the contract's "another stage" case).
+    void toEntryLayouts(VkCommandBuffer cb) const {
         imageBarrier(cb, color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                      VK_ACCESS_TRANSFER_WRITE_BIT, kAttachmentStages,
@@ -123,15 +119,23 @@ struct Targets {
                      VK_ACCESS_TRANSFER_WRITE_BIT, kAttachmentStages,
                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
     }
+    // Cleared by transfers, then handed over in the contract's entry layouts (the host's barrier
+    // from its transfer into the attachment stages: the contract's "another stage" case).
+    void clear(VkCommandBuffer cb, const float rgba[4], float z) const {
+        toTransferDestination(cb);
+        VkClearColorValue c;
+        std::memcpy(c.float32, rgba, sizeof c.float32);
+        const VkImageSubresourceRange colorRange{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        const VkImageSubresourceRange depthRange{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(cb, color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1, &colorRange);
+        const VkClearDepthStencilValue d{z, 0};
+        vkCmdClearDepthStencilImage(cb, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &d, 1, &depthRange);
+        toEntryLayouts(cb);
+    }
     // Filled from `source` (the colour's RGBA8 rows, then the depth's floats: readback's layout) by
     // transfers, then handed over in the contract's entry layouts, as clear() does.
     void upload(VkCommandBuffer cb, const vk_example::HostBuffer& source) const {
-        imageBarrier(cb, color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-        imageBarrier(cb, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        toTransferDestination(cb);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {width, height, 1};
@@ -139,14 +143,7 @@ struct Targets {
         region.bufferOffset = VkDeviceSize(width) * height * 4;
         region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
         vkCmdCopyBufferToImage(cb, source.buffer, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        imageBarrier(cb, color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_WRITE_BIT, kAttachmentStages,
-                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
-        imageBarrier(cb, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_WRITE_BIT, kAttachmentStages,
-                     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+        toEntryLayouts(cb);
     }
     // Copies both images (in the contract's exit layouts) into `readback`, host-readable once the
     // command buffer completed; they are left in TRANSFER_SRC_OPTIMAL.
