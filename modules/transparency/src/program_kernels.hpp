@@ -2,6 +2,7 @@
 #pragma once
 // The soft backend's kernels of the transparency module's programs (programs.hpp).
 #include <cmath>
+#include <cstdint>
 
 #include <glm/glm.hpp>
 
@@ -9,6 +10,7 @@
 #include "engine/render/soft/kernel/programs.hpp"
 #include "engine/render/soft/kernel/sampler.hpp"
 #include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/soft/simd_isa.hpp"
 #include "transparency/programs.hpp"
 
 namespace transparency {
@@ -125,22 +127,57 @@ struct CoverageBlurCompositeKernel {
           maskAdd(textures.texture(p.maskAdd)) {}
 
     glm::vec4 shade(const soft::Fragment& f) const {
-        const glm::vec4 m = soft::fetchTexel(*mask, f.x, f.y);
-        const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, f.x, f.y).r : m.a;
-        const int width = foliage->desc.width, height = foliage->desc.height;
+        Window window;
+        window.load(*foliage, f.x, f.y, 1);
+        return blurred(window, 0, f.x, f.y);
+    }
+
+    // The rasterizer's row hook (program_kernel.hpp): shade() of the live pixels of a block row,
+    // each foliage texel of the 3 x (8 + 2) window decoded once instead of once per neighbour
+    // (nine times); the sums run in shade()'s order, so the bits are shade()'s.
+    void shadeRow(soft::SimdIsa, int bx, int py, std::uint32_t live, glm::vec4* out) const {
+        Window window;
+        window.load(*foliage, bx, py, kRow);
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            out[i] = blurred(window, i, bx + i, py);
+        }
+    }
+
+private:
+    static constexpr int kRow = 8;  // the rasterizer's block row (raster_support.hpp kBlockSize)
+    // The foliage texels around `count` pixels from (x0, y): rows y - 1 .. y + 1, columns x0 - 1 ..
+    // x0 + count; `written` false outside the texture or where the colour pass wrote nothing.
+    struct Window {
+        glm::vec4 texel[3][kRow + 2];
+        bool written[3][kRow + 2];
+        void load(const soft::SoftTexture& foliage, int x0, int y, int count) {
+            const int width = foliage.desc.width, height = foliage.desc.height;
+            for (int row = 0; row < 3; ++row)
+                for (int column = 0; column < count + 2; ++column) {
+                    const int x = x0 + column - 1, yy = y + row - 1;
+                    const bool inside = x >= 0 && yy >= 0 && x < width && yy < height;
+                    texel[row][column] = inside ? soft::fetchTexel(foliage, x, yy) : glm::vec4(0.0f);
+                    written[row][column] = inside && texel[row][column].a > 0.0f;  // NaN: nothing written
+                }
+        }
+    };
+
+    // Pixel (x, y), column `i` of the window: the written neighbours' colour, weighted 1-2-1 by
+    // 1-2-1 and summed row by row (the GLSL's order), and SSAM+'s coverage.
+    glm::vec4 blurred(const Window& w, int i, int x, int y) const {
+        const glm::vec4 m = soft::fetchTexel(*mask, x, y);
+        const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, x, y).r : m.a;
         glm::vec3 sum(0.0f);
         float weights = 0.0f;
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
-                const int x = f.x + dx, y = f.y + dy;
-                if (x < 0 || y < 0 || x >= width || y >= height) continue;
-                const glm::vec4 c = soft::fetchTexel(*foliage, x, y);
-                if (!(c.a > 0.0f)) continue;  // the colour pass wrote nothing here (NaN too)
-                const float weight = float((2 - dx * dx) * (2 - dy * dy));  // 1-2-1 by 1-2-1
-                sum += weight * glm::vec3(c);
+                if (!w.written[dy + 1][i + dx + 1]) continue;
+                const float weight = float((2 - dx * dx) * (2 - dy * dy));
+                sum += weight * glm::vec3(w.texel[dy + 1][i + dx + 1]);
                 weights += weight;
             }
-        glm::vec3 color = weights > 0.0f ? sum / weights : glm::vec3(soft::fetchTexel(*foliage, f.x, f.y));
+        glm::vec3 color = weights > 0.0f ? sum / weights : glm::vec3(w.texel[1][i + 1]);
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(color[c])) color[c] = 0.0f;
         return {color, layerCoverage(model, m.r, addMask)};

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+// SSAM+'s blurred composite on the soft backend (CoverageBlurCompositeKernel, program_kernels.hpp):
+// its row hook against the formula as written before it had one -- each of the nine neighbours
+// fetched on its own, the written ones (alpha > 0, NaN not) weighted 1-2-1 by 1-2-1 and summed row
+// by row -- bit for bit, over random foliage with unwritten and NaN texels, image borders and
+// partly live rows. The pictures stay the same (Racer.Golden.technique_ssam-plus pins them too).
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "lcg.hpp"  // tests/support
+#include "program_kernels.hpp"
+#include "soft_image.hpp"  // tests/support
+
+namespace {
+
+namespace soft = engine::render::soft;
+using engine::render::Format;
+using ssam::testing::Lcg;
+
+soft::SoftTexture randomImage(int w, int h, Lcg& rng, bool withNan) {
+    soft::SoftTexture t = ssam::testing::softImage(w, h, Format::RGBA32F, 16);
+    for (int i = 0; i < w * h; ++i) {
+        float texel[4];
+        for (float& v : texel) v = rng.unit();
+        const float u = rng.unit();
+        if (u < 0.3f) texel[3] = 0.0f;                                                 // nothing written
+        if (withNan && u > 0.97f) texel[3] = std::numeric_limits<float>::quiet_NaN();  // nor here
+        std::memcpy(t.levels[0].texels.data() + 16 * std::size_t(i), texel, sizeof texel);
+    }
+    return t;
+}
+
+// The composite's colour as it was computed before the row hook.
+glm::vec3 referenceBlur(const soft::SoftTexture& foliage, int px, int py) {
+    const int width = foliage.desc.width, height = foliage.desc.height;
+    glm::vec3 sum(0.0f);
+    float weights = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int x = px + dx, y = py + dy;
+            if (x < 0 || y < 0 || x >= width || y >= height) continue;
+            const glm::vec4 c = soft::fetchTexel(foliage, x, y);
+            if (!(c.a > 0.0f)) continue;
+            const float weight = float((2 - dx * dx) * (2 - dy * dy));
+            sum += weight * glm::vec3(c);
+            weights += weight;
+        }
+    glm::vec3 color = weights > 0.0f ? sum / weights : glm::vec3(soft::fetchTexel(foliage, px, py));
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(color[c])) color[c] = 0.0f;
+    return color;
+}
+
+TEST(BlurCompositeRows, RowHookAndShadeGiveTheBitsOfTheFormula) {
+    Lcg rng{20261206};
+    constexpr int kW = 45, kH = 23;  // rows end in partial blocks
+    for (int trial = 0; trial < 6; ++trial) {
+        const soft::SoftTexture foliage = randomImage(kW, kH, rng, trial % 2 == 1);
+        const soft::SoftTexture mask = randomImage(kW, kH, rng, false);
+        struct Textures final : soft::TextureLookup {
+            const soft::SoftTexture *foliage, *mask;
+            Textures(const soft::SoftTexture* f, const soft::SoftTexture* m) : foliage(f), mask(m) {}
+            const soft::SoftTexture* texture(engine::render::TextureHandle h) const override {
+                return !h ? nullptr : h.index == 1 ? foliage : mask;
+            }
+        };
+        transparency::CoverageCompositeParams params;
+        params.foliage = {1, 1};
+        params.mask = {2, 1};
+        const transparency::CoverageBlurCompositeKernel kernel(params, Textures(&foliage, &mask));
+        for (int y = 0; y < kH; ++y)
+            for (int bx = 0; bx < kW; bx += 8) {
+                std::uint32_t live = bx + 8 <= kW ? 0xFFu : (1u << (kW - bx)) - 1u;
+                if ((y + bx) % 3 == 0) live &= std::uint32_t(rng.unit() * 256.0f);
+                glm::vec4 row[8];
+                kernel.shadeRow(soft::SimdIsa::Sse2, bx, y, live, row);
+                for (int i = 0; i < 8; ++i) {
+                    if (!((live >> i) & 1u)) continue;
+                    soft::Fragment f;
+                    f.x = bx + i, f.y = y;
+                    const glm::vec4 shaded = kernel.shade(f);
+                    const glm::vec3 expected = referenceBlur(foliage, f.x, y);
+                    for (int c = 0; c < 3; ++c) {
+                        ASSERT_EQ(std::bit_cast<std::uint32_t>(row[i][c]), std::bit_cast<std::uint32_t>(expected[c]))
+                            << "row hook, pixel (" << f.x << ", " << y << ") channel " << c << ", trial " << trial;
+                        ASSERT_EQ(std::bit_cast<std::uint32_t>(shaded[c]), std::bit_cast<std::uint32_t>(expected[c]))
+                            << "shade, pixel (" << f.x << ", " << y << ") channel " << c;
+                    }
+                    ASSERT_EQ(std::bit_cast<std::uint32_t>(row[i].a), std::bit_cast<std::uint32_t>(shaded.a));
+                }
+            }
+    }
+}
+
+}  // namespace
