@@ -48,7 +48,9 @@ struct PassDescription {
 
 // The passes of a frame with foliage in view, in order. depthRestore runs only when
 // Settings::depthMaskThreshold > 0 (after the composite; the opaque depth is copied before the
-// colour pass).
+// colour pass). A host whose passes cannot write depth from a full-screen pass (the engine's
+// backends) reaches the same depth another way: the colour pass into the copy, then the foliage
+// again, depth only, where the mask reaches the threshold (ssam/src/foliage_depth_program.hpp).
 struct PassPlan {
     PassDescription mask, color, composite, depthRestore;
     bool restoresDepth = false;

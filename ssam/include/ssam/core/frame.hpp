@@ -33,7 +33,7 @@ const char* foliagePassName(FoliagePass pass) noexcept;  // "mask", "colour"
 struct FrameReport {
     bool foliageInView = false;  // false: nothing ran (a host drawing pass by pass calls nothing more)
     int batchesVisible = 0;      // the engine-hosted SSAM: batches in view (the host APIs: 0, they draw)
-    int passesRun = 0;           // 0 when no foliage is in view, else 3 (+1 with depthMaskThreshold > 0)
+    int passesRun = 0;           // 0 when no foliage is in view, else 3 (mask, colour, composite)
     Rect compositeRegion;        // where the composite ran (see Rect for each host's rows)
 };
 
