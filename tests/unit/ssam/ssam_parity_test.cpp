@@ -4,8 +4,8 @@
 // host's context and ssam::vk in a Vulkan host's command buffer -- each compared with the soft
 // backend's picture (the goldens' source) under the differential thresholds of
 // engine/render/README.md. The cases put every knob at a non-default value, each mask precision,
-// MSAA 1/2/4 and depthMaskThreshold on and off. Compared: the composited colour and the depth left
-// for later passes; the mask and rt_foliage too where the entry point exposes them. A knob added to
+// MSAA 1/2/4 and depthMaskThreshold on and off. Compared: the composited colour, the depth left
+// for later passes, the mask and rt_foliage (every entry point exposes them). A knob added to
 // the core (ssam::Settings) that one SSAM ignores shows here as a difference.
 #include <gtest/gtest.h>
 
@@ -16,10 +16,12 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/gl/gl_backend.hpp"
+#include "engine/render/pixel_codec.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
 #include "ssam/gl/ssam_gl.hpp"
@@ -146,7 +148,8 @@ Result glHost(const Case& c) {
 
 // ssam::vk in a Vulkan host's command buffer (the examples' host, under validation). The host's
 // opaque frame is the soft backend's, uploaded; y is flipped into Vulkan's clip space.
-Result vkHost(const Case& c, const Readback& opaqueColor, const Readback& opaqueDepth) {
+Result vkHost(const Case& c, const Readback& opaqueColor, const Readback& opaqueDepth, const Readback& softMask,
+              const Readback& softFoliage) {
     vk_example::VulkanHost host(true);
     ssam_vk_test::Targets targets(host, kSize, kSize);
     vk_example::HostBuffer upload =
@@ -188,7 +191,28 @@ Result vkHost(const Case& c, const Readback& opaqueColor, const Readback& opaque
                           }),
               ssam::Status::Ok)
         << ssam.lastMessage();
-    targets.copyOut(cb);
+    // SSAM's intermediates (in SHADER_READ_ONLY_OPTIMAL, last read by the composite) into a buffer.
+    const int maskBytes = c.settings.maskPrecision == ssam::MaskPrecision::Rgba8     ? 4
+                          : c.settings.maskPrecision == ssam::MaskPrecision::Rgba16f ? 8
+                                                                                     : 2;
+    const VkDeviceSize foliageOffset = VkDeviceSize(kSize) * kSize * maskBytes;
+    vk_example::HostBuffer intermediates =
+        host.createBuffer(foliageOffset + VkDeviceSize(kSize) * kSize * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    const ssam::vk::ScreenSpaceAlphaMaskVk::Intermediates images = ssam.intermediates();
+    for (const auto& [image, offset] :
+         {std::pair{images.mask, VkDeviceSize(0)}, std::pair{images.foliage, foliageOffset}}) {
+        ssam_vk_test::imageBarrier(
+            cb, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+            VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{};
+        region.bufferOffset = offset;
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {std::uint32_t(kSize), std::uint32_t(kSize), 1};
+        vkCmdCopyImageToBuffer(cb, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, intermediates.buffer, 1, &region);
+    }
+    targets.copyOut(cb);  // its barrier makes every transfer write visible to the host
     host.wait(host.submit(cb));
     Result r;
     r.color = opaqueColor;
@@ -199,8 +223,26 @@ Result vkHost(const Case& c, const Readback& opaqueColor, const Readback& opaque
             for (int ch = 0; ch < 4; ++ch) r.color.values[i * 4 + ch] = targets.rgba(x, y)[ch] / 255.0f;
             r.depth.values[i * r.depth.channels] = targets.z(x, y);
         }
+    // The mask as the soft backend reads it back (RGBA8 codes, halves; Rg16f: MAX in one channel).
+    r.mask = softMask;
+    const auto* maskData = static_cast<const std::uint8_t*>(intermediates.mapped);
+    for (int i = 0; i < kSize * kSize; ++i)
+        for (int ch = 0; ch < r.mask.channels; ++ch) {
+            float& v = r.mask.values[std::size_t(i) * r.mask.channels + ch];
+            if (maskBytes == 4) {
+                v = maskData[i * 4 + ch] / 255.0f;
+            } else {
+                std::uint16_t half;
+                std::memcpy(&half, maskData + (i * maskBytes / 2 + ch) * 2, 2);
+                v = decodeHalf(half);
+            }
+        }
+    r.foliageColor = softFoliage;
+    for (std::size_t i = 0; i < r.foliageColor.values.size(); ++i)
+        r.foliageColor.values[i] = maskData[foliageOffset + i] / 255.0f;
     vkDeviceWaitIdle(host.device);
     ssam.release();
+    host.destroy(intermediates);
     host.destroy(vertexBuffer);
     host.destroy(upload);
     for (const std::string& m : host.validationMessages) ADD_FAILURE() << "validation: " << m;
@@ -256,7 +298,8 @@ TEST(SsamParity, EverySsamDrawsTheSoftBackendsPicture) {
             expectMatches(engineHosted(*vk, c), reference, c, "engine-hosted on vk");
         }
         expectMatches(glHost(c), reference, c, "ssam::gl");
-        expectMatches(vkHost(c, opaqueColor, opaqueDepth), reference, c, "ssam::vk");
+        expectMatches(vkHost(c, opaqueColor, opaqueDepth, reference.mask, reference.foliageColor), reference, c,
+                      "ssam::vk");
     }
 }
 
