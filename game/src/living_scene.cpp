@@ -22,7 +22,7 @@ LivingScene::LivingScene(engine::ecs::Registry& registry, const engine::scene::M
     : registry_(registry) {
     engine::scene::FeatureContext context{registry, library, options.seed, {}};
     if (options.track)
-        context.verge = [track = options.track, seed = options.seed] { return vergeAlong(*track, seed); };
+        context.plantingSpots = [track = options.track, seed = options.seed] { return vergeAlong(*track, seed); };
     for (const engine::scene::FeatureModule& module : options.modules) {
         const auto choice = options.enabled.find(module.name);
         if (!(choice != options.enabled.end() ? choice->second : module.enabledByDefault)) continue;

@@ -6,9 +6,9 @@
 namespace grass {
 
 std::unique_ptr<engine::scene::Feature> makeFeature(const engine::scene::FeatureContext& context) {
-    if (!context.verge) return nullptr;  // no road, no verge to grow on
+    if (!context.plantingSpots) return nullptr;  // nowhere to grow
     std::vector<Tuft> tufts;
-    for (const engine::scene::GroundSpot& spot : context.verge()) tufts.push_back({spot.root, spot.yaw, spot.scale});
+    for (const engine::scene::GroundSpot& spot : context.plantingSpots()) tufts.push_back({spot.root, spot.yaw, spot.scale});
     return std::make_unique<GrassFeature>(context.library.backend(), std::move(tufts));
 }
 

@@ -103,7 +103,8 @@ struct BlendState {
     static BlendState oneOne(BlendOp rgb, BlendOp alpha) {
         return {true, BlendFactor::One, BlendFactor::One, rgb, BlendFactor::One, BlendFactor::One, alpha, WriteAll};
     }
-    // The SSAM mask ([Hathaway 2010] Table 3.1): RGB = MAX, A = ADD, all factors ONE.
+    // RGB = MAX, A = ADD, all factors ONE: the largest colour and the summed alpha (e.g. an
+    // alpha-z-buffer and a coverage sum at once, [Hathaway 2010] Table 3.1).
     static BlendState maxRgbAddAlpha() { return oneOne(BlendOp::Max, BlendOp::Add); }
 };
 

@@ -20,8 +20,9 @@
 
 namespace engine::scene {
 
-// A place on the ground beside a road where low plants may grow: its root on the ground, a
-// turn about the vertical (radians) and a size factor.
+// A place on the ground where low plants may grow: its root on the ground, a turn about the
+// vertical (radians) and a size factor. Where such places are is the scene's (the game's: its
+// verges); the engine only hands them on.
 struct GroundSpot {
     glm::vec3 root{0.0f};
     float yaw = 0.0f;
@@ -33,13 +34,13 @@ struct FeatureContext {
     ecs::Registry& registry;
     const MeshLibrary& library;  // library.backend() is the backend its feature draws with
     std::uint32_t seed = 1;      // the scene's seed: placement and noise follow it
-    // The spots along the scene's road where low plants grow; empty when the scene has no road
-    // (a glTF file). A function, so that only a module that plants there pays for computing them.
-    std::function<std::vector<GroundSpot>()> verge;
+    // The spots where the scene lets low plants grow; unset when it has none (a glTF file). A
+    // function, so that only a module that plants there pays for computing them.
+    std::function<std::vector<GroundSpot>()> plantingSpots;
 };
 
 // Makes the module's feature; returns null when the scene offers it nothing to do (grass
-// with no verge). Throws engine::Error, having released what it made, when the backend fails.
+// with no planting spots). Throws engine::Error, having released what it made, when the backend fails.
 using FeatureFactory = std::unique_ptr<Feature> (*)(const FeatureContext&);
 
 struct FeatureModule {
