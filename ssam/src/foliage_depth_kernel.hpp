@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The soft backend's kernel of SSAM's foliage depth program (foliage_depth_program.hpp): the
-// colour pass's surface (MaskedLit's, its texture sampled through the backend's sample function:
+// colour pass's alpha (MaskedLit's, its texture sampled through the backend's sample function:
 // libssam links no soft-backend code), and the composite's mask at the fragment's pixel
 // (CompositeKernel's compositeFactor: the same bits as the composite).
 #include <limits>
@@ -17,7 +17,8 @@
 namespace ssam {
 
 struct FoliageDepthKernel {
-    static constexpr engine::render::soft::ProgramNeeds kNeeds = engine::render::soft::MaskedLitProgram::kNeeds;
+    // The alpha's inputs only, as AlphaOnlyProgram's: uv and its derivatives, the vertex alpha.
+    static constexpr engine::render::soft::ProgramNeeds kNeeds = engine::render::soft::AlphaOnlyProgram::kNeeds;
     static constexpr bool kReadsPixels = true;  // the mask is read at the fragment's pixel
     engine::render::soft::MaskedLitProgram surface;
     CompositeKernel composite;
@@ -29,14 +30,15 @@ struct FoliageDepthKernel {
           composite(CompositeParams{{}, p.mask, p.maskAdd, p.maskLerp, p.squareMask}, textures), threshold(p.threshold),
           sample(textures.sampleFunction()) {}
 
+    // Only the alpha matters (the pass has no colour target; the alpha test reads it): MaskedLit's
+    // alpha, factor * vertex colour * texel, in shade()'s order, without its lighting.
     glm::vec4 shade(const engine::render::soft::Fragment& f) const {
-        // MaskedLit's shade(), spelled with its parts (shade() itself would link the sampler).
-        const glm::vec4 c =
-            surface.texture && sample
-                ? surface.shadeSampled(f, sample(*surface.texture, surface.params.baseColor.sampler, f.uv, f.duv))
-                : surface.light(f, surface.params.baseColorFactor * f.color);
-        if (composite.compositeFactor(f.x, f.y) >= threshold) return c;
-        return {glm::vec3(c), std::numeric_limits<float>::quiet_NaN()};  // fails every alpha test
+        float alpha = surface.params.baseColorFactor.a * f.color.a;
+        if (surface.texture && sample)
+            alpha *= sample(*surface.texture, surface.params.baseColor.sampler, f.uv, f.duv).a;
+        if (!(composite.compositeFactor(f.x, f.y) >= threshold))
+            alpha = std::numeric_limits<float>::quiet_NaN();  // fails every alpha test
+        return {0.0f, 0.0f, 0.0f, alpha};
     }
 };
 
