@@ -8,7 +8,8 @@ namespace grass {
 std::unique_ptr<engine::scene::Feature> makeFeature(const engine::scene::FeatureContext& context) {
     if (!context.plantingSpots) return nullptr;  // nowhere to grow
     std::vector<Tuft> tufts;
-    for (const engine::scene::GroundSpot& spot : context.plantingSpots()) tufts.push_back({spot.root, spot.yaw, spot.scale});
+    for (const engine::scene::GroundSpot& spot : context.plantingSpots())
+        tufts.push_back({spot.root, spot.yaw, spot.scale});
     return std::make_unique<GrassFeature>(context.library.backend(), std::move(tufts));
 }
 
