@@ -115,7 +115,7 @@ endforeach()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ssamConfig.cmake.in
                               ${CMAKE_CURRENT_BINARY_DIR}/ssamConfig.cmake
                               INSTALL_DESTINATION ${_ssam_cmake_dir})
-# 0.x: a minor version may change the API (CHANGELOG.md lists each change and how to migrate), so
+# 0.x: a minor version may change the API (ssam/CHANGELOG.md lists each change and how to migrate), so
 # 0.4 accepts only 0.4.*: find_package(ssam 0.3) fails against it, naming both versions. From 1.0
 # on, SameMajorVersion.
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/ssamConfigVersion-basic.cmake

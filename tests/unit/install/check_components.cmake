@@ -47,7 +47,7 @@ probe(ok "ssam targets: ssam::vk\n" ${v} -DSSAM_COMPONENTS=vk ${hidden})
 probe(fail "component 'render_gl': it needs glm" ${v} "-DSSAM_COMPONENTS=render_gl gl" ${hidden})
 probe(fail "ssam 0\\.4\\.0: it needs glm" ${v} ${hidden})  # no COMPONENTS: the core is required
 set(probe_env "")
-# 0.x: another minor version is another API (CHANGELOG.md): an older or newer request fails, saying
+# 0.x: another minor version is another API (ssam/CHANGELOG.md): an older or newer request fails, saying
 # why; any 0.4.x satisfies 0.4.
 probe(ok "ssam targets: " -DSSAM_VERSION_WANTED=0.4.0)
 probe(fail "ssam 0\\.4\\.0 \\([^)]*\\) does not satisfy a request for 0\\.3: while ssam is 0\\.x.*version: 0\\.4\\.0"
