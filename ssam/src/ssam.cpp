@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ssam/ssam.hpp"
 
-#include "core/passes.hpp"
+#include "ssam/core/passes.hpp"
 #include "foliage_depth_program.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/pass_scope.hpp"
@@ -108,6 +108,7 @@ void throwIfInvalid(const Settings& settings) {
 ScreenSpaceAlphaMask::ScreenSpaceAlphaMask(Backend& backend, const Settings& settings) : backend_(backend) {
     throwIfInvalid(settings);
     settings_ = settings;
+    passes_ = core::describePasses(settings_);
     compositeProgram_ = backend_.createProgram(compositeProgram());
     try {
         pipelines_ = createPipelines(settings_);
@@ -130,6 +131,7 @@ void ScreenSpaceAlphaMask::setSettings(const Settings& settings) {
     destroy(pipelines_);
     pipelines_ = next;
     settings_ = settings;
+    passes_ = core::describePasses(settings_);
 }
 
 ScreenSpaceAlphaMask::Pipelines ScreenSpaceAlphaMask::createPipelines(const Settings& settings) {
@@ -163,7 +165,7 @@ void ScreenSpaceAlphaMask::destroy(const Pipelines& pipelines) {
 }
 
 void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFormat) {
-    const bool copyDepth = core::describePasses(settings_).restoresDepth;
+    const bool copyDepth = passes_.restoresDepth;
     if (width == width_ && height == height_ && foliageFormat_ == foliageFormat &&
         targetPrecision_ == settings_.maskPrecision && targetsCopyDepth_ == copyDepth)
         return;
@@ -180,7 +182,7 @@ void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFo
 }
 
 IntermediateDescs ScreenSpaceAlphaMask::intermediateDescs(int width, int height, Format colorFormat) const {
-    const core::PassPlan passes = core::describePasses(settings_);
+    const core::PassPlan& passes = passes_;
     const auto desc = [&](const core::ColorTarget& target) {
         return renderTargetDesc(target.name, width, height, toFormat(target.format, colorFormat));
     };
@@ -245,7 +247,7 @@ void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle co
 void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
                                     const Intermediates& targets) {
     PassDesc pass;
-    const core::PassDescription mask = core::describePasses(settings_).mask;
+    const core::PassDescription& mask = passes_.mask;
     pass.name = mask.name;
     pass.color[0] = {targets.mask, LoadOp::Clear, clearColorOf(mask.colorTargets[0])};
     if (targets.maskAdd) pass.color[1] = {targets.maskAdd, LoadOp::Clear, clearColorOf(mask.colorTargets[1])};
@@ -264,7 +266,7 @@ void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& vi
 void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
                                      const Intermediates& targets) {
     PassDesc pass;
-    const core::PassDescription color = core::describePasses(settings_).color;
+    const core::PassDescription& color = passes_.color;
     pass.name = color.name;
     pass.color[0] = {targets.foliage, LoadOp::Clear, clearColorOf(color.colorTargets[0])};
     pass.depth = {depth, LoadOp::Load};
@@ -292,7 +294,7 @@ CompositeParams ScreenSpaceAlphaMask::compositeParams(const Intermediates& targe
 
 void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color, const Intermediates& targets) {
     PassDesc pass;
-    pass.name = core::describePasses(settings_).composite.name;
+    pass.name = passes_.composite.name;
     pass.color[0] = {color, LoadOp::Load};
     PassScope passScope(backend_, pass);
     DrawDesc d;
@@ -307,7 +309,7 @@ void ScreenSpaceAlphaMask::foliageDepthPass(const FramePlan& plan, const Foliage
                                             const Intermediates& targets) {
     if (!pipelines_.foliageDepth) return;  // depthMaskThreshold 0: the colour pass wrote the host's depth
     PassDesc pass;
-    pass.name = core::describePasses(settings_).depthRestore.name;
+    pass.name = passes_.depthRestore.name;
     pass.depth = {depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
     const CompositeParams mask = compositeParams(targets);

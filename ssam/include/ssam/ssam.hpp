@@ -20,6 +20,7 @@
 #include "engine/render/backend.hpp"
 #include "ssam/composite_program.hpp"
 #include "ssam/core/frame.hpp"
+#include "ssam/core/passes.hpp"
 #include "ssam/core/settings.hpp"
 #include "ssam/foliage.hpp"
 
@@ -124,6 +125,7 @@ private:
 
     engine::render::Backend& backend_;
     Settings settings_;
+    core::PassPlan passes_;                           // describePasses(settings_)
     engine::render::ProgramHandle compositeProgram_;  // composite_program.hpp
     Pipelines pipelines_;
     engine::render::TextureHandle mask_, maskAdd_, foliage_, depthCopy_;

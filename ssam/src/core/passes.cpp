@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "passes.hpp"
+#include "ssam/core/passes.hpp"
 
 namespace ssam::core {
 

@@ -12,7 +12,7 @@
 
 #include "../core/frame_sequence.hpp"
 #include "../core/host_channel.hpp"
-#include "../core/passes.hpp"
+#include "ssam/core/passes.hpp"
 #include "../core/frame_rules.hpp"
 #include "depth_restore.hpp"
 #include "failure.hpp"
@@ -55,7 +55,7 @@ GLenum toGl(core::BlendFactor factor) {
 
 GLenum toGl(core::BlendOp op) { return op == core::BlendOp::Max ? GL_MAX : GL_FUNC_ADD; }
 
-// A pass's blend (core/passes.hpp) as GL state: one blend for every draw buffer, or one per buffer
+// A pass's blend (ssam/core/passes.hpp) as GL state: one blend for every draw buffer, or one per buffer
 // (two mask targets, MaskPrecision::Rg16f: needs per-buffer blend equations, checked at settings).
 void applyBlend(const GlFunctions& gl, const core::PassDescription& pass) {
     const core::TargetBlend& first = pass.colorTargets[0].blend;
@@ -155,6 +155,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     GlFunctions gl;
     bool initialized = false;
     Settings settings;
+    core::PassPlan passes;  // describePasses(settings)
     AttributeLocations attributes;
     core::HostChannel channel{"ssam::gl"};
 
@@ -201,6 +202,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         if (wanted.maskPrecision == MaskPrecision::Rg16f && !gl.perBufferBlend)
             throw Failure(Status::UnsupportedFeature, kRg16fNeedsPerBufferBlend);
         settings = wanted;
+        passes = core::describePasses(settings);
         attributes = wantedAttributes;
         initialized = true;  // from here release() deletes what exists if a program does not compile
         try {
@@ -329,7 +331,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
 
-    // The core's pass (core/passes.hpp) as GL state: culling, depth test and write, blend, and the
+    // The core's pass (ssam/core/passes.hpp) as GL state: culling, depth test and write, blend, and the
     // targets' clears.
     void applyPass(const core::PassDescription& pass) {
         // No SSAM pass culls today (cards are seen from both sides); a culling pass would cull the
@@ -357,7 +359,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         passState.emplace(gl);
         phase = Phase::InMaskPass;
         setFoliagePassState();
-        const core::PassDescription pass = core::describePasses(settings).mask;
+        const core::PassDescription& pass = passes.mask;
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.maskFramebuffer());
         clearTargets(pass);
         applyPass(pass);
@@ -377,11 +379,10 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         passState.emplace(gl);
         phase = Phase::InColorPass;
         setFoliagePassState();
-        if (core::describePasses(settings)
-                .restoresDepth)  // the opaque depth, before the colour pass writes the foliage's
+        if (passes.restoresDepth)  // the opaque depth, before the colour pass writes the foliage's
             depthRestore.saveOpaqueDepth(gl, targets.maskFramebuffer(), targets.depthFormat(), frame.width,
                                          frame.height, region);
-        const core::PassDescription pass = core::describePasses(settings).color;
+        const core::PassDescription& pass = passes.color;
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.foliageFramebuffer());
         clearTargets(pass);
         applyPass(pass);
@@ -395,7 +396,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         const GlStateGuard hostState(gl);
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.compositeFramebuffer());
         gl.Viewport(0, 0, frame.width, frame.height);
-        applyPass(core::describePasses(settings).composite);
+        applyPass(passes.composite);
         gl.Disable(GL_STENCIL_TEST);
         gl.Disable(GL_COLOR_LOGIC_OP);
         gl.Disable(GL_RASTERIZER_DISCARD);
@@ -419,7 +420,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Uniform1i(compositeSquare, settings.squareMask ? 1 : 0);
         gl.BindVertexArray(emptyVao);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
-        if (core::describePasses(settings).restoresDepth)
+        if (passes.restoresDepth)
             depthRestore.restoreWhereMaskIsLow(gl, targets.foliageFramebuffer(), targets.maskAdd() != 0, settings);
         phase = Phase::Idle;
     }
@@ -538,6 +539,7 @@ Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
         if (s.initialized && settings.maskPrecision == MaskPrecision::Rg16f && !s.gl.perBufferBlend)
             throw Failure(Status::UnsupportedFeature, Impl::kRg16fNeedsPerBufferBlend);
         s.settings = settings;
+        s.passes = core::describePasses(settings);
     });
 }
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <string>
 
-#include "../core/passes.hpp"
+#include "ssam/core/passes.hpp"
 #include "failure.hpp"
 #include "ssam_vk_spirv.hpp"  // generated: glslc's output of glsl_variants.cpp's sources
 

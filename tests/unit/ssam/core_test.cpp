@@ -8,7 +8,7 @@
 #include <iterator>
 #include <string>
 
-#include "../../../ssam/src/core/passes.hpp"
+#include "ssam/core/passes.hpp"
 #include "ssam/core/frame.hpp"
 #include "ssam/core/settings.hpp"
 #include "ssam/core/status.hpp"

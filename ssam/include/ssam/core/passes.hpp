@@ -3,7 +3,9 @@
 // SSAM's passes as data ([Hathaway 2010] §3.5): for each pass its targets and their formats, how
 // they start, the blend per target, the depth test and write, the alpha reference and culling.
 // Every SSAM (the engine-hosted one, ssam::gl, ssam::vk) translates this description into its
-// API and decides none of it itself: a change here reaches all three.
+// API and decides none of it itself: a change here reaches all three. A host that builds SSAM's
+// state its own way may read it too. Each SSAM keeps the plan of its settings (describePasses()
+// once per setSettings()), not one per pass.
 #include "ssam/core/settings.hpp"
 
 namespace ssam::core {
