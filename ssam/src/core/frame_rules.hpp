@@ -7,13 +7,9 @@
 #include <cstddef>
 #include <string>
 
-namespace ssam::detail {
+#include "number_text.hpp"
 
-inline std::string numberText(float value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0.0f ? "inf" : "-inf";
-    return std::to_string(value);
-}
+namespace ssam::detail {
 
 // "" when every element is finite, else "<field>[i] is <value>": a NaN or an infinity in the
 // view-projection would reach the bounds' screen rectangle and every vertex (NaN positions draw
@@ -21,7 +17,7 @@ inline std::string numberText(float value) {
 inline std::string matrixError(const float m[16], const char* field) {
     for (int i = 0; i < 16; ++i)
         if (!std::isfinite(m[i]))
-            return std::string(field) + "[" + std::to_string(i) + "] is " + numberText(m[i]) + " (not finite)";
+            return std::string(field) + "[" + std::to_string(i) + "] is " + core::numberText(m[i]) + " (not finite)";
     return {};
 }
 
@@ -33,11 +29,12 @@ inline std::string boxError(const float min[3], const float max[3], const std::s
     static const char* const axis[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(min[a]) || !std::isfinite(max[a]))
-            return field + " " + axis[a] + " is [" + numberText(min[a]) + ", " + numberText(max[a]) + "] (not finite)";
+            return field + " " + axis[a] + " is [" + core::numberText(min[a]) + ", " + core::numberText(max[a]) +
+                   "] (not finite)";
     for (int a = 0; a < 3; ++a)
         if (max[a] < min[a])
-            return field + " has max." + axis[a] + " " + numberText(max[a]) + " below min." + axis[a] + " " +
-                   numberText(min[a]) + " (a negative size)";
+            return field + " has max." + axis[a] + " " + core::numberText(max[a]) + " below min." + axis[a] + " " +
+                   core::numberText(min[a]) + " (a negative size)";
     int flat = 0;
     for (int a = 0; a < 3; ++a) flat += max[a] == min[a] ? 1 : 0;
     if (flat >= 2)

@@ -2,7 +2,8 @@
 #include "ssam/core/settings.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "number_text.hpp"
 
 namespace ssam {
 
@@ -27,19 +28,13 @@ const char* depthTestName(DepthTest test) noexcept {
 
 namespace {
 
-std::string number(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", static_cast<double>(value));
-    return text;
-}
-
 bool inUnitRange(float value) { return std::isfinite(value) && value >= 0.0f && value <= 1.0f; }
 
 }  // namespace
 
 std::string settingsError(const Settings& s) {
     const auto outside = [](const char* knob, float value) {
-        return std::string("ssam settings: ") + knob + " = " + number(value) + " is outside [0, 1]";
+        return std::string("ssam settings: ") + knob + " = " + core::numberText(value) + " is outside [0, 1]";
     };
     // §3.5.4: a lerp weight; §3.5.3: an alpha reference; a mask value. Each in [0, 1] and finite.
     if (!inUnitRange(s.maskLerp)) return outside("maskLerp", s.maskLerp);
@@ -47,8 +42,8 @@ std::string settingsError(const Settings& s) {
     if (!inUnitRange(s.depthMaskThreshold)) return outside("depthMaskThreshold", s.depthMaskThreshold);
     for (int c = 0; c < 4; ++c)
         if (!std::isfinite(s.foliageClearColor[c]))
-            return "ssam settings: foliageClearColor[" + std::to_string(c) + "] = " + number(s.foliageClearColor[c]) +
-                   " is not finite";
+            return "ssam settings: foliageClearColor[" + std::to_string(c) +
+                   "] = " + core::numberText(s.foliageClearColor[c]) + " is not finite";
     // Enums from a cast or a corrupted struct: a value no SSAM knows how to draw.
     if (static_cast<unsigned>(s.maskPrecision) > static_cast<unsigned>(MaskPrecision::Rg16f))
         return "ssam settings: maskPrecision = " + std::to_string(static_cast<unsigned>(s.maskPrecision)) +

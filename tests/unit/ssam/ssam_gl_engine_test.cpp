@@ -199,7 +199,7 @@ TEST(SsamGlEngine, DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskIsHigh) {
     bad.depthMaskThreshold = 1.5f;
     auto ssam = initializedSsam();
     EXPECT_EQ(ssam->setSettings(bad), Status::InvalidArgument);
-    EXPECT_STREQ(ssam->lastMessage(), "ssam::gl: ssam settings: depthMaskThreshold = 1.5 is outside [0, 1]");
+    EXPECT_STREQ(ssam->lastMessage(), "ssam::gl: ssam settings: depthMaskThreshold = 1.500000 is outside [0, 1]");
 }
 
 // release() without a current context deletes nothing and says so (a status and the message

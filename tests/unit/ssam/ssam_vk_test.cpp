@@ -347,7 +347,7 @@ TEST_F(SsamVk, DepthMaskThresholdNeedsTheDepthImage) {
     ssam::vk::Settings s;
     s.depthMaskThreshold = 1.5f;
     EXPECT_EQ(ssam.initialize(describe(host), s), Status::InvalidArgument);
-    EXPECT_THAT(ssam.lastMessage(), HasSubstr("depthMaskThreshold = 1.5 is outside [0, 1]"));
+    EXPECT_THAT(ssam.lastMessage(), HasSubstr("depthMaskThreshold = 1.500000 is outside [0, 1]"));
     s.depthMaskThreshold = 0.5f;
     ASSERT_EQ(ssam.initialize(describe(host), s), Status::Ok) << ssam.lastMessage();
     Targets t(host, 8, 8);
