@@ -20,7 +20,7 @@
 #include "engine/capture/readback_image.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/gl/gl_backend.hpp"
-#include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/devices/create_device.hpp"
 #include "engine/render/vk/vk_backend.hpp"
 #include "frame_timing.hpp"
 #include "rss_peak.hpp"
@@ -266,31 +266,25 @@ int resolvedThreads(int threads) {
 std::vector<BenchRow> runBench(const BenchOptions& o) {
     const float aspect = float(o.width) / float(o.height);
     const int threads = resolvedThreads(o.threads);
-    auto soft = soft::createSoftBackend({.threads = threads, .tileSize = 64, .simd = o.simd});
-    std::unique_ptr<gl::GlBackend> glBackend;
-    std::string glError;
-    if (std::find(o.backends.begin(), o.backends.end(), "gl") != o.backends.end()) {
-        // llvmpipe reads its thread count when the context is created: the same as soft's.
-        setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+    // Every device of the run through the one table, with the same threads (soft's, and
+    // LP_NUM_THREADS for llvmpipe and lavapipe); one that cannot be made here is reported and
+    // its rows are skipped with why.
+    engine::render::DeviceOptions deviceOptions;
+    deviceOptions.threads = threads;
+    deviceOptions.soft = {.threads = threads, .tileSize = 64, .simd = o.simd};
+    std::unique_ptr<engine::render::Device> soft =
+        engine::render::createDevice(engine::render::DeviceKind::Soft, deviceOptions);
+    std::map<std::string, std::unique_ptr<engine::render::Device>> devices;
+    std::map<std::string, std::string> unavailable;
+    for (const std::string& name : o.backends) {
+        const engine::render::DeviceKind kind = *engine::render::parseDeviceKind(name);  // checked by the options
+        if (kind == engine::render::DeviceKind::Soft || devices.count(name) || unavailable.count(name)) continue;
         try {
-            glBackend = gl::createGlBackend({});
-            std::printf("[ssam-bench] gl: %s (LP_NUM_THREADS=%d)\n", glBackend->info().renderer.c_str(), threads);
+            devices[name] = engine::render::createDevice(kind, deviceOptions);
+            std::printf("[ssam-bench] %s (LP_NUM_THREADS=%d)\n", devices[name]->driver().describe().c_str(), threads);
         } catch (const std::exception& e) {
-            glError = std::string("gl backend unavailable: ") + e.what();
-            std::printf("[ssam-bench] %s\n", glError.c_str());
-        }
-    }
-    std::unique_ptr<vk::VulkanBackend> vkBackend;
-    std::string vkError;
-    if (std::find(o.backends.begin(), o.backends.end(), "vk") != o.backends.end()) {
-        // lavapipe reads its thread count when the device is created: the same as soft's.
-        setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
-        try {
-            vkBackend = vk::createVulkanBackend({});
-            std::printf("[ssam-bench] vk: %s (LP_NUM_THREADS=%d)\n", vkBackend->info().device.c_str(), threads);
-        } catch (const std::exception& e) {
-            vkError = std::string("vk backend unavailable: ") + e.what();
-            std::printf("[ssam-bench] %s\n", vkError.c_str());
+            unavailable[name] = name + " backend unavailable: " + e.what();
+            std::printf("[ssam-bench] %s\n", unavailable[name].c_str());
         }
     }
     std::printf("[ssam-bench] %dx%d, %d rep(s) after %d warm-up, %d pan frames, soft backend %d thread(s)\n", o.width,
@@ -310,17 +304,15 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
         std::vector<TemporalBackend> temporal{{"soft", soft.get(), &softScene}};
         std::vector<std::unique_ptr<BenchScene>> glScenes;  // kept for the temporal pan
         for (const std::string& backendName : o.backends) {
-            if ((backendName == "gl" && !glBackend) || (backendName == "vk" && !vkBackend)) {
+            if (unavailable.count(backendName)) {
                 for (const BenchSubject& s : o.subjects) {
                     BenchRow row = skippedRow(sceneName(kind), s.name, backendName, o);
-                    row.note = backendName == "gl" ? glError : vkError;
+                    row.note = unavailable[backendName];
                     rows.push_back(row);
                 }
                 continue;
             }
-            Backend& backend = backendName == "gl"   ? static_cast<Backend&>(*glBackend)
-                               : backendName == "vk" ? static_cast<Backend&>(*vkBackend)
-                                                     : *soft;
+            Backend& backend = devices.count(backendName) ? *devices[backendName] : *soft;
             std::unique_ptr<BenchScene> ownScene;
             SceneViews ownViews;
             if (&backend != soft.get()) {

@@ -13,9 +13,7 @@
 #include "bench_frame.hpp"
 #include "frame_timing.hpp"
 #include "bench_runner.hpp"
-#include "engine/render/gl/gl_backend.hpp"
-#include "engine/render/soft/soft_backend.hpp"
-#include "engine/render/vk/vk_backend.hpp"
+#include "engine/render/devices/create_device.hpp"
 #include "report_text.hpp"
 
 namespace bench {
@@ -96,22 +94,13 @@ std::vector<ScalingRow> runScaling(const ScalingOptions& o) {
     for (const std::string& backendName : o.backends) {
         std::unique_ptr<Backend> backend;
         std::string unavailable;
-        if (backendName == "gl") {
-            setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);  // read at context creation
-            try {
-                backend = gl::createGlBackend({});
-            } catch (const std::exception& e) {
-                unavailable = std::string("gl backend unavailable: ") + e.what();
-            }
-        } else if (backendName == "vk") {
-            setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);  // read at device creation
-            try {
-                backend = engine::render::vk::createVulkanBackend({});
-            } catch (const std::exception& e) {
-                unavailable = std::string("vk backend unavailable: ") + e.what();
-            }
-        } else {
-            backend = soft::createSoftBackend({.threads = threads, .tileSize = 64, .simd = o.simd});
+        engine::render::DeviceOptions deviceOptions;  // the same threads for every driver (create_device.hpp)
+        deviceOptions.threads = threads;
+        deviceOptions.soft = {.threads = threads, .tileSize = 64, .simd = o.simd};
+        try {
+            backend = engine::render::createDevice(*engine::render::parseDeviceKind(backendName), deviceOptions);
+        } catch (const std::exception& e) {
+            unavailable = backendName + " backend unavailable: " + e.what();
         }
         if (!backend) {
             std::printf("[ssam-bench --scaling] %s\n", unavailable.c_str());

@@ -30,6 +30,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/output_file.hpp"
 #include "engine/core/usage_error.hpp"
+#include "engine/render/devices/create_device.hpp"
 #include "report_text.hpp"
 #include "simd_flag.hpp"
 #include "ssam/core/settings.hpp"
@@ -188,8 +189,9 @@ BenchOptions parse(const Options& o) {
         b.subjects.insert(ssamAt == b.subjects.end() ? b.subjects.end() : ssamAt + 1, paper);
     }
     for (const std::string& name : splitList(o.backends, "--backend")) {
-        if (name != "soft" && name != "gl" && name != "vk")
-            throw engine::UsageError("--backend: unknown backend '" + name + "' (known: soft, gl, vk)");
+        if (!engine::render::parseDeviceKind(name))
+            throw engine::UsageError("--backend: unknown backend '" + name +
+                                     "' (known: " + engine::render::deviceKindNames() + ")");
         b.backends.push_back(name);
     }
     std::smatch m;

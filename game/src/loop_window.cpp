@@ -12,7 +12,7 @@ using engine::render::TextureHandle;
 
 // The soft backend's frame as a GL texture: the stored sRGB codes (readback gives code/255)
 // uploaded unchanged, so the window shows exactly the bytes a capture would hold.
-TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine::render::Readback& r) {
+TextureHandle uploadFrame(engine::render::Device& presenter, const engine::render::Readback& r) {
     std::vector<std::byte> bytes(std::size_t(r.width) * std::size_t(r.height) * 4);
     for (int y = 0; y < r.height; ++y)
         for (int x = 0; x < r.width; ++x)
@@ -29,7 +29,7 @@ TextureHandle uploadFrame(engine::render::gl::GlBackend& presenter, const engine
 
 class GlLoopWindow final : public LoopWindow {
 public:
-    GlLoopWindow(engine::render::gl::GlfwWindowContext& window, engine::render::gl::GlBackend& presenter,
+    GlLoopWindow(engine::render::gl::GlfwWindowContext& window, engine::render::Device& presenter,
                  engine::render::Backend& renderer)
         : window_(window), presenter_(presenter), renderer_(renderer) {}
     GLFWwindow* window() const override { return window_.window(); }
@@ -49,13 +49,13 @@ public:
 
 private:
     engine::render::gl::GlfwWindowContext& window_;
-    engine::render::gl::GlBackend& presenter_;
+    engine::render::Device& presenter_;
     engine::render::Backend& renderer_;
 };
 
 class VkLoopWindow final : public LoopWindow {
 public:
-    VkLoopWindow(engine::render::vk::VulkanWindow& window, engine::render::vk::VulkanBackend& backend)
+    VkLoopWindow(engine::render::vk::VulkanWindow& window, engine::render::Device& backend)
         : window_(window), backend_(backend) {}
     GLFWwindow* window() const override { return window_.window(); }
     glm::ivec2 framebufferSize() const override { return window_.framebufferSize(); }
@@ -67,18 +67,17 @@ public:
 
 private:
     engine::render::vk::VulkanWindow& window_;
-    engine::render::vk::VulkanBackend& backend_;
+    engine::render::Device& backend_;
 };
 
 }  // namespace
 
 std::unique_ptr<LoopWindow> glLoopWindow(engine::render::gl::GlfwWindowContext& window,
-                                         engine::render::gl::GlBackend& presenter, engine::render::Backend& renderer) {
+                                         engine::render::Device& presenter, engine::render::Backend& renderer) {
     return std::make_unique<GlLoopWindow>(window, presenter, renderer);
 }
 
-std::unique_ptr<LoopWindow> vkLoopWindow(engine::render::vk::VulkanWindow& window,
-                                         engine::render::vk::VulkanBackend& backend) {
+std::unique_ptr<LoopWindow> vkLoopWindow(engine::render::vk::VulkanWindow& window, engine::render::Device& backend) {
     return std::make_unique<VkLoopWindow>(window, backend);
 }
 

@@ -33,9 +33,8 @@ public:
 // `presenter` owns the window's context; `renderer` draws the frames: the same backend, or
 // another (soft) whose colour is read back and uploaded each frame.
 std::unique_ptr<LoopWindow> glLoopWindow(engine::render::gl::GlfwWindowContext& window,
-                                         engine::render::gl::GlBackend& presenter, engine::render::Backend& renderer);
+                                         engine::render::Device& presenter, engine::render::Backend& renderer);
 // `backend` was made with `window` (VulkanOptions::window) and draws the frames.
-std::unique_ptr<LoopWindow> vkLoopWindow(engine::render::vk::VulkanWindow& window,
-                                         engine::render::vk::VulkanBackend& backend);
+std::unique_ptr<LoopWindow> vkLoopWindow(engine::render::vk::VulkanWindow& window, engine::render::Device& backend);
 
 }  // namespace racer

@@ -20,6 +20,7 @@
 #include "engine/render/gl/gl_backend.hpp"
 #include "engine/render/vk/vk_backend.hpp"
 #include "engine/render/vk/vk_window.hpp"
+#include "engine/render/devices/create_device.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "frame_renderer.hpp"
@@ -122,9 +123,16 @@ int run(const CLI::App& app, const Options& o) {
     // and rendered headless, as without a display.
     auto displaySet = [](const char* name) { return std::getenv(name) && *std::getenv(name); };
     const bool wantWindow = !o.headless && (displaySet("DISPLAY") || displaySet("WAYLAND_DISPLAY"));
+    using engine::render::DeviceKind;
+    const std::optional<DeviceKind> requested = engine::render::parseDeviceKind(o.backend);  // nullopt: auto
+    engine::render::DeviceOptions options;
+    options.soft = {.threads = o.threads, .tileSize = 64, .simd = racer::simdFromFlag(o.simd)};
+    options.vulkan.device = o.device;
+    // SSAM_VK_VALIDATION=1: under the validation layer (the vk tests): every message is
+    // printed, and any makes the run fail at its end.
+    options.vulkan.validation = std::getenv("SSAM_VK_VALIDATION") != nullptr;
     std::shared_ptr<gl::GlfwWindowContext> window;
-    std::unique_ptr<gl::GlBackend> glBackend;
-    if (wantWindow && o.backend != "vk") {
+    if (wantWindow && requested != DeviceKind::Vulkan) {
         gl::GlfwWindowOptions wo;
         wo.title = "racer";
         wo.width = renderer.width;
@@ -137,45 +145,26 @@ int run(const CLI::App& app, const Options& o) {
         }
     }
     std::shared_ptr<vk::VulkanWindow> vkWindow;
-    std::unique_ptr<vk::VulkanBackend> vkBackend;
-    if (o.backend == "vk") {
-        vk::VulkanOptions vo;
-        vo.device = o.device;
-        // SSAM_VK_VALIDATION=1: under the validation layer (the vk tests): every message is
-        // printed, and any makes the run fail at its end.
-        vo.validation = std::getenv("SSAM_VK_VALIDATION") != nullptr;
-        if (wantWindow) {
-            try {
-                vo.window = vk::VulkanWindow::create({"racer", renderer.width, renderer.height});
-                vkBackend = vk::createVulkanBackend(vo);
-                vkWindow = vo.window;
-            } catch (const engine::Error& e) {
-                std::printf("racer: no window (%s); rendering headless\n", e.what());
-                vo.window.reset();
-            }
+    std::unique_ptr<engine::render::Device> device;
+    if (requested == DeviceKind::Vulkan && wantWindow) {
+        try {
+            options.vulkan.window = vk::VulkanWindow::create({"racer", renderer.width, renderer.height});
+            device = engine::render::createDevice(DeviceKind::Vulkan, options);
+            vkWindow = options.vulkan.window;
+        } catch (const engine::Error& e) {
+            std::printf("racer: no window (%s); rendering headless\n", e.what());
+            options.vulkan.window.reset();
         }
-        if (!vkBackend) vkBackend = vk::createVulkanBackend(vo);  // headless: lavapipe without a GPU
     }
     const bool windowed = window != nullptr || vkWindow != nullptr;
-    const std::string backendName = o.backend != "auto" ? o.backend : windowed ? "gl" : "soft";
-    std::unique_ptr<engine::render::Backend> softBackend;
-    if (window) {
-        gl::GlOptions go;
-        go.context = window;
-        glBackend = gl::createGlBackend(go);
-    } else if (backendName == "gl") {
-        glBackend = gl::createGlBackend({});  // headless through EGL (Mesa llvmpipe without a GPU)
-    }
-    std::string kernels;  // the soft backend's instruction set, for the first line
-    if (backendName == "soft") {
-        auto soft = engine::render::soft::createSoftBackend(
-            {.threads = o.threads, .tileSize = 64, .simd = racer::simdFromFlag(o.simd)});
-        kernels = std::string(", ") + engine::render::soft::simdIsaName(*soft->options().simd);
-        softBackend = std::move(soft);
-    }
-    engine::render::Backend& backend = softBackend ? *softBackend
-                                       : vkBackend ? static_cast<engine::render::Backend&>(*vkBackend)
-                                                   : *glBackend;
+    const DeviceKind kind = requested ? *requested : windowed ? DeviceKind::Gl : DeviceKind::Soft;
+    // A GL window presents: through the GL device that draws the frames, or through one of its
+    // own when another device draws them (soft frames are uploaded to it).
+    options.gl.context = window;
+    if (!device) device = engine::render::createDevice(kind, options);
+    std::unique_ptr<engine::render::Device> presenter;
+    if (window && kind != DeviceKind::Gl) presenter = engine::render::createDevice(DeviceKind::Gl, options);
+    engine::render::Device& backend = *device;
 
     // --scene FILE: the file's scene and camera replace the racing scene (gltf_scene.hpp).
     std::unique_ptr<RacingScene> racing;
@@ -216,9 +205,9 @@ int run(const CLI::App& app, const Options& o) {
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };
 
-    std::printf("racer: %s, %dx%d, camera %s, backend %s (%d threads%s), %s\n",
-                transparency::techniqueName(renderer.technique), renderer.width, renderer.height, o.camera.c_str(),
-                backend.name().c_str(), o.threads, kernels.c_str(), windowed ? "window" : "headless");
+    std::printf("racer: %s, %dx%d, camera %s, backend %s, %s\n", transparency::techniqueName(renderer.technique),
+                renderer.width, renderer.height, o.camera.c_str(), backend.driver().describe().c_str(),
+                windowed ? "window" : "headless");
     if (living) {
         std::string names;
         for (const std::string& n : living->names()) names += " " + n;
@@ -242,14 +231,16 @@ int run(const CLI::App& app, const Options& o) {
         std::printf(
             "racer: keys 1-8 technique, T / Shift+T next / previous, C camera, P pause, H HUD, V compare, B compared technique, R autopilot, Esc quit\n");
         const std::unique_ptr<LoopWindow> shown =
-            vkWindow ? vkLoopWindow(*vkWindow, *vkBackend) : glLoopWindow(*window, *glBackend, backend);
+            vkWindow ? vkLoopWindow(*vkWindow, backend)
+                     : glLoopWindow(*window, presenter ? *presenter : backend, backend);
         const WindowLoopResult r = runWindowLoop(*shown, backend, frame, source, ws);
         std::printf("racer: %d frames, mean frame %.1f ms, last at %dx%d\n", r.frames, r.meanFrameMs, frame.width(),
                     frame.height());
         if (vkWindow)
-            std::printf("racer: Vulkan presented %llu frames, %llu swapchains made\n",
-                        static_cast<unsigned long long>(vkBackend->counters().framesPresented),
-                        static_cast<unsigned long long>(vkBackend->counters().swapchainsCreated));
+            std::printf(
+                "racer: Vulkan presented %llu frames, %llu swapchains made\n",
+                static_cast<unsigned long long>(backend.driverAs<vk::VulkanDriver>().counters().framesPresented),
+                static_cast<unsigned long long>(backend.driverAs<vk::VulkanDriver>().counters().swapchainsCreated));
     } else {
         if (!o.script.empty()) throw engine::UsageError("--script needs a window (a display and no --headless)");
         std::printf("racer: %d frames at dt %.4f s\n", o.frames, o.fixedDt);
@@ -292,8 +283,8 @@ int run(const CLI::App& app, const Options& o) {
             std::printf("racer: the last frame's transient targets peak at %llu bytes (lifetimes: %s)\n",
                         static_cast<unsigned long long>(frame.peakTransientBytes()), outputs.graph.string().c_str());
     }
-    if (vkBackend && vkBackend->validationMessages() > 0)
-        throw engine::Error("racer: " + std::to_string(vkBackend->validationMessages()) +
+    if (kind == DeviceKind::Vulkan && backend.driverAs<vk::VulkanDriver>().validationMessages() > 0)
+        throw engine::Error("racer: " + std::to_string(backend.driverAs<vk::VulkanDriver>().validationMessages()) +
                             " Vulkan validation messages (above)");
     return 0;
 }

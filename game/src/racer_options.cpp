@@ -8,12 +8,20 @@
 
 #include "engine/cli/command_line.hpp"
 #include "engine/core/usage_error.hpp"
+#include "engine/render/devices/create_device.hpp"
 #include "racer_feature_modules.hpp"
 #include "simd_flag.hpp"
 
 namespace racer {
 
 namespace {
+
+// --backend: auto, or a render device kind as its table names it.
+std::vector<std::string> backendNames() {
+    std::vector<std::string> names{"auto"};
+    for (const engine::render::DeviceKindInfo& k : engine::render::deviceKinds()) names.emplace_back(k.name);
+    return names;
+}
 
 std::vector<std::string> techniqueNames() {
     std::vector<std::string> names;
@@ -27,7 +35,7 @@ std::vector<std::string> techniqueNames() {
 void addOptions(CLI::App& app, Options& o) {
     app.add_option("--backend", o.backend,
                    "render backend (auto: gl in a window, soft headless; vk: Vulkan, in a window or headless)")
-        ->check(CLI::IsMember({"auto", "soft", "gl", "vk"}))
+        ->check(CLI::IsMember(backendNames()))
         ->capture_default_str();
     app.add_option("--device", o.device, "--backend vk: the Vulkan device (-1: the first usable)")
         ->capture_default_str();
@@ -130,13 +138,13 @@ void checkCombinations(const CLI::App& app, const Options& o) {
             refuse("--capture-layers captures one technique's layers; --compare shows two: drop one of them");
     }
     if (given("--script") && o.headless) refuse("--script drives a window; --headless has none");
-    if (given("--threads") && o.backend == "gl")
-        refuse("--threads sets the soft backend's threads; --backend gl does not use them");
-    if (given("--simd") && o.backend == "gl") refuse("--simd picks the soft backend's kernels; --backend gl has none");
-    if (given("--threads") && o.backend == "vk")
-        refuse("--threads sets the soft backend's threads; --backend vk does not use them");
-    if (given("--simd") && o.backend == "vk") refuse("--simd picks the soft backend's kernels; --backend vk has none");
-    if (given("--device") && o.backend != "vk") refuse("--device picks a Vulkan device: it needs --backend vk");
+    const std::optional<engine::render::DeviceKind> kind = engine::render::parseDeviceKind(o.backend);
+    const bool gpu = kind && *kind != engine::render::DeviceKind::Soft;
+    if (given("--threads") && gpu)
+        refuse("--threads sets the soft backend's threads; --backend " + o.backend + " does not use them");
+    if (given("--simd") && gpu) refuse("--simd picks the soft backend's kernels; --backend " + o.backend + " has none");
+    if (given("--device") && kind != engine::render::DeviceKind::Vulkan)
+        refuse("--device picks a Vulkan device: it needs --backend vk");
     simdFromFlag(o.simd);  // refuses a set this CPU does not run
 }
 

@@ -18,7 +18,7 @@ inline engine::render::vk::VulkanOptions validatedVulkanOptions() {
     return options;
 }
 
-inline std::unique_ptr<engine::render::vk::VulkanBackend> validatedVulkanBackend(
+inline std::unique_ptr<engine::render::Device> validatedVulkanBackend(
     engine::render::vk::VulkanOptions options = validatedVulkanOptions()) {
     return engine::render::vk::createVulkanBackend(options);
 }

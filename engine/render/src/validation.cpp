@@ -8,6 +8,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/vertex.hpp"
+#include "texture_params.hpp"
 
 namespace engine::render {
 
@@ -166,15 +167,12 @@ private:
 
 // The textures a program's parameters name, as its layout declares them.
 void checkTextures(const ProgramDesc& program, const DrawParams& params, const DrawChecks& check) {
-    const auto* bytes = static_cast<const std::byte*>(params.data());
-    for (const TextureField& field : program.gl.textures) {
-        TextureHandle handle;
-        std::memcpy(&handle, bytes + field.offset, sizeof handle);  // first member of a TextureBinding too
-        if (!handle && field.optional) continue;
+    forEachTextureParam(program, params, [&](const TextureField& field, TextureHandle handle) {
+        if (!handle && field.optional) return;
         const TextureDesc& t = check.sampled(handle);
         if (field.use == TextureUse::FullSize && (t.width < check.targetWidth() || t.height < check.targetHeight()))
             check.fail("input " + quotedName(t.name) + " is smaller than the target");
-    }
+    });
 }
 
 // Every index of the draw's range names a vertex of the buffer. The largest index of the

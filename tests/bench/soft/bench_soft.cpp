@@ -127,10 +127,10 @@ struct Counts {
 // Runs `pass` once untimed (warm-up, and to measure the work per pass from the backend's
 // counters), then once per iteration; reports Mpix/s and Mtri/s.
 template <typename Pass>
-void runPasses(benchmark::State& state, soft::SoftBackend& backend, Pass&& pass) {
-    const soft::SoftStats before = backend.stats();
+void runPasses(benchmark::State& state, render::Device& backend, Pass&& pass) {
+    const soft::SoftStats before = soft::softDriver(backend).stats();
     pass();
-    const soft::SoftStats after = backend.stats();
+    const soft::SoftStats after = soft::softDriver(backend).stats();
     const Counts perPass{after.pixelsTouched - before.pixelsTouched, after.trianglesIn - before.trianglesIn};
     for (auto _ : state) pass();
     const double n = double(state.iterations());
@@ -140,7 +140,7 @@ void runPasses(benchmark::State& state, soft::SoftBackend& backend, Pass&& pass)
     state.counters["pix/pass"] = double(perPass.pixels);
 }
 
-std::unique_ptr<soft::SoftBackend> makeBackend(const benchmark::State& state) {
+std::unique_ptr<render::Device> makeBackend(const benchmark::State& state) {
     return soft::createSoftBackend({int(state.range(0)), 64, false});
 }
 
@@ -335,7 +335,7 @@ render::TextureHandle compositeFoliage(render::Backend& b) {
 
 // A full-screen composite of `program` with `params` over `target`, blended as SSAM's
 // composite is drawn: SRC_ALPHA / INV_SRC_ALPHA on RGB, the target's alpha kept.
-void runComposite(benchmark::State& state, soft::SoftBackend& b, render::TextureHandle target,
+void runComposite(benchmark::State& state, render::Device& b, render::TextureHandle target,
                   const render::ProgramDesc& program, const render::DrawParams& params, const char* name) {
     render::PipelineDesc pd;
     pd.program = b.createProgram(program);

@@ -33,7 +33,7 @@ struct Frame {
 };
 
 struct TwoTrees {
-    std::unique_ptr<soft::SoftBackend> backend = soft::createSoftBackend({2, 64, false});
+    std::unique_ptr<engine::render::Device> backend = soft::createSoftBackend({2, 64, false});
     scene::MeshLibrary library{*backend};
     ecs::Registry registry;
     wind::WindSystem wind{library};

@@ -13,7 +13,9 @@ BackendCase softCase(std::string name, engine::render::soft::SoftOptions options
     return {std::move(name),
             [options] { return std::unique_ptr<render::Backend>(engine::render::soft::createSoftBackend(options)); },
             [](const render::Backend& backend) -> std::optional<std::uint64_t> {
-                return dynamic_cast<const engine::render::soft::SoftBackend&>(backend).stats().trianglesDropped;
+                return engine::render::soft::softDriver(dynamic_cast<const engine::render::Device&>(backend))
+                    .stats()
+                    .trianglesDropped;
             }};
 }
 

@@ -29,8 +29,7 @@ struct Plant {
 
 struct Forest {
     // mutable: RacingScene's registry is for systems to change; this file only reads it.
-    std::unique_ptr<engine::render::soft::SoftBackend> backend =
-        engine::render::soft::createSoftBackend({1, 64, false});
+    std::unique_ptr<engine::render::Device> backend = engine::render::soft::createSoftBackend({1, 64, false});
     mutable RacingScene scene{*backend, SceneOptions{defaultContentDir(), 1}};
     std::vector<Plant> plants;
 

@@ -16,7 +16,7 @@ class ModuleExceptionSafetyVk : public ::testing::TestWithParam<const engine::sc
 TEST_P(ModuleExceptionSafetyVk, LeaksNothingAndLeavesTheBackendUsableWhenACreateOrDrawThrows) {
     const auto vk = ssam::testing::validatedVulkanBackend();
     expectModuleExceptionSafe(*vk, *GetParam());
-    EXPECT_EQ(vk->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*vk).validationMessages(), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Registered, ModuleExceptionSafetyVk,

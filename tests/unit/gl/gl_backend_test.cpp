@@ -101,7 +101,7 @@ class GlBackendTest : public ::testing::Test {
 protected:
     void SetUp() override { gfx_ = makeGl(); }
     render::Backend& gfx() { return *gfx_; }
-    gl::GlBackend& glb() { return static_cast<gl::GlBackend&>(*gfx_); }
+    gl::GlDriver& glb() { return gl::glDriver(static_cast<render::Device&>(*gfx_)); }
     std::unique_ptr<render::Backend> gfx_;
 };
 
@@ -448,8 +448,8 @@ TEST(GlContextTest, AdoptsTheCurrentContext) {
     gl::GlOptions adopt;
     adopt.useCurrentContext = true;
     auto backend = gl::createGlBackend(adopt);
-    EXPECT_EQ(backend->context(), nullptr);
-    EXPECT_EQ(backend->info().context, "current context");
+    EXPECT_EQ(gl::glDriver(*backend).context(), nullptr);
+    EXPECT_EQ(gl::glDriver(*backend).info().context, "current context");
     const auto t = target(*backend, 4, 4, Format::RGBA8_UNORM);
     onePass(*backend, t, {0.0f, 1.0f, 0.0f, 1.0f}, [] {});
     EXPECT_EQ(backend->readback(t).at(3, 3, 1), 1.0f);
@@ -463,17 +463,17 @@ TEST(GlContextTest, ImportsHostTextures) {
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
     glTextureStorage2D(id, 1, GL_RGBA16F, 8, 4);
     render::TextureDesc desc{"host", 8, 4, Format::RGBA16F, 1, 1, render::UsageRenderTarget | render::UsageSampled};
-    const auto t = backend->importTexture(id, desc);
-    EXPECT_EQ(backend->glTexture(t), id);
+    const auto t = engine::render::gl::importTexture(*backend, id, desc);
+    EXPECT_EQ(engine::render::gl::glTexture(*backend, t), id);
     onePass(*backend, t, {0.5f, 2.0f, -1.0f, 1.0f}, [] {});
     EXPECT_EQ(backend->readback(t).at(7, 3, 1), 2.0f);
     backend->destroy(t);
     EXPECT_TRUE(glIsTexture(id)) << "imported textures are not deleted";
     desc.format = Format::RGBA8_UNORM;
-    expectError([&] { backend->importTexture(id, desc); }, "internal format");
+    expectError([&] { engine::render::gl::importTexture(*backend, id, desc); }, "internal format");
     desc.format = Format::RGBA16F;
     desc.width = 9;
-    expectError([&] { backend->importTexture(id, desc); }, "is 8x4");
+    expectError([&] { engine::render::gl::importTexture(*backend, id, desc); }, "is 8x4");
     glDeleteTextures(1, &id);
 }
 

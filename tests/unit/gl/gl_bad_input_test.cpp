@@ -69,8 +69,8 @@ TEST(GlBadInput, IncompletePassFramebufferThrows) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
     glTextureStorage2DMultisample(id, 4, GL_RGBA8, 8, 8, GL_FALSE);
-    const auto color =
-        backend->importTexture(id, {"host_msaa", 8, 8, Format::RGBA8_UNORM, 4, 1, render::UsageRenderTarget});
+    const auto color = engine::render::gl::importTexture(
+        *backend, id, {"host_msaa", 8, 8, Format::RGBA8_UNORM, 4, 1, render::UsageRenderTarget});
     const auto depth = backend->createTexture({"depth", 8, 8, Format::D32F, 4, 1, render::UsageRenderTarget});
     render::PassDesc pass;
     pass.name = "mixed";
@@ -97,7 +97,7 @@ TEST(GlBadInput, ImpossibleContextsThrow) {
 
 TEST(GlBadInput, SampleCountsBeyondTheImplementationThrow) {
     auto backend = gl::createGlBackend();
-    if (backend->info().maxSamples >= 8) GTEST_SKIP() << "this implementation has 8x MSAA";
+    if (gl::glDriver(*backend).info().maxSamples >= 8) GTEST_SKIP() << "this implementation has 8x MSAA";
     expectError(
         [&] {
             backend->createTexture({"msaa8", 8, 8, Format::RGBA8_UNORM, 8, 1, render::UsageRenderTarget});

@@ -30,8 +30,8 @@ void check(bool ok, const char* what) {
 }
 
 // Renders one frame into `color` (size of the window's framebuffer) and presents it.
-bool frame(gl::GlBackend& backend, gl::GlfwWindowContext& window, render::TextureHandle& color, int& width, int& height,
-           render::PipelineHandle pipeline, render::BufferHandle triangle, int index) {
+bool frame(render::Device& backend, gl::GlfwWindowContext& window, render::TextureHandle& color, int& width,
+           int& height, render::PipelineHandle pipeline, render::BufferHandle triangle, int index) {
     window.pollEvents();
     const glm::ivec2 size = window.framebufferSize();
     if (size.x <= 0 || size.y <= 0) return false;  // minimised: skip the frame entirely
@@ -85,7 +85,7 @@ int main() {
         gl::GlOptions options;
         options.context = window;
         auto backend = gl::createGlBackend(options);
-        check(backend->context() == window.get(), "backend uses the window's context");
+        check(engine::render::gl::glDriver(*backend).context() == window.get(), "backend uses the window's context");
 
         render::PipelineDesc flat;
         flat.name = "flat";

@@ -17,7 +17,7 @@ using living::testing::place;
 constexpr int kW = 96, kH = 64;
 
 struct GrassScene {
-    std::unique_ptr<render::soft::SoftBackend> backend = render::soft::createSoftBackend({1, 64, false});
+    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
     scene::MeshLibrary library{*backend};
     ecs::Registry registry;
     living::testing::LivingFrame frame{*backend, library, kW, kH};

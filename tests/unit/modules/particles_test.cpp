@@ -19,7 +19,7 @@ using living::testing::place;
 constexpr int kW = 64, kH = 48;
 
 struct ParticleScene {
-    std::unique_ptr<render::soft::SoftBackend> backend = render::soft::createSoftBackend({1, 64, false});
+    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
     scene::MeshLibrary library{*backend};
     ecs::Registry registry;
     living::testing::LivingFrame frame{*backend, library, kW, kH};

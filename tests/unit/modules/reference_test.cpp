@@ -22,7 +22,7 @@ void expectRgbNear(const glm::vec3& got, const glm::vec3& want, float tolerance,
 }
 
 struct ReferenceRun {
-    std::unique_ptr<soft::SoftBackend> backend = soft::createSoftBackend({});
+    std::unique_ptr<engine::render::Device> backend = soft::createSoftBackend({});
     std::unique_ptr<Technique> technique;
     Readback image;
     ReferenceRun(const std::vector<Quad>& foliage, TechniqueOptions options = {}, const std::vector<Quad>& walls = {}) {

@@ -16,7 +16,7 @@ namespace {
 using namespace transparency;
 using namespace transparency::testing;
 
-std::unique_ptr<soft::SoftBackend> softBackend() { return soft::createSoftBackend({}); }
+std::unique_ptr<engine::render::Device> softBackend() { return soft::createSoftBackend({}); }
 
 // A (red, alpha 0.4, nearer) covers the left 5/8, B (green, alpha 0.6, farther) the right 5/8.
 const Quad kQuadA{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.4f}};

@@ -168,7 +168,7 @@ TEST(TransparencyPrograms, FragmentCaptureNeedsASingleSampledDepthTestedPass) {
             p.program = ProgramKind::MaskedLit;
             if (depthTest) p.depth = DepthState::testOnly();
             const PipelineHandle pipeline = b->createPipeline(p);
-            b->setFragmentSink(&sink);
+            b->fragmentCapture()->setFragmentSink(&sink);
             b->beginPass(opaque.passDesc(glm::vec4(0.0f)));
             DrawDesc d;
             d.pipeline = pipeline;
@@ -178,7 +178,7 @@ TEST(TransparencyPrograms, FragmentCaptureNeedsASingleSampledDepthTestedPass) {
             if (samples == 1 && depthTest) EXPECT_NO_THROW(b->draw(d));
             else EXPECT_THROW(b->draw(d), engine::Error) << samples << " samples, depth test " << depthTest;
             b->endPass();
-            b->setFragmentSink(nullptr);
+            b->fragmentCapture()->setFragmentSink(nullptr);
             b->destroy(pipeline);
         }
 }

@@ -22,7 +22,7 @@ constexpr int kW = 64, kH = 48;
 const glm::vec4 kWater{0.1f, 0.3f, 0.9f, 0.6f};
 
 struct WaterScene {
-    std::unique_ptr<render::soft::SoftBackend> backend = render::soft::createSoftBackend({1, 64, false});
+    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
     scene::MeshLibrary library{*backend};
     ecs::Registry registry;
     living::testing::LivingFrame frame{*backend, library, kW, kH};

@@ -28,7 +28,7 @@ glm::mat4 viewProjFrom(const glm::vec3& eye, const glm::vec3& target) {
 }
 
 struct WindScene {
-    std::unique_ptr<render::soft::SoftBackend> backend = render::soft::createSoftBackend({1, 64, false});
+    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
     scene::MeshLibrary library{*backend};
     ecs::Registry registry;
     scene::ModelId plant = wind::testing::addCardPlant(library);

@@ -10,11 +10,11 @@
 namespace ssam::test::soft {
 namespace {
 
-using engine::render::soft::SoftBackend;
+using engine::render::Device;
 
 class SoftBadInput : public ::testing::Test {
 protected:
-    std::unique_ptr<SoftBackend> gfx = createSoftBackend({.threads = 1});
+    std::unique_ptr<Device> gfx = createSoftBackend({.threads = 1});
 
     render::TextureDesc targetDesc(int width, int height, Format format = Format::RGBA8_UNORM) {
         render::TextureDesc d;

@@ -217,7 +217,7 @@ MaskRun runMaskScene(const MaskSetup& setup, const std::vector<HalfImage>& initi
     pass.name = "mask";
     for (std::size_t i = 0; i < targets.size(); ++i) pass.color[i] = {targets[i], render::LoadOp::Load};
     pass.depth = {depth, render::LoadOp::Load};
-    if (sink) backend->setFragmentSink(sink);
+    if (sink) backend->fragmentCapture()->setFragmentSink(sink);
     b.beginPass(pass);
     const std::uint32_t third = std::uint32_t(layers.size() / 9) * 3;
     for (int k = 0; k < 3; ++k) {
@@ -233,7 +233,7 @@ MaskRun runMaskScene(const MaskSetup& setup, const std::vector<HalfImage>& initi
         b.draw(d);
     }
     b.endPass();
-    backend->setFragmentSink(nullptr);
+    backend->fragmentCapture()->setFragmentSink(nullptr);
     MaskRun run;
     for (auto t : targets) run.targets.push_back(b.readback(t));
     return run;

@@ -111,7 +111,7 @@ TEST(FrustumReject, InstancesOffTheTargetAreDroppedAndCounted) {
     gfx->beginPass(onePass(target));
     gfx->draw(draw);
     gfx->endPass();
-    const engine::render::soft::SoftStats s = gfx->stats();
+    const engine::render::soft::SoftStats s = softDriver(*gfx).stats();
     EXPECT_EQ(s.trianglesIn, 6u);
     EXPECT_EQ(s.trianglesRasterized, 2u);
     EXPECT_EQ(s.trianglesDropped, 4u);

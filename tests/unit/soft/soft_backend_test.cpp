@@ -14,9 +14,9 @@ using engine::render::soft::SoftStats;
 TEST(SoftBackend, NameAndOptions) {
     auto gfx = createSoftBackend({.threads = 2, .tileSize = 32, .debugChecks = true});
     EXPECT_EQ(gfx->name(), "soft");
-    EXPECT_EQ(gfx->options().threads, 2);
-    EXPECT_EQ(gfx->options().tileSize, 32);
-    EXPECT_TRUE(gfx->options().debugChecks);
+    EXPECT_EQ(softDriver(*gfx).options().threads, 2);
+    EXPECT_EQ(softDriver(*gfx).options().tileSize, 32);
+    EXPECT_TRUE(softDriver(*gfx).options().debugChecks);
 }
 
 TEST(SoftBackend, StatsCountWork) {
@@ -24,12 +24,12 @@ TEST(SoftBackend, StatsCountWork) {
     const render::TextureHandle t = makeTarget(*gfx, 8, 8);
     const render::BufferHandle quad = makeVertices(*gfx, fullQuad());
     const render::PipelineHandle p = gfx->createPipeline({});
-    EXPECT_EQ(gfx->stats().passes, 0u);
+    EXPECT_EQ(softDriver(*gfx).stats().passes, 0u);
     gfx->beginPass(onePass(t));
     gfx->draw(flatDraw(p, quad, 6));
     gfx->draw(flatDraw(p, quad, 3));
     gfx->endPass();
-    const SoftStats s = gfx->stats();
+    const SoftStats s = softDriver(*gfx).stats();
     EXPECT_EQ(s.passes, 1u);
     EXPECT_EQ(s.draws, 2u);
     EXPECT_EQ(s.trianglesIn, 3u);
@@ -57,7 +57,7 @@ TEST(SoftBackend, CulledAndDepthRejectedWorkIsNotShaded) {
     gfx->draw(flatDraw(p, farQuad, 6));  // behind: every pixel fails the depth test
     gfx->draw(flatDraw(culled, nearQuad, 6));
     gfx->endPass();
-    const SoftStats s = gfx->stats();
+    const SoftStats s = softDriver(*gfx).stats();
     EXPECT_EQ(s.trianglesIn, 6u);
     EXPECT_EQ(s.trianglesRasterized, 4u);
     EXPECT_EQ(s.trianglesDropped, 2u) << "culled triangles count as dropped";
@@ -79,8 +79,8 @@ TEST(SoftBackend, DepthOnlyPassShadesNothing) {
     gfx->beginPass(onePass(t, z));
     gfx->draw(flatDraw(p, quad, 6));
     gfx->endPass();
-    EXPECT_EQ(gfx->stats().pixelsShaded, 0u);
-    EXPECT_EQ(gfx->stats().pixelsTouched, 64u);
+    EXPECT_EQ(softDriver(*gfx).stats().pixelsShaded, 0u);
+    EXPECT_EQ(softDriver(*gfx).stats().pixelsTouched, 64u);
     EXPECT_EQ(gfx->readback(z).at(3, 3, 0), 0.25f);
     EXPECT_EQ(gfx->readback(t).at(3, 3, 0), 0.0f);
 }
@@ -240,7 +240,7 @@ TEST(SoftBackend, DebugChecksCountNonFiniteStores) {
     gfx->beginPass(onePass(t));
     gfx->draw(flatDraw(p, quad, 6, {INFINITY, 1.0f, std::nanf(""), 1.0f}));
     gfx->endPass();
-    EXPECT_EQ(gfx->stats().nonFiniteStores, 2u * 4u);
+    EXPECT_EQ(softDriver(*gfx).stats().nonFiniteStores, 2u * 4u);
 }
 
 }  // namespace

@@ -590,7 +590,7 @@ std::uint64_t renderScene(const Scene& scene, int threads, int tileSize, bool pr
     Hasher h;
     scene(*backend, h);
     if (print) {
-        const soft::SoftStats s = backend->stats();
+        const soft::SoftStats s = soft::softDriver(*backend).stats();
         std::printf("  // triangles in %llu, rasterized %llu, dropped %llu; pixels shaded %llu, touched %llu\n",
                     (unsigned long long)s.trianglesIn, (unsigned long long)s.trianglesRasterized,
                     (unsigned long long)s.trianglesDropped, (unsigned long long)s.pixelsShaded,

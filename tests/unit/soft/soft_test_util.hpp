@@ -24,6 +24,7 @@ using render::BlendState;
 using render::CompareFunc;
 using render::Format;
 using engine::render::soft::createSoftBackend;
+using engine::render::soft::softDriver;
 using engine::render::soft::SoftOptions;
 using ssam::testing::fullscreenDraw;
 using ssam::testing::meshDraw;

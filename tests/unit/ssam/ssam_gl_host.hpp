@@ -89,7 +89,7 @@ inline std::vector<ssam::gl::Box> boxesOf(const std::vector<Quad>& qs) {
 }
 
 struct GlHost {
-    std::unique_ptr<engine::render::gl::GlBackend> backend = engine::render::gl::createGlBackend({});
+    std::unique_ptr<engine::render::Device> backend = engine::render::gl::createGlBackend({});
 
     // Opaque targets cleared to kOpaqueColor and the far depth (plus optional opaque quads).
     std::unique_ptr<engine::render::FrameTargets> opaque(
@@ -112,8 +112,8 @@ struct GlHost {
 
     ssam::gl::FrameDesc frameOf(const engine::render::FrameTargets& t) const {
         ssam::gl::FrameDesc f;
-        f.colorTexture = backend->glTexture(t.color());
-        f.depthTexture = backend->glTexture(t.depth());
+        f.colorTexture = engine::render::gl::glTexture(*backend, t.color());
+        f.depthTexture = engine::render::gl::glTexture(*backend, t.depth());
         f.width = f.height = kGlSize;
         return f;  // identity viewProj, unlit
     }
@@ -125,7 +125,7 @@ struct GlHost {
         desc.width = desc.height = kGlSize;
         desc.format = format;
         desc.usage = UsageRenderTarget | UsageSampled;
-        const TextureHandle h = backend->importTexture(name, desc);
+        const TextureHandle h = engine::render::gl::importTexture(*backend, name, desc);
         Readback r = backend->readback(h);
         backend->destroy(h);
         return r;

@@ -270,9 +270,15 @@ TEST(SsamGl, BadInputIsRejectedWithAStatusAndAMessage) {
                  "has format GL_DEPTH_COMPONENT32F");
     expectStatus(ssam->render(with([&](auto& f) { f.depthTexture = good.colorTexture; }), draw), invalidTexture,
                  "GL_RGBA8");
-    expectStatus(ssam->render(with([&](auto& f) { f.colorTexture = host.backend->glTexture(small->color()); }), draw),
+    expectStatus(ssam->render(with([&](auto& f) {
+                                  f.colorTexture = engine::render::gl::glTexture(*host.backend, small->color());
+                              }),
+                              draw),
                  invalidTexture, "colour texture is 8x8 but the frame is 16x16");
-    expectStatus(ssam->render(with([&](auto& f) { f.depthTexture = host.backend->glTexture(small->depth()); }), draw),
+    expectStatus(ssam->render(with([&](auto& f) {
+                                  f.depthTexture = engine::render::gl::glTexture(*host.backend, small->depth());
+                              }),
+                              draw),
                  invalidTexture, "depth texture is 8x8");
     expectStatus(ssam->render(good, ssam::gl::ScreenSpaceAlphaMaskGl::DrawFoliage{}, nullptr), invalidArgument,
                  "without a draw callback");
@@ -283,16 +289,18 @@ TEST(SsamGl, BadInputIsRejectedWithAStatusAndAMessage) {
     ms.samples = 4;
     ms.usage = UsageRenderTarget;
     const TextureHandle msaa = host.backend->createTexture(ms);
-    expectStatus(ssam->render(with([&](auto& f) { f.colorTexture = host.backend->glTexture(msaa); }), draw),
-                 invalidTexture, "is not a GL_TEXTURE_2D");
+    expectStatus(
+        ssam->render(with([&](auto& f) { f.colorTexture = engine::render::gl::glTexture(*host.backend, msaa); }), draw),
+        invalidTexture, "is not a GL_TEXTURE_2D");
     host.backend->destroy(msaa);
     // An unsupported colour format (R8).
     TextureDesc r8 = ms;
     r8.samples = 1;
     r8.format = Format::R8_UNORM;
     const TextureHandle red = host.backend->createTexture(r8);
-    expectStatus(ssam->render(with([&](auto& f) { f.colorTexture = host.backend->glTexture(red); }), draw),
-                 invalidTexture, "use GL_RGBA8, GL_SRGB8_ALPHA8");
+    expectStatus(
+        ssam->render(with([&](auto& f) { f.colorTexture = engine::render::gl::glTexture(*host.backend, red); }), draw),
+        invalidTexture, "use GL_RGBA8, GL_SRGB8_ALPHA8");
     host.backend->destroy(red);
     // Bad knobs, named; the settings in force stay.
     ssam::gl::Settings bad;

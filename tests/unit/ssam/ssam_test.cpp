@@ -20,15 +20,15 @@ INSTANTIATE_TYPED_TEST_SUITE_P(Ssam, SsamCases, ::testing::Types<OnSoft>);
 TEST(SsamSoft, CompositeTouchesOnlyTheFoliageRegion) {
     Frame<OnSoft> f;
     f.opaquePass();
-    auto& backend = static_cast<soft::SoftBackend&>(*f.backend);
+    auto& backend = static_cast<engine::render::Device&>(*f.backend);
     ssam::ScreenSpaceAlphaMask ssam(backend);
     // A small quad in one corner: 4x4 pixels of a 16x16 screen.
     QuadBatches q(backend, {{-1.0f, 0.5f, -0.5f, 1.0f, 0.5f, {1, 1, 1, 0.5f}}});
     const ssam::FramePlan plan = ssam.plan(f.targets(), viewOf(q));
     ASSERT_FALSE(plan.empty());
-    const auto shadedBefore = backend.stats().pixelsShaded;
+    const auto shadedBefore = soft::softDriver(backend).stats().pixelsShaded;
     ssam.compositePass(plan, f.opaque.color());
-    const auto shaded = backend.stats().pixelsShaded - shadedBefore;
+    const auto shaded = soft::softDriver(backend).stats().pixelsShaded - shadedBefore;
     EXPECT_LE(shaded, std::uint64_t(plan.compositeRegion.width * plan.compositeRegion.height));
     EXPECT_LT(shaded, std::uint64_t(kSize * kSize / 4));
 }
@@ -36,13 +36,13 @@ TEST(SsamSoft, CompositeTouchesOnlyTheFoliageRegion) {
 TEST(SsamSoft, NoFoliageInViewCountsNoPass) {
     Frame<OnSoft> f;
     f.opaquePass();
-    auto& backend = static_cast<soft::SoftBackend&>(*f.backend);
+    auto& backend = static_cast<engine::render::Device&>(*f.backend);
     ssam::ScreenSpaceAlphaMask ssam(backend);
     QuadBatches q(backend, {{-1, -1, 1, 1, -0.5f, glm::vec4(1.0f)}, {3, 3, 4, 4, 0.5f, glm::vec4(1.0f)}});
-    const auto before = backend.stats();
+    const auto before = soft::softDriver(backend).stats();
     ssam.render(f.targets(), viewOf(q));
-    EXPECT_EQ(backend.stats().passes, before.passes);
-    EXPECT_EQ(backend.stats().draws, before.draws);
+    EXPECT_EQ(soft::softDriver(backend).stats().passes, before.passes);
+    EXPECT_EQ(soft::softDriver(backend).stats().draws, before.draws);
 }
 
 }  // namespace

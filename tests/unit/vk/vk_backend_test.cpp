@@ -82,7 +82,7 @@ TEST(VkBackend, ClearsStoreTheSoftBackendsBits) {
         }
         EXPECT_EQ(got.values, want.values);
     }
-    EXPECT_EQ(gfx->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*gfx).validationMessages(), 0u);
 }
 
 TEST(VkBackend, FlatTriangleMatchesTheSoftBackend) {
@@ -97,7 +97,7 @@ TEST(VkBackend, FlatTriangleMatchesTheSoftBackend) {
     }
     EXPECT_GT(covered, 100);  // the triangle is there
     EXPECT_EQ(differ, 0);     // and within one code of the soft backend's everywhere
-    EXPECT_EQ(gfx->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*gfx).validationMessages(), 0u);
 }
 
 // Draws are recorded until endPass (on the soft backend too): pipelines created after a draw in
@@ -142,7 +142,7 @@ TEST(VkBackend, PipelinesCreatedMidPassLeaveRecordedDrawsIntact) {
     EXPECT_EQ(got.values, want.values);
     for (int y = 0; y < 24; ++y)
         for (int x = 0; x < 32; ++x) ASSERT_EQ(got.at(x, y, 0), want.at(0, 0, 0)) << "drawn at " << x << "," << y;
-    EXPECT_EQ(gfx->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*gfx).validationMessages(), 0u);
 }
 
 TEST(VkBackend, BufferUpdatedInFlightIsRenamed) {
@@ -161,13 +161,13 @@ TEST(VkBackend, BufferUpdatedInFlightIsRenamed) {
     gfx->draw(meshDraw(pipeline, FlatParams{}, vb, 3));
     // Moved off screen after the draw was recorded: the draw keeps what it was given.
     for (Vertex& v : vertices) v.position.x += 10.0f;
-    const std::uint64_t before = gfx->counters().buffersCreated;
+    const std::uint64_t before = engine::render::vk::vulkanDriver(*gfx).counters().buffersCreated;
     gfx->updateBuffer(vb, 0, std::as_bytes(std::span<const Vertex>(vertices)));
-    EXPECT_EQ(gfx->counters().buffersCreated, before + 1);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*gfx).counters().buffersCreated, before + 1);
     gfx->endPass();
     const Readback r = gfx->readback(target);
     EXPECT_GT(r.at(8, 8, 3), 0.4f);  // drawn where the triangle was (the clear is 0)
-    EXPECT_EQ(gfx->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*gfx).validationMessages(), 0u);
 }
 
 TEST(VkBackend, SteadyFrameCreatesNothingAndWaitsAtMostOnce) {
@@ -193,9 +193,9 @@ TEST(VkBackend, SteadyFrameCreatesNothingAndWaitsAtMostOnce) {
         gfx->endFrame();
     };
     for (int i = 0; i < 4; ++i) frame();  // warm-up: pipelines, arena chunks, renamed buffers
-    const vk::VulkanCounters warm = gfx->counters();
+    const vk::VulkanCounters warm = engine::render::vk::vulkanDriver(*gfx).counters();
     for (int i = 0; i < 6; ++i) frame();
-    const vk::VulkanCounters& now = gfx->counters();
+    const vk::VulkanCounters& now = engine::render::vk::vulkanDriver(*gfx).counters();
     EXPECT_EQ(now.pipelinesCreated, warm.pipelinesCreated);
     EXPECT_EQ(now.imagesCreated, warm.imagesCreated);
     EXPECT_EQ(now.descriptorPoolsCreated, warm.descriptorPoolsCreated);
@@ -203,7 +203,7 @@ TEST(VkBackend, SteadyFrameCreatesNothingAndWaitsAtMostOnce) {
     EXPECT_EQ(now.buffersCreated, warm.buffersCreated);
     EXPECT_LE(now.fenceWaits - warm.fenceWaits, 6u);  // at most one per frame
     EXPECT_EQ(now.resultWaits, warm.resultWaits);
-    EXPECT_EQ(gfx->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*gfx).validationMessages(), 0u);
 }
 
 }  // namespace

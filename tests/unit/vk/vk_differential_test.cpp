@@ -20,7 +20,7 @@ TEST_P(VkDifferential, RandomScenesMatchTheSoftBackend) {
     options.failModes = GetParam().perTriangle ? vk::FailModeStrategy::PerTriangle : vk::FailModeStrategy::TwoPass;
     auto backend = ssam::testing::validatedVulkanBackend(options);
     differential::expectRandomScenesMatchSoft(*backend, "vk", GetParam());
-    EXPECT_EQ(backend->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*backend).validationMessages(), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, VkDifferential, ::testing::ValuesIn(differential::cases()),

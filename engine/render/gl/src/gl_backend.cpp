@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The GL backend's life: the context it needs, the vertex layout every mesh draw uses, and
-// the release of every GL object it made. The rest of GlBackendImpl: gl_backend_impl.hpp.
+// The GL driver's life: the context it needs, the vertex layout every mesh draw uses, and
+// the release of every GL object it made. The rest of GlDriverImpl: gl_backend_impl.hpp.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -23,18 +23,8 @@ void KHRONOS_APIENTRY onDebugMessage(GLenum, GLenum type, GLuint id, GLenum seve
 
 }  // namespace
 
-GlBackendImpl::GlBackendImpl(const GlOptions& options, std::shared_ptr<GlContext> context)
-    : options_(options), context_(std::move(context)), textures_("texture"), buffers_("buffer"), pipelines_("pipeline"),
-      queries_("occlusion query"),
-      programs_("program"), lookup_{
-                                [this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
-                                [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
-                                [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).shadow); },
-                                [this](BufferHandle h) { return buffers_.get(h).maxIndex; },
-                                [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; },
-                                [this](PipelineHandle h) -> const ProgramDesc& {
-                                    return *pipelines_.get(h).program->desc;
-                                }} {
+GlDriverImpl::GlDriverImpl(const GlOptions& options, std::shared_ptr<GlContext> context)
+    : options_(options), context_(std::move(context)) {
     makeCurrent();
     const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     if (!version) throw Error("GL backend: no GL context is current on this thread");
@@ -89,7 +79,7 @@ GlBackendImpl::GlBackendImpl(const GlOptions& options, std::shared_ptr<GlContext
     log::debug("GL backend: ", info_.renderer, ", ", info_.version, " (", info_.context, ")");
 }
 
-GlBackendImpl::~GlBackendImpl() {
+GlDriverImpl::~GlDriverImpl() {
     try {
         makeCurrent();
     } catch (const Error& e) {
@@ -107,15 +97,13 @@ GlBackendImpl::~GlBackendImpl() {
     glDeleteVertexArrays(1, &vao_);
     glDeleteVertexArrays(1, &emptyVao_);
     // GL program objects are deleted while the context is current.
-    pipelines_ = ResourcePool<PipelineTag, GlPipeline>("pipeline");
-    programs_ = ResourcePool<ProgramTag, std::shared_ptr<const ProgramSlot>>("program");
-    standardPrograms_.clear();
+    programs_ = {};
     resolveColor_.reset();
     resolveDepth_.reset();
     nothing_.reset();
 }
 
-std::unique_ptr<GlBackend> createGlBackend(const GlOptions& options) {
+std::unique_ptr<Device> createGlBackend(const GlOptions& options) {
     std::shared_ptr<GlContext> context = options.context;
     if (!context && !options.useCurrentContext) {
         HeadlessEglOptions headless = options.headless;
@@ -124,7 +112,17 @@ std::unique_ptr<GlBackend> createGlBackend(const GlOptions& options) {
     }
     if (options.useCurrentContext && context)
         throw Error("GL backend: both a context and useCurrentContext given; pick one");
-    return std::make_unique<GlBackendImpl>(options, std::move(context));
+    return std::make_unique<Device>(std::make_unique<GlDriverImpl>(options, std::move(context)));
+}
+
+TextureHandle importTexture(Device& device, unsigned int id, const TextureDesc& desc) {
+    GlDriver& gl = device.driverAs<GlDriver>();
+    const std::string what = "imported texture " + quotedName(desc.name);
+    return device.adoptTexture(desc, what, [&] { return gl.wrapTexture(id, desc, what); });
+}
+
+unsigned int glTexture(const Device& device, TextureHandle texture) {
+    return device.driverAs<GlDriver>().glTexture(device.nativeTexture(texture));
 }
 
 }  // namespace engine::render::gl

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// GL backend: one draw. Its state is resolved by the front end (resolved_draw_state.hpp),
+// GL driver: one draw. Its state is resolved by the device (resolved_draw_state.hpp),
 // the alpha test's fail modes included as a plan of steps (fail_mode_plan.hpp); here each step
 // is issued with the channels and depth it may write.
 #include <algorithm>
@@ -15,16 +15,9 @@
 
 namespace engine::render::gl {
 
-void GlBackendImpl::draw(const DrawDesc& d) {
-    if (!pass_) throw Error("draw outside a pass");
-    validateDraw(d, *pass_, {passWidth_, passHeight_, passSamples_}, lookup_);
-    makeCurrent();
-    execute(d);
-}
-
-void GlBackendImpl::drawRange(const DrawDesc& d, std::uint32_t first, std::uint32_t count, std::uint32_t baseInstance,
-                              std::uint32_t instances) {
-    if (d.indices)
+void GlDriverImpl::drawRange(const DriverDraw& d, std::uint32_t first, std::uint32_t count, std::uint32_t baseInstance,
+                             std::uint32_t instances) {
+    if (d.indices != kNoNative)
         glDrawElementsInstancedBaseInstance(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT,
                                             reinterpret_cast<const void*>(std::uintptr_t(first) * 4),
                                             GLsizei(instances), baseInstance);
@@ -35,24 +28,22 @@ void GlBackendImpl::drawRange(const DrawDesc& d, std::uint32_t first, std::uint3
 // Exact fail modes: a triangle's fragments never overlap, so its passing and failing steps
 // commute; triangles go in the soft backend's order (instance-major).
 template <typename ApplyStep>
-void GlBackendImpl::drawPerTriangle(const DrawDesc& d, const FailModePlan& plan, ApplyStep& applyStep) {
-    for (std::uint32_t instance = 0; instance < d.instanceCount; ++instance)
-        for (std::uint32_t tri = 0; tri < d.count / 3; ++tri)
+void GlDriverImpl::drawPerTriangle(const DriverDraw& d, const FailModePlan& plan, ApplyStep& applyStep) {
+    for (std::uint32_t instance = 0; instance < d.desc->instanceCount; ++instance)
+        for (std::uint32_t tri = 0; tri < d.desc->count / 3; ++tri)
             for (const PlanStep& step : plan.steps)
-                if (applyStep(step)) drawRange(d, d.first + tri * 3, 3, instance, 1);
+                if (applyStep(step)) drawRange(d, d.desc->first + tri * 3, 3, instance, 1);
 }
 
-void GlBackendImpl::execute(const DrawDesc& d) {
-    const GlPipeline& pipeline = pipelines_.get(d.pipeline);
-    const PipelineDesc& desc = pipeline.desc;
-    const ProgramSlot& s = *pipeline.program;
-    const bool fullscreen = s.desc->vertexInput == VertexInput::Fullscreen;
+void GlDriverImpl::draw(const DriverDraw& draw) {
+    const DrawDesc& d = *draw.desc;
+    const PipelineDesc& desc = *draw.pipeline;
+    const ProgramSlot& s = *programs_[draw.program];
+    const bool fullscreen = draw.fullscreen;
     const GLuint p = s.program.id();
-
-    DrawTargets targets{{}, int(targets_.size()), pass_->depth.texture.valid(), passSamples_, passWidth_, passHeight_};
-    for (std::size_t i = 0; i < targets_.size(); ++i) targets.colorFormats[i] = targets_[i].format;
-    const ResolvedDrawState state = resolveDrawState(desc, targets, d.scissor, failModeEmulation());
+    const ResolvedDrawState& state = *draw.state;
     const FailModePlan& plan = state.failModes;
+    makeCurrent();
 
     // The base state was applied when the pass began; within a pass only this backend
     // touches the context (a host sharing it changes state between passes, not inside one).
@@ -60,7 +51,7 @@ void GlBackendImpl::execute(const DrawDesc& d) {
     glViewport(0, 0, passWidth_, passHeight_);
     glUseProgram(p);
     glBindVertexArray(fullscreen ? emptyVao_ : vao_);
-    setParams(s, d.params, textures_, samplers_);
+    setParams(s, d.params, textures_, *natives_, samplers_);
 
     // Alpha test and alpha-to-coverage uniforms.
     glProgramUniform1i(p, s.alphaFunc, int(desc.alphaTest.func));
@@ -113,15 +104,16 @@ void GlBackendImpl::execute(const DrawDesc& d) {
 
     // Vertex input.
     if (!fullscreen) {
-        glVertexArrayVertexBuffer(vao_, 0, buffers_.get(d.vertices).id, 0, sizeof(Vertex));
-        glVertexArrayVertexBuffer(vao_, 1, d.instances ? buffers_.get(d.instances).id : identityInstance_, 0,
+        glVertexArrayVertexBuffer(vao_, 0, buffers_[draw.vertices].id, 0, sizeof(Vertex));
+        glVertexArrayVertexBuffer(vao_, 1,
+                                  draw.instances != kNoNative ? buffers_[draw.instances].id : identityInstance_, 0,
                                   sizeof(Instance));
-        glVertexArrayElementBuffer(vao_, d.indices ? buffers_.get(d.indices).id : 0);
+        glVertexArrayElementBuffer(vao_, draw.indices != kNoNative ? buffers_[draw.indices].id : 0);
     }
 
     auto applyStep = [&](const PlanStep& step) {
         // A step that writes nothing is not drawn, unless an occlusion query counts its samples.
-        bool writes = step.depthWrite || pass_->countSamplesInto;
+        bool writes = step.depthWrite || pass_->countSamplesInto != kNoNative;
         for (std::size_t i = 0; i < targets_.size(); ++i) {
             const std::uint8_t m = state.blend[i].writeMask & step.channels;
             writes = writes || m;
@@ -139,16 +131,16 @@ void GlBackendImpl::execute(const DrawDesc& d) {
         for (const PlanStep& step : plan.steps)
             if (applyStep(step)) glDrawArrays(GL_TRIANGLES, 0, 3);
     } else if (d.count > 0) {
-        if (plan.perTriangle) drawPerTriangle(d, plan, applyStep);
+        if (plan.perTriangle) drawPerTriangle(draw, plan, applyStep);
         else
             for (const PlanStep& step : plan.steps)
-                if (applyStep(step)) drawRange(d, d.first, d.count, 0, d.instanceCount);
+                if (applyStep(step)) drawRange(draw, d.first, d.count, 0, d.instanceCount);
     }
     // glGetError stalls a threaded driver and the message costs a string per draw: errors
     // are checked per draw only in debug builds or with debug output on, and always at the
     // end of the pass (endPass), which names the pass.
     if (kCheckEveryDraw || options_.debugOutput)
-        checkGl("draw with pipeline " + quotedName(desc.name) + " in pass " + quotedName(pass_->name));
+        checkGl("draw with pipeline " + quotedName(desc.name) + " in pass " + quotedName(pass_->desc->name));
 }
 
 }  // namespace engine::render::gl

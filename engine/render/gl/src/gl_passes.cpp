@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// GL backend: a pass's framebuffer, clears, timer and occlusion queries and conditional
+// GL driver: a pass's framebuffer, clears, timer and occlusion queries and conditional
 // rendering; resolves and presenting to a window (readbacks: gl_readback.cpp).
 #include <algorithm>
 #include <string>
@@ -13,34 +13,29 @@
 
 namespace engine::render::gl {
 
-void GlBackendImpl::beginPass(const PassDesc& pass) {
-    if (pass_)
-        throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
-    const PassExtent extent = validatePass(pass, lookup_);
-    if (pass.countSamplesInto) queries_.get(pass.countSamplesInto);  // alive, or a clear error now
-    if (pass.drawOnlyIfSamplesIn && !queries_.get(pass.drawOnlyIfSamplesIn).counted)
-        throw uncountedQueryError(queries_.get(pass.drawOnlyIfSamplesIn).name);
-    const int width = extent.width, height = extent.height, samples = extent.samples;
+void GlDriverImpl::beginPass(const DriverPass& pass) {
+    const std::string& name = pass.desc->name;
+    const int width = pass.extent.width, height = pass.extent.height;
     int actual = 1;  // the samples the driver really gave (llvmpipe: 4 for 2)
     std::vector<GLuint> colorIds;
     targets_.clear();
-    for (const ColorAttachment& c : pass.color) {
-        if (!c.texture) continue;
-        const GlTexture& t = textures_.get(c.texture);
+    for (NativeId c : pass.color) {
+        if (c == kNoNative) continue;
+        const GlTexture& t = textures_[c];
         actual = t.actualSamples;
         colorIds.push_back(t.id);
-        targets_.push_back({c.texture, t.desc.format, c});
+        targets_.push_back(c);
     }
     GLuint depthId = 0;
-    if (pass.depth.texture) {
-        const GlTexture& t = textures_.get(pass.depth.texture);
+    if (pass.depth != kNoNative) {
+        const GlTexture& t = textures_[pass.depth];
         actual = t.actualSamples;
         depthId = t.id;
     }
 
     makeCurrent();
     drainGlErrors();
-    const GLuint fbo = framebuffers_.get(colorIds, depthId, "pass " + quotedName(pass.name));
+    const GLuint fbo = framebuffers_.get(colorIds, depthId, "pass " + quotedName(name));
 
     // The pass's framebuffer is bound, and made known to the driver by a draw that
     // rasterizes nothing, before the query begins: llvmpipe starts the clock of a
@@ -53,7 +48,7 @@ void GlBackendImpl::beginPass(const PassDesc& pass) {
     glCreateQueries(GL_TIME_ELAPSED, 1, &passQuery_);
     glBeginQuery(GL_TIME_ELAPSED, passQuery_);
     try {
-        checkGl("pass " + quotedName(pass.name) + ": starting its timer query");
+        checkGl("pass " + quotedName(name) + ": starting its timer query");
     } catch (...) {
         glDeleteQueries(1, &passQuery_);
         passQuery_ = 0;
@@ -64,13 +59,13 @@ void GlBackendImpl::beginPass(const PassDesc& pass) {
     // sRGB curve, half rounding to nearest even, depth unclamped) and written with
     // glClearTexImage, which converts nothing; GL's own clear conversion rounds ties to
     // even and halves toward zero on llvmpipe.
-    for (const Target& target : targets_)
-        if (target.attachment.load == LoadOp::Clear)
-            clearTexture(textures_.get(target.texture), target.attachment.clear);
-    if (pass.depth.texture && pass.depth.load == LoadOp::Clear)
-        clearTexture(textures_.get(pass.depth.texture), glm::vec4(pass.depth.clear));
+    for (std::size_t i = 0; i < pass.color.size(); ++i)
+        if (pass.color[i] != kNoNative && pass.desc->color[i].load == LoadOp::Clear)
+            clearTexture(textures_[pass.color[i]], pass.desc->color[i].clear);
+    if (pass.depth != kNoNative && pass.desc->depth.load == LoadOp::Clear)
+        clearTexture(textures_[pass.depth], glm::vec4(pass.desc->depth.clear));
     try {
-        checkGl("pass " + quotedName(pass.name) + ": clearing");
+        checkGl("pass " + quotedName(name) + ": clearing");
     } catch (...) {
         glEndQuery(GL_TIME_ELAPSED);
         glDeleteQueries(1, &passQuery_);
@@ -79,8 +74,8 @@ void GlBackendImpl::beginPass(const PassDesc& pass) {
     }
     // Queries begin after the clears (glClearTexImage passes no samples and is not
     // conditional anyway): only the pass's draws are counted, or skipped.
-    if (pass.countSamplesInto) {
-        GlQuery& q = queries_.get(pass.countSamplesInto);
+    if (pass.countSamplesInto != kNoNative) {
+        GlQuery& q = queries_[pass.countSamplesInto];
         // A pending timing still has to read the object's last result: count into a new one.
         if (q.id && conditionPending(q.id)) {
             retiredQueries_.push_back(q.id);
@@ -93,41 +88,36 @@ void GlBackendImpl::beginPass(const PassDesc& pass) {
         glBeginQuery(GL_ANY_SAMPLES_PASSED, q.id);
     }
     passCondition_ = 0;
-    if (pass.drawOnlyIfSamplesIn) {
-        passCondition_ = queries_.get(pass.drawOnlyIfSamplesIn).id;
+    if (pass.drawOnlyIfSamplesIn != kNoNative) {
+        passCondition_ = queries_[pass.drawOnlyIfSamplesIn].id;
         glBeginConditionalRender(passCondition_, GL_QUERY_WAIT);
     }
     pass_ = pass;
-    passWidth_ = width, passHeight_ = height, passSamples_ = samples, passActualSamples_ = actual;
+    passWidth_ = width, passHeight_ = height, passSamples_ = pass.extent.samples, passActualSamples_ = actual;
     passFbo_ = fbo;
 }
 
-void GlBackendImpl::endPass() {
-    if (!pass_) throw Error("endPass without beginPass");
+void GlDriverImpl::endPass() {
     makeCurrent();
-    endPassQueries(true);
-    pendingTimings_.push_back({pass_->name, std::exchange(passQuery_, 0u), std::exchange(passCondition_, 0u)});
+    endPassQueries();
+    pendingTimings_.push_back({pass_->serial, std::exchange(passQuery_, 0u), std::exchange(passCondition_, 0u)});
     pass_.reset();
     targets_.clear();
     checkGl("pass: ending");
 }
 
-// Ends the open pass's conditional rendering, occlusion query (whose result then counts, or
-// not when the pass is aborted) and timer query.
-void GlBackendImpl::endPassQueries(bool counted) {
+// Ends the open pass's conditional rendering, occlusion query and timer query.
+void GlDriverImpl::endPassQueries() {
     if (passCondition_) glEndConditionalRender();
-    if (pass_->countSamplesInto) {
-        glEndQuery(GL_ANY_SAMPLES_PASSED);
-        queries_.get(pass_->countSamplesInto).counted = counted;
-    }
+    if (pass_->countSamplesInto != kNoNative) glEndQuery(GL_ANY_SAMPLES_PASSED);
     glEndQuery(GL_TIME_ELAPSED);
 }
 
-void GlBackendImpl::abortPass() noexcept {
+void GlDriverImpl::abortPass() noexcept {
     if (!pass_) return;
     try {
         makeCurrent();
-        endPassQueries(false);
+        endPassQueries();
         glDeleteQueries(1, &passQuery_);
     } catch (...) {  // no current context or a destroyed query: the pass is dropped all the same
     }
@@ -136,10 +126,9 @@ void GlBackendImpl::abortPass() noexcept {
     targets_.clear();
 }
 
-void GlBackendImpl::resolve(const ResolveDesc& r) {
-    GlTexture& src = textures_.get(r.source);
-    GlTexture& dst = textures_.get(r.destination);
-    const std::string what = validateResolve(src.desc, dst.desc);
+void GlDriverImpl::resolve(NativeId source, NativeId destination, const ResolveDesc& r, const std::string& what) {
+    GlTexture& src = textures_[source];
+    GlTexture& dst = textures_[destination];
     makeCurrent();
     drainGlErrors();
     const bool depth = formatInfo(src.desc.format).isDepth;
@@ -181,8 +170,8 @@ void GlBackendImpl::resolve(const ResolveDesc& r) {
     checkGl(what);
 }
 
-std::vector<PassTiming> GlBackendImpl::takeTimings() {
-    std::vector<PassTiming> out;
+std::vector<DriverTiming> GlDriverImpl::takeTimings() {
+    std::vector<DriverTiming> out;
     if (pendingTimings_.empty()) return out;
     makeCurrent();
     for (const PendingTiming& p : pendingTimings_) {
@@ -191,19 +180,15 @@ std::vector<PassTiming> GlBackendImpl::takeTimings() {
         glDeleteQueries(1, &p.query);
         GLuint any = 1;
         if (p.condition) glGetQueryObjectuiv(p.condition, GL_QUERY_RESULT, &any);
-        out.push_back({p.pass, double(ns) / 1.0e6, any == 0});
+        out.push_back({p.serial, double(ns) / 1.0e6, any == 0});
     }
     pendingTimings_.clear();
     for (GLuint q : std::exchange(retiredQueries_, {})) releaseQueryObject(q);
     return out;
 }
 
-bool GlBackendImpl::present(TextureHandle h) {
-    const GlTexture& t = textures_.get(h);
-    if (t.desc.samples != 1) throw Error("present of " + quotedName(t.desc.name) + ": multisampled; resolve it first");
-    if (formatInfo(t.desc.format).isDepth) throw Error("present of " + quotedName(t.desc.name) + ": a depth texture");
-    if (pass_)
-        throw Error("present of " + quotedName(t.desc.name) + " while pass " + quotedName(pass_->name) + " is open");
+bool GlDriverImpl::present(NativeId h, const TextureDesc&) {
+    const GlTexture& t = textures_[h];
     if (!context_ || !context_->hasWindow()) return false;
     const glm::ivec2 size = context_->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return false;  // minimised: nothing to show, nothing to swap
@@ -231,7 +216,7 @@ bool GlBackendImpl::present(TextureHandle h) {
 
 // State every pass, resolve and draw relies on; set again each time because a host
 // sharing the context may have changed it.
-void GlBackendImpl::applyBaseState() {
+void GlDriverImpl::applyBaseState() {
     glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
     glDepthRange(0.0, 1.0);
     glEnable(GL_FRAMEBUFFER_SRGB);
@@ -251,7 +236,7 @@ void GlBackendImpl::applyBaseState() {
     glClampColor(GL_CLAMP_READ_COLOR, GL_FALSE);
 }
 
-void GlBackendImpl::validateFramebufferState() {
+void GlDriverImpl::validateFramebufferState() {
     ProgramSlot& nothing = internalProgram(nothing_, "validate", "#version 450 core\nvoid main() {}\n");
     glUseProgram(nothing.program.id());
     glBindVertexArray(emptyVao_);
@@ -260,13 +245,13 @@ void GlBackendImpl::validateFramebufferState() {
     glDisable(GL_RASTERIZER_DISCARD);
 }
 
-bool GlBackendImpl::conditionPending(GLuint query) const {
+bool GlDriverImpl::conditionPending(GLuint query) const {
     return std::any_of(pendingTimings_.begin(), pendingTimings_.end(),
                        [&](const PendingTiming& p) { return p.condition == query; });
 }
 
 // Deleted now, or once the pending timing that reads it is taken.
-void GlBackendImpl::releaseQueryObject(GLuint query) {
+void GlDriverImpl::releaseQueryObject(GLuint query) {
     if (conditionPending(query)) {
         retiredQueries_.push_back(query);
         return;

@@ -76,7 +76,7 @@ ProgramSlot compileInternal(const char* name, const std::string& fragment, GlslT
 }
 
 void setParams(const ProgramSlot& s, const DrawParams& params, const GlTexturePool& textures,
-               GlSamplerCache& samplers) {
+               const NativeTextures& natives, GlSamplerCache& samplers) {
     const GLuint p = s.program.id();
     const auto* bytes = static_cast<const std::byte*>(params.data());
     const GlslProgram& gl = s.desc->gl;
@@ -92,7 +92,7 @@ void setParams(const ProgramSlot& s, const DrawParams& params, const GlTexturePo
                 glBindTextureUnit(unit, 0);
                 continue;
             }
-            const GlTexture& t = textures.get(binding.texture);
+            const GlTexture& t = textures[natives.texture(binding.texture)];
             glProgramUniform1i(p, l.present, 1);
             glProgramUniform1i(p, l.filter, int(binding.sampler.filter));
             if (field.premultipliedUniform)
@@ -101,7 +101,7 @@ void setParams(const ProgramSlot& s, const DrawParams& params, const GlTexturePo
             glBindSampler(unit, samplers.get(binding.sampler));
         } else {
             const auto handle = readAt<TextureHandle>(bytes + field.offset);
-            glBindTextureUnit(unit, handle ? textures.get(handle).id : 0);
+            glBindTextureUnit(unit, handle ? textures[natives.texture(handle)].id : 0);
             glBindSampler(unit, 0);
             if (field.presentUniform) glProgramUniform1i(p, l.present, handle ? 1 : 0);
         }

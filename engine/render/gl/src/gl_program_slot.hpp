@@ -43,6 +43,6 @@ ProgramSlot compileInternal(const char* name, const std::string& fragment, GlslT
 // The draw's parameters as the program's layout lays them out: uniforms, and textures bound
 // to their units with samplers from `samplers`.
 void setParams(const ProgramSlot& slot, const DrawParams& params, const GlTexturePool& textures,
-               GlSamplerCache& samplers);
+               const NativeTextures& natives, GlSamplerCache& samplers);
 
 }  // namespace engine::render::gl

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "engine/core/error.hpp"
-#include "engine/render/memory_budget.hpp"
 #include "gl_backend_impl.hpp"
 #include "gl_check.hpp"
 #include "gl_enums.hpp"
@@ -29,9 +28,8 @@ int rowsPerBand(std::size_t rowBytes, std::size_t maxBandBytes, int height) {
 
 }  // namespace
 
-Readback GlBackendImpl::readback(TextureHandle h) {
-    const GlTexture& t = textures_.get(h);
-    validateReadback(t.desc);
+Readback GlDriverImpl::readback(NativeId h, const TextureDesc&) {
+    const GlTexture& t = textures_[h];
     const FormatInfo& info = formatInfo(t.desc.format);
     const GlFormat f = glFormat(t.desc.format);
     Readback r;
@@ -41,8 +39,6 @@ Readback GlBackendImpl::readback(TextureHandle h) {
     r.format = t.desc.format;
     const std::size_t rowValues = std::size_t(r.width) * r.channels;
     const std::size_t values = rowValues * r.height;
-    checkFitsInMemory(values * sizeof(float), "readback of " + quotedName(t.desc.name) + " as float",
-                      hostMemoryAvailable);
     r.values.resize(values);
     makeCurrent();
     drainGlErrors();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// GL backend: textures (storage, upload, clears to the soft backend's bits), buffers, programs,
+// GL driver: textures (storage, upload, clears to the soft driver's bits), buffers, programs,
 // pipelines (how each will emulate the alpha test's fail modes) and occlusion queries.
 #include <algorithm>
 #include <cmath>
@@ -17,12 +17,9 @@
 
 namespace engine::render::gl {
 
-TextureHandle GlBackendImpl::createTexture(const TextureDesc& desc, const TextureData* data) {
-    const std::string what = "texture " + quotedName(desc.name);
-    validateTexture(desc, what);
-    const GlFormat f = glFormat(desc.format);
+void GlDriverImpl::checkTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) {
     if (desc.samples > 1) {
-        const int supported = maxSamplesFor(f.internal);
+        const int supported = maxSamplesFor(glFormat(desc.format).internal);
         if (desc.samples > supported)
             throw Error(what + ": " + std::to_string(desc.samples) + " samples exceed this GL implementation's " +
                         std::to_string(supported) + " for " + std::string(formatName(desc.format)) + " (" +
@@ -30,9 +27,21 @@ TextureHandle GlBackendImpl::createTexture(const TextureDesc& desc, const Textur
         if (data && !data->levels.empty())
             throw Error(what + ": initial data for a multisampled texture (the GL backend cannot upload samples)");
     }
-    if (data) validateTextureData(desc, *data, what);
-    makeCurrent();
     checkGlTextureFits(desc, what, textureLimits_);
+}
+
+// A GPU's figure is read through GL, so with the driver's context current.
+MemoryProbe GlDriverImpl::memoryProbe() const {
+    if (!textureLimits_.memory) return {};
+    return [this]() {
+        if (context_) context_->makeCurrent();
+        return textureLimits_.memory();
+    };
+}
+
+NativeId GlDriverImpl::createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) {
+    const GlFormat f = glFormat(desc.format);
+    makeCurrent();
     drainGlErrors();
     GlTexture t;
     t.desc = desc;
@@ -60,9 +69,7 @@ TextureHandle GlBackendImpl::createTexture(const TextureDesc& desc, const Textur
     return textures_.add(std::move(t));
 }
 
-TextureHandle GlBackendImpl::importTexture(unsigned int id, const TextureDesc& desc) {
-    const std::string what = "imported texture " + quotedName(desc.name);
-    validateTexture(desc, what);
+NativeId GlDriverImpl::wrapTexture(unsigned int id, const TextureDesc& desc, const std::string& what) {
     makeCurrent();
     drainGlErrors();
     if (!glIsTexture(id)) throw Error(what + ": GL name " + std::to_string(id) + " is not a texture");
@@ -95,15 +102,12 @@ TextureHandle GlBackendImpl::importTexture(unsigned int id, const TextureDesc& d
     return textures_.add(std::move(t));
 }
 
-BufferHandle GlBackendImpl::createBuffer(const BufferDesc& desc, std::span<const std::byte> data) {
-    const std::string what = "buffer " + quotedName(desc.name);
-    validateBuffer(desc, data, what);
+NativeId GlDriverImpl::createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) {
     if (desc.size > (std::uint64_t(1) << 32))
         throw Error(what + ": " + std::to_string(desc.size >> 20) + " MiB exceeds the GL backend's 4 GiB limit");
     makeCurrent();
     drainGlErrors();
     GlBuffer b;
-    b.desc = desc;
     std::vector<std::byte> zeros;
     if (data.empty()) zeros.assign(desc.size, std::byte{0});
     const void* initial = data.empty() ? static_cast<const void*>(zeros.data()) : data.data();
@@ -115,55 +119,41 @@ BufferHandle GlBackendImpl::createBuffer(const BufferDesc& desc, std::span<const
         glDeleteBuffers(1, &b.id);
         throw;
     }
-    if (desc.kind == BufferKind::Index) {
-        const auto* p = static_cast<const std::byte*>(initial);
-        b.shadow.assign(p, p + desc.size);
-        b.maxIndex = largestIndex(b.shadow);
-    }
     ownedBuffers_.insert(b.id);
     return buffers_.add(std::move(b));
 }
 
-void GlBackendImpl::updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) {
-    GlBuffer& b = buffers_.get(handle);
-    validateBufferUpdate(b.desc, offset, data.size());
-    if (data.empty()) return;
+void GlDriverImpl::updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) {
     makeCurrent();
-    glNamedBufferSubData(b.id, GLintptr(offset), GLsizeiptr(data.size()), data.data());
-    if (!b.shadow.empty()) {
-        std::memcpy(b.shadow.data() + offset, data.data(), data.size());
-        b.maxIndex = largestIndex(b.shadow);
-    }
+    glNamedBufferSubData(buffers_[handle].id, GLintptr(offset), GLsizeiptr(data.size()), data.data());
 }
 
-ProgramHandle GlBackendImpl::createProgram(const ProgramDesc& desc) {
-    if (desc.gl.fragment.empty()) throw Error("program " + quotedName(desc.name) + " has no GLSL for the GL backend");
+NativeId GlDriverImpl::createProgram(std::shared_ptr<const ProgramDesc> desc) {
+    if (desc->gl.fragment.empty()) throw Error("program " + quotedName(desc->name) + " has no GLSL for the GL backend");
     makeCurrent();
-    return programs_.add(compileSlot(std::make_shared<const ProgramDesc>(desc), glsl()));
+    return programs_.add(compileSlot(std::move(desc), glsl()));
 }
 
-PipelineHandle GlBackendImpl::createPipeline(const PipelineDesc& desc) {
+NativeId GlDriverImpl::createStandardProgram(ProgramKind kind, ProgramDesc desc) {
+    desc.gl.fragment = standardFragment(kind);
+    makeCurrent();
+    return programs_.add(compileSlot(std::make_shared<const ProgramDesc>(std::move(desc)), glsl()));
+}
+
+void GlDriverImpl::notePipeline(const PipelineDesc& desc, ResolvedPipeline& resolved) {
     const std::string what = "pipeline " + quotedName(desc.name);
-    if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
-        throw Error(what + ": alpha reference is not finite");
-    std::shared_ptr<const ProgramSlot> program = programFor(desc.program);
-    if (program->desc->vertexInput == VertexInput::Fullscreen && desc.depth.test)
-        throw Error(what + ": full-screen program " + program->desc->name + " cannot depth-test");
-    const ResolvedPipeline resolved = resolvePipeline(desc, failModeEmulation());
-    GlPipeline p{desc, resolved.info, std::move(program)};
-    const FailModePlan& plan = resolved.failModes;
+    PipelineInfo& info = resolved.info;
     if (desc.alphaTest.alphaToCoverage && options_.nativeAlphaToCoverage) {
-        p.info.exact = false;
-        p.info.note += std::string(p.info.note.empty() ? "" : "; ") +
-                       "native GL_SAMPLE_ALPHA_TO_COVERAGE: the coverage pattern is implementation-defined";
+        info.exact = false;
+        info.note += std::string(info.note.empty() ? "" : "; ") +
+                     "native GL_SAMPLE_ALPHA_TO_COVERAGE: the coverage pattern is implementation-defined";
     }
-    if (!p.info.exact) log::warn("GL ", what, ": inexact emulation: ", p.info.note);
-    else if (!plan.note.empty()) log::debug("GL ", what, ": ", plan.note);
-    return pipelines_.add(std::move(p));
+    if (!info.exact) log::warn("GL ", what, ": inexact emulation: ", info.note);
+    else if (!resolved.failModes.note.empty()) log::debug("GL ", what, ": ", resolved.failModes.note);
 }
 
-void GlBackendImpl::destroy(TextureHandle h) {
-    GlTexture& t = textures_.get(h);
+void GlDriverImpl::destroyTexture(NativeId h) {
+    GlTexture& t = textures_[h];
     makeCurrent();
     framebuffers_.forget(t.id);
     if (!t.imported) {
@@ -173,22 +163,21 @@ void GlBackendImpl::destroy(TextureHandle h) {
     textures_.remove(h);
 }
 
-void GlBackendImpl::destroy(BufferHandle h) {
-    GlBuffer& b = buffers_.get(h);
+void GlDriverImpl::destroyBuffer(NativeId h) {
+    GlBuffer& b = buffers_[h];
     makeCurrent();
     glDeleteBuffers(1, &b.id);
     ownedBuffers_.erase(b.id);
     buffers_.remove(h);
 }
 
-void GlBackendImpl::destroy(ProgramHandle h) {
+void GlDriverImpl::destroyProgram(NativeId h) {
     makeCurrent();
     programs_.remove(h);
 }
 
-void GlBackendImpl::destroy(QueryHandle h) {
-    const GlQuery q = queries_.get(h);
-    checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, true);
+void GlDriverImpl::destroyQuery(NativeId h) {
+    const GlQuery q = queries_[h];
     queries_.remove(h);
     if (q.id) {
         makeCurrent();
@@ -196,17 +185,15 @@ void GlBackendImpl::destroy(QueryHandle h) {
     }
 }
 
-bool GlBackendImpl::anySamplesPassed(QueryHandle h) {
-    const GlQuery& q = queries_.get(h);
-    checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, false);
-    if (!q.counted) throw uncountedQueryError(q.name);
+bool GlDriverImpl::anySamplesPassed(NativeId h) {
+    const GlQuery& q = queries_[h];
     makeCurrent();
     GLuint any = 0;
     glGetQueryObjectuiv(q.id, GL_QUERY_RESULT, &any);
     return any != 0;
 }
 
-int GlBackendImpl::maxSamplesFor(GLenum internal) {
+int GlDriverImpl::maxSamplesFor(GLenum internal) {
     auto it = maxSamplesByFormat_.find(internal);
     if (it != maxSamplesByFormat_.end()) return it->second;
     makeCurrent();
@@ -219,7 +206,7 @@ int GlBackendImpl::maxSamplesFor(GLenum internal) {
     return maxSamplesByFormat_[internal] = best;
 }
 
-void GlBackendImpl::upload(GlTexture& t, const TextureData& data) {
+void GlDriverImpl::upload(GlTexture& t, const TextureData& data) {
     const TextureDesc& desc = t.desc;
     const GlFormat f = glFormat(desc.format);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -244,30 +231,21 @@ void GlBackendImpl::upload(GlTexture& t, const TextureData& data) {
     }
 }
 
-void GlBackendImpl::clearTexture(const GlTexture& t, const glm::vec4& value) {
+void GlDriverImpl::clearTexture(const GlTexture& t, const glm::vec4& value) {
     const GlFormat f = glFormat(t.desc.format);
     const std::vector<std::byte> texel = encodeTexel(t.desc.format, value);
     glClearTexImage(t.id, 0, f.pixelFormat, f.storedType, texel.data());
 }
 
 // GL leaves new storage undefined; the soft backend starts from zero bytes.
-void GlBackendImpl::clearToZero(const GlTexture& t) {
+void GlDriverImpl::clearToZero(const GlTexture& t) {
     const GlFormat f = glFormat(t.desc.format);
     const int levels = t.desc.samples > 1 ? 1 : t.desc.mipLevels;
     for (int level = 0; level < levels; ++level) glClearTexImage(t.id, level, f.pixelFormat, f.storedType, nullptr);
 }
 
-std::shared_ptr<const ProgramSlot> GlBackendImpl::programFor(const ProgramRef& ref) {
-    if (ref.created) return programs_.get(ref.created);
-    return standardPrograms_.get(ref.standard, [&](ProgramDesc desc) {
-        desc.gl.fragment = standardFragment(ref.standard);
-        makeCurrent();
-        return compileSlot(std::make_shared<const ProgramDesc>(std::move(desc)), glsl());
-    });
-}
-
-ProgramSlot& GlBackendImpl::internalProgram(std::optional<ProgramSlot>& slot, const char* name,
-                                            const std::string& fragment) {
+ProgramSlot& GlDriverImpl::internalProgram(std::optional<ProgramSlot>& slot, const char* name,
+                                           const std::string& fragment) {
     if (!slot) slot = compileInternal(name, fragment, glsl());
     return *slot;
 }

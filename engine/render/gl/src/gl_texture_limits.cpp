@@ -62,7 +62,6 @@ void checkGlTextureFits(const TextureDesc& desc, const std::string& what, const 
         throw Error(
             what + ": render target " + describeSize(desc) + " exceeds this GL implementation's framebuffer limit of " +
             std::to_string(limits.maxFramebufferWidth) + "x" + std::to_string(limits.maxFramebufferHeight) + by);
-    checkFitsInMemory(textureBytes(desc), what + ": " + describeSize(desc), limits.memory);
 }
 
 }  // namespace engine::render::gl

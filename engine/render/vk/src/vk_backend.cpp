@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Vulkan backend: creation (device, frame ring, the identity instance), tear-down and the frame
+// Vulkan driver: creation (device, frame ring, the identity instance), tear-down and the frame
 // boundary.
 #include <cstring>
 
@@ -18,18 +18,8 @@ VulkanProgram::~VulkanProgram() {
         if (f) vkDestroyShaderModule(device, f, nullptr);
 }
 
-VulkanBackendImpl::VulkanBackendImpl(const VulkanOptions& options, std::unique_ptr<VulkanContext> context)
-    : options_(options), context_(std::move(context)), textures_("texture"), buffers_("buffer"), pipelines_("pipeline"),
-      queries_("occlusion query"),
-      programs_("program"), lookup_{
-                                [this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
-                                [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
-                                [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).shadow); },
-                                [this](BufferHandle h) { return buffers_.get(h).maxIndex; },
-                                [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; },
-                                [this](PipelineHandle h) -> const ProgramDesc& {
-                                    return *pipelines_.get(h).program->desc;
-                                }} {
+VulkanDriverImpl::VulkanDriverImpl(const VulkanOptions& options, std::unique_ptr<VulkanContext> context)
+    : options_(options), context_(std::move(context)) {
     frames_ = std::make_unique<FrameRing>(*context_, counters_, options_.framesInFlight);
     if (options_.window) swapchain_ = std::make_unique<Swapchain>(*context_, counters_, frames_->slots());
     const Instance identity{};
@@ -47,36 +37,31 @@ VulkanBackendImpl::VulkanBackendImpl(const VulkanOptions& options, std::unique_p
     log::debug("Vulkan backend: ", context_->info.device, " (", context_->info.driver, ")");
 }
 
-VulkanBackendImpl::~VulkanBackendImpl() {
+VulkanDriverImpl::~VulkanDriverImpl() {
     pass_.reset();
     draws_.clear();
     frames_->drain();
     swapchain_.reset();
     const VkDevice device = context_->device;
-    pipelines_ = ResourcePool<PipelineTag, VulkanPipeline>("pipeline");
-    programs_ = ResourcePool<ProgramTag, std::shared_ptr<const VulkanProgram>>("program");
-    standardPrograms_.clear();
+    programs_ = {};
     destroyResolvePipelines();
     for (const auto& [key, fb] : framebuffers_) vkDestroyFramebuffer(device, fb, nullptr);
     for (const auto& [key, rp] : renderPasses_) vkDestroyRenderPass(device, rp, nullptr);
     for (const auto& [key, s] : samplers_) vkDestroySampler(device, s, nullptr);
     // Textures and buffers still alive: the pools hold them; destroy what they own.
     textures_.forEach([&](const VulkanTexture& t) { destroyTextureObjects(t); });
-    buffers_.forEach([&](const VulkanBuffer& b) { destroyBuffer(device, {b.buffer, b.memory, b.mapped}); });
-    for (const auto& [key, spare] : spareBuffers_) destroyBuffer(device, spare);
-    destroyBuffer(device, identityInstance_);
+    buffers_.forEach([&](const VulkanBuffer& b) { vk::destroyBuffer(device, {b.buffer, b.memory, b.mapped}); });
+    for (const auto& [key, spare] : spareBuffers_) vk::destroyBuffer(device, spare);
+    vk::destroyBuffer(device, identityInstance_);
     if (occlusion_) vkDestroyQueryPool(device, occlusion_, nullptr);
     if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
     frames_.reset();
 }
 
-void VulkanBackendImpl::endFrame() {
-    if (pass_) throw Error("endFrame while pass " + quotedName(pass_->name) + " is open");
-    frames_->submit(false);
-}
+void VulkanDriverImpl::endFrame() { frames_->submit(false); }
 
-std::unique_ptr<VulkanBackend> createVulkanBackend(const VulkanOptions& options) {
-    return std::make_unique<VulkanBackendImpl>(options, VulkanContext::create(options));
+std::unique_ptr<Device> createVulkanBackend(const VulkanOptions& options) {
+    return std::make_unique<Device>(std::make_unique<VulkanDriverImpl>(options, VulkanContext::create(options)));
 }
 
 std::string vulkanUnavailableReason(const VulkanOptions& options) {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The Vulkan backend's class, whose members are defined by concern:
+// The Vulkan driver's class, whose members are defined by concern:
 //   vk_backend.cpp    creation, tear-down, the frame boundary
 //   vk_resources.cpp  textures (images, uploads), buffers (renamed when in flight), programs
 //   vk_pipelines.cpp  render passes, framebuffers, samplers and pipelines from resolved state
 //   vk_passes.cpp     passes: draws recorded until endPass, barriers, the render pass, queries
 //   vk_transfer.cpp   readback and resolve
 //   vk_swapchain.cpp  present to the window (the swapchain itself: vk_swapchain.hpp)
-// Validation and error messages are the shared ones (validation.hpp), as on soft and GL.
+// The device (device.hpp) has validated and resolved all it is given, as for soft and GL.
 #include <array>
 #include <map>
 #include <memory>
@@ -17,9 +17,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "engine/render/native_slots.hpp"
 #include "engine/render/resolved_draw_state.hpp"
-#include "engine/render/resource_pool.hpp"
-#include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vk/vk_backend.hpp"
 #include "vk_context.hpp"
@@ -56,60 +55,66 @@ struct RecordedDraw {
     VkBuffer uniforms = VK_NULL_HANDLE;
     std::uint32_t uniformOffset = 0;
     VkDescriptorSet uniformSet = VK_NULL_HANDLE, textureSet = VK_NULL_HANDLE;
-    std::vector<TextureHandle> sampled;
+    std::vector<NativeId> sampled;
 };
 
-class VulkanBackendImpl final : public VulkanBackend {
+class VulkanDriverImpl final : public VulkanDriver {
 public:
-    VulkanBackendImpl(const VulkanOptions& options, std::unique_ptr<VulkanContext> context);
-    ~VulkanBackendImpl() override;
+    VulkanDriverImpl(const VulkanOptions& options, std::unique_ptr<VulkanContext> context);
+    ~VulkanDriverImpl() override;
 
     std::string name() const override { return "vk"; }
+    std::string describe() const override { return "vk: " + context_->info.device; }
+    void attach(const NativeTextures& textures) override { natives_ = &textures; }
+    FailModeEmulation failModeEmulation() const override {
+        return options_.failModes == FailModeStrategy::PerTriangle ? FailModeEmulation::PerTriangle
+                                                                   : FailModeEmulation::TwoPass;
+    }
     const VulkanInfo& info() const override { return context_->info; }
     const VulkanCounters& counters() const override { return counters_; }
     std::uint64_t validationMessages() const override { return context_->validationMessages; }
     void endFrame() override;
 
     // vk_resources.cpp
-    TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override;
-    BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override;
-    void updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) override;
-    ProgramHandle createProgram(const ProgramDesc& desc) override;
-    PipelineHandle createPipeline(const PipelineDesc& desc) override;
-    void destroy(TextureHandle h) override;
-    void destroy(BufferHandle h) override;
-    void destroy(PipelineHandle h) override { pipelines_.remove(h); }
-    void destroy(ProgramHandle h) override;
-    QueryHandle createQuery(const std::string& name) override;
-    void destroy(QueryHandle h) override;
-    bool anySamplesPassed(QueryHandle h) override;
-    const TextureDesc& describe(TextureHandle h) const override { return textures_.get(h).desc; }
-    PipelineInfo pipelineInfo(PipelineHandle h) const override { return pipelines_.get(h).info; }
+    std::uint64_t textureFootprint(const TextureDesc& desc) const override;
+    MemoryProbe memoryProbe() const override;
+    void checkTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
+    NativeId createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
+    NativeId createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) override;
+    void updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) override;
+    NativeId createProgram(std::shared_ptr<const ProgramDesc> desc) override;
+    NativeId createStandardProgram(ProgramKind kind, ProgramDesc desc) override;
+    void notePipeline(const PipelineDesc& desc, ResolvedPipeline& resolved) override;
+    void destroyTexture(NativeId h) override;
+    void destroyBuffer(NativeId h) override;
+    void destroyProgram(NativeId h) override;
+    NativeId createQuery(const std::string& name) override;
+    void destroyQuery(NativeId h) override;
+    bool anySamplesPassed(NativeId h) override;
 
     // vk_passes.cpp
-    void beginPass(const PassDesc& pass) override;
-    void draw(const DrawDesc& d) override;
+    void beginPass(const DriverPass& pass) override;
+    void draw(const DriverDraw& d) override;
     void endPass() override;
     void abortPass() noexcept override;
-    std::vector<PassTiming> takeTimings() override;
+    std::vector<DriverTiming> takeTimings() override;
 
     // vk_transfer.cpp
-    void resolve(const ResolveDesc& r) override;
-    Readback readback(TextureHandle h) override;
+    void resolve(NativeId source, NativeId destination, const ResolveDesc& r, const std::string& what) override;
+    Readback readback(NativeId h, const TextureDesc& desc) override;
 
     // vk_swapchain.cpp
-    bool present(TextureHandle h) override;
+    bool present(NativeId h, const TextureDesc& desc) override;
 
 private:
     // vk_resources.cpp
-    std::shared_ptr<const VulkanProgram> programFor(const ProgramRef& ref);
     std::shared_ptr<const VulkanProgram> buildProgram(std::shared_ptr<const ProgramDesc> desc);
     VkShaderModule fragmentModule(const VulkanProgram& program, int colorTargets);
     int supportedSamples(VkFormat format, bool depth, int wanted, const std::string& what) const;
+    VkImageCreateInfo imageInfo(const TextureDesc& desc, int actualSamples) const;
     void upload(VulkanTexture& t, const TextureData* data);
     void destroyTextureObjects(const VulkanTexture& t);
     void checkDeviceLimits(const TextureDesc& desc, const std::string& what) const;
-    MemoryProbe memoryProbe() const;
     VulkanBuffer makeBuffer(const BufferDesc& desc, const std::string& what);
 
     // vk_pipelines.cpp
@@ -124,24 +129,18 @@ private:
     void use(VkCommandBuffer cmd, VulkanTexture& t, VkImageLayout layout, VkPipelineStageFlags stage,
              VkAccessFlags access, bool writes);
     void recordPass();
-    FailModeEmulation failModeEmulation() const {
-        return options_.failModes == FailModeStrategy::PerTriangle ? FailModeEmulation::PerTriangle
-                                                                   : FailModeEmulation::TwoPass;
-    }
 
     VulkanOptions options_;
     std::unique_ptr<VulkanContext> context_;
     VulkanCounters counters_;
     std::unique_ptr<FrameRing> frames_;
-    std::unique_ptr<Swapchain> swapchain_;  // with a window only
-    std::uint64_t heldBytes_ = 0;           // the images' memory (memoryProbe on a GPU)
-    ResourcePool<TextureTag, VulkanTexture> textures_;
-    ResourcePool<BufferTag, VulkanBuffer> buffers_;
-    ResourcePool<PipelineTag, VulkanPipeline> pipelines_;
-    ResourcePool<QueryTag, VulkanQuery> queries_;
-    ResourcePool<ProgramTag, std::shared_ptr<const VulkanProgram>> programs_;
-    ResourceLookup lookup_;
-    StandardProgramSlots<VulkanProgram> standardPrograms_;
+    std::unique_ptr<Swapchain> swapchain_;     // with a window only
+    std::uint64_t heldBytes_ = 0;              // the images' memory (memoryProbe on a GPU)
+    const NativeTextures* natives_ = nullptr;  // the device's handles, for the textures a draw samples
+    NativeSlots<VulkanTexture> textures_;
+    NativeSlots<VulkanBuffer> buffers_;
+    NativeSlots<VulkanQuery> queries_;
+    NativeSlots<std::shared_ptr<const VulkanProgram>> programs_;
     MemoryBuffer identityInstance_;
 
     std::map<RenderPassKey, VkRenderPass> renderPasses_;
@@ -155,11 +154,9 @@ private:
     std::map<int, VkSampler> samplers_;
 
     // The open pass.
-    std::optional<PassDesc> pass_;
+    std::optional<DriverPass> pass_;
     PassExtent extent_;
     int actualSamples_ = 1;
-    DrawTargets targets_;
-    std::vector<TextureHandle> colorHandles_;
     std::vector<RecordedDraw> draws_;
     bool drawsRun_ = true;  // false: drawOnlyIfSamplesIn found no sample
 
@@ -168,6 +165,7 @@ private:
     std::uint32_t occlusionSlots_ = 0;
     std::vector<std::uint32_t> freeOcclusionSlots_;
     struct PendingTiming {
+        std::uint64_t serial = 0;
         std::string pass;
         std::uint32_t first = 0;  // its two timestamps
         bool skipped = false;
@@ -175,7 +173,7 @@ private:
     std::vector<PendingTiming> pendingTimings_;
     std::uint32_t nextTimestamp_ = 0;
     std::multimap<std::pair<std::uint64_t, BufferKind>, MemoryBuffer> spareBuffers_;  // renamed-out buffers
-    TextureHandle dummy_;  // read where an optional texture is absent
+    NativeId dummy_ = kNoNative;  // read where an optional texture is absent
 
     // The backend's own resolve pipelines, per destination format.
     struct ResolvePipelines {

@@ -44,10 +44,8 @@ struct VulkanBuffer {
     BufferDesc desc;
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    std::byte* mapped = nullptr;    // host-visible and coherent, mapped for its lifetime
-    std::uint64_t lastUse = 0;      // serial of the last submission that reads it
-    std::vector<std::byte> shadow;  // index buffers: what validation reads
-    std::uint32_t maxIndex = 0;
+    std::byte* mapped = nullptr;  // host-visible and coherent, mapped for its lifetime
+    std::uint64_t lastUse = 0;    // serial of the last submission that reads it
 };
 
 // A program compiled for Vulkan, with its pipeline layout and the pipelines made for it (one
@@ -72,16 +70,10 @@ struct VulkanProgram {
     ~VulkanProgram();
 };
 
-struct VulkanPipeline {
-    PipelineDesc desc;
-    PipelineInfo info;
-    std::shared_ptr<const VulkanProgram> program;  // alive while the pipeline is
-};
-
+// An occlusion query's slot in the driver's query pool.
 struct VulkanQuery {
-    std::string name;
-    bool counted = false;
-    std::uint32_t slot = 0;  // its index in the backend's occlusion query pool
+    std::string name;  // for messages
+    std::uint32_t slot = 0;
 };
 
 }  // namespace engine::render::vk

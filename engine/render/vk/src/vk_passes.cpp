@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Vulkan backend: passes. Draws are checked and their parameters captured when recorded (the
+// Vulkan driver: passes. Draws have their parameters captured when recorded (the
 // uniform block packed into the frame's arena, the texture set written), and the pass is
 // recorded at endPass: barriers for every image it samples or renders into, then the render
 // pass with its clears, its occlusion query and its draws, each fail-mode step a pipeline.
@@ -16,8 +16,8 @@ namespace engine::render::vk {
 // The barrier an image needs before its next use (Vulkan "Synchronization and Cache Control"):
 // a write, or a change of layout (itself a write), waits for every earlier access; a read waits
 // for the last write unless that write was already made visible to the reading stage.
-void VulkanBackendImpl::use(VkCommandBuffer cmd, VulkanTexture& t, VkImageLayout layout, VkPipelineStageFlags stage,
-                            VkAccessFlags access, bool writes) {
+void VulkanDriverImpl::use(VkCommandBuffer cmd, VulkanTexture& t, VkImageLayout layout, VkPipelineStageFlags stage,
+                           VkAccessFlags access, bool writes) {
     ImageState& s = t.state;
     const bool transition = s.layout != layout;
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
@@ -49,70 +49,51 @@ void VulkanBackendImpl::use(VkCommandBuffer cmd, VulkanTexture& t, VkImageLayout
     vkCmdPipelineBarrier(cmd, src, stage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
-void VulkanBackendImpl::beginPass(const PassDesc& pass) {
-    if (pass_)
-        throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
-    const PassExtent extent = validatePass(pass, lookup_);
-    if (pass.countSamplesInto) queries_.get(pass.countSamplesInto);
-    if (pass.drawOnlyIfSamplesIn && !queries_.get(pass.drawOnlyIfSamplesIn).counted)
-        throw uncountedQueryError(queries_.get(pass.drawOnlyIfSamplesIn).name);
-    targets_ = DrawTargets{};
-    colorHandles_.clear();
+void VulkanDriverImpl::beginPass(const DriverPass& pass) {
     actualSamples_ = 1;
-    for (const ColorAttachment& c : pass.color) {
-        if (!c.texture) continue;
-        const VulkanTexture& t = textures_.get(c.texture);
-        targets_.colorFormats[std::size_t(targets_.colorTargetCount++)] = t.desc.format;
-        colorHandles_.push_back(c.texture);
-        actualSamples_ = t.actualSamples;
-    }
-    if (pass.depth.texture) actualSamples_ = textures_.get(pass.depth.texture).actualSamples;
-    targets_.hasDepth = pass.depth.texture.valid();
-    targets_.samples = extent.samples;
-    targets_.width = extent.width;
-    targets_.height = extent.height;
-    extent_ = extent;
+    for (NativeId c : pass.color)
+        if (c != kNoNative) actualSamples_ = textures_[c].actualSamples;
+    if (pass.depth != kNoNative) actualSamples_ = textures_[pass.depth].actualSamples;
+    extent_ = pass.extent;
     draws_.clear();
     // Whether the draws run, read now (a result wait) rather than at endPass: the submission it
     // needs moves the frame ring on, and the draws' uniform blocks and descriptor sets must come
     // from the slot that records them.
-    drawsRun_ = pass.drawOnlyIfSamplesIn ? anySamplesPassed(pass.drawOnlyIfSamplesIn) : true;
+    drawsRun_ = pass.drawOnlyIfSamplesIn != kNoNative ? anySamplesPassed(pass.drawOnlyIfSamplesIn) : true;
     pass_ = pass;
 }
 
-void VulkanBackendImpl::draw(const DrawDesc& d) {
-    if (!pass_) throw Error("draw outside a pass");
-    validateDraw(d, *pass_, extent_, lookup_);
+void VulkanDriverImpl::draw(const DriverDraw& d) {
     if (!drawsRun_) return;  // checked, not recorded: the pass's condition found no sample
-    const VulkanPipeline& pipeline = pipelines_.get(d.pipeline);
     RecordedDraw r;
-    r.pipeline = pipeline.desc;
-    r.program = pipeline.program;
-    r.state = resolveDrawState(pipeline.desc, targets_, d.scissor, failModeEmulation());
+    r.pipeline = *d.pipeline;
+    r.program = programs_[d.program];
+    r.state = *d.state;
     if (r.state.scissor.empty()) return;  // nothing drawn, as on GL
-    const VulkanProgram& program = *pipeline.program;
+    const VulkanProgram& program = *r.program;
     const GlslProgram& gl = program.desc->gl;
     const std::uint64_t serial = frames_->recordingSerial();
-    if (program.desc->vertexInput == VertexInput::Mesh) {
-        VulkanBuffer& v = buffers_.get(d.vertices);
+    if (!d.fullscreen) {
+        VulkanBuffer& v = buffers_[d.vertices];
         v.lastUse = serial;
         r.vertices = v.buffer;
-        if (d.indices) {
-            VulkanBuffer& i = buffers_.get(d.indices);
+        if (d.indices != kNoNative) {
+            VulkanBuffer& i = buffers_[d.indices];
             i.lastUse = serial;
             r.indices = i.buffer;
         }
-        if (d.instances) {
-            VulkanBuffer& i = buffers_.get(d.instances);
+        if (d.instances != kNoNative) {
+            VulkanBuffer& i = buffers_[d.instances];
             i.lastUse = serial;
             r.instances = i.buffer;
         } else {
             r.instances = identityInstance_.buffer;
         }
     }
-    r.first = d.first;
-    r.count = d.count;
-    r.instanceCount = d.instanceCount;
+    r.first = d.desc->first;
+    r.count = d.desc->count;
+    r.instanceCount = d.desc->instanceCount;
+    const DrawParams& params = d.desc->params;
 
     // The uniform block, packed now: the draw's parameters as they are when it is recorded.
     if (!program.block.empty()) {
@@ -120,8 +101,8 @@ void VulkanBackendImpl::draw(const DrawDesc& d) {
             frames_->allocate(program.block.size, context_->properties.limits.minUniformBufferOffsetAlignment);
         std::memset(a.data, 0, program.block.size);
         packUniformBlock(
-            program.block, gl, d.params.data(),
-            [this](TextureHandle h) { return textures_.get(h).desc.alpha == AlphaMode::Premultiplied; },
+            program.block, gl, params.data(),
+            [this](TextureHandle h) { return textures_[natives_->texture(h)].desc.alpha == AlphaMode::Premultiplied; },
             std::span<std::byte>(a.data, program.block.size));
         r.uniforms = a.buffer;
         r.uniformOffset = std::uint32_t(a.offset);
@@ -133,7 +114,7 @@ void VulkanBackendImpl::draw(const DrawDesc& d) {
         r.textureSet = frames_->allocateSet(program.textureLayout);
         std::vector<VkDescriptorImageInfo> infos(gl.textures.size());
         std::vector<VkWriteDescriptorSet> writes(gl.textures.size());
-        const auto* bytes = static_cast<const std::byte*>(d.params.data());
+        const auto* bytes = static_cast<const std::byte*>(params.data());
         for (std::size_t i = 0; i < gl.textures.size(); ++i) {
             const TextureField& field = gl.textures[i];
             TextureHandle handle;
@@ -146,17 +127,15 @@ void VulkanBackendImpl::draw(const DrawDesc& d) {
             } else {
                 std::memcpy(&handle, bytes + field.offset, sizeof handle);
             }
-            if (!handle) {
-                if (!dummy_) {
-                    TextureDesc desc;
-                    desc.name = "vk: absent texture";
-                    desc.width = desc.height = 1;
-                    dummy_ = createTexture(desc, nullptr);
-                }
-                handle = dummy_;
+            if (!handle && dummy_ == kNoNative) {
+                TextureDesc desc;
+                desc.name = "vk: absent texture";
+                desc.width = desc.height = 1;
+                dummy_ = createTexture(desc, nullptr, "texture " + quotedName(desc.name));
             }
-            r.sampled.push_back(handle);
-            infos[i] = {sampler(samplerState), textures_.get(handle).view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            const NativeId native = handle ? natives_->texture(handle) : dummy_;
+            r.sampled.push_back(native);
+            infos[i] = {sampler(samplerState), textures_[native].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
             VkWriteDescriptorSet& w = writes[i];
             w = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
             w.dstSet = r.textureSet;
@@ -170,46 +149,40 @@ void VulkanBackendImpl::draw(const DrawDesc& d) {
     draws_.push_back(std::move(r));
 }
 
-void VulkanBackendImpl::endPass() {
-    if (!pass_) throw Error("endPass without beginPass");
+void VulkanDriverImpl::endPass() {
     try {
         recordPass();
     } catch (...) {
         abortPass();
         throw;
     }
-    if (pass_->countSamplesInto) queries_.get(pass_->countSamplesInto).counted = true;
     pass_.reset();
     draws_.clear();
 }
 
-void VulkanBackendImpl::abortPass() noexcept {
-    if (!pass_) return;
-    try {
-        if (pass_->countSamplesInto) queries_.get(pass_->countSamplesInto).counted = false;
-    } catch (...) {  // a destroyed query: the pass is dropped all the same
-    }
+void VulkanDriverImpl::abortPass() noexcept {
     pass_.reset();
     draws_.clear();
 }
 
-void VulkanBackendImpl::recordPass() {
-    const PassDesc& pass = *pass_;
+void VulkanDriverImpl::recordPass() {
+    const PassDesc& pass = *pass_->desc;
     const bool drawsRun = drawsRun_;
     const VkCommandBuffer cmd = frames_->cmd();
 
     // Barriers first: sampled images to shader reads, attachments to their layouts.
     if (drawsRun)
         for (const RecordedDraw& r : draws_)
-            for (TextureHandle h : r.sampled)
-                use(cmd, textures_.get(h), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, false);
+            for (NativeId h : r.sampled)
+                use(cmd, textures_[h], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT, false);
     RenderPassKey key;
     std::vector<VkImageView> views;
     std::vector<VkClearValue> clears;
-    for (const ColorAttachment& c : pass.color) {
-        if (!c.texture) continue;
-        VulkanTexture& t = textures_.get(c.texture);
+    for (std::size_t i = 0; i < pass.color.size(); ++i) {
+        if (pass_->color[i] == kNoNative) continue;
+        const ColorAttachment& c = pass.color[i];
+        VulkanTexture& t = textures_[pass_->color[i]];
         use(cmd, t, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
             VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, true);
         key.color[key.colorCount] = t.format;
@@ -224,8 +197,8 @@ void VulkanBackendImpl::recordPass() {
         v.color = {{q.r, q.g, q.b, q.a}};
         clears.push_back(v);
     }
-    if (pass.depth.texture) {
-        VulkanTexture& t = textures_.get(pass.depth.texture);
+    if (pass_->depth != kNoNative) {
+        VulkanTexture& t = textures_[pass_->depth];
         use(cmd, t, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
             VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, true);
@@ -238,8 +211,9 @@ void VulkanBackendImpl::recordPass() {
         clears.push_back(v);
     }
     key.samples = std::uint8_t(actualSamples_);
-    const std::uint32_t query = pass.countSamplesInto ? queries_.get(pass.countSamplesInto).slot : 0;
-    if (pass.countSamplesInto) vkCmdResetQueryPool(cmd, occlusion_, query, 1);
+    const bool counts = pass_->countSamplesInto != kNoNative;
+    const std::uint32_t query = counts ? queries_[pass_->countSamplesInto].slot : 0;
+    if (counts) vkCmdResetQueryPool(cmd, occlusion_, query, 1);
     std::uint32_t stamp = UINT32_MAX;
     if (context_->timestampValidBits > 0 && nextTimestamp_ + 2 <= kTimestampSlots) {  // 0 bits: no timestamps
         stamp = nextTimestamp_;
@@ -262,7 +236,7 @@ void VulkanBackendImpl::recordPass() {
     bi.clearValueCount = std::uint32_t(clears.size());
     bi.pClearValues = clears.data();
     vkCmdBeginRenderPass(cmd, &bi, VK_SUBPASS_CONTENTS_INLINE);
-    if (pass.countSamplesInto) vkCmdBeginQuery(cmd, occlusion_, query, 0);
+    if (counts) vkCmdBeginQuery(cmd, occlusion_, query, 0);
     // Row 0 at the top with NDC +y up: a negative-height viewport (vk_backend.hpp).
     const VkViewport viewport{0.0f, float(extent_.height), float(extent_.width), -float(extent_.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
@@ -306,7 +280,7 @@ void VulkanBackendImpl::recordPass() {
             };
             auto applyStep = [&](const PlanStep& step) {
                 // A step that writes nothing is not drawn, unless an occlusion query counts it.
-                bool writes = step.depthWrite || pass.countSamplesInto;
+                bool writes = step.depthWrite || counts;
                 for (int i = 0; i < state.colorTargetCount; ++i)
                     writes = writes || (state.blend[std::size_t(i)].writeMask & step.channels);
                 if (!writes) return false;
@@ -336,17 +310,17 @@ void VulkanBackendImpl::recordPass() {
                 }
             }
         }
-    if (pass.countSamplesInto) vkCmdEndQuery(cmd, occlusion_, query);
+    if (counts) vkCmdEndQuery(cmd, occlusion_, query);
     vkCmdEndRenderPass(cmd);
     if (stamp != UINT32_MAX) {
         vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, stamp + 1);
-        pendingTimings_.push_back({pass.name, stamp, !drawsRun});
+        pendingTimings_.push_back({pass_->serial, pass.name, stamp, !drawsRun});
     } else {
-        pendingTimings_.push_back({pass.name, UINT32_MAX, !drawsRun});
+        pendingTimings_.push_back({pass_->serial, pass.name, UINT32_MAX, !drawsRun});
     }
 }
 
-QueryHandle VulkanBackendImpl::createQuery(const std::string& name) {
+NativeId VulkanDriverImpl::createQuery(const std::string& name) {
     std::uint32_t slot;
     if (!freeOcclusionSlots_.empty()) {
         slot = freeOcclusionSlots_.back();
@@ -357,24 +331,21 @@ QueryHandle VulkanBackendImpl::createQuery(const std::string& name) {
                         std::to_string(kOcclusionSlots) + " at once");
         slot = occlusionSlots_++;
     }
-    return queries_.add({name, false, slot});
+    return queries_.add({name, slot});
 }
 
-void VulkanBackendImpl::destroy(QueryHandle h) {
-    const VulkanQuery q = queries_.get(h);
-    checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, true);
+void VulkanDriverImpl::destroyQuery(NativeId h) {
+    const VulkanQuery q = queries_[h];
     queries_.remove(h);
     frames_->retire([this, slot = q.slot] { freeOcclusionSlots_.push_back(slot); });
 }
 
-bool VulkanBackendImpl::anySamplesPassed(QueryHandle h) {
-    const VulkanQuery& q = queries_.get(h);
-    checkQueryUse(h, q.name, pass_ ? &*pass_ : nullptr, false);
-    if (!q.counted) throw uncountedQueryError(q.name);
+bool VulkanDriverImpl::anySamplesPassed(NativeId h) {
+    const VulkanQuery& q = queries_[h];
     // The result needs a submission, and an open pass's recorded draws hold the recording
     // slot's uniform blocks and sets: results are read between passes on Vulkan.
     if (pass_)
-        throw Error("occlusion query " + quotedName(q.name) + " read while pass " + quotedName(pass_->name) +
+        throw Error("occlusion query " + quotedName(q.name) + " read while pass " + quotedName(pass_->desc->name) +
                     " is open: the Vulkan backend reads results between passes");
     frames_->submit(true);  // the result of what is recorded: a result wait (when there is any)
     std::uint64_t samples = 0;
@@ -384,12 +355,9 @@ bool VulkanBackendImpl::anySamplesPassed(QueryHandle h) {
     return samples != 0;
 }
 
-std::vector<PassTiming> VulkanBackendImpl::takeTimings() {
-    std::vector<PassTiming> out;
+std::vector<DriverTiming> VulkanDriverImpl::takeTimings() {
+    std::vector<DriverTiming> out;
     if (pendingTimings_.empty()) return out;
-    if (pass_)
-        throw Error("takeTimings while pass " + quotedName(pass_->name) +
-                    " is open: the Vulkan backend reads results between passes");
     frames_->submit(true);
     const double period = double(context_->properties.limits.timestampPeriod);  // ns per tick
     const std::uint32_t validBits = context_->timestampValidBits;
@@ -402,7 +370,7 @@ std::vector<PassTiming> VulkanBackendImpl::takeTimings() {
                   "pass " + quotedName(p.pass) + ": reading its timestamps");
             ms = timestampMilliseconds(ticks[0], ticks[1], validBits, period);
         }
-        out.push_back({p.pass, ms, p.skipped});
+        out.push_back({p.serial, ms, p.skipped});
     }
     pendingTimings_.clear();
     nextTimestamp_ = 0;

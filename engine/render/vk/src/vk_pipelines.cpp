@@ -74,7 +74,7 @@ public:
 
 }  // namespace
 
-VkRenderPass VulkanBackendImpl::renderPass(const RenderPassKey& key) {
+VkRenderPass VulkanDriverImpl::renderPass(const RenderPassKey& key) {
     auto it = renderPasses_.find(key);
     if (it != renderPasses_.end()) return it->second;
     // Attachments stay in their attachment layouts: the backend's own barriers put them there
@@ -122,8 +122,8 @@ VkRenderPass VulkanBackendImpl::renderPass(const RenderPassKey& key) {
     return pass;
 }
 
-VkFramebuffer VulkanBackendImpl::framebuffer(VkRenderPass pass, const std::vector<VkImageView>& views, int width,
-                                             int height) {
+VkFramebuffer VulkanDriverImpl::framebuffer(VkRenderPass pass, const std::vector<VkImageView>& views, int width,
+                                            int height) {
     FramebufferKey key{pass, views, width, height};
     auto it = framebuffers_.find(key);
     if (it != framebuffers_.end()) return it->second;
@@ -140,7 +140,7 @@ VkFramebuffer VulkanBackendImpl::framebuffer(VkRenderPass pass, const std::vecto
     return fb;
 }
 
-void VulkanBackendImpl::forgetFramebuffers(VkImageView view) {
+void VulkanDriverImpl::forgetFramebuffers(VkImageView view) {
     for (auto it = framebuffers_.begin(); it != framebuffers_.end();) {
         if (std::find(it->first.views.begin(), it->first.views.end(), view) != it->first.views.end()) {
             frames_->retire(
@@ -154,7 +154,7 @@ void VulkanBackendImpl::forgetFramebuffers(VkImageView view) {
 
 // As the GL backend's samplers (gl_caches.cpp): nearest and bilinear read the base level only,
 // trilinear's LOD is the program's own (glsl/lit_surface.hpp), which reads levels with textureLod.
-VkSampler VulkanBackendImpl::sampler(const SamplerState& s) {
+VkSampler VulkanDriverImpl::sampler(const SamplerState& s) {
     const int index = int(s.filter) * 9 + int(s.addressU) * 3 + int(s.addressV);
     auto it = samplers_.find(index);
     if (it != samplers_.end()) return it->second;
@@ -175,9 +175,8 @@ VkSampler VulkanBackendImpl::sampler(const SamplerState& s) {
     return sampler;
 }
 
-VkPipeline VulkanBackendImpl::pipeline(const VulkanProgram& program, const PipelineDesc& desc,
-                                       const ResolvedDrawState& state, const PlanStep& step,
-                                       const RenderPassKey& pass) {
+VkPipeline VulkanDriverImpl::pipeline(const VulkanProgram& program, const PipelineDesc& desc,
+                                      const ResolvedDrawState& state, const PlanStep& step, const RenderPassKey& pass) {
     const bool fullscreen = program.desc->vertexInput == VertexInput::Fullscreen;
     // Compatibility does not depend on load operations: the pipeline is made against the
     // pass with every attachment cleared, and runs in any pass with these formats and samples.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Vulkan backend: textures (images, their uploads and zero fill), buffers (host-visible,
+// Vulkan driver: textures (images, their uploads and zero fill), buffers (host-visible,
 // renamed when a submission may still read them), programs and pipelines, occlusion queries.
 #include <algorithm>
 #include <cmath>
@@ -35,7 +35,7 @@ VkFormat vkFormat(Format format) {
 
 // The least sample count the device offers at or above `wanted` for this format as an
 // attachment and a sampled image, as GL drivers do (llvmpipe turns 2 into 4); none: refused.
-int VulkanBackendImpl::supportedSamples(VkFormat format, bool depth, int wanted, const std::string& what) const {
+int VulkanDriverImpl::supportedSamples(VkFormat format, bool depth, int wanted, const std::string& what) const {
     const VkPhysicalDeviceLimits& l = context_->properties.limits;
     VkSampleCountFlags counts = (depth ? l.framebufferDepthSampleCounts : l.framebufferColorSampleCounts) &
                                 (depth ? l.sampledImageDepthSampleCounts : l.sampledImageColorSampleCounts);
@@ -59,34 +59,54 @@ int VulkanBackendImpl::supportedSamples(VkFormat format, bool depth, int wanted,
     return best;
 }
 
-TextureHandle VulkanBackendImpl::createTexture(const TextureDesc& desc, const TextureData* data) {
-    const std::string what = "texture " + quotedName(desc.name);
-    validateTexture(desc, what);
+void VulkanDriverImpl::checkTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) {
+    if (desc.samples > 1) supportedSamples(vkFormat(desc.format), formatInfo(desc.format).isDepth, desc.samples, what);
+    if (desc.samples > 1 && data && !data->levels.empty())
+        throw Error(what + ": initial data for a multisampled texture (the Vulkan backend cannot upload samples)");
+    checkDeviceLimits(desc, what);
+}
+
+VkImageCreateInfo VulkanDriverImpl::imageInfo(const TextureDesc& desc, int actualSamples) const {
+    const bool depth = formatInfo(desc.format).isDepth;
+    VkImageCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    ci.imageType = VK_IMAGE_TYPE_2D;
+    ci.format = vkFormat(desc.format);
+    ci.extent = {std::uint32_t(desc.width), std::uint32_t(desc.height), 1};
+    ci.mipLevels = std::uint32_t(desc.samples > 1 ? 1 : desc.mipLevels);
+    ci.arrayLayers = 1;
+    ci.samples = VkSampleCountFlagBits(actualSamples);
+    ci.tiling = VK_IMAGE_TILING_OPTIMAL;
+    ci.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    if (actualSamples == 1) ci.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    if (desc.usage & UsageRenderTarget)
+        ci.usage |= depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    ci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    ci.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    return ci;
+}
+
+// The image's own figure (padding, samples), known before it is made (Vulkan 1.3's
+// vkGetDeviceImageMemoryRequirements), for the device's memory budget.
+std::uint64_t VulkanDriverImpl::textureFootprint(const TextureDesc& desc) const {
+    const int actual = desc.samples > 1
+                           ? supportedSamples(vkFormat(desc.format), formatInfo(desc.format).isDepth, desc.samples, "")
+                           : 1;
+    const VkImageCreateInfo ci = imageInfo(desc, actual);
+    VkDeviceImageMemoryRequirements info{VK_STRUCTURE_TYPE_DEVICE_IMAGE_MEMORY_REQUIREMENTS};
+    info.pCreateInfo = &ci;
+    VkMemoryRequirements2 req{VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
+    vkGetDeviceImageMemoryRequirements(context_->device, &info, &req);
+    return req.memoryRequirements.size;
+}
+
+NativeId VulkanDriverImpl::createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) {
     const bool depth = formatInfo(desc.format).isDepth;
     VulkanTexture t;
     t.desc = desc;
     t.format = vkFormat(desc.format);
     t.aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
     t.actualSamples = desc.samples > 1 ? supportedSamples(t.format, depth, desc.samples, what) : 1;
-    if (desc.samples > 1 && data && !data->levels.empty())
-        throw Error(what + ": initial data for a multisampled texture (the Vulkan backend cannot upload samples)");
-    if (data) validateTextureData(desc, *data, what);
-    checkDeviceLimits(desc, what);
-
-    VkImageCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    ci.imageType = VK_IMAGE_TYPE_2D;
-    ci.format = t.format;
-    ci.extent = {std::uint32_t(desc.width), std::uint32_t(desc.height), 1};
-    ci.mipLevels = std::uint32_t(desc.samples > 1 ? 1 : desc.mipLevels);
-    ci.arrayLayers = 1;
-    ci.samples = VkSampleCountFlagBits(t.actualSamples);
-    ci.tiling = VK_IMAGE_TILING_OPTIMAL;
-    ci.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    if (t.actualSamples == 1) ci.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    if (desc.usage & UsageRenderTarget)
-        ci.usage |= depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
-    ci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    ci.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    const VkImageCreateInfo ci = imageInfo(desc, t.actualSamples);
     const VkDevice device = context_->device;
     check(vkCreateImage(device, &ci, nullptr, &t.image), what + ": creating the image");
     try {
@@ -95,8 +115,6 @@ TextureHandle VulkanBackendImpl::createTexture(const TextureDesc& desc, const Te
         VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         ai.allocationSize = req.size;
         ai.memoryTypeIndex = context_->memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
-        // The image's own figure (padding, samples), before anything is allocated for it.
-        checkFitsInMemory(req.size, what + ": " + describeSize(desc), memoryProbe());
         check(vkAllocateMemory(device, &ai, nullptr, &t.memory),
               what + ": allocating " + std::to_string(req.size) + " bytes for " + describeSize(desc));
         t.bytes = req.size;
@@ -119,7 +137,7 @@ TextureHandle VulkanBackendImpl::createTexture(const TextureDesc& desc, const Te
 
 // Initial contents: the given levels and the generated ones (texel_codec, the soft backend's
 // rounding), or zero bytes as the soft backend starts from (Vulkan leaves new images undefined).
-void VulkanBackendImpl::upload(VulkanTexture& t, const TextureData* data) {
+void VulkanDriverImpl::upload(VulkanTexture& t, const TextureData* data) {
     const TextureDesc& desc = t.desc;
     const VkCommandBuffer cmd = frames_->cmd();
     const std::uint32_t levels = std::uint32_t(desc.samples > 1 ? 1 : desc.mipLevels);
@@ -155,7 +173,7 @@ void VulkanBackendImpl::upload(VulkanTexture& t, const TextureData* data) {
     }
 }
 
-void VulkanBackendImpl::destroyTextureObjects(const VulkanTexture& t) {
+void VulkanDriverImpl::destroyTextureObjects(const VulkanTexture& t) {
     const VkDevice device = context_->device;
     if (t.view) vkDestroyImageView(device, t.view, nullptr);
     if (t.image) vkDestroyImage(device, t.image, nullptr);
@@ -167,7 +185,7 @@ void VulkanBackendImpl::destroyTextureObjects(const VulkanTexture& t) {
 
 // The device's own caps beyond the engine's (validateTexture): an image side over
 // maxImageDimension2D, a render target over the framebuffer limits.
-void VulkanBackendImpl::checkDeviceLimits(const TextureDesc& desc, const std::string& what) const {
+void VulkanDriverImpl::checkDeviceLimits(const TextureDesc& desc, const std::string& what) const {
     const VkPhysicalDeviceLimits& limits = context_->properties.limits;
     const std::string device = " of " + context_->info.device;
     if (std::uint32_t(desc.width) > limits.maxImageDimension2D ||
@@ -181,7 +199,7 @@ void VulkanBackendImpl::checkDeviceLimits(const TextureDesc& desc, const std::st
                     device);
 }
 
-MemoryProbe VulkanBackendImpl::memoryProbe() const {
+MemoryProbe VulkanDriverImpl::memoryProbe() const {
     if (options_.memory) return options_.memory;
     if (context_->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) return hostMemoryAvailable;
     // A GPU: the largest device-local heap less what this backend holds (other processes' use
@@ -197,14 +215,14 @@ MemoryProbe VulkanBackendImpl::memoryProbe() const {
     };
 }
 
-void VulkanBackendImpl::destroy(TextureHandle h) {
-    const VulkanTexture t = textures_.get(h);
+void VulkanDriverImpl::destroyTexture(NativeId h) {
+    const VulkanTexture t = textures_[h];
     textures_.remove(h);
     forgetFramebuffers(t.view);
     frames_->retire([this, t] { destroyTextureObjects(t); });
 }
 
-VulkanBuffer VulkanBackendImpl::makeBuffer(const BufferDesc& desc, const std::string& what) {
+VulkanBuffer VulkanDriverImpl::makeBuffer(const BufferDesc& desc, const std::string& what) {
     const VkBufferUsageFlags usage =
         desc.kind == BufferKind::Index ? VK_BUFFER_USAGE_INDEX_BUFFER_BIT : VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
     checkFitsInMemory(desc.size, what + ": " + std::to_string(desc.size) + " bytes", memoryProbe());
@@ -218,25 +236,18 @@ VulkanBuffer VulkanBackendImpl::makeBuffer(const BufferDesc& desc, const std::st
     return b;
 }
 
-BufferHandle VulkanBackendImpl::createBuffer(const BufferDesc& desc, std::span<const std::byte> data) {
-    const std::string what = "buffer " + quotedName(desc.name);
-    validateBuffer(desc, data, what);
+NativeId VulkanDriverImpl::createBuffer(const BufferDesc& desc, std::span<const std::byte> data,
+                                        const std::string& what) {
     VulkanBuffer b = makeBuffer(desc, what);
     if (data.empty()) std::memset(b.mapped, 0, desc.size);
     else std::memcpy(b.mapped, data.data(), desc.size);
-    if (desc.kind == BufferKind::Index) {
-        b.shadow.assign(b.mapped, b.mapped + desc.size);
-        b.maxIndex = largestIndex(b.shadow);
-    }
     return buffers_.add(std::move(b));
 }
 
 // A buffer a recorded or running submission still reads is renamed: the update goes to a new
 // buffer holding the old contents, and the old one is destroyed once those submissions are done.
-void VulkanBackendImpl::updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) {
-    VulkanBuffer& b = buffers_.get(handle);
-    validateBufferUpdate(b.desc, offset, data.size());
-    if (data.empty()) return;
+void VulkanDriverImpl::updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) {
+    VulkanBuffer& b = buffers_[handle];
     if (b.lastUse > frames_->completedSerial()) {
         // A spare of the same size and kind (one this buffer or another retired) when there is
         // one: a steady frame that updates a buffer each frame cycles through a few, creating none.
@@ -259,20 +270,16 @@ void VulkanBackendImpl::updateBuffer(BufferHandle handle, std::uint64_t offset, 
         b.lastUse = 0;
     }
     std::memcpy(b.mapped + offset, data.data(), data.size());
-    if (!b.shadow.empty()) {
-        std::memcpy(b.shadow.data() + offset, data.data(), data.size());
-        b.maxIndex = largestIndex(b.shadow);
-    }
 }
 
-void VulkanBackendImpl::destroy(BufferHandle h) {
-    const VulkanBuffer& b = buffers_.get(h);
+void VulkanDriverImpl::destroyBuffer(NativeId h) {
+    const VulkanBuffer& b = buffers_[h];
     const MemoryBuffer old{b.buffer, b.memory, b.mapped};
     buffers_.remove(h);
-    frames_->retire([device = context_->device, old] { destroyBuffer(device, old); });
+    frames_->retire([device = context_->device, old] { vk::destroyBuffer(device, old); });
 }
 
-std::shared_ptr<const VulkanProgram> VulkanBackendImpl::buildProgram(std::shared_ptr<const ProgramDesc> desc) {
+std::shared_ptr<const VulkanProgram> VulkanDriverImpl::buildProgram(std::shared_ptr<const ProgramDesc> desc) {
     auto p = std::make_shared<VulkanProgram>();
     p->device = context_->device;
     p->block = uniformBlockLayout(desc->name, desc->gl);
@@ -316,7 +323,7 @@ std::shared_ptr<const VulkanProgram> VulkanBackendImpl::buildProgram(std::shared
     return p;
 }
 
-VkShaderModule VulkanBackendImpl::fragmentModule(const VulkanProgram& p, int colorTargets) {
+VkShaderModule VulkanDriverImpl::fragmentModule(const VulkanProgram& p, int colorTargets) {
     VkShaderModule& m = p.fragments[std::size_t(colorTargets)];
     if (m) return m;
     const std::vector<std::uint32_t> code = compileSpirv(
@@ -328,37 +335,26 @@ VkShaderModule VulkanBackendImpl::fragmentModule(const VulkanProgram& p, int col
     return m;
 }
 
-ProgramHandle VulkanBackendImpl::createProgram(const ProgramDesc& desc) {
-    if (desc.gl.fragment.empty())
-        throw Error("program " + quotedName(desc.name) + " has no GLSL for the Vulkan backend");
-    return programs_.add(buildProgram(std::make_shared<const ProgramDesc>(desc)));
+NativeId VulkanDriverImpl::createProgram(std::shared_ptr<const ProgramDesc> desc) {
+    if (desc->gl.fragment.empty())
+        throw Error("program " + quotedName(desc->name) + " has no GLSL for the Vulkan backend");
+    return programs_.add(buildProgram(std::move(desc)));
 }
 
-void VulkanBackendImpl::destroy(ProgramHandle h) {
-    std::shared_ptr<const VulkanProgram> p = programs_.get(h);
+NativeId VulkanDriverImpl::createStandardProgram(ProgramKind kind, ProgramDesc desc) {
+    desc.gl.fragment = glsl::standardFragmentBody(kind);
+    return programs_.add(buildProgram(std::make_shared<const ProgramDesc>(std::move(desc))));
+}
+
+void VulkanDriverImpl::destroyProgram(NativeId h) {
+    std::shared_ptr<const VulkanProgram> p = programs_[h];
     programs_.remove(h);
     frames_->retire([p] {});  // its pipelines may be in flight: released after them
 }
 
-std::shared_ptr<const VulkanProgram> VulkanBackendImpl::programFor(const ProgramRef& ref) {
-    if (ref.created) return programs_.get(ref.created);
-    return standardPrograms_.get(ref.standard, [&](ProgramDesc desc) {
-        desc.gl.fragment = glsl::standardFragmentBody(ref.standard);
-        return buildProgram(std::make_shared<const ProgramDesc>(std::move(desc)));
-    });
-}
-
-PipelineHandle VulkanBackendImpl::createPipeline(const PipelineDesc& desc) {
-    const std::string what = "pipeline " + quotedName(desc.name);
-    if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
-        throw Error(what + ": alpha reference is not finite");
-    std::shared_ptr<const VulkanProgram> program = programFor(desc.program);
-    if (program->desc->vertexInput == VertexInput::Fullscreen && desc.depth.test)
-        throw Error(what + ": full-screen program " + program->desc->name + " cannot depth-test");
-    const ResolvedPipeline resolved = resolvePipeline(desc, failModeEmulation());
-    VulkanPipeline p{desc, resolved.info, std::move(program)};
-    if (!p.info.exact) log::warn("Vulkan ", what, ": inexact emulation: ", p.info.note);
-    return pipelines_.add(std::move(p));
+void VulkanDriverImpl::notePipeline(const PipelineDesc& desc, ResolvedPipeline& resolved) {
+    if (!resolved.info.exact)
+        log::warn("Vulkan pipeline ", quotedName(desc.name), ": inexact emulation: ", resolved.info.note);
 }
 
 }  // namespace engine::render::vk

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The window's swapchain (vk_swapchain.hpp) and VulkanBackend::present: the frame's colour is
+// The window's swapchain (vk_swapchain.hpp) and the Vulkan driver's present: the frame's colour is
 // blitted into the acquired image by a submission that waits for the acquire and signals the
 // presentation.
 #include "vk_swapchain.hpp"
@@ -145,14 +145,11 @@ void Swapchain::present(const SwapchainImage& image) {
     ++counters_.framesPresented;
 }
 
-bool VulkanBackendImpl::present(TextureHandle h) {
-    VulkanTexture& t = textures_.get(h);
+bool VulkanDriverImpl::present(NativeId h, const TextureDesc&) {
+    VulkanTexture& t = textures_[h];
     const std::string name = quotedName(t.desc.name);
     if (!swapchain_) throw Error("present of " + name + ": the Vulkan backend has no window (VulkanOptions::window)");
-    if (t.desc.samples != 1) throw Error("present of " + name + ": multisampled; resolve it first");
     const FormatInfo info = formatInfo(t.desc.format);
-    if (info.isDepth) throw Error("present of " + name + ": a depth texture");
-    if (pass_) throw Error("present of " + name + " while pass " + quotedName(pass_->name) + " is open");
     const glm::ivec2 size = options_.window->framebufferSize();
     if (size.x <= 0 || size.y <= 0) return false;  // minimised: nothing to show
     const VkCommandBuffer cmd = frames_->cmd();    // waits for the slot, so its semaphore is free

@@ -12,11 +12,8 @@
 
 namespace engine::render::vk {
 
-Readback VulkanBackendImpl::readback(TextureHandle h) {
-    VulkanTexture& t = textures_.get(h);
-    validateReadback(t.desc);
-    if (pass_)
-        throw Error("readback of " + quotedName(t.desc.name) + " while pass " + quotedName(pass_->name) + " is open");
+Readback VulkanDriverImpl::readback(NativeId h, const TextureDesc&) {
+    VulkanTexture& t = textures_[h];
     const FormatInfo& info = formatInfo(t.desc.format);
     const std::string what = "readback of " + quotedName(t.desc.name);
     Readback r;
@@ -25,7 +22,6 @@ Readback VulkanBackendImpl::readback(TextureHandle h) {
     r.channels = info.channels;
     r.format = t.desc.format;
     const std::size_t values = std::size_t(r.width) * std::size_t(r.height) * std::size_t(r.channels);
-    checkFitsInMemory(values * sizeof(float), what + " as float", hostMemoryAvailable);
     const std::uint64_t bytes = std::uint64_t(r.width) * std::uint64_t(r.height) * info.bytesPerPixel;
     const MemoryBuffer staging = createHostBuffer(*context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, what);
     ++counters_.buffersCreated;
@@ -58,18 +54,16 @@ Readback VulkanBackendImpl::readback(TextureHandle h) {
             std::memcpy(r.values.data(), staging.mapped, values * sizeof(float));
         }
     } catch (...) {
-        frames_->retire([device = context_->device, staging] { destroyBuffer(device, staging); });
+        frames_->retire([device = context_->device, staging] { vk::destroyBuffer(device, staging); });
         throw;
     }
-    destroyBuffer(context_->device, staging);  // its submission has completed
+    vk::destroyBuffer(context_->device, staging);  // its submission has completed
     return r;
 }
 
-void VulkanBackendImpl::resolve(const ResolveDesc& rd) {
-    VulkanTexture& src = textures_.get(rd.source);
-    VulkanTexture& dst = textures_.get(rd.destination);
-    const std::string what = validateResolve(src.desc, dst.desc);
-    if (pass_) throw Error(what + " while pass " + quotedName(pass_->name) + " is open");
+void VulkanDriverImpl::resolve(NativeId source, NativeId destination, const ResolveDesc& rd, const std::string&) {
+    VulkanTexture& src = textures_[source];
+    VulkanTexture& dst = textures_[destination];
     const bool depth = formatInfo(src.desc.format).isDepth;
     const VkCommandBuffer cmd = frames_->cmd();
     if (src.actualSamples == 1) {
@@ -129,7 +123,7 @@ void VulkanBackendImpl::resolve(const ResolveDesc& rd) {
     vkCmdEndRenderPass(cmd);
 }
 
-VkPipeline VulkanBackendImpl::resolveProgramPipeline(VkFormat format, bool depth, VkRenderPass pass) {
+VkPipeline VulkanDriverImpl::resolveProgramPipeline(VkFormat format, bool depth, VkRenderPass pass) {
     auto it = resolve_.pipelines.find(format);
     if (it != resolve_.pipelines.end()) return it->second;
     const VkDevice device = context_->device;
@@ -175,7 +169,7 @@ VkPipeline VulkanBackendImpl::resolveProgramPipeline(VkFormat format, bool depth
     return p;
 }
 
-void VulkanBackendImpl::destroyResolvePipelines() {
+void VulkanDriverImpl::destroyResolvePipelines() {
     const VkDevice device = context_->device;
     for (const auto& [format, p] : resolve_.pipelines) vkDestroyPipeline(device, p, nullptr);
     if (resolve_.layout) vkDestroyPipelineLayout(device, resolve_.layout, nullptr);

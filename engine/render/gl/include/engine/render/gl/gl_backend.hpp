@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The OpenGL 4.5 core backend: the same Backend semantics as the soft backend (which is
-// the reference), mapped to GL state where GL has it and emulated where it does not.
+// The OpenGL 4.5 core driver under the render front end (device.hpp): the same semantics as
+// the soft driver (which is the reference), mapped to GL state where GL has it and emulated
+// where it does not.
 //
 // Conventions (so images match the soft backend without flips):
 //   glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE): clip z in [0, w], NDC +y is window row 0,
@@ -36,7 +37,8 @@
 #include <memory>
 #include <string>
 
-#include "engine/render/backend.hpp"
+#include "engine/render/device.hpp"
+#include "engine/render/driver.hpp"
 #include "engine/render/gl/gl_context.hpp"
 
 namespace engine::render::gl {
@@ -70,26 +72,28 @@ struct GlInfo {
     int maxSamples = 0;   // GL_MAX_SAMPLES; 2x requests may get more samples (llvmpipe: 4)
 };
 
-class GlBackend : public Backend {
+// What only the GL driver offers, reached as device.driverAs<GlDriver>().
+class GlDriver : public Driver {
 public:
     virtual const GlInfo& info() const = 0;
     virtual GlContext* context() const = 0;  // null when adopting the current context
-
-    // Shows a single-sampled colour texture in the context's window: scaled to the window's
-    // framebuffer, row 0 at the top, then swaps buffers. Returns false (and does nothing) when
-    // the window is minimised / 0x0 or there is no window.
-    virtual bool present(TextureHandle texture) = 0;
-
-    // Wraps a 2D (or 2D multisample) texture created by the host in this context. Its size,
-    // sample count and internal format are checked against `desc`; destroy() forgets it
-    // without deleting it.
-    virtual TextureHandle importTexture(unsigned int glTexture, const TextureDesc& desc) = 0;
-    // The GL name behind a texture handle, for interop.
-    virtual unsigned int glTexture(TextureHandle texture) const = 0;
+    // The GL name behind a native texture, and a host's texture wrapped as one (importTexture).
+    virtual unsigned int glTexture(NativeId texture) const = 0;
+    virtual NativeId wrapTexture(unsigned int glTexture, const TextureDesc& desc, const std::string& what) = 0;
 };
 
-// Throws engine::Error when no suitable context exists (no EGL, no 4.5 core, missing
-// ARB_clip_control on a 4.3/4.4 window context).
-std::unique_ptr<GlBackend> createGlBackend(const GlOptions& options = {});
+// A render device over the GL driver. Throws engine::Error when no suitable context exists
+// (no EGL, no 4.5 core, missing ARB_clip_control on a 4.3/4.4 window context).
+std::unique_ptr<Device> createGlBackend(const GlOptions& options = {});
+
+// The GL driver under `device`; engine::Error when it runs another.
+inline GlDriver& glDriver(const Device& device) { return device.driverAs<GlDriver>(); }
+
+// Wraps a 2D (or 2D multisample) texture created by the host in the device's GL context. Its
+// size, sample count and internal format are checked against `desc`; destroy() forgets it
+// without deleting it. Device::present shows a texture in the context's window.
+TextureHandle importTexture(Device& device, unsigned int glTexture, const TextureDesc& desc);
+// The GL name behind a texture handle, for interop.
+unsigned int glTexture(const Device& device, TextureHandle texture);
 
 }  // namespace engine::render::gl

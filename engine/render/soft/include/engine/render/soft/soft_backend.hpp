@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The CPU software backend: the embedded default, what CI runs and what goldens come
-// from. Fixed-point tile rasterizer (8 sub-pixel bits, top-left rule), hierarchical
+// The CPU software driver under the render front end (device.hpp): the embedded default,
+// what CI runs and what goldens come from. Fixed-point tile rasterizer (8 sub-pixel bits, top-left rule), hierarchical
 // tile -> block -> pixel coverage, oneTBB across tiles with primitives in submission
 // order inside each tile, so images are bit-identical for any thread count.
 #include <cstdint>
@@ -10,7 +10,8 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/render/backend.hpp"
+#include "engine/render/device.hpp"
+#include "engine/render/driver.hpp"
 #include "engine/render/soft/simd_isa.hpp"
 
 namespace engine::render::soft {
@@ -46,14 +47,18 @@ struct SoftStats {
 using engine::render::CapturedFragment;
 using engine::render::FragmentSink;
 
-class SoftBackend;
-std::unique_ptr<SoftBackend> createSoftBackend(const SoftOptions& options = {});
-
-class SoftBackend : public Backend, public FragmentCapture {
+// What only the soft driver offers, reached as device.driverAs<SoftDriver>().
+class SoftDriver : public Driver, public FragmentCapture {
 public:
     virtual SoftStats stats() const = 0;
     virtual const SoftOptions& options() const = 0;
     FragmentCapture* fragmentCapture() override { return this; }
 };
+
+// A render device over the soft driver. Throws engine::Error for options it cannot use.
+std::unique_ptr<Device> createSoftBackend(const SoftOptions& options = {});
+
+// The soft driver under `device`; engine::Error when it runs another.
+inline SoftDriver& softDriver(const Device& device) { return device.driverAs<SoftDriver>(); }
 
 }  // namespace engine::render::soft

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The Vulkan 1.3 backend: the same Backend semantics as the soft backend (the reference) and
-// the GL backend, on an explicit API. Headless on any Vulkan 1.3 device (Mesa's lavapipe on CI).
+// The Vulkan 1.3 driver under the render front end (device.hpp): the same semantics as the
+// soft driver (the reference) and the GL driver, on an explicit API. Headless on any Vulkan 1.3 device (Mesa's lavapipe on CI).
 //
 // Conventions (so images match the soft backend without flips): a negative-height viewport
 // (Vulkan 1.1 core) maps NDC +y to framebuffer row 0, the first stored row and the top of a
@@ -19,7 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/render/backend.hpp"
+#include "engine/render/device.hpp"
+#include "engine/render/driver.hpp"
 #include "engine/render/memory_budget.hpp"
 
 namespace engine::render::vk {
@@ -73,25 +74,29 @@ struct VulkanCounters {
     std::uint64_t framesPresented = 0;
 };
 
-class VulkanBackend : public Backend {
+// What only the Vulkan driver offers, reached as device.driverAs<VulkanDriver>().
+// Device::present shows a colour texture (scaled to the window's size when it differs) in
+// VulkanOptions::window through a FIFO swapchain, and submits what is recorded (so call it
+// after endFrame or instead of it). False when nothing was shown: the window is minimised
+// (its framebuffer is empty), or the swapchain was out of date and is made anew for the next
+// frame. Throws engine::Error without a window. endFrame() submits what is recorded and moves
+// to the next frame slot; the next use of a slot waits only when its previous submission is
+// still running.
+class VulkanDriver : public Driver {
 public:
     virtual const VulkanInfo& info() const = 0;
     virtual const VulkanCounters& counters() const = 0;
-    // Validation warnings and errors reported since the backend was made.
+    // Validation warnings and errors reported since the driver was made.
     virtual std::uint64_t validationMessages() const = 0;
-    // Shows `color` (a colour texture, scaled to the window's size when it differs) in
-    // VulkanOptions::window through a FIFO swapchain, and submits what is recorded (so call it
-    // after endFrame or instead of it). False when nothing was shown: the window is minimised
-    // (its framebuffer is empty), or the swapchain was out of date and is made anew for the
-    // next frame. Throws engine::Error without a window or while a pass is open.
-    virtual bool present(TextureHandle color) = 0;
-    // endFrame() (Backend) submits what is recorded and moves to the next frame slot; the next
-    // use of a slot waits only when its previous submission is still running.
 };
 
-// Throws engine::Error when there is no Vulkan loader, no Vulkan 1.3 device, no device `device`
-// (the message lists them) or, with validation, no validation layer.
-std::unique_ptr<VulkanBackend> createVulkanBackend(const VulkanOptions& options = {});
+// A render device over the Vulkan driver. Throws engine::Error when there is no Vulkan loader,
+// no Vulkan 1.3 device, no device `device` (the message lists them) or, with validation, no
+// validation layer.
+std::unique_ptr<Device> createVulkanBackend(const VulkanOptions& options = {});
+
+// The Vulkan driver under `device`; engine::Error when it runs another.
+inline VulkanDriver& vulkanDriver(const Device& device) { return device.driverAs<VulkanDriver>(); }
 
 // Empty when a backend with these options can be made here, else why not (for test skips).
 std::string vulkanUnavailableReason(const VulkanOptions& options = {});

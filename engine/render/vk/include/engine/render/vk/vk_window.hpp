@@ -2,7 +2,7 @@
 #pragma once
 // A GLFW 3.3 window with no client API (GLFW_NO_API) for the Vulkan backend to present to
 // (VulkanOptions::window): the backend makes its surface with glfwCreateWindowSurface and
-// presents through a swapchain (VulkanBackend::present). The window, its size and minimise rules
+// presents through a swapchain (Device::present). The window, its size and minimise rules
 // are the GL window's (both are an engine::render::glfw::Window, glfw_window.hpp).
 #include <memory>
 #include <string>

@@ -40,7 +40,7 @@ struct DrawState {
     std::array<bool, kMaxColorTargets> blendNeeded{};  // false: plain store
     glm::vec4 blendConstant{0.0f};
     bool shade = true;                // false: depth-only, the program is never run
-    FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (SoftBackend::setFragmentSink)
+    FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (SoftDriver::setFragmentSink)
     SimdIsa isa = SimdIsa::Sse2;      // the wide kernels' instruction set (SoftOptions::simd)
 };
 

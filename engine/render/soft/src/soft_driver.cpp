@@ -16,7 +16,7 @@
 #include "engine/core/log.hpp"
 #include "engine/render/memory_budget.hpp"
 #include "engine/render/resolved_draw_state.hpp"
-#include "engine/render/resource_pool.hpp"
+#include "engine/render/native_slots.hpp"
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
@@ -39,47 +39,32 @@ using Clock = std::chrono::steady_clock;
 struct SoftBuffer {
     BufferDesc desc;
     std::vector<std::byte> bytes;
-    std::uint32_t maxIndex = 0;  // index buffers: the largest index (validation's fast accept)
     // Vertex buffers: the box of the positions, found at the first draw after a write.
     std::optional<PositionBounds> bounds;
     std::uint64_t stamp = 0;  // of these contents (geometry_key.hpp): new at creation and each update
 };
 
-struct SoftPipeline {
-    PipelineDesc desc;
-    PipelineInfo info;
-    std::shared_ptr<const ProgramDesc> program;  // alive while the pipeline is
-};
-
+// A draw as the device resolved it, kept until the pass executes: what it reads is copied,
+// since a pipeline made later in the pass may move the device's slots.
 struct RecordedDraw {
     DrawDesc desc;
+    ResolvedDrawState state;
+    RasterState raster;
+    NativeId program = kNoNative;
+    NativeId vertices = kNoNative, indices = kNoNative, instances = kNoNative;
+    bool fullscreen = false;
     FragmentSink* sink = nullptr;  // set: the draw's fragments are captured, not written
 };
 
 // An occlusion query: what the last pass that counted into it found.
 struct SoftQuery {
-    std::string name;
-    bool counted = false;
     bool anyPassed = false;
 };
 
-bool resultOf(const SoftQuery& query) {
-    if (!query.counted) throw uncountedQueryError(query.name);
-    return query.anyPassed;
-}
-
-class SoftBackendImpl final : public SoftBackend {
+class SoftDriverImpl final : public SoftDriver {
 public:
-    explicit SoftBackendImpl(const SoftOptions& options)
-        : options_(options), arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic),
-          textures_("texture"), buffers_("buffer"), pipelines_("pipeline"), queries_("occlusion query"),
-          programs_("program"),
-          lookup_{[this](TextureHandle h) -> const TextureDesc& { return textures_.get(h).desc; },
-                  [this](BufferHandle h) -> const BufferDesc& { return buffers_.get(h).desc; },
-                  [this](BufferHandle h) { return std::span<const std::byte>(buffers_.get(h).bytes); },
-                  [this](BufferHandle h) { return buffers_.get(h).maxIndex; },
-                  [this](PipelineHandle h) -> const PipelineDesc& { return pipelines_.get(h).desc; },
-                  [this](PipelineHandle h) -> const ProgramDesc& { return *pipelines_.get(h).program; }} {
+    explicit SoftDriverImpl(const SoftOptions& options)
+        : options_(options), arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic) {
         if (options.tileSize < 8 || options.tileSize % 8 != 0 || options.tileSize > 1024)
             throw Error("soft backend: tileSize " + std::to_string(options.tileSize) +
                         " must be a multiple of 8 in [8, 1024]");
@@ -88,22 +73,27 @@ public:
     }
 
     std::string name() const override { return "soft"; }
+    std::string describe() const override {
+        return "soft: " + std::to_string(arena_.max_concurrency()) + " thread(s), " + simdIsaName(*options_.simd);
+    }
+    void attach(const NativeTextures& textures) override { textureLookup_.natives = &textures; }
+    // The kernels carry out the fail modes themselves: no emulation plan is made.
+    FailModeEmulation failModeEmulation() const override { return FailModeEmulation::None; }
     SoftStats stats() const override { return stats_; }
     const SoftOptions& options() const override { return options_; }
     void setFragmentSink(FragmentSink* sink) override { sink_ = sink; }
 
-    TextureHandle createTexture(const TextureDesc& desc, const TextureData* data) override {
-        const std::string what = "texture " + quotedName(desc.name);
-        validateTexture(desc, what);
-        if (data) validateTextureData(desc, *data, what);
-        const FormatInfo& info = formatInfo(desc.format);
-        // Texels, plus the decoded float copies copyDecoded keeps beside sampled RGBA8 textures
-        // (alpha: 4 bytes a texel; all four channels, up to kDecodedCopyMaxTexels: 16).
+    // Texels, plus the decoded float copies copyDecoded keeps beside sampled RGBA8 textures
+    // (alpha: 4 bytes a texel; all four channels, up to kDecodedCopyMaxTexels: 16).
+    std::uint64_t textureFootprint(const TextureDesc& desc) const override {
         const bool decodedCopies = (desc.format == Format::RGBA8_UNORM || desc.format == Format::RGBA8_SRGB) &&
                                    desc.samples == 1 && !(desc.usage & UsageRenderTarget);
         const std::uint64_t copies = !decodedCopies ? 0 : SoftTexture::keepsFourChannelCopy(desc) ? 5 : 1;
-        checkFitsInMemory(textureBytes(desc) * (1 + copies), what + ": " + describeSize(desc), hostMemoryAvailable);
+        return textureBytes(desc) * (1 + copies);
+    }
 
+    NativeId createTexture(const TextureDesc& desc, const TextureData* data, const std::string&) override {
+        const FormatInfo& info = formatInfo(desc.format);
         SoftTexture t;
         t.desc = desc;
         t.bytesPerSample = info.bytesPerPixel;
@@ -119,23 +109,18 @@ public:
         return textures_.add(std::move(t));
     }
 
-    BufferHandle createBuffer(const BufferDesc& desc, std::span<const std::byte> data) override {
-        const std::string what = "buffer " + quotedName(desc.name);
-        validateBuffer(desc, data, what);
-        SoftBuffer b{desc, std::vector<std::byte>(desc.size), 0, std::nullopt, ++lastStamp_};
+    NativeId createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string&) override {
+        SoftBuffer b{desc, std::vector<std::byte>(desc.size), std::nullopt, ++lastStamp_};
         if (!data.empty()) std::memcpy(b.bytes.data(), data.data(), data.size());
-        if (desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
         return buffers_.add(std::move(b));
     }
 
-    void updateBuffer(BufferHandle handle, std::uint64_t offset, std::span<const std::byte> data) override {
-        SoftBuffer& b = buffers_.get(handle);
-        validateBufferUpdate(b.desc, offset, data.size());
-        if (data.empty()) return;
+    void updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) override {
+        SoftBuffer& b = buffers_[handle];
         // Recorded draws read their buffers when the pass executes; one that reads this buffer
         // must see it as it was when it was drawn (as on GL), so the draws so far run first.
         if (pass_ && std::any_of(draws_.begin(), draws_.end(), [&](const RecordedDraw& r) {
-                return r.desc.vertices == handle || r.desc.indices == handle || r.desc.instances == handle;
+                return r.vertices == handle || r.indices == handle || r.instances == handle;
             })) {
             struct Clear {
                 std::vector<RecordedDraw>& draws;
@@ -144,112 +129,77 @@ public:
             execute();
         }
         std::memcpy(b.bytes.data() + offset, data.data(), data.size());
-        if (b.desc.kind == BufferKind::Index) b.maxIndex = largestIndex(b.bytes);
         b.bounds.reset();
         b.stamp = ++lastStamp_;
     }
 
-    ProgramHandle createProgram(const ProgramDesc& desc) override {
-        if (!desc.soft) throw Error("program " + quotedName(desc.name) + " has no CPU kernel for the soft backend");
-        return programs_.add(std::make_shared<const ProgramDesc>(desc));
+    NativeId createProgram(std::shared_ptr<const ProgramDesc> desc) override {
+        if (!desc->soft) throw Error("program " + quotedName(desc->name) + " has no CPU kernel for the soft backend");
+        return programs_.add(std::move(desc));
+    }
+    NativeId createStandardProgram(ProgramKind kind, ProgramDesc desc) override {
+        desc.soft = standardKernel(kind);
+        return programs_.add(std::make_shared<const ProgramDesc>(std::move(desc)));
     }
 
-    PipelineHandle createPipeline(const PipelineDesc& desc) override {
-        const std::string what = "pipeline " + quotedName(desc.name);
-        if (desc.alphaTest.enabled && !std::isfinite(desc.alphaTest.reference))
-            throw Error(what + ": alpha reference is not finite");
-        std::shared_ptr<const ProgramDesc> program = programFor(desc.program);
-        if (program->vertexInput == VertexInput::Fullscreen && desc.depth.test)
-            throw Error(what + ": full-screen program " + program->name + " cannot depth-test");
-        return pipelines_.add(
-            SoftPipeline{desc, resolvePipeline(desc, FailModeEmulation::None).info, std::move(program)});
-    }
+    void destroyTexture(NativeId h) override { textures_.remove(h); }
+    void destroyBuffer(NativeId h) override { buffers_.remove(h); }
+    void destroyProgram(NativeId h) override { programs_.remove(h); }
 
-    void destroy(TextureHandle h) override { textures_.remove(h); }
-    void destroy(BufferHandle h) override { buffers_.remove(h); }
-    void destroy(PipelineHandle h) override { pipelines_.remove(h); }
-    void destroy(ProgramHandle h) override { programs_.remove(h); }
+    NativeId createQuery(const std::string&) override { return queries_.add({}); }
+    void destroyQuery(NativeId h) override { queries_.remove(h); }
+    bool anySamplesPassed(NativeId h) override { return queries_[h].anyPassed; }
 
-    QueryHandle createQuery(const std::string& name) override { return queries_.add({name}); }
-    void destroy(QueryHandle h) override {
-        checkQueryUse(h, queries_.get(h).name, pass_ ? &*pass_ : nullptr, true);
-        queries_.remove(h);
-    }
-    bool anySamplesPassed(QueryHandle h) override {
-        checkQueryUse(h, queries_.get(h).name, pass_ ? &*pass_ : nullptr, false);
-        return resultOf(queries_.get(h));
-    }
-
-    const TextureDesc& describe(TextureHandle h) const override { return textures_.get(h).desc; }
-    PipelineInfo pipelineInfo(PipelineHandle h) const override { return pipelines_.get(h).info; }
-
-    void beginPass(const PassDesc& pass) override {
-        if (pass_)
-            throw Error("pass " + quotedName(pass.name) + " begun while pass " + quotedName(pass_->name) + " is open");
-        const PassExtent extent = validatePass(pass, lookup_);
-        if (pass.countSamplesInto) queries_.get(pass.countSamplesInto);  // alive, or a clear error now
-        const bool skipped = pass.drawOnlyIfSamplesIn && !resultOf(queries_.get(pass.drawOnlyIfSamplesIn));
+    void beginPass(const DriverPass& pass) override {
         pass_ = pass;
-        passWidth_ = extent.width, passHeight_ = extent.height, passSamples_ = extent.samples;
+        passWidth_ = pass.extent.width, passHeight_ = pass.extent.height, passSamples_ = pass.extent.samples;
         passStart_ = Clock::now();
-        passSkipped_ = skipped;
+        passSkipped_ = pass.drawOnlyIfSamplesIn != kNoNative && !queries_[pass.drawOnlyIfSamplesIn].anyPassed;
         passTouched_ = 0;
         draws_.clear();
-        for (const ColorAttachment& c : pass.color)
-            if (c.texture && c.load == LoadOp::Clear) clear(textures_.get(c.texture), c.clear);
-        if (pass.depth.texture && pass.depth.load == LoadOp::Clear)
-            clear(textures_.get(pass.depth.texture), glm::vec4(pass.depth.clear));
+        colorTargets_.clear();
+        for (std::size_t i = 0; i < pass.color.size(); ++i) {
+            if (pass.color[i] == kNoNative) continue;
+            colorTargets_.push_back(pass.color[i]);
+            if (pass.desc->color[i].load == LoadOp::Clear) clear(textures_[pass.color[i]], pass.desc->color[i].clear);
+        }
+        if (pass.depth != kNoNative && pass.desc->depth.load == LoadOp::Clear)
+            clear(textures_[pass.depth], glm::vec4(pass.desc->depth.clear));
     }
 
-    void draw(const DrawDesc& d) override {
-        if (!pass_) throw Error("draw outside a pass");
-        validateDraw(d, *pass_, {passWidth_, passHeight_, passSamples_}, lookup_);
-        if (sink_) {
-            const PipelineDesc& p = pipelines_.get(d.pipeline).desc;
-            if (passSamples_ != 1 || !p.depth.test || !pass_->depth.texture)
-                throw Error("draw with pipeline '" + p.name +
-                            "': fragment capture needs a single-sampled pass and a depth test");
-        }
-        draws_.push_back({d, sink_});
+    void draw(const DriverDraw& d) override {
+        if (sink_ && (passSamples_ != 1 || !d.pipeline->depth.test || pass_->depth == kNoNative))
+            throw Error("draw with pipeline '" + d.pipeline->name +
+                        "': fragment capture needs a single-sampled pass and a depth test");
+        draws_.push_back({*d.desc, *d.state, d.pipeline->raster, d.program, d.vertices, d.indices, d.instances,
+                          d.fullscreen, sink_});
     }
 
     void endPass() override {
-        if (!pass_) throw Error("endPass without beginPass");
-        // The pass is over even when executing it throws (say a resource it uses was
-        // destroyed after being recorded): the error must not leave the backend stuck in it.
+        // The pass is over even when executing it throws: the error must not leave the
+        // driver stuck in it.
         struct Close {
-            SoftBackendImpl& self;
+            SoftDriverImpl& self;
             ~Close() {
                 self.pass_.reset();
                 self.draws_.clear();
             }
         } close{*this};
         execute();
-        if (pass_->countSamplesInto) {
-            SoftQuery& query = queries_.get(pass_->countSamplesInto);
-            query.counted = true;
-            query.anyPassed = passTouched_ > 0;
-        }
+        if (pass_->countSamplesInto != kNoNative) queries_[pass_->countSamplesInto].anyPassed = passTouched_ > 0;
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - passStart_).count();
-        timings_.push_back({pass_->name, ms, passSkipped_});
+        timings_.push_back({pass_->serial, ms, passSkipped_});
         ++stats_.passes;
     }
 
     void abortPass() noexcept override {
-        if (pass_ && pass_->countSamplesInto) {
-            try {
-                queries_.get(pass_->countSamplesInto).counted = false;
-            } catch (...) {  // destroyed meanwhile: nothing to mark
-            }
-        }
         pass_.reset();
         draws_.clear();
     }
 
-    void resolve(const ResolveDesc& r) override {
-        SoftTexture& src = textures_.get(r.source);
-        SoftTexture& dst = textures_.get(r.destination);
-        validateResolve(src.desc, dst.desc);
+    void resolve(NativeId source, NativeId destination, const ResolveDesc& r, const std::string&) override {
+        SoftTexture& src = textures_[source];
+        SoftTexture& dst = textures_[destination];
         const bool depth = formatInfo(src.desc.format).isDepth;
         const int n = src.desc.samples;
         arena_.execute([&] {
@@ -275,17 +225,14 @@ public:
         });
     }
 
-    Readback readback(TextureHandle h) override {
-        const SoftTexture& t = textures_.get(h);
-        validateReadback(t.desc);
+    Readback readback(NativeId h, const TextureDesc&) override {
+        const SoftTexture& t = textures_[h];
         const FormatInfo& info = formatInfo(t.desc.format);
         Readback r;
         r.width = t.desc.width;
         r.height = t.desc.height;
         r.channels = info.channels;
         r.format = t.desc.format;
-        checkFitsInMemory(std::uint64_t(r.width) * r.height * r.channels * sizeof(float),
-                          "readback of " + quotedName(t.desc.name) + " as float", hostMemoryAvailable);
         r.values.resize(std::size_t(r.width) * r.height * r.channels);
         const ByteTables& tables = byteTables();
         for (int y = 0; y < r.height; ++y) {
@@ -303,7 +250,7 @@ public:
         return r;
     }
 
-    std::vector<PassTiming> takeTimings() override { return std::exchange(timings_, {}); }
+    std::vector<DriverTiming> takeTimings() override { return std::exchange(timings_, {}); }
 
 private:
     // Data that validateTextureData accepted.
@@ -361,23 +308,15 @@ private:
         return {passWidth_, passHeight_, scissor, &samplePattern(passSamples_)};
     }
 
-    // The draw's state as the front end resolves it (resolved_draw_state.hpp), translated into
-    // the tile loop's terms; fail modes are the kernel's own, so no emulation plan is made.
-    DrawState drawStateFor(const DrawDesc& d, Rect& scissor) {
-        const SoftPipeline& p = pipelines_.get(d.pipeline);
+    // The draw's state as the device resolved it (resolved_draw_state.hpp), translated into
+    // the tile loop's terms.
+    DrawState drawStateFor(const RecordedDraw& d) {
+        const ResolvedDrawState& r = d.state;
         DrawState s;
-        DrawTargets targets{{}, 0, pass_->depth.texture.valid(), passSamples_, passWidth_, passHeight_};
-        for (const ColorAttachment& c : pass_->color) {
-            if (!c.texture) continue;
-            SoftTexture& t = textures_.get(c.texture);
-            targets.colorFormats[s.colorTargetCount] = t.desc.format;
-            s.colorTargets[s.colorTargetCount++] = &t;
-        }
-        targets.colorTargetCount = s.colorTargetCount;
-        s.depthTarget = pass_->depth.texture ? &textures_.get(pass_->depth.texture) : nullptr;
+        for (NativeId target : colorTargets_) s.colorTargets[s.colorTargetCount++] = &textures_[target];
+        s.depthTarget = pass_->depth != kNoNative ? &textures_[pass_->depth] : nullptr;
         s.samples = passSamples_;
         s.pattern = &samplePattern(passSamples_);
-        const ResolvedDrawState r = resolveDrawState(p.desc, targets, d.scissor, FailModeEmulation::None);
         s.depthTest = r.depthTest;
         s.depthWrite = r.depthWrite;
         s.depthFunc = r.depthFunc;
@@ -387,58 +326,50 @@ private:
         s.blendNeeded = r.blendNeeded;
         s.alphaTest = r.alphaTest;
         s.shade = r.shade;
-        scissor = r.scissor;
-        s.program = p.program->soft->bind(d.params, textureLookup_);
+        s.program = programs_[d.program]->soft->bind(d.desc.params, textureLookup_);
         s.isa = *options_.simd;
         return s;
     }
 
-    std::shared_ptr<const ProgramDesc> programFor(const ProgramRef& ref) {
-        if (ref.created) return programs_.get(ref.created);
-        return standardPrograms_.get(ref.standard, [&](ProgramDesc desc) {
-            desc.soft = standardKernel(ref.standard);
-            return std::make_shared<const ProgramDesc>(std::move(desc));
-        });
-    }
-
     // The draw's vertex input resolved from its buffers for the geometry stage, which plans
     // its chunks (geometry_stage.hpp).
-    void planGeometry(const DrawDesc& d, const DrawState& state, std::uint32_t drawIndex, const Viewport& vp,
-                      const RasterState& raster, const TileGrid& grid) {
-        const SoftPipeline& p = pipelines_.get(d.pipeline);
-        if (p.program->vertexInput == VertexInput::Fullscreen) {
+    void planGeometry(const RecordedDraw& r, const DrawState& state, std::uint32_t drawIndex, const Viewport& vp,
+                      const TileGrid& grid) {
+        const DrawDesc& d = r.desc;
+        if (r.fullscreen) {
             geometryStage_.planFullscreen(vp, drawIndex, grid);
             return;
         }
-        SoftBuffer& vb = buffers_.get(d.vertices);
+        SoftBuffer& vb = buffers_[r.vertices];
         const auto* vertices = reinterpret_cast<const Vertex*>(vb.bytes.data());
         if (!vb.bounds) vb.bounds = positionBounds({vertices, vb.bytes.size() / sizeof(Vertex)});
         static const Instance identity{};
-        DrawGeometry g{
-            vertices,
-            d.indices ? reinterpret_cast<const std::uint32_t*>(buffers_.get(d.indices).bytes.data()) + d.first
-                      : nullptr,
-            d.first,
-            d.instances ? reinterpret_cast<const Instance*>(buffers_.get(d.instances).bytes.data()) : &identity,
-            &*vb.bounds,
-            state.program->viewProj(),
-            vp,
-            raster,
-            drawIndex,
-            d.count / 3,
-            0};
+        DrawGeometry g{vertices,
+                       r.indices != kNoNative
+                           ? reinterpret_cast<const std::uint32_t*>(buffers_[r.indices].bytes.data()) + d.first
+                           : nullptr,
+                       d.first,
+                       r.instances != kNoNative ? reinterpret_cast<const Instance*>(buffers_[r.instances].bytes.data())
+                                                : &identity,
+                       &*vb.bounds,
+                       state.program->viewProj(),
+                       vp,
+                       r.raster,
+                       drawIndex,
+                       d.count / 3,
+                       0};
         g.total = g.trianglesPerInstance * d.instanceCount;
         stats_.trianglesIn += g.total;
         if (g.total == 0 || vp.scissor.empty()) return;
         const GeometryKey key{vb.stamp,
-                              d.indices ? buffers_.get(d.indices).stamp : 0,
-                              d.instances ? buffers_.get(d.instances).stamp : 0,
+                              r.indices != kNoNative ? buffers_[r.indices].stamp : 0,
+                              r.instances != kNoNative ? buffers_[r.instances].stamp : 0,
                               d.first,
                               d.count,
                               d.instanceCount,
                               g.viewProj,
                               vp,
-                              raster};
+                              r.raster};
         if (geometryStage_.plan(g, key)) stats_.trianglesReused += g.total;
     }
 
@@ -459,16 +390,14 @@ private:
             }
         } forget{geometryStage_};
         for (std::uint32_t i = 0; i < draws_.size(); ++i) {
-            const DrawDesc& d = draws_[i].desc;
-            Rect scissor;
-            drawStates.push_back(drawStateFor(d, scissor));
+            drawStates.push_back(drawStateFor(draws_[i]));
             if (FragmentSink* sink = draws_[i].sink) {
                 DrawState& s = drawStates.back();
                 s.capture = sink;
                 s.shade = true;
                 s.depthWrite = false;
             }
-            planGeometry(d, drawStates.back(), i, viewportFor(scissor), pipelines_.get(d.pipeline).desc.raster, grid);
+            planGeometry(draws_[i], drawStates.back(), i, viewportFor(draws_[i].state.scissor), grid);
         }
         geometryStage_.runGeometry(arena_, grid);
         stats_.draws += draws_.size();
@@ -505,9 +434,8 @@ private:
 
     void checkNonFinite() {
         std::uint64_t count = 0;
-        for (const ColorAttachment& c : pass_->color) {
-            if (!c.texture) continue;
-            const SoftTexture& t = textures_.get(c.texture);
+        for (NativeId target : colorTargets_) {
+            const SoftTexture& t = textures_[target];
             if (!formatInfo(t.desc.format).isFloat) continue;
             const int channels = formatInfo(t.desc.format).channels;
             for (int y = 0; y < t.desc.height; ++y)
@@ -517,27 +445,27 @@ private:
                         for (int ch = 0; ch < channels; ++ch) count += !std::isfinite(v[ch]);
                     }
         }
-        if (count) log::warn("pass ", quotedName(pass_->name), ": ", count, " non-finite values in float targets");
+        if (count)
+            log::warn("pass ", quotedName(pass_->desc->name), ": ", count, " non-finite values in float targets");
         stats_.nonFiniteStores += count;
     }
 
     SoftOptions options_;
     tbb::task_arena arena_;
-    ResourcePool<TextureTag, SoftTexture> textures_;
-    ResourcePool<BufferTag, SoftBuffer> buffers_;
-    ResourcePool<PipelineTag, SoftPipeline> pipelines_;
-    ResourcePool<QueryTag, SoftQuery> queries_;
-    ResourcePool<ProgramTag, std::shared_ptr<const ProgramDesc>> programs_;
-    StandardProgramSlots<ProgramDesc> standardPrograms_;
-    ResourceLookup lookup_;  // what the shared validation reads
-    // How bound programs resolve texture handles.
+    NativeSlots<SoftTexture> textures_;
+    NativeSlots<SoftBuffer> buffers_;
+    NativeSlots<SoftQuery> queries_;
+    NativeSlots<std::shared_ptr<const ProgramDesc>> programs_;
+    // How bound programs resolve texture handles: the device's index, then this driver's slot.
     struct Textures final : TextureLookup {
-        explicit Textures(const ResourcePool<TextureTag, SoftTexture>& pool) : pool(pool) {}
-        const SoftTexture* texture(TextureHandle h) const override { return h ? &pool.get(h) : nullptr; }
+        explicit Textures(const NativeSlots<SoftTexture>& slots) : slots(slots) {}
+        const SoftTexture* texture(TextureHandle h) const override { return h ? &slots[natives->texture(h)] : nullptr; }
         SampleFunction sampleFunction() const override { return &sampleTexture<SampledChannels::All>; }
-        const ResourcePool<TextureTag, SoftTexture>& pool;
+        const NativeSlots<SoftTexture>& slots;
+        const NativeTextures* natives = nullptr;
     } textureLookup_{textures_};
-    std::optional<PassDesc> pass_;
+    std::optional<DriverPass> pass_;
+    std::vector<NativeId> colorTargets_;  // the pass's colour attachments, packed
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
     Clock::time_point passStart_;
     bool passSkipped_ = false;
@@ -547,14 +475,14 @@ private:
     GeometryStage geometryStage_{options_.reuseGeometry};
     std::uint64_t lastStamp_ = 0;                          // the last buffer content stamp given
     std::vector<std::vector<const SetupTriangle*>> bins_;  // per tile, in submission order
-    std::vector<PassTiming> timings_;
+    std::vector<DriverTiming> timings_;
     SoftStats stats_;
 };
 
 }  // namespace
 
-std::unique_ptr<SoftBackend> createSoftBackend(const SoftOptions& options) {
-    return std::make_unique<SoftBackendImpl>(options);
+std::unique_ptr<Device> createSoftBackend(const SoftOptions& options) {
+    return std::make_unique<Device>(std::make_unique<SoftDriverImpl>(options));
 }
 
 }  // namespace engine::render::soft

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// What a render driver implements: the narrow half under the one front end (device.hpp), in
+// the spirit of bgfx's RendererContextI and Filament's DriverAPI. The Device owns every handle,
+// checks every call (validation.hpp), resolves every draw's state (resolved_draw_state.hpp),
+// asks the memory budget and keeps the pass timings' names; a driver receives only what was
+// validated and resolved, with its resources named by the indices it gave them (NativeId).
+// A driver still refuses what only it cannot do (a sample count its API lacks, a program
+// without its part), naming the resource as the Device does.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/render/backend.hpp"
+#include "engine/render/memory_budget.hpp"
+#include "engine/render/resolved_draw_state.hpp"
+#include "engine/render/standard_programs.hpp"
+#include "engine/render/validation.hpp"
+
+namespace engine::render {
+
+// A driver's own index of a resource it made (a texture, buffer, program or query slot).
+using NativeId = std::uint32_t;
+inline constexpr NativeId kNoNative = ~NativeId(0);
+
+// How a driver reaches the native index behind a handle found inside a draw's parameter
+// block (a texture a program samples); the Device implements it. Throws for a stale handle.
+class NativeTextures {
+public:
+    virtual ~NativeTextures() = default;
+    virtual NativeId texture(TextureHandle texture) const = 0;
+};
+
+// A pass the Device validated: its attachments as native indices, in attachment order.
+struct DriverPass {
+    const PassDesc* desc = nullptr;  // names, load operations and clear values
+    std::uint64_t serial = 0;        // its number, which its DriverTiming repeats
+    PassExtent extent;
+    std::vector<NativeId> color;            // per PassDesc::color entry; kNoNative where it is empty
+    NativeId depth = kNoNative;             // kNoNative: no depth attachment
+    NativeId countSamplesInto = kNoNative;  // occlusion queries (kNoNative: none)
+    NativeId drawOnlyIfSamplesIn = kNoNative;
+    DrawTargets targets;  // what the draws' resolved state was resolved against
+};
+
+// A draw the Device validated, with its state resolved for the open pass.
+struct DriverDraw {
+    const DrawDesc* desc = nullptr;
+    const PipelineDesc* pipeline = nullptr;
+    const ResolvedDrawState* state = nullptr;
+    NativeId program = kNoNative;
+    NativeId vertices = kNoNative, indices = kNoNative, instances = kNoNative;  // kNoNative: none
+    bool fullscreen = false;                                                    // the program's VertexInput::Fullscreen
+};
+
+// A pass's time as the driver measured it (soft: wall time; GL: GL_TIME_ELAPSED; Vulkan:
+// timestamps) and whether its drawOnlyIfSamplesIn skipped its draws.
+struct DriverTiming {
+    std::uint64_t serial = 0;  // DriverPass::serial of the pass
+    double milliseconds = 0.0;
+    bool skipped = false;
+};
+
+class Driver {
+public:
+    virtual ~Driver() = default;
+    // As --backend spells it: "soft", "gl", "vk".
+    virtual std::string name() const = 0;
+    // One line naming what it runs on, for logs: "soft: 2 thread(s), avx2", GL's renderer.
+    virtual std::string describe() const { return name(); }
+    // Called once by the Device before anything else.
+    virtual void attach(const NativeTextures& textures) = 0;
+    // How the alpha test's fail modes are carried out (the resolver plans them for a driver
+    // that emulates them).
+    virtual FailModeEmulation failModeEmulation() const = 0;
+
+    // The memory budget (memory_budget.hpp): what a texture costs this driver, and what it can
+    // still allocate. The Device refuses a texture that does not fit before the driver sees it.
+    virtual std::uint64_t textureFootprint(const TextureDesc& desc) const { return textureBytes(desc); }
+    virtual MemoryProbe memoryProbe() const { return hostMemoryAvailable; }
+
+    // What only this driver refuses of a texture the shared rules accepted (sample counts and
+    // sizes its API lacks), checked before its initial data and the memory budget.
+    virtual void checkTexture(const TextureDesc& /*desc*/, const TextureData* /*data*/, const std::string& /*what*/) {}
+    virtual NativeId createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) = 0;
+    virtual NativeId createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) = 0;
+    virtual void updateBuffer(NativeId buffer, std::uint64_t offset, std::span<const std::byte> data) = 0;
+    // A module's program: throws when it lacks this driver's part or does not compile.
+    virtual NativeId createProgram(std::shared_ptr<const ProgramDesc> desc) = 0;
+    // A standard program: `neutral` is its backend-neutral description, which the driver
+    // completes with its own part (its GLSL, its CPU kernel).
+    virtual NativeId createStandardProgram(ProgramKind kind, ProgramDesc neutral) = 0;
+    // A pipeline about to be made: the driver may only add what it cannot do exactly to `info`.
+    virtual void notePipeline(const PipelineDesc& /*desc*/, ResolvedPipeline& /*resolved*/) {}
+    virtual void destroyTexture(NativeId texture) = 0;
+    virtual void destroyBuffer(NativeId buffer) = 0;
+    virtual void destroyProgram(NativeId program) = 0;
+
+    virtual NativeId createQuery(const std::string& name) = 0;
+    virtual void destroyQuery(NativeId query) = 0;
+    // The result of the last pass that counted into a query the Device knows was counted.
+    virtual bool anySamplesPassed(NativeId query) = 0;
+
+    virtual void beginPass(const DriverPass& pass) = 0;
+    virtual void draw(const DriverDraw& draw) = 0;
+    // The open pass's query (if any) was counted; its timing is taken later.
+    virtual void endPass() = 0;
+    virtual void abortPass() noexcept = 0;
+
+    virtual void resolve(NativeId source, NativeId destination, const ResolveDesc& resolve,
+                         const std::string& what) = 0;
+    virtual Readback readback(NativeId texture, const TextureDesc& desc) = 0;
+    // One entry per pass ended since the last call, in order (a pass whose endPass threw or
+    // that was aborted may have none).
+    virtual std::vector<DriverTiming> takeTimings() = 0;
+    virtual void endFrame() {}
+    // Shows a single-sampled colour texture in the driver's window; false when there is none
+    // to show it in (or it is minimised).
+    virtual bool present(NativeId /*texture*/, const TextureDesc& /*desc*/) { return false; }
+    virtual FragmentCapture* fragmentCapture() { return nullptr; }
+};
+
+}  // namespace engine::render
