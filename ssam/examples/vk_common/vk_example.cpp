@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "png_writer.hpp"
+#include "ssam_device.hpp"
 #include "vk_mist.hpp"
 #include "vk_present.hpp"
 
@@ -111,13 +112,7 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             },
             nullptr);
         // SSAM is created from the host's Vulkan objects and its loader's vkGetInstanceProcAddr.
-        ssam::vk::DeviceDesc device;
-        device.instance = host.instance;
-        device.physicalDevice = host.physical;
-        device.device = host.device;
-        device.queueFamily = host.queueFamily;
-        device.apiVersion = host.apiVersion;
-        device.getInstanceProcAddr = vkGetInstanceProcAddr;
+        ssam::vk::DeviceDesc device = ssamDevice(host);
         device.getDeviceProcAddr = vkGetDeviceProcAddr;
         device.dynamicRendering = host.dynamicRendering;
         if (args.dynamicRendering) device.renderingPath = ssam::vk::RenderingPath::DynamicRendering;
