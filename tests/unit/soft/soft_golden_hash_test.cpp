@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,10 @@ struct Hasher {
         bytes(&r.width, sizeof r.width);
         bytes(&r.height, sizeof r.height);
         bytes(r.values.data(), r.values.size() * sizeof(float));
+    }
+    // Each target read back from `b` and hashed, in this order.
+    void targets(render::Backend& b, std::initializer_list<render::TextureHandle> handles) {
+        for (render::TextureHandle t : handles) readback(b.readback(t));
     }
 };
 
@@ -139,8 +144,7 @@ void sceneFlatDepth(render::Backend& b, Hasher& h) {
     drawTriangles(b, p2, vb, 300, render::FlatParams{glm::mat4(1.0f), glm::vec4(0.2f, 0.9f, 0.4f, 0.5f)},
                   render::Rect{17, 9, 150, 100});
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // A depth-only pre-pass (no colour target, reverse-Z), then Equal-tested colour.
@@ -170,8 +174,7 @@ void sceneDepthPrepass(render::Backend& b, Hasher& h) {
     sp.viewProj = vp;
     drawTriangles(b, shade, vb, 1200, sp);
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Textured foliage: alpha test with each fail mode, mipmapped trilinear/bilinear/nearest.
@@ -206,8 +209,7 @@ void sceneFoliage(render::Backend& b, Hasher& h) {
         drawTriangles(b, b.createPipeline(pd), vb, 600, sp);
     }
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Every blend factor and op, on RGBA8, sRGB, RGBA16F and RGBA32F targets at once (MRT).
@@ -315,9 +317,7 @@ void sceneMsaa(render::Backend& b, Hasher& h) {
     b.resolve({msColor, color});
     b.resolve({msMask, mask});
     b.resolve({msDepth, depth, render::CompareFunc::Less});
-    h.readback(b.readback(color));
-    h.readback(b.readback(mask));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, mask, depth});
 }
 
 // Full-screen composite under a scissor, onto an sRGB target.
@@ -386,8 +386,7 @@ void sceneTinyInstanced(render::Backend& b, Hasher& h) {
     d.instanceCount = 2;
     b.draw(d);
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Quads larger than several tiles: depth-only, opaque, alpha-over and alpha-tested
@@ -452,9 +451,7 @@ void sceneBigQuads(render::Backend& b, Hasher& h) {
     d.count = 12;
     b.draw(d);
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(srgb));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, srgb, depth});
 }
 
 // Clipping: perspective triangles crossing the near plane and far outside the guard band.
@@ -483,8 +480,7 @@ void sceneClipping(render::Backend& b, Hasher& h) {
     drawTriangles(b, b.createPipeline(pd), vb, std::uint32_t(tris.size()),
                   render::FlatParams{perspectiveViewProj(), glm::vec4(1.0f)});
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Constant-colour triangles (w = 1, one vertex colour): the fragment is the same at every
@@ -552,10 +548,7 @@ void sceneConstantColour(render::Backend& b, Hasher& h) {
         }
     }
     b.endPass();
-    h.readback(b.readback(c0));
-    h.readback(b.readback(c1));
-    h.readback(b.readback(c2));
-    h.readback(b.readback(depth));
+    h.targets(b, {c0, c1, c2, depth});
 }
 
 struct GoldenScene {
