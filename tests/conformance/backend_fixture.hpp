@@ -49,6 +49,12 @@ struct BackendCase {
 
 inline void PrintTo(const BackendCase& c, std::ostream* os) { *os << c.name; }
 
+// The case of a backend that does not count the triangles it drops (GL, Vulkan).
+template <class Make>
+BackendCase uncountedCase(std::string name, Make make) {
+    return {std::move(name), [make] { return std::unique_ptr<render::Backend>(make()); }, {}};
+}
+
 struct BackendCaseName {
     std::string operator()(const ::testing::TestParamInfo<BackendCase>& info) const { return info.param.name; }
 };

@@ -48,10 +48,39 @@ void MemorySource::release(Memory& memory) const noexcept {
     memory = {};
 }
 
+namespace {
+
+// `make(out)` creates a resource into `out`; when it throws, what it made so far is destroyed.
+template <class Resource, class Make>
+Resource createOrUndo(const VkFunctions& vk, const MemorySource& memory, Make&& make) {
+    Resource out;
+    try {
+        make(out);
+    } catch (...) {
+        destroy(vk, memory, out);
+        throw;
+    }
+    return out;
+}
+
+// Named apart, not overloaded: on 32-bit targets every non-dispatchable handle is a uint64_t.
+VkMemoryRequirements imageRequirements(const VkFunctions& vk, VkImage image) {
+    VkMemoryRequirements requirements;
+    vk.GetImageMemoryRequirements(vk.device, image, &requirements);
+    return requirements;
+}
+
+VkMemoryRequirements bufferRequirements(const VkFunctions& vk, VkBuffer buffer) {
+    VkMemoryRequirements requirements;
+    vk.GetBufferMemoryRequirements(vk.device, buffer, &requirements);
+    return requirements;
+}
+
+}  // namespace
+
 Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat format, std::uint32_t width,
                   std::uint32_t height, VkImageUsageFlags usage, const char* what, VkImageAspectFlags aspect) {
-    Image out;
-    try {
+    return createOrUndo<Image>(vk, memory, [&](Image& out) {
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.imageType = VK_IMAGE_TYPE_2D;
         info.format = format;
@@ -65,9 +94,7 @@ Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat fo
         info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
         check(vk.CreateImage(vk.device, &info, vk.allocator, &out.image),
               (std::string("vkCreateImage, ") + what).c_str());
-        VkMemoryRequirements requirements;
-        vk.GetImageMemoryRequirements(vk.device, out.image, &requirements);
-        out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+        out.memory = memory.allocate(imageRequirements(vk, out.image), VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
         check(vk.BindImageMemory(vk.device, out.image, out.memory.memory, out.memory.offset), "vkBindImageMemory");
         VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = out.image;
@@ -76,11 +103,7 @@ Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat fo
         view.subresourceRange = {aspect, 0, 1, 0, 1};
         check(vk.CreateImageView(vk.device, &view, vk.allocator, &out.view),
               (std::string("vkCreateImageView, ") + what).c_str());
-    } catch (...) {
-        destroy(vk, memory, out);
-        throw;
-    }
-    return out;
+    });
 }
 
 void destroy(const VkFunctions& vk, const MemorySource& memory, Image& image) noexcept {
@@ -92,23 +115,16 @@ void destroy(const VkFunctions& vk, const MemorySource& memory, Image& image) no
 
 Buffer createBuffer(const VkFunctions& vk, const MemorySource& memory, VkDeviceSize size, VkBufferUsageFlags usage,
                     const char* what) {
-    Buffer out;
-    try {
+    return createOrUndo<Buffer>(vk, memory, [&](Buffer& out) {
         VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
         info.size = size;
         info.usage = usage;
         info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
         check(vk.CreateBuffer(vk.device, &info, vk.allocator, &out.buffer),
               (std::string("vkCreateBuffer, ") + what).c_str());
-        VkMemoryRequirements requirements;
-        vk.GetBufferMemoryRequirements(vk.device, out.buffer, &requirements);
-        out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+        out.memory = memory.allocate(bufferRequirements(vk, out.buffer), VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
         check(vk.BindBufferMemory(vk.device, out.buffer, out.memory.memory, out.memory.offset), "vkBindBufferMemory");
-    } catch (...) {
-        destroy(vk, memory, out);
-        throw;
-    }
-    return out;
+    });
 }
 
 void destroy(const VkFunctions& vk, const MemorySource& memory, Buffer& buffer) noexcept {

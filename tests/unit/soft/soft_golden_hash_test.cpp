@@ -9,6 +9,7 @@
 // When a change is meant to alter the images, rerun with SSAM_PRINT_GOLDEN_HASHES=1 and
 // update the hashes in scenes(). Scenes use a fixed LCG, never <random> distributions
 // (implementation-defined).
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -53,8 +54,12 @@ struct Hasher {
         bytes(r.values.data(), r.values.size() * sizeof(float));
     }
     // Each target read back from `b` and hashed, in this order.
-    void targets(render::Backend& b, std::initializer_list<render::TextureHandle> handles) {
+    template <class Handles>
+    void targets(render::Backend& b, const Handles& handles) {
         for (render::TextureHandle t : handles) readback(b.readback(t));
+    }
+    void targets(render::Backend& b, std::initializer_list<render::TextureHandle> handles) {
+        targets<std::initializer_list<render::TextureHandle>>(b, handles);
     }
 };
 
@@ -103,6 +108,13 @@ std::vector<render::Vertex> randomTriangles(Lcg& rng, int count, float maxSize, 
         }
     }
     return v;
+}
+
+// One colour target of each format, for a pass of four colour attachments (MRT).
+std::array<render::TextureHandle, 4> targetsOf(render::Backend& b, const std::array<Format, 4>& formats) {
+    std::array<render::TextureHandle, 4> targets;
+    for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
+    return targets;
 }
 
 render::BufferHandle vertexBuffer(render::Backend& b, const std::vector<render::Vertex>& v) {
@@ -215,9 +227,8 @@ void sceneFoliage(render::Backend& b, Hasher& h) {
 // Every blend factor and op, on RGBA8, sRGB, RGBA16F and RGBA32F targets at once (MRT).
 void sceneBlendMatrix(render::Backend& b, Hasher& h) {
     Lcg rng{4};
-    const Format formats[] = {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::RGBA16F, Format::RGBA32F};
-    render::TextureHandle targets[4];
-    for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
+    const std::array<render::TextureHandle, 4> targets =
+        targetsOf(b, {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::RGBA16F, Format::RGBA32F});
     const auto vb = vertexBuffer(b, randomTriangles(rng, 60, 0.9f, false));
     render::PassDesc pass;
     pass.name = "blend";
@@ -253,15 +264,14 @@ void sceneBlendMatrix(render::Backend& b, Hasher& h) {
         }
     }
     b.endPass();
-    for (auto t : targets) h.readback(b.readback(t));
+    h.targets(b, targets);
 }
 
 // The common presets and plain stores into R8 / RG8 / RG16F / R32F, with write masks.
 void scenePresetsSmallFormats(render::Backend& b, Hasher& h) {
     Lcg rng{5};
-    const Format formats[] = {Format::R8_UNORM, Format::RG8_UNORM, Format::RG16F, Format::R32F};
-    render::TextureHandle targets[4];
-    for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
+    const std::array<render::TextureHandle, 4> targets =
+        targetsOf(b, {Format::R8_UNORM, Format::RG8_UNORM, Format::RG16F, Format::R32F});
     const auto vb = vertexBuffer(b, randomTriangles(rng, 500, 0.4f, false));
     const render::BlendState presets[] = {render::BlendState::opaque(), render::BlendState::alphaOver(),
                                           render::BlendState::premultipliedOver(),
@@ -285,7 +295,7 @@ void scenePresetsSmallFormats(render::Backend& b, Hasher& h) {
         b.draw(dd);
     }
     b.endPass();
-    for (auto t : targets) h.readback(b.readback(t));
+    h.targets(b, targets);
 }
 
 // MSAA with alpha-to-coverage and an SSAM mask into a float target, resolved.
