@@ -63,17 +63,20 @@ Resource createOrUndo(const VkFunctions& vk, const MemorySource& memory, Make&& 
     return out;
 }
 
-// Named apart, not overloaded: on 32-bit targets every non-dispatchable handle is a uint64_t.
-VkMemoryRequirements imageRequirements(const VkFunctions& vk, VkImage image) {
+// Device-local memory for the resource, bound to it; kept in `out` first, so that createOrUndo
+// gives it back when binding fails.
+void allocateAndBind(const VkFunctions& vk, const MemorySource& memory, Image& out, const char* what) {
     VkMemoryRequirements requirements;
-    vk.GetImageMemoryRequirements(vk.device, image, &requirements);
-    return requirements;
+    vk.GetImageMemoryRequirements(vk.device, out.image, &requirements);
+    out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+    check(vk.BindImageMemory(vk.device, out.image, out.memory.memory, out.memory.offset), "vkBindImageMemory");
 }
 
-VkMemoryRequirements bufferRequirements(const VkFunctions& vk, VkBuffer buffer) {
+void allocateAndBind(const VkFunctions& vk, const MemorySource& memory, Buffer& out, const char* what) {
     VkMemoryRequirements requirements;
-    vk.GetBufferMemoryRequirements(vk.device, buffer, &requirements);
-    return requirements;
+    vk.GetBufferMemoryRequirements(vk.device, out.buffer, &requirements);
+    out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+    check(vk.BindBufferMemory(vk.device, out.buffer, out.memory.memory, out.memory.offset), "vkBindBufferMemory");
 }
 
 }  // namespace
@@ -94,8 +97,7 @@ Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat fo
         info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
         check(vk.CreateImage(vk.device, &info, vk.allocator, &out.image),
               (std::string("vkCreateImage, ") + what).c_str());
-        out.memory = memory.allocate(imageRequirements(vk, out.image), VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
-        check(vk.BindImageMemory(vk.device, out.image, out.memory.memory, out.memory.offset), "vkBindImageMemory");
+        allocateAndBind(vk, memory, out, what);
         VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = out.image;
         view.viewType = VK_IMAGE_VIEW_TYPE_2D;
@@ -122,8 +124,7 @@ Buffer createBuffer(const VkFunctions& vk, const MemorySource& memory, VkDeviceS
         info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
         check(vk.CreateBuffer(vk.device, &info, vk.allocator, &out.buffer),
               (std::string("vkCreateBuffer, ") + what).c_str());
-        out.memory = memory.allocate(bufferRequirements(vk, out.buffer), VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
-        check(vk.BindBufferMemory(vk.device, out.buffer, out.memory.memory, out.memory.offset), "vkBindBufferMemory");
+        allocateAndBind(vk, memory, out, what);
     });
 }
 

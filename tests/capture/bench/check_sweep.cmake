@@ -160,10 +160,7 @@ endif()
 
 # Deterministic, finite; and each knob changes the error.
 set(varied "")
-math(EXPR last "${n1} - 1")
-foreach(i RANGE 0 ${last})
-  list(GET s1_rows ${i} row1)
-  list(GET s2_rows ${i} row2)
+foreach(row1 row2 IN ZIP_LISTS s1_rows s2_rows)  # the same length: checked above
   field("${row1}" "${s1_header}" setting name)
   expect_same_columns("${row1}" "${s1_header}" "${name}: the first run's" "${row2}" "${s2_header}" "the second run's")
   foreach(c IN LISTS compared)

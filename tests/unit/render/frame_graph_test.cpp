@@ -40,43 +40,42 @@ struct Output {
     FrameGraphTexture texture;
 };
 
+// A pass that reads `inputs`, then declares the rest with `declare(builder, out)`; running, it
+// records its name in `events`.
+template <class Declare>
+const Output& recordedPass(FrameGraph& fg, Events& events, const std::string& pass,
+                           const std::vector<FrameGraphTexture>& inputs, Declare&& declare) {
+    return fg.addPass<Output>(
+        pass,
+        [&](FrameGraph::Builder& builder, Output& out) {
+            for (FrameGraphTexture input : inputs) builder.read(input);
+            declare(builder, out);
+        },
+        [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); });
+}
+
 // A pass that reads `inputs` and writes a texture `texture` it creates.
 FrameGraphTexture produce(FrameGraph& fg, Events& events, const std::string& pass, const std::string& texture,
                           const std::vector<FrameGraphTexture>& inputs = {}) {
-    return fg
-        .addPass<Output>(
-            pass,
-            [&](FrameGraph::Builder& builder, Output& out) {
-                for (FrameGraphTexture input : inputs) builder.read(input);
-                out.texture = builder.write(builder.create(texture, kDesc));
-            },
-            [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); })
+    return recordedPass(fg, events, pass, inputs,
+                        [&](FrameGraph::Builder& builder, Output& out) {
+                            out.texture = builder.write(builder.create(texture, kDesc));
+                        })
         .texture;
 }
 
 // A pass that reads `inputs` and draws into `target` on top of what is there.
 FrameGraphTexture modify(FrameGraph& fg, Events& events, const std::string& pass, FrameGraphTexture target,
                          const std::vector<FrameGraphTexture>& inputs = {}) {
-    return fg
-        .addPass<Output>(
-            pass,
-            [&](FrameGraph::Builder& builder, Output& out) {
-                for (FrameGraphTexture input : inputs) builder.read(input);
-                out.texture = builder.write(builder.read(target));
-            },
-            [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); })
+    return recordedPass(
+               fg, events, pass, inputs,
+               [&](FrameGraph::Builder& builder, Output& out) { out.texture = builder.write(builder.read(target)); })
         .texture;
 }
 
 // A side-effect pass (present, capture) that reads `inputs`.
 void present(FrameGraph& fg, Events& events, const std::string& pass, const std::vector<FrameGraphTexture>& inputs) {
-    fg.addPass<Output>(
-        pass,
-        [&](FrameGraph::Builder& builder, Output&) {
-            for (FrameGraphTexture input : inputs) builder.read(input);
-            builder.sideEffect();
-        },
-        [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); });
+    recordedPass(fg, events, pass, inputs, [](FrameGraph::Builder& builder, Output&) { builder.sideEffect(); });
 }
 
 // Hands out textures 100, 101, ... and records "alloc <name>" / "release <name>".
