@@ -490,21 +490,32 @@ TEST(FrameGraphExecute, ImportedTextureIsReadableAndNeverAllocated) {
 
 // --- transient lifetimes -------------------------------------------------------------
 
+// A chain A (t1) -> B (t2) -> C (t3), presented by D, which also reads t1; and a pass "unused"
+// (t4, from t1) that nothing reads.
+struct Chain {
+    FrameGraphTexture t1, t2, t3, unused;
+};
+Chain addChain(FrameGraph& fg, Events& events) {
+    Chain c;
+    c.t1 = produce(fg, events, "A", "t1");
+    c.t2 = produce(fg, events, "B", "t2", {c.t1});
+    c.t3 = produce(fg, events, "C", "t3", {c.t2});
+    c.unused = produce(fg, events, "unused", "t4", {c.t1});
+    present(fg, events, "D", {c.t3, c.t1});
+    return c;
+}
+
 TEST(FrameGraphLifetime, TransientsLiveFromFirstToLastUser) {
     FrameGraph fg;
     Events events;
-    const FrameGraphTexture t1 = produce(fg, events, "A", "t1");
-    const FrameGraphTexture t2 = produce(fg, events, "B", "t2", {t1});
-    const FrameGraphTexture t3 = produce(fg, events, "C", "t3", {t2});
-    const FrameGraphTexture unused = produce(fg, events, "unused", "t4", {t1});
-    present(fg, events, "D", {t3, t1});
+    const Chain chain = addChain(fg, events);
 
     fg.execute(recordingAllocator(events));
 
-    EXPECT_EQ(fg.lifetime(t1), (ResourceLifetime{0, 3}));
-    EXPECT_EQ(fg.lifetime(t2), (ResourceLifetime{1, 2}));
-    EXPECT_EQ(fg.lifetime(t3), (ResourceLifetime{2, 3}));
-    EXPECT_FALSE(fg.lifetime(unused).has_value());
+    EXPECT_EQ(fg.lifetime(chain.t1), (ResourceLifetime{0, 3}));
+    EXPECT_EQ(fg.lifetime(chain.t2), (ResourceLifetime{1, 2}));
+    EXPECT_EQ(fg.lifetime(chain.t3), (ResourceLifetime{2, 3}));
+    EXPECT_FALSE(fg.lifetime(chain.unused).has_value());
     EXPECT_THAT(events, ElementsAre("alloc t1", "A", "alloc t2", "B", "alloc t3", "C", "release t2", "D", "release t1",
                                     "release t3"));
 }
@@ -515,11 +526,7 @@ TEST(FrameGraphLifetime, TransientsLiveFromFirstToLastUser) {
 TEST(FrameGraphLifetime, TransientsAreListedAndTheirPeakBytesCounted) {
     FrameGraph fg;
     Events events;
-    const FrameGraphTexture t1 = produce(fg, events, "A", "t1");
-    const FrameGraphTexture t2 = produce(fg, events, "B", "t2", {t1});
-    const FrameGraphTexture t3 = produce(fg, events, "C", "t3", {t2});
-    produce(fg, events, "unused", "t4", {t1});
-    present(fg, events, "D", {t3, t1});
+    addChain(fg, events);
     fg.compile();
 
     std::vector<std::string> lives;
