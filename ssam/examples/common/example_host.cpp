@@ -453,14 +453,9 @@ int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRendere
     }
     if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) args.headless = true;
     // The outputs are proven writable before a context is made or a frame drawn.
-    if (args.headless) {
-        for (const std::string& path : {args.out, args.mask}) {
-            if (path.empty()) continue;
-            if (const std::string why = checkWritable(path); !why.empty()) {
-                printError(tool, why);
-                return kExitFailure;
-            }
-        }
+    if (const std::string why = args.headless ? checkWritable({args.out, args.mask}) : ""; !why.empty()) {
+        printError(tool, why);
+        return kExitFailure;
     }
     try {
         return args.headless ? runHeadless(tool, args, makeRenderer) : runWindow(tool, args, makeRenderer);

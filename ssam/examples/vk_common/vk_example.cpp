@@ -193,12 +193,10 @@ int runExample(const Tool& tool, int argc, char** argv, const MakeRecorder& make
         std::fprintf(stderr, "%s: error: %s (see --help)\n", tool.name, e.what());
         return 2;
     }
-    for (const std::string& path : {args.out, args.mask})
-        if (!path.empty())
-            if (const std::string why = checkWritable(path); !why.empty()) {
-                std::fprintf(stderr, "%s: error: %s\n", tool.name, why.c_str());
-                return 1;
-            }
+    if (const std::string why = checkWritable({args.out, args.mask}); !why.empty()) {
+        std::fprintf(stderr, "%s: error: %s\n", tool.name, why.c_str());
+        return 1;
+    }
     try {
         return run(tool, args, makeRecorder);
     } catch (const vk_example::NoVulkan& e) {
