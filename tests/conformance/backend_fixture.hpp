@@ -12,6 +12,7 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -48,6 +49,12 @@ struct BackendCase {
 };
 
 inline void PrintTo(const BackendCase& c, std::ostream* os) { *os << c.name; }
+
+// The case of a backend that does not count the triangles it drops (GL, Vulkan).
+template <class Make>
+BackendCase uncountedCase(std::string name, Make make) {
+    return {std::move(name), [make] { return std::unique_ptr<render::Backend>(make()); }, {}};
+}
 
 struct BackendCaseName {
     std::string operator()(const ::testing::TestParamInfo<BackendCase>& info) const { return info.param.name; }
@@ -117,6 +124,15 @@ protected:
     };
     ColorAndDepth colorAndDepthTargets(int width, int height, int samples = 1) {
         return {renderTarget(width, height, render::Format::RGBA8_UNORM, samples), depthTarget(width, height, samples)};
+    }
+
+    // A colour and a depth target read back, in that order.
+    struct ColorAndDepthReadback {
+        render::Readback color, depth;
+    };
+    ColorAndDepthReadback readBoth(render::TextureHandle color, render::TextureHandle depth) {
+        render::Readback c = gfx().readback(color);
+        return {std::move(c), gfx().readback(depth)};
     }
 
     render::BufferHandle vertexBuffer(const std::vector<render::Vertex>& vertices,

@@ -9,32 +9,9 @@
 #include <system_error>
 
 #include "engine/core/log.hpp"
+#include "scratch_dir.hpp"
 
 namespace ssam::fuzz {
-
-namespace {
-
-class ScratchDir {
-public:
-    explicit ScratchDir(std::string_view target)
-        : path_(std::filesystem::temp_directory_path() /
-                ("ssam_fuzz_" + std::string(target) + "_" + std::to_string(::getpid()))) {
-        std::filesystem::remove_all(path_);
-        std::filesystem::create_directories(path_);
-    }
-    ~ScratchDir() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    ScratchDir(const ScratchDir&) = delete;
-    ScratchDir& operator=(const ScratchDir&) = delete;
-    const std::filesystem::path& path() const { return path_; }
-
-private:
-    std::filesystem::path path_;
-};
-
-}  // namespace
 
 // Sanitizer defaults, read at start-up by ASan/LSan (make fuzz, the asan preset); unused in
 // other builds. OpenImageIO 2.4's PNG reader leaks its error text when a file ends early: the
@@ -61,7 +38,8 @@ void requireMessageNames(const std::exception& error, std::string_view prefix) {
 }
 
 const std::filesystem::path& scratchDir(std::string_view target) {
-    static const ScratchDir dir(target);  // one target per process
+    // One target per process.
+    static const ssam::testing::ScratchDir dir("ssam_fuzz_" + std::string(target) + "_" + std::to_string(::getpid()));
     return dir.path();
 }
 

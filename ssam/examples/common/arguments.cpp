@@ -3,10 +3,10 @@
 
 #include <cctype>
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <type_traits>
 
 #include "scene.hpp"
 
@@ -14,31 +14,18 @@ namespace gl_example {
 
 namespace {
 
-int parseFrames(const std::string& text) {
+// All of `text` as a number in [lowest, highest] (strtol / strtof, no overflow, not NaN), else
+// UsageError "<flag> '<text>': expected <expected>".
+template <class Number>
+Number parseNumber(const char* flag, const std::string& text, Number lowest, Number highest, const char* expected) {
     char* end = nullptr;
     errno = 0;
-    const long n = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno == ERANGE || n < 1 || n > 1000000)
-        throw UsageError("--frames '" + text + "': expected a whole number of frames in 1..1000000");
-    return static_cast<int>(n);
-}
-
-float parseWind(const std::string& text) {
-    char* end = nullptr;
-    errno = 0;
-    const float w = std::strtof(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(w) || w < -1.0f || w > 1.0f)
-        throw UsageError("--wind '" + text + "': expected an amplitude in -1..1 (world units at a card's top)");
-    return w;
-}
-
-float parseThreshold(const std::string& text) {
-    char* end = nullptr;
-    errno = 0;
-    const float t = std::strtof(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno == ERANGE || !(t >= 0.0f && t <= 1.0f))
-        throw UsageError("--depth-threshold '" + text + "': expected a mask value in 0..1");
-    return t;
+    Number n;
+    if constexpr (std::is_floating_point_v<Number>) n = std::strtof(text.c_str(), &end);
+    else n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno == ERANGE || !(n >= lowest && n <= highest))
+        throw UsageError(std::string(flag) + " '" + text + "': expected " + expected);
+    return n;
 }
 
 Arguments::Mist parseMist(const std::string& text) {
@@ -52,15 +39,6 @@ Arguments::Precision parsePrecision(const std::string& text) {
     if (text == "rgba16f") return Arguments::Precision::Rgba16f;
     if (text == "rg16f") return Arguments::Precision::Rg16f;
     throw UsageError("--precision '" + text + "': expected rgba8, rgba16f or rg16f");
-}
-
-int parseRepeat(const std::string& text) {
-    char* end = nullptr;
-    errno = 0;
-    const long n = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno == ERANGE || n < 1 || n > 100000)
-        throw UsageError("--repeat '" + text + "': expected a whole number in 1..100000");
-    return static_cast<int>(n);
 }
 
 EglPlatform parseEgl(const std::string& text) {
@@ -96,11 +74,19 @@ Arguments parseArguments(const Tool& tool, int argc, char** argv) {
         else if (arg == "--mask") args.mask = value(), args.headless = true, headlessFlag = "--mask";
         else if (arg == "--egl") args.egl = parseEgl(value()), args.headless = true, headlessFlag = "--egl";
         else if (arg == "--mist") args.mist = parseMist(value());
-        else if (arg == "--repeat") args.repeat = parseRepeat(value()), args.headless = true;
-        else if (arg == "--depth-threshold") args.depthMaskThreshold = parseThreshold(value());
+        else if (arg == "--repeat")
+            args.repeat = int(parseNumber<long>("--repeat", value(), 1, 100000, "a whole number in 1..100000")),
+            args.headless = true;
+        else if (arg == "--depth-threshold")
+            args.depthMaskThreshold = parseNumber("--depth-threshold", value(), 0.0f, 1.0f, "a mask value in 0..1");
         else if (arg == "--precision") args.precision = parsePrecision(value());
-        else if (arg == "--frames") args.frames = parseFrames(value()), framesGiven = true;
-        else if (arg == "--wind" && tool.bendsInTheWind) args.wind = parseWind(value());
+        else if (arg == "--frames")
+            args.frames =
+                int(parseNumber<long>("--frames", value(), 1, 1000000, "a whole number of frames in 1..1000000")),
+            framesGiven = true;
+        else if (arg == "--wind" && tool.bendsInTheWind)
+            args.wind =
+                parseNumber("--wind", value(), -1.0f, 1.0f, "an amplitude in -1..1 (world units at a card's top)");
         else throw UsageError("unknown argument '" + arg + "' (see --help)");
     }
     if (framesGiven && args.headless)

@@ -166,21 +166,6 @@ void main() { o_color = u_color; }
 // World (x, y, z in [0, 1]) to OpenGL's default clip space (z in [-w, w]), column-major.
 constexpr float kViewProj[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, 0, 0, 0, -1, 1};
 
-struct Vertex {
-    float x, y, z, u, v;
-};
-
-// A quad as kCardRows rows of two triangles, v from 0 (y0) to 1 (y1); opaque quads use one row.
-void appendStrip(std::vector<Vertex>& out, const Rect3& r, int rows) {
-    for (int row = 0; row < rows; ++row) {
-        const float v0 = static_cast<float>(row) / rows, v1 = static_cast<float>(row + 1) / rows;
-        const float ya = r.y0 + (r.y1 - r.y0) * v0, yb = r.y0 + (r.y1 - r.y0) * v1;
-        const Vertex a{r.x0, ya, r.zLeft, 0, v0}, b{r.x1, ya, r.zRight, 1, v0}, c{r.x1, yb, r.zRight, 1, v1},
-            d{r.x0, yb, r.zLeft, 0, v1};
-        out.insert(out.end(), {a, b, c, a, c, d});
-    }
-}
-
 constexpr GLsizei kCardVertices = kCardRows * 6;
 
 }  // namespace
@@ -386,19 +371,25 @@ ssam::gl::MaskPrecision maskPrecisionOf(Arguments::Precision p) {
     return ssam::gl::MaskPrecision::Rgba8;
 }
 
+// SSAM resolves its GL functions through the host's loader (EGL's headless, GLFW's in a window):
+// the paper's settings but for --depth-threshold and --precision.
+template <class GetProcAddress>
+void initializeSsam(ssam::gl::ScreenSpaceAlphaMaskGl& ssam, const Tool& tool, const Arguments& args,
+                    GetProcAddress getProcAddress) {
+    ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
+    ssam::gl::Settings settings;
+    settings.depthMaskThreshold = args.depthMaskThreshold;
+    settings.maskPrecision = maskPrecisionOf(args.precision);
+    check(ssam, ssam.initialize(getProcAddress, settings), "ssam::gl initialize");
+}
+
 int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
     EglHeadless context(args.egl);
     std::printf("OpenGL: %s, %s on the %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION),
                 context.description.c_str());
     HostScene scene(args.wind);
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
-    ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
-    // SSAM resolves its GL functions through the host's loader: here EGL's. The paper's settings
-    // but for --depth-threshold and --precision.
-    ssam::gl::Settings settings;
-    settings.depthMaskThreshold = args.depthMaskThreshold;
-    settings.maskPrecision = maskPrecisionOf(args.precision);
-    check(ssam, ssam.initialize(eglGetProcAddress, settings), "ssam::gl initialize");
+    initializeSsam(ssam, tool, args, eglGetProcAddress);
     const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
     std::vector<double> milliseconds;
     for (int i = 0; i < args.repeat; ++i) {
@@ -428,11 +419,7 @@ int runWindow(const Tool& tool, const Arguments& args, const MakeFoliageRenderer
     std::printf("OpenGL: %s, %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION));
     HostScene scene(args.wind);
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
-    ssam.setMessageCallback(printSsamMessage, const_cast<Tool*>(&tool));
-    ssam::gl::Settings settings;
-    settings.depthMaskThreshold = args.depthMaskThreshold;
-    settings.maskPrecision = maskPrecisionOf(args.precision);
-    check(ssam, ssam.initialize(glfwGetProcAddress, settings), "ssam::gl initialize");  // here GLFW's loader
+    initializeSsam(ssam, tool, args, glfwGetProcAddress);
     const std::unique_ptr<FoliageRenderer> foliage = makeRenderer(scene, args);
     for (int frame = 0; !glfwWindowShouldClose(window.window) && (args.frames <= 0 || frame < args.frames); ++frame) {
         scene.drawOpaque();
@@ -466,14 +453,9 @@ int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRendere
     }
     if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) args.headless = true;
     // The outputs are proven writable before a context is made or a frame drawn.
-    if (args.headless) {
-        for (const std::string& path : {args.out, args.mask}) {
-            if (path.empty()) continue;
-            if (const std::string why = checkWritable(path); !why.empty()) {
-                printError(tool, why);
-                return kExitFailure;
-            }
-        }
+    if (const std::string why = args.headless ? checkWritable({args.out, args.mask}) : ""; !why.empty()) {
+        printError(tool, why);
+        return kExitFailure;
     }
     try {
         return args.headless ? runHeadless(tool, args, makeRenderer) : runWindow(tool, args, makeRenderer);

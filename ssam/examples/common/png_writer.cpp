@@ -73,4 +73,11 @@ std::string checkWritable(const std::string& path) {
     return {};
 }
 
+std::string checkWritable(std::initializer_list<std::string> paths) {
+    for (const std::string& path : paths)
+        if (!path.empty())
+            if (std::string why = checkWritable(path); !why.empty()) return why;
+    return {};
+}
+
 }  // namespace gl_example

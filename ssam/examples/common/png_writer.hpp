@@ -2,6 +2,7 @@
 #pragma once
 // Writes an example's frame as a compressed PNG through libpng (Debian: libpng-dev).
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -15,5 +16,7 @@ std::string writePng(const std::string& path, int width, int height, const std::
 // Proves before any rendering that `path` can be written, by creating (and removing) a
 // temporary file beside it: access() would answer yes to root even on /proc. Returns "" or why not.
 std::string checkWritable(const std::string& path);
+// checkWritable for each path given (an empty one is an output not asked for): the first reason, or "".
+std::string checkWritable(std::initializer_list<std::string> paths);
 
 }  // namespace gl_example

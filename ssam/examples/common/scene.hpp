@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace gl_example {
 
@@ -49,6 +50,22 @@ inline float bentOffset(float amplitude, float v) {
     const float t = row - static_cast<float>(below);
     const float h0 = static_cast<float>(below) / kCardRows, h1 = static_cast<float>(below + 1) / kCardRows;
     return windOffset(amplitude, h0) + (windOffset(amplitude, h1) - windOffset(amplitude, h0)) * t;
+}
+
+// A vertex of the host's quads: world position, then the texture coordinates.
+struct Vertex {
+    float x, y, z, u, v;
+};
+
+// A quad as `rows` rows of two triangles, v from 0 (y0) to 1 (y1); opaque quads use one row.
+inline void appendStrip(std::vector<Vertex>& out, const Rect3& r, int rows) {
+    for (int row = 0; row < rows; ++row) {
+        const float v0 = static_cast<float>(row) / rows, v1 = static_cast<float>(row + 1) / rows;
+        const float ya = r.y0 + (r.y1 - r.y0) * v0, yb = r.y0 + (r.y1 - r.y0) * v1;
+        const Vertex a{r.x0, ya, r.zLeft, 0, v0}, b{r.x1, ya, r.zRight, 1, v0}, c{r.x1, yb, r.zRight, 1, v1},
+            d{r.x0, yb, r.zLeft, 0, v1};
+        out.insert(out.end(), {a, b, c, a, c, d});
+    }
 }
 
 // The procedural leaf: a disc with a uniform core (r < 0.6), darkening towards the rim, alpha 1

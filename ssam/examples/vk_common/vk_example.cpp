@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "png_writer.hpp"
+#include "ssam_device.hpp"
 #include "vk_mist.hpp"
 #include "vk_present.hpp"
 
@@ -111,13 +112,7 @@ int run(const Tool& tool, const Arguments& args, const MakeRecorder& makeRecorde
             },
             nullptr);
         // SSAM is created from the host's Vulkan objects and its loader's vkGetInstanceProcAddr.
-        ssam::vk::DeviceDesc device;
-        device.instance = host.instance;
-        device.physicalDevice = host.physical;
-        device.device = host.device;
-        device.queueFamily = host.queueFamily;
-        device.apiVersion = host.apiVersion;
-        device.getInstanceProcAddr = vkGetInstanceProcAddr;
+        ssam::vk::DeviceDesc device = ssamDevice(host);
         device.getDeviceProcAddr = vkGetDeviceProcAddr;
         device.dynamicRendering = host.dynamicRendering;
         if (args.dynamicRendering) device.renderingPath = ssam::vk::RenderingPath::DynamicRendering;
@@ -198,12 +193,10 @@ int runExample(const Tool& tool, int argc, char** argv, const MakeRecorder& make
         std::fprintf(stderr, "%s: error: %s (see --help)\n", tool.name, e.what());
         return 2;
     }
-    for (const std::string& path : {args.out, args.mask})
-        if (!path.empty())
-            if (const std::string why = checkWritable(path); !why.empty()) {
-                std::fprintf(stderr, "%s: error: %s\n", tool.name, why.c_str());
-                return 1;
-            }
+    if (const std::string why = checkWritable({args.out, args.mask}); !why.empty()) {
+        std::fprintf(stderr, "%s: error: %s\n", tool.name, why.c_str());
+        return 1;
+    }
     try {
         return run(tool, args, makeRecorder);
     } catch (const vk_example::NoVulkan& e) {

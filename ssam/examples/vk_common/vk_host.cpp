@@ -213,6 +213,15 @@ std::uint32_t VulkanHost::memoryType(std::uint32_t bits, VkMemoryPropertyFlags p
     throw std::runtime_error("no suitable memory type");
 }
 
+VkDeviceMemory VulkanHost::allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties) const {
+    VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    info.allocationSize = requirements.size;
+    info.memoryTypeIndex = memoryType(requirements.memoryTypeBits, properties);
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    check(vkAllocateMemory(device, &info, nullptr, &memory), "vkAllocateMemory");
+    return memory;
+}
+
 HostImage VulkanHost::createImage(VkFormat format, std::uint32_t width, std::uint32_t height, VkImageUsageFlags usage,
                                   VkImageAspectFlags aspect) {
     HostImage out;
@@ -228,10 +237,7 @@ HostImage VulkanHost::createImage(VkFormat format, std::uint32_t width, std::uin
     check(vkCreateImage(device, &info, nullptr, &out.image), "vkCreateImage");
     VkMemoryRequirements requirements;
     vkGetImageMemoryRequirements(device, out.image, &requirements);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = requirements.size;
-    allocate.memoryTypeIndex = memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    check(vkAllocateMemory(device, &allocate, nullptr, &out.memory), "vkAllocateMemory");
+    out.memory = allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     check(vkBindImageMemory(device, out.image, out.memory, 0), "vkBindImageMemory");
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = out.image;
@@ -250,14 +256,46 @@ HostBuffer VulkanHost::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage)
     check(vkCreateBuffer(device, &info, nullptr, &out.buffer), "vkCreateBuffer");
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device, out.buffer, &requirements);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = requirements.size;
-    allocate.memoryTypeIndex = memoryType(requirements.memoryTypeBits,
-                                          VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    check(vkAllocateMemory(device, &allocate, nullptr, &out.memory), "vkAllocateMemory");
+    out.memory = allocate(requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
     check(vkBindBufferMemory(device, out.buffer, out.memory, 0), "vkBindBufferMemory");
     check(vkMapMemory(device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped), "vkMapMemory");
     return out;
+}
+
+VkShaderModule VulkanHost::createShaderModule(const std::uint32_t* code, std::size_t bytes, const char* what) const {
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = bytes;
+    info.pCode = code;
+    VkShaderModule module = VK_NULL_HANDLE;
+    check(vkCreateShaderModule(device, &info, nullptr, &module), what);
+    return module;
+}
+
+void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                  VkPipelineStageFlags srcStages, VkAccessFlags srcAccess, VkPipelineStageFlags dstStages,
+                  VkAccessFlags dstAccess) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = srcAccess;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cb, srcStages, dstStages, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+std::array<VkPipelineShaderStageCreateInfo, 2> shaderStages(VkShaderModule vertex, VkShaderModule fragment) {
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+    for (VkPipelineShaderStageCreateInfo& stage : stages) {
+        stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        stage.pName = "main";
+    }
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = vertex;
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = fragment;
+    return stages;
 }
 
 void VulkanHost::destroy(HostImage& image) {

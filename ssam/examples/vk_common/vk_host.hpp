@@ -4,6 +4,8 @@
 // own instance, device, queue, images and buffers), headless. It links the Vulkan loader itself,
 // as an engine does; SSAM gets its vkGetInstanceProcAddr. With validation on it enables
 // VK_LAYER_KHRONOS_validation with synchronization validation and counts every message.
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -19,6 +21,14 @@ struct NoVulkan : std::runtime_error {
 };
 
 void check(VkResult result, const char* what);  // throws std::runtime_error naming `what`
+
+// One image memory barrier over the first level and layer of `image` (the host's images have one).
+void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                  VkPipelineStageFlags srcStages, VkAccessFlags srcAccess, VkPipelineStageFlags dstStages,
+                  VkAccessFlags dstAccess);
+
+// A graphics pipeline's two stages, each entered at "main".
+std::array<VkPipelineShaderStageCreateInfo, 2> shaderStages(VkShaderModule vertex, VkShaderModule fragment);
 
 struct HostImage {
     VkImage image = VK_NULL_HANDLE;
@@ -49,6 +59,8 @@ public:
     HostImage createImage(VkFormat format, std::uint32_t width, std::uint32_t height, VkImageUsageFlags usage,
                           VkImageAspectFlags aspect);
     HostBuffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);  // host-visible
+    // SPIR-V of `bytes` bytes; `what` names it when vkCreateShaderModule fails.
+    VkShaderModule createShaderModule(const std::uint32_t* code, std::size_t bytes, const char* what) const;
     void destroy(HostImage& image);
     void destroy(HostBuffer& buffer);
 
@@ -79,6 +91,7 @@ private:
     };
     std::vector<InFlight> inFlight_;
     std::uint32_t memoryType(std::uint32_t bits, VkMemoryPropertyFlags properties) const;
+    VkDeviceMemory allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties) const;
 };
 
 }  // namespace vk_example

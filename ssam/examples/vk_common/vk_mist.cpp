@@ -14,81 +14,23 @@ struct MistPush {
     float z;
 };
 
-VkShaderModule createModule(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = bytes;
-    info.pCode = code;
-    VkShaderModule module = VK_NULL_HANDLE;
-    check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule, mist");
-    return module;
-}
-
 }  // namespace
 
 MistPass::MistPass(HostScene& scene) : scene_(scene) {
     const VkDevice device = scene.host.device;
-    VkAttachmentDescription a[2]{};
-    a[0].format = scene.color.format;
-    a[1].format = scene.depth.format;
-    for (auto& d : a) {
-        d.samples = VK_SAMPLE_COUNT_1_BIT;
-        d.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-        d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        d.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-        d.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    }
-    a[0].initialLayout = a[0].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    a[1].initialLayout = a[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    const VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &colorRef;
-    subpass.pDepthStencilAttachment = &depthRef;
-    constexpr VkPipelineStageFlags kAttachments = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                                  VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                                  VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    constexpr VkAccessFlags kWrites =
-        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    constexpr VkAccessFlags kAccesses =
-        kWrites | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-    const VkSubpassDependency dependencies[2] = {
-        {VK_SUBPASS_EXTERNAL, 0, kAttachments, kAttachments, kWrites, kAccesses, 0},
-        {0, VK_SUBPASS_EXTERNAL, kAttachments, kAttachments, kWrites, kAccesses, 0}};
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 2;
-    info.pAttachments = a;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 2;
-    info.pDependencies = dependencies;
-    check(vkCreateRenderPass(device, &info, nullptr, &pass_), "vkCreateRenderPass, mist");
-    const VkImageView views[2] = {scene.color.view, scene.depth.view};
-    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    fb.renderPass = pass_;
-    fb.attachmentCount = 2;
-    fb.pAttachments = views;
-    fb.width = kWidth;
-    fb.height = kHeight;
-    fb.layers = 1;
-    check(vkCreateFramebuffer(device, &fb, nullptr, &framebuffer_), "vkCreateFramebuffer, mist");
+    pass_ = scene.createPass(false, "vkCreateRenderPass, mist");
+    framebuffer_ = scene.createFramebuffer(pass_, "vkCreateFramebuffer, mist");
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(MistPush)};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layoutInfo.pushConstantRangeCount = 1;
     layoutInfo.pPushConstantRanges = &push;
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout, mist");
 
-    const VkShaderModule vertex = createModule(device, mist_spirv::kMistVert, mist_spirv::kMistVertSize);
-    const VkShaderModule fragment = createModule(device, mist_spirv::kMistFrag, mist_spirv::kMistFragSize);
-    VkPipelineShaderStageCreateInfo stages[2]{{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                              {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vertex;
-    stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = fragment;
-    stages[1].pName = "main";
+    const char* what = "vkCreateShaderModule, mist";
+    const VkShaderModule vertex = scene.host.createShaderModule(mist_spirv::kMistVert, mist_spirv::kMistVertSize, what);
+    const VkShaderModule fragment =
+        scene.host.createShaderModule(mist_spirv::kMistFrag, mist_spirv::kMistFragSize, what);
+    const auto stages = shaderStages(vertex, fragment);
     VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
@@ -120,7 +62,7 @@ MistPass::MistPass(HostScene& scene) : scene_(scene) {
     blend.pAttachments = &attachment;
     VkGraphicsPipelineCreateInfo pipeline{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     pipeline.stageCount = 2;
-    pipeline.pStages = stages;
+    pipeline.pStages = stages.data();
     pipeline.pVertexInputState = &vertexInput;
     pipeline.pInputAssemblyState = &assembly;
     pipeline.pViewportState = &viewportState;

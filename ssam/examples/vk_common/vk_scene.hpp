@@ -23,19 +23,6 @@ using namespace gl_example;  // the scene
 // World (x, y up, z in [0, 1]) to Vulkan's clip space (y down, z in [0, w]), column-major.
 constexpr float kViewProj[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
-struct Vertex {
-    float x, y, z, u, v;
-};
-
-inline void appendStrip(std::vector<Vertex>& out, const Rect3& r, int rows) {
-    for (int row = 0; row < rows; ++row) {
-        const float v0 = static_cast<float>(row) / rows, v1 = static_cast<float>(row + 1) / rows;
-        const float ya = r.y0 + (r.y1 - r.y0) * v0, yb = r.y0 + (r.y1 - r.y0) * v1;
-        const Vertex a{r.x0, ya, r.zLeft, 0, v0}, b{r.x1, ya, r.zRight, 1, v0}, c{r.x1, yb, r.zRight, 1, v1},
-            d{r.x0, yb, r.zLeft, 0, v1};
-        out.insert(out.end(), {a, b, c, a, c, d});
-    }
-}
 constexpr std::uint32_t kCardVertices = kCardRows * 6;
 
 // The pixels a rasterised axis-aligned quad covers (centres inside [a, b)): the host's opaque
@@ -47,20 +34,6 @@ inline VkClearRect clearRect(const Rect3& r) {
     const int x0 = first(left), x1 = std::min(kWidth, first(right)), y0 = first(top),
               y1 = std::min(kHeight, first(bottom));
     return {{{x0, y0}, {std::uint32_t(x1 - x0), std::uint32_t(y1 - y0)}}, 0, 1};
-}
-
-inline void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
-                         VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
-                         VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = srcAccess;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {aspect, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cb, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
 // The host's scene on the device: its render targets, the cards' vertex buffer, the leaf texture,
@@ -109,23 +82,25 @@ struct HostScene {
     HostScene(const HostScene&) = delete;
     HostScene& operator=(const HostScene&) = delete;
 
-    // Cleared to the sky and depth 1, left in the layouts ssam::vk expects (its contract): colour
-    // COLOR_ATTACHMENT_OPTIMAL, depth DEPTH_STENCIL_ATTACHMENT_OPTIMAL, written by attachment
-    // stages. In: whatever the previous frame's SSAM passes and readback did to them.
-    void createOpaquePass() {
+    // A render pass over the colour and depth, left in the layouts ssam::vk expects (its contract):
+    // colour COLOR_ATTACHMENT_OPTIMAL, depth DEPTH_STENCIL_ATTACHMENT_OPTIMAL, written by
+    // attachment stages. `clear`: both cleared (the opaque pass; in: whatever the previous frame's
+    // SSAM passes and readback did to them), else loaded from those layouts (a later pass).
+    VkRenderPass createPass(bool clear, const char* what) const {
         VkAttachmentDescription a[2]{};
         a[0].format = color.format;
         a[1].format = depth.format;
         for (auto& d : a) {
             d.samples = VK_SAMPLE_COUNT_1_BIT;
-            d.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+            d.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
             d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
             d.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
             d.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-            d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
         }
         a[0].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         a[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        a[0].initialLayout = clear ? VK_IMAGE_LAYOUT_UNDEFINED : a[0].finalLayout;
+        a[1].initialLayout = clear ? VK_IMAGE_LAYOUT_UNDEFINED : a[1].finalLayout;
         const VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
         const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
         VkSubpassDescription subpass{};
@@ -140,9 +115,10 @@ struct HostScene {
             VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
         constexpr VkAccessFlags kAccesses =
             kWrites | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+        // In: the clearing pass also follows the previous frame's readback (a transfer).
+        const VkPipelineStageFlags before = clear ? kAttachments | VK_PIPELINE_STAGE_TRANSFER_BIT : kAttachments;
         const VkSubpassDependency dependencies[2] = {
-            {VK_SUBPASS_EXTERNAL, 0, kAttachments | VK_PIPELINE_STAGE_TRANSFER_BIT, kAttachments, kWrites, kAccesses,
-             0},
+            {VK_SUBPASS_EXTERNAL, 0, before, kAttachments, kWrites, kAccesses, 0},
             // Out: the contract's entry row of ssam::vk (attachment writes at attachment stages).
             {0, VK_SUBPASS_EXTERNAL, kAttachments, kAttachments, kWrites, kAccesses, 0}};
         VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
@@ -152,16 +128,28 @@ struct HostScene {
         info.pSubpasses = &subpass;
         info.dependencyCount = 2;
         info.pDependencies = dependencies;
-        check(vkCreateRenderPass(host.device, &info, nullptr, &opaquePass), "vkCreateRenderPass");
+        VkRenderPass pass = VK_NULL_HANDLE;
+        check(vkCreateRenderPass(host.device, &info, nullptr, &pass), what);
+        return pass;
+    }
+    // The colour and depth as `pass`'s attachments.
+    VkFramebuffer createFramebuffer(VkRenderPass pass, const char* what) const {
         const VkImageView views[2] = {color.view, depth.view};
         VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        fb.renderPass = opaquePass;
+        fb.renderPass = pass;
         fb.attachmentCount = 2;
         fb.pAttachments = views;
         fb.width = kWidth;
         fb.height = kHeight;
         fb.layers = 1;
-        check(vkCreateFramebuffer(host.device, &fb, nullptr, &framebuffer), "vkCreateFramebuffer");
+        VkFramebuffer framebuffer = VK_NULL_HANDLE;
+        check(vkCreateFramebuffer(host.device, &fb, nullptr, &framebuffer), what);
+        return framebuffer;
+    }
+    // Cleared to the sky and depth 1 (recordOpaque).
+    void createOpaquePass() {
+        opaquePass = createPass(true, "vkCreateRenderPass");
+        framebuffer = createFramebuffer(opaquePass, "vkCreateFramebuffer");
     }
 
     void uploadLeaf() {

@@ -72,9 +72,12 @@ public:
         write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         write.pImageInfo = &image;
         vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
-        vertex_ = module(host_spirv::kWindVert, host_spirv::kWindVertSize);
-        fragments_[0] = module(host_spirv::kMaskFrag, host_spirv::kMaskFragSize);
-        fragments_[1] = module(host_spirv::kColorFrag, host_spirv::kColorFragSize);
+        vertex_ =
+            scene.host.createShaderModule(host_spirv::kWindVert, host_spirv::kWindVertSize, "vkCreateShaderModule");
+        fragments_[0] =
+            scene.host.createShaderModule(host_spirv::kMaskFrag, host_spirv::kMaskFragSize, "vkCreateShaderModule");
+        fragments_[1] =
+            scene.host.createShaderModule(host_spirv::kColorFrag, host_spirv::kColorFragSize, "vkCreateShaderModule");
     }
     ~HostPipelines() override {
         vkDeviceWaitIdle(device_);
@@ -124,29 +127,13 @@ public:
     }
 
 private:
-    VkShaderModule module(const std::uint32_t* code, std::size_t bytes) const {
-        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        info.codeSize = bytes;
-        info.pCode = code;
-        VkShaderModule m = VK_NULL_HANDLE;
-        check(vkCreateShaderModule(device_, &info, nullptr, &m), "vkCreateShaderModule");
-        return m;
-    }
-
     // The host's pipeline for `pass`: its shaders and vertex layout, SSAM's fixed-function state.
     VkPipeline createPipeline(const ssam::vk::ScreenSpaceAlphaMaskVk& ssam, ssam::vk::FoliagePass pass,
                               VkFormat colorFormat, VkFormat depthFormat) {
         ssam::vk::PipelineState state;
         checkSsam(ssam, ssam.pipelineState(pass, colorFormat, depthFormat, &state), "ssam::vk pipelineState");
         version_ = state.version;
-        VkPipelineShaderStageCreateInfo stages[2]{{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                                  {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-        stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-        stages[0].module = vertex_;
-        stages[0].pName = "main";
-        stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-        stages[1].module = fragments_[int(pass)];
-        stages[1].pName = "main";
+        const auto stages = shaderStages(vertex_, fragments_[int(pass)]);
         const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
         const VkVertexInputAttributeDescription attributes[2] = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0},
                                                                  {1, 0, VK_FORMAT_R32G32_SFLOAT, 3 * sizeof(float)}};
@@ -174,7 +161,7 @@ private:
         VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
         info.pNext = state.renderPass ? nullptr : &rendering;  // dynamic rendering: the formats
         info.stageCount = 2;
-        info.pStages = stages;
+        info.pStages = stages.data();
         info.pVertexInputState = &vertexInput;
         info.pInputAssemblyState = &assembly;
         info.pViewportState = &viewport;

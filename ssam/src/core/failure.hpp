@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "ssam/core/frame.hpp"
 #include "ssam/core/status.hpp"
 
 namespace ssam::core {
@@ -15,5 +16,19 @@ struct Failure : std::runtime_error {
     Status status;
     Failure(Status s, const std::string& message) : std::runtime_error(message), status(s) {}
 };
+
+// Runs the host's draw callback for `pass` (way a): whatever it throws becomes a Failure
+// (CallbackFailed) naming `api` ("ssam::gl", ...), the pass and, for a std::exception, its what().
+template <class Draw>
+void runDrawCallback(const char* api, FoliagePass pass, Draw&& draw) {
+    const std::string threw = std::string(api) + ": the draw callback threw in the " + foliagePassName(pass) + " pass";
+    try {
+        draw();
+    } catch (const std::exception& e) {
+        throw Failure(Status::CallbackFailed, threw + ": " + e.what());
+    } catch (...) {
+        throw Failure(Status::CallbackFailed, threw + " (not a std::exception)");
+    }
+}
 
 }  // namespace ssam::core

@@ -31,4 +31,10 @@ inline void expectPhase(const char* api, bool initialized, Phase current, Phase 
         throw Failure(Status::InvalidCall, std::string(api) + ": " + call + " called when " + describePhase(current));
 }
 
+// Throws InvalidCall when a frame is open: `call` changes what every pass of a frame is drawn with.
+inline void expectNoFrame(const char* api, Phase current, const char* call) {
+    if (current != Phase::Idle)
+        throw Failure(Status::InvalidCall, std::string(api) + ": " + call + "() inside a frame");
+}
+
 }  // namespace ssam::core

@@ -3,27 +3,19 @@
 
 #include <cmath>
 
+#include "enum_names.hpp"
 #include "number_text.hpp"
 
 namespace ssam {
 
 const char* maskPrecisionName(MaskPrecision precision) noexcept {
-    switch (precision) {
-        case MaskPrecision::Rgba8: return "rgba8";
-        case MaskPrecision::Rgba16f: return "rgba16f";
-        case MaskPrecision::Rg16f: return "rg16f";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"rgba8", "rgba16f", "rg16f"};
+    return core::enumName<MaskPrecision::Rg16f>(precision, kNames, "?");
 }
 
 const char* depthTestName(DepthTest test) noexcept {
-    switch (test) {
-        case DepthTest::Less: return "less";
-        case DepthTest::LessEqual: return "less-equal";
-        case DepthTest::Greater: return "greater";
-        case DepthTest::GreaterEqual: return "greater-equal";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"less", "less-equal", "greater", "greater-equal"};
+    return core::enumName<DepthTest::GreaterEqual>(test, kNames, "?");
 }
 
 namespace {
@@ -55,11 +47,8 @@ std::string settingsError(const Settings& s) {
 }
 
 const char* presetName(Preset preset) noexcept {
-    switch (preset) {
-        case Preset::Paper: return "paper";
-        case Preset::Measured: return "measured";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"paper", "measured"};
+    return core::enumName<Preset::Measured>(preset, kNames, "?");
 }
 
 std::optional<Preset> parsePreset(std::string_view name) {

@@ -2,34 +2,30 @@
 #include "ssam/core/frame.hpp"
 #include "ssam/core/status.hpp"
 
+#include "enum_names.hpp"
+
 namespace ssam {
 
 const char* statusName(Status status) noexcept {
-    switch (status) {
-        case Status::Ok: return "ok";
-        case Status::InvalidArgument: return "invalid argument";
-        case Status::InvalidCall: return "invalid call";
-        case Status::NoContext: return "no context";
-        case Status::MissingEntryPoint: return "missing entry point";
-        case Status::UnsupportedFeature: return "unsupported feature";
-        case Status::InvalidTexture: return "invalid texture";
-        case Status::IncompleteFramebuffer: return "incomplete framebuffer";
-        case Status::ShaderFailed: return "shader failed";
-        case Status::CallbackFailed: return "callback failed";
-        case Status::OutOfMemory: return "out of memory";
-        case Status::Internal: return "internal error";
-        case Status::DeviceError: return "device error";
-    }
-    return "unknown status";
+    static constexpr const char* kNames[] = {"ok",
+                                             "invalid argument",
+                                             "invalid call",
+                                             "no context",
+                                             "missing entry point",
+                                             "unsupported feature",
+                                             "invalid texture",
+                                             "incomplete framebuffer",
+                                             "shader failed",
+                                             "callback failed",
+                                             "out of memory",
+                                             "internal error",
+                                             "device error"};
+    return core::enumName<Status::DeviceError>(status, kNames, "unknown status");
 }
 
 const char* severityName(Severity severity) noexcept {
-    switch (severity) {
-        case Severity::Info: return "info";
-        case Severity::Warning: return "warning";
-        case Severity::Error: return "error";
-    }
-    return "unknown severity";
+    static constexpr const char* kNames[] = {"info", "warning", "error"};
+    return core::enumName<Severity::Error>(severity, kNames, "unknown severity");
 }
 
 const char* foliagePassName(FoliagePass pass) noexcept { return pass == FoliagePass::Mask ? "mask" : "colour"; }

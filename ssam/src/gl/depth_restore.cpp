@@ -38,12 +38,7 @@ void DepthRestore::saveOpaqueDepth(const GlFunctions& gl, unsigned int source, i
     if (!program_) {
         program_ =
             compileProgram(gl, "ssam::gl depth restore", shaders::kFullscreenVertex.c_str(), restoreFragment().c_str());
-        foliage_ = gl.GetUniformLocation(program_, "u_foliage");
-        mask_ = gl.GetUniformLocation(program_, "u_mask");
-        maskAdd_ = gl.GetUniformLocation(program_, "u_maskAdd");
-        hasMaskAdd_ = gl.GetUniformLocation(program_, "u_hasMaskAdd");
-        maskLerp_ = gl.GetUniformLocation(program_, "u_maskLerp");
-        square_ = gl.GetUniformLocation(program_, "u_squareMask");
+        composite_.locate(gl, program_);
         opaqueDepth_ = gl.GetUniformLocation(program_, "u_opaqueDepth");
         threshold_ = gl.GetUniformLocation(program_, "u_threshold");
         gl.GenFramebuffers(1, &framebuffer_);
@@ -91,12 +86,7 @@ void DepthRestore::restoreWhereMaskIsLow(const GlFunctions& gl, unsigned int tar
     gl.UseProgram(program_);
     gl.ActiveTexture(GL_TEXTURE3);
     gl.BindTexture(GL_TEXTURE_2D, texture_);
-    gl.Uniform1i(foliage_, 1);  // the mask (see kRestoreFragment)
-    gl.Uniform1i(mask_, 1);
-    gl.Uniform1i(maskAdd_, 2);
-    gl.Uniform1i(hasMaskAdd_, hasMaskAdd ? 1 : 0);
-    gl.Uniform1f(maskLerp_, settings.maskLerp);
-    gl.Uniform1i(square_, settings.squareMask ? 1 : 0);
+    composite_.set(gl, 1, hasMaskAdd, settings);  // rt_foliage: the mask (see kRestoreFragment)
     gl.Uniform1i(opaqueDepth_, 3);
     gl.Uniform1f(threshold_, settings.depthMaskThreshold);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);

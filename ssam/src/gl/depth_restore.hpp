@@ -8,6 +8,7 @@
 // opaque depth is copied before the colour pass and written back after the composite wherever
 // the mask is below it: one depth copy and one full-screen depth-only pass, both scissored to
 // the foliage's region.
+#include "shaders.hpp"
 #include "ssam/gl/ssam_gl.hpp"
 
 namespace ssam::gl::detail {
@@ -32,8 +33,8 @@ public:
 private:
     unsigned int program_ = 0, texture_ = 0, framebuffer_ = 0;
     int width_ = 0, height_ = 0, format_ = 0;
-    int foliage_ = -1, mask_ = -1, maskAdd_ = -1, hasMaskAdd_ = -1, maskLerp_ = -1, square_ = -1, opaqueDepth_ = -1,
-        threshold_ = -1;
+    shaders::CompositeInputs composite_;
+    int opaqueDepth_ = -1, threshold_ = -1;
 };
 
 }  // namespace ssam::gl::detail

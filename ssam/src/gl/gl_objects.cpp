@@ -19,6 +19,10 @@ unsigned int compileProgram(const GlFunctions& gl, const std::string& name, cons
     return built.id;
 }
 
+void locateUniforms(const GlFunctions& gl, unsigned int program, std::initializer_list<UniformSlot> slots) {
+    for (const UniformSlot& slot : slots) *slot.location = gl.GetUniformLocation(program, slot.name);
+}
+
 TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what) {
     if (texture == 0 || !gl.IsTexture(texture))
         throw Failure(Status::InvalidTexture, std::string("ssam::gl: ") + what + " " + std::to_string(texture) +

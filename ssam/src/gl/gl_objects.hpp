@@ -4,6 +4,7 @@
 // They call GL only through the host's entry points (program building and status names are the
 // engine backend's header-only ones, over that table). Errors throw Failure (caught at the
 // public API).
+#include <initializer_list>
 #include <string>
 
 namespace ssam::gl::detail {
@@ -13,6 +14,14 @@ struct GlFunctions;
 // Compiles and links; Failure(ShaderFailed) naming the program and stage with the info log.
 unsigned int compileProgram(const GlFunctions& gl, const std::string& name, const char* vertexSource,
                             const char* fragmentSource);
+
+// Where a program's uniform is found: `*location` receives the location of uniform `name` (-1 when
+// the program has no such active uniform, which GL's glUniform* then ignores).
+struct UniformSlot {
+    int* location;
+    const char* name;
+};
+void locateUniforms(const GlFunctions& gl, unsigned int program, std::initializer_list<UniformSlot> slots);
 
 struct TextureInfo {
     int width = 0, height = 0;

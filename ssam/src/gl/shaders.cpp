@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "shaders.hpp"
 
+#include "gl_functions.hpp"
+#include "gl_objects.hpp"
 #include "ssam_glsl.hpp"  // generated from core/glsl/
 
 namespace ssam::gl::shaders {
@@ -70,5 +72,25 @@ const std::string kCompositeFragment = kCompositeHead + R"(
 layout(location = 0) out vec4 o_color;
 void main() { o_color = ssamComposite(ivec2(gl_FragCoord.xy)); }
 )";
+
+void CompositeInputs::locate(const detail::GlFunctions& gl, unsigned int program) {
+    detail::locateUniforms(gl, program,
+                           {{&foliage, "u_foliage"},
+                            {&mask, "u_mask"},
+                            {&maskAdd, "u_maskAdd"},
+                            {&hasMaskAdd, "u_hasMaskAdd"},
+                            {&maskLerp, "u_maskLerp"},
+                            {&square, "u_squareMask"}});
+}
+
+void CompositeInputs::set(const detail::GlFunctions& gl, int foliageUnit, bool withMaskAdd,
+                          const Settings& settings) const {
+    gl.Uniform1i(foliage, foliageUnit);
+    gl.Uniform1i(mask, 1);
+    gl.Uniform1i(maskAdd, 2);
+    gl.Uniform1i(hasMaskAdd, withMaskAdd ? 1 : 0);
+    gl.Uniform1f(maskLerp, settings.maskLerp);
+    gl.Uniform1i(square, settings.squareMask ? 1 : 0);
+}
 
 }  // namespace ssam::gl::shaders

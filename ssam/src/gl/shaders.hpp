@@ -5,6 +5,10 @@
 
 #include "ssam/gl/ssam_gl.hpp"
 
+namespace ssam::gl::detail {
+struct GlFunctions;
+}
+
 namespace ssam::gl::shaders {
 
 // Shared by the mask and colour programs, reading the host's vertex arrays at `locations`.
@@ -16,5 +20,15 @@ extern const std::string kFullscreenVertex;  // one triangle over the viewport
 // the mask starts with.
 extern const std::string kCompositeHead;
 extern const std::string kCompositeFragment;  // Listing 3.2 as (foliage, mask) for SRC_ALPHA blending
+
+// The uniforms kCompositeHead declares, in every program that starts with it (the composite and
+// the depth restore).
+struct CompositeInputs {
+    int foliage = -1, mask = -1, maskAdd = -1, hasMaskAdd = -1, maskLerp = -1, square = -1;
+    void locate(const detail::GlFunctions& gl, unsigned int program);
+    // rt_foliage read from texture unit `foliageUnit`, the mask from unit 1 and the ADD mask (where
+    // `hasMaskAdd`) from unit 2; the settings' mask lerp and squaring. The program must be in use.
+    void set(const detail::GlFunctions& gl, int foliageUnit, bool hasMaskAdd, const Settings& settings) const;
+};
 
 }  // namespace ssam::gl::shaders

@@ -135,15 +135,16 @@ struct FoliageProgramObject {
     GLint viewProj = -1, model = -1, factor = -1, hasTexture = -1, sampler = -1, alphaReference = -1, towardLight = -1,
           lightColor = -1, ambient = -1;
     void locate(const GlFunctions& gl) {
-        viewProj = gl.GetUniformLocation(id, "u_viewProj");
-        model = gl.GetUniformLocation(id, "u_model");
-        factor = gl.GetUniformLocation(id, "u_baseColorFactor");
-        hasTexture = gl.GetUniformLocation(id, "u_hasTexture");
-        sampler = gl.GetUniformLocation(id, "u_baseColor");
-        alphaReference = gl.GetUniformLocation(id, "u_alphaReference");
-        towardLight = gl.GetUniformLocation(id, "u_towardLight");
-        lightColor = gl.GetUniformLocation(id, "u_lightColor");
-        ambient = gl.GetUniformLocation(id, "u_ambient");
+        detail::locateUniforms(gl, id,
+                               {{&viewProj, "u_viewProj"},
+                                {&model, "u_model"},
+                                {&factor, "u_baseColorFactor"},
+                                {&hasTexture, "u_hasTexture"},
+                                {&sampler, "u_baseColor"},
+                                {&alphaReference, "u_alphaReference"},
+                                {&towardLight, "u_towardLight"},
+                                {&lightColor, "u_lightColor"},
+                                {&ambient, "u_ambient"}});
     }
 };
 
@@ -161,8 +162,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
 
     FoliageProgramObject mask, color;
     GLuint composite = 0;
-    GLint compositeFoliage = -1, compositeMask = -1, compositeMaskAdd = -1, compositeHasMaskAdd = -1,
-          compositeMaskLerp = -1, compositeSquare = -1;
+    shaders::CompositeInputs compositeInputs;
     GLuint emptyVao = 0;
     detail::FrameTargets targets;
     detail::DepthRestore depthRestore;  // Settings::depthMaskThreshold > 0 only
@@ -193,7 +193,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
     }
 
     void initialize(const detail::Loader& load, const Settings& wanted, const AttributeLocations& wantedAttributes) {
-        if (phase != Phase::Idle) throw Failure(Status::InvalidCall, "ssam::gl: initialize() inside a frame");
+        core::expectNoFrame("ssam::gl", phase, "initialize");
         deleteObjects();
         validate(wanted);
         validateAttributes(wantedAttributes);
@@ -215,12 +215,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
             deleteObjects();
             throw;
         }
-        compositeFoliage = gl.GetUniformLocation(composite, "u_foliage");
-        compositeMask = gl.GetUniformLocation(composite, "u_mask");
-        compositeMaskAdd = gl.GetUniformLocation(composite, "u_maskAdd");
-        compositeHasMaskAdd = gl.GetUniformLocation(composite, "u_hasMaskAdd");
-        compositeMaskLerp = gl.GetUniformLocation(composite, "u_maskLerp");
-        compositeSquare = gl.GetUniformLocation(composite, "u_squareMask");
+        compositeInputs.locate(gl, composite);
         message(Severity::Info, "ssam::gl " SSAM_VERSION_STRING " initialised on " + context);
     }
 
@@ -412,12 +407,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
             gl.ActiveTexture(GL_TEXTURE0 + unit);
             gl.BindTexture(GL_TEXTURE_2D, inputs[unit] ? inputs[unit] : targets.mask());
         }
-        gl.Uniform1i(compositeFoliage, 0);
-        gl.Uniform1i(compositeMask, 1);
-        gl.Uniform1i(compositeMaskAdd, 2);
-        gl.Uniform1i(compositeHasMaskAdd, targets.maskAdd() ? 1 : 0);
-        gl.Uniform1f(compositeMaskLerp, settings.maskLerp);
-        gl.Uniform1i(compositeSquare, settings.squareMask ? 1 : 0);
+        compositeInputs.set(gl, 0, targets.maskAdd() != 0, settings);
         gl.BindVertexArray(emptyVao);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
         if (passes.restoresDepth)
@@ -468,15 +458,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         program.alphaReference = pass.alphaReference;
         program.gl = &gl;
         gl.ActiveTexture(GL_TEXTURE0);
-        try {
-            draw(user, program);
-        } catch (const std::exception& e) {
-            throw Failure(Status::CallbackFailed, std::string("ssam::gl: the draw callback threw in the ") +
-                                                      foliagePassName(pass.pass) + " pass: " + e.what());
-        } catch (...) {
-            throw Failure(Status::CallbackFailed, std::string("ssam::gl: the draw callback threw in the ") +
-                                                      foliagePassName(pass.pass) + " pass (not a std::exception)");
-        }
+        core::runDrawCallback("ssam::gl", pass.pass, [&] { draw(user, program); });
     }
 };
 
@@ -492,6 +474,15 @@ template <class ImplPointer, class Step>
 Status runStep(ImplPointer& impl, Step&& step) noexcept {
     if (!impl) return Status::InvalidCall;
     return impl->run([&] { step(*impl); });
+}
+
+// A begin...Pass call: the pass's PassInfo into `info` (where given) once `begin(impl)` opened it.
+template <class ImplPointer, class Begin>
+Status runBeginPass(ImplPointer& impl, PassInfo* info, Begin&& begin) noexcept {
+    return runStep(impl, [&](auto& s) {
+        const PassInfo pass = begin(s);
+        if (info) *info = pass;
+    });
 }
 
 }  // namespace
@@ -534,7 +525,7 @@ Status ScreenSpaceAlphaMaskGl::release() noexcept { return impl_ ? impl_->releas
 
 Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
     return runStep(impl_, [&](Impl& s) {
-        if (s.phase != Phase::Idle) throw Failure(Status::InvalidCall, "ssam::gl: setSettings() inside a frame");
+        core::expectNoFrame("ssam::gl", s.phase, "setSettings");
         validate(settings);
         if (s.initialized && settings.maskPrecision == MaskPrecision::Rg16f && !s.gl.perBufferBlend)
             throw Failure(Status::UnsupportedFeature, Impl::kRg16fNeedsPerBufferBlend);
@@ -545,8 +536,7 @@ Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
 
 Status ScreenSpaceAlphaMaskGl::setAttributeLocations(const AttributeLocations& attributes) noexcept {
     return runStep(impl_, [&](Impl& s) {
-        if (s.phase != Phase::Idle)
-            throw Failure(Status::InvalidCall, "ssam::gl: setAttributeLocations() inside a frame");
+        core::expectNoFrame("ssam::gl", s.phase, "setAttributeLocations");
         validateAttributes(attributes);
         if (s.initialized && !sameLocations(attributes, s.attributes)) {
             // The new programs first: if they fail, the ones in use stay.
@@ -608,10 +598,7 @@ Status ScreenSpaceAlphaMaskGl::beginFrame(const FrameDesc& frame, FrameReport* r
 }
 
 Status ScreenSpaceAlphaMaskGl::beginMaskPass(PassInfo* info) noexcept {
-    return runStep(impl_, [&](Impl& s) {
-        const PassInfo pass = s.beginMaskPass();
-        if (info) *info = pass;
-    });
+    return runBeginPass(impl_, info, [](Impl& s) { return s.beginMaskPass(); });
 }
 
 Status ScreenSpaceAlphaMaskGl::endMaskPass() noexcept {
@@ -619,10 +606,7 @@ Status ScreenSpaceAlphaMaskGl::endMaskPass() noexcept {
 }
 
 Status ScreenSpaceAlphaMaskGl::beginColorPass(PassInfo* info) noexcept {
-    return runStep(impl_, [&](Impl& s) {
-        const PassInfo pass = s.beginColorPass();
-        if (info) *info = pass;
-    });
+    return runBeginPass(impl_, info, [](Impl& s) { return s.beginColorPass(); });
 }
 
 Status ScreenSpaceAlphaMaskGl::endColorPass() noexcept {

@@ -363,15 +363,7 @@ void ScreenSpaceAlphaMaskVk::Impl::drawBuiltIn(const PassInfo& pass, DrawFoliage
     program.layout = shared.foliageLayout;
     program.alphaReference = pass.alphaReference;
     program.recorder = &recorder;
-    try {
-        draw(user, program);
-    } catch (const std::exception& e) {
-        throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
-                                                  foliagePassName(pass.pass) + " pass: " + e.what());
-    } catch (...) {
-        throw Failure(Status::CallbackFailed, std::string("ssam::vk: the draw callback threw in the ") +
-                                                  foliagePassName(pass.pass) + " pass (not a std::exception)");
-    }
+    core::runDrawCallback("ssam::vk", pass.pass, [&] { draw(user, program); });
 }
 
 // 3. Composite (§3.5.4, Listing 3.2) onto the host's colour.

@@ -48,10 +48,42 @@ void MemorySource::release(Memory& memory) const noexcept {
     memory = {};
 }
 
+namespace {
+
+// `make(out)` creates a resource into `out`; when it throws, what it made so far is destroyed.
+template <class Resource, class Make>
+Resource createOrUndo(const VkFunctions& vk, const MemorySource& memory, Make&& make) {
+    Resource out;
+    try {
+        make(out);
+    } catch (...) {
+        destroy(vk, memory, out);
+        throw;
+    }
+    return out;
+}
+
+// Device-local memory for the resource, bound to it; kept in `out` first, so that createOrUndo
+// gives it back when binding fails.
+void allocateAndBind(const VkFunctions& vk, const MemorySource& memory, Image& out, const char* what) {
+    VkMemoryRequirements requirements;
+    vk.GetImageMemoryRequirements(vk.device, out.image, &requirements);
+    out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+    check(vk.BindImageMemory(vk.device, out.image, out.memory.memory, out.memory.offset), "vkBindImageMemory");
+}
+
+void allocateAndBind(const VkFunctions& vk, const MemorySource& memory, Buffer& out, const char* what) {
+    VkMemoryRequirements requirements;
+    vk.GetBufferMemoryRequirements(vk.device, out.buffer, &requirements);
+    out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
+    check(vk.BindBufferMemory(vk.device, out.buffer, out.memory.memory, out.memory.offset), "vkBindBufferMemory");
+}
+
+}  // namespace
+
 Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat format, std::uint32_t width,
                   std::uint32_t height, VkImageUsageFlags usage, const char* what, VkImageAspectFlags aspect) {
-    Image out;
-    try {
+    return createOrUndo<Image>(vk, memory, [&](Image& out) {
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.imageType = VK_IMAGE_TYPE_2D;
         info.format = format;
@@ -65,10 +97,7 @@ Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat fo
         info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
         check(vk.CreateImage(vk.device, &info, vk.allocator, &out.image),
               (std::string("vkCreateImage, ") + what).c_str());
-        VkMemoryRequirements requirements;
-        vk.GetImageMemoryRequirements(vk.device, out.image, &requirements);
-        out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
-        check(vk.BindImageMemory(vk.device, out.image, out.memory.memory, out.memory.offset), "vkBindImageMemory");
+        allocateAndBind(vk, memory, out, what);
         VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = out.image;
         view.viewType = VK_IMAGE_VIEW_TYPE_2D;
@@ -76,11 +105,7 @@ Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat fo
         view.subresourceRange = {aspect, 0, 1, 0, 1};
         check(vk.CreateImageView(vk.device, &view, vk.allocator, &out.view),
               (std::string("vkCreateImageView, ") + what).c_str());
-    } catch (...) {
-        destroy(vk, memory, out);
-        throw;
-    }
-    return out;
+    });
 }
 
 void destroy(const VkFunctions& vk, const MemorySource& memory, Image& image) noexcept {
@@ -92,23 +117,15 @@ void destroy(const VkFunctions& vk, const MemorySource& memory, Image& image) no
 
 Buffer createBuffer(const VkFunctions& vk, const MemorySource& memory, VkDeviceSize size, VkBufferUsageFlags usage,
                     const char* what) {
-    Buffer out;
-    try {
+    return createOrUndo<Buffer>(vk, memory, [&](Buffer& out) {
         VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
         info.size = size;
         info.usage = usage;
         info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
         check(vk.CreateBuffer(vk.device, &info, vk.allocator, &out.buffer),
               (std::string("vkCreateBuffer, ") + what).c_str());
-        VkMemoryRequirements requirements;
-        vk.GetBufferMemoryRequirements(vk.device, out.buffer, &requirements);
-        out.memory = memory.allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
-        check(vk.BindBufferMemory(vk.device, out.buffer, out.memory.memory, out.memory.offset), "vkBindBufferMemory");
-    } catch (...) {
-        destroy(vk, memory, out);
-        throw;
-    }
-    return out;
+        allocateAndBind(vk, memory, out, what);
+    });
 }
 
 void destroy(const VkFunctions& vk, const MemorySource& memory, Buffer& buffer) noexcept {

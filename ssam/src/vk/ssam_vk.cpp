@@ -257,18 +257,30 @@ void ScreenSpaceAlphaMaskVk::release() noexcept {
     if (impl_) impl_->releaseObjects();
 }
 
+namespace {
+
+// A call that changes what every pass of a frame is drawn with: `change(impl)`, refused
+// (InvalidCall) on a moved-from object or inside a frame.
+template <class Change>
+Status changeOutsideFrame(ScreenSpaceAlphaMaskVk::Impl* impl, const char* call, Change&& change) noexcept {
+    if (!impl) return Status::InvalidCall;
+    return impl->run([&] {
+        core::expectNoFrame("ssam::vk", impl->phase, call);
+        change(*impl);
+    });
+}
+
+}  // namespace
+
 Status ScreenSpaceAlphaMaskVk::setSettings(const Settings& settings) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] {
-        if (impl_->phase != detail::Phase::Idle)
-            throw Failure(Status::InvalidCall, "ssam::vk: setSettings() inside a frame");
+    return changeOutsideFrame(impl_.get(), "setSettings", [&](Impl& s) {
         validate(settings);
-        if (impl_->initialized) checkFeatures(settings, impl_->device);
-        if (settings.depthTest != impl_->settings.depthTest) ++impl_->settingsVersion;  // the pipelines' depth test
+        if (s.initialized) checkFeatures(settings, s.device);
+        if (settings.depthTest != s.settings.depthTest) ++s.settingsVersion;  // the pipelines' depth test
         // What PipelineState holds (way b): the depth test and the mask's format.
-        if (settings.depthTest != impl_->settings.depthTest || settings.maskPrecision != impl_->settings.maskPrecision)
-            ++impl_->pipelineStateVersion;
-        impl_->settings = settings;
+        if (settings.depthTest != s.settings.depthTest || settings.maskPrecision != s.settings.maskPrecision)
+            ++s.pipelineStateVersion;
+        s.settings = settings;
     });
 }
 
@@ -278,13 +290,10 @@ const Settings& ScreenSpaceAlphaMaskVk::settings() const noexcept {
 }
 
 Status ScreenSpaceAlphaMaskVk::setVertexLayout(const VertexLayout& vertexLayout) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] {
-        if (impl_->phase != detail::Phase::Idle)
-            throw Failure(Status::InvalidCall, "ssam::vk: setVertexLayout() inside a frame");
+    return changeOutsideFrame(impl_.get(), "setVertexLayout", [&](Impl& s) {
         validate(vertexLayout);
-        if (!sameLayout(vertexLayout, impl_->vertexLayout)) ++impl_->settingsVersion;  // new pipelines
-        impl_->vertexLayout = vertexLayout;
+        if (!sameLayout(vertexLayout, s.vertexLayout)) ++s.settingsVersion;  // new pipelines
+        s.vertexLayout = vertexLayout;
     });
 }
 
@@ -330,31 +339,35 @@ Status ScreenSpaceAlphaMaskVk::beginFrame(const FrameDesc& frame, FrameReport* r
     });
 }
 
-Status ScreenSpaceAlphaMaskVk::beginMaskPass(PassInfo* info) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] {
-        const PassInfo pass = impl_->beginFoliagePass(FoliagePass::Mask);
+namespace {
+
+// begin...Pass: the pass's PassInfo into `info` (where given); InvalidCall on a moved-from object.
+Status beginFoliagePass(ScreenSpaceAlphaMaskVk::Impl* impl, FoliagePass foliagePass, PassInfo* info) noexcept {
+    if (!impl) return Status::InvalidCall;
+    return impl->run([&] {
+        const PassInfo pass = impl->beginFoliagePass(foliagePass);
         if (info) *info = pass;
     });
 }
 
-Status ScreenSpaceAlphaMaskVk::endMaskPass() noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->endFoliagePass(FoliagePass::Mask); });
+Status endFoliagePass(ScreenSpaceAlphaMaskVk::Impl* impl, FoliagePass foliagePass) noexcept {
+    if (!impl) return Status::InvalidCall;
+    return impl->run([&] { impl->endFoliagePass(foliagePass); });
 }
+
+}  // namespace
+
+Status ScreenSpaceAlphaMaskVk::beginMaskPass(PassInfo* info) noexcept {
+    return beginFoliagePass(impl_.get(), FoliagePass::Mask, info);
+}
+
+Status ScreenSpaceAlphaMaskVk::endMaskPass() noexcept { return endFoliagePass(impl_.get(), FoliagePass::Mask); }
 
 Status ScreenSpaceAlphaMaskVk::beginColorPass(PassInfo* info) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] {
-        const PassInfo pass = impl_->beginFoliagePass(FoliagePass::Color);
-        if (info) *info = pass;
-    });
+    return beginFoliagePass(impl_.get(), FoliagePass::Color, info);
 }
 
-Status ScreenSpaceAlphaMaskVk::endColorPass() noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->endFoliagePass(FoliagePass::Color); });
-}
+Status ScreenSpaceAlphaMaskVk::endColorPass() noexcept { return endFoliagePass(impl_.get(), FoliagePass::Color); }
 
 Status ScreenSpaceAlphaMaskVk::composite() noexcept {
     if (!impl_) return Status::InvalidCall;

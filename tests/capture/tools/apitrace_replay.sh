@@ -9,6 +9,8 @@
 # report no GL error or warning. Exits 77 (ctest: skipped) only where apitrace, its EGL wrapper
 # or eglretrace is not installed (Debian: apitrace, apitrace-tracers; `make deps`), or where the
 # example finds no OpenGL 3.3 context (its own 77).
+# shellcheck source=tests/capture/tools/replay_checks.sh
+. "$(dirname "$0")/replay_checks.sh"
 example=$1 check=$2 dir=$3
 apitrace=$(command -v apitrace) && eglretrace=$(command -v eglretrace) || {
   echo "apitrace or eglretrace not installed (Debian: apitrace; make deps): skipped"
@@ -35,17 +37,7 @@ call=$(apitrace dump --color=never "$trace" | sed -n 's/^\([0-9][0-9]*\) glReadP
 echo "the program reads its frame back at call $call"
 
 # Replay, headless: a snapshot (RGBA PNG) after that call.
-log=$dir/eglretrace.log
-WAFFLE_PLATFORM=surfaceless_egl "$eglretrace" --headless --snapshot-alpha --call-nos=no -S "$call" \
-  -s "$dir/replayed-" "$trace" >"$log" 2>&1
-rc=$?
-cat "$log"
-[ $rc -eq 0 ] || { echo "FAIL: eglretrace exited $rc"; exit 1; }
-if grep -Eiq '(^|[^a-z])(error|warning):' "$log"; then
-  echo "FAIL: eglretrace reported errors or warnings (the trace does not replay as recorded)"
-  exit 1
-fi
-replayed=$dir/replayed-0000000000.png
-[ -f "$replayed" ] || { echo "FAIL: eglretrace wrote no snapshot $replayed"; exit 1; }
-"$check" --same "$dir/frame.png" "$replayed" || exit 1
-exec "$check" "$replayed"
+replay eglretrace "$dir/eglretrace.log" -Eiq '(^|[^a-z])(error|warning):' \
+  env WAFFLE_PLATFORM=surfaceless_egl "$eglretrace" --headless --snapshot-alpha --call-nos=no -S "$call" \
+  -s "$dir/replayed-" "$trace"
+same_frame eglretrace "$dir/replayed-0000000000.png" "$check" "$dir/frame.png"

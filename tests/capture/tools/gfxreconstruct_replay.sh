@@ -18,6 +18,8 @@
 # with --validation, which runs beside the capture layer: app -> capture -> validation -> driver).
 # Exits 77 (ctest: skipped) only where gfxreconstruct or xvfb-run is not installed (Debian:
 # gfxreconstruct, xvfb; `make deps`), or where the example finds no Vulkan device (its own 77).
+# shellcheck source=tests/capture/tools/replay_checks.sh
+. "$(dirname "$0")/replay_checks.sh"
 example=$1 check=$2 dir=$3
 if [ "${4:-}" != --on-display ]; then
   command -v gfxrecon-replay >/dev/null || {
@@ -46,16 +48,7 @@ capture=$dir/ssam_vk_frame_3.gfxr  # the layer names a trimmed capture by its fr
 [ -s "$capture" ] || { echo "FAIL: no capture $capture (is VK_LAYER_LUNARG_gfxreconstruct installed?)"; exit 1; }
 
 # Replay: the trimmed capture holds one frame, its screenshot is frame 1.
-log=$dir/replay.log
-gfxrecon-replay --validate --use-captured-swapchain-indices --screenshots 1 --screenshot-dir "$dir" --screenshot-prefix replayed "$capture" >"$log" 2>&1
-rc=$?
-cat "$log"
-[ $rc -eq 0 ] || { echo "FAIL: gfxrecon-replay exited $rc"; exit 1; }
-if grep -Eq '\] (ERROR|FATAL)|Validation (Error|Warning)' "$log"; then
-  echo "FAIL: gfxrecon-replay reported errors or validation messages"
-  exit 1
-fi
-replayed=$dir/replayed_frame_1.bmp
-[ -f "$replayed" ] || { echo "FAIL: gfxrecon-replay wrote no screenshot $replayed"; exit 1; }
-"$check" --same "$dir/frame.png" "$replayed" || exit 1
-exec "$check" "$replayed"
+replay gfxrecon-replay "$dir/replay.log" -Eq '\] (ERROR|FATAL)|Validation (Error|Warning)' \
+  gfxrecon-replay --validate --use-captured-swapchain-indices --screenshots 1 --screenshot-dir "$dir" \
+  --screenshot-prefix replayed "$capture"
+same_frame gfxrecon-replay "$dir/replayed_frame_1.bmp" "$check" "$dir/frame.png"

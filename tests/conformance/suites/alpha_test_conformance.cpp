@@ -48,8 +48,7 @@ TEST_P(AlphaTestConformance, EveryFuncAndFailMode) {
                         case AlphaFailMode::RgbOnly: a = z = false; break;
                     }
                 }
-                const render::Readback c = gfx().readback(color);
-                const render::Readback d = gfx().readback(depth);
+                const auto [c, d] = readBoth(color, depth);
                 for (int y = 0; y < kSize; ++y) {
                     for (int x = 0; x < kSize; ++x) {
                         for (int ch = 0; ch < 3; ++ch)
@@ -113,8 +112,7 @@ TEST_P(AlphaTestConformance, DroppedTestRendersTheSame) {
             drawFlat(pipeline, quad, 6, {1.0f, 0.0f, 1.0f, 0.2f});
         },
         depth, 1.0f);
-    const render::Readback c = gfx().readback(color);
-    const render::Readback d = gfx().readback(depth);
+    const auto [c, d] = readBoth(color, depth);
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
             EXPECT_EQ(code(c.at(x, y, 0)), 255);

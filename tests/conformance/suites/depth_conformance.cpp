@@ -26,8 +26,7 @@ TEST_P(DepthConformance, EveryFuncWithWriteOnAndOff) {
                     },
                     depth, stored);
                 const bool passes = referenceCompare(func, z, stored);
-                const render::Readback c = gfx().readback(color);
-                const render::Readback d = gfx().readback(depth);
+                const auto [c, d] = readBoth(color, depth);
                 for (int y = 0; y < kSize; ++y)
                     for (int x = 0; x < kSize; ++x) {
                         ASSERT_EQ(c.at(x, y, 0), passes ? 1.0f : 0.0f)
@@ -102,8 +101,7 @@ TEST_P(DepthConformance, SlopedDepthInterpolation) {
             drawFlat(pipeline, sloped, 6, {1, 0, 0, 1});
         },
         depth, 1.0f);
-    const render::Readback c = gfx().readback(color);
-    const render::Readback d = gfx().readback(depth);
+    const auto [c, d] = readBoth(color, depth);
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
             const float expected = (float(x) + 0.5f) / kSize;
@@ -165,8 +163,7 @@ TEST_P(DepthConformance, LoadKeepsDepthAcrossPasses) {
             drawFlat(pipeline, full, 6, {0, 1, 0, 1});
         },
         depth, std::nullopt);
-    const render::Readback c = gfx().readback(color);
-    const render::Readback d = gfx().readback(depth);
+    const auto [c, d] = readBoth(color, depth);
     for (int x = 0; x < kSize; ++x) {
         EXPECT_EQ(c.at(x, 3, 1), x < kSize / 2 ? 0.0f : 1.0f) << x;
         EXPECT_EQ(d.at(x, 3, 0), x < kSize / 2 ? 0.3f : 0.6f) << x;

@@ -48,17 +48,14 @@ if(EXAMPLE_SOURCE)
     ${consumer_cmake_flags})
   expect_clean_configure("${run_output}")
   run(${CMAKE_COMMAND} --build ${EXAMPLE_BUILD})
-  foreach(example ssam_gl_embedding ssam_gl_host_shaders)
-    execute_process(COMMAND ${EXAMPLE_BUILD}/${example} --headless --out ${EXAMPLE_BUILD}/${example}.png
-                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    message("${out}")
-    if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)
-      message(FATAL_ERROR "the installed-package example ${example} failed (${rc}):\n${err}")
+  # The GL examples headless; the Vulkan examples (ssam::vk), built by the same project when the
+  # package has the vk component, have no window to leave.
+  foreach(example ssam_gl_embedding ssam_gl_host_shaders ssam_vk_embedding ssam_vk_host_shaders)
+    set(flags --out ${EXAMPLE_BUILD}/${example}.png)
+    if(example MATCHES "^ssam_gl_")
+      list(PREPEND flags --headless)
     endif()
-  endforeach()
-  # The Vulkan examples (ssam::vk), built by the same project when the package has the vk component.
-  foreach(example ssam_vk_embedding ssam_vk_host_shaders)
-    execute_process(COMMAND ${EXAMPLE_BUILD}/${example} --out ${EXAMPLE_BUILD}/${example}.png
+    execute_process(COMMAND ${EXAMPLE_BUILD}/${example} ${flags}
                     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message("${out}")
     if(NOT rc EQUAL 0 AND NOT rc EQUAL 77)

@@ -10,6 +10,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -26,6 +27,7 @@ using engine::render::ResourceLifetime;
 using engine::render::TextureAllocator;
 using engine::render::FrameGraphTextureDesc;
 using ssam::testing::errorOf;
+using testing::AllOf;
 using testing::ElementsAre;
 using testing::HasSubstr;
 using testing::IsEmpty;
@@ -38,43 +40,42 @@ struct Output {
     FrameGraphTexture texture;
 };
 
+// A pass that reads `inputs`, then declares the rest with `declare(builder, out)`; running, it
+// records its name in `events`.
+template <class Declare>
+const Output& recordedPass(FrameGraph& fg, Events& events, const std::string& pass,
+                           const std::vector<FrameGraphTexture>& inputs, Declare&& declare) {
+    return fg.addPass<Output>(
+        pass,
+        [&](FrameGraph::Builder& builder, Output& out) {
+            for (FrameGraphTexture input : inputs) builder.read(input);
+            declare(builder, out);
+        },
+        [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); });
+}
+
 // A pass that reads `inputs` and writes a texture `texture` it creates.
 FrameGraphTexture produce(FrameGraph& fg, Events& events, const std::string& pass, const std::string& texture,
                           const std::vector<FrameGraphTexture>& inputs = {}) {
-    return fg
-        .addPass<Output>(
-            pass,
-            [&](FrameGraph::Builder& builder, Output& out) {
-                for (FrameGraphTexture input : inputs) builder.read(input);
-                out.texture = builder.write(builder.create(texture, kDesc));
-            },
-            [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); })
+    return recordedPass(fg, events, pass, inputs,
+                        [&](FrameGraph::Builder& builder, Output& out) {
+                            out.texture = builder.write(builder.create(texture, kDesc));
+                        })
         .texture;
 }
 
 // A pass that reads `inputs` and draws into `target` on top of what is there.
 FrameGraphTexture modify(FrameGraph& fg, Events& events, const std::string& pass, FrameGraphTexture target,
                          const std::vector<FrameGraphTexture>& inputs = {}) {
-    return fg
-        .addPass<Output>(
-            pass,
-            [&](FrameGraph::Builder& builder, Output& out) {
-                for (FrameGraphTexture input : inputs) builder.read(input);
-                out.texture = builder.write(builder.read(target));
-            },
-            [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); })
+    return recordedPass(
+               fg, events, pass, inputs,
+               [&](FrameGraph::Builder& builder, Output& out) { out.texture = builder.write(builder.read(target)); })
         .texture;
 }
 
 // A side-effect pass (present, capture) that reads `inputs`.
 void present(FrameGraph& fg, Events& events, const std::string& pass, const std::vector<FrameGraphTexture>& inputs) {
-    fg.addPass<Output>(
-        pass,
-        [&](FrameGraph::Builder& builder, Output&) {
-            for (FrameGraphTexture input : inputs) builder.read(input);
-            builder.sideEffect();
-        },
-        [&events, pass](const FrameGraph::Resources&, const Output&) { events.push_back(pass); });
+    recordedPass(fg, events, pass, inputs, [](FrameGraph::Builder& builder, Output&) { builder.sideEffect(); });
 }
 
 // Hands out textures 100, 101, ... and records "alloc <name>" / "release <name>".
@@ -301,36 +302,31 @@ TEST(FrameGraphEmptyPass, SsamWithFoliageRunsEveryPass) {
 
 // --- validation ----------------------------------------------------------------------
 
-TEST(FrameGraphErrors, ReadingATextureNothingWroteNamesPassAndTexture) {
-    FrameGraph fg;
-    const std::string message = errorOf([&] {
+// The error a pass whose setup is `setup` (and whose execute does nothing) is refused with.
+std::string setupError(FrameGraph& fg, const char* pass, const std::function<void(FrameGraph::Builder&)>& setup) {
+    return errorOf([&] {
         fg.addPass<Output>(
-            "blur",
-            [](FrameGraph::Builder& builder, Output&) {
-                builder.read(builder.create("scratch", kDesc));
-                builder.sideEffect();
-            },
+            pass, [&](FrameGraph::Builder& builder, Output&) { setup(builder); },
             [](const FrameGraph::Resources&, const Output&) {});
     });
-    EXPECT_THAT(message, HasSubstr("'blur'"));
-    EXPECT_THAT(message, HasSubstr("'scratch'"));
-    EXPECT_THAT(message, HasSubstr("no pass has written"));
+}
+
+TEST(FrameGraphErrors, ReadingATextureNothingWroteNamesPassAndTexture) {
+    FrameGraph fg;
+    const std::string message = setupError(fg, "blur", [](FrameGraph::Builder& builder) {
+        builder.read(builder.create("scratch", kDesc));
+        builder.sideEffect();
+    });
+    EXPECT_THAT(message, AllOf(HasSubstr("'blur'"), HasSubstr("'scratch'"), HasSubstr("no pass has written")));
 }
 
 TEST(FrameGraphErrors, ReadingOwnOutputIsACycle) {
     FrameGraph fg;
-    const std::string message = errorOf([&] {
-        fg.addPass<Output>(
-            "feedback",
-            [](FrameGraph::Builder& builder, Output&) {
-                const FrameGraphTexture written = builder.write(builder.create("history", kDesc));
-                builder.read(written);
-            },
-            [](const FrameGraph::Resources&, const Output&) {});
+    const std::string message = setupError(fg, "feedback", [](FrameGraph::Builder& builder) {
+        const FrameGraphTexture written = builder.write(builder.create("history", kDesc));
+        builder.read(written);
     });
-    EXPECT_THAT(message, HasSubstr("'feedback'"));
-    EXPECT_THAT(message, HasSubstr("'history'"));
-    EXPECT_THAT(message, HasSubstr("cycle"));
+    EXPECT_THAT(message, AllOf(HasSubstr("'feedback'"), HasSubstr("'history'"), HasSubstr("cycle")));
 }
 
 TEST(FrameGraphErrors, StaleVersionIsRejectedNamingTheNewerWriter) {
@@ -339,9 +335,7 @@ TEST(FrameGraphErrors, StaleVersionIsRejectedNamingTheNewerWriter) {
     const FrameGraphTexture v1 = produce(fg, events, "opaque", "color");
     modify(fg, events, "fog", v1);  // color is now at version 2
     const std::string message = errorOf([&] { present(fg, events, "present", {v1}); });
-    EXPECT_THAT(message, HasSubstr("'present'"));
-    EXPECT_THAT(message, HasSubstr("'color' version 1"));
-    EXPECT_THAT(message, HasSubstr("'fog'"));
+    EXPECT_THAT(message, AllOf(HasSubstr("'present'"), HasSubstr("'color' version 1"), HasSubstr("'fog'")));
 }
 
 TEST(FrameGraphErrors, InvalidHandleAndDuplicateNamesAndLateChangesAreRejected) {
@@ -402,8 +396,7 @@ TEST(FrameGraphErrors, ExecuteMayOnlyUseDeclaredTextures) {
         },
         [&](const FrameGraph::Resources& resources, const Output&) { (void)resources.get(color); });
     const std::string message = errorOf([&] { fg.execute(recordingAllocator(events)); });
-    EXPECT_THAT(message, HasSubstr("'present'"));
-    EXPECT_THAT(message, HasSubstr("'color'"));
+    EXPECT_THAT(message, AllOf(HasSubstr("'present'"), HasSubstr("'color'")));
     // The failed frame still released everything it allocated.
     EXPECT_THAT(events, ElementsAre("alloc color", "opaque", "alloc other", "other", "release color", "release other"));
 }
@@ -497,21 +490,32 @@ TEST(FrameGraphExecute, ImportedTextureIsReadableAndNeverAllocated) {
 
 // --- transient lifetimes -------------------------------------------------------------
 
+// A chain A (t1) -> B (t2) -> C (t3), presented by D, which also reads t1; and a pass "unused"
+// (t4, from t1) that nothing reads.
+struct Chain {
+    FrameGraphTexture t1, t2, t3, unused;
+};
+Chain addChain(FrameGraph& fg, Events& events) {
+    Chain c;
+    c.t1 = produce(fg, events, "A", "t1");
+    c.t2 = produce(fg, events, "B", "t2", {c.t1});
+    c.t3 = produce(fg, events, "C", "t3", {c.t2});
+    c.unused = produce(fg, events, "unused", "t4", {c.t1});
+    present(fg, events, "D", {c.t3, c.t1});
+    return c;
+}
+
 TEST(FrameGraphLifetime, TransientsLiveFromFirstToLastUser) {
     FrameGraph fg;
     Events events;
-    const FrameGraphTexture t1 = produce(fg, events, "A", "t1");
-    const FrameGraphTexture t2 = produce(fg, events, "B", "t2", {t1});
-    const FrameGraphTexture t3 = produce(fg, events, "C", "t3", {t2});
-    const FrameGraphTexture unused = produce(fg, events, "unused", "t4", {t1});
-    present(fg, events, "D", {t3, t1});
+    const Chain chain = addChain(fg, events);
 
     fg.execute(recordingAllocator(events));
 
-    EXPECT_EQ(fg.lifetime(t1), (ResourceLifetime{0, 3}));
-    EXPECT_EQ(fg.lifetime(t2), (ResourceLifetime{1, 2}));
-    EXPECT_EQ(fg.lifetime(t3), (ResourceLifetime{2, 3}));
-    EXPECT_FALSE(fg.lifetime(unused).has_value());
+    EXPECT_EQ(fg.lifetime(chain.t1), (ResourceLifetime{0, 3}));
+    EXPECT_EQ(fg.lifetime(chain.t2), (ResourceLifetime{1, 2}));
+    EXPECT_EQ(fg.lifetime(chain.t3), (ResourceLifetime{2, 3}));
+    EXPECT_FALSE(fg.lifetime(chain.unused).has_value());
     EXPECT_THAT(events, ElementsAre("alloc t1", "A", "alloc t2", "B", "alloc t3", "C", "release t2", "D", "release t1",
                                     "release t3"));
 }
@@ -522,11 +526,7 @@ TEST(FrameGraphLifetime, TransientsLiveFromFirstToLastUser) {
 TEST(FrameGraphLifetime, TransientsAreListedAndTheirPeakBytesCounted) {
     FrameGraph fg;
     Events events;
-    const FrameGraphTexture t1 = produce(fg, events, "A", "t1");
-    const FrameGraphTexture t2 = produce(fg, events, "B", "t2", {t1});
-    const FrameGraphTexture t3 = produce(fg, events, "C", "t3", {t2});
-    produce(fg, events, "unused", "t4", {t1});
-    present(fg, events, "D", {t3, t1});
+    addChain(fg, events);
     fg.compile();
 
     std::vector<std::string> lives;

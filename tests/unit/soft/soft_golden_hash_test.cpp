@@ -9,11 +9,13 @@
 // When a change is meant to alter the images, rerun with SSAM_PRINT_GOLDEN_HASHES=1 and
 // update the hashes in scenes(). Scenes use a fixed LCG, never <random> distributions
 // (implementation-defined).
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +52,14 @@ struct Hasher {
         bytes(&r.width, sizeof r.width);
         bytes(&r.height, sizeof r.height);
         bytes(r.values.data(), r.values.size() * sizeof(float));
+    }
+    // Each target read back from `b` and hashed, in this order.
+    template <class Handles>
+    void targets(render::Backend& b, const Handles& handles) {
+        for (render::TextureHandle t : handles) readback(b.readback(t));
+    }
+    void targets(render::Backend& b, std::initializer_list<render::TextureHandle> handles) {
+        targets<std::initializer_list<render::TextureHandle>>(b, handles);
     }
 };
 
@@ -100,6 +110,13 @@ std::vector<render::Vertex> randomTriangles(Lcg& rng, int count, float maxSize, 
     return v;
 }
 
+// One colour target of each format, for a pass of four colour attachments (MRT).
+std::array<render::TextureHandle, 4> targetsOf(render::Backend& b, const std::array<Format, 4>& formats) {
+    std::array<render::TextureHandle, 4> targets;
+    for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
+    return targets;
+}
+
 render::BufferHandle vertexBuffer(render::Backend& b, const std::vector<render::Vertex>& v) {
     return b.createBuffer({"vb", render::BufferKind::Vertex, v.size() * sizeof(render::Vertex)}, bytesOf(v));
 }
@@ -139,8 +156,7 @@ void sceneFlatDepth(render::Backend& b, Hasher& h) {
     drawTriangles(b, p2, vb, 300, render::FlatParams{glm::mat4(1.0f), glm::vec4(0.2f, 0.9f, 0.4f, 0.5f)},
                   render::Rect{17, 9, 150, 100});
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // A depth-only pre-pass (no colour target, reverse-Z), then Equal-tested colour.
@@ -170,8 +186,7 @@ void sceneDepthPrepass(render::Backend& b, Hasher& h) {
     sp.viewProj = vp;
     drawTriangles(b, shade, vb, 1200, sp);
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Textured foliage: alpha test with each fail mode, mipmapped trilinear/bilinear/nearest.
@@ -206,16 +221,14 @@ void sceneFoliage(render::Backend& b, Hasher& h) {
         drawTriangles(b, b.createPipeline(pd), vb, 600, sp);
     }
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Every blend factor and op, on RGBA8, sRGB, RGBA16F and RGBA32F targets at once (MRT).
 void sceneBlendMatrix(render::Backend& b, Hasher& h) {
     Lcg rng{4};
-    const Format formats[] = {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::RGBA16F, Format::RGBA32F};
-    render::TextureHandle targets[4];
-    for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
+    const std::array<render::TextureHandle, 4> targets =
+        targetsOf(b, {Format::RGBA8_UNORM, Format::RGBA8_SRGB, Format::RGBA16F, Format::RGBA32F});
     const auto vb = vertexBuffer(b, randomTriangles(rng, 60, 0.9f, false));
     render::PassDesc pass;
     pass.name = "blend";
@@ -251,15 +264,14 @@ void sceneBlendMatrix(render::Backend& b, Hasher& h) {
         }
     }
     b.endPass();
-    for (auto t : targets) h.readback(b.readback(t));
+    h.targets(b, targets);
 }
 
 // The common presets and plain stores into R8 / RG8 / RG16F / R32F, with write masks.
 void scenePresetsSmallFormats(render::Backend& b, Hasher& h) {
     Lcg rng{5};
-    const Format formats[] = {Format::R8_UNORM, Format::RG8_UNORM, Format::RG16F, Format::R32F};
-    render::TextureHandle targets[4];
-    for (int i = 0; i < 4; ++i) targets[i] = target(b, formats[i]);
+    const std::array<render::TextureHandle, 4> targets =
+        targetsOf(b, {Format::R8_UNORM, Format::RG8_UNORM, Format::RG16F, Format::R32F});
     const auto vb = vertexBuffer(b, randomTriangles(rng, 500, 0.4f, false));
     const render::BlendState presets[] = {render::BlendState::opaque(), render::BlendState::alphaOver(),
                                           render::BlendState::premultipliedOver(),
@@ -283,7 +295,7 @@ void scenePresetsSmallFormats(render::Backend& b, Hasher& h) {
         b.draw(dd);
     }
     b.endPass();
-    for (auto t : targets) h.readback(b.readback(t));
+    h.targets(b, targets);
 }
 
 // MSAA with alpha-to-coverage and an SSAM mask into a float target, resolved.
@@ -315,9 +327,7 @@ void sceneMsaa(render::Backend& b, Hasher& h) {
     b.resolve({msColor, color});
     b.resolve({msMask, mask});
     b.resolve({msDepth, depth, render::CompareFunc::Less});
-    h.readback(b.readback(color));
-    h.readback(b.readback(mask));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, mask, depth});
 }
 
 // Full-screen composite under a scissor, onto an sRGB target.
@@ -386,8 +396,7 @@ void sceneTinyInstanced(render::Backend& b, Hasher& h) {
     d.instanceCount = 2;
     b.draw(d);
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Quads larger than several tiles: depth-only, opaque, alpha-over and alpha-tested
@@ -452,9 +461,7 @@ void sceneBigQuads(render::Backend& b, Hasher& h) {
     d.count = 12;
     b.draw(d);
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(srgb));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, srgb, depth});
 }
 
 // Clipping: perspective triangles crossing the near plane and far outside the guard band.
@@ -483,8 +490,7 @@ void sceneClipping(render::Backend& b, Hasher& h) {
     drawTriangles(b, b.createPipeline(pd), vb, std::uint32_t(tris.size()),
                   render::FlatParams{perspectiveViewProj(), glm::vec4(1.0f)});
     b.endPass();
-    h.readback(b.readback(color));
-    h.readback(b.readback(depth));
+    h.targets(b, {color, depth});
 }
 
 // Constant-colour triangles (w = 1, one vertex colour): the fragment is the same at every
@@ -552,10 +558,7 @@ void sceneConstantColour(render::Backend& b, Hasher& h) {
         }
     }
     b.endPass();
-    h.readback(b.readback(c0));
-    h.readback(b.readback(c1));
-    h.readback(b.readback(c2));
-    h.readback(b.readback(depth));
+    h.targets(b, {c0, c1, c2, depth});
 }
 
 struct GoldenScene {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "host_call_order.hpp"
 #include "ssam_gl_host.hpp"
 
 namespace {
@@ -32,15 +33,7 @@ struct Sweep {
     Status render(const ssam::gl::FrameDesc& f) {
         return ssam.render(f, [](const ssam::gl::FoliageProgram&) {});
     }
-    // A frame of way (b) with no draws, whole: the host's textures as they were (mask 0).
-    void emptyFrame() {
-        ASSERT_EQ(ssam.beginFrame(good), Status::Ok) << ssam.lastMessage();
-        ASSERT_EQ(ssam.beginMaskPass(), Status::Ok);
-        ASSERT_EQ(ssam.endMaskPass(), Status::Ok);
-        ASSERT_EQ(ssam.beginColorPass(), Status::Ok);
-        ASSERT_EQ(ssam.endColorPass(), Status::Ok);
-        ASSERT_EQ(ssam.composite(), Status::Ok) << ssam.lastMessage();
-    }
+    const ssam::gl::FrameDesc& frame() const { return good; }
 };
 
 struct Hostile {
@@ -59,16 +52,12 @@ std::function<Status(Sweep&)> renderWith(std::function<void(Sweep&, ssam::gl::Fr
     };
 }
 const std::function<void(Sweep&)> kNothing = [](Sweep&) {};
-const std::function<void(Sweep&)> kFrameBegun = [](Sweep& s) {
-    ASSERT_EQ(s.ssam.beginFrame(s.good), Status::Ok) << s.ssam.lastMessage();
-};
 const ssam::gl::Box kGoodBox{{-0.5f, -0.5f, 0.25f}, {0.5f, 0.5f, 0.75f}};
 
 std::vector<Hostile> hostileCalls() {
-    const Status invalidArgument = Status::InvalidArgument, invalidTexture = Status::InvalidTexture,
-                 invalidCall = Status::InvalidCall;
+    const Status invalidArgument = Status::InvalidArgument, invalidTexture = Status::InvalidTexture;
     using F = ssam::gl::FrameDesc;
-    return {
+    std::vector<Hostile> calls = {
         {"width 0", kNothing, renderWith([](Sweep&, F& f) { f.width = 0; }), invalidArgument,
          "frame size (FrameDesc::width x height) 0x16 is not positive"},
         {"negative height", kNothing, renderWith([](Sweep&, F& f) { f.height = -5; }), invalidArgument,
@@ -113,23 +102,9 @@ std::vector<Hostile> hostileCalls() {
         {"render without a draw callback", kNothing,
          [](Sweep& s) { return s.ssam.render(s.good, ssam::gl::ScreenSpaceAlphaMaskGl::DrawFoliage{}, nullptr); },
          invalidArgument, "render() without a draw callback"},
-        {"beginMaskPass without a frame", kNothing, [](Sweep& s) { return s.ssam.beginMaskPass(); }, invalidCall,
-         "beginMaskPass called when no frame is open"},
-        {"endColorPass without a frame", kNothing, [](Sweep& s) { return s.ssam.endColorPass(); }, invalidCall,
-         "endColorPass called when no frame is open"},
-        {"composite without a frame", kNothing, [](Sweep& s) { return s.ssam.composite(); }, invalidCall,
-         "composite called when no frame is open"},
-        {"composite twice", [](Sweep& s) { s.emptyFrame(); }, [](Sweep& s) { return s.ssam.composite(); }, invalidCall,
-         "composite called when no frame is open"},
-        {"render inside an open frame", kFrameBegun, [](Sweep& s) { return s.render(s.good); }, invalidCall,
-         "render called when the frame is begun"},
-        {"beginFrame inside an open frame", kFrameBegun, [](Sweep& s) { return s.ssam.beginFrame(s.good); },
-         invalidCall, "beginFrame called when the frame is begun"},
-        {"beginColorPass before the mask pass", kFrameBegun, [](Sweep& s) { return s.ssam.beginColorPass(); },
-         invalidCall, "beginColorPass called when the frame is begun"},
-        {"setSettings inside a frame", kFrameBegun, [](Sweep& s) { return s.ssam.setSettings({}); }, invalidCall,
-         "setSettings() inside a frame"},
     };
+    for (Hostile& h : ssam_host_test::callsOutOfOrder<Hostile, Sweep>()) calls.push_back(std::move(h));
+    return calls;
 }
 
 TEST(SsamGlHostileInput, IsRefusedNamedAndChangesNothing) {

@@ -18,6 +18,7 @@
 
 #include <ssam/vk/ssam_vk.hpp>
 
+#include "host_call_order.hpp"
 #include "ssam_vk_support.hpp"
 #include "vk_host.hpp"
 
@@ -96,16 +97,6 @@ struct Sweep {
     Status render(const ssam::vk::FrameDesc& f) {
         return ssam.render(f, [](const ssam::vk::FoliageProgram&) {});
     }
-    // A frame of way (b) with no draws, whole: it leaves the host's images as they were (the
-    // composite blends with a mask of 0; nothing writes depth).
-    void emptyFrame(const ssam::vk::FrameDesc& f) {
-        ASSERT_EQ(ssam.beginFrame(f), Status::Ok) << ssam.lastMessage();
-        ASSERT_EQ(ssam.beginMaskPass(), Status::Ok);
-        ASSERT_EQ(ssam.endMaskPass(), Status::Ok);
-        ASSERT_EQ(ssam.beginColorPass(), Status::Ok);
-        ASSERT_EQ(ssam.endColorPass(), Status::Ok);
-        ASSERT_EQ(ssam.composite(), Status::Ok) << ssam.lastMessage();
-    }
 };
 
 // A frame changed by `change`, rendered.
@@ -117,16 +108,13 @@ std::function<Status(Sweep&)> renderWith(std::function<void(ssam::vk::FrameDesc&
     };
 }
 const std::function<void(Sweep&)> kNothing = [](Sweep&) {};
-const std::function<void(Sweep&)> kFrameBegun = [](Sweep& s) {
-    ASSERT_EQ(s.ssam.beginFrame(s.frame()), Status::Ok) << s.ssam.lastMessage();
-};
 
 const ssam::vk::Box kGoodBox{{-0.5f, -0.5f, 0.25f}, {0.5f, 0.5f, 0.75f}};
 
 std::vector<Hostile> hostileCalls() {
     const Status invalidArgument = Status::InvalidArgument, invalidCall = Status::InvalidCall;
     using F = ssam::vk::FrameDesc;
-    return {
+    std::vector<Hostile> calls = {
         // FrameDesc, field by field.
         {"null command buffer", kNothing, renderWith([](F& f) { f.commandBuffer = VK_NULL_HANDLE; }), invalidArgument,
          "FrameDesc::commandBuffer is VK_NULL_HANDLE"},
@@ -204,7 +192,7 @@ std::vector<Hostile> hostileCalls() {
          [](Sweep& s) {
              F f = s.frame();
              f.frameIndex = 5;
-             s.emptyFrame(f);
+             ssam_host_test::emptyFrame(s.ssam, f);
          },
          renderWith([](F& f) { f.frameIndex = 4; }), invalidArgument,
          "FrameDesc::frameIndex 4 is below the last frame's 5"},
@@ -213,7 +201,7 @@ std::vector<Hostile> hostileCalls() {
              F f = s.frame();
              f.frameIndex = 5;
              f.framesCompleted = 3;
-             s.emptyFrame(f);
+             ssam_host_test::emptyFrame(s.ssam, f);
          },
          renderWith([](F& f) {
              f.frameIndex = 6;
@@ -257,32 +245,12 @@ std::vector<Hostile> hostileCalls() {
                                          &state);
          },
          invalidArgument, "colorFormat VK_FORMAT_D32_SFLOAT is not"},
-        // Calls out of order.
-        {"beginMaskPass without a frame", kNothing, [](Sweep& s) { return s.ssam.beginMaskPass(); }, invalidCall,
-         "beginMaskPass called when no frame is open"},
-        {"endMaskPass without a frame", kNothing, [](Sweep& s) { return s.ssam.endMaskPass(); }, invalidCall,
-         "endMaskPass called when no frame is open"},
-        {"beginColorPass without a frame", kNothing, [](Sweep& s) { return s.ssam.beginColorPass(); }, invalidCall,
-         "beginColorPass called when no frame is open"},
-        {"endColorPass without a frame", kNothing, [](Sweep& s) { return s.ssam.endColorPass(); }, invalidCall,
-         "endColorPass called when no frame is open"},
-        {"composite without a frame", kNothing, [](Sweep& s) { return s.ssam.composite(); }, invalidCall,
-         "composite called when no frame is open"},
-        {"composite twice", [](Sweep& s) { s.emptyFrame(s.frame()); }, [](Sweep& s) { return s.ssam.composite(); },
-         invalidCall, "composite called when no frame is open"},
-        {"render inside an open frame", kFrameBegun, [](Sweep& s) { return s.render(s.frame()); }, invalidCall,
-         "render called when the frame is begun"},
-        {"beginFrame inside an open frame", kFrameBegun, [](Sweep& s) { return s.ssam.beginFrame(s.frame()); },
-         invalidCall, "beginFrame called when the frame is begun"},
-        {"beginColorPass before the mask pass", kFrameBegun, [](Sweep& s) { return s.ssam.beginColorPass(); },
-         invalidCall, "beginColorPass called when the frame is begun"},
-        {"composite before the passes", kFrameBegun, [](Sweep& s) { return s.ssam.composite(); }, invalidCall,
-         "composite called when the frame is begun"},
-        {"setSettings inside a frame", kFrameBegun, [](Sweep& s) { return s.ssam.setSettings({}); }, invalidCall,
-         "setSettings() inside a frame"},
+        // Calls out of order: these, and those every host API refuses alike (callsOutOfOrder).
         {"render after release", [](Sweep& s) { s.ssam.release(); }, [](Sweep& s) { return s.render(s.frame()); },
          invalidCall, "render before initialize()"},
     };
+    for (Hostile& h : ssam_host_test::callsOutOfOrder<Hostile, Sweep>()) calls.push_back(std::move(h));
+    return calls;
 }
 
 TEST(SsamVkHostileInput, IsRefusedNamedAndRecordsNothing) {

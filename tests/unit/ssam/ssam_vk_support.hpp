@@ -12,6 +12,7 @@
 
 #include <ssam/vk/ssam_vk.hpp>
 
+#include "ssam_device.hpp"
 #include "vk_host.hpp"
 
 namespace ssam_vk_test {
@@ -23,30 +24,9 @@ struct Messages {
     }
 };
 
-inline ssam::vk::DeviceDesc describe(const vk_example::VulkanHost& host) {
-    ssam::vk::DeviceDesc d;
-    d.instance = host.instance;
-    d.physicalDevice = host.physical;
-    d.device = host.device;
-    d.queueFamily = host.queueFamily;
-    d.apiVersion = host.apiVersion;
-    d.getInstanceProcAddr = vkGetInstanceProcAddr;
-    return d;
-}
+inline ssam::vk::DeviceDesc describe(const vk_example::VulkanHost& host) { return vk_example::ssamDevice(host); }
 
-inline void imageBarrier(VkCommandBuffer cb, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
-                         VkImageLayout to, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
-                         VkPipelineStageFlags dstStages, VkAccessFlags dstAccess) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.image = image;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcAccessMask = srcAccess;
-    b.dstAccessMask = dstAccess;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.subresourceRange = {aspect, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cb, srcStages, dstStages, 0, 0, nullptr, 0, nullptr, 1, &b);
-}
+using vk_example::imageBarrier;
 
 inline constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                                                           VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -88,6 +68,11 @@ struct Targets {
         f.width = width;
         f.height = height;
         return f;
+    }
+    // prepare(), then frame(): a frame over targets in the contract's entry layouts.
+    ssam::vk::FrameDesc preparedFrame(VkCommandBuffer cb) const {
+        prepare(cb);
+        return frame(cb);
     }
     // Into the contract's entry layouts (attachment writes: an image barrier of attachment stages).
     void prepare(VkCommandBuffer cb) const {
@@ -183,6 +168,20 @@ struct Targets {
                     sizeof value);
         return value;
     }
+};
+
+// What most tests start from: new targets of one size, a command buffer being recorded and
+// SSAM's frame over both (`prepared`: the targets put into the contract's entry layouts first).
+struct HostFrame {
+    Targets targets;
+    VkCommandBuffer cb;
+    ssam::vk::FrameDesc frame;
+    HostFrame(vk_example::VulkanHost& host, std::uint32_t width, std::uint32_t height, bool prepared = true)
+        : targets(host, width, height), cb(host.begin()) {
+        frame = prepared ? targets.preparedFrame(cb) : targets.frame(cb);
+    }
+    // Submitted under validation: whatever SSAM refused, the command buffer must still be valid.
+    void submitAndWait() const { targets.host.wait(targets.host.submit(cb)); }
 };
 
 // A quad over the middle half of the frame at depth 0.5, drawn by SSAM's built-in programs (the

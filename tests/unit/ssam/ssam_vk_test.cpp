@@ -24,6 +24,7 @@ namespace {
 
 using ssam::vk::ScreenSpaceAlphaMaskVk;
 using ssam::vk::Status;
+using ssam::vk::statusName;
 using ::testing::HasSubstr;
 
 using namespace ssam_vk_test;
@@ -35,6 +36,12 @@ protected:
         vkDeviceWaitIdle(host.device);
         ssam.release();
         for (const std::string& m : host.validationMessages) ADD_FAILURE() << "validation: " << m;
+    }
+    // A render() (drawing nothing) that SSAM must refuse as InvalidArgument: its message, or the
+    // status it returned instead (which no expected message contains).
+    std::string refusedRender(const ssam::vk::FrameDesc& f) {
+        const Status status = ssam.render(f, [](const ssam::vk::FoliageProgram&) {});
+        return status == Status::InvalidArgument ? ssam.lastMessage() : std::string("returned ") + statusName(status);
     }
     vk_example::VulkanHost host{true};
     ScreenSpaceAlphaMaskVk ssam;
@@ -142,8 +149,7 @@ TEST_F(SsamVk, AResizeRetiresTheOldIntermediatesUntilTheirFramesComplete) {
         }
         const Targets& t = frame % 2 == 0 ? big : small;
         const VkCommandBuffer cb = host.begin();
-        t.prepare(cb);
-        ssam::vk::FrameDesc f = t.frame(cb);
+        ssam::vk::FrameDesc f = t.preparedFrame(cb);
         f.frameIndex = frame;
         f.framesCompleted = completed;
         ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
@@ -158,8 +164,7 @@ TEST_F(SsamVk, AResizeRetiresTheOldIntermediatesUntilTheirFramesComplete) {
     // Everything completed: the next frame (the same size as the last) destroys every retired
     // generation, leaving SSAM's first two allocations and the current mask and rt_foliage.
     const VkCommandBuffer cb = host.begin();
-    small.prepare(cb);
-    ssam::vk::FrameDesc f = small.frame(cb);
+    ssam::vk::FrameDesc f = small.preparedFrame(cb);
     f.frameIndex = f.framesCompleted = 6;
     ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
     EXPECT_EQ(memory.live.size(), std::size_t(atStart + 2));
@@ -197,8 +202,7 @@ TEST(SsamVkDynamicRendering, FramesOfTwoSizesRecordCleanly) {
             }
             const Targets& t = frame < 2 ? big : small;
             const VkCommandBuffer cb = host.begin();
-            t.prepare(cb);
-            ssam::vk::FrameDesc f = t.frame(cb);
+            ssam::vk::FrameDesc f = t.preparedFrame(cb);
             f.frameIndex = frame;
             f.framesCompleted = completed;
             ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
@@ -217,20 +221,19 @@ TEST_F(SsamVk, HostPipelineStepsOutOfOrderAreInvalidAndLeaveTheCommandBufferVali
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
     EXPECT_EQ(ssam.beginMaskPass(), Status::InvalidCall);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("beginMaskPass called when no frame is open"));
-    Targets t(host, 16, 16);
-    const VkCommandBuffer cb = host.begin();
-    t.prepare(cb);
-    ssam::vk::FrameDesc f = t.frame(cb);
+    HostFrame h(host, 16, 16);
+    ssam::vk::FrameDesc& f = h.frame;
     ASSERT_EQ(ssam.beginFrame(f), Status::Ok) << ssam.lastMessage();
     ssam::vk::PassInfo info;
     ASSERT_EQ(ssam.beginMaskPass(&info), Status::Ok);
     EXPECT_EQ(info.pass, ssam::vk::FoliagePass::Mask);
-    EXPECT_EQ(info.commandBuffer, cb);
+    EXPECT_EQ(info.commandBuffer, h.cb);
     EXPECT_EQ(info.alphaReference, 0.0f);
     // A query inside the pass does not disturb it, even when refused.
     ssam::vk::PipelineState state;
-    EXPECT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Color, VK_FORMAT_R5G6B5_UNORM_PACK16, t.depth.format, &state),
-              Status::InvalidArgument);
+    EXPECT_EQ(
+        ssam.pipelineState(ssam::vk::FoliagePass::Color, VK_FORMAT_R5G6B5_UNORM_PACK16, h.targets.depth.format, &state),
+        Status::InvalidArgument);
     EXPECT_EQ(ssam.endMaskPass(), Status::Ok);
     EXPECT_EQ(ssam.composite(), Status::InvalidCall);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("the mask pass is done (beginColorPass comes next)"));
@@ -238,7 +241,7 @@ TEST_F(SsamVk, HostPipelineStepsOutOfOrderAreInvalidAndLeaveTheCommandBufferVali
     ASSERT_EQ(ssam.beginFrame(f), Status::Ok);
     ASSERT_EQ(ssam.beginMaskPass(), Status::Ok);
     EXPECT_EQ(ssam.beginFrame(f), Status::InvalidCall);  // ends the open mask pass
-    host.wait(host.submit(cb));
+    h.submitAndWait();
 }
 
 // What the host's pipelines are created with: SSAM's own state, and a version that moves only
@@ -324,10 +327,8 @@ TEST_F(SsamVk, Rg16fPipelineStateHasTwoMaskAttachments) {
     EXPECT_EQ(color.colorAttachmentCount, 1u);
     EXPECT_EQ(color.colorAttachmentFormats[0], VK_FORMAT_R8G8B8A8_UNORM);
 
-    Targets t(host, 16, 16);
-    const VkCommandBuffer cb = host.begin();
-    t.prepare(cb);
-    ssam::vk::FrameDesc f = t.frame(cb);
+    HostFrame h(host, 16, 16);
+    ssam::vk::FrameDesc& f = h.frame;
     ASSERT_EQ(ssam.beginFrame(f), Status::Ok) << ssam.lastMessage();
     ssam::vk::PassInfo info;
     ASSERT_EQ(ssam.beginMaskPass(&info), Status::Ok) << ssam.lastMessage();
@@ -338,7 +339,7 @@ TEST_F(SsamVk, Rg16fPipelineStateHasTwoMaskAttachments) {
     ASSERT_EQ(ssam.endColorPass(), Status::Ok);
     ASSERT_EQ(ssam.composite(), Status::Ok) << ssam.lastMessage();
     EXPECT_NE(ssam.intermediates().maskAdd, VK_NULL_HANDLE);
-    host.wait(host.submit(cb));
+    h.submitAndWait();
 }
 
 // Settings::depthMaskThreshold: a value outside [0, 1] is named; above 0 a frame needs the host's
@@ -350,22 +351,18 @@ TEST_F(SsamVk, DepthMaskThresholdNeedsTheDepthImage) {
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("depthMaskThreshold = 1.500000 is outside [0, 1]"));
     s.depthMaskThreshold = 0.5f;
     ASSERT_EQ(ssam.initialize(describe(host), s), Status::Ok) << ssam.lastMessage();
-    Targets t(host, 8, 8);
-    const VkCommandBuffer cb = host.begin();
-    ssam::vk::FrameDesc f = t.frame(cb);
-    EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
-    EXPECT_THAT(ssam.lastMessage(), HasSubstr("FrameDesc::depthImage is null"));
-    host.wait(host.submit(cb));
+    HostFrame h(host, 8, 8, false);
+    ssam::vk::FrameDesc& f = h.frame;
+    EXPECT_THAT(refusedRender(f), HasSubstr("FrameDesc::depthImage is null"));
+    h.submitAndWait();
 }
 
 // FrameDesc::foliageBounds: none in view records nothing (the callback is not called); in view,
 // the composite's region is their screen rectangle, rows from the top (Vulkan's y down).
 TEST_F(SsamVk, FoliageBoundsOutOfViewRecordNothing) {
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
-    Targets t(host, 64, 64);
-    const VkCommandBuffer cb = host.begin();
-    t.prepare(cb);
-    ssam::vk::FrameDesc f = t.frame(cb);
+    HostFrame h(host, 64, 64);
+    ssam::vk::FrameDesc& f = h.frame;
     const float vulkanViewProj[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // world y up
     std::memcpy(f.viewProj, vulkanViewProj, sizeof f.viewProj);
     const ssam::vk::Box behind{{-0.5f, -0.5f, -3.0f}, {0.5f, 0.5f, -2.0f}};  // z < 0: behind the camera
@@ -392,36 +389,30 @@ TEST_F(SsamVk, FoliageBoundsOutOfViewRecordNothing) {
     EXPECT_LE(report.compositeRegion.y, 0);   // the top half: rows from the top
     EXPECT_LE(report.compositeRegion.height, 33);
     f.foliageBounds = nullptr;
-    EXPECT_EQ(ssam.render(f, [&](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
-    EXPECT_THAT(ssam.lastMessage(), HasSubstr("foliageBoundsCount is 1 but foliageBounds is null"));
-    host.wait(host.submit(cb));
+    EXPECT_THAT(refusedRender(f), HasSubstr("foliageBoundsCount is 1 but foliageBounds is null"));
+    h.submitAndWait();
 }
 
 TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
-    Targets t(host, 8, 8);
-    const VkCommandBuffer cb = host.begin();
-    ssam::vk::FrameDesc f = t.frame(cb);
+    HostFrame h(host, 8, 8, false);
+    ssam::vk::FrameDesc& f = h.frame;
     f.colorFormat = VK_FORMAT_R5G6B5_UNORM_PACK16;
-    EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
-    EXPECT_THAT(ssam.lastMessage(), HasSubstr("colorFormat"));
-    f.colorFormat = t.color.format;
+    EXPECT_THAT(refusedRender(f), HasSubstr("colorFormat"));
+    f.colorFormat = h.targets.color.format;
     f.framesCompleted = 3;
-    EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidArgument);
-    EXPECT_THAT(ssam.lastMessage(), HasSubstr("framesCompleted 3 is past frameIndex 0"));
-    host.wait(host.submit(cb));
+    EXPECT_THAT(refusedRender(f), HasSubstr("framesCompleted 3 is past frameIndex 0"));
+    h.submitAndWait();
 }
 
 TEST_F(SsamVk, AThrowingDrawCallbackIsReported) {
     ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
-    Targets t(host, 8, 8);
-    const VkCommandBuffer cb = host.begin();
-    t.prepare(cb);
-    ssam::vk::FrameDesc f = t.frame(cb);
+    HostFrame h(host, 8, 8);
+    ssam::vk::FrameDesc& f = h.frame;
     EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) { throw std::runtime_error("no cards"); }),
               Status::CallbackFailed);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("threw in the mask pass: no cards"));
-    host.wait(host.submit(cb));  // the render pass was ended: the command buffer is still valid
+    h.submitAndWait();  // the render pass was ended: the command buffer is still valid
 }
 
 }  // namespace
