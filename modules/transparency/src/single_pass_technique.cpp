@@ -1,15 +1,22 @@
 // SPDX-License-Identifier: MIT
-// Technique::addPasses's default: the technique's whole work as one frame-graph pass.
+// The technique's whole work as one frame-graph pass (single_pass_technique.hpp).
 #include "engine/render/frame_graph.hpp"
 #include "engine/render/frame_graph/backend_textures.hpp"
-#include "transparency/technique.hpp"
+#include "single_pass_technique.hpp"
+#include "transparency/temporal.hpp"
 
 namespace transparency {
 
+glm::vec2 Technique::projectionJitter(std::uint64_t frameIndex) const {
+    return traits_.temporal ? haltonJitter(frameIndex, traits_.jitterPhases) : glm::vec2(0.0f);
+}
+
+namespace detail {
+
 using namespace engine::render;
 
-ColorDepth Technique::addPasses(FrameGraph& graph, FrameTargets& opaque, const ColorDepth& drawn,
-                                const ColorDepth& resolved, const FoliageFrame& frame) {
+ColorDepth SinglePassTechnique::addPasses(FrameGraph& graph, FrameTargets& opaque, const ColorDepth& drawn,
+                                          const ColorDepth& resolved, const FoliageFrame& frame) {
     struct Data {
         ColorDepth resolved;
         std::vector<FrameGraphTexture> targets;  // transientTargets(), in order
@@ -32,11 +39,13 @@ ColorDepth Technique::addPasses(FrameGraph& graph, FrameTargets& opaque, const C
         [this, &opaque, frame](const FrameGraph::Resources& r, const Data& d) {
             std::vector<TextureHandle> targets;
             for (FrameGraphTexture t : d.targets) targets.push_back(toTextureHandle(r.get(t)));
-            renderInto(opaque, frame, targets);
+            drawFrame(opaque, frame, targets);
         });
     graphTargets_.clear();
     for (std::size_t i = 0; i < transients.size(); ++i) graphTargets_.push_back({transients[i].layer, data.targets[i]});
     return data.resolved;
 }
+
+}  // namespace detail
 
 }  // namespace transparency
