@@ -85,6 +85,14 @@ public:
         return graph_.executedPassNames();
     }
 
+    // The same for a frame that is a colour alone (an overlay's target).
+    const std::vector<std::string>& run(engine::render::FrameGraphTexture color) {
+        use({color}, [](const std::vector<engine::render::TextureHandle>&) {});
+        graph_.execute(pool_.allocator());
+        pool_.endFrame();
+        return graph_.executedPassNames();
+    }
+
     const std::vector<engine::render::Readback>& readBacks() const { return readBacks_; }
 
 private:
