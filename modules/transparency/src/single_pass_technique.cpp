@@ -3,15 +3,8 @@
 #include "engine/render/frame_graph.hpp"
 #include "engine/render/frame_graph/backend_textures.hpp"
 #include "single_pass_technique.hpp"
-#include "transparency/temporal.hpp"
 
-namespace transparency {
-
-glm::vec2 Technique::projectionJitter(std::uint64_t frameIndex) const {
-    return traits_.temporal ? haltonJitter(frameIndex, traits_.jitterPhases) : glm::vec2(0.0f);
-}
-
-namespace detail {
+namespace transparency::detail {
 
 using namespace engine::render;
 
@@ -46,6 +39,4 @@ ColorDepth SinglePassTechnique::addPasses(FrameGraph& graph, FrameTargets& opaqu
     return data.resolved;
 }
 
-}  // namespace detail
-
-}  // namespace transparency
+}  // namespace transparency::detail
