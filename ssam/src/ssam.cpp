@@ -120,7 +120,6 @@ ScreenSpaceAlphaMask::ScreenSpaceAlphaMask(Backend& backend, const Settings& set
 
 ScreenSpaceAlphaMask::~ScreenSpaceAlphaMask() {
     destroy(pipelines_);
-    destroyTargets();
     backend_.destroy(compositeProgram_);
 }
 
@@ -164,23 +163,6 @@ void ScreenSpaceAlphaMask::destroy(const Pipelines& pipelines) {
     if (pipelines.foliageDepthProgram) backend_.destroy(pipelines.foliageDepthProgram);
 }
 
-void ScreenSpaceAlphaMask::ensureTargets(int width, int height, Format foliageFormat) {
-    const bool copyDepth = passes_.restoresDepth;
-    if (width == width_ && height == height_ && foliageFormat_ == foliageFormat &&
-        targetPrecision_ == settings_.maskPrecision && targetsCopyDepth_ == copyDepth)
-        return;
-    destroyTargets();
-    const IntermediateDescs descs = intermediateDescs(width, height, foliageFormat);
-    mask_ = backend_.createTexture(descs.mask);
-    if (descs.maskAdd) maskAdd_ = backend_.createTexture(*descs.maskAdd);
-    foliage_ = backend_.createTexture(descs.foliage);
-    if (descs.depthCopy) depthCopy_ = backend_.createTexture(*descs.depthCopy);
-    targetsCopyDepth_ = copyDepth;
-    width_ = width, height_ = height;
-    foliageFormat_ = foliageFormat;
-    targetPrecision_ = settings_.maskPrecision;
-}
-
 IntermediateDescs ScreenSpaceAlphaMask::intermediateDescs(int width, int height, Format colorFormat) const {
     const core::PassPlan& passes = passes_;
     const auto desc = [&](const core::ColorTarget& target) {
@@ -192,29 +174,6 @@ IntermediateDescs ScreenSpaceAlphaMask::intermediateDescs(int width, int height,
     descs.foliage = desc(passes.color.colorTargets[0]);
     if (passes.restoresDepth) descs.depthCopy = renderTargetDesc("rt_depth_copy", width, height, Format::D32F);
     return descs;
-}
-
-void ScreenSpaceAlphaMask::destroyTargets() {
-    for (TextureHandle* t : {&mask_, &maskAdd_, &foliage_, &depthCopy_}) {
-        if (*t) backend_.destroy(*t);
-        *t = {};
-    }
-    width_ = height_ = 0;
-    foliageFormat_.reset();
-    targetPrecision_.reset();
-    targetsCopyDepth_ = false;
-}
-
-FramePlan ScreenSpaceAlphaMask::plan(const FrameTargets& targets, const FoliageView& view) {
-    const TextureDesc& color = backend_.describe(targets.color);
-    return plan(color.width, color.height, color.format, view);
-}
-
-FramePlan ScreenSpaceAlphaMask::plan(int width, int height, Format colorFormat, const FoliageView& view) {
-    FramePlan planned = cull(width, height, view);
-    // Targets are only needed (and only created) once some foliage is in view.
-    if (!planned.empty()) ensureTargets(planned.width, planned.height, colorFormat);
-    return planned;
 }
 
 FramePlan ScreenSpaceAlphaMask::cull(int width, int height, const FoliageView& view) const {
@@ -230,18 +189,6 @@ FramePlan ScreenSpaceAlphaMask::cull(int width, int height, const FoliageView& v
         plan.compositeRegion = unite(plan.compositeRegion, *region);
     }
     return plan;
-}
-
-void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
-    maskPass(plan, view, depth, intermediates());
-}
-
-void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth) {
-    colorPass(plan, view, depth, intermediates());
-}
-
-void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color) {
-    compositePass(plan, color, intermediates());
 }
 
 void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
@@ -317,22 +264,6 @@ void ScreenSpaceAlphaMask::foliageDepthPass(const FramePlan& plan, const Foliage
         backend_.draw(maskedBatchDraw(*batch, pipelines_.foliageDepth,
                                       foliageDepthParams(surfaceOf(*batch, view), mask, settings_.depthMaskThreshold)));
     passScope.end();
-}
-
-FrameReport ScreenSpaceAlphaMask::render(const FrameTargets& targets, const FoliageView& view) {
-    const FramePlan p = plan(targets, view);
-    FrameReport report;
-    report.batchesVisible = static_cast<int>(p.visible.size());
-    if (p.empty()) return report;  // no foliage in view: SSAM costs nothing
-    report.foliageInView = true;
-    report.compositeRegion = {p.compositeRegion.x, p.compositeRegion.y, p.compositeRegion.width,
-                              p.compositeRegion.height};
-    maskPass(p, view, targets.depth);
-    colorPass(p, view, targets.depth);
-    compositePass(p, targets.color);
-    foliageDepthPass(p, view, targets.depth, intermediates());
-    report.passesRun = 3;
-    return report;
 }
 
 }  // namespace ssam

@@ -10,20 +10,20 @@ namespace engine::scene {
 using render::ColorDepth;
 using render::FrameGraph;
 
-ColorDepth Feature::addPasses(FrameGraph& graph, const FeatureFrame& frame, const ColorDepth& targets) {
+ColorDepth Feature::addDrawPass(FrameGraph& graph, const FeatureFrame& frame, const ColorDepth& targets, bool empty,
+                                DepthUse depth, std::function<void(const FeatureFrame&)> draw) const {
     struct Data {
         ColorDepth out;
     };
-    const bool empty = !prepare(frame);
     return graph
         .addPass<Data>(
             std::string(name()),
             [&](FrameGraph::Builder& b, Data& d) {
                 d.out.color = b.write(b.read(targets.color));
-                d.out.depth = writesDepth() ? b.write(b.read(targets.depth)) : b.read(targets.depth);
+                d.out.depth = depth == DepthUse::TestAndWrite ? b.write(b.read(targets.depth)) : b.read(targets.depth);
                 if (empty) b.markEmpty();
             },
-            [this, frame](const FrameGraph::Resources&, const Data&) { draw(frame); })
+            [draw = std::move(draw), frame](const FrameGraph::Resources&, const Data&) { draw(frame); })
         .out;
 }
 

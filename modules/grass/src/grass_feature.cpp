@@ -54,6 +54,13 @@ PipelineHandle GrassFeature::pipeline(CompareFunc depthFunc) {
     return pipeline_;
 }
 
+engine::render::ColorDepth GrassFeature::addPasses(engine::render::FrameGraph& graph,
+                                                   const engine::scene::FeatureFrame& frame,
+                                                   const engine::render::ColorDepth& targets) {
+    return addDrawPass(graph, frame, targets, !prepare(frame), DepthUse::TestAndWrite,
+                       [this](const engine::scene::FeatureFrame& f) { draw(f); });
+}
+
 bool GrassFeature::prepare(const engine::scene::FeatureFrame& frame) {
     instances_.beginFrame();
     visible_ = visibleTufts(tufts_, options_, frame.eye, frame.viewProj, frame.time);

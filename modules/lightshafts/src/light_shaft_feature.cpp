@@ -43,6 +43,13 @@ LightShaftFeature::~LightShaftFeature() = default;
 
 bool LightShaftFeature::sunVisible() const { return !lastQuery_ || backend_.anySamplesPassed(*lastQuery_); }
 
+engine::render::ColorDepth LightShaftFeature::addPasses(engine::render::FrameGraph& graph,
+                                                        const engine::scene::FeatureFrame& frame,
+                                                        const engine::render::ColorDepth& targets) {
+    return addDrawPass(graph, frame, targets, !prepare(frame), DepthUse::Test,
+                       [this](const engine::scene::FeatureFrame& f) { draw(f); });
+}
+
 bool LightShaftFeature::prepare(const engine::scene::FeatureFrame& frame) {
     ran_ = false;
     lastQuery_.reset();

@@ -48,15 +48,6 @@ TextureDesc layerDesc(int width, int height, int stride) {
 
 }  // namespace
 
-void ParticleFeature::ensureLayer(int width, int height) {
-    if (layer_.get()) {
-        const TextureDesc& d = backend_.describe(layer_);
-        if (d.width == width && d.height == height) return;
-        layer_.reset();  // a create that throws below leaves no stale handle behind
-    }
-    layer_ = Owned<TextureHandle>(backend_, backend_.createTexture(layerDesc(width, height, 1)));
-}
-
 ColorDepth ParticleFeature::addPasses(FrameGraph& graph, const engine::scene::FeatureFrame& frame,
                                       const ColorDepth& targets) {
     struct Data {
@@ -64,19 +55,19 @@ ColorDepth ParticleFeature::addPasses(FrameGraph& graph, const engine::scene::Fe
         FrameGraphTexture layer;
     };
     const bool empty = !prepare(frame);
-    return graph
-        .addPass<Data>(
-            std::string(name()),
-            [&](FrameGraph::Builder& b, Data& d) {
-                d.out = {b.write(b.read(targets.color)), b.read(targets.depth)};
-                if (empty) return b.markEmpty();
-                const TextureDesc layer = layerDesc(frame.width, frame.height, layerStride());
-                d.layer = b.write(b.create(layer.name, graphDescOf(layer)));
-            },
-            [this, frame](const FrameGraph::Resources& r, const Data& d) {
-                drawInto(frame, toTextureHandle(r.get(d.layer)));
-            })
-        .out;
+    const Data& data = graph.addPass<Data>(
+        std::string(name()),
+        [&](FrameGraph::Builder& b, Data& d) {
+            d.out = {b.write(b.read(targets.color)), b.read(targets.depth)};
+            if (empty) return b.markEmpty();
+            const TextureDesc layer = layerDesc(frame.width, frame.height, layerStride());
+            d.layer = b.write(b.create(layer.name, graphDescOf(layer)));
+        },
+        [this, frame](const FrameGraph::Resources& r, const Data& d) {
+            drawInto(frame, toTextureHandle(r.get(d.layer)));
+        });
+    graphLayer_ = data.layer;
+    return data.out;
 }
 
 bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
@@ -120,12 +111,6 @@ bool ParticleFeature::prepare(const engine::scene::FeatureFrame& frame) {
     drawn_ = vertices.size() / 4;
     region_ = *region;
     return true;
-}
-
-void ParticleFeature::draw(const engine::scene::FeatureFrame& frame) {
-    const int stride = layerStride();
-    ensureLayer(std::max(1, (frame.width + stride - 1) / stride), std::max(1, (frame.height + stride - 1) / stride));
-    drawInto(frame, layer_);
 }
 
 void ParticleFeature::drawInto(const engine::scene::FeatureFrame& frame, TextureHandle layer) {

@@ -7,8 +7,7 @@ namespace transparency::detail {
 
 std::unique_ptr<Technique> makeAlphaTestTaaTechnique(engine::render::Backend& backend,
                                                      const TechniqueOptions& options) {
-    return makeTemporalTechnique(backend, options, TechniqueKind::AlphaTestTaa,
-                                 makeAlphaTestTechnique(backend, options));
+    return makeTemporalTechnique(backend, options, TechniqueKind::AlphaTestTaa, makeAlphaTestPass(backend, options));
 }
 
 }  // namespace transparency::detail

@@ -11,6 +11,7 @@
 #include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 
 namespace transparency::detail {
@@ -19,16 +20,16 @@ namespace {
 
 using namespace engine::render;
 
-class AlphaTestTechnique final : public Technique {
+class AlphaTestTechnique final : public SinglePassTechnique {
 public:
     AlphaTestTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), reference_(options.alphaTestReference), depthFunc_(options.depthFunc) {
+        : SinglePassTechnique({TechniqueKind::AlphaTest}), backend_(backend), reference_(options.alphaTestReference),
+          depthFunc_(options.depthFunc) {
         if (reference_) checkReference(*reference_, "alphaTestReference");
     }
 
-    TechniqueKind kind() const override { return TechniqueKind::AlphaTest; }
-
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const engine::render::TextureHandle> /*targets*/) override {
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (!visible.empty()) {
             PassDesc pass = opaque.loadPassDesc();
@@ -73,8 +74,12 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Technique> makeAlphaTestTechnique(Backend& backend, const TechniqueOptions& options) {
+std::unique_ptr<SinglePassTechnique> makeAlphaTestPass(Backend& backend, const TechniqueOptions& options) {
     return std::make_unique<AlphaTestTechnique>(backend, options);
+}
+
+std::unique_ptr<Technique> makeAlphaTestTechnique(Backend& backend, const TechniqueOptions& options) {
+    return makeAlphaTestPass(backend, options);
 }
 
 }  // namespace transparency::detail

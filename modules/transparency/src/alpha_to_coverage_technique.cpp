@@ -13,6 +13,7 @@
 #include "engine/render/pass_scope.hpp"
 #include "alpha_to_coverage_technique.hpp"
 #include "foliage_draws.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 
 namespace transparency::detail {
@@ -21,10 +22,10 @@ namespace {
 
 using namespace engine::render;
 
-class AlphaToCoverageTechnique final : public Technique {
+class AlphaToCoverageTechnique final : public SinglePassTechnique {
 public:
     AlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind, int samples)
-        : backend_(backend), kind_(kind), samples_(samples) {
+        : SinglePassTechnique({kind, samples}), backend_(backend), samples_(samples) {
         PipelineDesc p = foliagePipeline("foliage alpha-to-coverage");
         p.depth = DepthState::testAndWrite(options.depthFunc);
         p.alphaTest.alphaToCoverage = true;
@@ -32,15 +33,13 @@ public:
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
 
-    TechniqueKind kind() const override { return kind_; }
-    int opaqueSamples() const override { return samples_; }
-
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const engine::render::TextureHandle> /*targets*/) override {
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (!visible.empty()) {
             if (opaque.desc().samples != samples_)
                 throw engine::Error(
-                    std::string(techniqueName(kind_)) + ": the opaque targets have " +
+                    std::string(techniqueName(kind())) + ": the opaque targets have " +
                     std::to_string(opaque.desc().samples) +
                     " sample(s); draw the opaque pass with opaqueSamples() = " + std::to_string(samples_));
             PassDesc pass = opaque.loadPassDesc();
@@ -55,7 +54,6 @@ public:
 
 private:
     Backend& backend_;
-    TechniqueKind kind_;
     int samples_;
     Owned<PipelineHandle> pipeline_;
 };

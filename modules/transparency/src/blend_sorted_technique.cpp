@@ -14,6 +14,7 @@
 #include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 
 namespace transparency::detail {
@@ -36,10 +37,10 @@ struct Run {
     std::size_t count = 0;
 };
 
-class BlendSortedTechnique final : public Technique {
+class BlendSortedTechnique final : public SinglePassTechnique {
 public:
     BlendSortedTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), depthFunc_(options.depthFunc) {
+        : SinglePassTechnique({TechniqueKind::BlendSorted}), backend_(backend), depthFunc_(options.depthFunc) {
         PipelineDesc p = foliagePipeline("foliage blend (sorted)");
         p.depth = DepthState::testOnly(depthFunc_);
         p.blend[0] = BlendState::alphaOver();
@@ -47,9 +48,8 @@ public:
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
 
-    TechniqueKind kind() const override { return TechniqueKind::BlendSorted; }
-
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const engine::render::TextureHandle> /*targets*/) override {
         opaque.resolve();
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (visible.empty()) return;

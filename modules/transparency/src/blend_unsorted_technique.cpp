@@ -7,6 +7,7 @@
 #include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 
 namespace transparency::detail {
@@ -15,9 +16,10 @@ namespace {
 
 using namespace engine::render;
 
-class BlendUnsortedTechnique final : public Technique {
+class BlendUnsortedTechnique final : public SinglePassTechnique {
 public:
-    BlendUnsortedTechnique(Backend& backend, const TechniqueOptions& options) : backend_(backend) {
+    BlendUnsortedTechnique(Backend& backend, const TechniqueOptions& options)
+        : SinglePassTechnique({TechniqueKind::BlendUnsorted}), backend_(backend) {
         PipelineDesc p = foliagePipeline("foliage blend (unsorted)");
         p.depth = DepthState::testOnly(options.depthFunc);
         p.blend[0] = BlendState::alphaOver();
@@ -25,9 +27,8 @@ public:
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
 
-    TechniqueKind kind() const override { return TechniqueKind::BlendUnsorted; }
-
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const engine::render::TextureHandle> /*targets*/) override {
         opaque.resolve();
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (visible.empty()) return;

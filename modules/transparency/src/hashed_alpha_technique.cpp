@@ -18,6 +18,7 @@
 #include "engine/render/pass_scope.hpp"
 #include "foliage_draws.hpp"
 #include "hashed_technique.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 #include "transparency/hashed_alpha.hpp"
 
@@ -27,11 +28,11 @@ namespace {
 
 using namespace engine::render;
 
-class HashedAlphaTechnique final : public Technique {
+class HashedAlphaTechnique final : public SinglePassTechnique {
 public:
     HashedAlphaTechnique(Backend& backend, const TechniqueOptions& options, bool seedPerFrame)
-        : backend_(backend), options_(options.hashed), seedPerFrame_(seedPerFrame),
-          program_(backend, backend.createProgram(hashedLitProgram())) {
+        : SinglePassTechnique({TechniqueKind::Hashed}), backend_(backend), options_(options.hashed),
+          seedPerFrame_(seedPerFrame), program_(backend, backend.createProgram(hashedLitProgram())) {
         if (!(options_.hashScale > 0.0f && options_.hashScale < 1e6f))
             throw engine::Error("hashed: hashScale " + std::to_string(options_.hashScale) + " must be in (0, 1e6)");
         PipelineDesc p = foliagePipeline("foliage hashed alpha test");
@@ -42,9 +43,8 @@ public:
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
 
-    TechniqueKind kind() const override { return TechniqueKind::Hashed; }
-
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const engine::render::TextureHandle> /*targets*/) override {
         const auto visible = visibleDraws(frame, opaque.desc().width, opaque.desc().height);
         if (!visible.empty()) {
             // Under TAA the threshold changes every frame, so that the history averages it.
@@ -104,8 +104,8 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Technique> makeHashedTechniqueFor(Backend& backend, const TechniqueOptions& options,
-                                                  bool seedPerFrame) {
+std::unique_ptr<SinglePassTechnique> makeHashedTechniqueFor(Backend& backend, const TechniqueOptions& options,
+                                                            bool seedPerFrame) {
     return std::make_unique<HashedAlphaTechnique>(backend, options, seedPerFrame);
 }
 

@@ -4,11 +4,12 @@
 // changes every frame, FoliageFrame::frameIndex) or off (`hashed`: the same every frame).
 #include <memory>
 
+#include "single_pass_technique.hpp"
 #include "transparency/create_technique.hpp"
 
 namespace transparency::detail {
 
-std::unique_ptr<Technique> makeHashedTechniqueFor(engine::render::Backend& backend, const TechniqueOptions& options,
-                                                  bool seedPerFrame);
+std::unique_ptr<SinglePassTechnique> makeHashedTechniqueFor(engine::render::Backend& backend,
+                                                            const TechniqueOptions& options, bool seedPerFrame);
 
 }  // namespace transparency::detail

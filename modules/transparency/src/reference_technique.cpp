@@ -33,6 +33,7 @@
 #include "engine/render/pass_scope.hpp"
 #include "engine/render/screen_bounds.hpp"
 #include "foliage_draws.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 
 namespace transparency::detail {
@@ -81,11 +82,11 @@ private:
 
 float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
 
-class ReferenceTechnique final : public Technique {
+class ReferenceTechnique final : public SinglePassTechnique {
 public:
     ReferenceTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), fragments_(backend.fragmentCapture()), cap_(options.referenceFragmentsPerPixel),
-          depthFunc_(options.depthFunc) {
+        : SinglePassTechnique({TechniqueKind::Reference}), backend_(backend), fragments_(backend.fragmentCapture()),
+          cap_(options.referenceFragmentsPerPixel), depthFunc_(options.depthFunc) {
         if (!fragments_)
             throw engine::Error("reference: the exact reference needs the soft backend's fragment capture (backend '" +
                                 backend.name() + "'); render it with --backend soft and compare against that image");
@@ -104,10 +105,10 @@ public:
         composite_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(composite));
     }
 
-    TechniqueKind kind() const override { return TechniqueKind::Reference; }
     std::optional<ReferenceReport> referenceReport() const override { return report_; }
 
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const engine::render::TextureHandle> /*targets*/) override {
         opaque.resolve();
         report_ = {};
         const int width = opaque.desc().width, height = opaque.desc().height;

@@ -21,6 +21,7 @@
 #include "foliage_draws.hpp"
 #include "ssam/ssam.hpp"
 #include "ssam_targets.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 #include "transparency/programs.hpp"
 
@@ -42,10 +43,11 @@ ssam::Settings plusSettings(const TechniqueOptions& options) {
     return settings;
 }
 
-class SsamPlusTechnique final : public Technique {
+class SsamPlusTechnique final : public SinglePassTechnique {
 public:
     SsamPlusTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), ssam_(backend, plusSettings(options)), model_(options.ssamPlus.coverage) {
+        : SinglePassTechnique({TechniqueKind::SsamPlus}), backend_(backend), ssam_(backend, plusSettings(options)),
+          model_(options.ssamPlus.coverage) {
         if (model_ != CoverageModel::EqualLayers && model_ != CoverageModel::Exponential)
             throw engine::Error("ssam-plus: unknown coverage model " + std::to_string(int(model_)));
         PipelineDesc composite;
@@ -57,41 +59,25 @@ public:
         composite_ = {backend_, backend_.createPipeline(composite)};
     }
 
-    TechniqueKind kind() const override { return TechniqueKind::SsamPlus; }
-
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
-        // Without a graph SSAM keeps its own targets (made by plan()).
-        draw(opaque, frame, nullptr);
-    }
-
-    // In a frame graph (Technique::addPasses): SSAM's targets are the graph's transients.
+    // SSAM's targets are the graph's transients, made only when foliage is in view.
     std::vector<TransientTarget> transientTargets(int width, int height, Format colorFormat,
                                                   const FoliageFrame& frame) const override {
         const std::vector<engine::render::MaskedBatch> batches = batchesOf(frame);
         if (ssam_.cull(width, height, {frame.viewProj, frame.light, batches}).empty()) return {};
         return ssamTransients(ssam_.intermediateDescs(width, height, colorFormat));
     }
-    void renderInto(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
-                    std::span<const TextureHandle> targets) override {
-        if (targets.empty()) return draw(opaque, frame, nullptr);
-        const bool separateAdd = targets.size() == 3;
-        const ssam::Intermediates t{targets[0], separateAdd ? targets[1] : TextureHandle{}, targets.back(), {}};
-        draw(opaque, frame, &t);
-    }
-
-    std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
-
-private:
-    // `targets` null: SSAM's own.
-    void draw(engine::render::FrameTargets& opaque, const FoliageFrame& frame, const ssam::Intermediates* targets) {
+    // Into `targets` (ssamTransients' order); none when no foliage is in view.
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const TextureHandle> targets) override {
         opaque.resolve();
+        if (targets.empty()) return;
         batches_ = batchesOf(frame);
         const ssam::FoliageView view{frame.viewProj, frame.light, batches_};
         const TextureDesc& color = backend_.describe(opaque.color());
-        const ssam::FramePlan plan =
-            targets ? ssam_.cull(color.width, color.height, view) : ssam_.plan({opaque.color(), opaque.depth()}, view);
+        const ssam::FramePlan plan = ssam_.cull(color.width, color.height, view);
         if (plan.empty()) return;
-        const ssam::Intermediates t = targets ? *targets : ssam_.intermediates();
+        const bool separateAdd = targets.size() == 3;
+        const ssam::Intermediates t{targets[0], separateAdd ? targets[1] : TextureHandle{}, targets.back(), {}};
         ssam_.maskPass(plan, view, opaque.depth(), t);
         ssam_.colorPass(plan, view, opaque.depth(), t);
 
@@ -107,6 +93,7 @@ private:
         passScope.end();
     }
 
+private:
     Backend& backend_;
     ssam::ScreenSpaceAlphaMask ssam_;
     CoverageModel model_;

@@ -17,15 +17,7 @@ namespace {
 class SsamTechnique final : public Technique {
 public:
     SsamTechnique(engine::render::Backend& backend, const TechniqueOptions& options)
-        : ssam_(backend, ssamSettings(options)) {}
-
-    TechniqueKind kind() const override { return TechniqueKind::Ssam; }
-
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
-        opaque.resolve();
-        batches_ = batchesOf(frame);
-        ssam_.render({opaque.color(), opaque.depth()}, {frame.viewProj, frame.light, batches_});
-    }
+        : Technique({TechniqueKind::Ssam}), ssam_(backend, ssamSettings(options)) {}
 
     engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, engine::render::FrameTargets& opaque,
                                          const engine::render::ColorDepth& drawn,
@@ -43,11 +35,9 @@ public:
         return passes.frame;
     }
 
-    std::vector<NamedTarget> intermediates() const override { return ssamTargets(ssam_.intermediates()); }
-
 private:
     ssam::ScreenSpaceAlphaMask ssam_;
-    std::vector<engine::render::MaskedBatch> batches_;  // the view's span points here during render
+    std::vector<engine::render::MaskedBatch> batches_;  // the view's span points here until the graph ran
     ssam::FoliageView view_;                            // the graph's passes read it when they execute
 };
 

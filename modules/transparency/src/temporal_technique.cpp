@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The temporal pass after a technique (transparency/temporal.hpp). Each frame: the technique
-// draws as usual (the caller has moved its projection by projectionJitter()); its frame is
+// draws as usual (the caller has moved its projection by projectionJitter()), in the same
+// frame-graph pass; its frame is
 // copied into an RGBA16F `current`, and TemporalResolve writes the blend of current and the
 // reprojected, clamped history both into the frame and into the next history target.
 //
@@ -23,11 +24,12 @@ namespace {
 
 using namespace engine::render;
 
-class TemporalTechnique final : public Technique {
+class TemporalTechnique final : public SinglePassTechnique {
 public:
     TemporalTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind,
-                      std::unique_ptr<Technique> inner)
-        : backend_(backend), options_(options.temporal), kind_(kind), inner_(std::move(inner)),
+                      std::unique_ptr<SinglePassTechnique> inner)
+        : SinglePassTechnique({kind, inner->opaqueSamples(), /*temporal=*/true, options.temporal.jitterPhases}),
+          backend_(backend), options_(options.temporal), inner_(std::move(inner)),
           program_(backend, backend.createProgram(temporalResolveProgram())) {
         if (!(options_.blend > 0.0f && options_.blend <= 1.0f))
             throw engine::Error(std::string(techniqueName(kind)) + ": temporal blend " +
@@ -41,15 +43,15 @@ public:
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
     }
 
-    TechniqueKind kind() const override { return kind_; }
-    int opaqueSamples() const override { return inner_->opaqueSamples(); }
-    glm::vec2 projectionJitter(std::uint64_t frameIndex) const override {
-        return haltonJitter(frameIndex, options_.jitterPhases);
+    // The technique it follows draws through its own targets, in this pass.
+    std::vector<TransientTarget> transientTargets(int width, int height, Format colorFormat,
+                                                  const FoliageFrame& frame) const override {
+        return inner_->transientTargets(width, height, colorFormat, frame);
     }
-    bool needsHistory() const override { return true; }
 
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
-        inner_->render(opaque, frame);
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const TextureHandle> targets) override {
+        inner_->drawFrame(opaque, frame, targets);
         const int width = opaque.desc().width, height = opaque.desc().height;
         const bool sameSize = ensureTargets(width, height, opaque.desc().colorFormat);
         const glm::mat4 unjittered =
@@ -121,8 +123,7 @@ private:
 
     Backend& backend_;
     TemporalOptions options_;
-    TechniqueKind kind_;
-    std::unique_ptr<Technique> inner_;
+    std::unique_ptr<SinglePassTechnique> inner_;
     Owned<ProgramHandle> program_;
     Owned<PipelineHandle> pipeline_;
     Owned<TextureHandle> current_;
@@ -137,7 +138,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Technique> makeTemporalTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind,
-                                                 std::unique_ptr<Technique> inner) {
+                                                 std::unique_ptr<SinglePassTechnique> inner) {
     return std::make_unique<TemporalTechnique>(backend, options, kind, std::move(inner));
 }
 

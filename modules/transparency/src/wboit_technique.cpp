@@ -19,6 +19,7 @@
 #include "engine/render/pass_scope.hpp"
 #include "engine/render/screen_bounds.hpp"
 #include "foliage_draws.hpp"
+#include "single_pass_technique.hpp"
 #include "technique_table.hpp"
 #include "transparency/programs.hpp"
 
@@ -28,10 +29,10 @@ namespace {
 
 using namespace engine::render;
 
-class WboitTechnique final : public Technique {
+class WboitTechnique final : public SinglePassTechnique {
 public:
     WboitTechnique(Backend& backend, const TechniqueOptions& options)
-        : backend_(backend), depthScale_(options.wboitDepthScale),
+        : SinglePassTechnique({TechniqueKind::Wboit}), backend_(backend), depthScale_(options.wboitDepthScale),
           accumulateProgram_(backend, backend.createProgram(wboitAccumulateProgram())),
           resolveProgram_(backend, backend.createProgram(wboitResolveProgram())) {
         if (!(std::isfinite(depthScale_) && depthScale_ > 0.0f))
@@ -65,41 +66,24 @@ public:
                             WriteRGB};
         resolvePipeline_ = {backend_, backend_.createPipeline(resolve)};
     }
-    TechniqueKind kind() const override { return TechniqueKind::Wboit; }
 
-    void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) override {
-        draw(opaque, frame, {});  // its own targets
-    }
+    static constexpr Format kAccumulation = Format::RGBA16F, kRevealage = Format::R16F;
 
-    // In a frame graph (Technique::addPasses): the accumulators are the graph's transients.
+    // The accumulators are the graph's transients.
     std::vector<TransientTarget> transientTargets(int width, int height, Format,
                                                   const FoliageFrame& frame) const override {
         if (visibleDraws(frame, width, height).empty()) return {};
         return {{"wboit_accumulation", renderTargetDesc("rt_wboit_accumulation", width, height, kAccumulation)},
                 {"wboit_revealage", renderTargetDesc("rt_wboit_revealage", width, height, kRevealage)}};
     }
-    void renderInto(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
-                    std::span<const TextureHandle> targets) override {
-        draw(opaque, frame, targets);
-    }
-
-    std::vector<NamedTarget> intermediates() const override {
-        if (!accumulation_.get()) return {};
-        return {{"wboit_accumulation", accumulation_}, {"wboit_revealage", revealageTarget_}};
-    }
-
-private:
-    static constexpr Format kAccumulation = Format::RGBA16F, kRevealage = Format::R16F;
-
-    // Into `targets` (accumulation, revealage) when given, else into its own.
-    void draw(engine::render::FrameTargets& opaque, const FoliageFrame& frame, std::span<const TextureHandle> targets) {
+    // Into `targets` (accumulation, revealage), which transientTargets() gives whenever foliage is in view.
+    void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
+                   std::span<const TextureHandle> targets) override {
         opaque.resolve();
         const int width = opaque.desc().width, height = opaque.desc().height;
         const auto visible = visibleDraws(frame, width, height);
         if (visible.empty()) return;
-        if (targets.empty()) ensureTargets(width, height);
-        const TextureHandle accumulation = targets.empty() ? accumulation_.get() : targets[0];
-        const TextureHandle revealage = targets.empty() ? revealageTarget_.get() : targets[1];
+        const TextureHandle accumulation = targets[0], revealage = targets[1];
         Rect region;
         for (const FoliageDraw* draw : visible)
             if (auto r = engine::render::screenBounds(draw->batch.worldBounds, frame.viewProj, width, height))
@@ -144,29 +128,11 @@ private:
         compositeScope.end();
     }
 
-    void ensureTargets(int width, int height) {
-        if (width == width_ && height == height_) return;
-        destroyTargets();
-        auto target = [&](const char* name, Format format) {
-            return Owned<TextureHandle>(backend_,
-                                        backend_.createTexture(renderTargetDesc(name, width, height, format)));
-        };
-        accumulation_ = target("rt_wboit_accumulation", kAccumulation);
-        revealageTarget_ = target("rt_wboit_revealage", kRevealage);
-        width_ = width, height_ = height;
-    }
-    void destroyTargets() {
-        accumulation_.reset();
-        revealageTarget_.reset();
-        width_ = height_ = 0;
-    }
-
+private:
     Backend& backend_;
     float depthScale_;
     Owned<ProgramHandle> accumulateProgram_, resolveProgram_;  // programs.hpp
     Owned<PipelineHandle> accumulatePipeline_, revealagePipeline_, resolvePipeline_;
-    Owned<TextureHandle> accumulation_, revealageTarget_;
-    int width_ = 0, height_ = 0;
 };
 
 }  // namespace

@@ -102,6 +102,12 @@ PipelineHandle WaterFeature::pipeline(CompareFunc depthFunc, bool doubleSided) {
     return pipelines_.emplace(std::pair{depthFunc, doubleSided}, std::move(pipeline)).first->second;
 }
 
+engine::render::ColorDepth WaterFeature::addPasses(engine::render::FrameGraph& graph, const scene::FeatureFrame& frame,
+                                                   const engine::render::ColorDepth& targets) {
+    return addDrawPass(graph, frame, targets, !prepare(frame), DepthUse::Test,
+                       [this](const scene::FeatureFrame& f) { draw(f); });
+}
+
 bool WaterFeature::prepare(const scene::FeatureFrame& frame) {
     frameInstances_.beginFrame();
     return !frame.lists.blend.empty();  // no pool in view: no pass

@@ -13,7 +13,9 @@
 //   4. depthMaskThreshold > 0: the colour pass draws into a copy of the opaque depth, and the
 //      foliage is drawn again, depth only, into rt_depth where the composited mask reaches the
 //      threshold (foliage_depth_program.hpp): elsewhere later passes see the opaque depth.
-// Depends only on engine/render: works with any Backend, in any engine.
+// Depends only on engine/render: works with any Backend, in any engine. A frame runs one way,
+// as passes added to the engine's frame graph (ssam/frame_graph_passes.hpp addSsamPasses), whose
+// transients are SSAM's intermediate targets.
 #include <optional>
 #include <vector>
 
@@ -52,9 +54,8 @@ struct Intermediates {
 };
 
 // What those targets are for a frame: render targets of the frame's size, the mask in the
-// configured precision, rt_foliage in the frame colour's format. SSAM makes them from these
-// when it keeps its own (render(), plan()); a frame graph creates them as transients
-// (ssam::addSsamPasses).
+// configured precision, rt_foliage in the frame colour's format. A frame graph creates them
+// as transients (ssam::addSsamPasses).
 struct IntermediateDescs {
     engine::render::TextureDesc mask;                      // rt_mask, or rt_mask_max with RG16F
     std::optional<engine::render::TextureDesc> maskAdd;    // rt_mask_add, RG16F precision only
@@ -79,20 +80,8 @@ public:
     void setSettings(const Settings& settings);
     const Settings& settings() const { return settings_; }
 
-    // All three passes; nothing runs when no batch is in view. SSAM keeps its intermediate
-    // targets from frame to frame (made when foliage is first in view, remade on a resize).
-    FrameReport render(const FrameTargets& targets, const FoliageView& view);
-
-    // The same, one step at a time: plan (which makes SSAM's own targets when foliage is in
-    // view), then each pass into them.
-    FramePlan plan(const FrameTargets& targets, const FoliageView& view);
-    FramePlan plan(int width, int height, engine::render::Format colorFormat, const FoliageView& view);
-    void maskPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
-    void colorPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth);
-    void compositePass(const FramePlan& plan, engine::render::TextureHandle color);
-
-    // For a caller that owns the targets (a frame graph's transients): the plan without
-    // making any target, the targets' descriptors, and each pass into `targets`.
+    // What the frame graph's passes call (addSsamPasses): the plan, the targets'
+    // descriptors, and each pass into `targets` (the graph's transients).
     FramePlan cull(int width, int height, const FoliageView& view) const;
     IntermediateDescs intermediateDescs(int width, int height, engine::render::Format colorFormat) const;
     void maskPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth,
@@ -105,8 +94,6 @@ public:
     void foliageDepthPass(const FramePlan& plan, const FoliageView& view, engine::render::TextureHandle depth,
                           const Intermediates& targets);
 
-    // SSAM's own targets (null until render() or plan() made them; never made for a graph).
-    Intermediates intermediates() const { return {mask_, maskAdd_, foliage_, depthCopy_}; }
     engine::render::Backend& backend() const { return backend_; }
 
 private:
@@ -120,19 +107,12 @@ private:
     Pipelines createPipelines(const Settings& settings);
     void destroy(const Pipelines& pipelines);
     CompositeParams compositeParams(const Intermediates& targets) const;  // the composite's inputs and knobs
-    void ensureTargets(int width, int height, engine::render::Format foliageFormat);
-    void destroyTargets();
 
     engine::render::Backend& backend_;
     Settings settings_;
     core::PassPlan passes_;                           // describePasses(settings_)
     engine::render::ProgramHandle compositeProgram_;  // composite_program.hpp
     Pipelines pipelines_;
-    engine::render::TextureHandle mask_, maskAdd_, foliage_, depthCopy_;
-    int width_ = 0, height_ = 0;
-    std::optional<engine::render::Format> foliageFormat_;
-    std::optional<MaskPrecision> targetPrecision_;
-    bool targetsCopyDepth_ = false;
 };
 
 }  // namespace ssam

@@ -12,6 +12,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
 #include "lightshafts/light_shaft_feature.hpp"
+#include "run_feature.hpp"
 
 namespace {
 
@@ -79,7 +80,7 @@ void shaftsFrame(benchmark::State& state) {
     backend->takeTimings();
     bool skipped = false;
     for (auto _ : state) {
-        shafts.render(frame);
+        test_support::runFeatures({&shafts}, frame);
         for (const PassTiming& t : backend->takeTimings())
             if (t.pass == "light shafts") skipped = t.skipped;
     }

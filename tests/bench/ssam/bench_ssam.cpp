@@ -2,7 +2,7 @@
 // "Skip verified by benchmark": what SSAM costs a frame on the soft backend at 1280x720 when no
 // foliage is in view (nothing: no pass runs, no target is allocated) and when it is.
 //   OpaqueOnly        the opaque pass alone: clear + 8 overlapping opaque quads (Flat, depth)
-//   SsamNoFoliage     the same, then ScreenSpaceAlphaMask::render() with 24 foliage batches all
+//   SsamNoFoliage     the same, then SSAM's passes in a frame graph with 24 foliage batches all
 //                     outside the view volume (behind the camera or off to the side)
 //   SsamWithFoliage   the same, with the 24 batches in view: crossing vertex-coloured cards of
 //                     alpha 0.15-0.85 covering about 40% of the screen, 3 passes
@@ -15,8 +15,9 @@
 
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/frame_graph/transient_texture_pool.hpp"
 #include "quad_scene.hpp"
-#include "ssam/ssam.hpp"
+#include "run_ssam.hpp"
 
 namespace {
 
@@ -63,12 +64,15 @@ void frame(benchmark::State& state, Case c) {
     QuadBatches scene(*backend, opaqueQuads());
     QuadBatches foliage(*backend, foliageQuads(c == Case::SsamWithFoliage));
     const ssam::FoliageView view{glm::mat4(1.0f), DirectionalLight{}, foliage.batches};
+    TransientTexturePool pool(*backend);  // kept across frames, as the racer's
     int passesRun = 0;
     for (auto _ : state) {
         backend->beginPass(opaque.passDesc({0.5f, 0.6f, 0.8f, 1.0f}));
         scene.drawFlat(pipeline);
         backend->endPass();
-        if (c != Case::OpaqueOnly) passesRun = ssam.render({opaque.color(), opaque.depth()}, view).passesRun;
+        if (c != Case::OpaqueOnly)
+            passesRun =
+                test_support::runSsam(ssam, {opaque.color(), opaque.depth()}, view, false, &pool).report.passesRun;
         benchmark::DoNotOptimize(soft::softDriver(*backend).stats().passes);
     }
     (void)backend->readback(opaque.color());  // the frames are finished

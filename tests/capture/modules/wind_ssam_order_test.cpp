@@ -19,6 +19,7 @@
 #include "engine/scene/draw_lists.hpp"
 #include "ssam/ssam.hpp"
 #include "wind/wind_system.hpp"
+#include "run_ssam.hpp"
 
 namespace {
 
@@ -130,7 +131,7 @@ struct TwoTrees {
             backend->endPass();
             backend->destroy(pipeline);
         } else {
-            ssam.render({opaque.color(), opaque.depth()}, {viewProj, kSun, batches});
+            test_support::runSsam(ssam, {opaque.color(), opaque.depth()}, {viewProj, kSun, batches});
         }
         Frame frame{backend->readback(opaque.color()), backend->readback(opaque.depth())};
         for (BufferHandle b : buffers) backend->destroy(b);

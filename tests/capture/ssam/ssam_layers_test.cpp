@@ -10,6 +10,8 @@
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
+#include "run_graph.hpp"
+#include "ssam/frame_graph_passes.hpp"
 #include "ssam/ssam.hpp"
 
 namespace {
@@ -34,8 +36,17 @@ TEST(SsamCapture, EveryIntermediateIsALayerOfOneExr) {
     std::vector<capture::CapturedLayer> layers;
     layers.push_back(capture::captureTarget(*backend, opaque.color(), "opaque"));
     layers.push_back(capture::captureTarget(*backend, opaque.depth(), "depth"));
-    ssam.render({opaque.color(), opaque.depth()}, {glm::mat4(1.0f), unlit, quads.batches});
-    capture::CapturedLayer mask = capture::captureTarget(*backend, ssam.intermediates().mask, "mask");
+    // SSAM's passes as the racer runs them; its intermediates are captured before the graph releases them.
+    test_support::OneFrameGraph frame(*backend);
+    const ssam::FoliageView view{glm::mat4(1.0f), unlit, quads.batches};
+    const ssam::SsamPasses passes =
+        ssam::addSsamPasses(frame.graph(), ssam, view, frame.import(opaque.color(), opaque.depth()));
+    capture::CapturedLayer mask, foliage;
+    frame.use({passes.mask, passes.foliage}, [&](const std::vector<TextureHandle>& t) {
+        mask = capture::captureTarget(*backend, t[0], "mask");
+        foliage = capture::captureTarget(*backend, t[1], "foliage");
+    });
+    frame.run(passes.frame);
     capture::CapturedLayer maskMax{"mask_max", capture::Image::make(16, 16, std::vector<std::string>{"Y"})};
     capture::CapturedLayer maskAdd{"mask_add", capture::Image::make(16, 16, std::vector<std::string>{"Y"})};
     for (int y = 0; y < 16; ++y)
@@ -45,7 +56,7 @@ TEST(SsamCapture, EveryIntermediateIsALayerOfOneExr) {
         }
     layers.push_back(std::move(maskMax));
     layers.push_back(std::move(maskAdd));
-    layers.push_back(capture::captureTarget(*backend, ssam.intermediates().foliage, "foliage"));
+    layers.push_back(std::move(foliage));
     layers.push_back(capture::captureTarget(*backend, opaque.depth(), "foliage_depth"));
     layers.push_back(capture::captureTarget(*backend, opaque.color(), "result"));
 

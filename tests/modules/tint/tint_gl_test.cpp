@@ -15,6 +15,7 @@
 #include "engine/scene/mesh_library.hpp"
 #include "test_feature_modules.hpp"
 #include "tint/tint_module.hpp"
+#include "run_feature.hpp"
 
 namespace {
 
@@ -42,20 +43,20 @@ render::Readback tinted(render::Backend& backend) {
     {
         const std::unique_ptr<scene::Feature> feature = tint->make({registry, library, 1, {}});
         const scene::DrawLists lists;
-        feature->render({backend,
-                         library,
-                         lists,
-                         color,
-                         depth,
-                         kW,
-                         kH,
-                         glm::mat4(1.0f),
-                         glm::mat4(1.0f),
-                         glm::mat4(1.0f),
-                         glm::vec3(0.0f),
-                         {},
-                         0.0f,
-                         render::CompareFunc::Less});
+        test_support::runFeatures({feature.get()}, {backend,
+                                                    library,
+                                                    lists,
+                                                    color,
+                                                    depth,
+                                                    kW,
+                                                    kH,
+                                                    glm::mat4(1.0f),
+                                                    glm::mat4(1.0f),
+                                                    glm::mat4(1.0f),
+                                                    glm::vec3(0.0f),
+                                                    {},
+                                                    0.0f,
+                                                    render::CompareFunc::Less});
     }
     render::Readback r = backend.readback(color);
     backend.destroy(color);

@@ -11,6 +11,7 @@
 #include "engine/scene/mesh_library.hpp"
 #include "test_feature_modules.hpp"
 #include "tint/tint_module.hpp"
+#include "run_feature.hpp"
 
 namespace {
 
@@ -57,7 +58,7 @@ TEST(Tint, MultipliesTheFrameColourThroughTheRegistry) {
     const scene::FeatureFrame frame{
         *backend,        library,         lists,           color,           depth, kW,   kH,
         glm::mat4(1.0f), glm::mat4(1.0f), glm::mat4(1.0f), glm::vec3(0.0f), {},    0.0f, render::CompareFunc::Less};
-    feature->render(frame);
+    test_support::runFeatures({feature.get()}, frame);
     const render::Readback r = backend->readback(color);
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {

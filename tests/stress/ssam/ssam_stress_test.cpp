@@ -15,6 +15,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
 #include "ssam/ssam.hpp"
+#include "run_ssam.hpp"
 
 namespace {
 
@@ -41,13 +42,12 @@ Result renderLayers(ssam::MaskPrecision precision, const std::vector<Quad>& quad
     config.maskPrecision = precision;
     ssam::ScreenSpaceAlphaMask ssam(*backend, config);
     QuadBatches q(*backend, quads);
-    ssam.render({opaque.color(), opaque.depth()}, {glm::mat4(1.0f), unlit(), q.batches});
+    const test_support::SsamRun run =
+        test_support::runSsam(ssam, {opaque.color(), opaque.depth()}, {glm::mat4(1.0f), unlit(), q.batches}, true);
     Result r{0.0f, 0.0f, backend->readback(opaque.color())};
-    const auto layers = ssam.intermediates();
-    if (layers.mask) {
-        const Readback mask = backend->readback(layers.mask);
-        r.maxMask = mask.at(4, 4, 0);
-        r.addMask = layers.maskAdd ? backend->readback(layers.maskAdd).at(4, 4, 0) : mask.at(4, 4, 3);
+    if (!run.mask.values.empty()) {
+        r.maxMask = run.mask.at(4, 4, 0);
+        r.addMask = run.maskAdd.values.empty() ? run.mask.at(4, 4, 3) : run.maskAdd.at(4, 4, 0);
     }
     return r;
 }
@@ -165,7 +165,7 @@ TEST(SsamStress, NonFiniteTextureAlphaAndUvs) {
     batch.baseColor.texture = texture;
     batch.worldBounds = {{-1, -1, 0.5f}, {1, 1, 0.5f}};
     ssam::ScreenSpaceAlphaMask ssam(*backend);
-    ssam.render({opaque.color(), opaque.depth()}, {glm::mat4(1.0f), unlit(), std::span(&batch, 1)});
+    test_support::runSsam(ssam, {opaque.color(), opaque.depth()}, {glm::mat4(1.0f), unlit(), std::span(&batch, 1)});
     for (float v : backend->readback(opaque.color()).values) ASSERT_TRUE(std::isfinite(v));
 }
 
@@ -212,8 +212,8 @@ TEST(SsamStress, ReverseZResolvesThirtyKilometreVistas) {
         ssam::Settings config;
         config.depthTest = ssam::DepthTest::Greater;
         ssam::ScreenSpaceAlphaMask ssam(*backend, config);
-        ssam.render({opaque.color(), opaque.depth()}, {proj, unlit(), batches});
-        const Readback foliage = backend->readback(ssam.intermediates().foliage);
+        const Readback foliage =
+            test_support::runSsam(ssam, {opaque.color(), opaque.depth()}, {proj, unlit(), batches}, true).foliage;
         EXPECT_FLOAT_EQ(foliage.at(4, 4, 0), 1.0f) << "near first: " << nearFirst;
         EXPECT_FLOAT_EQ(foliage.at(4, 4, 1), 0.0f) << "near first: " << nearFirst;
     }

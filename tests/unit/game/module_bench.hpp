@@ -20,6 +20,7 @@
 #include "failing_backend.hpp"  // tests/support
 #include "racing_scene.hpp"
 #include "verge.hpp"
+#include "run_feature.hpp"
 
 namespace racer::testing {
 
@@ -66,7 +67,7 @@ public:
             const engine::scene::FeatureFrame frame{
                 backend,   scene_.library(), lists,         color_,   depth_,       kWidth, kHeight,
                 view.view, view.projection,  view.viewProj, view.eye, scene_.sun(), kDt,    CompareFunc::Greater};
-            feature->render(frame);
+            test_support::runFeatures({feature.get()}, frame);
         }
     }
 

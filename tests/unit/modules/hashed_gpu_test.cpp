@@ -16,6 +16,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "transparency/create_technique.hpp"
 #include "transparency/hashed_alpha.hpp"
+#include "run_technique.hpp"
 
 namespace {
 
@@ -109,7 +110,7 @@ TEST(SSAM_GPU_SUITE(Hashed), TechniqueFrameMatchesTheSoftBackendButForRoundingFl
         frame.viewProj = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
         frame.light = unlitLight();
         frame.draws = std::span(&draw, 1);
-        technique->render(opaque, frame);
+        test_support::runTechnique(backend, *technique, opaque, frame);
         Readback r = backend.readback(opaque.color());
         backend.destroy(buffer);
         return r;

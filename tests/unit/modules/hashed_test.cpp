@@ -11,6 +11,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "transparency/create_technique.hpp"
 #include "transparency/hashed_alpha.hpp"
+#include "run_technique.hpp"
 
 namespace {
 
@@ -61,7 +62,7 @@ std::vector<float> render(Backend& backend, Technique& technique, const Scene& s
     frame.light = unlitLight();
     frame.draws = std::span(&draw, 1);
     frame.frameIndex = scene.frameIndex;
-    technique.render(opaque, frame);
+    test_support::runTechnique(backend, technique, opaque, frame);
     const Readback r = backend.readback(opaque.color());
     backend.destroy(vertices);
     backend.destroy(instances);

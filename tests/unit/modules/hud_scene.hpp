@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // modules/hud on any backend: a target filled with a gradient (so every pixel has its own
-// value), an overlay drawn over it, the result read back.
+// value), an overlay's passes over it in a one-off frame graph (tests/support/run_graph.hpp), as
+// the racer adds them, the result read back.
 #include <memory>
 #include <vector>
 
 #include "engine/render/backend.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "hud/overlay.hpp"
+#include "run_graph.hpp"
 
 namespace hud::testing {
 
@@ -48,8 +50,10 @@ struct OverlayScene {
         overlay.beginFrame();
         OverlayContent copy;
         copy.images.push_back({background, {}, {0, 0, kW, kH}, {0, 0}, 1});
-        overlay.draw(target, kW, kH, copy, "background");
-        overlay.draw(target, kW, kH, content);
+        test_support::OneFrameGraph frame(*backend);
+        engine::render::FrameGraphTexture color = frame.import(target);
+        color = overlay.addPass(frame.graph(), "background", color, target, kW, kH, copy);
+        frame.run(overlay.addPass(frame.graph(), "overlay", color, target, kW, kH, content));
         return backend->readback(target);
     }
 

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // A whole living-scene frame for module tests, on any backend: extraction, the opaque pass,
-// SSAM (whose colour pass writes the foliage depth), then each feature's passes in order,
-// as the racer runs them. Reverse-Z, as the racer.
+// then in a one-off frame graph (tests/support/run_graph.hpp) SSAM's passes (whose colour
+// pass writes the foliage depth) and each feature's passes in order, as the racer runs them.
+// Reverse-Z, as the racer.
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -14,6 +16,8 @@
 #include "engine/scene/components.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "engine/scene/frame_feature.hpp"
+#include "run_feature.hpp"
+#include "ssam/frame_graph_passes.hpp"
 #include "ssam/ssam.hpp"
 
 namespace living::testing {
@@ -49,6 +53,11 @@ struct LivingFrame {
         p.depth = engine::render::DepthState::testAndWrite(engine::render::CompareFunc::Greater);
         return backend.createPipeline(p);
     }();
+
+    // Textures of the graph (a feature's transients) to read back after the features' passes,
+    // into readBacks; set before render().
+    std::function<std::vector<engine::render::FrameGraphTexture>()> readBackAfterFeatures;
+    std::vector<engine::render::Readback> readBacks;
 
     LivingFrame(engine::render::Backend& b, const engine::scene::MeshLibrary& l, int w, int h)
         : backend(b), library(l), width(w), height(h) {}
@@ -100,11 +109,17 @@ struct LivingFrame {
             f.worldBounds = {b.worldBounds.min, b.worldBounds.max};
             foliage.push_back(f);
         }
-        ssam->render({opaque.color(), opaque.depth()}, {viewProj, kSun, foliage});
+        const ssam::FoliageView foliageView{viewProj, kSun, foliage};
         const engine::scene::FeatureFrame frame{
             backend, library, lists,    opaque.color(), opaque.depth(), width, height,
             view,    proj,    viewProj, camera.eye,     kSun,           time,  CompareFunc::Greater};
-        for (engine::scene::Feature* f : features) f->render(frame);
+        test_support::OneFrameGraph one(backend);
+        const ColorDepth afterSsam =
+            ssam::addSsamPasses(one.graph(), *ssam, foliageView, one.import(opaque.color(), opaque.depth())).frame;
+        const ColorDepth result = test_support::addFeatures(one, features, frame, afterSsam);
+        if (readBackAfterFeatures) one.readBack(readBackAfterFeatures());
+        one.run(result);
+        readBacks = one.readBacks();
         for (BufferHandle b : buffers) backend.destroy(b);
         return backend.readback(opaque.color());
     }

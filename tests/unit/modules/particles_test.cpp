@@ -119,8 +119,10 @@ TEST(Particles, PremultipliedLayerAccumulatesAlphaAndSharesAdditive) {
     f.simulation().emit(puff({0.0f, 0.0f, 6.0f}, {1.0f, 0.0f, 0.0f, 0.5f}));
     f.simulation().emit(puff({0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 1.0f, 0.5f}));
     f.simulation().emit(puff({0.0f, 0.0f, 4.0f}, {0.0f, 1.0f, 0.0f, 0.5f}, 1.0f));
+    s.frame.readBackAfterFeatures = [&f] { return std::vector{f.graphLayer()}; };
     s.render(&f);
-    const render::Readback layer = s.backend->readback(f.layer());
+    ASSERT_EQ(s.frame.readBacks.size(), 1u);
+    const render::Readback layer = s.frame.readBacks[0];
     // Centre of the quads (shape 1): a = 0.5 + 0.5 * (1 - 0.5) = 0.75 ([Turánszki 2017]), the
     // additive spray adds green without touching alpha.
     const int x = kW / 2, y = kH / 2;

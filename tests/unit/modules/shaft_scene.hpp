@@ -50,12 +50,17 @@ struct ShaftScene {
                 g.sun.towardLight = toward;
                 return g;
             }
-            bool prepare(const engine::scene::FeatureFrame& f) override { return inner && inner->prepare(withSun(f)); }
-            void draw(const engine::scene::FeatureFrame& f) override { inner->draw(withSun(f)); }
+            engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph,
+                                                 const engine::scene::FeatureFrame& f,
+                                                 const engine::render::ColorDepth& targets) override {
+                return inner->addPasses(graph, withSun(f), targets);
+            }
         } wrapper;
         wrapper.inner = feature;
         wrapper.toward = towardSun;
-        return frame.render(registry, camera, 0.0f, {&wrapper});
+        std::vector<engine::scene::Feature*> features;
+        if (feature) features.push_back(&wrapper);
+        return frame.render(registry, camera, 0.0f, features);
     }
 };
 

@@ -39,7 +39,9 @@ inline void expectTechniqueExceptionSafe(Backend& inner, TechniqueKind kind) {
     frame.opaquePass();
     const TextureHandle probe = backend.createTexture(renderTargetDesc("probe", 4, 4, Format::RGBA8_UNORM), nullptr);
     const int live = backend.live;
-    const auto firstFrame = [&] { createTechnique(kind, backend, options)->render(frame.opaque, frame.frame()); };
+    const auto firstFrame = [&] {
+        test_support::runTechnique(backend, *createTechnique(kind, backend, options), frame.opaque, frame.frame());
+    };
 
     // A clean first frame: how many creates and draws it reaches.
     const int createsBefore = backend.creates, drawsBefore = backend.draws;

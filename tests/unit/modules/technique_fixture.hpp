@@ -9,6 +9,7 @@
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "quad_scene.hpp"
+#include "run_technique.hpp"
 #include "transparency/create_technique.hpp"
 
 namespace transparency::testing {
@@ -56,10 +57,10 @@ struct TechniqueFrame {
         return f;
     }
 
-    // opaque pass, then the technique; returns the final colour.
+    // opaque pass, then the technique's passes in a one-off frame graph; returns the final colour.
     Readback run(Technique& technique, const std::vector<Quad>& opaqueQuads = {}) {
         opaquePass(opaqueQuads);
-        technique.render(opaque, frame());
+        test_support::runTechnique(backend, technique, opaque, frame());
         return backend.readback(opaque.color());
     }
 };

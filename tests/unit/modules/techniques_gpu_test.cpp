@@ -9,6 +9,7 @@
 #include "engine/core/error.hpp"
 #include "gpu_backend.hpp"
 #include "technique_fixture.hpp"
+#include "run_technique.hpp"
 
 namespace {
 
@@ -74,7 +75,7 @@ TEST(SSAM_GPU_SUITE(Techniques), WboitDepthWeightMatchesTheSoftBackend) {
         frame.viewProj = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f);
         frame.light = unlitLight();
         frame.draws = std::span(&draw, 1);
-        technique->render(opaque, frame);
+        test_support::runTechnique(backend, *technique, opaque, frame);
         Readback r = backend.readback(opaque.color());
         backend.destroy(buffer);
         return r;

@@ -101,7 +101,7 @@ TEST(Techniques, SsamMatchesThePaperFormula) {
     expectRgbNear(rgbAt(r, kOverlap, kRow), glm::mix(opaque, red, ssamMask(0.6f, 1.0f)), 1e-5f, "overlap");
     expectRgbNear(rgbAt(r, kOnlyB, kRow), glm::mix(opaque, green, ssamMask(0.6f, 0.6f)), 1e-5f, "only B");
     std::vector<std::string> names;
-    for (const NamedTarget& t : technique->intermediates()) names.push_back(t.name);
+    for (const GraphTarget& t : technique->graphIntermediates()) names.push_back(t.layer);
     EXPECT_EQ(names, (std::vector<std::string>{"mask", "foliage"}));
 }
 
@@ -167,7 +167,7 @@ TEST(Techniques, SortedBlendingSortsTheInstancesOfOneBatch) {
         FoliageFrame frame;
         frame.light = unlitLight();
         frame.draws = std::span(&draw, 1);
-        technique->render(opaque, frame);
+        test_support::runTechnique(*backend, *technique, opaque, frame);
         const Readback r = backend->readback(opaque.color());
         const glm::vec3 exact = over(tints[0], over(tints[1], over(tints[2], glm::vec3(kOpaqueColor))));
         expectRgbNear(rgbAt(r, 7, 7), exact, 1e-6f, reverse ? "reverse-Z" : "conventional depth");
@@ -250,7 +250,7 @@ TEST(Techniques, WboitMatchesThePaperFormula) {
     expectRgbNear(rgbAt(r2, kOverlap, kRow), both, kHalf, "overlap, B submitted first");
     // and not the exact "over" (the approximation is visible in this case).
     EXPECT_GT(glm::length(both - over(kQuadA.color, over(kQuadB.color, opaque))), 0.02f);
-    EXPECT_EQ(technique->intermediates().size(), 2u);
+    EXPECT_EQ(technique->graphIntermediates().size(), 2u);
 }
 
 // Eq. (7)'s weight falls with view depth: nearer layers dominate the average.
@@ -286,7 +286,7 @@ TEST(Techniques, WboitWeightsNearerLayersMore) {
     frame.viewProj = perspective;
     frame.light = unlitLight();
     frame.draws = std::span(&draw, 1);
-    technique->render(opaque, frame);
+    test_support::runTechnique(*backend, *technique, opaque, frame);
     const glm::vec3 got = rgbAt(backend->readback(opaque.color()), 8, 8);
     auto g = [](float z) {
         const float v = 10.0f / (1e-5f + std::pow(z / 5.0f, 2.0f) + std::pow(z / 200.0f, 6.0f));
@@ -328,7 +328,7 @@ TEST(Techniques, SsamPlusEstimatesTheCoverageOfEqualLayersExactly) {
     const Readback exact = g.run(*reference);
     expectRgbNear(rgbAt(r, 3, kRow), rgbAt(exact, 3, kRow), 1e-3f, "three layers vs reference");
     std::vector<std::string> names;
-    for (const NamedTarget& t : technique->intermediates()) names.push_back(t.name);
+    for (const GraphTarget& t : technique->graphIntermediates()) names.push_back(t.layer);
     EXPECT_EQ(names, (std::vector<std::string>{"mask_max", "mask_add", "foliage"}));
 }
 
@@ -367,7 +367,7 @@ TEST(Techniques, UnlitBatchesIgnoreTheLight) {
             f.opaquePass();
             FoliageFrame frame = f.frame();
             frame.light = {{0.0f, 0.0f, 1.0f}, glm::vec3(0.0f), glm::vec3(0.0f)};  // black
-            technique->render(f.opaque, frame);
+            test_support::runTechnique(*backend, *technique, f.opaque, frame);
             colour[unlit] = rgbAt(backend->readback(f.opaque.color()), kOnlyB, kRow);
         }
         expectRgbNear(colour[false], {0.0f, 0.0f, 0.0f}, 1e-6f, techniqueName(kind));

@@ -13,6 +13,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "transparency/create_technique.hpp"
 #include "transparency/temporal.hpp"
+#include "run_technique.hpp"
 
 namespace {
 
@@ -54,7 +55,7 @@ Readback sixFrames(Backend& backend, TechniqueKind kind) {
         frame.light = unlitLight();
         frame.draws = std::span(&draw, 1);
         frame.frameIndex = i;
-        technique->render(opaque, frame);
+        test_support::runTechnique(backend, *technique, opaque, frame);
     }
     Readback r = backend.readback(opaque.color());
     backend.destroy(buffer);

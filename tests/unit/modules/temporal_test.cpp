@@ -12,6 +12,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "transparency/create_technique.hpp"
 #include "transparency/temporal.hpp"
+#include "run_technique.hpp"
 
 namespace {
 
@@ -65,7 +66,7 @@ public:
         f.draws = std::span(&draw_, 1);
         f.frameIndex = index;
         f.cut = cut;
-        technique_->render(opaque_, f);
+        test_support::runTechnique(backend_, *technique_, opaque_, f);
         const Readback r = backend_.readback(opaque_.color());
         std::vector<float> red;
         for (int y = 0; y < kSize; ++y)

@@ -20,11 +20,10 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/backend.hpp"
-#include "engine/render/frame_graph.hpp"
-#include "engine/render/frame_graph/backend_textures.hpp"
-#include "engine/render/frame_graph/side_effect_pass.hpp"
+#include "engine/render/frame_graph/transient_texture_pool.hpp"
 #include "engine/render/frame_targets.hpp"
 #include "quad_scene.hpp"
+#include "run_ssam.hpp"
 #include "ssam/frame_graph_passes.hpp"
 #include "ssam/ssam.hpp"
 
@@ -89,8 +88,7 @@ TYPED_TEST_P(SsamCases, CrossingQuadsGiveMaxAndAddMasks) {
     f.opaquePass();
     ssam::ScreenSpaceAlphaMask ssam(*f.backend);
     QuadBatches q(*f.backend, {kQuadA, kQuadB});
-    ssam.render(f.targets(), viewOf(q));
-    const Readback mask = f.backend->readback(ssam.intermediates().mask);
+    const Readback mask = test_support::runSsam(ssam, f.targets(), viewOf(q), true).mask;
     // RGB = MAX (§3.5.2 "alpha-z-buffer"), A = ADD.
     EXPECT_FLOAT_EQ(mask.at(kOnlyA, 4, 0), q8(0.4f));
     EXPECT_FLOAT_EQ(mask.at(kOnlyA, 4, 3), q8(0.4f));
@@ -106,8 +104,7 @@ TYPED_TEST_P(SsamCases, ColourPassAlphaTestsAndWritesFoliageDepth) {
     f.opaquePass();
     ssam::ScreenSpaceAlphaMask ssam(*f.backend);  // colour reference 64/255: A (0.4) passes, B (0.2) fails
     QuadBatches q(*f.backend, {kQuadA, kQuadB});
-    ssam.render(f.targets(), viewOf(q));
-    const Readback foliage = f.backend->readback(ssam.intermediates().foliage);
+    const Readback foliage = test_support::runSsam(ssam, f.targets(), viewOf(q), true).foliage;
     const Readback depth = f.backend->readback(f.opaque.depth());
     const float clearGreen = ssam::Settings{}.foliageClearColor[1];
     EXPECT_FLOAT_EQ(foliage.at(kOverlap, 4, 0), 1.0f);          // A's red
@@ -126,7 +123,7 @@ TYPED_TEST_P(SsamCases, CompositeFollowsListing32) {
             config.maskLerp = lerp;
             ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
             QuadBatches q(*f.backend, {kQuadA, kQuadB});
-            ssam.render(f.targets(), viewOf(q));
+            test_support::runSsam(ssam, f.targets(), viewOf(q));
             const Readback result = f.backend->readback(f.opaque.color());
             // mask = lerp(max, add, maskLerp) from the stored 8-bit masks; result = lerp(opaque, foliage, m^2).
             float m = q8(0.4f) + (q8(0.6f) - q8(0.4f)) * lerp;
@@ -147,7 +144,7 @@ TYPED_TEST_P(SsamCases, SquaringAndLerpChangeTheResultAsTheFormulaSays) {
         f.opaquePass();
         ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
         QuadBatches q(*f.backend, {kQuadA, kQuadB});
-        ssam.render(f.targets(), viewOf(q));
+        test_support::runSsam(ssam, f.targets(), viewOf(q));
         return f.backend->readback(f.opaque.color()).at(kOverlap, 4, 0);
     };
     ssam::Settings squared, linear, maxOnly;
@@ -170,10 +167,9 @@ TYPED_TEST_P(SsamCases, Rgba8AddMaskSaturatesWhereFloatMasksDoNot) {
         config.maskPrecision = precision;
         ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
         QuadBatches q(*f.backend, quads);
-        ssam.render(f.targets(), viewOf(q));
-        const auto layers = ssam.intermediates();
-        const Readback mask = f.backend->readback(layers.mask);
-        const float add = layers.maskAdd ? f.backend->readback(layers.maskAdd).at(3, 3, 0) : mask.at(3, 3, 3);
+        const test_support::SsamRun run = test_support::runSsam(ssam, f.targets(), viewOf(q), true);
+        const Readback& mask = run.mask;
+        const float add = run.maskAdd.values.empty() ? mask.at(3, 3, 3) : run.maskAdd.at(3, 3, 0);
         SCOPED_TRACE(ssam::maskPrecisionName(precision));
         EXPECT_NEAR(mask.at(3, 3, 0), 0.1f, 1.0f / 255.0f);                       // MAX
         if (precision == ssam::MaskPrecision::Rgba8) EXPECT_FLOAT_EQ(add, 1.0f);  // 255/alpha layers saturate (§3.5.2)
@@ -187,8 +183,7 @@ TYPED_TEST_P(SsamCases, OpaqueGeometryOccludesFoliageInEveryPass) {
     f.opaquePass({{-1.0f, -1.0f, 0.0f, 1.0f, 0.1f, {0.0f, 0.0f, 1.0f, 1.0f}}});
     ssam::ScreenSpaceAlphaMask ssam(*f.backend);
     QuadBatches q(*f.backend, {kQuadA, kQuadB});
-    ssam.render(f.targets(), viewOf(q));
-    const Readback mask = f.backend->readback(ssam.intermediates().mask);
+    const Readback mask = test_support::runSsam(ssam, f.targets(), viewOf(q), true).mask;
     EXPECT_FLOAT_EQ(mask.at(kOnlyA, 4, 3), 0.0f);
     EXPECT_FLOAT_EQ(f.backend->readback(f.opaque.color()).at(kOnlyA, 4, 2), 1.0f);  // untouched blue
 }
@@ -199,7 +194,7 @@ TYPED_TEST_P(SsamCases, FoliageDepthOccludesLaterDrawsBehindNotInFront) {
     ssam::ScreenSpaceAlphaMask ssam(*f.backend);
     const Quad solidLeaf{-1.0f, -1.0f, 1.0f, 1.0f, 0.5f, {0.0f, 1.0f, 0.0f, 1.0f}};
     QuadBatches q(*f.backend, {solidLeaf});
-    ssam.render(f.targets(), viewOf(q));
+    test_support::runSsam(ssam, f.targets(), viewOf(q));
     // A later transparent pass (§3.7): a white quad behind the foliage on the left, in front on the right.
     PipelineDesc p;
     p.name = "later";
@@ -227,15 +222,17 @@ TYPED_TEST_P(SsamCases, NoFoliageInViewRunsNoPass) {
     // A quad entirely behind the camera (z < 0) and one off to the side.
     QuadBatches q(*f.backend, {{-1, -1, 1, 1, -0.5f, glm::vec4(1.0f)}, {3, 3, 4, 4, 0.5f, glm::vec4(1.0f)}});
     (void)f.backend->takeTimings();
-    const ssam::FrameReport report = ssam.render(f.targets(), viewOf(q));
+    TransientTexturePool pool(*f.backend);
+    const ssam::FrameReport report = test_support::runSsam(ssam, f.targets(), viewOf(q), false, &pool).report;
     EXPECT_EQ(report.passesRun, 0);
     EXPECT_EQ(report.batchesVisible, 0);
     EXPECT_EQ(ssamPassesTimed(*f.backend), 0);
-    EXPECT_FALSE(ssam.intermediates().mask.valid());  // no target was even allocated
+    EXPECT_EQ(pool.texturesHeld(), 0u);  // no target was even allocated
     EXPECT_EQ(f.backend->readback(f.opaque.color()).values, before.values);
     // Control: the same SSAM with a visible quad runs and times its three passes.
     QuadBatches visible(*f.backend, {kQuadA});
-    EXPECT_EQ(ssam.render(f.targets(), viewOf(visible)).passesRun, 3);
+    EXPECT_EQ(test_support::runSsam(ssam, f.targets(), viewOf(visible), false, &pool).report.passesRun, 3);
+    EXPECT_GT(pool.texturesHeld(), 0u);
     (void)f.backend->readback(f.opaque.color());
     EXPECT_EQ(ssamPassesTimed(*f.backend), 3);
 }
@@ -259,8 +256,7 @@ TYPED_TEST_P(SsamCases, MaskProgramIgnoresColour) {
     f.opaquePass();
     ssam::ScreenSpaceAlphaMask ssam(*f.backend);
     QuadBatches q(*f.backend, {{-1, -1, 1, 1, 0.5f, {NAN, NAN, NAN, 0.4f}}});
-    ssam.render(f.targets(), viewOf(q));
-    const Readback mask = f.backend->readback(ssam.intermediates().mask);
+    const Readback mask = test_support::runSsam(ssam, f.targets(), viewOf(q), true).mask;
     EXPECT_FLOAT_EQ(mask.at(5, 5, 0), q8(0.4f));
     EXPECT_FLOAT_EQ(mask.at(5, 5, 3), q8(0.4f));
 }
@@ -297,80 +293,49 @@ TYPED_TEST_P(SsamCases, BadConfigurationIsRejectedWithTheKnobName) {
 
 // ---- SSAM as a frame-graph pass group -----------------------------------------------
 
-// opaque -> SSAM -> a side-effect "present" pass reading the colour and depth.
-template <typename BackendKind>
-inline std::vector<std::string> runGraph(Frame<BackendKind>& f, ssam::ScreenSpaceAlphaMask& ssam,
-                                         const ssam::FoliageView& view) {
-    FrameGraph graph;
-    const auto color = graph.importTexture("rt_opaque", graphDescOf(f.backend->describe(f.opaque.color())),
-                                           toConcrete(f.opaque.color()));
-    const auto depth = graph.importTexture("rt_depth", graphDescOf(f.backend->describe(f.opaque.depth())),
-                                           toConcrete(f.opaque.depth()));
-    addSideEffectPass(graph, "present", ssam::addSsamPasses(graph, ssam, view, {color, depth}).frame);
-    graph.execute(backendTextureAllocator(*f.backend));
-    return graph.executedPassNames();
-}
-
 TYPED_TEST_P(SsamCases, FrameGraphRunsThreePassesWithFoliageAndNoneWithout) {
     Frame<TypeParam> f;
     f.opaquePass();
     ssam::ScreenSpaceAlphaMask ssam(*f.backend);
     QuadBatches visible(*f.backend, {kQuadA, kQuadB});
-    EXPECT_EQ(runGraph(f, ssam, viewOf(visible)),
+    EXPECT_EQ(test_support::runSsam(ssam, f.targets(), viewOf(visible)).passes,
               (std::vector<std::string>{"ssam mask", "ssam colour", "ssam composite", "present"}));
-    const Readback viaGraph = f.backend->readback(f.opaque.color());
-    // In a graph the intermediates are its transients: SSAM made no target of its own.
-    EXPECT_FALSE(ssam.intermediates().mask.valid());
-    EXPECT_FALSE(ssam.intermediates().foliage.valid());
-
-    // The same frame through render() gives the same image.
-    Frame<TypeParam> direct;
-    direct.opaquePass();
-    ssam::ScreenSpaceAlphaMask ssam2(*direct.backend);
-    QuadBatches visible2(*direct.backend, {kQuadA, kQuadB});
-    ssam2.render(direct.targets(), viewOf(visible2));
-    EXPECT_EQ(direct.backend->readback(direct.opaque.color()).values, viaGraph.values);
 
     Frame<TypeParam> g;
     g.opaquePass();
-    ssam::ScreenSpaceAlphaMask ssam3(*g.backend);
+    ssam::ScreenSpaceAlphaMask hiddenSsam(*g.backend);
     QuadBatches hidden(*g.backend, {{3, 3, 4, 4, 0.5f, glm::vec4(1.0f)}});
     (void)g.backend->takeTimings();
-    EXPECT_EQ(runGraph(g, ssam3, viewOf(hidden)), (std::vector<std::string>{"present"}));
+    EXPECT_EQ(test_support::runSsam(hiddenSsam, g.targets(), viewOf(hidden)).passes,
+              (std::vector<std::string>{"present"}));
     EXPECT_EQ(ssamPassesTimed(*g.backend), 0);
 }
 
 // Settings::depthMaskThreshold on the engine's backends: rt_depth keeps the foliage depth only
-// where the composited mask reaches the threshold, through render() and through a frame graph;
-// the composited colour is the same as without it. A alone: mask 0.4 -> 0.16 squared; the
+// where the composited mask reaches the threshold (the "ssam depth restore" pass); the
+// composited colour is the same as without it. A alone: mask 0.4 -> 0.16 squared; the
 // overlap: lerp(0.4, 0.6, 0.85) = 0.57 -> 0.325; B is cut by the colour pass (0.2 < 64/255).
 TYPED_TEST_P(SsamCases, DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskReachesIt) {
-    const auto run = [](float threshold, bool graph) {
+    const auto run = [](float threshold) {
         auto f = std::make_unique<Frame<TypeParam>>();
         f->opaquePass();
         ssam::Settings settings;
         settings.depthMaskThreshold = threshold;
         ssam::ScreenSpaceAlphaMask ssam(*f->backend, settings);
         QuadBatches q(*f->backend, {kQuadA, kQuadB});
-        if (graph) {
-            const std::vector<std::string> passes = runGraph(*f, ssam, viewOf(q));
-            EXPECT_EQ(std::count(passes.begin(), passes.end(), "ssam depth restore"), threshold > 0.0f ? 1 : 0);
-        } else {
-            ssam.render(f->targets(), viewOf(q));
-        }
+        const std::vector<std::string> passes = test_support::runSsam(ssam, f->targets(), viewOf(q)).passes;
+        EXPECT_EQ(std::count(passes.begin(), passes.end(), "ssam depth restore"), threshold > 0.0f ? 1 : 0);
         return std::pair{f->backend->readback(f->opaque.color()), f->backend->readback(f->opaque.depth())};
     };
-    const auto [paperColor, paperDepth] = run(0.0f, false);
+    const auto [paperColor, paperDepth] = run(0.0f);
     EXPECT_NEAR(paperDepth.at(kOnlyA, 4, 0), 0.3f, 1e-6f);
-    for (bool graph : {false, true}) {
-        const auto [color, depth] = run(0.2f, graph);
-        EXPECT_EQ(color.values, paperColor.values) << "graph " << graph;
-        EXPECT_NEAR(depth.at(kOnlyA, 4, 0), 1.0f, 1e-6f) << "graph " << graph;    // 0.16 < 0.2: opaque depth
-        EXPECT_NEAR(depth.at(kOverlap, 4, 0), 0.3f, 1e-6f) << "graph " << graph;  // 0.325: A's depth
-        EXPECT_NEAR(depth.at(kOnlyB, 4, 0), 1.0f, 1e-6f) << "graph " << graph;
-        const auto [lowColor, lowDepth] = run(0.1f, graph);
-        EXPECT_NEAR(lowDepth.at(kOnlyA, 4, 0), 0.3f, 1e-6f) << "graph " << graph;  // 0.16 >= 0.1
-    }
+    const auto [color, depth] = run(0.2f);
+    EXPECT_EQ(color.values, paperColor.values);
+    EXPECT_NEAR(depth.at(kOnlyA, 4, 0), 1.0f, 1e-6f);    // 0.16 < 0.2: opaque depth
+    EXPECT_NEAR(depth.at(kOverlap, 4, 0), 0.3f, 1e-6f);  // 0.325: A's depth
+    EXPECT_NEAR(depth.at(kOnlyB, 4, 0), 1.0f, 1e-6f);
+    const auto [lowColor, lowDepth] = run(0.1f);
+    EXPECT_NEAR(lowDepth.at(kOnlyA, 4, 0), 0.3f, 1e-6f);  // 0.16 >= 0.1
 }
 
 REGISTER_TYPED_TEST_SUITE_P(SsamCases, CrossingQuadsGiveMaxAndAddMasks, ColourPassAlphaTestsAndWritesFoliageDepth,

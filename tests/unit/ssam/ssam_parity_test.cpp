@@ -30,6 +30,7 @@
 #include "ssam_gl_host.hpp"
 #include "ssam_vk_support.hpp"
 #include "vk_validation.hpp"
+#include "run_ssam.hpp"
 
 namespace {
 
@@ -120,9 +121,10 @@ Result engineHosted(Backend& backend, const Case& c, Readback* opaqueColor = nul
     if (opaqueDepth) *opaqueDepth = backend.readback(t->depth());
     ssam::ScreenSpaceAlphaMask ssam(backend, c.settings);
     QuadBatches batches(backend, foliage(c));
-    EXPECT_EQ(ssam.render({t->color(), t->depth()}, {glm::mat4(1.0f), kUnlit, batches.batches}).passesRun, 3);
-    return {backend.readback(t->color()), backend.readback(t->depth()), backend.readback(ssam.intermediates().mask),
-            backend.readback(ssam.intermediates().foliage)};
+    const test_support::SsamRun run =
+        test_support::runSsam(ssam, {t->color(), t->depth()}, {glm::mat4(1.0f), kUnlit, batches.batches}, true);
+    EXPECT_EQ(run.report.passesRun, 3);
+    return {backend.readback(t->color()), backend.readback(t->depth()), run.mask, run.foliage};
 }
 
 // ssam::gl in the GL backend's context, on targets the host drew its opaque pass into.

@@ -24,11 +24,16 @@ TEST(SsamSoft, CompositeTouchesOnlyTheFoliageRegion) {
     ssam::ScreenSpaceAlphaMask ssam(backend);
     // A small quad in one corner: 4x4 pixels of a 16x16 screen.
     QuadBatches q(backend, {{-1.0f, 0.5f, -0.5f, 1.0f, 0.5f, {1, 1, 1, 0.5f}}});
-    const ssam::FramePlan plan = ssam.plan(f.targets(), viewOf(q));
+    const ssam::FramePlan plan = ssam.cull(kSize, kSize, viewOf(q));
     ASSERT_FALSE(plan.empty());
+    // The composite alone, over targets of the frame's size (what the graph's transients would be).
+    const ssam::IntermediateDescs descs = ssam.intermediateDescs(kSize, kSize, Format::RGBA8_UNORM);
+    const TextureHandle mask = backend.createTexture(descs.mask), foliage = backend.createTexture(descs.foliage);
     const auto shadedBefore = soft::softDriver(backend).stats().pixelsShaded;
-    ssam.compositePass(plan, f.opaque.color());
+    ssam.compositePass(plan, f.opaque.color(), {mask, {}, foliage, {}});
     const auto shaded = soft::softDriver(backend).stats().pixelsShaded - shadedBefore;
+    backend.destroy(mask);
+    backend.destroy(foliage);
     EXPECT_LE(shaded, std::uint64_t(plan.compositeRegion.width * plan.compositeRegion.height));
     EXPECT_LT(shaded, std::uint64_t(kSize * kSize / 4));
 }
@@ -40,7 +45,7 @@ TEST(SsamSoft, NoFoliageInViewCountsNoPass) {
     ssam::ScreenSpaceAlphaMask ssam(backend);
     QuadBatches q(backend, {{-1, -1, 1, 1, -0.5f, glm::vec4(1.0f)}, {3, 3, 4, 4, 0.5f, glm::vec4(1.0f)}});
     const auto before = soft::softDriver(backend).stats();
-    ssam.render(f.targets(), viewOf(q));
+    test_support::runSsam(ssam, f.targets(), viewOf(q));
     EXPECT_EQ(soft::softDriver(backend).stats().passes, before.passes);
     EXPECT_EQ(soft::softDriver(backend).stats().draws, before.draws);
 }

@@ -22,14 +22,17 @@ public:
     GrassFeature& operator=(const GrassFeature&) = delete;
 
     std::string_view name() const override { return "grass"; }
-    bool prepare(const engine::scene::FeatureFrame& frame) override;
-    void draw(const engine::scene::FeatureFrame& frame) override;
-    bool writesDepth() const override { return true; }
+    // One pass, "grass", that writes the depth too (later passes see the grass); empty when
+    // no tuft is in view.
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
+                                         const engine::render::ColorDepth& targets) override;
 
     std::size_t tufts() const { return tufts_.size(); }
     std::size_t drawnLastFrame() const { return drawn_; }
 
 private:
+    bool prepare(const engine::scene::FeatureFrame& frame);  // the visible tufts, uploaded
+    void draw(const engine::scene::FeatureFrame& frame);
     engine::render::PipelineHandle pipeline(engine::render::CompareFunc depthFunc);
 
     engine::render::Backend& backend_;

@@ -41,8 +41,9 @@ public:
     LightShaftFeature& operator=(const LightShaftFeature&) = delete;
 
     std::string_view name() const override { return "light shafts"; }
-    bool prepare(const engine::scene::FeatureFrame& frame) override;
-    void draw(const engine::scene::FeatureFrame& frame) override;
+    // One pass, "light shafts"; none issued (an empty pass) when the sun's glow misses the frame.
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
+                                         const engine::render::ColorDepth& targets) override;
 
     // Whether the last frame issued the pass, and where the sun was (pixels). An issued pass
     // may still be skipped by the backend: takeTimings() marks it, or ask sunVisible().
@@ -52,6 +53,8 @@ public:
     bool sunVisible() const;
 
 private:
+    bool prepare(const engine::scene::FeatureFrame& frame);  // where the sun is; whether its glow is in view
+    void draw(const engine::scene::FeatureFrame& frame);
     engine::render::Backend& backend_;
     LightShaftOptions options_;
     // Owned: a create that throws in the constructor leaves nothing made before it behind.

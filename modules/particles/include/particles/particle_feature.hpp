@@ -8,9 +8,8 @@
 //       soft against the opaque + foliage depth (so a tree in front hides them, §3.7)
 //   pass "particles composite": the LayerComposite program, the layer over the frame with
 //       the premultiplied blend; a half-resolution layer is upsampled by nearest depth.
-// No live particle in view: neither pass runs. In a frame graph the layer is the graph's
-// transient, created by the "particles" pass and gone after it; render() without a graph
-// keeps a layer of its own (layer()).
+// No live particle in view: neither pass runs. The layer is the frame graph's transient,
+// created by the "particles" pass and gone after it.
 #include <memory>
 
 #include "engine/render/frame_buffer_pool.hpp"
@@ -30,19 +29,18 @@ public:
     std::string_view name() const override { return "particles"; }
     void registerSystems(engine::ecs::Scheduler& scheduler) override;
     void beginFrame(const engine::scene::SimulationFrame& frame) override { dt_ = frame.dt; }
-    bool prepare(const engine::scene::FeatureFrame& frame) override;
-    void draw(const engine::scene::FeatureFrame& frame) override;
-    // Feature::addPasses's one pass, which also creates the layer as a transient.
+    // One pass, which also creates the layer as a transient; empty when no particle is in view.
     engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
                                          const engine::render::ColorDepth& targets) override;
 
     ParticleSimulation& simulation() { return simulation_; }
-    // The layer render() drew the last frame into (null before one was, and in a graph).
-    engine::render::TextureHandle layer() const { return layer_.get(); }
+    // The layer's version the last addPasses() wrote, for a later pass of the same graph to
+    // read (a capture); invalid when no particle was in view.
+    engine::render::FrameGraphTexture graphLayer() const { return graphLayer_; }
     std::size_t drawnLastFrame() const { return drawn_; }
 
 private:
-    void ensureLayer(int width, int height);
+    bool prepare(const engine::scene::FeatureFrame& frame);  // the quads of the particles in view
     void drawInto(const engine::scene::FeatureFrame& frame, engine::render::TextureHandle layer);
     int layerStride() const { return simulation_.options().halfResolution ? 2 : 1; }
 
@@ -53,12 +51,12 @@ private:
     // Owned: a create that throws in the constructor leaves nothing made before it behind.
     engine::render::Owned<engine::render::ProgramHandle> particleProgram_, compositeProgram_;  // particle_programs.hpp
     engine::render::Owned<engine::render::PipelineHandle> particlePipeline_, compositePipeline_;
-    engine::render::Owned<engine::render::TextureHandle> layer_;
     engine::render::FrameBufferPool buffers_;  // the quads, reused frame after frame
     // What prepare() found: camera-facing quads and the screen region they touch.
     std::vector<engine::render::Vertex> vertices_;
     std::vector<std::uint32_t> indices_;
     engine::render::Rect region_;
+    engine::render::FrameGraphTexture graphLayer_;
     std::size_t drawn_ = 0;
 };
 

@@ -65,17 +65,10 @@ struct ReferenceReport {
     bool exact() const { return pixelsOverCap == 0; }
 };
 
-// A target a technique keeps, for captures (e.g. SSAM's mask and foliage).
+// A texture a technique keeps, for captures (e.g. the temporal history).
 struct NamedTarget {
     std::string name;
     engine::render::TextureHandle texture;
-};
-
-// A target a technique draws a frame through and needs no longer: in a frame graph, a
-// transient the technique's pass creates (Technique::transientTargets).
-struct TransientTarget {
-    std::string layer;                 // its name among the captured layers (racer --capture-layers)
-    engine::render::TextureDesc desc;  // a render target of the frame's size (renderTargetDesc)
 };
 
 // One of those as the graph knows it after addPasses: the version the technique wrote.
@@ -84,64 +77,62 @@ struct GraphTarget {
     engine::render::FrameGraphTexture texture;
 };
 
+// What a technique asks of the frame around it, fixed when it is made.
+struct TechniqueTraits {
+    TechniqueKind kind = TechniqueKind::Ssam;
+    // Samples the caller must draw the opaque pass with (alpha-to-coverage needs 4).
+    int opaqueSamples = 1;
+    // A temporal technique's frame depends on the frames before it (the temporal pass): such
+    // a technique is measured only after frames of history, and the caller moves frame i's
+    // projection by haltonJitter(i, jitterPhases) (Technique::projectionJitter).
+    bool temporal = false;
+    int jitterPhases = 1;
+};
+
+// A technique runs its frame one way only, as passes added to the caller's frame graph
+// (addPasses); tests run it the same way, through a one-off graph.
 class Technique {
 public:
+    explicit Technique(const TechniqueTraits& traits) : traits_(traits) {}
     virtual ~Technique() = default;
-    virtual TechniqueKind kind() const = 0;
-    // Samples the caller must draw the opaque pass with (alpha-to-coverage needs 4).
-    virtual int opaqueSamples() const { return 1; }
+
+    const TechniqueTraits& traits() const { return traits_; }
+    TechniqueKind kind() const { return traits_.kind; }
+    int opaqueSamples() const { return traits_.opaqueSamples; }
+    bool needsHistory() const { return traits_.temporal; }
     // The sub-pixel offset, in pixels, the caller moves frame `frameIndex`'s projection by,
     // for the opaque pass and FoliageFrame::viewProj alike (transparency/temporal.hpp
     // jitteredViewProj); zero but for temporal techniques.
-    virtual glm::vec2 projectionJitter(std::uint64_t /*frameIndex*/) const { return glm::vec2(0.0f); }
-    // Whether the technique's frame depends on the frames before it (the temporal pass): such
-    // a technique is measured only after frames of history.
-    virtual bool needsHistory() const { return false; }
-    // Called after the opaque pass was drawn into `opaque` and BEFORE opaque.resolve():
-    // draws the foliage, resolves, and leaves the final colour in opaque.color() and, in
-    // opaque.depth(), the depth later passes test against (the foliage depth where the
-    // technique writes one). No foliage in view: costs (almost) nothing.
-    virtual void render(engine::render::FrameTargets& opaque, const FoliageFrame& frame) = 0;
-    // The same work as frame-graph passes, after the opaque pass drew into `opaque`:
-    // `drawn` holds the versions it left in what it drew into (the MSAA targets, or the
-    // resolved ones when single-sampled), `resolved` the imported rt_opaque and rt_depth.
-    // Returns the versions of the resolved colour and depth the technique leaves. By default
-    // one pass named after the technique reads and writes all of them and calls render()
-    // (which may draw into the MSAA targets before resolving, as alpha testing does); SSAM
-    // declares its mask, colour and composite passes, which are empty with no foliage in view.
-    // `frame` and what it points to must outlive the graph's execute(), which must be given
-    // an allocator backed by the technique's backend (a TransientTexturePool): the default
-    // pass creates the technique's transientTargets() as the graph's transients and draws
-    // through them (renderInto), so the graph, not the technique, owns them.
+    glm::vec2 projectionJitter(std::uint64_t frameIndex) const;
+
+    // The technique's passes, after the opaque pass drew into `opaque`: `drawn` holds the
+    // versions it left in what it drew into (the MSAA targets, or the resolved ones when
+    // single-sampled), `resolved` the imported rt_opaque and rt_depth. Returns the versions
+    // of the resolved colour and depth the technique leaves: the final colour, and the depth
+    // later passes test against (the foliage depth where the technique writes one). Passes
+    // with no foliage in view are empty (or cost almost nothing). `frame` and what it points
+    // to must outlive the graph's execute(), which must be given an allocator backed by the
+    // technique's backend (a TransientTexturePool): the targets a technique draws through
+    // and needs no longer are the graph's transients.
     virtual engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph,
                                                  engine::render::FrameTargets& opaque,
                                                  const engine::render::ColorDepth& drawn,
-                                                 const engine::render::ColorDepth& resolved, const FoliageFrame& frame);
-    // The targets a frame of width x height with colour in `colorFormat` needs, in the order
-    // renderInto() takes them; none when there is nothing to draw (no foliage in view) or
-    // the technique needs none.
-    virtual std::vector<TransientTarget> transientTargets(int /*width*/, int /*height*/,
-                                                          engine::render::Format /*colorFormat*/,
-                                                          const FoliageFrame& /*frame*/) const {
-        return {};
-    }
-    // render() drawing through `targets` (backend textures as transientTargets() described
-    // them) instead of targets of its own. The default is render(): no targets.
-    virtual void renderInto(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
-                            std::span<const engine::render::TextureHandle> /*targets*/) {
-        render(opaque, frame);
-    }
+                                                 const engine::render::ColorDepth& resolved,
+                                                 const FoliageFrame& frame) = 0;
     // The transients the last addPasses() wrote, by layer name, for a later pass of the same
     // graph to read (a capture: reading one keeps it alive until then); empty when none.
     const std::vector<GraphTarget>& graphIntermediates() const { return graphTargets_; }
-    // The targets the technique keeps itself (render() without a graph; textures it
-    // uploads), for captures; empty when there are none.
+    // The textures the technique keeps itself from frame to frame (history, uploads), for
+    // captures; empty when there are none.
     virtual std::vector<NamedTarget> intermediates() const { return {}; }
     // The reference's report on its last frame; nullopt for every other technique.
     virtual std::optional<ReferenceReport> referenceReport() const { return std::nullopt; }
 
 protected:
     std::vector<GraphTarget> graphTargets_;  // set by addPasses()
+
+private:
+    TechniqueTraits traits_;
 };
 
 }  // namespace transparency

@@ -23,8 +23,9 @@ public:
     std::string_view name() const override { return "water"; }
     void registerSystems(engine::ecs::Scheduler& scheduler) override;
     void beginFrame(const engine::scene::SimulationFrame& frame) override { frame_ = frame; }
-    bool prepare(const engine::scene::FeatureFrame& frame) override;
-    void draw(const engine::scene::FeatureFrame& frame) override;
+    // One pass, "water", empty when nothing is in view.
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
+                                         const engine::render::ColorDepth& targets) override;
 
     void setRipples(const Ripples& ripples);  // validated
     // The ripple system on its own (what the scheduler runs).
@@ -32,6 +33,8 @@ public:
     std::size_t ripplingSurfaces() const { return surfaces_.size(); }
 
 private:
+    bool prepare(const engine::scene::FeatureFrame& frame);  // whether a BLEND batch is in view
+    void draw(const engine::scene::FeatureFrame& frame);
     struct Surface {
         std::vector<engine::render::Owned<engine::render::BufferHandle>> buffers;  // per part slot; null: not water
         std::vector<std::vector<engine::render::Vertex>> vertices;

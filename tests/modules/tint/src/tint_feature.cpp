@@ -20,6 +20,13 @@ TintFeature::TintFeature(Backend& backend, const glm::vec3& color)
     pipeline_ = Owned<PipelineHandle>(backend, backend.createPipeline(p));
 }
 
+engine::render::ColorDepth TintFeature::addPasses(engine::render::FrameGraph& graph,
+                                                  const engine::scene::FeatureFrame& frame,
+                                                  const engine::render::ColorDepth& targets) {
+    return addDrawPass(graph, frame, targets, /*empty=*/false, DepthUse::Test,
+                       [this](const engine::scene::FeatureFrame& f) { draw(f); });
+}
+
 void TintFeature::draw(const engine::scene::FeatureFrame& frame) {
     PassDesc pass;
     pass.name = "tint";

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The tint as a living-scene feature: one full-screen pass "tint" that multiplies the frame's
-// colour (not its alpha) by a constant. The base class's addPasses makes it one graph pass.
+// colour (not its alpha) by a constant. Feature::addDrawPass makes it one graph pass.
 #include <glm/glm.hpp>
 
 #include "engine/render/owned.hpp"
@@ -14,10 +14,12 @@ public:
     TintFeature(engine::render::Backend& backend, const glm::vec3& color);
 
     std::string_view name() const override { return "tint"; }
-    bool prepare(const engine::scene::FeatureFrame&) override { return true; }
-    void draw(const engine::scene::FeatureFrame& frame) override;
+    // One pass, "tint", every frame.
+    engine::render::ColorDepth addPasses(engine::render::FrameGraph& graph, const engine::scene::FeatureFrame& frame,
+                                         const engine::render::ColorDepth& targets) override;
 
 private:
+    void draw(const engine::scene::FeatureFrame& frame);
     engine::render::Backend& backend_;
     glm::vec3 color_;
     // Owned: a pipeline that fails to be made leaves no program behind.

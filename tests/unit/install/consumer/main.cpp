@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Another engine's program using the installed ssam package (find_package(ssam 0.4 COMPONENTS
 // soft render_gl gl), or pkg-config ssam ssam-soft ssam-render-gl ssam-gl): renders one half-transparent red leaf over a
-// blue opaque scene through SSAM on the soft backend, then on the GL backend when a headless
+// blue opaque scene through SSAM's frame-graph passes on the soft backend, then on the GL backend when a headless
 // context can be made here, and checks the composited centre pixel. Also links ssam::gl (the
 // raw-OpenGL entry point) and checks that a call before initialize() is a Status, not a throw or
 // a crash (no context needed). Exit 0 when every check passes.
@@ -10,10 +10,14 @@
 #include <cstring>
 
 #include <engine/core/error.hpp>
+#include <engine/render/frame_graph.hpp>
+#include <engine/render/frame_graph/side_effect_pass.hpp>
+#include <engine/render/frame_graph/transient_texture_pool.hpp>
 #include <engine/render/frame_targets.hpp>
 #include <engine/render/gl/gl_backend.hpp>
 #include <engine/render/soft/soft_backend.hpp>
 #include <engine/render/vertex.hpp>
+#include <ssam/frame_graph_passes.hpp>
 #include <ssam/gl/ssam_gl.hpp>
 #include <ssam/ssam.hpp>
 #include <ssam/version.hpp>
@@ -41,8 +45,15 @@ bool leafOverBlue(Backend& backend, const char* name) {
     leaf.worldBounds = {{-1, -1, 0.5f}, {1, 1, 0.5f}};
     const DirectionalLight unlit{{0, 0, 1}, glm::vec3(0.0f), glm::vec3(1.0f)};
 
+    // SSAM's passes in the engine's frame graph, after the opaque pass; its intermediates are
+    // the graph's transients, backed by the pool.
     ssam::ScreenSpaceAlphaMask ssam(backend);
-    ssam.render({opaque.color(), opaque.depth()}, {glm::mat4(1.0f), unlit, std::span(&leaf, 1)});
+    const ssam::FoliageView view{glm::mat4(1.0f), unlit, std::span(&leaf, 1)};
+    FrameGraph graph;
+    TransientTexturePool pool(backend);
+    const ssam::SsamPasses passes = ssam::addSsamPasses(graph, ssam, view, opaque.importInto(graph).resolved);
+    addSideEffectPass(graph, "present", passes.frame);
+    graph.execute(pool.allocator());
     const Readback r = backend.readback(opaque.color());
     const float red = r.at(4, 4, 0), blue = r.at(4, 4, 2);
     // mask = lerp(0.5, 0.5, 0.85) = 0.5 (stored 128/255), squared: 0.2520; red = m^2, blue = 1 - m^2.

@@ -9,10 +9,12 @@
 // the opaque + foliage depth, so foliage correctly hides what is behind it
 // ([Hathaway 2010] §3.7).
 //
-// A feature splits its frame in two: prepare() at graph-building time decides whether
-// there is anything to draw (and computes what it will draw), draw() records the backend
-// passes when the graph executes. A feature with nothing to draw adds a pass marked empty,
-// which the graph skips (racer --dump-graph shows it as such).
+// A feature runs its frame one way only, as passes added to the frame graph (addPasses): at
+// graph-building time it decides whether there is anything to draw (and computes what it
+// will draw); its pass records the backend's work when the graph executes. A feature with
+// nothing to draw adds a pass marked empty, which the graph skips (racer --dump-graph shows
+// it as such). Tests run it the same way, through a one-off graph.
+#include <functional>
 #include <string_view>
 
 #include <glm/glm.hpp>
@@ -66,24 +68,21 @@ public:
     virtual void registerSystems(ecs::Scheduler& /*scheduler*/) {}
     // Before the frame's systems run.
     virtual void beginFrame(const SimulationFrame& /*frame*/) {}
-    // Whether there is anything to draw this frame, with what will be drawn computed now
-    // (visible instances, geometry); at graph-building time, before any pass runs.
-    virtual bool prepare(const FeatureFrame& /*frame*/) { return false; }
-    // The backend passes for what prepare() found, onto frame.color and frame.depth.
-    virtual void draw(const FeatureFrame& /*frame*/) {}
-
-    // Whether draw() writes the depth too (grass does: later passes see it), not only tests it.
-    virtual bool writesDepth() const { return false; }
-
-    // Adds one pass named name() that reads the depth and draws onto the colour (`frame`'s
-    // textures, whose latest versions in `graph` are `targets`), empty when prepare() finds
-    // nothing. Returns the versions it leaves. `frame` is copied into the pass.
+    // Adds the feature's passes onto `frame`'s colour and depth, whose latest versions in
+    // `graph` are `targets`; returns the versions it leaves. What a pass needs of `frame` is
+    // copied into it. Graph-building time: what to draw is decided here, before any pass runs.
     virtual render::ColorDepth addPasses(render::FrameGraph& graph, const FeatureFrame& frame,
-                                         const render::ColorDepth& targets);
-    // Without a graph: prepare(), then draw() when there is something to draw.
-    void render(const FeatureFrame& frame) {
-        if (prepare(frame)) draw(frame);
-    }
+                                         const render::ColorDepth& targets) = 0;
+
+protected:
+    // Whether a drawing pass also writes the depth (grass does: later passes see it) or only tests it.
+    enum class DepthUse { Test, TestAndWrite };
+    // The pass most features add: one named name(), reading the depth (writing it too with
+    // TestAndWrite) and drawing onto the colour with `draw(frame)`; marked empty when `empty`
+    // (nothing to draw this frame), so the graph skips it.
+    render::ColorDepth addDrawPass(render::FrameGraph& graph, const FeatureFrame& frame,
+                                   const render::ColorDepth& targets, bool empty, DepthUse depth,
+                                   std::function<void(const FeatureFrame&)> draw) const;
 };
 
 }  // namespace engine::scene

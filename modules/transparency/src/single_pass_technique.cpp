@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
-// Technique::addPasses's default: the technique's whole work as one frame-graph pass.
+// The technique's whole work as one frame-graph pass (single_pass_technique.hpp).
 #include "engine/render/frame_graph.hpp"
 #include "engine/render/frame_graph/backend_textures.hpp"
-#include "transparency/technique.hpp"
+#include "single_pass_technique.hpp"
 
-namespace transparency {
+namespace transparency::detail {
 
 using namespace engine::render;
 
-ColorDepth Technique::addPasses(FrameGraph& graph, FrameTargets& opaque, const ColorDepth& drawn,
-                                const ColorDepth& resolved, const FoliageFrame& frame) {
+ColorDepth SinglePassTechnique::addPasses(FrameGraph& graph, FrameTargets& opaque, const ColorDepth& drawn,
+                                          const ColorDepth& resolved, const FoliageFrame& frame) {
     struct Data {
         ColorDepth resolved;
         std::vector<FrameGraphTexture> targets;  // transientTargets(), in order
@@ -32,11 +32,11 @@ ColorDepth Technique::addPasses(FrameGraph& graph, FrameTargets& opaque, const C
         [this, &opaque, frame](const FrameGraph::Resources& r, const Data& d) {
             std::vector<TextureHandle> targets;
             for (FrameGraphTexture t : d.targets) targets.push_back(toTextureHandle(r.get(t)));
-            renderInto(opaque, frame, targets);
+            drawFrame(opaque, frame, targets);
         });
     graphTargets_.clear();
     for (std::size_t i = 0; i < transients.size(); ++i) graphTargets_.push_back({transients[i].layer, data.targets[i]});
     return data.resolved;
 }
 
-}  // namespace transparency
+}  // namespace transparency::detail
