@@ -7,7 +7,7 @@
 
 #include "ssam_glsl.hpp"  // generated from core/glsl/
 #include "composite_kernel.hpp"
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 
 namespace ssam {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "ssam_glsl.hpp"  // generated from core/glsl/
 #include "engine/render/glsl/lit_surface.hpp"
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "foliage_depth_kernel.hpp"
 
 namespace ssam {

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <string>
 
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "overlay_kernels.hpp"
 
 namespace hud {

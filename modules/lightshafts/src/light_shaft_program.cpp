@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "light_shaft_kernel.hpp"
 
 namespace lightshafts {

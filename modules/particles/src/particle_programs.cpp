@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "engine/render/validation.hpp"
 #include "particle_kernels.hpp"
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "engine/render/glsl/lit_surface.hpp"
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "hashed_kernel.hpp"
 #include "transparency/hashed_alpha.hpp"
 

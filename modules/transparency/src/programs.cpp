@@ -5,7 +5,7 @@
 #include <string>
 
 #include "engine/render/glsl/lit_surface.hpp"
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "program_kernels.hpp"
 
 namespace transparency {

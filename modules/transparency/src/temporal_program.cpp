@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "temporal_kernel.hpp"
 #include "transparency/temporal.hpp"
 

@@ -2,7 +2,7 @@
 #pragma once
 // GLSL shared by every GLSL-consuming driver (GL, Vulkan): the fragment tail every program
 // ends in (finish()), the mesh programs' guard, and the standard programs' bodies (what
-// soft/kernel/programs.hpp computes, line for line). Bodies declare no uniforms and no
+// kernel/programs.hpp computes, line for line). Bodies declare no uniforms and no
 // interpolants: the driver declares them from the program's layout (shader_interface.hpp).
 #include <string>
 

@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/backend.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 
 namespace engine::render::soft {
 

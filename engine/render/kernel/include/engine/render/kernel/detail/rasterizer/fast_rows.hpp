@@ -4,7 +4,7 @@
 // the mask composites' byte row, the replicated-alpha mask rows, the alpha-first row, and the
 // SSE2 interpolation of a block row they share; each writes what the general path would, bit
 // for bit.
-#include "engine/render/soft/kernel/detail/rasterizer/rasterizer_class.hpp"
+#include "engine/render/kernel/detail/rasterizer/rasterizer_class.hpp"
 
 namespace engine::render::soft {
 namespace raster {

@@ -6,10 +6,10 @@
 #include <array>
 #include <memory>
 
+#include "engine/render/fragment_capture.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
+#include "engine/render/kernel/soft_texture.hpp"
 #include "engine/render/pipeline.hpp"
-#include "engine/render/soft/simd_isa.hpp"
-#include "engine/render/soft/soft_backend.hpp"
-#include "engine/render/soft/kernel/soft_texture.hpp"
 
 namespace engine::render::soft {
 
@@ -21,7 +21,6 @@ struct SamplePattern {
     int count = 1;
     std::array<int, 8> dx{}, dy{};
 };
-const SamplePattern& samplePattern(int samples);
 
 struct DrawState {
     std::shared_ptr<const BoundProgram> program;  // the draw's program, bound to its parameters
@@ -40,7 +39,7 @@ struct DrawState {
     std::array<bool, kMaxColorTargets> blendNeeded{};  // false: plain store
     glm::vec4 blendConstant{0.0f};
     bool shade = true;                // false: depth-only, the program is never run
-    FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (SoftBackend::setFragmentSink)
+    FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (FragmentCapture::setFragmentSink)
     SimdIsa isa = SimdIsa::Sse2;      // the wide kernels' instruction set (SoftOptions::simd)
 };
 

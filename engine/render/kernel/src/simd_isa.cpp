@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 
 namespace engine::render::soft {
 

@@ -3,7 +3,7 @@
 // TriangleRasterizer's constant fragments: a triangle whose interpolants are all constant is
 // shaded once, its alpha test and stored bytes worked out once, and blended through a
 // per-thread table of the bytes it stores.
-#include "engine/render/soft/kernel/detail/rasterizer/rasterizer_class.hpp"
+#include "engine/render/kernel/detail/rasterizer/rasterizer_class.hpp"
 
 namespace engine::render::soft {
 namespace raster {

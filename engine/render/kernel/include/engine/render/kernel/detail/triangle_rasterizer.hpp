@@ -17,9 +17,9 @@
 // Every member is inline with internal linkage in the translation unit that includes this
 // (an anonymous namespace, as raster_support.hpp's), exactly as when they were written in the
 // class body: the compiler sees the whole rasterizer where it instantiates it.
-#include "engine/render/soft/kernel/detail/rasterizer/rasterizer_class.hpp"
+#include "engine/render/kernel/detail/rasterizer/rasterizer_class.hpp"
 
-#include "engine/render/soft/kernel/detail/rasterizer/constant_fragment.hpp"
-#include "engine/render/soft/kernel/detail/rasterizer/coverage.hpp"
-#include "engine/render/soft/kernel/detail/rasterizer/fast_rows.hpp"
-#include "engine/render/soft/kernel/detail/rasterizer/shading.hpp"
+#include "engine/render/kernel/detail/rasterizer/constant_fragment.hpp"
+#include "engine/render/kernel/detail/rasterizer/coverage.hpp"
+#include "engine/render/kernel/detail/rasterizer/fast_rows.hpp"
+#include "engine/render/kernel/detail/rasterizer/shading.hpp"

@@ -3,7 +3,7 @@
 // TriangleRasterizer's per-pixel stages after coverage: the depth test, shade(),
 // alpha-to-coverage, the alpha test with the GS fail modes ([PCSX2]), blending and the writes;
 // the row dispatch that picks a program's fast path; perspective-correct interpolation.
-#include "engine/render/soft/kernel/detail/rasterizer/rasterizer_class.hpp"
+#include "engine/render/kernel/detail/rasterizer/rasterizer_class.hpp"
 
 namespace engine::render::soft {
 namespace raster {

@@ -9,8 +9,8 @@
 #include <cstring>
 #include <type_traits>
 
-#include "engine/render/soft/kernel/programs.hpp"
-#include "engine/render/soft/kernel/detail/raster_support.hpp"
+#include "engine/render/kernel/programs.hpp"
+#include "engine/render/kernel/detail/raster_support.hpp"
 
 namespace engine::render::soft {
 

@@ -2,8 +2,8 @@
 #pragma once
 // How a soft program resolves the texture handles its parameters name (program_kernel.hpp).
 #include "engine/render/handles.hpp"
-#include "engine/render/soft/kernel/sampler.hpp"
-#include "engine/render/soft/kernel/soft_texture.hpp"
+#include "engine/render/kernel/sampler.hpp"
+#include "engine/render/kernel/soft_texture.hpp"
 
 namespace engine::render::soft {
 

@@ -4,7 +4,7 @@
 // tile a triangle covers. 8x8 blocks are trivially rejected or accepted from the edge
 // functions at their corners; a partial block's edge functions are stepped exactly, in
 // integers, from pixel to pixel.
-#include "engine/render/soft/kernel/detail/rasterizer/rasterizer_class.hpp"
+#include "engine/render/kernel/detail/rasterizer/rasterizer_class.hpp"
 
 namespace engine::render::soft {
 namespace raster {

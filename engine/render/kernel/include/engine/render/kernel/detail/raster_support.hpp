@@ -16,12 +16,12 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/pixel_codec.hpp"
-#include "engine/render/soft/kernel/detail/blend.hpp"
-#include "engine/render/soft/kernel/detail/draw_state.hpp"
-#include "engine/render/soft/kernel/detail/one_one_half_blend.hpp"
-#include "engine/render/soft/kernel/detail/same_bits.hpp"
-#include "engine/render/soft/kernel/soft_texture.hpp"
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/blend.hpp"
+#include "engine/render/kernel/detail/draw_state.hpp"
+#include "engine/render/kernel/detail/one_one_half_blend.hpp"
+#include "engine/render/kernel/detail/same_bits.hpp"
+#include "engine/render/kernel/soft_texture.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft::raster {
 // Internal linkage in every translation unit that instantiates the rasterizer, as when these

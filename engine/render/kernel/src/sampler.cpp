@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "engine/render/soft/kernel/sampler.hpp"
+#include "engine/render/kernel/sampler.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "engine/render/pixel_codec.hpp"
-#include "engine/render/soft/kernel/detail/texel_addressing.hpp"
+#include "engine/render/kernel/detail/texel_addressing.hpp"
 
 namespace engine::render::soft {
 namespace {

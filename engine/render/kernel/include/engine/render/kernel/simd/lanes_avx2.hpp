@@ -6,7 +6,7 @@
 
 #include <immintrin.h>
 
-#include "engine/render/soft/kernel/simd/avx2_target.hpp"
+#include "engine/render/kernel/simd/avx2_target.hpp"
 
 SOFT_AVX2_BEGIN
 namespace engine::render::soft::simd::avx2 {

@@ -28,8 +28,8 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/draw_params.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
-#include "engine/render/soft/kernel/detail/triangle_rasterizer.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/detail/triangle_rasterizer.hpp"
 
 namespace engine::render::soft {
 
