@@ -90,8 +90,8 @@ inline glm::vec4 blend(const BlendState& b, glm::vec4 src, glm::vec4 dst, glm::v
     return {rgb, a};
 }
 
-// Blends whose factors are all ONE and whose operations are ADD or MAX (the SSAM mask,
-// [Hathaway 2010] Table 3.1).
+// Blends whose factors are all ONE and whose operations are ADD or MAX: sums and maxima of
+// coverage (e.g. [Hathaway 2010] Table 3.1's mask).
 inline bool isOneOneAddMax(const BlendState& b) {
     auto addOrMax = [](BlendOp op) { return op == BlendOp::Add || op == BlendOp::Max; };
     return b.srcRgb == BlendFactor::One && b.dstRgb == BlendFactor::One && b.srcAlpha == BlendFactor::One &&

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Half-float (binary16) conversion of four lanes at a time in SSE2, for the float-mask
-// paths of the rasterizer (SSAM's maskPrecision RGBA16F / RG16F and SSAM+, [Hathaway 2010]
-// §3.5.2), with exactly the bits of pixel_codec.hpp's encodeHalf and decodeHalf. The build
+// Half-float (binary16) conversion of four lanes at a time in SSE2, for the rasterizer's
+// paths onto half-float targets (one_one_half_blend.hpp; e.g. the float coverage masks of
+// [Hathaway 2010] §3.5.2), with exactly the bits of pixel_codec.hpp's encodeHalf and decodeHalf. The build
 // targets plain x86-64 SSE2, so Imath converts without F16C: float -> half is
 // imath_float_to_half's integer rounding to nearest even, half -> float its 65536-entry
 // table. encodeHalf4 does the same integer steps per lane, except for results that are

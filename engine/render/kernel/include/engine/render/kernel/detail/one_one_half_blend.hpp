@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// SSAM's mask blends (ONE/ONE, MAX or ADD per half, [Hathaway 2010] §3.5.2 and Table 3.1) onto
-// half-float targets: maskPrecision RGBA16F, and RG16F, which is two R16F targets, one
-// equation each (SSAM+ too). The general path loads the texel, runs blend() and stores
-// through storeTexel per pixel; these do the same per channel with the same bits. Float
-// targets clamp nothing (GL 4.5 §17.3.6.1: only fixed-point targets clamp), so for the
-// program's replicated colour (a, a, a, a) and the stored value d of a channel:
+// The fast path of one family of blends: every factor ONE, the operation ADD or MAX on each half
+// (BlendState::oneOne), onto a half-float target (R16F, RG16F, RGBA16F), for a program whose
+// colour is its alpha replicated (kShadesReplicatedAlpha): coverage sums and maxima, e.g. the
+// masks of [Hathaway 2010] §3.5.2 (Table 3.1) kept in float targets. The general path loads the
+// texel, runs blend() and stores through storeTexel per pixel; these do the same per channel
+// with the same bits. Float targets clamp nothing (GL 4.5 §17.3.6.1: only fixed-point targets
+// clamp), so for the replicated colour (a, a, a, a) and the stored value d of a channel:
 //   MAX  glm::max(a, d) = (a < d) ? d : a   (a, not d, where d is NaN; +0 over -0)
 //   ADD  a * 1 + d * 1                        (the factors are exactly 1: a + d, unsaturated)
 // then encodeHalf, which rounds to nearest even. Channels the write mask leaves keep their
-// bits. (a is the AlphaOnly program's saturated alpha, never NaN; the results do not
-// depend on that, except which NaN an ADD of two NaNs gives.)
+// bits. (a is a saturated alpha, never NaN; the results do not depend on that, except which
+// NaN an ADD of two NaNs gives.)
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

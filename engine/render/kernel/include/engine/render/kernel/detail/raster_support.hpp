@@ -272,8 +272,9 @@ inline bool zeroSourceKeeps(Format format, const BlendState& b) {
     return eightBit && bytesRoundTrip() && keeps(b.opRgb, b.dstRgb) && keeps(b.opAlpha, b.dstAlpha);
 }
 
-// The SSAM composite's blend ([Hathaway 2010] §3.5.4): colour SRC_ALPHA / INV_SRC_ALPHA ADD, alpha
-// ZERO / ONE ADD (the target keeps its alpha), all channels written.
+// BlendState::alphaOverKeepAlpha, found by its factors: colour SRC_ALPHA / INV_SRC_ALPHA ADD,
+// alpha ZERO / ONE ADD (the target keeps its alpha), all channels written (e.g. a mask
+// composite, [Hathaway 2010] §3.5.4).
 inline bool isAlphaOverKeepingAlpha(const BlendState& b) {
     return b.enabled && b.srcRgb == BlendFactor::SrcAlpha && b.dstRgb == BlendFactor::InvSrcAlpha &&
            b.opRgb == BlendOp::Add && b.srcAlpha == BlendFactor::Zero && b.dstAlpha == BlendFactor::One &&

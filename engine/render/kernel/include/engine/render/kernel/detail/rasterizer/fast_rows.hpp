@@ -132,7 +132,7 @@ inline void TriangleRasterizer<Program>::shadeAlphaRow4(const SetupTriangle& t, 
 }
 
 // shadeAlphaRow where every target is a half-float one that blendOneOneHalf4 applies to
-// (SSAM's float masks): four lanes at a time. No lane is skipped: a float ADD mask never
+// (float coverage masks): four lanes at a time. No lane is skipped: a float ADD mask never
 // saturates, and a zero alpha can still change the stored bits (MAX of 0 over -0 or
 // NaN gives +0; 0 + -0 = +0).
 template <typename Program>

@@ -133,7 +133,7 @@ public:
             v.zeroKeeps = v.blend && zeroSourceKeeps(v.format, draw.blend[i]);
         }
         if constexpr (hasCompositeHooks<Program>()) {
-            // A mask composite (SSAM's, SSAM+'s) as they are drawn: onto an 8-bit target,
+            // A mask composite (e.g. SSAM's) as such programs are drawn: onto an 8-bit target,
             // with masks of any format (compositeRow); anything else takes the general path.
             compositeRow_ = !draw.capture && draw.shade && !draw.alphaTest.enabled && !draw.depthWrite &&
                             draw.colorTargetCount == 1 && isRgba8(draw.colorTargets[0]) && draw.blendNeeded[0] &&
