@@ -106,7 +106,8 @@ struct ProgramDesc {
     std::function<void(const void* params, const DrawCheck& check)> check;
 };
 
-// What every description states first: a program `name` whose draws pass a `Params`.
+// What every description states first: a program `name` whose draws pass a `Params`. A Params
+// declared by ENGINE_PARAM_BLOCK (param_block.hpp) also gives gl.uniforms and gl.textures.
 template <typename Params>
 ProgramDesc describeProgram(std::string name, VertexInput input, const char* paramsName) {
     ProgramDesc d;
@@ -114,6 +115,7 @@ ProgramDesc describeProgram(std::string name, VertexInput input, const char* par
     d.vertexInput = input;
     d.params = paramsType<Params>();
     d.paramsName = paramsName;
+    if constexpr (requires { Params::describe(d.gl); }) Params::describe(d.gl);
     return d;
 }
 
