@@ -11,7 +11,7 @@
 
 #include "bench_result.hpp"
 #include "bench_scenes.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 #include "transparency/create_technique.hpp"
 
 namespace bench {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 
 namespace bench {
 

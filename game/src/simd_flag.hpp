@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // --simd, as racer and ssam-bench take it: the instruction set of the soft backend's wide
-// kernels (engine/render/soft/simd_isa.hpp). Images are the same bits with each.
+// kernels (engine/render/kernel/simd_isa.hpp). Images are the same bits with each.
 #include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 
 namespace racer {
 

@@ -86,7 +86,7 @@ list(REMOVE_DUPLICATES SSAM_BUILT_COMPONENTS)
 #                                                 core, C++17 and dependency-free, whose objects
 #                                                 are in each of libssam, libssam_gl, libssam_vk)
 #   include/ssam/gl/, include/ssam/vk/            gl, vk
-#   include/ssam/engine/{core,render}             the core (ssam::ssam): no ECS, and not
+#   include/ssam/engine/{core,render}             the core (ssam::ssam; render/kernel/ too): no ECS, and not
 #                                                 parallel_for.hpp, which needs oneTBB (linked by
 #                                                 the soft backend's library only, and included by
 #                                                 its sources, not by any installed header)
@@ -103,7 +103,7 @@ install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ssam ${_ssam_generated}/ss
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/core/include/engine
         DESTINATION ${_ssam_engine_includes} COMPONENT library PATTERN ecs EXCLUDE
         PATTERN parallel_for.hpp EXCLUDE)
-set(_ssam_engine_header_dirs render render/soft)
+set(_ssam_engine_header_dirs render render/kernel render/soft)
 if(TARGET engine_render_gl)
   list(APPEND _ssam_engine_header_dirs render/gl)
 endif()

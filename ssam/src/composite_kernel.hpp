@@ -5,9 +5,9 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/sampler.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/sampler.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
 #include "ssam/composite_program.hpp"
 
 namespace ssam {

@@ -5,9 +5,10 @@
 #include <cstddef>
 #include <string>
 
-#include "ssam_glsl.hpp"  // generated from core/glsl/
+#include "ssam_engine_glsl.hpp"  // generated from engine_glsl/
+#include "ssam_glsl.hpp"         // generated from core/glsl/
 #include "composite_kernel.hpp"
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 
 namespace ssam {
 namespace {
@@ -15,16 +16,8 @@ namespace {
 using namespace engine::render;
 
 std::string fragment() {
-    return std::string(R"(
-#define PRECISE precise
-layout(binding = 0) uniform sampler2D u_foliage;
-layout(binding = 1) uniform sampler2D u_mask;
-layout(binding = 2) uniform sampler2D u_maskAdd;
-)") + glsl::kCompositeMask +
-           glsl::kComposite +
-           R"(
-void main() { finish(ssamComposite(ivec2(gl_FragCoord.xy))); }
-)";
+    return std::string(engine_glsl::kCompositeHead) + glsl::kCompositeMask + glsl::kComposite +
+           engine_glsl::kCompositeMain;
 }
 
 }  // namespace

@@ -10,9 +10,9 @@
 
 #include "composite_kernel.hpp"
 #include "engine/core/error.hpp"
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/programs.hpp"  // AlphaOnlyProgram::kNeeds
-#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/programs.hpp"  // AlphaOnlyProgram::kNeeds
+#include "engine/render/kernel/texture_lookup.hpp"
 #include "foliage_depth_program.hpp"
 
 namespace ssam {

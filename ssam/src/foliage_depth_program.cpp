@@ -5,32 +5,22 @@
 #include <cstddef>
 #include <string>
 
-#include "ssam_glsl.hpp"  // generated from core/glsl/
+#include "ssam_engine_glsl.hpp"  // generated from engine_glsl/
+#include "ssam_glsl.hpp"         // generated from core/glsl/
 #include "engine/render/glsl/lit_surface.hpp"
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 #include "foliage_depth_kernel.hpp"
 
 namespace ssam {
-namespace {
 
 using namespace engine::render;
-
-// The engine dialect's head: SURFACE_OUTPUT (expanded inside the lit surface's main()) is
-// foliage_depth_output.glsl's; the soft kernel's NaN alpha fails the alpha test where it discards.
-constexpr const char* kFoliageDepth = R"(
-#define PRECISE precise
-#define SURFACE_OUTPUT(c) foliageDepthOutput(c)
-layout(binding = 1) uniform sampler2D u_mask;
-layout(binding = 2) uniform sampler2D u_maskAdd;
-)";
-
-}  // namespace
 
 ProgramDesc foliageDepthProgram() {
     ProgramDesc d =
         describeProgram<FoliageDepthParams>("SsamFoliageDepth", VertexInput::Mesh, "ssam::FoliageDepthParams");
-    d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" + kFoliageDepth +
-                    ssam::glsl::kCompositeMask + ssam::glsl::kFoliageDepthOutput + engine::render::glsl::kLitSurface;
+    d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" +
+                    engine_glsl::kFoliageDepthHead + ssam::glsl::kCompositeMask + ssam::glsl::kFoliageDepthOutput +
+                    engine::render::glsl::kLitSurface;
     litSurfaceLayout<FoliageDepthParams>(d.gl);
     d.gl.uniforms.push_back({"u_maskLerp", UniformType::Float, offsetof(FoliageDepthParams, maskLerp)});
     d.gl.uniforms.push_back({"u_squareMask", UniformType::Bool, offsetof(FoliageDepthParams, squareMask)});

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Checks a soft-backend program's row hook (shadeRow, engine/render/soft/kernel/program_kernel.hpp)
+// Checks a soft-backend program's row hook (shadeRow, engine/render/kernel/program_kernel.hpp)
 // against its per-pixel shade(), bit for bit, over every block row of an image.
 #include <bit>
 #include <cstdint>
@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 #include "lcg.hpp"
 
 namespace ssam::testing {

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <vector>
 
-#include "engine/render/soft/kernel/soft_texture.hpp"
+#include "engine/render/kernel/soft_texture.hpp"
 
 namespace ssam::testing {
 

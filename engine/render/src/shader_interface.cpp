@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "engine/render/shader_interface.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include <glm/glm.hpp>
@@ -109,6 +110,17 @@ std::string parameterDeclarations(std::span<const ShaderParameter> parameters, G
     for (const ShaderParameter& p : parameters)
         s += std::string(block ? "    " : "uniform ") + p.glslType + " " + p.name + ";\n";
     return block ? s + "};\n" : s;
+}
+
+std::string samplerDeclarations(const GlslProgram& program) {
+    std::vector<const TextureField*> byUnit;
+    for (const TextureField& t : program.textures) byUnit.push_back(&t);
+    std::stable_sort(byUnit.begin(), byUnit.end(),
+                     [](const TextureField* a, const TextureField* b) { return a->unit < b->unit; });
+    std::string s;
+    for (const TextureField* t : byUnit)
+        s += "layout(binding = " + std::to_string(t->unit) + ") uniform sampler2D " + t->name + ";\n";
+    return s;
 }
 
 std::string meshInterpolants(GlslDialect dialect, bool vertexStage) {

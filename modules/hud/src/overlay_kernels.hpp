@@ -3,9 +3,9 @@
 // The soft backend's kernels of the HUD's programs (hud/overlay_programs.hpp).
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/sampler.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/sampler.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
 #include "hud/overlay_programs.hpp"
 
 namespace hud {

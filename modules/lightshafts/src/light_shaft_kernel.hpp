@@ -7,9 +7,9 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 #include "lightshafts/light_shaft_program.hpp"
 
 namespace lightshafts {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // LightShaftKernel::shade() for the pixels of one block row at once, Floats::kLanes pixels per
 // vector: light_shaft_rows.cpp includes this once per instruction set, inside its namespace
-// (sse2, avx2) with that set's lane types (engine/render/soft/kernel/simd/), so there is no
+// (sse2, avx2) with that set's lane types (engine/render/kernel/simd/), so there is no
 // include guard and nothing is included here.
 //
 // Lane by lane the scalar march's IEEE operations in its order, so the bits are shade()'s:

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "engine/render/soft/kernel/simd/lanes_avx2.hpp"
-#include "engine/render/soft/kernel/simd/lanes_sse2.hpp"
+#include "engine/render/kernel/simd/lanes_avx2.hpp"
+#include "engine/render/kernel/simd/lanes_sse2.hpp"
 #include "light_shaft_kernel.hpp"
 
 namespace lightshafts {

@@ -8,10 +8,10 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/sampler.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/sampler.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 #include "particles/particle_programs.hpp"
 
 namespace particles {

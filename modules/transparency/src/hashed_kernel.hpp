@@ -4,9 +4,9 @@
 // surface, then the hashed threshold from the rasterizer's analytic uv derivatives.
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/programs.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/programs.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
 #include "transparency/hashed_alpha.hpp"
 
 namespace transparency {

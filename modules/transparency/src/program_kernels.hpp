@@ -6,11 +6,11 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/programs.hpp"
-#include "engine/render/soft/kernel/sampler.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/programs.hpp"
+#include "engine/render/kernel/sampler.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 #include "transparency/programs.hpp"
 
 namespace transparency {

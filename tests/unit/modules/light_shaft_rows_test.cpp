@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 #include "lcg.hpp"  // tests/support
 #include "light_shaft_kernel.hpp"
 #include "row_hook_check.hpp"  // tests/support

@@ -74,6 +74,21 @@ TEST(DriverStages, FragmentHeadDeclaresOutputsAndTheTailPerDialect) {
     EXPECT_NE(vk.find("layout(location = 3) flat in int v_instance;"), std::string::npos);
 }
 
+// A driver's workaround runs first in a Mesh program's main(), in no program's body; a
+// full-screen program's body is left as it is.
+TEST(DriverStages, MeshEntryRunsBeforeTheBodysMain) {
+    const std::string body = "void main() { finish(vec4(1.0)); }\n";
+    const std::string entry = "    if (v_instance < 0) discard;\n";
+    const std::string mesh = fragmentStage(GlslDialect::OpenGl, VertexInput::Mesh, meshLayout(), body, 1, entry);
+    const std::size_t renamed = mesh.find("#define main programMain\n" + body);
+    ASSERT_NE(renamed, std::string::npos) << mesh;
+    EXPECT_EQ(mesh.substr(renamed + 25 + body.size()),
+              "\n#undef main\nvoid main() {\n    if (v_instance < 0) discard;\n    programMain();\n}\n");
+    const std::string fullscreen = fragmentStage(GlslDialect::Vulkan, VertexInput::Fullscreen, {}, body, 1, entry);
+    EXPECT_EQ(fullscreen.find("programMain"), std::string::npos);
+    EXPECT_EQ(fullscreen.substr(fullscreen.size() - body.size()), body);
+}
+
 TEST(DriverStages, ResolvesReadTheSameParametersOnEveryDialect) {
     for (const GlslDialect dialect : {GlslDialect::OpenGl, GlslDialect::Vulkan}) {
         const std::string depth = resolveDepthStage(dialect), color = resolveColorStage(dialect);

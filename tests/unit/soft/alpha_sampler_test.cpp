@@ -6,7 +6,7 @@
 // the decoded alpha copy, at random coordinates and derivatives (magnified and minified,
 // texel edges, non-finite values). The golden hashes only see the few cases their scenes
 // hit; this walks the whole space of the sampler's branches.
-// The samplers come from the soft backend's program-authoring headers.
+// The samplers come from the program-authoring headers (engine_render_kernel).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -17,8 +17,8 @@
 
 #include "lcg.hpp"         // tests/support
 #include "soft_image.hpp"  // tests/support
-#include "engine/render/soft/kernel/alpha_sampler.hpp"
-#include "engine/render/soft/kernel/sampler.hpp"
+#include "engine/render/kernel/alpha_sampler.hpp"
+#include "engine/render/kernel/sampler.hpp"
 
 namespace {
 

@@ -32,7 +32,7 @@
 #include "engine/render/vertex.hpp"
 
 // The general blend (program-authoring header).
-#include "engine/render/soft/kernel/detail/blend.hpp"
+#include "engine/render/kernel/detail/blend.hpp"
 #include "ssam/composite_program.hpp"
 #include "transparency/programs.hpp"
 

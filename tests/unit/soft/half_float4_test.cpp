@@ -10,9 +10,9 @@
 // write mask.
 // With SSAM_EXHAUSTIVE_HALF=1 the encode test checks all 2^32 floats instead (about 20 s;
 // it passed when the code was written).
-// Program-authoring headers of the soft backend.
+// Program-authoring headers (engine_render_kernel).
 #include "lcg.hpp"  // tests/support
-#include "engine/render/soft/kernel/detail/half_float4.hpp"
+#include "engine/render/kernel/detail/half_float4.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,8 +21,8 @@
 #include <cstring>
 #include <vector>
 
-#include "engine/render/soft/kernel/detail/blend.hpp"
-#include "engine/render/soft/kernel/detail/one_one_half_blend.hpp"
+#include "engine/render/kernel/detail/blend.hpp"
+#include "engine/render/kernel/detail/one_one_half_blend.hpp"
 
 namespace {
 

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "lcg.hpp"  // tests/support
-#include "engine/render/soft/kernel/detail/same_bits.hpp"
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/same_bits.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 #include "tile_rasterizer.hpp"
 
 namespace {

@@ -618,7 +618,7 @@ TEST(SoftGoldenHash, ScenesAreBitExactAndIndependentOfThreadsAndTiles) {
 }
 
 // The wide kernels run in the instruction set the backend picks at run time
-// (engine/render/soft/simd_isa.hpp): each one this CPU runs must draw the pinned bits.
+// (engine/render/kernel/simd_isa.hpp): each one this CPU runs must draw the pinned bits.
 TEST(SoftGoldenHash, EveryInstructionSetDrawsTheSameBits) {
     for (soft::SimdIsa isa : soft::supportedSimdIsas()) {
         for (const GoldenScene& s : scenes()) {

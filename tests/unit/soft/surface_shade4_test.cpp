@@ -16,8 +16,8 @@
 
 #include "lcg.hpp"         // tests/support
 #include "soft_image.hpp"  // tests/support
-#include "engine/render/soft/kernel/programs.hpp"
-#include "engine/render/soft/kernel/detail/raster_support.hpp"
+#include "engine/render/kernel/programs.hpp"
+#include "engine/render/kernel/detail/raster_support.hpp"
 
 #if SOFT_SAMPLER_SSE2 && SOFT_RASTER_SSE2
 namespace {

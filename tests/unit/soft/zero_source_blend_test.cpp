@@ -12,8 +12,8 @@
 #include <cstring>
 #include <vector>
 
-#include "engine/render/soft/kernel/detail/blend.hpp"
-#include "engine/render/soft/kernel/detail/raster_support.hpp"
+#include "engine/render/kernel/detail/blend.hpp"
+#include "engine/render/kernel/detail/raster_support.hpp"
 
 namespace {
 

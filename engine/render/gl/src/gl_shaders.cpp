@@ -11,8 +11,19 @@ std::string vertexSource(VertexInput input, const std::string& programName, cons
     return vertexStage(GlslDialect::OpenGl, input, programName, layout);
 }
 
+namespace {
+
+// llvmpipe (Mesa 22.x) has a fast path for non-indexed draws of exactly three triangles whose
+// last one has zero area (lp_setup_analyse_triangles, meant for one Windows compositor's
+// rectangles) that draws nothing at all unless the pattern is that rectangle; it is skipped when
+// the fragment shader reads a flat ("constant") input. Every Mesh program reads v_instance first:
+// never negative, so nothing is discarded.
+constexpr const char* kLlvmpipeFlatInput = "    if (v_instance < 0) discard;\n";
+
+}  // namespace
+
 std::string fragmentSource(VertexInput input, const UniformBlockLayout& layout, const std::string& body) {
-    return fragmentStage(GlslDialect::OpenGl, input, layout, body, kMaxColorTargets);
+    return fragmentStage(GlslDialect::OpenGl, input, layout, body, kMaxColorTargets, kLlvmpipeFlatInput);
 }
 
 std::string standardFragment(ProgramKind kind) { return glsl::standardFragmentBody(kind); }

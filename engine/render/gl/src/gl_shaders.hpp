@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// GLSL 4.50 sources of the standard programs (what soft/kernel/programs.hpp computes, line for
+// GLSL 4.50 sources of the standard programs (what kernel/programs.hpp computes, line for
 // line) and of the backend's internal programs (resolves), in the GL dialect of driver_stages.hpp.
 #include <string>
 

@@ -15,8 +15,8 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/raster_state.hpp"
-#include "engine/render/soft/kernel/detail/same_bits.hpp"
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/same_bits.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
 

@@ -20,7 +20,7 @@
 
 #include "engine/render/raster_state.hpp"
 #include "engine/render/vertex.hpp"
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 #include "geometry_key.hpp"
 #include "instance_culling.hpp"
 #include "tile_rasterizer.hpp"

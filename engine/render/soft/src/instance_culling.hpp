@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/vertex.hpp"
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
 

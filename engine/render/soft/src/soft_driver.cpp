@@ -20,16 +20,16 @@
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
-#include "engine/render/soft/kernel/detail/draw_state.hpp"
+#include "engine/render/kernel/detail/draw_state.hpp"
 #include "engine/render/pixel_codec.hpp"
-#include "engine/render/soft/kernel/sampler.hpp"
-#include "engine/render/soft/kernel/soft_texture.hpp"
+#include "engine/render/kernel/sampler.hpp"
+#include "engine/render/kernel/soft_texture.hpp"
 #include "geometry_key.hpp"
 #include "geometry_stage.hpp"
 #include "instance_culling.hpp"
 #include "standard_kernels.hpp"
 #include "tile_rasterizer.hpp"
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
-#include "engine/render/soft/kernel/programs.hpp"
+#include "engine/render/kernel/programs.hpp"
 
 namespace engine::render::soft {
 

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "engine/render/program.hpp"
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 
 namespace engine::render::soft {
 

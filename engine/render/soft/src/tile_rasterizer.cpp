@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
 
 namespace engine::render::soft {
 

@@ -8,12 +8,15 @@
 #include <span>
 #include <vector>
 
-#include "engine/render/soft/kernel/detail/draw_state.hpp"
-#include "engine/render/soft/kernel/detail/triangle_rasterizer.hpp"
+#include "engine/render/kernel/detail/draw_state.hpp"
+#include "engine/render/kernel/detail/triangle_rasterizer.hpp"
 #include "engine/render/raster_state.hpp"
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 
 namespace engine::render::soft {
+
+// The sample positions of a pass with `samples` samples (1, 2, 4 or 8; others: 1).
+const SamplePattern& samplePattern(int samples);
 
 void rasterizeTile(const Rect& tile, std::span<const SetupTriangle* const> triangles,
                    const std::vector<DrawState>& draws, TileCounters& counters);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "engine/render/soft/kernel/detail/triangle_setup.hpp"
+#include "engine/render/kernel/detail/triangle_setup.hpp"
 
 #include <algorithm>
 #include <cmath>

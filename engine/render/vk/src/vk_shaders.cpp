@@ -15,9 +15,18 @@ std::string vertexSource(VertexInput input, const std::string& programName, cons
     return vertexStage(GlslDialect::Vulkan, input, programName, layout);
 }
 
+namespace {
+
+// lavapipe sets triangles up with llvmpipe's code, rectangle fast path included (the GL driver's
+// gl_shaders.cpp says what it breaks): a fragment shader reading a flat input skips it, so every
+// Mesh program reads v_instance (never negative) first.
+constexpr const char* kLavapipeFlatInput = "    if (v_instance < 0) discard;\n";
+
+}  // namespace
+
 std::string fragmentSource(VertexInput input, const UniformBlockLayout& layout, const std::string& body,
                            int colorTargets) {
-    return fragmentStage(GlslDialect::Vulkan, input, layout, body, colorTargets);
+    return fragmentStage(GlslDialect::Vulkan, input, layout, body, colorTargets, kLavapipeFlatInput);
 }
 
 std::string resolveColorSource() { return resolveColorStage(GlslDialect::Vulkan); }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The HUD's two programs, described once for every backend (engine/render/program_desc.hpp;
-// GLSL in overlay_programs.cpp, CPU kernels in overlay_kernels.hpp):
+// parameter blocks declared once below, engine/render/param_block.hpp; GLSL bodies in glsl/,
+// CPU kernels in overlay_kernels.hpp):
 //   OverlayFill  (Mesh): out = the vertex colour (straight alpha), for panels and glyph
 //                quads given in pixels and mapped to clip space by `viewProj`;
 //   OverlayPanel (full screen, drawn under a scissor): out = the texel of `source` at
@@ -10,21 +11,23 @@
 //                and insets). A texel outside the source is black.
 #include <glm/glm.hpp>
 
+#include "engine/render/param_block.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 
 namespace hud {
 
-struct OverlayFillParams {
-    glm::mat4 viewProj{1.0f};
-};
+#define HUD_OVERLAY_FILL_PARAMS(UNIFORM, DIRECTION, TEXTURE) UNIFORM(glm::mat4, viewProj, glm::mat4(1.0f))
+ENGINE_PARAM_BLOCK(OverlayFillParams, HUD_OVERLAY_FILL_PARAMS);
 
-struct OverlayPanelParams {
-    engine::render::TextureHandle source;  // single-sampled colour
-    int sourceX = 0, sourceY = 0;          // texel at targetX, targetY (x/y from the top-left, y down)
-    int targetX = 0, targetY = 0;
-    int zoom = 1;  // 1..64
-};
+#define HUD_OVERLAY_PANEL_PARAMS(UNIFORM, DIRECTION, TEXTURE)                                                 \
+    TEXTURE(source, Texel, Sampled, Required) /* single-sampled colour */                                     \
+    UNIFORM(int, sourceX, 0)                  /* texel at targetX, targetY (x/y from the top-left, y down) */ \
+    UNIFORM(int, sourceY, 0)                                                                                  \
+    UNIFORM(int, targetX, 0)                                                                                  \
+    UNIFORM(int, targetY, 0)                                                                                  \
+    UNIFORM(int, zoom, 1) /* 1..64 */
+ENGINE_PARAM_BLOCK(OverlayPanelParams, HUD_OVERLAY_PANEL_PARAMS);
 
 // Pixel coordinates (x right, y down from the top-left corner, z 0.5) to clip space for a
 // width x height target: what OverlayFill's viewProj is.

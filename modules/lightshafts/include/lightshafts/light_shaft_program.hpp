@@ -3,8 +3,8 @@
 // The light-shaft program: screen-space light scattering (GPU Gems 3 ch. 13) over a frame
 // whose occlusion image is its depth; [Hathaway 2010] §3.7 lists light shafts among the
 // passes that follow the foliage and depth-test against its depth. Described once for every
-// backend (engine/render/program_desc.hpp): the GLSL in light_shaft_program.cpp, the CPU
-// kernel in light_shaft_kernel.hpp.
+// backend (engine/render/program_desc.hpp): its parameter block declared once below
+// (engine/render/param_block.hpp), the GLSL body in glsl/, the CPU kernel in light_shaft_kernel.hpp.
 //
 // Full screen, one output per pixel p: `samples` points q_i march from p towards the sun's
 // pixel `sunPixel` (a fraction `density` of the way), weighted by decay^i:
@@ -13,26 +13,27 @@
 // clear value `farDepth`. Non-finite results output 0.
 #include <glm/glm.hpp>
 
+#include "engine/render/param_block.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 
 namespace lightshafts {
 
-struct LightShaftParams {
-    engine::render::TextureHandle depth;  // D32F or R32F, the target's size
-    glm::vec2 sunPixel{0.0f};             // the sun's position in pixels (may be off screen)
-    float farDepth = 1.0f;                // the depth clear value (0 for reverse-Z)
-    bool greaterIsCloser = false;
-    glm::vec3 color{1.0f, 0.95f, 0.8f};
-    float intensity = 0.35f;
-    float decay = 0.96f;
-    float density = 0.8f;
-    int samples = 32;  // 1..128
-    // The occlusion image is the sun's glow where sky shows (GPU Gems 3 ch. 13 draws the sun
-    // as a bright disc): a sky sample at distance d from the sun weighs (1 - d/glowRadius)^2.
-    // 0: every sky pixel glows alike.
-    float glowRadius = 0.0f;  // pixels
-};
+// glowRadius: the occlusion image is the sun's glow where sky shows (GPU Gems 3 ch. 13 draws
+// the sun as a bright disc): a sky sample at distance d from the sun weighs (1 - d/glowRadius)^2;
+// 0: every sky pixel glows alike.
+#define LIGHTSHAFTS_PARAMS(UNIFORM, DIRECTION, TEXTURE)                                                  \
+    TEXTURE(depth, Texel, FullSize, Required)     /* D32F or R32F, the target's size */                  \
+    UNIFORM(glm::vec2, sunPixel, glm::vec2(0.0f)) /* the sun's position in pixels (may be off screen) */ \
+    UNIFORM(float, farDepth, 1.0f)                /* the depth clear value (0 for reverse-Z) */          \
+    UNIFORM(bool, greaterIsCloser, false)                                                                \
+    UNIFORM(glm::vec3, color, glm::vec3(1.0f, 0.95f, 0.8f))                                              \
+    UNIFORM(float, intensity, 0.35f)                                                                     \
+    UNIFORM(float, decay, 0.96f)                                                                         \
+    UNIFORM(float, density, 0.8f)                                                                        \
+    UNIFORM(int, samples, 32)        /* 1..128 */                                                        \
+    UNIFORM(float, glowRadius, 0.0f) /* pixels */
+ENGINE_PARAM_BLOCK(LightShaftParams, LIGHTSHAFTS_PARAMS);
 
 // For Backend::createProgram. Draws are checked for: a D32F or R32F depth of at least the
 // target's size, samples in 1..128, finite parameters.

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The particle module's two programs, described once for every backend
-// (engine/render/program_desc.hpp): the GLSL in particle_programs.cpp, the CPU kernels in
-// particle_kernels.hpp.
+// (engine/render/program_desc.hpp): each parameter block declared once below (the struct, the
+// uniform and texture table and the GLSL samplers come from it: engine/render/param_block.hpp),
+// the GLSL bodies in glsl/, the CPU kernels in particle_kernels.hpp.
 #include <glm/glm.hpp>
 
+#include "engine/render/param_block.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 
@@ -22,29 +24,29 @@ namespace particles {
 // (closest-sample downsample, [Hathaway 2010] §3.5.1). distance = depthScale / (depth +
 // depthOffset) (for a perspective projection P: depthScale = P[3][2], depthOffset = P[2][2]).
 // Non-finite values output 0.
-struct ParticleParams {
-    glm::mat4 viewProj{1.0f};
-    engine::render::TextureHandle sceneDepth;  // D32F or R32F, full resolution
-    int depthStride = 1;                       // 1: full-resolution layer, 2: half
-    float depthScale = 1.0f;
-    float depthOffset = 0.0f;
-    float softness = 0.5f;         // metres over which a particle fades into the scene behind it
-    bool greaterIsCloser = false;  // reverse-Z (CompareFunc::Greater)
-};
+#define PARTICLES_PARTICLE_PARAMS(UNIFORM, DIRECTION, TEXTURE)                                              \
+    UNIFORM(glm::mat4, viewProj, glm::mat4(1.0f))                                                           \
+    TEXTURE(sceneDepth, Texel, Sampled, Optional) /* D32F or R32F, full resolution */                       \
+    UNIFORM(int, depthStride, 1)                  /* 1: full-resolution layer, 2: half */                   \
+    UNIFORM(float, depthScale, 1.0f)                                                                        \
+    UNIFORM(float, depthOffset, 0.0f)                                                                       \
+    UNIFORM(float, softness, 0.5f)        /* metres over which a particle fades into the scene behind it */ \
+    UNIFORM(bool, greaterIsCloser, false) /* reverse-Z (CompareFunc::Greater) */
+ENGINE_PARAM_BLOCK(ParticleParams, PARTICLES_PARTICLE_PARAMS);
 
 // LayerComposite: out = the premultiplied layer texel (alpha saturated, non-finite -> 0),
 // blended with BlendState::premultipliedOver(). layerScale 2: the layer is half resolution
 // and each pixel takes, of the 2x2 nearest layer texels, the one whose closest-sample depth
 // is nearest in distance to this pixel's depth, so a layer texel never bleeds across a
 // foliage edge (a halo) — a nearest-depth upsample.
-struct LayerCompositeParams {
-    engine::render::TextureHandle layer;
-    engine::render::TextureHandle sceneDepth;  // full resolution (layerScale 2 only)
-    int layerScale = 1;
-    float depthScale = 1.0f;
-    float depthOffset = 0.0f;
-    bool greaterIsCloser = false;
-};
+#define PARTICLES_LAYER_COMPOSITE_PARAMS(UNIFORM, DIRECTION, TEXTURE)                        \
+    TEXTURE(layer, Texel, Sampled, Required)                                                 \
+    TEXTURE(sceneDepth, Texel, FullSize, Optional) /* full resolution (layerScale 2 only) */ \
+    UNIFORM(int, layerScale, 1)                                                              \
+    UNIFORM(float, depthScale, 1.0f)                                                         \
+    UNIFORM(float, depthOffset, 0.0f)                                                        \
+    UNIFORM(bool, greaterIsCloser, false)
+ENGINE_PARAM_BLOCK(LayerCompositeParams, PARTICLES_LAYER_COMPOSITE_PARAMS);
 
 // For Backend::createProgram. Particle draws are checked for depthStride 1 or 2, a finite
 // softness > 0 and finite depth factors; layer composites for layerScale 1 or 2, a layer of at

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The transparency module's own programs (weighted blended OIT and SSAM+'s composite),
-// described once for every backend (engine/render/program_desc.hpp): the GLSL in
-// src/programs.cpp, the CPU kernels in src/program_kernels.hpp.
+// described once for every backend (engine/render/program_desc.hpp): the full-screen ones'
+// parameter blocks declared once below (engine/render/param_block.hpp; WboitAccumulate's is the
+// engine's lit surface's, litSurfaceLayout), the GLSL bodies in glsl/, the CPU kernels in
+// src/program_kernels.hpp.
 #include <cstdint>
 
 #include <glm/glm.hpp>
 
+#include "engine/render/param_block.hpp"
 #include "engine/render/program.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
@@ -33,10 +36,10 @@ struct WboitAccumulateParams {
 // blended ONE_MINUS_SRC_ALPHA / SRC_ALPHA onto the opaque colour:
 //   result = average * (1 - revealage) + opaque * revealage.
 // Non-finite components come out as 0 (as SSAM's composite's).
-struct WboitResolveParams {
-    engine::render::TextureHandle accumulation;  // RGBA16F: sum of (C * a * w, a * w)
-    engine::render::TextureHandle revealage;     // r: product of (1 - a), cleared to 1
-};
+#define TRANSPARENCY_WBOIT_RESOLVE_PARAMS(UNIFORM, DIRECTION, TEXTURE)                        \
+    TEXTURE(accumulation, Texel, FullSize, Required) /* RGBA16F: sum of (C * a * w, a * w) */ \
+    TEXTURE(revealage, Texel, FullSize, Required)    /* r: product of (1 - a), cleared to 1 */
+ENGINE_PARAM_BLOCK(WboitResolveParams, TRANSPARENCY_WBOIT_RESOLVE_PARAMS);
 
 // How the coverage composite turns the MAX mask m and the ADD mask s (sum of the layers'
 // alphas, unclamped: a float mask) into the covered fraction of the pixel, 1 - prod(1 - a_i):
@@ -52,12 +55,12 @@ enum class CoverageModel : std::uint8_t {
 //   out = (foliage.rgb, coverage(mask.r, ADD)), ADD = maskAdd.r when given, else mask.a,
 // coverage clamped to [0,1] (NaN -> 0), non-finite foliage components as 0; the pipeline
 // blends it SRC_ALPHA / INV_SRC_ALPHA onto the opaque colour.
-struct CoverageCompositeParams {
-    engine::render::TextureHandle foliage;
-    engine::render::TextureHandle mask;
-    engine::render::TextureHandle maskAdd;
-    CoverageModel model = CoverageModel::EqualLayers;
-};
+#define TRANSPARENCY_COVERAGE_COMPOSITE_PARAMS(UNIFORM, DIRECTION, TEXTURE) \
+    TEXTURE(foliage, Texel, FullSize, Required)                             \
+    TEXTURE(mask, Texel, FullSize, Required)                                \
+    TEXTURE(maskAdd, Texel, FullSize, Optional)                             \
+    UNIFORM(CoverageModel, model, CoverageModel::EqualLayers)
+ENGINE_PARAM_BLOCK(CoverageCompositeParams, TRANSPARENCY_COVERAGE_COMPOSITE_PARAMS);
 
 // CoverageBlurComposite (SSAM+'s composite by default): CoverageComposite with the same
 // params and coverage, its colour the 3x3 binomial (1-2-1) average of the foliage colours
@@ -71,10 +74,10 @@ struct CoverageCompositeParams {
 //   out = (C.rgb, T), C's non-finite components as 0, T = transmittance.r clamped to [0,1]
 // (NaN -> 0); the pipeline blends it ONE / SRC_ALPHA, so the target becomes C + T * target:
 // "over" for a whole stack of layers at once.
-struct TransmittanceCompositeParams {
-    engine::render::TextureHandle color;
-    engine::render::TextureHandle transmittance;
-};
+#define TRANSPARENCY_TRANSMITTANCE_COMPOSITE_PARAMS(UNIFORM, DIRECTION, TEXTURE) \
+    TEXTURE(color, Texel, FullSize, Required)                                    \
+    TEXTURE(transmittance, Texel, FullSize, Required)
+ENGINE_PARAM_BLOCK(TransmittanceCompositeParams, TRANSPARENCY_TRANSMITTANCE_COMPOSITE_PARAMS);
 
 // For Backend::createProgram. Full-screen inputs must be at least the target's size; the
 // coverage model must be one of the above.

@@ -16,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/render/param_block.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 
@@ -52,15 +53,16 @@ bool reprojectionMatrix(const glm::mat4& current, const glm::mat4& previous, int
 //   out  = hist ? h + (current - h) * blend with h = clamp(hist, lo, hi) : current
 //          (exactly current where the clamped history equals it: a still pixel does not drift)
 // Non-finite current components come out as 0.
-struct TemporalResolveParams {
-    glm::mat4 reprojection{1.0f};
-    engine::render::TextureHandle current;  // the frame as the technique left it
-    engine::render::TextureHandle depth;    // its depth (resolved, D32F)
-    engine::render::TextureHandle history;  // the previous output
-    float blend = 0.1f;
-    bool hasHistory = false;
-    bool copyOnly = false;  // out = current at the pixel: the copy the resolve reads from
-};
+// Its parameter block, declared once (engine/render/param_block.hpp; GLSL body in glsl/).
+#define TRANSPARENCY_TEMPORAL_RESOLVE_PARAMS(UNIFORM, DIRECTION, TEXTURE)                \
+    UNIFORM(glm::mat4, reprojection, glm::mat4(1.0f))                                    \
+    TEXTURE(current, Texel, FullSize, Required) /* the frame as the technique left it */ \
+    TEXTURE(depth, Texel, FullSize, Optional)   /* its depth (resolved, D32F) */         \
+    TEXTURE(history, Texel, FullSize, Optional) /* the previous output */                \
+    UNIFORM(float, blend, 0.1f)                                                          \
+    UNIFORM(bool, hasHistory, false)                                                     \
+    UNIFORM(bool, copyOnly, false) /* out = current at the pixel: the copy the resolve reads from */
+ENGINE_PARAM_BLOCK(TemporalResolveParams, TRANSPARENCY_TEMPORAL_RESOLVE_PARAMS);
 
 engine::render::ProgramDesc temporalResolveProgram();
 

@@ -4,8 +4,8 @@
 // every pixel, so it reads no interpolant and no texture.
 #include <glm/glm.hpp>
 
-#include "engine/render/soft/kernel/fragment.hpp"
-#include "engine/render/soft/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
 #include "tint/tint_program.hpp"
 
 namespace tint {

@@ -2,21 +2,15 @@
 #include "tint/tint_program.hpp"
 
 #include <cmath>
-#include <cstddef>
 
-#include "engine/render/soft/kernel/program_kernel.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
+#include "tint_glsl.hpp"  // generated from glsl/
 #include "tint_kernel.hpp"
 
 namespace tint {
 namespace {
 
 using namespace engine::render;
-
-constexpr const char* kFragment = R"(
-void main() {
-    finish(vec4(u_tint, 1.0));
-}
-)";
 
 void check(const void* params, const DrawCheck& check) {
     const glm::vec3 c = static_cast<const TintParams*>(params)->color;
@@ -28,8 +22,7 @@ void check(const void* params, const DrawCheck& check) {
 
 ProgramDesc tintProgram() {
     ProgramDesc d = describeProgram<TintParams>("Tint", VertexInput::Fullscreen, "tint::TintParams");
-    d.gl.fragment = kFragment;
-    d.gl.uniforms = {{"u_tint", UniformType::Vec3, offsetof(TintParams, color)}};
+    d.gl.fragment = glsl::kTintFragment;
     d.check = check;
     d.soft = soft::makeKernel<TintKernel, TintParams>();
     return d;

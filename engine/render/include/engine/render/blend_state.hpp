@@ -87,8 +87,8 @@ struct BlendState {
                 BlendOp::Add, BlendFactor::One, BlendFactor::InvSrcAlpha,
                 BlendOp::Add, WriteAll};
     }
-    // Straight-alpha "over" onto the colour only, the target's alpha kept (ZERO / ONE): SSAM's
-    // composite, lerp(opaque, foliage, mask) ([Hathaway 2010] §3.5.4).
+    // Straight-alpha "over" onto the colour only, the target's alpha kept (ZERO / ONE):
+    // lerp(target, source, alpha), e.g. a mask composite ([Hathaway 2010] §3.5.4).
     static BlendState alphaOverKeepAlpha() {
         return {true,
                 BlendFactor::SrcAlpha,
@@ -99,7 +99,9 @@ struct BlendState {
                 BlendOp::Add,
                 WriteAll};
     }
-    // Every factor ONE, one operation per half: the building block of the SSAM mask.
+    // Every factor ONE, one operation per half: sums (ADD) and maxima (MAX) of what is drawn,
+    // e.g. coverage masks ([Hathaway 2010] Table 3.1). The soft driver finds this family by its
+    // factors and has a fast path for it (kernel/detail/one_one_half_blend.hpp).
     static BlendState oneOne(BlendOp rgb, BlendOp alpha) {
         return {true, BlendFactor::One, BlendFactor::One, rgb, BlendFactor::One, BlendFactor::One, alpha, WriteAll};
     }

@@ -7,6 +7,7 @@
 // built-in index names (gl_InstanceID / gl_InstanceIndex) and how inputs are declared, by the
 // rule of shader_interface.hpp (GL: loose uniforms; Vulkan: a std140 block or push constants).
 #include <string>
+#include <string_view>
 
 #include "engine/render/program_desc.hpp"
 #include "engine/render/shader_interface.hpp"
@@ -26,8 +27,10 @@ std::string vertexStage(GlslDialect dialect, VertexInput input, const std::strin
 // The fragment stage: the head before the program's body. `colorTargets` outputs are
 // declared as such; finish() writes the other o_color variables too, so they are declared as
 // plain variables (GL declares all four as outputs: unbound ones are dropped by the API).
+// `meshEntry`: statements a driver runs first in a Mesh program's main() (its own workarounds,
+// none of a program's business): the body's main() is renamed programMain() and called after them.
 std::string fragmentStage(GlslDialect dialect, VertexInput input, const UniformBlockLayout& layout,
-                          const std::string& body, int colorTargets);
+                          const std::string& body, int colorTargets, std::string_view meshEntry = {});
 
 // The drivers' resolves, complete fragment stages for the full-screen vertex stage. Both read
 // the multisampled source at binding 0 and the parameters u_samples (int) and u_greater (int,

@@ -5,8 +5,8 @@
 // Backend::createProgram. The render layer knows no effect; it runs what it is given:
 //   - for GL, a GLSL fragment stage and the layout of the parameter struct's uniforms and
 //     textures, which the driver uploads from each draw's DrawParams;
-//   - for the soft backend, a CPU kernel written against the program-authoring headers
-//     (engine/render/soft/kernel/), which instantiates the tile rasterizer for the program
+//   - for the soft backend, a CPU kernel written against the program-authoring library
+//     (engine/render/kernel/), which instantiates the tile rasterizer for the program
 //     in the module's own translation unit (no virtual call per fragment).
 #include <cstddef>
 #include <cstdint>
@@ -22,7 +22,7 @@
 namespace engine::render {
 
 namespace soft {
-class ProgramKernel;  // engine/render/soft/kernel/program_kernel.hpp
+class ProgramKernel;  // engine/render/kernel/program_kernel.hpp
 }
 
 // What the vertex stage is. Mesh: the engine's Vertex and Instance layout (vertex.hpp),
@@ -106,7 +106,8 @@ struct ProgramDesc {
     std::function<void(const void* params, const DrawCheck& check)> check;
 };
 
-// What every description states first: a program `name` whose draws pass a `Params`.
+// What every description states first: a program `name` whose draws pass a `Params`. A Params
+// declared by ENGINE_PARAM_BLOCK (param_block.hpp) also gives gl.uniforms and gl.textures.
 template <typename Params>
 ProgramDesc describeProgram(std::string name, VertexInput input, const char* paramsName) {
     ProgramDesc d;
@@ -114,6 +115,7 @@ ProgramDesc describeProgram(std::string name, VertexInput input, const char* par
     d.vertexInput = input;
     d.params = paramsType<Params>();
     d.paramsName = paramsName;
+    if constexpr (requires { Params::describe(d.gl); }) Params::describe(d.gl);
     return d;
 }
 

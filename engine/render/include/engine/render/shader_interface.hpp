@@ -62,6 +62,11 @@ struct ShaderParameter {
 std::string parameterDeclarations(std::span<const ShaderParameter> parameters, GlslDialect dialect,
                                   const char* blockName);
 
+// The samplers of a program's textures as its GLSL body declares them (`layout(binding = unit)
+// uniform sampler2D name;`, valid on GL and on Vulkan's texture set 0), in unit order: for a
+// body whose textures come from a parameter block (param_block.hpp), written nowhere else.
+std::string samplerDeclarations(const GlslProgram& program);
+
 // A Mesh program's interpolants, as the driver's vertex stage writes them (`out`, vertex) or
 // the fragment stage reads them (`in`).
 std::string meshInterpolants(GlslDialect dialect, bool vertexStage);

@@ -12,7 +12,7 @@
 
 #include "engine/render/device.hpp"
 #include "engine/render/driver.hpp"
-#include "engine/render/soft/simd_isa.hpp"
+#include "engine/render/kernel/simd_isa.hpp"
 
 namespace engine::render::soft {
 

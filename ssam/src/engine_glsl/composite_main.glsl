@@ -1,0 +1,1 @@
+void main() { finish(ssamComposite(ivec2(gl_FragCoord.xy))); }
