@@ -4,13 +4,13 @@
 // (one UNORM code, one half ULP), which is what the GL backend is held to as well.
 #include "../backend_fixture.hpp"
 
-#include "engine/render/gl/gl_backend.hpp"
+#include "engine/render/devices/create_device.hpp"
 
 namespace ssam::test {
 namespace {
 
 SSAM_INSTANTIATE_CONFORMANCE_SUITES(Gl, ::testing::Values(uncountedCase("headless", [] {
-                                        return engine::render::gl::createGlBackend({});
+                                        return render::createDevice(render::DeviceKind::Gl);
                                     })));
 
 }  // namespace

@@ -4,19 +4,20 @@
 // so tile-boundary and threading paths both run the whole suite.
 #include "../backend_fixture.hpp"
 
-#include "engine/render/soft/soft_backend.hpp"
+#include "engine/render/devices/create_device.hpp"
 
 namespace ssam::test {
 namespace {
 
 BackendCase softCase(std::string name, engine::render::soft::SoftOptions options) {
-    return {std::move(name),
-            [options] { return std::unique_ptr<render::Backend>(engine::render::soft::createSoftBackend(options)); },
-            [](const render::Backend& backend) -> std::optional<std::uint64_t> {
-                return engine::render::soft::softDriver(dynamic_cast<const engine::render::Device&>(backend))
-                    .stats()
-                    .trianglesDropped;
-            }};
+    render::DeviceOptions device;
+    device.soft = options;
+    return {
+        std::move(name),
+        [device] { return std::unique_ptr<render::Backend>(render::createDevice(render::DeviceKind::Soft, device)); },
+        [](const render::Backend& backend) -> std::optional<std::uint64_t> {
+            return render::soft::softDriver(dynamic_cast<const render::Device&>(backend)).stats().trianglesDropped;
+        }};
 }
 
 SSAM_INSTANTIATE_CONFORMANCE_SUITES(Soft, ::testing::Values(softCase("default", {}),

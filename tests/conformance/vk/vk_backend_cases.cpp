@@ -4,14 +4,16 @@
 // that caused it. The suites' tolerances are the API's, as on GL.
 #include "../backend_fixture.hpp"
 
+#include "engine/render/devices/create_device.hpp"
 #include "vk_validation.hpp"
 
 namespace ssam::test {
 namespace {
 
 SSAM_INSTANTIATE_CONFORMANCE_SUITES(Vk, ::testing::Values(uncountedCase("lavapipe", [] {
-                                        return engine::render::vk::createVulkanBackend(
-                                            ssam::testing::validatedVulkanOptions());
+                                        render::DeviceOptions options;
+                                        options.vulkan = ssam::testing::validatedVulkanOptions();
+                                        return render::createDevice(render::DeviceKind::Vulkan, options);
                                     })));
 
 }  // namespace

@@ -16,7 +16,7 @@ TEST(VkParamBlock, EveryMemberReachesTheBody) {
     for (const bool withDetail : {false, true})
         EXPECT_EQ(ssam::testing::probeMismatches(ssam::testing::drawProbe(*vulkan, p, withDetail), p, withDetail), 0)
             << (withDetail ? "with" : "without") << " the detail texture";
-    EXPECT_EQ(vulkan->validationMessages(), 0u);
+    EXPECT_EQ(engine::render::vk::vulkanDriver(*vulkan).validationMessages(), 0u);
 }
 
 }  // namespace
