@@ -59,9 +59,9 @@ MeshData impostorCards(const Frame& f) {
         const float yaw = card == 0 ? 0.0f : 0.5f * std::numbers::pi_v<float>;
         const glm::vec3 right(std::cos(yaw), 0.0f, -std::sin(yaw)), facing(-std::sin(yaw), 0.0f, -std::cos(yaw));
         const float u0 = 0.5f * float(card), u1 = u0 + 0.5f;
-        const glm::vec3 p[4] = {right * -f.halfWidth + glm::vec3(0, f.top, 0), right * f.halfWidth + glm::vec3(0, f.top, 0),
-                                right * f.halfWidth + glm::vec3(0, f.bottom, 0),
-                                right * -f.halfWidth + glm::vec3(0, f.bottom, 0)};
+        const glm::vec3 p[4] = {
+            right * -f.halfWidth + glm::vec3(0, f.top, 0), right * f.halfWidth + glm::vec3(0, f.top, 0),
+            right * f.halfWidth + glm::vec3(0, f.bottom, 0), right * -f.halfWidth + glm::vec3(0, f.bottom, 0)};
         const glm::vec2 uv[4] = {{u0, 0.0f}, {u1, 0.0f}, {u1, 1.0f}, {u0, 1.0f}};
         mesh.addQuad(p, facing, uv);
     }
@@ -203,12 +203,11 @@ PlantModel plantModel(const PlantRecipe& recipe, const PlantTextures& textures,
     int bark = -1;
     if (full.trunk) {
         const int barkTexture = glb.addTexture(glb.addPngImage(barkPng, "bark"), kRepeat);
-        bark = glb.addMaterial({{"name", "bark"},
-                                {"pbrMetallicRoughness",
-                                 {{"baseColorTexture", {{"index", barkTexture}}},
-                                  {"metallicFactor", 0.0},
-                                  {"roughnessFactor", 0.9}}},
-                                {"alphaMode", "OPAQUE"}});
+        bark = glb.addMaterial(
+            {{"name", "bark"},
+             {"pbrMetallicRoughness",
+              {{"baseColorTexture", {{"index", barkTexture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.9}}},
+             {"alphaMode", "OPAQUE"}});
     }
     auto addLevel = [&](const std::string& name, const PlantMeshes& meshes, int cardsMaterial) {
         std::vector<GlbWriter::Part> parts;
@@ -220,13 +219,15 @@ PlantModel plantModel(const PlantRecipe& recipe, const PlantTextures& textures,
     glb.setSceneNodes({addLevel(recipe.name, full, foliage)});
     glb.addScene({addLevel(recipe.name + " middle", middle, foliage)});
     const int atlasTexture = glb.addTexture(glb.addPngImage(encodePng(atlas), "impostor"), kClampToEdge);
-    glb.addScene({addLevel(recipe.name + " impostor", impostor, glb.addMaterial(foliageMaterial("impostor", atlasTexture)))});
+    glb.addScene(
+        {addLevel(recipe.name + " impostor", impostor, glb.addMaterial(foliageMaterial("impostor", atlasTexture)))});
 
     // Where each level takes over: while its deviation projects to at most kLodPixelError
     // pixels, i.e. while the plant's height on screen is at most kLodPixelError * height / deviation.
     PlantModel out;
     out.glb = glb.glb();
-    out.lod = {{"file", recipe.name + ".glb"}, {"height", std::round(double(frame.top - frame.bottom) * 1000.0) / 1000.0},
+    out.lod = {{"file", recipe.name + ".glb"},
+               {"height", std::round(double(frame.top - frame.bottom) * 1000.0) / 1000.0},
                {"levels", ordered_json::array()}};
     const std::vector<Surface> reference = surfacesOf(full, textures, nullptr);
     float previousBelow = 1e30f;
