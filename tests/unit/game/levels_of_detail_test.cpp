@@ -86,7 +86,8 @@ struct TreeRow {
 TEST(LevelsOfDetail, CommittedPlantsSwitchByHeightOnScreen) {
     TreeRow row;
     ASSERT_EQ(row.levels.levels, 3);
-    const float near = 2.0f * row.levels.belowPixels[0], middle = 0.5f * (row.levels.belowPixels[0] + row.levels.belowPixels[1]),
+    const float near = 2.0f * row.levels.belowPixels[0],
+                middle = 0.5f * (row.levels.belowPixels[0] + row.levels.belowPixels[1]),
                 far = 0.5f * row.levels.belowPixels[1];
     ASSERT_GT(row.levels.belowPixels[0], row.levels.belowPixels[1]) << "the broadleaf tree has a middle level";
     for (float pixels : {near, middle, far}) row.plantAt(pixels);
@@ -152,6 +153,11 @@ TEST(LevelsOfDetail, FrameGraphDumpCountsEachLevel) {
                                  " middle, " + std::to_string(n[2]) + " impostor";
         EXPECT_EQ(racer::lodCountsLine(lists), line);
         EXPECT_NE(dot.str().find(line + "\\l"), std::string::npos) << dot.str();
+        racer::HudFacts facts;
+        facts.frameMs = 10.0;
+        facts.levelsOfDetail = racer::lodCountsLine(lists);
+        const std::vector<std::string> hud = racer::hudLines(facts);
+        EXPECT_NE(std::find(hud.begin(), hud.end(), line), hud.end());
     }
 }
 
