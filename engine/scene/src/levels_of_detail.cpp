@@ -34,8 +34,10 @@ void selectLevelsOfDetail(ecs::Registry& registry, const MeshLibrary& library, c
             const float size = lod.height * std::abs(t.scale.y) * view.focalPixels;
             const float pixels = distance > 0.0f ? size / distance : std::numeric_limits<float>::infinity();
             const std::span<const float> below(lod.belowPixels.data(), std::size_t(std::max(0, lod.levels - 1)));
-            lod.level = chooseLevel(lod.level, lod.chosen, pixels, below, view.hysteresis);
+            lod.level = chooseLevel(lod.level, lod.chosen && lod.chosenFocal == view.focalPixels, pixels, below,
+                                    view.hysteresis);
             lod.chosen = true;
+            lod.chosenFocal = view.focalPixels;
             // Level 0 is kept at least while taller than its threshold plus the band.
             lod.fullDetailUntil = below.empty() || below[0] <= 0.0f ? std::numeric_limits<float>::infinity()
                                                                     : size / (below[0] * (1.0f + view.hysteresis));

@@ -119,6 +119,26 @@ TEST(LevelsOfDetail, CommittedPlantsSwitchByHeightOnScreen) {
     EXPECT_EQ(lists.opaque.size(), 2u);
 }
 
+// The band damps motion only: the same height on screen reached by moving keeps the level,
+// reached by a new focal length (a resized frame) is chosen afresh, as a run at that size would.
+TEST(LevelsOfDetail, ANewViewChoosesAfresh) {
+    TreeRow row;
+    row.plantAt(1.5f * row.levels.belowPixels[0]);
+    racer::attachPlantLevels(row.registry, {{row.full, row.levels}});
+    auto levelFor = [&](float focal) {
+        scene::selectLevelsOfDetail(row.registry, row.library, {glm::vec3(0, 4, 0), focal});
+        return row.extract().instancesAtLevel;
+    };
+    EXPECT_EQ(levelFor(row.focal), (std::array<std::uint32_t, 3>{1, 0, 0}));
+    // 0.95 of the threshold, inside the band: a fresh choice takes the middle level.
+    const float resized = row.focal * 0.95f / 1.5f;
+    EXPECT_EQ(levelFor(resized), (std::array<std::uint32_t, 3>{0, 1, 0}));
+    // Back at the first focal, then moved (same focal) to that height: the band keeps level 0.
+    EXPECT_EQ(levelFor(row.focal), (std::array<std::uint32_t, 3>{1, 0, 0}));
+    row.registry.view<scene::Transform>().each([&](scene::Transform& t) { t.position.z *= 1.5f / 0.95f; });
+    EXPECT_EQ(levelFor(row.focal), (std::array<std::uint32_t, 3>{1, 0, 0}));
+}
+
 // racer's frame with levels on: the dump's label and the HUD line count each level's plants,
 // as extraction counted them; with levels off neither says anything of levels.
 TEST(LevelsOfDetail, FrameGraphDumpCountsEachLevel) {

@@ -36,7 +36,11 @@ struct LevelsOfDetail {
     float height = 1.0f;  // model-space height the thresholds were measured at
     // Written by selectLevelsOfDetail each frame:
     int level = 0;
-    bool chosen = false;  // a level has been chosen once (the first choice has no hysteresis)
+    // A level has been chosen for a view of `chosenFocal` (LodView::focalPixels). A choice
+    // for another focal length (the frame resized, the field of view changed) is made afresh,
+    // without hysteresis: the band damps motion, and a new view is not a motion.
+    bool chosen = false;
+    float chosenFocal = 0.0f;
     // Beyond this distance (metres) the instance may leave level 0 under the current view;
     // 0 before any selection. Deformation eases to rest before it (modules/wind).
     float fullDetailUntil = 0.0f;
