@@ -9,6 +9,8 @@
 #include "engine/core/output_file.hpp"
 #include "geometry.hpp"
 #include "gltf_writer.hpp"
+#include "lod_levels.hpp"
+#include "plants.hpp"
 #include "textures.hpp"
 
 namespace content {
@@ -28,18 +30,6 @@ void stageBytes(engine::PendingFiles& staged, const fs::path& path, const std::v
     if (!out) throw engine::Error("cannot write '" + path.string() + "'");
 }
 
-// The glTF material of alpha-tested foliage: MASK at 0.5, both sides drawn, and the
-// extras flag that routes it to SSAM ([Hathaway 2010]).
-ordered_json foliageMaterial(const std::string& name, int texture) {
-    return {{"name", name},
-            {"pbrMetallicRoughness",
-             {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}},
-            {"alphaMode", "MASK"},
-            {"alphaCutoff", 0.5},
-            {"doubleSided", true},
-            {"extras", {{"foliage", true}}}};
-}
-
 ordered_json opaqueMaterial(const std::string& name, int texture, double metallic, double roughness) {
     return {
         {"name", name},
@@ -48,71 +38,32 @@ ordered_json opaqueMaterial(const std::string& name, int texture, double metalli
         {"alphaMode", "OPAQUE"}};
 }
 
-// The images every model embeds, encoded once.
+// The images every model embeds, encoded once, and the plants made from them (each plant's
+// levels are measured once, for its file and for the table of levels).
 struct Pngs {
     std::vector<std::uint8_t> leaves, fronds, bark, ground, track, car;
+    RgbaImage leafImage, frondImage, barkImage;
+    std::vector<PlantModel> plants;  // in plantRecipes() order
 };
 
-// A tree or bush: an optional trunk (opaque bark) and the foliage cards (MASK), both
-// KHR_draco_mesh_compression, in one mesh on one node.
-std::vector<std::uint8_t> foliageModel(const std::string& name, const Pngs& pngs, bool fronds,
-                                       const MeshData* trunkMesh, const MeshData& cards) {
-    GlbWriter glb;
-    const int foliageTexture = glb.addTexture(
-        glb.addPngImage(fronds ? pngs.fronds : pngs.leaves, fronds ? "frond" : "leaf_cluster"), kClampToEdge);
-    const int foliage = glb.addMaterial(foliageMaterial(fronds ? "fronds" : "leaves", foliageTexture));
-    std::vector<GlbWriter::Part> parts;
-    if (trunkMesh) {
-        const int barkTexture = glb.addTexture(glb.addPngImage(pngs.bark, "bark"), kRepeat);
-        parts.push_back({trunkMesh, glb.addMaterial(opaqueMaterial("bark", barkTexture, 0.0, 0.9))});
-    }
-    parts.push_back({&cards, foliage});
-    const int mesh = glb.addMesh(name, parts, /*draco=*/true);
-    glb.setSceneNodes({glb.addNode({{"name", name}, {"mesh", mesh}})});
-    return glb.glb();
+// The plant of that name: its file is scene 0 (the full model) and its levels of detail.
+std::vector<std::uint8_t> plantFile(const Pngs& pngs, const char* name) {
+    for (const PlantModel& plant : pngs.plants)
+        if (plant.lod["file"] == std::string(name) + ".glb") return plant.glb;
+    throw engine::Error(std::string("no plant recipe named '") + name + "'");
 }
 
-std::vector<std::uint8_t> broadleafTree(const Pngs& pngs) {
-    Pcg32 rng(0x7EEB0AD1u);
-    const MeshData wood = trunk(0.0f, 3.6f, 0.22f, 0.12f, 9, 2.0f);
-    MeshData cards;
-    addCrownLobe(cards, rng, {{0.0f, 4.2f, 0.0f}, {2.0f, 1.6f, 2.0f}, 30, 1.6f, 2.4f});
-    addCrownLobe(cards, rng, {{0.6f, 5.2f, -0.3f}, {1.3f, 1.1f, 1.3f}, 12, 1.4f, 2.0f});
-    return foliageModel("tree_broadleaf", pngs, false, &wood, cards);
-}
-
-std::vector<std::uint8_t> tallTree(const Pngs& pngs) {
-    Pcg32 rng(0x7A11u);
-    const MeshData wood = trunk(0.0f, 6.0f, 0.20f, 0.09f, 8, 2.0f);
-    MeshData cards;
-    addCrownLobe(cards, rng, {{0.0f, 3.6f, 0.0f}, {1.3f, 1.4f, 1.3f}, 16, 1.2f, 2.0f});
-    addCrownLobe(cards, rng, {{0.0f, 5.2f, 0.0f}, {1.1f, 1.5f, 1.1f}, 16, 1.2f, 1.8f});
-    addCrownLobe(cards, rng, {{0.0f, 6.8f, 0.0f}, {0.8f, 1.0f, 0.8f}, 12, 1.0f, 1.5f});
-    return foliageModel("tree_tall", pngs, false, &wood, cards);
-}
-
-std::vector<std::uint8_t> palmTree(const Pngs& pngs) {
-    Pcg32 rng(0xBA1Bu);
-    const MeshData wood = trunk(0.0f, 4.8f, 0.18f, 0.12f, 8, 1.0f);
-    MeshData cards;
-    addFronds(cards, rng, {0.0f, 4.7f, 0.0f}, 14, 3.0f, -0.45f, 0.25f);
-    addFronds(cards, rng, {0.0f, 4.8f, 0.0f}, 10, 2.2f, 0.2f, 0.8f);
-    return foliageModel("tree_palm", pngs, true, &wood, cards);
-}
-
-std::vector<std::uint8_t> roundBush(const Pngs& pngs) {
-    Pcg32 rng(0xB005Bu);
-    MeshData cards;
-    addCrownLobe(cards, rng, {{0.0f, 1.0f, 0.0f}, {1.1f, 0.6f, 1.1f}, 28, 0.9f, 1.3f});
-    return foliageModel("bush_round", pngs, false, nullptr, cards);
-}
-
-std::vector<std::uint8_t> fernBush(const Pngs& pngs) {
-    Pcg32 rng(0xFE4Bu);
-    MeshData cards;
-    addFronds(cards, rng, {0.0f, 0.2f, 0.0f}, 16, 1.4f, 0.4f, 0.9f);
-    addFronds(cards, rng, {0.0f, 0.2f, 0.0f}, 8, 1.1f, 0.9f, 1.3f);
-    return foliageModel("bush_fern", pngs, true, nullptr, cards);
+// Every plant's levels: which scene of its file each is and below how many pixels of height
+// it takes over, with the measured errors that chose it (lod_levels.hpp).
+std::vector<std::uint8_t> lodTable(const Pngs& pngs) {
+    ordered_json table = {{"pixelError", kLodPixelError},
+                          {"deviationPercentile", kDeviationPercentile},
+                          {"measuredPixels", kDeviationPixels},
+                          {"measuredYaws", kMeasuredYaws},
+                          {"plants", ordered_json::array()}};
+    for (const PlantModel& plant : pngs.plants) table["plants"].push_back(plant.lod);
+    const std::string text = table.dump(1) + "\n";
+    return {text.begin(), text.end()};
 }
 
 // Boxes and wheels, +Z forward, one textured atlas material (textures.hpp makeCarAtlas).
@@ -198,11 +149,12 @@ const ContentFile kFiles[] = {
     // Standalone textures the game applies to the terrain and road it builds in code.
     {"textures/ground.png", [](const Pngs& pngs) { return pngs.ground; }},
     {"textures/track.png", [](const Pngs& pngs) { return pngs.track; }},
-    {"models/tree_broadleaf.glb", broadleafTree},
-    {"models/tree_tall.glb", tallTree},
-    {"models/tree_palm.glb", palmTree},
-    {"models/bush_round.glb", roundBush},
-    {"models/bush_fern.glb", fernBush},
+    {"models/tree_broadleaf.glb", [](const Pngs& pngs) { return plantFile(pngs, "tree_broadleaf"); }},
+    {"models/tree_tall.glb", [](const Pngs& pngs) { return plantFile(pngs, "tree_tall"); }},
+    {"models/tree_palm.glb", [](const Pngs& pngs) { return plantFile(pngs, "tree_palm"); }},
+    {"models/bush_round.glb", [](const Pngs& pngs) { return plantFile(pngs, "bush_round"); }},
+    {"models/bush_fern.glb", [](const Pngs& pngs) { return plantFile(pngs, "bush_fern"); }},
+    {"lod/levels.json", lodTable},
     {"models/car.glb", car},
     {"models/water.glb", [](const Pngs&) { return water(); }},
     {"models/terrain.glb", terrain},
@@ -219,12 +171,18 @@ std::vector<fs::path> contentFiles() {
 
 std::vector<fs::path> generateContent(const fs::path& dir) {
     Pngs pngs;
-    pngs.leaves = encodePng(makeLeafCluster(0x1EAFu));
-    pngs.fronds = encodePng(makeFrond(0xF40Du));
-    pngs.bark = encodePng(makeBark(0xBA4Cu));
+    pngs.leafImage = makeLeafCluster(0x1EAFu);
+    pngs.frondImage = makeFrond(0xF40Du);
+    pngs.barkImage = makeBark(0xBA4Cu);
+    pngs.leaves = encodePng(pngs.leafImage);
+    pngs.fronds = encodePng(pngs.frondImage);
+    pngs.bark = encodePng(pngs.barkImage);
     pngs.ground = encodePng(makeGround(0x6400u));
     pngs.track = encodePng(makeTrack(0x7AC0u));
     pngs.car = encodePng(makeCarAtlas(0xCA40u));
+    for (const PlantRecipe& recipe : plantRecipes())
+        pngs.plants.push_back(plantModel(recipe, {recipe.fronds ? &pngs.frondImage : &pngs.leafImage, &pngs.barkImage},
+                                         recipe.fronds ? pngs.fronds : pngs.leaves, pngs.bark));
 
     engine::PendingFiles staged;  // the content set is replaced whole or not at all
     std::vector<fs::path> written;

@@ -199,7 +199,12 @@ int GlbWriter::addNode(ordered_json node) {
     return static_cast<int>(nodes_.size() - 1);
 }
 
-void GlbWriter::setSceneNodes(std::vector<int> nodes) { sceneNodes_ = std::move(nodes); }
+void GlbWriter::setSceneNodes(std::vector<int> nodes) { scenes_.front() = std::move(nodes); }
+
+int GlbWriter::addScene(std::vector<int> nodes) {
+    scenes_.push_back(std::move(nodes));
+    return static_cast<int>(scenes_.size() - 1);
+}
 
 std::vector<std::uint8_t> GlbWriter::glb() const {
     ordered_json doc;
@@ -209,7 +214,8 @@ std::vector<std::uint8_t> GlbWriter::glb() const {
         doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     }
     doc["scene"] = 0;
-    doc["scenes"] = ordered_json::array({{{"nodes", sceneNodes_}}});
+    doc["scenes"] = ordered_json::array();
+    for (const std::vector<int>& nodes : scenes_) doc["scenes"].push_back({{"nodes", nodes}});
     doc["nodes"] = nodes_;
     doc["meshes"] = meshes_;
     if (!materials_.empty()) doc["materials"] = materials_;

@@ -40,7 +40,10 @@ public:
     };
     int addMesh(const std::string& name, const std::vector<Part>& parts, bool draco, ordered_json extras = nullptr);
     int addNode(ordered_json node);
+    // Scene 0, the file's default scene.
     void setSceneNodes(std::vector<int> nodes);
+    // One more scene (another level of detail); returns its index.
+    int addScene(std::vector<int> nodes);
 
     std::vector<std::uint8_t> glb() const;
 
@@ -61,7 +64,7 @@ private:
     ordered_json images_ = ordered_json::array();
     ordered_json accessors_ = ordered_json::array();
     ordered_json views_ = ordered_json::array();
-    std::vector<int> sceneNodes_;
+    std::vector<std::vector<int>> scenes_{{}};
 };
 
 }  // namespace content

@@ -13,12 +13,16 @@ namespace {
 // The racer's sky and sun (game/src/frame_renderer.cpp), so frames look like the demo's.
 const glm::vec4 kSky{0.55f, 0.70f, 0.88f, 1.0f};
 const DirectionalLight kSun{{0.45f, 0.80f, 0.35f}, {1.05f, 0.98f, 0.88f}, {0.32f, 0.36f, 0.42f}};
+// The view's draw lists, each plant at the level of detail the camera picks (when it picks).
+engine::scene::DrawLists extractView(BenchScene& scene, const BenchCamera& camera) {
+    if (camera.focalPixels > 0.0f)
+        engine::scene::selectLevelsOfDetail(scene.registry(), scene.library(), {camera.eye, camera.focalPixels});
+    return engine::scene::extractDrawLists(scene.registry(), scene.library(), camera.viewProj, camera.eye);
+}
 }  // namespace
 
 ViewUpload::ViewUpload(Backend& backend, BenchScene& scene, const BenchCamera& camera)
-    : backend_(backend), camera_(camera),
-      lists_(engine::scene::extractDrawLists(scene.registry(), scene.library(), camera.viewProj, camera.eye)),
-      foliage_(backend) {
+    : backend_(backend), camera_(camera), lists_(extractView(scene, camera)), foliage_(backend) {
     for (const engine::scene::DrawBatch& b : lists_.opaque) {
         const auto bytes = std::as_bytes(std::span(b.instances));
         opaqueInstances_.push_back(

@@ -39,6 +39,7 @@ struct BenchOptions {
     int threads = 0;          // soft backend threads, and LP_NUM_THREADS for llvmpipe; 0: all
     std::optional<engine::render::soft::SimdIsa> simd;  // the soft kernels' instruction set; unset: the widest
     std::filesystem::path contentDir;
+    bool levelsOfDetail = true;  // --lod: the plants' levels of detail, chosen for `height`
     // When set: each still frame as <scene>_<technique>_<backend>.png, and its per-pixel ꟻLIP
     // error against the reference as <scene>_<technique>_<backend>_flip.png.
     std::filesystem::path imagesDir;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -17,6 +18,7 @@
 #include "engine/render/projection.hpp"
 #include "engine/scene/components.hpp"
 #include "content_files.hpp"
+#include "plant_levels.hpp"
 #include "track.hpp"  // terrainHeight, buildTerrain, Random: the racer's ground and placement PRNG
 
 namespace bench {
@@ -68,9 +70,12 @@ bool parseScene(std::string_view name, SceneKind& kind) {
 }
 
 BenchScene::BenchScene(Backend& backend, SceneKind kind, const std::filesystem::path& contentDir)
-    : kind_(kind), library_(backend) {
+    : kind_(kind), library_(backend), contentDir_(contentDir) {
     const std::filesystem::path models = contentDir / "models";
-    auto model = [&](const char* file) { return racer::loadContentModel(library_, models / file); };
+    auto model = [&](const char* file) {
+        plants_.emplace_back(racer::loadContentModel(library_, models / file), file);
+        return plants_.back().first;
+    };
     const scene::ModelId broadleaf = model("tree_broadleaf.glb");
     const scene::ModelId tall = model("tree_tall.glb");
     const scene::ModelId palm = model("tree_palm.glb");
@@ -200,13 +205,25 @@ BenchScene::~BenchScene() {
     if (groundTexture_) library_.backend().destroy(groundTexture_);
 }
 
+void BenchScene::useLevelsOfDetail(int viewportHeight) {
+    if (lodViewportHeight_ == 0) {
+        std::map<scene::ModelId, scene::LevelsOfDetail> levels;
+        for (const auto& [model, file] : plants_)
+            levels[model] = racer::loadPlantLevels(library_, contentDir_, contentDir_ / "models" / file, model);
+        racer::attachPlantLevels(registry_, levels);
+    }
+    lodViewportHeight_ = viewportHeight;
+}
+
 BenchCamera BenchScene::view(float aspect, float sideways) const {
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
     const glm::vec3 right = glm::normalize(glm::cross(target_ - eye_, up));
     const glm::vec3 shift = right * sideways;
     BenchCamera c;
     c.eye = eye_ + shift;
-    c.viewProj = perspectiveReverseZ(kFovY, aspect, kNear, kFar) * glm::lookAt(c.eye, target_ + shift, up);
+    const glm::mat4 projection = perspectiveReverseZ(kFovY, aspect, kNear, kFar);
+    c.viewProj = projection * glm::lookAt(c.eye, target_ + shift, up);
+    if (lodViewportHeight_ > 0) c.focalPixels = scene::focalPixels(projection, lodViewportHeight_);
     return c;
 }
 

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -35,6 +36,9 @@ bool parseScene(std::string_view name, SceneKind& kind);
 struct BenchCamera {
     glm::vec3 eye{0.0f};
     glm::mat4 viewProj{1.0f};
+    // Pixels per unit of size at unit distance, for the plants' levels of detail
+    // (engine/scene/levels_of_detail.hpp); 0: no levels chosen, every plant at full detail.
+    float focalPixels = 0.0f;
 };
 
 class BenchScene {
@@ -46,6 +50,11 @@ public:
     ~BenchScene();
     BenchScene(const BenchScene&) = delete;
     BenchScene& operator=(const BenchScene&) = delete;
+
+    // From now on the trees and bushes draw their levels of detail (ssam-bench --lod on),
+    // chosen for frames `viewportHeight` pixels tall. Throws engine::Error when the content's
+    // levels are missing or bad.
+    void useLevelsOfDetail(int viewportHeight);
 
     SceneKind kind() const { return kind_; }
     engine::ecs::Registry& registry() { return registry_; }
@@ -69,6 +78,9 @@ private:
     engine::render::TextureHandle groundTexture_;  // not owned by the library: released here
     glm::vec3 eye_{0.0f}, target_{0.0f, 0.0f, 1.0f};
     float panStep_ = 0.0f;  // metres per pan frame
+    std::filesystem::path contentDir_;
+    std::vector<std::pair<engine::scene::ModelId, std::string>> plants_;  // each plant model and its file
+    int lodViewportHeight_ = 0;                                           // 0: levels of detail off
 };
 
 }  // namespace bench

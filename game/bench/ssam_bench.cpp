@@ -67,6 +67,7 @@ struct Options {
     std::string sweepPrecision = "rgba8,rgba16f";
     std::string out = "out/bench";
     std::string contentDir = racer::defaultContentDir().string();
+    std::string lod = "on";
 };
 
 std::vector<std::string> splitList(const std::string& list, const char* flag) {
@@ -210,6 +211,7 @@ BenchOptions parse(const Options& o) {
     b.threads = o.threads;
     b.simd = racer::simdFromFlag(o.simd);
     b.contentDir = o.contentDir;
+    b.levelsOfDetail = o.lod == "on";
     return b;
 }
 
@@ -393,6 +395,11 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     app.add_option("--out", o.out, "output directory (created if missing; checked before the first frame)")
         ->capture_default_str();
     app.add_option("--content", o.contentDir, "content directory")->capture_default_str();
+    app.add_option("--lod", o.lod,
+                   "levels of detail for the scenes' trees and bushes, chosen for --size: on, or off (every plant "
+                   "at full detail)")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
     app.footer(engine::cli::contractHelpFooter());
     return engine::cli::runTool("ssam-bench", app, argc, argv, [&] { return run(app, o, argc, argv); });
 }

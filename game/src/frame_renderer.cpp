@@ -12,6 +12,7 @@
 #include "transparency/temporal.hpp"
 #include "engine/render/pass_scope.hpp"
 #include "compare_view.hpp"
+#include "hud_text.hpp"
 #include "living_scene.hpp"
 
 namespace racer {
@@ -188,6 +189,7 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
     instances_.beginFrame();
     overlay_.beginFrame();
     auto graph = std::make_unique<FrameGraph>();
+    if (const std::string lod = lodCountsLine(lists); !lod.empty()) graph->addNote(lod);
     const FrameTargets::InGraph in = opaque_->importInto(*graph);
 
     // 1. Opaque pass (MSAA when the technique or --msaa asks for it).

@@ -33,12 +33,19 @@ std::vector<std::string> hudLines(const HudFacts& f) {
     if (f.transientBytes >= 0)
         lines.push_back(format("transient targets: peak %lld bytes (%.1f KiB), previous frame",
                                static_cast<long long>(f.transientBytes), double(f.transientBytes) / 1024.0));
+    if (!f.levelsOfDetail.empty()) lines.push_back(f.levelsOfDetail);
     if (f.passes.empty()) return lines;
     lines.push_back(format("passes, ms: %s", passClock(f.backend)));
     for (const auto& p : f.passes)
         lines.push_back(p.skipped ? format("  skipped  %s", p.pass.c_str())
                                   : format("  %7.2f  %s", p.milliseconds, p.pass.c_str()));
     return lines;
+}
+
+std::string lodCountsLine(const engine::scene::DrawLists& lists) {
+    const auto& n = lists.instancesAtLevel;
+    if (n[0] + n[1] + n[2] == 0) return {};
+    return format("levels of detail: %u full, %u middle, %u impostor", n[0], n[1], n[2]);
 }
 
 std::string compareHudLine(const std::string& left, const std::string& right) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/render/backend.hpp"
+#include "engine/scene/draw_lists.hpp"
 
 namespace racer {
 
@@ -25,9 +26,15 @@ struct HudFacts {
     // The frame graph's peak transient bytes (FrameRenderer::peakTransientBytes) of the
     // frame before; < 0: no line.
     std::int64_t transientBytes = -1;
+    std::string levelsOfDetail{};  // lodCountsLine() of a frame; empty: no line
 };
 
 std::vector<std::string> hudLines(const HudFacts& facts);
+
+// How many plants drew each level of detail (engine/scene/levels_of_detail.hpp), for the HUD and
+// the frame graph's dump: "levels of detail: 120 full, 40 middle, 300 impostor"; empty when no
+// instance has levels.
+std::string lodCountsLine(const engine::scene::DrawLists& lists);
 
 // The compare's line for HudFacts::extra: which technique is on which side, and that the
 // pass list holds both frames' passes (B's, rendered first, then A's).

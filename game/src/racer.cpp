@@ -56,7 +56,7 @@ std::string passTimings(const std::vector<engine::render::PassTiming>& timings) 
 // Offscreen: `frames` frames at the fixed step, a progress line with per-pass times every 10.
 void runHeadless(const Options& o, engine::render::Backend& backend, FrameRenderer& frame, const FrameSource& source,
                  CameraMode camera, float aspect) {
-    double totalMs = 0.0, lastMs = -1.0;
+    double totalMs = 0.0, lastMs = -1.0, updateMs = 0.0;
     std::vector<engine::render::PassTiming> lastTimings;
     SceneFrame last;
     for (int i = 0; i < o.frames; ++i) {
@@ -67,10 +67,12 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
             frame.setHud(
                 hudLines({technique, backend.name(), frame.width(), frame.height(), "previous frame", lastMs,
                           lastTimings, right ? compareHudLine(technique, transparency::techniqueName(*right)) : "",
-                          i > 0 ? std::int64_t(frame.peakTransientBytes()) : -1}));
+                          i > 0 ? std::int64_t(frame.peakTransientBytes()) : -1,
+                          i > 0 ? lodCountsLine(last.lists) + " (previous frame)" : ""}));
         }
         const auto start = std::chrono::steady_clock::now();
         last = source(float(i * o.fixedDt), float(o.fixedDt), camera, PlayerInput{}, aspect);
+        updateMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         frame.render(last.lists, last.camera);
         // The pass times come with the frame's results (takeTimings waits for them on GL and
         // Vulkan, whose queues run after render() returns): the frame ends there, so its time
@@ -84,6 +86,10 @@ void runHeadless(const Options& o, engine::render::Backend& backend, FrameRender
             std::printf("frame %d/%d  %.1f ms  (ms:%s)\n", i + 1, o.frames, ms, passes.c_str());
     }
     std::printf("racer: mean frame %.1f ms\n", totalMs / std::max(1, o.frames));
+    // The scene's update: the simulation, the levels of detail, the living scene's systems (the
+    // wind's deformation) and extraction, before the frame graph.
+    std::printf("racer: mean scene update %.2f ms (%.1f%% of the frame)\n", updateMs / std::max(1, o.frames),
+                totalMs > 0.0 ? 100.0 * updateMs / totalMs : 0.0);
     std::printf("racer: last frame draws %zu opaque, %zu foliage, %zu blend batches\n", last.lists.opaque.size(),
                 last.lists.mask.size(), last.lists.blend.size());
 }
@@ -173,7 +179,7 @@ int run(const CLI::App& app, const Options& o) {
         gltf = std::make_unique<GltfScene>(backend, GltfSceneOptions{o.scenePath, o.sceneIndex, o.cameraIndex});
         renderer.background = kNeutralBackground;
     } else {
-        racing = std::make_unique<RacingScene>(backend, SceneOptions{o.contentDir, o.seed});
+        racing = std::make_unique<RacingScene>(backend, SceneOptions{o.contentDir, o.seed, {}, o.lod == "on"});
         renderer.sun = racing->sun();
     }
     engine::ecs::Registry& registry = gltf ? gltf->registry() : racing->registry();
@@ -201,6 +207,11 @@ int run(const CLI::App& app, const Options& o) {
         }
         const CameraView view =
             gltf ? gltf->camera(frameAspect).view : cameraView(camera, *racing, time, frameAspect, input.free);
+        // The frame's culling picks each plant's level of detail first: the wind eases plants
+        // to rest before they leave the full model (--lod off: every plant stays full).
+        if (o.lod == "on")
+            engine::scene::selectLevelsOfDetail(
+                registry, library, {view.eye, engine::scene::focalPixels(view.projection, frame.height())});
         if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };

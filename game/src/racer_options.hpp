@@ -41,6 +41,7 @@ struct Options {
     std::string dumpGraphPath;  // --dump-graph: Graphviz dot of the last frame's graph
     std::string compare;        // --compare A,B: A on the left, B on the right
     bool hud = false;           // --hud: the HUD in the frame (the window's H toggles it)
+    std::string lod = "on";     // --lod on|off: levels of detail for the plants
     std::string script;         // --script (hidden): keys and window changes at given frames, for tests
     std::string scenePath;      // --scene: a glTF file instead of the racing scene
     int sceneIndex = -1;

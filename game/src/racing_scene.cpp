@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -13,6 +14,7 @@
 #include "engine/core/log.hpp"
 #include "engine/scene/components.hpp"
 #include "content_files.hpp"
+#include "plant_levels.hpp"
 #include "track_ground.hpp"
 
 namespace racer {
@@ -73,6 +75,14 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     // the evaluation order of a call's arguments unspecified (GCC right to left, Clang left to
     // right), so two draws in one expression would grow a different scene per compiler.
     plantForest(registry_, track_, ground_, trees, bushes, random, options.forest);
+    if (options.levelsOfDetail) {
+        std::map<scene::ModelId, scene::LevelsOfDetail> levels;
+        for (std::size_t i = 0; i < treeFiles.size(); ++i)
+            levels[trees[i]] = loadPlantLevels(library_, content, treeFiles[i], trees[i]);
+        for (std::size_t i = 0; i < bushFiles.size(); ++i)
+            levels[bushes[i]] = loadPlantLevels(library_, content, bushFiles[i], bushes[i]);
+        attachPlantLevels(registry_, levels);
+    }
 
     // Water pools (glTF BLEND material): one among the grove's trees, the rest in the infield.
     const scene::ModelId water = loadContentModel(library_, content / "models" / "water.glb");

@@ -32,6 +32,9 @@ struct SceneOptions {
     std::filesystem::path contentDir;
     std::uint32_t seed = 1;
     ForestOptions forest{};
+    // Every tree and bush gets its levels of detail (plant_levels.hpp); they are drawn once a
+    // selection picks them (engine/scene/levels_of_detail.hpp).
+    bool levelsOfDetail = false;
 };
 
 class RacingScene {

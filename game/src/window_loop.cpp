@@ -375,6 +375,7 @@ WindowLoopResult runWindowLoop(LoopWindow& window, engine::render::Backend& rend
             if (const auto right = frame.comparedTechnique())
                 hud.extra += "; " + compareHudLine(hud.technique, transparency::techniqueName(*right));
             hud.transientBytes = result.frames > 0 ? std::int64_t(frame.peakTransientBytes()) : -1;
+            hud.levelsOfDetail = lodCountsLine(scene.lists);
             frame.setHud(hudLines(hud));
         } else {
             frame.setHud({});

@@ -28,6 +28,7 @@
 #include "engine/capture/compare.hpp"
 #include "engine/capture/diff_image.hpp"
 #include "engine/capture/image_read.hpp"
+#include "engine/capture/metrics.hpp"
 #include "engine/cli/command_line.hpp"
 #include "engine/capture/image_write.hpp"
 #include "engine/core/error.hpp"
@@ -94,6 +95,7 @@ struct Arguments {
     CompareOptions options;
     float scale = 1.0f;
     bool linear = false;
+    bool metrics = false;
 };
 
 int compare(const Arguments& args) {
@@ -118,6 +120,14 @@ int compare(const Arguments& args) {
             return exitCode(result.verdict);
         }
         printReport(a, b, result, args.options);
+        if (args.metrics) {
+            // The bench's measures of B against A, on linear light whatever --linear says.
+            ReadOptions linear;
+            linear.linearize = true;
+            const Image la = readImage(args.pathA, linear), lb = readImage(args.pathB, linear);
+            std::printf("  FLIP %.4f  RMSE (linear) %.5f\n", engine::capture::flip(la, lb),
+                        engine::capture::rmseLinear(la, lb));
+        }
         if (!args.diffPath.empty()) writeDiffImage(args.diffPath, a, b, args.scale);
         std::cout << verdictName(result.verdict) << "\n";
         return exitCode(result.verdict);
@@ -152,6 +162,9 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     app.add_option("--diff", args.diffPath, "Write |A-B| * scale to this .png or .exr");
     app.add_option("--scale", args.scale, "Scale factor for the difference image")->capture_default_str();
     app.add_flag("--linear", args.linear, "Compare in linear light (decode sRGB) instead of stored values");
+    app.add_flag("--metrics", args.metrics,
+                 "Also print B's mean FLIP and linear RMSE against A (engine/capture/metrics.hpp), as ssam-bench "
+                 "measures its frames");
     app.footer(
         "Why not idiff itself: the golden tests need three things it does not do.\n"
         "  - PNG colour is compared straight, not premultiplied: idiff premultiplies on reading,\n"

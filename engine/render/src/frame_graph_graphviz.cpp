@@ -118,6 +118,7 @@ void FrameGraph::dumpGraphviz(std::ostream& out, const TextureBytes& bytesOf) co
             out << "\\l";
         }
         if (bytesOf) out << "peak transient bytes: " << peakTransientBytes(bytesOf) << "\\l";
+        for (const std::string& note : notes_) out << escaped(note) << "\\l";
         out << "\";\n";
     }
     out << "}\n";

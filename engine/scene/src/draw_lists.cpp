@@ -17,8 +17,12 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
     registry.view<const Transform, const Renderable>().each(
         [&](ecs::Entity e, const Transform& t, const Renderable& r) {
             const glm::mat4 model = t.matrix();
-            const VertexOverride* override = registry.tryGet<VertexOverride>(e);
-            const std::vector<std::uint32_t>& parts = library.partsOf(r.model);
+            const LevelsOfDetail* lod = registry.tryGet<LevelsOfDetail>(e);
+            const int level = lod ? std::clamp(lod->level, 0, lod->levels - 1) : 0;
+            const VertexOverride* override = level == 0 ? registry.tryGet<VertexOverride>(e) : nullptr;
+            const std::vector<std::uint32_t>& parts =
+                library.partsOf(level > 0 ? lod->models[std::size_t(level)] : r.model);
+            bool drawn = false;
             for (std::size_t i = 0; i < parts.size(); ++i) {
                 const std::uint32_t partIndex = parts[i];
                 const MeshPart& part = library.part(partIndex);
@@ -27,6 +31,7 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                 const bool ownBounds = own && i < override->bounds.size() && !override->bounds[i].empty();
                 const Aabb world = (ownBounds ? override->bounds[i] : part.bounds).transformed(model);
                 if (!intersectsViewVolume(world, viewProj)) continue;
+                drawn = true;
                 const render::Instance instance{model, glm::vec4(1.0f)};
                 const float distance = glm::length((world.min + world.max) * 0.5f - cameraPosition);
                 if (part.material.surface == SurfaceClass::Blend) {
@@ -47,6 +52,7 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                 list[slot].instances.push_back(instance);
                 list[slot].worldBounds.add(world);
             }
+            if (lod && drawn) ++lists.instancesAtLevel[std::size_t(level)];
         });
     auto byPart = [](const DrawBatch& a, const DrawBatch& b) { return a.part < b.part; };
     // Own-vertex batches follow the shared batch of their part, in view order (deterministic).

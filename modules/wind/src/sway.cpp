@@ -31,10 +31,10 @@ glm::vec3 bendAtTop(const Wind& wind, const PlantPose& plant, float time) {
 engine::scene::Aabb deformVertices(std::span<const Vertex> rest, std::span<Vertex> out, std::span<glm::vec3> push,
                                    const Wind& wind, const PlantPose& plant, float time, bool flutter, float decay,
                                    std::span<const SphereCollider> colliders) {
-    const glm::vec3 bend = bendAtTop(wind, plant, time);
+    const glm::vec3 bend = bendAtTop(wind, plant, time) * plant.weight;
     const glm::mat3 normalToWorld(plant.model);
     const float flutterTime = kTwoPi * wind.flutterFrequency * time + plant.sway.phase;
-    const float flutterAmplitude = flutter ? wind.flutterAmplitude * plant.sway.flexibility : 0.0f;
+    const float flutterAmplitude = flutter ? wind.flutterAmplitude * plant.sway.flexibility * plant.weight : 0.0f;
     const float inverseHeight = plant.height > 0.0f ? 1.0f / plant.height : 0.0f;
     engine::scene::Aabb bounds;
     for (std::size_t i = 0; i < rest.size(); ++i) {

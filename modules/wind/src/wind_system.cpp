@@ -8,6 +8,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/parallel_for.hpp"
 #include "engine/scene/components.hpp"
+#include "engine/scene/levels_of_detail.hpp"
 
 namespace wind {
 
@@ -39,6 +40,14 @@ std::uint32_t mix(std::uint32_t x) {
 }
 
 }  // namespace
+
+float restWeight(float distance, float fullDetailUntil) {
+    const float end = fullDetailUntil, start = kEaseStart * fullDetailUntil;
+    if (!(distance > start)) return 1.0f;
+    if (!(distance < end)) return 0.0f;
+    const float t = (end - distance) / (end - start);
+    return t * t * (3.0f - 2.0f * t);  // smoothstep: no jump in the bend nor in its speed
+}
 
 WindSystem::WindSystem(const scene::MeshLibrary& library) : library_(library) {}
 
@@ -151,9 +160,24 @@ void WindSystem::update(ecs::Registry& registry) {
             box.min -= glm::vec3(reach);
             box.max += glm::vec3(reach);
             if (frame_.hasView && !scene::intersectsViewVolume(box, frame_.viewProj)) return;
-            bool near = distanceToBox(frame_.eye, box) <= wind->activeRadius;
+            const float distance = distanceToBox(frame_.eye, box);
+            // A plant with a chosen level of detail: the wind eases out before it may leave its
+            // full model, and a coarser level does not move at all.
+            const scene::LevelsOfDetail* lod = registry.tryGet<scene::LevelsOfDetail>(e);
+            const bool levelled = lod && lod->chosen;
+            // Measured as the selection measures it: from the eye to the model's bounds centre.
+            const float centreDistance =
+                levelled ? glm::length(glm::vec3(model * glm::vec4((local.min + local.max) * 0.5f, 1.0f)) - frame_.eye)
+                         : 0.0f;
+            const float weight =
+                levelled
+                    ? (lod->level > 0 ? 0.0f
+                                      : restWeight(centreDistance, std::min(wind->activeRadius, lod->fullDetailUntil)))
+                    : 1.0f;
+            bool near = distance <= wind->activeRadius && weight > 0.0f;
+            const bool drawnFull = !levelled || lod->level == 0;
             for (const SphereCollider& c : colliders)
-                near = near || distanceToBox(c.center, box) <= c.radius + wind->colliderMargin;
+                near = near || (drawnFull && distanceToBox(c.center, box) <= c.radius + wind->colliderMargin);
             if (!near) return;
             PlantPose pose;
             pose.model = model;
@@ -162,6 +186,7 @@ void WindSystem::update(ecs::Registry& registry) {
             pose.height = local.max.y - local.min.y;
             pose.sway = {std::clamp(std::isfinite(s.flexibility) ? s.flexibility : 0.0f, 0.0f, 1.0f),
                          std::isfinite(s.phase) ? s.phase : 0.0f};
+            pose.weight = weight;
             active.push_back({e, r.model, pose});
         });
     std::sort(active.begin(), active.end(), [](const Active& a, const Active& b) { return a.entity < b.entity; });

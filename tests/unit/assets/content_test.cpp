@@ -62,7 +62,7 @@ TEST(Content, CommittedFilesAreExactlyWhatTheGeneratorWrites) {
             << file << " differs from a fresh generation (run `make content` and commit the result)";
     }
     // No stale files the generator no longer writes.
-    for (const char* folder : {"models", "textures"})
+    for (const char* folder : {"models", "textures", "lod"})
         for (const auto& entry : fs::directory_iterator(kContent / folder))
             EXPECT_TRUE(expected.count(fs::relative(entry.path(), kContent))) << entry.path() << " is not generated";
 }
@@ -70,7 +70,7 @@ TEST(Content, CommittedFilesAreExactlyWhatTheGeneratorWrites) {
 // The generated assets' share of content/ (which must stay well under 2 MB in all).
 TEST(Content, StaysSmall) {
     std::uintmax_t total = 0;
-    for (const char* folder : {"models", "textures"})
+    for (const char* folder : {"models", "textures", "lod"})
         for (const auto& entry : fs::recursive_directory_iterator(kContent / folder))
             if (entry.is_regular_file()) total += entry.file_size();
     EXPECT_LT(total, 1024u * 1024u);
@@ -152,6 +152,80 @@ TEST(Content, TreesAndBushesAreBuiltLikePures) {
             for (const auto& prim : json["meshes"][0]["primitives"])
                 EXPECT_TRUE(prim["extensions"].contains("KHR_draco_mesh_compression"));
         }
+}
+
+// Each plant's levels of detail (content/generator/lod_levels.hpp): scene 1 of its file the
+// middle level, fewer and larger cards over the same crown; scene 2 the impostor, two crossed
+// cards whose texture is the full model drawn from their sides and keeps its coverage down the
+// mips; each takes over below a measured height on screen, a coarser one never before a finer.
+TEST(Content, PlantsHaveMeasuredLevelsOfDetail) {
+    std::ifstream in(kContent / "lod" / "levels.json");
+    const nlohmann::json table = nlohmann::json::parse(in);
+    const float pixelError = table["pixelError"].get<float>();
+    EXPECT_GT(pixelError, 0.0f);
+    EXPECT_LE(pixelError, 1.0f) << "a level may be off by at most a pixel";
+    ASSERT_EQ(table["plants"].size(), committedModels("tree_").size() + committedModels("bush_").size());
+    auto sceneOf = [](const fs::path& path, int scene) {
+        engine::assets::LoadOptions options;
+        options.scene = scene;
+        return loadGltf(path, options);
+    };
+    auto cardsOf = [](const LoadedModel& model, std::size_t mesh) {
+        for (const auto& prim : model.meshes.at(mesh).primitives)
+            if (model.materials.at(static_cast<std::size_t>(prim.material)).foliage) return prim.indices.size() / 6;
+        return std::size_t{0};
+    };
+    for (const auto& plant : table["plants"]) {
+        const fs::path path = kContent / "models" / plant["file"].get<std::string>();
+        SCOPED_TRACE(path.string());
+        const LoadedModel full = loadGltf(path);
+        const LoadedModel middle = sceneOf(path, 1);
+        const LoadedModel impostor = sceneOf(path, 2);
+        EXPECT_TRUE(middle.warnings.empty());
+        EXPECT_TRUE(impostor.warnings.empty());
+        // The height the levels were measured at: the full model's, with the drawing's margin.
+        const float height = full.bounds.max.y - full.bounds.min.y;
+        EXPECT_GE(plant["height"].get<float>(), height);
+        const float width = std::max(full.bounds.max.x - full.bounds.min.x, full.bounds.max.z - full.bounds.min.z);
+        EXPECT_LE(plant["height"].get<float>(), height + 0.1f * std::max(width, height));
+        const std::size_t fullCards = cardsOf(full, 0), middleCards = cardsOf(middle, 1);
+        EXPECT_LE(middleCards * 2, fullCards) << "the middle level keeps at most half the cards";
+        EXPECT_GE(middleCards, 3u);
+        EXPECT_EQ(impostor.meshes.at(2).primitives.size(), 1u) << "the impostor is foliage alone, trunk included";
+        EXPECT_EQ(cardsOf(impostor, 2), 2u);
+        // The impostor spans the full model's outline (within the frame's margin).
+        EXPECT_LE(impostor.bounds.min.y, full.bounds.min.y);
+        EXPECT_GE(impostor.bounds.max.y, full.bounds.max.y);
+        // Its texture: the full model's picture, soft-edged, with a transparent border, whose
+        // coverage-preserving mips keep the alpha-tested silhouette [Castaño 2010].
+        const auto& material =
+            impostor.materials.at(static_cast<std::size_t>(impostor.meshes.at(2).primitives[0].material));
+        EXPECT_EQ(material.alphaMode, AlphaMode::Mask);
+        const auto& pixels =
+            impostor.images
+                .at(static_cast<std::size_t>(
+                    impostor.textures.at(static_cast<std::size_t>(material.baseColorTexture.texture)).image))
+                .pixels;
+        const float coverage = engine::assets::alphaCoverage(pixels, 0.5f);
+        EXPECT_GT(coverage, 0.1f);
+        EXPECT_LT(coverage, 0.8f);
+        for (int x = 0; x < pixels.width; ++x) EXPECT_EQ(pixels.texel(x, 0)[3], 0);
+        const auto mips = engine::assets::generateCoveragePreservingMips(pixels, 0.5f);
+        EXPECT_NEAR(engine::assets::alphaCoverage(mips[2], 0.5f), coverage, 0.03f);
+        // Where they take over: measured, positive, a coarser level never at a larger height.
+        ASSERT_EQ(plant["levels"].size(), 2u);
+        float previous = 1e30f;
+        for (std::size_t level = 0; level < 2; ++level) {
+            const auto& l = plant["levels"][level];
+            EXPECT_EQ(l["scene"], level + 1);
+            EXPECT_GT(l["deviationMetres"].get<float>(), 0.0f);
+            const float below = l["belowPixels"].get<float>();
+            EXPECT_GT(below, 1.0f);
+            EXPECT_LE(below, previous);
+            EXPECT_LE(below, pixelError * plant["height"].get<float>() / l["deviationMetres"].get<float>() * 1.01f);
+            previous = below;
+        }
+    }
 }
 
 TEST(Content, PropsHaveTheirMaterials) {

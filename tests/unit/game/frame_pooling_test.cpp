@@ -26,6 +26,13 @@ TEST(FramePooling, SteadyRacingFramesCreateNothingOnSoft) {
     racer::testing::expectNoCreationsInSteadyState(*soft);
 }
 
+// With levels of detail (racer's default): while the car drives off the plants change level and
+// the wind hands deformed copies back and forth; once steady, nothing is created.
+TEST(FramePooling, SteadyRacingFramesWithLevelsOfDetailCreateNothingOnSoft) {
+    auto soft = engine::render::soft::createSoftBackend({2, 64, false});
+    racer::testing::expectNoCreationsInSteadyState(*soft, /*levelsOfDetail=*/true);
+}
+
 // Counts the textures created through it.
 class TextureCounter final : public engine::render::ForwardingBackend {
 public:

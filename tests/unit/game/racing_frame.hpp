@@ -19,8 +19,10 @@ constexpr float kDt = 1.0f / 30.0f;
 
 // racer's headless loop (racer.cpp) for `frames` frames from `first`, chase camera.
 struct RacingFrame {
-    explicit RacingFrame(engine::render::Backend& backend)
-        : scene(backend, SceneOptions{defaultContentDir(), 1}), renderer(backend, scene.library(), rendererOptions()),
+    // levelsOfDetail: racer's default --lod on (each frame picks the plants' levels first).
+    explicit RacingFrame(engine::render::Backend& backend, bool levelsOfDetail = false)
+        : scene(backend, SceneOptions{defaultContentDir(), 1, {}, levelsOfDetail}), lod(levelsOfDetail),
+          renderer(backend, scene.library(), rendererOptions()),
           living(scene.registry(), scene.library(), LivingSceneOptions{.seed = 1, .track = &scene.track()}) {
         renderer.setLivingScene(&living);
     }
@@ -37,6 +39,9 @@ struct RacingFrame {
             const float time = float(paused ? first : i) * kDt, dt = paused ? 0.0f : kDt;
             scene.update(dt);
             const CameraView view = cameraView(camera, scene, time, float(kWidth) / float(kHeight), FreeCamera{});
+            if (lod)
+                engine::scene::selectLevelsOfDetail(scene.registry(), scene.library(),
+                                                    {view.eye, engine::scene::focalPixels(view.projection, kHeight)});
             living.update(time, dt, view);
             renderer.render(engine::scene::extractDrawLists(scene.registry(), scene.library(), view.viewProj, view.eye),
                             view);
@@ -44,6 +49,7 @@ struct RacingFrame {
     }
 
     RacingScene scene;
+    bool lod;
     FrameRenderer renderer;
     LivingScene living;
 };
@@ -52,10 +58,10 @@ struct RacingFrame {
 // same view, the same plants bent, the same dust), which still re-uploads every per-frame
 // buffer and rebuilds its graph each frame. Before pooling, each such frame created one
 // instance buffer per batch and the particles' buffers.
-inline void expectNoCreationsInSteadyState(engine::render::Backend& inner) {
+inline void expectNoCreationsInSteadyState(engine::render::Backend& inner, bool levelsOfDetail = false) {
     // Never fails (failAt -1): it only counts creations and live resources.
     ssam::testing::FailingBackend backend(inner);
-    RacingFrame frame(backend);
+    RacingFrame frame(backend, levelsOfDetail);
     frame.run(0, 30);  // the car drives off, the dust rises, plants bend; pools fill
     const int createsBefore = backend.creates, liveBefore = backend.live;
     frame.run(30, 100, CameraMode::Chase, /*paused=*/true);

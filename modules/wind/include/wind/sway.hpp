@@ -26,6 +26,9 @@ struct PlantPose {
     float baseY = 0.0f;   // model-space height of the plant's foot ...
     float height = 1.0f;  // ... and its extent: sway grows with (height above foot)^2
     Sway sway;
+    // How much of the wind's bend and flutter the plant shows: 1 near, easing to 0 where it
+    // leaves its full model (restWeight(), wind_system.hpp); collisions push regardless.
+    float weight = 1.0f;
 };
 
 // The horizontal displacement of the plant's top this frame (world space): a slow sway

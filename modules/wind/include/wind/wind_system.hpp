@@ -26,6 +26,17 @@
 
 namespace wind {
 
+// Deformation only where it shows: a plant with a chosen level of detail
+// (engine/scene/levels_of_detail.hpp) bends with the wind in full up to kEaseStart of the
+// distance where it may leave its full model (LevelsOfDetail::fullDetailUntil, or
+// Wind::activeRadius if nearer), then eases to rest (smoothstep) by that distance, so the bend
+// is continuous and already zero when the coarser level, which never moves, takes over; such a
+// plant costs nothing. A plant without levels (racer --lod off) bends as before, in full up to
+// Wind::activeRadius.
+inline constexpr float kEaseStart = 0.6f;
+// 1 up to kEaseStart * fullDetailUntil, 0 from fullDetailUntil on, smoothstep between.
+float restWeight(float distance, float fullDetailUntil);
+
 // Where the frame is seen from, and the simulated clock.
 struct WindFrame {
     float time = 0.0f;

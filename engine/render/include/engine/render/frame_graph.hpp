@@ -126,6 +126,9 @@ public:
     // lists each transient's lifetime (first and last pass) and, given `bytesOf`, its bytes
     // and the frame's peak transient bytes.
     void dumpGraphviz(std::ostream& out, const TextureBytes& bytesOf = {}) const;
+    // A line the compiled graph's label ends with: what the frame drew beside its passes
+    // (racer: how many instances drew each level of detail).
+    void addNote(std::string line) { notes_.push_back(std::move(line)); }
 
 private:
     friend class FrameGraphBuilder;
@@ -170,6 +173,7 @@ private:
     std::vector<std::vector<std::uint32_t>> allocateBefore_;  // per executionOrder_ position: transients
     std::vector<std::vector<std::uint32_t>> releaseAfter_;
     std::vector<std::string> executed_;
+    std::vector<std::string> notes_;
     bool ran_ = false;
 };
 

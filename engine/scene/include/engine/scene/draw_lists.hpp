@@ -7,6 +7,7 @@
 
 #include "engine/core/ecs/registry.hpp"
 #include "engine/render/vertex.hpp"
+#include "engine/scene/levels_of_detail.hpp"
 #include "engine/scene/mesh_library.hpp"
 
 namespace engine::scene {
@@ -25,6 +26,8 @@ struct DrawLists {
     std::vector<DrawBatch> opaque;
     std::vector<DrawBatch> mask;   // alpha-tested foliage
     std::vector<DrawBatch> blend;  // back to front
+    // Instances with LevelsOfDetail drawn (some part in view) at each level.
+    std::array<std::uint32_t, kMaxLodLevels> instancesAtLevel{};
 };
 
 // The vertex buffer a batch draws: its own override, else the part's shared mesh.
@@ -35,7 +38,9 @@ inline render::BufferHandle vertexBufferOf(const DrawBatch& batch, const MeshPar
 // Every Transform + Renderable entity whose part bounds touch the view volume. Batches
 // follow part order (stable across frames); Blend batches one per instance, sorted far to near.
 // A part overridden by the entity's VertexOverride gets a batch of its own with that buffer
-// and the override's bounds, after the shared batch of the same part.
+// and the override's bounds, after the shared batch of the same part. An entity with
+// LevelsOfDetail draws the model of its chosen level (levels_of_detail.hpp); its VertexOverride
+// belongs to level 0's parts and is used only there.
 DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, const glm::mat4& viewProj,
                            const glm::vec3& cameraPosition);
 
