@@ -5,7 +5,10 @@
 // AlphaTest::alphaToCoverage), with depth test and write; the resolve then averages the
 // samples, so alpha becomes a 5-level (9-level at 8x) coverage fraction.
 // Overlapping fragments of equal alpha cover the same samples (no dithering), as in
-// hardware with a fixed coverage pattern.
+// hardware with a fixed coverage pattern. `a2c-sharp` (and `a2c8-sharp`) first sharpen the
+// alpha by its screen-space derivative around the alpha test's reference [Golus 2017]
+// (transparency/sharpened_coverage.hpp): the same shape as the alpha test, anti-aliased.
+#include <optional>
 #include <string>
 
 #include "engine/core/error.hpp"
@@ -15,6 +18,7 @@
 #include "foliage_draws.hpp"
 #include "single_pass_technique.hpp"
 #include "technique_table.hpp"
+#include "transparency/sharpened_coverage.hpp"
 
 namespace transparency::detail {
 
@@ -24,9 +28,18 @@ using namespace engine::render;
 
 class AlphaToCoverageTechnique final : public SinglePassTechnique {
 public:
-    AlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind, int samples)
-        : SinglePassTechnique({kind, samples}), backend_(backend), samples_(samples) {
+    AlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind, int samples,
+                             CoverageAlpha alpha)
+        : SinglePassTechnique({kind, samples}), backend_(backend), samples_(samples),
+          reference_(options.alphaTestReference) {
         PipelineDesc p = foliagePipeline("foliage alpha-to-coverage");
+        if (alpha == CoverageAlpha::Sharpened) {
+            if (reference_ && !(*reference_ >= 0.0f && *reference_ <= 1.0f))
+                throw engine::Error(std::string(techniqueName(kind)) + ": alphaTestReference " +
+                                    std::to_string(*reference_) + " must be in [0, 1]");
+            sharpenProgram_ = Owned<ProgramHandle>(backend_, backend_.createProgram(sharpenedCoverageLitProgram()));
+            p.program = sharpenProgram_.get();
+        }
         p.depth = DepthState::testAndWrite(options.depthFunc);
         p.alphaTest.alphaToCoverage = true;
         p.blend[0].writeMask = WriteRGB;  // the frame's alpha stays 1
@@ -45,28 +58,42 @@ public:
             PassDesc pass = opaque.loadPassDesc();
             pass.name = "foliage alpha-to-coverage";
             PassScope passScope(backend_, pass);
-            for (const FoliageDraw* draw : visible)
-                backend_.draw(batchDraw(draw->batch, pipeline_, surfaceParams(frame, draw->batch)));
+            for (const FoliageDraw* draw : visible) backend_.draw(drawOf(frame, *draw));
             passScope.end();
         }
         opaque.resolve();
     }
 
 private:
+    DrawDesc drawOf(const FoliageFrame& frame, const FoliageDraw& draw) const {
+        const SurfaceParams s = surfaceParams(frame, draw.batch);
+        if (!sharpenProgram_.get()) return batchDraw(draw.batch, pipeline_, s);
+        // The reference the alpha test would use: the material's cutoff, or the one for all.
+        const SharpenedCoverageParams sharp{s.viewProj, s.baseColorFactor, s.baseColor, s.light,
+                                            reference_.value_or(draw.alphaCutoff)};
+        return batchDraw(draw.batch, pipeline_, sharp);
+    }
+
     Backend& backend_;
     int samples_;
+    std::optional<float> reference_;
+    Owned<ProgramHandle> sharpenProgram_;  // null: the plain MaskedLit surface
     Owned<PipelineHandle> pipeline_;
 };
 
 }  // namespace
 
 std::unique_ptr<Technique> makeAlphaToCoverageWith(Backend& backend, const TechniqueOptions& options,
-                                                   TechniqueKind kind, int samples) {
-    return std::make_unique<AlphaToCoverageTechnique>(backend, options, kind, samples);
+                                                   TechniqueKind kind, int samples, CoverageAlpha alpha) {
+    return std::make_unique<AlphaToCoverageTechnique>(backend, options, kind, samples, alpha);
 }
 
 std::unique_ptr<Technique> makeAlphaToCoverageTechnique(Backend& backend, const TechniqueOptions& options) {
-    return makeAlphaToCoverageWith(backend, options, TechniqueKind::AlphaToCoverage, 4);
+    return makeAlphaToCoverageWith(backend, options, TechniqueKind::AlphaToCoverage, 4, CoverageAlpha::Plain);
+}
+
+std::unique_ptr<Technique> makeAlphaToCoverageSharpTechnique(Backend& backend, const TechniqueOptions& options) {
+    return makeAlphaToCoverageWith(backend, options, TechniqueKind::AlphaToCoverageSharp, 4, CoverageAlpha::Sharpened);
 }
 
 }  // namespace transparency::detail

@@ -10,6 +10,7 @@
 #include "gpu_backend.hpp"
 #include "technique_fixture.hpp"
 #include "run_technique.hpp"
+#include "sharpened_coverage_frame.hpp"
 
 namespace {
 
@@ -28,9 +29,9 @@ Readback runOn(Backend& backend, TechniqueKind kind) {
 }
 
 TEST(SSAM_GPU_SUITE(Techniques), EachTechniqueMatchesTheSoftBackend) {
-    for (TechniqueKind kind :
-         {TechniqueKind::Ssam, TechniqueKind::SsamPlus, TechniqueKind::AlphaTest, TechniqueKind::AlphaToCoverage,
-          TechniqueKind::BlendUnsorted, TechniqueKind::BlendSorted, TechniqueKind::Wboit, TechniqueKind::Hashed}) {
+    for (TechniqueKind kind : {TechniqueKind::Ssam, TechniqueKind::SsamPlus, TechniqueKind::AlphaTest,
+                               TechniqueKind::AlphaToCoverage, TechniqueKind::BlendUnsorted, TechniqueKind::BlendSorted,
+                               TechniqueKind::Wboit, TechniqueKind::Hashed, TechniqueKind::AlphaToCoverageSharp}) {
         auto soft = soft::createSoftBackend({.threads = 1});
         auto gpu = gpuBackend();
         const Readback s = runOn(*soft, kind), g = runOn(*gpu, kind);
@@ -106,6 +107,21 @@ TEST(SSAM_GPU_SUITE(Techniques), AlphaToCoverage8MatchesSoftOrIsRefusedWithAClea
     float worst = 0.0f;
     for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
     EXPECT_LE(worst, 1e-3f);
+}
+
+// Sharpened alpha to coverage's derivative [Golus 2017]: GLSL's fwidthFine over the quad on
+// the GPU, the quad partner's texel alpha on soft (transparency/sharpened_coverage.hpp). On
+// the ramp, whose uv is affine, both give the formula's values and one partial pixel a row.
+TEST(SSAM_GPU_SUITE(Techniques), SharpenedCoverageDerivativeMatchesTheSoftBackend) {
+    auto soft = soft::createSoftBackend({.threads = 1});
+    auto gpu = gpuBackend();
+    const Readback s = drawSharpenedRamp(*soft, 0.45f), g = drawSharpenedRamp(*gpu, 0.45f);
+    EXPECT_EQ(expectSharpenedRamp(g, 0.45f, 2e-2f), 1) << kGpuName;
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+    // The bilinear filter's weights round differently (llvmpipe: 8 bits of fraction), and the
+    // sharpening multiplies alpha's rounding by 1 / width = 56.
+    EXPECT_LE(worst, 2e-2f);
 }
 
 TEST(SSAM_GPU_SUITE(Techniques), SSAM_GPU_NAME(ReferenceRefuses, WithAClearMessage)) {

@@ -216,6 +216,23 @@ TEST(Techniques, AlphaToCoverage8CoversRoundAlphaTimesEightSamples) {
     expectRgbNear(rgbAt(r, kOnlyB, 14), (7.0f * blue + opaque) / 8.0f, 1e-6f, "blue strip");
 }
 
+// a2c-sharp and a2c8-sharp [Golus 2017]: vertex alpha is flat (a derivative of 0), so they
+// cover as the alpha test at 0.5 does: A (0.4) nothing, B (0.6) every sample, where plain a2c
+// covers 2 of 4 with each.
+TEST(Techniques, AlphaToCoverageSharpWithFlatAlphaCoversAllOrNothingAtFourAndEightSamples) {
+    for (TechniqueKind kind : {TechniqueKind::AlphaToCoverageSharp, TechniqueKind::AlphaToCoverage8Sharp}) {
+        auto backend = softBackend();
+        auto technique = createTechnique(kind, *backend, {});
+        ASSERT_EQ(technique->opaqueSamples(), kind == TechniqueKind::AlphaToCoverageSharp ? 4 : 8);
+        TechniqueFrame f(*backend, technique->opaqueSamples(), {kQuadA, kQuadB});
+        const engine::render::Readback r = f.run(*technique);
+        const std::string name(techniqueName(kind));
+        expectRgbNear(rgbAt(r, kOnlyA, kRow), glm::vec3(kOpaqueColor), 1e-6f, (name + " only A").c_str());
+        expectRgbNear(rgbAt(r, kOverlap, kRow), {0, 1, 0}, 1e-6f, (name + " overlap").c_str());
+        expectRgbNear(rgbAt(r, kOnlyB, kRow), {0, 1, 0}, 1e-6f, (name + " only B").c_str());
+    }
+}
+
 // McGuire & Bavoil 2013: with an identity projection every fragment has view depth 1, so
 // eq. (7)'s depth factor g is the same for all and cancels in the average:
 //   average = sum(C a^2) / sum(a^2),  revealage = prod(1 - a),

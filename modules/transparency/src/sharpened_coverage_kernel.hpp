@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The soft backend's kernel of SharpenedCoverageLit (transparency/sharpened_coverage.hpp): the
+// MaskedLit surface, then its alpha sharpened by the fine derivative of a 2x2 quad, taken from
+// the texture at the quad partners' uv (this pixel's uv moved by its analytic derivatives).
+#include <glm/glm.hpp>
+
+#include "engine/render/kernel/fragment.hpp"
+#include "engine/render/kernel/programs.hpp"
+#include "engine/render/kernel/texture_lookup.hpp"
+#include "transparency/sharpened_coverage.hpp"
+
+namespace transparency {
+
+namespace soft = engine::render::soft;
+
+struct SharpenedCoverageLitKernel {
+    static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;  // uv and its derivatives included
+    static_assert(kNeeds.uv && kNeeds.derivatives);
+    soft::MaskedLitProgram surface;
+    float reference = 0.5f;
+
+    SharpenedCoverageLitKernel(const SharpenedCoverageParams& p, const soft::TextureLookup& textures)
+        : surface(engine::render::SurfaceParams{p.viewProj, p.baseColorFactor, p.baseColor, p.light}, textures),
+          reference(p.reference) {}
+
+    glm::vec4 shade(const soft::Fragment& f) const {
+        const glm::vec4 c = surface.shade(f);
+        float width = 0.0f;
+        if (surface.texture) {  // without one, alpha is the factor's times the vertex's: flat
+            // The quad's fine differences: x even pairs with x + 1, x odd with x - 1 (the
+            // difference always taken right minus left, bottom minus top; fwidth's abs makes
+            // the sign moot).
+            const float stepX = (f.x & 1) ? -1.0f : 1.0f, stepY = (f.y & 1) ? -1.0f : 1.0f;
+            const float scale = surface.params.baseColorFactor.a * f.color.a;
+            const float ax = texelAlpha(f.uv + stepX * f.duv.dx, f) * scale;
+            const float ay = texelAlpha(f.uv + stepY * f.duv.dy, f) * scale;
+            width = std::abs(ax - c.a) + std::abs(ay - c.a);
+        }
+        return {glm::vec3(c), sharpenedCoverage(c.a, width, reference)};
+    }
+
+private:
+    float texelAlpha(glm::vec2 uv, const soft::Fragment& f) const {
+        return soft::sampleTexture(*surface.texture, surface.params.baseColor.sampler, uv, f.duv).a;
+    }
+};
+
+}  // namespace transparency

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// SharpenedCoverageLit's GLSL (transparency/sharpened_coverage.hpp; soft:
+// sharpened_coverage_kernel.hpp): the lit surface with glsl/sharpened_coverage_output.glsl as
+// its output hook.
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include "engine/render/glsl/lit_surface.hpp"
+#include "engine/render/kernel/program_kernel.hpp"
+#include "sharpened_coverage_kernel.hpp"
+#include "transparency_glsl.hpp"  // generated from glsl/
+
+namespace transparency {
+
+using namespace engine::render;
+
+ProgramDesc sharpenedCoverageLitProgram() {
+    ProgramDesc d = describeProgram<SharpenedCoverageParams>("SharpenedCoverageLit", VertexInput::Mesh,
+                                                             "transparency::SharpenedCoverageParams");
+    d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" +
+                    glsl::kSharpenedCoverageOutput + engine::render::glsl::kLitSurface;
+    litSurfaceLayout<SharpenedCoverageParams>(d.gl);
+    d.gl.uniforms.push_back({"u_reference", UniformType::Float, offsetof(SharpenedCoverageParams, reference)});
+    d.check = [](const void* params, const DrawCheck& check) {
+        const float reference = static_cast<const SharpenedCoverageParams*>(params)->reference;
+        if (!(reference >= 0.0f && reference <= 1.0f))
+            check.fail("reference " + std::to_string(reference) + " must be in [0, 1]");
+    };
+    d.soft = soft::makeKernel<SharpenedCoverageLitKernel, SharpenedCoverageParams>();
+    return d;
+}
+
+}  // namespace transparency
