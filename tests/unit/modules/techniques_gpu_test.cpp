@@ -4,6 +4,8 @@
 // included).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/core/error.hpp"
@@ -116,12 +118,14 @@ TEST(SSAM_GPU_SUITE(Techniques), SharpenedCoverageDerivativeMatchesTheSoftBacken
     auto soft = soft::createSoftBackend({.threads = 1});
     auto gpu = gpuBackend();
     const Readback s = drawSharpenedRamp(*soft, 0.45f), g = drawSharpenedRamp(*gpu, 0.45f);
-    EXPECT_EQ(expectSharpenedRamp(g, 0.45f, 2e-2f), 1) << kGpuName;
+    EXPECT_EQ(expectSharpenedRamp(g, 0.45f, 1e-2f), 1) << kGpuName;
     float worst = 0.0f;
     for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
     // The bilinear filter's weights round differently (llvmpipe: 8 bits of fraction), and the
-    // sharpening multiplies alpha's rounding by 1 / width = 56.
-    EXPECT_LE(worst, 2e-2f);
+    // sharpening multiplies alpha's rounding by 1 / width = 56: llvmpipe and lavapipe measured
+    // 0.0068.
+    EXPECT_LE(worst, 1e-2f);
+    std::printf("sharpened ramp on %s: largest difference from soft %.5f\n", kGpuName, worst);
 }
 
 TEST(SSAM_GPU_SUITE(Techniques), SSAM_GPU_NAME(ReferenceRefuses, WithAClearMessage)) {
