@@ -134,10 +134,16 @@ std::vector<DollyRow> runDolly(const BenchOptions& o, int frames, float crossfad
                 s.lodFrameFlipSum += frameFlip;
                 s.row.lodFlipWorst = std::max(s.row.lodFlipWorst, lodFlip);
                 if (k > 0) {
-                    const double change = flipOver(s.lod.last, lod, plants, s.lastPlants);
-                    const double fullChange = flipOver(s.full.last, full, plants, s.lastPlants);
+                    Image lodMap, fullMap;
+                    engine::capture::flip(s.lod.last, lod, {}, &lodMap);
+                    engine::capture::flip(s.full.last, full, {}, &fullMap);
+                    const double change = meanOver(lodMap, plants, s.lastPlants);
+                    // Per pixel, what the levels add to the motion's own change.
+                    for (std::size_t i = 0; i < lodMap.pixels.size(); ++i)
+                        lodMap.pixels[i] = std::max(0.0f, lodMap.pixels[i] - fullMap.pixels[i]);
+                    const double excess = meanOver(lodMap, plants, s.lastPlants);
                     if (change > s.row.pop) s.row.pop = change, s.row.popFrame = k;
-                    if (change - fullChange > s.row.popLod) s.row.popLod = change - fullChange, s.row.popLodFrame = k;
+                    if (excess > s.row.popLod) s.row.popLod = excess, s.row.popLodFrame = k;
                 }
                 s.lod.last = lod;
                 s.full.last = full;
@@ -161,8 +167,7 @@ void writeDollyCsv(std::ostream& out, const std::vector<DollyRow>& rows) {
     for (const DollyRow& r : rows) {
         std::snprintf(line, sizeof line, "%s,%s,%s,%d,%.2f,%.2f,%.5f,%d,%.5f,%d,%.5f,%.5f,%.5f\n", r.scene.c_str(),
                       r.technique.c_str(), r.backend.c_str(), r.frames, double(kDollyStep), double(r.crossfade), r.pop,
-                      r.popFrame, r.popLod, r.popLodFrame, r.lodFlipMean, r.lodFlipWorst,
-                      r.lodFrameFlipMean);
+                      r.popFrame, r.popLod, r.popLodFrame, r.lodFlipMean, r.lodFlipWorst, r.lodFrameFlipMean);
         out << line;
     }
 }

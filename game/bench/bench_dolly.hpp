@@ -6,9 +6,9 @@
 // judged with ꟻLIP ([Andersson et al. 2020]) over the plant pixels (those where either frame
 // differs from the opaque-only frame of the full scene):
 //   pop       the largest ꟻLIP between consecutive LOD frames: what the eye sees change;
-//   pop_lod   the largest excess of that over the same pair at full detail: the change the
-//             levels add to the motion's own (a level switching in one frame, or a
-//             crossfade's dither sparkling);
+//   pop_lod   the largest mean, over the plant pixels, of each pixel's excess of that ꟻLIP
+//             over the same pair's at full detail (0 where full detail changed as much): the
+//             change the levels add to the motion's own (a level switching in one frame);
 //   lod_flip  the LOD frame against the full-detail frame over the plant pixels, mean and
 //             worst over the dolly; lod_frame_flip the same over the whole frame.
 // A technique with history draws kHistoryFrames of the first view first, in both runs.
