@@ -16,7 +16,8 @@ const DirectionalLight kSun{{0.45f, 0.80f, 0.35f}, {1.05f, 0.98f, 0.88f}, {0.32f
 // The view's draw lists, each plant at the level of detail the camera picks (when it picks).
 engine::scene::DrawLists extractView(BenchScene& scene, const BenchCamera& camera) {
     if (camera.focalPixels > 0.0f)
-        engine::scene::selectLevelsOfDetail(scene.registry(), scene.library(), {camera.eye, camera.focalPixels});
+        engine::scene::selectLevelsOfDetail(scene.registry(), scene.library(),
+                                            {camera.eye, camera.focalPixels, 0.1f, camera.crossfade});
     return engine::scene::extractDrawLists(scene.registry(), scene.library(), camera.viewProj, camera.eye);
 }
 }  // namespace

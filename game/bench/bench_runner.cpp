@@ -293,7 +293,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
     std::vector<BenchRow> rows;
     for (SceneKind kind : o.scenes) {
         BenchScene softScene(*soft, kind, o.contentDir);
-        if (o.levelsOfDetail) softScene.useLevelsOfDetail(o.height);
+        if (o.levelsOfDetail) softScene.useLevelsOfDetail(o.height, o.crossfade);
         const SceneViews softViews = uploadViews(*soft, softScene, aspect, o.panFrames);
         std::printf("[ssam-bench] scene %s: %zu foliage instances in view; computing the reference\n", sceneName(kind),
                     softViews.still->foliageInstances());
@@ -318,7 +318,7 @@ std::vector<BenchRow> runBench(const BenchOptions& o) {
             SceneViews ownViews;
             if (&backend != soft.get()) {
                 ownScene = std::make_unique<BenchScene>(backend, kind, o.contentDir);
-                if (o.levelsOfDetail) ownScene->useLevelsOfDetail(o.height);
+                if (o.levelsOfDetail) ownScene->useLevelsOfDetail(o.height, o.crossfade);
                 ownViews = uploadViews(backend, *ownScene, aspect, o.panFrames);
             }
             BenchScene& scene = ownScene ? *ownScene : softScene;

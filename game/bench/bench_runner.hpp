@@ -11,6 +11,7 @@
 
 #include "bench_result.hpp"
 #include "bench_scenes.hpp"
+#include "plant_levels.hpp"
 #include "engine/render/kernel/simd_isa.hpp"
 #include "transparency/create_technique.hpp"
 
@@ -39,7 +40,8 @@ struct BenchOptions {
     int threads = 0;          // soft backend threads, and LP_NUM_THREADS for llvmpipe; 0: all
     std::optional<engine::render::soft::SimdIsa> simd;  // the soft kernels' instruction set; unset: the widest
     std::filesystem::path contentDir;
-    bool levelsOfDetail = true;  // --lod: the plants' levels of detail, chosen for `height`
+    bool levelsOfDetail = true;              // --lod: the plants' levels of detail, chosen for `height`
+    float crossfade = racer::kLodCrossfade;  // --crossfade: their crossfade band (LodView::crossfade); 0: none
     // When set: each still frame as <scene>_<technique>_<backend>.png, and its per-pixel ꟻLIP
     // error against the reference as <scene>_<technique>_<backend>_flip.png.
     std::filesystem::path imagesDir;

@@ -205,7 +205,7 @@ BenchScene::~BenchScene() {
     if (groundTexture_) library_.backend().destroy(groundTexture_);
 }
 
-void BenchScene::useLevelsOfDetail(int viewportHeight) {
+void BenchScene::useLevelsOfDetail(int viewportHeight, float crossfade) {
     if (lodViewportHeight_ == 0) {
         std::map<scene::ModelId, scene::LevelsOfDetail> levels;
         for (const auto& [model, file] : plants_)
@@ -213,17 +213,30 @@ void BenchScene::useLevelsOfDetail(int viewportHeight) {
         racer::attachPlantLevels(registry_, levels);
     }
     lodViewportHeight_ = viewportHeight;
+    lodCrossfade_ = crossfade;
 }
 
-BenchCamera BenchScene::view(float aspect, float sideways) const {
+BenchCamera BenchScene::dollyCamera(float aspect, int frame) const {
+    return view(aspect, 0.0f, kDollyLength - kDollyStep * float(frame));
+}
+
+BenchCamera BenchScene::view(float aspect, float sideways, float back) const {
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
     const glm::vec3 right = glm::normalize(glm::cross(target_ - eye_, up));
-    const glm::vec3 shift = right * sideways;
+    glm::vec3 shift = right * sideways;
+    if (back != 0.0f) {
+        // Back along the view's ground direction, the eye kept as high above the terrain.
+        const glm::vec3 ahead = glm::normalize(glm::vec3(target_.x - eye_.x, 0.0f, target_.z - eye_.z));
+        const glm::vec3 eye = eye_ - ahead * back;
+        const float lift = racer::terrainHeight(eye.x, eye.z) - racer::terrainHeight(eye_.x, eye_.z);
+        shift += eye - eye_ + glm::vec3(0.0f, lift, 0.0f);
+    }
     BenchCamera c;
     c.eye = eye_ + shift;
     const glm::mat4 projection = perspectiveReverseZ(kFovY, aspect, kNear, kFar);
     c.viewProj = projection * glm::lookAt(c.eye, target_ + shift, up);
     if (lodViewportHeight_ > 0) c.focalPixels = scene::focalPixels(projection, lodViewportHeight_);
+    c.crossfade = lodCrossfade_;
     return c;
 }
 

@@ -39,7 +39,17 @@ struct BenchCamera {
     // Pixels per unit of size at unit distance, for the plants' levels of detail
     // (engine/scene/levels_of_detail.hpp); 0: no levels chosen, every plant at full detail.
     float focalPixels = 0.0f;
+    // The crossfade band of the levels of detail (LodView::crossfade); 0: none.
+    float crossfade = 0.0f;
 };
+
+// The dolly (forest): the still view moved back along its ground direction by kDollyLength
+// metres, then forward toward the trees kDollyStep metres a frame — a fixed step, as a
+// fixed time step at a fixed speed (60 m/s at 60 Hz) — so every tree and bush crosses its
+// level-of-detail thresholds on the way ([Hathaway 2010] §3.1: the racer's view).
+inline constexpr float kDollyLength = 116.0f;
+inline constexpr float kDollyStep = 1.0f;
+inline constexpr int kDollyFrames = int(kDollyLength / kDollyStep) + 1;
 
 class BenchScene {
 public:
@@ -52,9 +62,10 @@ public:
     BenchScene& operator=(const BenchScene&) = delete;
 
     // From now on the trees and bushes draw their levels of detail (ssam-bench --lod on),
-    // chosen for frames `viewportHeight` pixels tall. Throws engine::Error when the content's
-    // levels are missing or bad.
-    void useLevelsOfDetail(int viewportHeight);
+    // chosen for frames `viewportHeight` pixels tall, crossfaded across `crossfade` of each
+    // threshold (LodView::crossfade; 0: none). Throws engine::Error when the content's levels
+    // are missing or bad.
+    void useLevelsOfDetail(int viewportHeight, float crossfade = 0.0f);
 
     SceneKind kind() const { return kind_; }
     engine::ecs::Registry& registry() { return registry_; }
@@ -69,8 +80,13 @@ public:
     // together, so the view direction stays the same: a pure translation).
     BenchCamera panCamera(float aspect, int frame) const { return view(aspect, panStep_ * float(frame)); }
 
+    // Whether the scene has the dolly (the forest: trees from near to far along the way).
+    bool hasDolly() const { return kind_ == SceneKind::Forest; }
+    // Frame `frame` (0 .. kDollyFrames - 1) of the dolly; the last is the still view.
+    BenchCamera dollyCamera(float aspect, int frame) const;
+
 private:
-    BenchCamera view(float aspect, float sideways) const;
+    BenchCamera view(float aspect, float sideways, float back = 0.0f) const;
 
     SceneKind kind_;
     engine::ecs::Registry registry_;
@@ -81,6 +97,7 @@ private:
     std::filesystem::path contentDir_;
     std::vector<std::pair<engine::scene::ModelId, std::string>> plants_;  // each plant model and its file
     int lodViewportHeight_ = 0;                                           // 0: levels of detail off
+    float lodCrossfade_ = 0.0f;
 };
 
 }  // namespace bench

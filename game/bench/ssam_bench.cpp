@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bench_chart.hpp"
+#include "bench_dolly.hpp"
 #include "bench_figures.hpp"
 #include "bench_goals.hpp"
 #include "bench_report.hpp"
@@ -68,6 +69,9 @@ struct Options {
     std::string out = "out/bench";
     std::string contentDir = racer::defaultContentDir().string();
     std::string lod = "on";
+    std::string crossfade = "on";
+    bool dolly = false;
+    int dollyFrames = kDollyFrames;
 };
 
 std::vector<std::string> splitList(const std::string& list, const char* flag) {
@@ -212,11 +216,21 @@ BenchOptions parse(const Options& o) {
     b.simd = racer::simdFromFlag(o.simd);
     b.contentDir = o.contentDir;
     b.levelsOfDetail = o.lod == "on";
+    b.crossfade = o.crossfade == "on" ? racer::kLodCrossfade : 0.0f;
+    if (o.dolly && !b.levelsOfDetail)
+        throw engine::UsageError("--dolly measures the levels of detail: not with --lod off");
+    if (o.dolly && (o.dollyFrames < 2 || o.dollyFrames > kDollyFrames))
+        throw engine::UsageError("--dolly-frames " + std::to_string(o.dollyFrames) + ": expected 2.." +
+                                 std::to_string(kDollyFrames));
     return b;
 }
 
 int run(const CLI::App& app, Options o, int argc, char** argv) {
     if (o.sweep && !app.count("--techniques")) o.techniques = "alpha-test,ssam-plus";
+    if (o.dolly) {  // the whole path on every technique: a small frame, the forest
+        if (!app.count("--size")) o.size = "320x180";
+        if (!app.count("--scenes")) o.scenes = "forest";
+    }
     if (o.quick) {
         if (!app.count("--size")) o.size = "160x90";
         if (!app.count("--reps")) o.reps = 1;
@@ -234,6 +248,7 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
     const std::filesystem::path out(o.out);
     const std::vector<const char*> reports =
         o.scaling ? std::vector<const char*>{"scaling.csv", "scaling.svg"}
+        : o.dolly ? std::vector<const char*>{"dolly.csv"}
         : o.sweep ? std::vector<const char*>{"sweep.csv", "sweep.md"}
                   : std::vector<const char*>{"bench.csv", "bench_passes.csv", "bench.md", "bench.svg"};
     engine::requireWritableDirectory(out, /*create=*/true);
@@ -274,6 +289,14 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         stageReport(files, out / "scaling.svg", [&](std::ostream& s) { writeScalingSvg(s, rows); });
         files.commit();
         std::printf("ssam-bench: wrote %s/scaling.csv, scaling.svg (%zu rows)\n", out.string().c_str(), rows.size());
+        return 0;
+    }
+    if (o.dolly) {
+        const std::vector<DollyRow> rows = runDolly(run, o.dollyFrames, options.crossfade);
+        stageReport(files, out / "dolly.csv", [&](std::ostream& s) { writeDollyCsv(s, rows); });
+        files.commit();
+        printDollyTable(rows);
+        std::printf("ssam-bench: wrote %s/dolly.csv (%zu rows)\n", out.string().c_str(), rows.size());
         return 0;
     }
     if (o.sweep) {
@@ -400,6 +423,18 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                    "at full detail)")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
+    app.add_option("--crossfade", o.crossfade,
+                   "with --lod on, crossfade each level change over 10 % of its threshold (both levels drawn, "
+                   "their weights in the instance alpha): on, or off (each level switches in one frame)")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
+    CLI::Option* dolly = app.add_flag(
+        "--dolly", o.dolly,
+        "instead of comparing techniques: popping along the forest's dolly (the camera moving toward the trees "
+        "1 m a frame), each technique with levels of detail against full detail; default 320x180; writes dolly.csv");
+    app.add_option("--dolly-frames", o.dollyFrames, "frames of the dolly from its start (2..117)")
+        ->capture_default_str();
+    dolly->excludes(sweep)->excludes(scaling)->excludes(figures);
     app.footer(engine::cli::contractHelpFooter());
     return engine::cli::runTool("ssam-bench", app, argc, argv, [&] { return run(app, o, argc, argv); });
 }

@@ -14,6 +14,10 @@
 
 namespace racer {
 
+// The crossfade band of the plants' level changes with levels of detail on (racer, ssam-bench):
+// 10 % either side of each threshold, the hysteresis's band (engine::scene::LodView::crossfade).
+inline constexpr float kLodCrossfade = 0.1f;
+
 // Every level of `file` (a tree_* or bush_* model of `contentDir`/models) uploaded, level 0
 // being `full` (the file's scene 0, already loaded). Throws engine::Error naming the file and
 // the field when levels.json is missing, malformed or has no entry for the file.

@@ -27,6 +27,7 @@
 #include "frame_source.hpp"
 #include "gltf_scene.hpp"
 #include "hud_text.hpp"
+#include "plant_levels.hpp"
 #include "living_scene.hpp"
 #include "racer_options.hpp"
 #include "racer_outputs.hpp"
@@ -211,7 +212,8 @@ int run(const CLI::App& app, const Options& o) {
         // to rest before they leave the full model (--lod off: every plant stays full).
         if (o.lod == "on")
             engine::scene::selectLevelsOfDetail(
-                registry, library, {view.eye, engine::scene::focalPixels(view.projection, frame.height())});
+                registry, library,
+                {view.eye, engine::scene::focalPixels(view.projection, frame.height()), 0.1f, kLodCrossfade});
         if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };

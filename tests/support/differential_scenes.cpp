@@ -207,6 +207,12 @@ public:
                             {render::Filter::Nearest, render::AddressMode::Wrap, render::AddressMode::Mirror}};
             m.params = ap;
             m.vertices = v;
+            // Three instances in place, each with its own tint alpha (a level of detail's
+            // crossfade weight), in the mask only: MAX and ADD (in instance order) of the three
+            // weighted alphas, on coverage the single draw already pins.
+            if (i == 0)
+                for (float weight : {0.25f, 0.5625f, 1.0f})
+                    m.instances.push_back({glm::mat4(1.0f), glm::vec4(1, 1, 1, weight)});
             mask.draws.push_back(m);
 
             DrawSpec f;

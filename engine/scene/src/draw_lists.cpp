@@ -14,11 +14,13 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
     std::vector<int> batchOfPart(library.partCount(), -1);
     DrawLists lists;
     std::vector<DrawBatch> ownMask, ownOpaque;  // batches of overridden parts, one entity each
-    registry.view<const Transform, const Renderable>().each(
-        [&](ecs::Entity e, const Transform& t, const Renderable& r) {
-            const glm::mat4 model = t.matrix();
-            const LevelsOfDetail* lod = registry.tryGet<LevelsOfDetail>(e);
-            const int level = lod ? std::clamp(lod->level, 0, lod->levels - 1) : 0;
+    registry.view<const Transform, const Renderable>().each([&](ecs::Entity e, const Transform& t,
+                                                                const Renderable& r) {
+        const glm::mat4 model = t.matrix();
+        const LevelsOfDetail* lod = registry.tryGet<LevelsOfDetail>(e);
+        // One level, or the two of a crossfade, each with its weight in the tint's alpha.
+        auto drawLevel = [&](int chosen, float weight) {
+            const int level = lod ? std::clamp(chosen, 0, lod->levels - 1) : 0;
             const VertexOverride* override = level == 0 ? registry.tryGet<VertexOverride>(e) : nullptr;
             const std::vector<std::uint32_t>& parts =
                 library.partsOf(level > 0 ? lod->models[std::size_t(level)] : r.model);
@@ -32,7 +34,7 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                 const Aabb world = (ownBounds ? override->bounds[i] : part.bounds).transformed(model);
                 if (!intersectsViewVolume(world, viewProj)) continue;
                 drawn = true;
-                const render::Instance instance{model, glm::vec4(1.0f)};
+                const render::Instance instance{model, glm::vec4(1.0f, 1.0f, 1.0f, weight)};
                 const float distance = glm::length((world.min + world.max) * 0.5f - cameraPosition);
                 if (part.material.surface == SurfaceClass::Blend) {
                     lists.blend.push_back({partIndex, own, {instance}, world, distance});
@@ -53,7 +55,14 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                 list[slot].worldBounds.add(world);
             }
             if (lod && drawn) ++lists.instancesAtLevel[std::size_t(level)];
-        });
+        };
+        if (lod && lod->blend.crossfading()) {
+            drawLevel(lod->blend.levels[0], 1.0f - lod->blend.coarserWeight);
+            drawLevel(lod->blend.levels[1], lod->blend.coarserWeight);
+        } else {
+            drawLevel(lod ? lod->level : 0, 1.0f);
+        }
+    });
     auto byPart = [](const DrawBatch& a, const DrawBatch& b) { return a.part < b.part; };
     // Own-vertex batches follow the shared batch of their part, in view order (deterministic).
     lists.opaque.insert(lists.opaque.end(), ownOpaque.begin(), ownOpaque.end());

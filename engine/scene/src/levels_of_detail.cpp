@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "engine/scene/levels_of_detail.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/scene/components.hpp"
 
@@ -24,6 +26,19 @@ int chooseLevel(int current, bool chosen, float pixels, std::span<const float> b
     return level;
 }
 
+LodBlend crossfadeLevels(float pixels, std::span<const float> belowPixels, float band) {
+    LodBlend blend;
+    // Finer: the level while not yet `band` below a threshold; coarser: once `band` above it.
+    blend.levels = {chooseLevel(0, false, pixels / (1.0f - band), belowPixels, 0.0f),
+                    chooseLevel(0, false, pixels / (1.0f + band), belowPixels, 0.0f)};
+    if (!blend.crossfading()) return blend;
+    // The finer level's own threshold: where its band is (overlapping bands blend the ends).
+    const float threshold = belowPixels[std::size_t(blend.levels[0])];
+    const float w = (threshold * (1.0f + band) - pixels) / (2.0f * band * threshold);
+    blend.coarserWeight = std::clamp(w, 0.0f, 1.0f);
+    return blend;
+}
+
 void selectLevelsOfDetail(ecs::Registry& registry, const MeshLibrary& library, const LodView& view) {
     registry.view<const Transform, const Renderable, LevelsOfDetail>().each(
         [&](ecs::Entity, const Transform& t, const Renderable& r, LevelsOfDetail& lod) {
@@ -36,11 +51,17 @@ void selectLevelsOfDetail(ecs::Registry& registry, const MeshLibrary& library, c
             const std::span<const float> below(lod.belowPixels.data(), std::size_t(std::max(0, lod.levels - 1)));
             lod.level = chooseLevel(lod.level, lod.chosen && lod.chosenFocal == view.focalPixels, pixels, below,
                                     view.hysteresis);
+            // A band at least the hysteresis's: outside it the plain choice is the level kept.
+            lod.blend = view.crossfade > 0.0f
+                            ? crossfadeLevels(pixels, below, std::max(view.crossfade, view.hysteresis))
+                            : LodBlend{};
+            if (!lod.blend.crossfading()) lod.blend = {{lod.level, lod.level}, 0.0f};
             lod.chosen = true;
             lod.chosenFocal = view.focalPixels;
-            // Level 0 is kept at least while taller than its threshold plus the band.
+            // Level 0 is drawn alone at least while taller than its threshold plus the bands.
+            const float band = std::max(view.hysteresis, view.crossfade);
             lod.fullDetailUntil = below.empty() || below[0] <= 0.0f ? std::numeric_limits<float>::infinity()
-                                                                    : size / (below[0] * (1.0f + view.hysteresis));
+                                                                    : size / (below[0] * (1.0f + band));
         });
 }
 

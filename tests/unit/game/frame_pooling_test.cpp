@@ -33,6 +33,23 @@ TEST(FramePooling, SteadyRacingFramesWithLevelsOfDetailCreateNothingOnSoft) {
     racer::testing::expectNoCreationsInSteadyState(*soft, /*levelsOfDetail=*/true);
 }
 
+// A steady frame in which plants crossfade between levels (both drawn, their weights in the
+// instance tint) creates nothing either: the two levels' instances share the pooled buffers.
+TEST(FramePooling, SteadyFramesWithCrossfadingPlantsCreateNothingOnSoft) {
+    auto soft = engine::render::soft::createSoftBackend({2, 64, false});
+    ssam::testing::FailingBackend backend(*soft);
+    RacingFrame frame(backend, /*levelsOfDetail=*/true);
+    frame.run(0, 30);
+    frame.run(30, 1, CameraMode::Chase, /*paused=*/true);  // the steady frame's levels
+    int crossfading = 0;
+    frame.scene.registry().view<const engine::scene::LevelsOfDetail>().each(
+        [&](engine::ecs::Entity, const engine::scene::LevelsOfDetail& lod) { crossfading += lod.blend.crossfading(); });
+    ASSERT_GT(crossfading, 0) << "no plant inside a crossfade band: the case is not exercised";
+    const int createsBefore = backend.creates;
+    frame.run(30, 20, CameraMode::Chase, /*paused=*/true);
+    EXPECT_EQ(backend.creates - createsBefore, 0) << "textures or buffers created in 20 steady crossfading frames";
+}
+
 // Counts the textures created through it.
 class TextureCounter final : public engine::render::ForwardingBackend {
 public:

@@ -62,6 +62,35 @@ TEST(LevelsOfDetail, HysteresisKeepsALevelInsideTheBand) {
     EXPECT_GE(changes, 99);
 }
 
+// Across a crossfade band both levels draw, their weights summing to one and moving
+// continuously: from 100 pixels to 1 in steps of 0.05 no level's weight jumps.
+TEST(LevelsOfDetail, CrossfadeWeightsSumToOneAndNeverJump) {
+    std::array<float, 3> before{1.0f, 0.0f, 0.0f};
+    int crossfading = 0;
+    for (float pixels = 100.0f; pixels >= 1.0f; pixels -= 0.05f) {
+        const scene::LodBlend blend = scene::crossfadeLevels(pixels, kBelow, 0.1f);
+        std::array<float, 3> weight{};
+        weight[std::size_t(blend.levels[0])] += 1.0f - blend.coarserWeight;
+        weight[std::size_t(blend.levels[1])] += blend.coarserWeight;
+        EXPECT_FLOAT_EQ(weight[0] + weight[1] + weight[2], 1.0f) << pixels;
+        EXPECT_GE(blend.coarserWeight, 0.0f);
+        EXPECT_LE(blend.coarserWeight, 1.0f);
+        for (std::size_t k = 0; k < 3; ++k)
+            EXPECT_LT(std::abs(weight[k] - before[k]), 0.01f) << pixels << " level " << k;
+        before = weight;
+        const bool inBand = std::abs(pixels - 60.0f) < 6.0f || std::abs(pixels - 40.0f) < 4.0f;
+        EXPECT_EQ(blend.crossfading(), inBand) << pixels;
+        if (!blend.crossfading()) {
+            EXPECT_EQ(blend.levels[0], chooseLevel(0, false, pixels, kBelow, 0.1f)) << pixels;
+        }
+        crossfading += blend.crossfading();
+    }
+    EXPECT_GT(crossfading, 300);
+    // Halfway at the threshold itself.
+    EXPECT_NEAR(scene::crossfadeLevels(60.0f, kBelow, 0.1f).coarserWeight, 0.5f, 1e-5f);
+    EXPECT_EQ(scene::crossfadeLevels(60.0f, kBelow, 0.1f).levels, (std::array<int, 2>{0, 1}));
+}
+
 // The committed broadleaf tree at three distances, seen by a 720-line view.
 struct TreeRow {
     std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
@@ -117,6 +146,32 @@ TEST(LevelsOfDetail, CommittedPlantsSwitchByHeightOnScreen) {
     }
     // The impostor has no trunk: two opaque batches (the near and middle trunks).
     EXPECT_EQ(lists.opaque.size(), 2u);
+}
+
+// With a crossfade band, a tree at its first threshold draws the full model and the middle
+// level, each instance's tint alpha its weight (one half each); without one, one level.
+TEST(LevelsOfDetail, ExtractionDrawsBothLevelsOfACrossfadeWithTheirWeights) {
+    TreeRow row;
+    row.plantAt(row.levels.belowPixels[0] * 1.02f);
+    racer::attachPlantLevels(row.registry, {{row.full, row.levels}});
+    scene::selectLevelsOfDetail(row.registry, row.library, {glm::vec3(0, 4, 0), row.focal, 0.1f, 0.1f});
+    const scene::DrawLists lists = row.extract();
+    EXPECT_EQ(lists.instancesAtLevel, (std::array<std::uint32_t, 3>{1, 1, 0}));
+    std::array<float, 2> weight{};
+    for (const scene::DrawBatch& b : lists.mask)
+        for (int level = 0; level < 2; ++level) {
+            const auto& parts = row.library.partsOf(row.levels.models[std::size_t(level)]);
+            if (std::find(parts.begin(), parts.end(), b.part) == parts.end()) continue;
+            ASSERT_EQ(b.instances.size(), 1u);
+            weight[std::size_t(level)] = b.instances[0].tint.a;
+            EXPECT_EQ(glm::vec3(b.instances[0].tint), glm::vec3(1.0f)) << "only the alpha carries the weight";
+        }
+    // 2 % above the threshold in a band of 10 % either side (the height measured to the crown's
+    // centre, not straight ahead: a little off 0.4).
+    EXPECT_NEAR(weight[1], 0.4f, 0.01f);
+    EXPECT_FLOAT_EQ(weight[0] + weight[1], 1.0f);
+    scene::selectLevelsOfDetail(row.registry, row.library, {glm::vec3(0, 4, 0), row.focal, 0.1f, 0.0f});
+    EXPECT_EQ(row.extract().instancesAtLevel, (std::array<std::uint32_t, 3>{1, 0, 0})) << "no band: the level kept";
 }
 
 // The band damps motion only: the same height on screen reached by moving keeps the level,

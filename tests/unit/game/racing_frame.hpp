@@ -10,6 +10,7 @@
 #include "failing_backend.hpp"
 #include "frame_renderer.hpp"
 #include "living_scene.hpp"
+#include "plant_levels.hpp"
 #include "racing_scene.hpp"
 
 namespace racer::testing {
@@ -40,8 +41,9 @@ struct RacingFrame {
             scene.update(dt);
             const CameraView view = cameraView(camera, scene, time, float(kWidth) / float(kHeight), FreeCamera{});
             if (lod)
-                engine::scene::selectLevelsOfDetail(scene.registry(), scene.library(),
-                                                    {view.eye, engine::scene::focalPixels(view.projection, kHeight)});
+                engine::scene::selectLevelsOfDetail(
+                    scene.registry(), scene.library(),
+                    {view.eye, engine::scene::focalPixels(view.projection, kHeight), 0.1f, racer::kLodCrossfade});
             living.update(time, dt, view);
             renderer.render(engine::scene::extractDrawLists(scene.registry(), scene.library(), view.viewProj, view.eye),
                             view);

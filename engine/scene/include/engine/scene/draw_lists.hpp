@@ -26,7 +26,8 @@ struct DrawLists {
     std::vector<DrawBatch> opaque;
     std::vector<DrawBatch> mask;   // alpha-tested foliage
     std::vector<DrawBatch> blend;  // back to front
-    // Instances with LevelsOfDetail drawn (some part in view) at each level.
+    // Instances with LevelsOfDetail drawn (some part in view) at each level (a crossfading
+    // instance at both of its levels).
     std::array<std::uint32_t, kMaxLodLevels> instancesAtLevel{};
 };
 
@@ -39,8 +40,9 @@ inline render::BufferHandle vertexBufferOf(const DrawBatch& batch, const MeshPar
 // follow part order (stable across frames); Blend batches one per instance, sorted far to near.
 // A part overridden by the entity's VertexOverride gets a batch of its own with that buffer
 // and the override's bounds, after the shared batch of the same part. An entity with
-// LevelsOfDetail draws the model of its chosen level (levels_of_detail.hpp); its VertexOverride
-// belongs to level 0's parts and is used only there.
+// LevelsOfDetail draws the model of its chosen level (levels_of_detail.hpp), or inside a
+// crossfade band both levels, each instance's tint alpha its level's weight (else 1); its
+// VertexOverride belongs to level 0's parts and is used only there.
 DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, const glm::mat4& viewProj,
                            const glm::vec3& cameraPosition);
 

@@ -13,6 +13,13 @@
 // hovers at a threshold does not flip every frame. Extraction then draws the chosen level's
 // model and counts the instances drawn at each level (DrawLists::instancesAtLevel). Without a
 // selection every instance stays at level 0: the full model, as without levels at all.
+//
+// With a crossfade band (LodView::crossfade) an instance whose height is within the band of a
+// threshold draws both levels, the finer with weight 1 - w and the coarser with w, w rising
+// linearly across the band, so no level change happens in one frame (SpeedTree's LOD
+// crossfade; Unreal's dithered LOD transition). The weight rides in the instance's tint alpha
+// (render::Instance::tint): under SSAM it multiplies the fragment's alpha, so the two levels
+// blend through the mask ([Hathaway 2010] §3.5.2: MAX and ADD of the alphas).
 #include <array>
 #include <cstdint>
 #include <span>
@@ -44,7 +51,14 @@ struct LevelsOfDetail {
     // Beyond this distance (metres) the instance may leave level 0 under the current view;
     // 0 before any selection. Deformation eases to rest before it (modules/wind).
     float fullDetailUntil = 0.0f;
+    // The levels drawn this frame (LodView::crossfade > 0): see LodBlend.
+    struct LodBlend {
+        std::array<int, 2> levels{};  // finer, coarser; equal outside a band
+        float coarserWeight = 0.0f;   // w; the finer level's weight is 1 - w
+        bool crossfading() const { return levels[0] != levels[1]; }
+    } blend;
 };
+using LodBlend = LevelsOfDetail::LodBlend;
 
 // The view a selection is made for.
 struct LodView {
@@ -53,6 +67,10 @@ struct LodView {
     float focalPixels = 0.0f;
     // Leave a level only this fraction past its threshold (0.1: 10 %).
     float hysteresis = 0.1f;
+    // Crossfade across this fraction either side of each threshold (0.1: from 10 % above it to
+    // 10 % below; at least the hysteresis, so outside the band the level kept is the one
+    // drawn); 0: no crossfade, each instance draws `level` alone.
+    float crossfade = 0.0f;
 };
 
 // projection[1][1] * height / 2: what LodView::focalPixels needs from a perspective projection.
@@ -62,6 +80,13 @@ float focalPixels(const glm::mat4& projection, int viewportHeight);
 // shorter than the next level's threshold by the band, finer while it is taller than its
 // own threshold by the band. `chosen` false: the plain choice, no band.
 int chooseLevel(int current, bool chosen, float pixels, std::span<const float> belowPixels, float hysteresis);
+
+// The levels an instance `pixels` tall draws with a crossfade band of `band` (in (0, 1)):
+// within `band` of a threshold T (T (1 - band) < pixels < T (1 + band)) the levels either side,
+// the coarser one's weight rising linearly from 0 at T (1 + band) to 1 at T (1 - band); else
+// the one level. Overlapping bands (thresholds closer than the band) blend the outer levels
+// by the finer one's threshold. The two weights sum to one.
+LodBlend crossfadeLevels(float pixels, std::span<const float> belowPixels, float band);
 
 // Picks every LevelsOfDetail instance's level for `view` (its height on screen from its
 // Transform's scale and the distance from the eye to its full model's bounds centre).

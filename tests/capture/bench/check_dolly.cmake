@@ -1,0 +1,63 @@
+# SPDX-License-Identifier: MIT
+# Runs `ssam-bench --dolly` (BENCH, OUT) over the dolly's first frames at a small size and checks:
+#   - dolly.csv has one row per technique, each with the frames run and the path's fixed step;
+#   - every measure is a number in [0, 1], and the camera's motion shows (pop > 0);
+#   - two runs, on one thread and on two, write the same file byte for byte: the path and
+#     the measures are deterministic.
+cmake_minimum_required(VERSION 3.20)
+
+function(fail what)
+  message(FATAL_ERROR "ssam-bench --dolly: ${what}")
+endfunction()
+
+function(run dir threads)
+  file(REMOVE_RECURSE ${dir})
+  execute_process(COMMAND ${BENCH} --dolly --dolly-frames 6 --size 96x54 --techniques ssam,alpha-test
+                          --threads ${threads} --out ${dir}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
+  if(NOT rc EQUAL 0)
+    fail("exited with ${rc}\n${stdout}\n${stderr}")
+  endif()
+  if(NOT EXISTS ${dir}/dolly.csv)
+    fail("${dir}/dolly.csv was not written")
+  endif()
+endfunction()
+
+run(${OUT}/one 1)
+run(${OUT}/two 2)
+file(READ ${OUT}/one/dolly.csv one)
+file(READ ${OUT}/two/dolly.csv two)
+if(NOT one STREQUAL two)
+  fail("dolly.csv differs between one thread and two:\n${one}\n${two}")
+endif()
+
+file(STRINGS ${OUT}/one/dolly.csv lines)
+list(POP_FRONT lines header)
+set(expected "scene,technique,backend,frames,step_m,crossfade,pop_flip,pop_frame,pop_lod_flip,pop_lod_frame,lod_flip_mean,lod_flip_worst,lod_frame_flip_mean")
+if(NOT header STREQUAL expected)
+  fail("header '${header}'")
+endif()
+list(LENGTH lines rows)
+if(NOT rows EQUAL 2)
+  fail("${rows} rows, expected 2 (ssam, alpha-test)")
+endif()
+foreach(row IN LISTS lines)
+  string(REPLACE "," ";" f "${row}")
+  list(GET f 0 scene)
+  list(GET f 3 frames)
+  list(GET f 4 step)
+  list(GET f 5 crossfade)
+  if(NOT scene STREQUAL "forest" OR NOT frames EQUAL 6 OR NOT step STREQUAL "1.00" OR NOT crossfade STREQUAL "0.10")
+    fail("row '${row}': expected the forest, 6 frames of 1.00 m, crossfade 0.10")
+  endif()
+  foreach(at 6 8 10 11 12)
+    list(GET f ${at} v)
+    if(NOT v MATCHES "^[0-9]+\\.[0-9]+$" OR v GREATER 1)
+      fail("row '${row}': column ${at} '${v}' is not a number in [0, 1]")
+    endif()
+  endforeach()
+  list(GET f 6 pop)
+  if(NOT pop GREATER 0)
+    fail("row '${row}': no change between frames of a moving camera")
+  endif()
+endforeach()
