@@ -42,12 +42,17 @@ MemoryProbe memoryProbe(const std::string& renderer) {
 
 }  // namespace
 
-GlTextureLimits queryGlTextureLimits(const std::string& renderer) {
+GlTextureLimits queryGlTextureLimits(const std::string& renderer, bool es) {
     GlTextureLimits limits;
     limits.renderer = renderer;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limits.maxTextureSize);
-    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &limits.maxFramebufferWidth);
-    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &limits.maxFramebufferHeight);
+    if (es) {
+        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &limits.maxFramebufferWidth);
+        limits.maxFramebufferHeight = limits.maxFramebufferWidth;
+    } else {
+        glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &limits.maxFramebufferWidth);
+        glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &limits.maxFramebufferHeight);
+    }
     limits.memory = memoryProbe(renderer);
     return limits;
 }
