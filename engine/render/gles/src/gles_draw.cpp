@@ -11,6 +11,7 @@
 #include "engine/render/vertex.hpp"
 #include "gl_check.hpp"
 #include "gl_enums.hpp"
+#include "gl_fixed_function.hpp"
 #include "gl_shaders.hpp"
 #include "gles_driver.hpp"
 
@@ -161,20 +162,7 @@ void GlesDriver::draw(const DriverDraw& draw) {
     glUniform1i(s.a2cSamples, 0);
     glUniform1i(s.a2cActual, passActualSamples_);
 
-    if (state.depthTest) {
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(gl::glCompare(state.depthFunc));
-    } else {
-        glDisable(GL_DEPTH_TEST);
-    }
-    if (!fullscreen && desc.raster.cull != CullMode::None) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(desc.raster.cull == CullMode::Back ? GL_BACK : GL_FRONT);
-    } else {
-        glDisable(GL_CULL_FACE);
-    }
-    glFrontFace(desc.raster.frontFace == Winding::CounterClockwise ? GL_CCW : GL_CW);
-    glEnable(GL_SCISSOR_TEST);
+    gl::applyDepthAndFaces(desc, state, fullscreen);
     const Rect& scissor = state.scissor;
     if (scissor.empty()) return;
     glScissor(scissor.x, scissor.y, scissor.width, scissor.height);  // upper-left origin: y from the top

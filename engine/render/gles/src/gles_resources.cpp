@@ -13,6 +13,7 @@
 #include "gl_enums.hpp"
 #include "gl_shaders.hpp"
 #include "gles_driver.hpp"
+#include "gl_upload.hpp"
 #include "gles_shaders.hpp"
 
 namespace engine::render::gles {
@@ -107,25 +108,11 @@ NativeId GlesDriver::createTexture(const TextureDesc& desc, const TextureData* d
 }
 
 void GlesDriver::upload(const GlTexture& t, const TextureData& data) {
-    const TextureDesc& desc = t.desc;
-    const GlFormat f = glFormat(desc.format);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    const GlFormat f = glFormat(t.desc.format);
     glBindTexture(GL_TEXTURE_2D, t.id);
-    std::vector<std::byte> previous;
-    int previousWidth = 0, previousHeight = 0;
-    for (int level = 0; level < desc.mipLevels; ++level) {
-        const int w = std::max(1, desc.width >> level), h = std::max(1, desc.height >> level);
-        std::vector<std::byte> stored = std::size_t(level) < data.levels.size()
-                                            ? toStored(desc.format, data.levels[level], std::size_t(w) * h)
-                                            : generateMip(desc.format, previous, previousWidth, previousHeight, w, h);
-        glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, f.pixelFormat, f.storedType, stored.data());
-        previous = std::move(stored);
-        previousWidth = w, previousHeight = h;
-    }
+    gl::uploadLevels(t.desc, data, [&](int level, int w, int h, const std::byte* stored) {
+        glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, f.pixelFormat, f.storedType, stored);
+    });
 }
 
 // ES 3.0 has no glClearTexImage, and glClearBuffer converts with the implementation's rounding
@@ -284,13 +271,7 @@ int GlesDriver::maxSamplesFor(GLenum internal) {
     auto it = maxSamplesByFormat_.find(internal);
     if (it != maxSamplesByFormat_.end()) return it->second;
     makeCurrent();
-    GLint count = 0;
-    glGetInternalformativ(GL_RENDERBUFFER, internal, GL_NUM_SAMPLE_COUNTS, 1, &count);
-    std::vector<GLint> counts(std::size_t(std::max(count, 0)));
-    if (count > 0) glGetInternalformativ(GL_RENDERBUFFER, internal, GL_SAMPLES, count, counts.data());
-    int best = 1;
-    for (GLint c : counts) best = std::max(best, int(c));
-    return maxSamplesByFormat_[internal] = best;
+    return maxSamplesByFormat_[internal] = gl::maxSamplesOf(GL_RENDERBUFFER, internal);
 }
 
 }  // namespace engine::render::gles

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The render devices a program can ask for, in one table: what each is called on a command
-// line (`--backend soft|gl|vk`), how it is made and whether it can be made here. The racer, the
+// line (`--backend soft|gl|gles|vk`), how it is made and whether it can be made here. The racer, the
 // benchmark, the scaling run and the tests all choose a device through here, so a new driver
 // is one row (and its library), and no program compares backend names itself.
 #include <cstdint>
