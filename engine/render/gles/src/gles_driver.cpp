@@ -63,10 +63,11 @@ GlesDriver::~GlesDriver() {
         return;
     }
     framebuffers_.release();
-    for (GLuint t : ownedTextures_) glDeleteTextures(1, &t);
-    for (GLuint r : ownedRenderbuffers_) glDeleteRenderbuffers(1, &r);
-    for (GLuint b : ownedBuffers_) glDeleteBuffers(1, &b);
-    for (GLuint q : queryObjects_) glDeleteQueries(1, &q);
+    textures_.forEach(deleteStorage);
+    buffers_.forEach([](const GlBuffer& b) { glDeleteBuffers(1, &b.id); });
+    queries_.forEach([](const GlQuery& q) {
+        if (q.id) glDeleteQueries(1, &q.id);
+    });
     samplers_.release();
     glDeleteBuffers(1, &identityInstance_);
     glDeleteVertexArrays(1, &vao_);

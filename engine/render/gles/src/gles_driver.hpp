@@ -13,7 +13,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -110,6 +109,7 @@ private:
     void fillLevels(const GlTexture& t, int levels, const std::vector<std::byte>& texel);
     // A framebuffer name for an attachment: renderbuffers are marked (kRenderbufferBit).
     GLuint attachment(const GlTexture& t) const;
+    static void deleteStorage(const GlTexture& t);  // its texture or renderbuffer
 
     // gles_passes.cpp
     void applyBaseState();
@@ -131,7 +131,6 @@ private:
     NativeSlots<GlBuffer> buffers_;
     NativeSlots<GlQuery> queries_;
     NativeSlots<GlesProgram> programs_;
-    std::set<GLuint> ownedTextures_, ownedRenderbuffers_, ownedBuffers_, queryObjects_;
     std::map<GLenum, int> maxSamplesByFormat_;
     gl::GlFramebufferCache framebuffers_;
     gl::GlSamplerCache samplers_;

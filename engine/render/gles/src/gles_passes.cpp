@@ -15,21 +15,17 @@ using gl::drainGlErrors;
 
 void GlesDriver::beginPass(const DriverPass& pass) {
     const std::string what = "pass " + quotedName(pass.desc->name);
-    int actual = 1;
+    // The packed colour targets and every attachment's GL name; all have one sample count.
     std::vector<GLuint> colorIds;
     targets_.clear();
     for (NativeId c : pass.color) {
         if (c == kNoNative) continue;
-        const GlTexture& t = textures_[c];
-        actual = t.actualSamples;
-        colorIds.push_back(attachment(t));
         targets_.push_back(c);
+        colorIds.push_back(attachment(textures_[c]));
     }
-    GLuint depthId = 0;
-    if (pass.depth != kNoNative) {
-        actual = textures_[pass.depth].actualSamples;
-        depthId = attachment(textures_[pass.depth]);
-    }
+    const GLuint depthId = pass.depth != kNoNative ? attachment(textures_[pass.depth]) : 0;
+    const NativeId any = pass.depth != kNoNative ? pass.depth : targets_.empty() ? kNoNative : targets_.front();
+    const int actual = any == kNoNative ? 1 : textures_[any].actualSamples;
     makeCurrent();
     drainGlErrors();
     passStart_ = std::chrono::steady_clock::now();
@@ -53,10 +49,7 @@ void GlesDriver::beginPass(const DriverPass& pass) {
     }
     if (pass.countSamplesInto != kNoNative) {
         GlQuery& q = queries_[pass.countSamplesInto];
-        if (!q.id) {
-            glGenQueries(1, &q.id);
-            queryObjects_.insert(q.id);
-        }
+        if (!q.id) glGenQueries(1, &q.id);
         glBeginQuery(GL_ANY_SAMPLES_PASSED, q.id);
     }
     pass_ = pass;

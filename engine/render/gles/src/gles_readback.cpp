@@ -29,11 +29,7 @@ Readback GlesDriver::readback(NativeId h, const TextureDesc&) {
     const GlTexture& t = textures_[h];
     const FormatInfo& info = formatInfo(t.desc.format);
     const std::string what = "readback of " + quotedName(t.desc.name);
-    Readback r;
-    r.width = t.desc.width;
-    r.height = t.desc.height;
-    r.channels = info.channels;
-    r.format = t.desc.format;
+    Readback r{t.desc.width, t.desc.height, info.channels, t.desc.format, {}};
     r.values.resize(std::size_t(r.width) * r.height * r.channels);
     makeCurrent();
     gl::drainGlErrors();

@@ -74,10 +74,9 @@ void GlesDriver::checkTexture(const TextureDesc& desc, const TextureData* data, 
 
 NativeId GlesDriver::createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) {
     const GlFormat f = glFormat(desc.format);
+    GlTexture t{desc};
     makeCurrent();
     drainGlErrors();
-    GlTexture t;
-    t.desc = desc;
     if (desc.samples > 1) {
         glGenRenderbuffers(1, &t.id);
         glBindRenderbuffer(GL_RENDERBUFFER, t.id);
@@ -99,11 +98,9 @@ NativeId GlesDriver::createTexture(const TextureDesc& desc, const TextureData* d
         else fill(t, glm::vec4(0.0f));
         checkGl(what + ": initialising");
     } catch (...) {
-        if (desc.samples > 1) glDeleteRenderbuffers(1, &t.id);
-        else glDeleteTextures(1, &t.id);
+        deleteStorage(t);
         throw;
     }
-    (desc.samples > 1 ? ownedRenderbuffers_ : ownedTextures_).insert(t.id);
     return textures_.add(std::move(t));
 }
 
@@ -179,7 +176,6 @@ NativeId GlesDriver::createBuffer(const BufferDesc& desc, std::span<const std::b
         glDeleteBuffers(1, &b.id);
         throw;
     }
-    ownedBuffers_.insert(b.id);
     return buffers_.add(std::move(b));
 }
 
@@ -223,25 +219,22 @@ void GlesDriver::notePipeline(const PipelineDesc& desc, ResolvedPipeline& resolv
     if (!info.exact) log::debug("GLES pipeline ", quotedName(desc.name), ": inexact emulation: ", info.note);
 }
 
+void GlesDriver::deleteStorage(const GlTexture& t) {
+    if (t.desc.samples > 1) glDeleteRenderbuffers(1, &t.id);
+    else glDeleteTextures(1, &t.id);
+}
+
 void GlesDriver::destroyTexture(NativeId h) {
-    GlTexture& t = textures_[h];
     makeCurrent();
-    framebuffers_.forget(attachment(t));
-    if (t.desc.samples > 1) {
-        glDeleteRenderbuffers(1, &t.id);
-        ownedRenderbuffers_.erase(t.id);
-    } else {
-        glDeleteTextures(1, &t.id);
-        ownedTextures_.erase(t.id);
-    }
+    framebuffers_.forget(attachment(textures_[h]));
+    deleteStorage(textures_[h]);
     textures_.remove(h);
 }
 
+// Buffers, programs and queries: their GL objects go with their slots.
 void GlesDriver::destroyBuffer(NativeId h) {
-    GlBuffer& b = buffers_[h];
     makeCurrent();
-    glDeleteBuffers(1, &b.id);
-    ownedBuffers_.erase(b.id);
+    glDeleteBuffers(1, &buffers_[h].id);
     buffers_.remove(h);
 }
 
@@ -251,13 +244,9 @@ void GlesDriver::destroyProgram(NativeId h) {
 }
 
 void GlesDriver::destroyQuery(NativeId h) {
-    const GlQuery q = queries_[h];
+    makeCurrent();
+    if (queries_[h].id) glDeleteQueries(1, &queries_[h].id);
     queries_.remove(h);
-    if (q.id) {
-        makeCurrent();
-        glDeleteQueries(1, &q.id);
-        queryObjects_.erase(q.id);
-    }
 }
 
 bool GlesDriver::anySamplesPassed(NativeId h) {
