@@ -1,9 +1,12 @@
 # SPDX-License-Identifier: MIT
-# ssam_backend_test(<name> BACKEND gl|vk SOURCES <file>... LIBS <target>...
+# ssam_backend_test(<name> BACKEND gl|gles|vk SOURCES <file>... LIBS <target>...
 #                   [TEST_FILTER <gtest filter>] [ALSO_LABELS <label>...])
 # One GoogleTest binary in build/bin for a GPU backend, each TEST one ctest test, as ssam_test
 # but with the backend's probing main and the skip code:
 #   gl  tests/unit/gl/gl_test_main.cpp: without a headless EGL context it says why and exits 77.
+#   gles tests/conformance/gles/gles_test_main.cpp: as gl, for a headless EGL OpenGL ES 3.0 context
+#       with what the GLES driver needs. Its tests are labelled gl as well as gles: the GL
+#       label's runs (CI's sanitizer pass) cover both GL drivers.
 #   vk  tests/unit/vk/vk_test_main.cpp: without a Vulkan 1.3 device and the validation layer it
 #       says why and exits 77, or 1 with CI=true (CI cannot pass without running them).
 # Both mains point Mesa's shader cache into the build tree. ctest reports exit 77 as skipped
@@ -19,11 +22,15 @@ function(ssam_backend_test name)
   if(T_BACKEND STREQUAL "gl")
     set(main ${PROJECT_SOURCE_DIR}/tests/unit/gl/gl_test_main.cpp)
     set(backend_lib engine_render_gl)
+  elseif(T_BACKEND STREQUAL "gles")
+    set(main ${PROJECT_SOURCE_DIR}/tests/conformance/gles/gles_test_main.cpp)
+    set(backend_lib engine_render_gles)
+    list(APPEND T_ALSO_LABELS gl)
   elseif(T_BACKEND STREQUAL "vk")
     set(main ${PROJECT_SOURCE_DIR}/tests/unit/vk/vk_test_main.cpp)
     set(backend_lib engine_render_vk)
   else()
-    message(FATAL_ERROR "ssam_backend_test(${name}): BACKEND must be gl or vk, not '${T_BACKEND}'")
+    message(FATAL_ERROR "ssam_backend_test(${name}): BACKEND must be gl, gles or vk, not '${T_BACKEND}'")
   endif()
   if(NOT T_TEST_FILTER)
     set(T_TEST_FILTER "*")

@@ -130,6 +130,9 @@ render::AlphaTest alphaToCoverage() {
 // Alpha-to-coverage: white with alpha a over black covers round(a * samples) samples, so the
 // resolved value is that count / samples (RGB) and count * a / samples (alpha).
 TEST_P(AlphaToCoverageConformance, CoveredSampleCount) {
+    if (gfx().name() == "gles")
+        GTEST_SKIP() << "OpenGL ES 3.0 has no gl_SampleMask: the GLES driver's alpha-to-coverage is "
+                        "GL_SAMPLE_ALPHA_TO_COVERAGE, whose pattern is the implementation's (reported inexact)";
     // No a * samples lands on a .5 tie for 2, 4 or 8 samples (rounding of ties is the
     // implementation's choice).
     const float alphas[] = {0.0f, 0.05f, 0.1f, 0.2f, 0.3f, 0.45f, 0.55f, 0.7f, 0.9f, 1.0f};
@@ -153,6 +156,9 @@ TEST_P(AlphaToCoverageConformance, CoveredSampleCount) {
 
 // Same on an RGBA8 target (as foliage uses it), within 1 LSB.
 TEST_P(AlphaToCoverageConformance, CoveredSampleCountRgba8) {
+    if (gfx().name() == "gles")
+        GTEST_SKIP() << "OpenGL ES 3.0 has no gl_SampleMask: the GLES driver's alpha-to-coverage is "
+                        "GL_SAMPLE_ALPHA_TO_COVERAGE, whose pattern is the implementation's (reported inexact)";
     for (int samples : {2, 4, 8}) {
         const render::TextureHandle target = renderTarget(kSize, kSize, Format::RGBA8_UNORM, samples);
         const render::BufferHandle quad = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize));

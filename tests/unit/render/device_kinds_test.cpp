@@ -25,7 +25,7 @@ TEST(DeviceKinds, EveryKindIsNamedOnceAndParsedBack) {
         EXPECT_EQ(std::string(render::deviceKindInfo(k.kind).name), k.name);
         EXPECT_NE(std::string(k.summary), "");
     }
-    EXPECT_EQ(render::deviceKindNames(), "soft|gl|vk");
+    EXPECT_EQ(render::deviceKindNames(), "soft|gl|gles|vk");
     EXPECT_FALSE(render::parseDeviceKind("auto"));
     EXPECT_FALSE(render::parseDeviceKind("GL"));
 }

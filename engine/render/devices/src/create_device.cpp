@@ -25,6 +25,11 @@ std::unique_ptr<Device> makeGl(const DeviceOptions& o) {
     return gl::createGlBackend(o.gl);
 }
 
+std::unique_ptr<Device> makeGles(const DeviceOptions& o) {
+    setMesaThreads(o);
+    return gles::createGlesBackend(o.gles);
+}
+
 std::unique_ptr<Device> makeVulkan(const DeviceOptions& o) {
     setMesaThreads(o);
     return vk::createVulkanBackend(o.vulkan);
@@ -37,6 +42,11 @@ std::string glAvailable(const DeviceOptions& o) {
     return gl::HeadlessEglContext::unavailableReason(o.gl.headless);
 }
 
+std::string glesAvailable(const DeviceOptions& o) {
+    if (o.gles.context) return {};  // the caller brings the context
+    return gles::glesUnavailableReason(o.gles);
+}
+
 std::string vulkanAvailable(const DeviceOptions& o) { return vk::vulkanUnavailableReason(o.vulkan); }
 
 constexpr std::array kKinds{
@@ -44,6 +54,9 @@ constexpr std::array kKinds{
                    softAvailable},
     DeviceKindInfo{DeviceKind::Gl, "gl", "OpenGL 4.5 core through EGL or the window's context (Mesa llvmpipe here)",
                    makeGl, glAvailable},
+    DeviceKindInfo{DeviceKind::Gles, "gles",
+                   "OpenGL ES 3.0 (WebGL2's API) through an EGL ES context (Mesa llvmpipe here)", makeGles,
+                   glesAvailable},
     DeviceKindInfo{DeviceKind::Vulkan, "vk", "Vulkan 1.3, headless or presenting to a window (Mesa lavapipe here)",
                    makeVulkan, vulkanAvailable},
 };

@@ -66,25 +66,31 @@ std::string tryDisplay(const Candidate& c, const HeadlessEglOptions& options, He
     auto fail = [&](const std::string& why) { return c.name + ": " + why; };
     const char* extensions = eglQueryString(c.display, EGL_EXTENSIONS);
     if (!hasExtension(extensions, "EGL_KHR_surfaceless_context")) return fail("no EGL_KHR_surfaceless_context");
-    if (!eglBindAPI(EGL_OPENGL_API)) return fail("eglBindAPI(EGL_OPENGL_API) failed");
+    const EGLenum api = options.es ? EGL_OPENGL_ES_API : EGL_OPENGL_API;
+    if (!eglBindAPI(api))
+        return fail(options.es ? "eglBindAPI(EGL_OPENGL_ES_API) failed" : "eglBindAPI(EGL_OPENGL_API) failed");
 
     EGLConfig config = EGL_NO_CONFIG_KHR;
     if (!hasExtension(extensions, "EGL_KHR_no_config_context") &&
         !hasExtension(extensions, "EGL_MESA_configless_context")) {
-        const EGLint wanted[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+        const EGLint wanted[] = {EGL_RENDERABLE_TYPE, options.es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_NONE};
         EGLint count = 0;
         if (!eglChooseConfig(c.display, wanted, &config, 1, &count) || count == 0)
-            return fail("no configless contexts and no OpenGL config");
+            return fail(options.es ? "no configless contexts and no OpenGL ES 3 config"
+                                   : "no configless contexts and no OpenGL config");
     }
-    std::vector<EGLint> attributes = {EGL_CONTEXT_MAJOR_VERSION,       options.major,
-                                      EGL_CONTEXT_MINOR_VERSION,       options.minor,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT};
+    std::vector<EGLint> attributes = {EGL_CONTEXT_MAJOR_VERSION, options.major, EGL_CONTEXT_MINOR_VERSION,
+                                      options.minor};
+    // ES has no profiles.
+    if (!options.es)
+        attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT});
     if (options.debug) attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE});
     attributes.push_back(EGL_NONE);
     const EGLContext context = eglCreateContext(c.display, config, EGL_NO_CONTEXT, attributes.data());
     if (context == EGL_NO_CONTEXT)
-        return fail("no OpenGL " + std::to_string(options.major) + "." + std::to_string(options.minor) +
-                    " core context (" + hex(eglGetError()) + ")");
+        return fail(std::string(options.es ? "no OpenGL ES " : "no OpenGL ") + std::to_string(options.major) + "." +
+                    std::to_string(options.minor) + (options.es ? " context (" : " core context (") +
+                    hex(eglGetError()) + ")");
     if (!eglMakeCurrent(c.display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         const EGLint error = eglGetError();
         eglDestroyContext(c.display, context);

@@ -12,7 +12,7 @@ GLuint GlSamplerCache::get(const SamplerState& s) {
     const std::size_t index = std::size_t(s.filter) * 9 + std::size_t(s.addressU) * 3 + std::size_t(s.addressV);
     GLuint& id = samplers_[index];
     if (!id) {
-        glCreateSamplers(1, &id);
+        glGenSamplers(1, &id);  // GL 3.3 and ES 3.0 alike (the GLES driver shares this cache)
         // Bilinear reads level 0 only: a non-mipmapped minification filter never leaves the base level.
         const GLenum minFilter = s.filter == Filter::Nearest    ? GL_NEAREST
                                  : s.filter == Filter::Bilinear ? GL_LINEAR
@@ -38,6 +38,12 @@ GLuint GlFramebufferCache::get(const std::vector<GLuint>& colors, GLuint depth, 
     key.push_back(depth);
     auto it = framebuffers_.find(key);
     if (it != framebuffers_.end()) return it->second;
+    const GLuint fbo = make_(colors, depth, what);
+    framebuffers_.emplace(std::move(key), fbo);
+    return fbo;
+}
+
+GLuint makeDirectStateFramebuffer(const std::vector<GLuint>& colors, GLuint depth, const std::string& what) {
     GLuint fbo = 0;
     glCreateFramebuffers(1, &fbo);
     std::vector<GLenum> drawBuffers;
@@ -55,7 +61,6 @@ GLuint GlFramebufferCache::get(const std::vector<GLuint>& colors, GLuint depth, 
         glDeleteFramebuffers(1, &fbo);
         throw;
     }
-    framebuffers_.emplace(std::move(key), fbo);
     return fbo;
 }
 

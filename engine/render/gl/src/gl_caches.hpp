@@ -23,8 +23,14 @@ private:
     std::array<GLuint, 27> samplers_{};  // 3 filters x 3 U modes x 3 V modes
 };
 
+// Makes a complete framebuffer of these attachments (throws engine::Error naming `what` when
+// GL finds it incomplete). GL 4.5's by direct state access; the GLES driver's binds to attach.
+using MakeFramebuffer = GLuint (*)(const std::vector<GLuint>& colors, GLuint depth, const std::string& what);
+GLuint makeDirectStateFramebuffer(const std::vector<GLuint>& colors, GLuint depth, const std::string& what);
+
 class GlFramebufferCache {
 public:
+    explicit GlFramebufferCache(MakeFramebuffer make = makeDirectStateFramebuffer) : make_(make) {}
     // The framebuffer with these colour attachments (in order) and depth attachment (0: none);
     // throws engine::Error naming `what` when GL finds it incomplete.
     GLuint get(const std::vector<GLuint>& colors, GLuint depth, const std::string& what);
@@ -33,6 +39,7 @@ public:
     void release();
 
 private:
+    MakeFramebuffer make_;
     std::map<std::vector<GLuint>, GLuint> framebuffers_;  // colours, 0, depth -> framebuffer
 };
 

@@ -11,6 +11,7 @@
 #include "gl_backend_impl.hpp"
 #include "gl_check.hpp"
 #include "gl_enums.hpp"
+#include "gl_fixed_function.hpp"
 #include "gl_shaders.hpp"
 
 namespace engine::render::gl {
@@ -64,23 +65,7 @@ void GlDriverImpl::draw(const DriverDraw& draw) {
     glProgramUniform1i(p, s.a2cActual, passActualSamples_);
 
     // Depth, culling, scissor.
-    if (state.depthTest) {
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(glCompare(state.depthFunc));
-    } else {
-        glDisable(GL_DEPTH_TEST);
-    }
-    // Full-screen programs draw a triangle that the soft backend never culls.
-    if (!fullscreen && desc.raster.cull != CullMode::None) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(desc.raster.cull == CullMode::Back ? GL_BACK : GL_FRONT);
-    } else {
-        glDisable(GL_CULL_FACE);
-    }
-    // With an upper-left origin GL still decides facing on NDC winding (ARB_clip_control),
-    // so counter-clockwise as displayed is GL_CCW.
-    glFrontFace(desc.raster.frontFace == Winding::CounterClockwise ? GL_CCW : GL_CW);
-    glEnable(GL_SCISSOR_TEST);
+    applyDepthAndFaces(desc, state, fullscreen);
     const Rect& scissor = state.scissor;
     if (scissor.empty()) return;
     glScissor(scissor.x, scissor.y, scissor.width, scissor.height);  // upper-left origin: y from the top

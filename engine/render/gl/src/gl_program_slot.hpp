@@ -2,6 +2,7 @@
 #pragma once
 // A ProgramDesc compiled for GL: the program object, where its layout's uniforms live, and how
 // a draw's parameters (DrawParams, laid out as ProgramDesc::gl says) reach them.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,14 +36,34 @@ struct GlslTarget {
 
 // Compiles a program's GLSL and locates its uniforms.
 std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc, GlslTarget target);
+// The same with the GL 4.5 stages turned into the GLSL a context compiles by `translate` (the
+// GLES driver's `#version 300 es` dialect).
+using GlslTranslation = std::function<std::string(std::string source)>;
+std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc,
+                                               const GlslTranslation& translate);
 
 // One of the backend's own full-screen programs (resolves, the framebuffer check), which have
 // no layout: their uniforms are looked up by name.
 ProgramSlot compileInternal(const char* name, const std::string& fragment, GlslTarget target);
 
+// How uniforms reach a program and textures their units: GL 4.5 names the program and the unit
+// (direct state access); OpenGL ES 3.0 has neither, so its calls set the program in use
+// (glUseProgram before setParams) and the active texture unit.
+struct ParamCalls {
+    void (*uniform1i)(GLuint program, GLint location, GLint value);
+    void (*uniform1f)(GLuint program, GLint location, GLfloat value);
+    void (*uniform2fv)(GLuint program, GLint location, const GLfloat* value);
+    void (*uniform3fv)(GLuint program, GLint location, const GLfloat* value);
+    void (*uniform4fv)(GLuint program, GLint location, const GLfloat* value);
+    void (*uniformMatrix4fv)(GLuint program, GLint location, const GLfloat* value);
+    void (*bindTexture)(GLuint unit, GLuint texture);
+};
+extern const ParamCalls kDirectStateParamCalls;
+
 // The draw's parameters as the program's layout lays them out: uniforms, and textures bound
 // to their units with samplers from `samplers`.
 void setParams(const ProgramSlot& slot, const DrawParams& params, const GlTexturePool& textures,
-               const NativeTextures& natives, GlSamplerCache& samplers);
+               const NativeTextures& natives, GlSamplerCache& samplers,
+               const ParamCalls& calls = kDirectStateParamCalls);
 
 }  // namespace engine::render::gl

@@ -13,6 +13,7 @@
 #include "gl_check.hpp"
 #include "gl_enums.hpp"
 #include "gl_shaders.hpp"
+#include "gl_upload.hpp"
 #include "engine/render/texel_codec.hpp"
 
 namespace engine::render::gl {
@@ -197,38 +198,14 @@ int GlDriverImpl::maxSamplesFor(GLenum internal) {
     auto it = maxSamplesByFormat_.find(internal);
     if (it != maxSamplesByFormat_.end()) return it->second;
     makeCurrent();
-    GLint count = 0;
-    glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internal, GL_NUM_SAMPLE_COUNTS, 1, &count);
-    std::vector<GLint> counts(std::size_t(std::max(count, 0)));
-    if (count > 0) glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internal, GL_SAMPLES, count, counts.data());
-    int best = 1;
-    for (GLint c : counts) best = std::max(best, int(c));
-    return maxSamplesByFormat_[internal] = best;
+    return maxSamplesByFormat_[internal] = maxSamplesOf(GL_TEXTURE_2D_MULTISAMPLE, internal);
 }
 
 void GlDriverImpl::upload(GlTexture& t, const TextureData& data) {
-    const TextureDesc& desc = t.desc;
-    const GlFormat f = glFormat(desc.format);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    std::vector<std::byte> previous;
-    int previousWidth = 0, previousHeight = 0;
-    for (int level = 0; level < desc.mipLevels; ++level) {
-        const int w = std::max(1, desc.width >> level), h = std::max(1, desc.height >> level);
-        const std::size_t pixels = std::size_t(w) * h;
-        std::vector<std::byte> stored;
-        if (std::size_t(level) < data.levels.size()) {
-            stored = toStored(desc.format, data.levels[level], pixels);
-        } else {
-            stored = generateMip(desc.format, previous, previousWidth, previousHeight, w, h);
-        }
-        glTextureSubImage2D(t.id, level, 0, 0, w, h, f.pixelFormat, f.storedType, stored.data());
-        previous = std::move(stored);
-        previousWidth = w, previousHeight = h;
-    }
+    const GlFormat f = glFormat(t.desc.format);
+    uploadLevels(t.desc, data, [&](int level, int w, int h, const std::byte* stored) {
+        glTextureSubImage2D(t.id, level, 0, 0, w, h, f.pixelFormat, f.storedType, stored);
+    });
 }
 
 void GlDriverImpl::clearTexture(const GlTexture& t, const glm::vec4& value) {

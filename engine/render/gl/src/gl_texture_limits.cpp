@@ -3,7 +3,9 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "engine/core/error.hpp"
 
@@ -42,14 +44,29 @@ MemoryProbe memoryProbe(const std::string& renderer) {
 
 }  // namespace
 
-GlTextureLimits queryGlTextureLimits(const std::string& renderer) {
+GlTextureLimits queryGlTextureLimits(const std::string& renderer, bool es) {
     GlTextureLimits limits;
     limits.renderer = renderer;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &limits.maxTextureSize);
-    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &limits.maxFramebufferWidth);
-    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &limits.maxFramebufferHeight);
+    if (es) {
+        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &limits.maxFramebufferWidth);
+        limits.maxFramebufferHeight = limits.maxFramebufferWidth;
+    } else {
+        glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &limits.maxFramebufferWidth);
+        glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &limits.maxFramebufferHeight);
+    }
     limits.memory = memoryProbe(renderer);
     return limits;
+}
+
+int maxSamplesOf(unsigned int target, unsigned int internal) {
+    GLint count = 0;
+    glGetInternalformativ(target, internal, GL_NUM_SAMPLE_COUNTS, 1, &count);
+    std::vector<GLint> counts(std::size_t(std::max(count, 0)));
+    if (count > 0) glGetInternalformativ(target, internal, GL_SAMPLES, count, counts.data());
+    int best = 1;
+    for (GLint c : counts) best = std::max(best, int(c));
+    return best;
 }
 
 void checkGlTextureFits(const TextureDesc& desc, const std::string& what, const GlTextureLimits& limits) {

@@ -22,8 +22,13 @@ struct GlTextureLimits {
     MemoryProbe memory;
 };
 
-// Needs the backend's context current.
-GlTextureLimits queryGlTextureLimits(const std::string& renderer);
+// Needs the backend's context current. `es`: an OpenGL ES 3.0 context, which has no
+// GL_MAX_FRAMEBUFFER_WIDTH (ES 3.1): its render targets are bounded by GL_MAX_RENDERBUFFER_SIZE.
+GlTextureLimits queryGlTextureLimits(const std::string& renderer, bool es = false);
+
+// The most samples `internal` offers for `target` (GL_TEXTURE_2D_MULTISAMPLE on GL 4.5,
+// GL_RENDERBUFFER on ES 3.0), 1 when none; needs the context current.
+int maxSamplesOf(unsigned int target, unsigned int internal);
 
 // Throws engine::Error naming `what`, the size and the limit when `desc` exceeds one of them.
 void checkGlTextureFits(const TextureDesc& desc, const std::string& what, const GlTextureLimits& limits);

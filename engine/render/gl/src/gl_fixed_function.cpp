@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#include "gl_fixed_function.hpp"
+
+#include <epoxy/gl.h>
+
+#include "gl_enums.hpp"
+
+namespace engine::render::gl {
+
+void applyDepthAndFaces(const PipelineDesc& desc, const ResolvedDrawState& state, bool fullscreen) {
+    if (state.depthTest) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(glCompare(state.depthFunc));
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
+    if (!fullscreen && desc.raster.cull != CullMode::None) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(desc.raster.cull == CullMode::Back ? GL_BACK : GL_FRONT);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    // With an upper-left origin GL still decides facing on NDC winding (ARB_clip_control,
+    // EXT_clip_control), so counter-clockwise as displayed is GL_CCW.
+    glFrontFace(desc.raster.frontFace == Winding::CounterClockwise ? GL_CCW : GL_CW);
+    glEnable(GL_SCISSOR_TEST);
+}
+
+}  // namespace engine::render::gl

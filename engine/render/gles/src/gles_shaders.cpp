@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#include "gles_shaders.hpp"
+
+#include <regex>
+#include <set>
+
+#include <epoxy/gl.h>
+
+#include "engine/core/error.hpp"
+#include "engine_render_gles_glsl.hpp"  // generated from glsl/
+
+namespace engine::render::gles {
+namespace {
+
+// ES 3.00 §4.5.4 gives float no default precision in fragment shaders; highp is what the GL
+// driver computes in, and what WebGL2 guarantees in both stages.
+constexpr const char* kEsHead =
+    "#version 300 es\n"
+    "precision highp float;\n"
+    "precision highp int;\n"
+    "precision highp sampler2D;\n"
+    // `precise` (ES 3.20 §4.7) has no ES 3.00 equivalent: contraction stays the compiler's choice.
+    "#define precise\n";
+
+void replaceAll(std::string& s, const std::string& from, const std::string& to) {
+    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+        s.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+std::string glslEs(std::string source, const std::string& program) {
+    const std::string line = source.substr(0, source.find('\n') + 1);
+    if (line != "#version 450 core\n")
+        throw Error("program '" + program + "': the GLES driver translates GLSL 4.50 stages, this one begins " + line);
+    source.replace(0, line.size(), kEsHead);
+    // Samplers' units: set by bindSamplerUnits after linking (ES 3.00 has no binding qualifier).
+    source = std::regex_replace(source, std::regex(R"(layout\s*\(\s*binding\s*=\s*\d+\s*\)\s*)"), "");
+    // Mip levels: the sampler's texture's, set per draw.
+    const std::regex queryLevels(R"(textureQueryLevels\s*\(\s*(\w+)\s*\))");
+    std::set<std::string> samplers;
+    for (auto it = std::sregex_iterator(source.begin(), source.end(), queryLevels); it != std::sregex_iterator(); ++it)
+        samplers.insert((*it)[1].str());
+    if (!samplers.empty()) {
+        source = std::regex_replace(source, queryLevels, "esLevels_$1");
+        std::string declarations;
+        for (const std::string& sampler : samplers)
+            declarations += "uniform int " + levelsUniform(sampler.c_str()) + ";\n";
+        source.insert(source.find("#define precise\n") + 16, declarations);
+    }
+    // The shared tail's sample mask (finish()): ES 3.00 has no gl_SampleMask.
+    if (source.find("gl_SampleMask") != std::string::npos) {
+        replaceAll(source, "gl_SampleMask", "esUnusedSampleMask");
+        const std::size_t after = source.find("#define precise\n") + 16;
+        source.insert(after, "int esUnusedSampleMask[1];\n");
+    }
+    return source;
+}
+
+std::string levelsUniform(const char* sampler) { return std::string("esLevels_") + sampler; }
+
+void bindSamplerUnits(unsigned int program, const GlslProgram& gl) {
+    glUseProgram(program);
+    for (const TextureField& t : gl.textures) {
+        const GLint location = glGetUniformLocation(program, t.name);
+        if (location >= 0) glUniform1i(location, t.unit);
+    }
+}
+
+std::string depthToColorFragmentSource() { return glsl::kDepthToColorFragment; }
+
+}  // namespace engine::render::gles
