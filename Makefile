@@ -12,7 +12,7 @@ BUILD_DIR := build
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 # Debian 12 packages: compilers and tools, then the libraries found by find_package,
-# then Mesa (EGL + llvmpipe) and Xvfb for the GL backend's headless and windowed tests, Vulkan
+# then Mesa (EGL, the GLES dispatch the gles driver opens, llvmpipe) and Xvfb for the GL backends's headless and windowed tests, Vulkan
 # (loader, lavapipe, the validation layers, shaderc) for the Vulkan backend and its tests,
 # then the frame-capture tools engine teams use, whose captures of SSAM's frames the tests replay
 # (tests/capture/tools: apitrace, with apitrace-tracers' EGL wrapper, for GL; gfxreconstruct 0.9.18,
@@ -22,7 +22,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
             libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libpng-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
             libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev \
-            libepoxy-dev libstb-dev libegl-dev libgl1-mesa-dri libegl1-mesa xvfb xauth \
+            libepoxy-dev libstb-dev libegl-dev libgles2 libgl1-mesa-dri libegl1-mesa xvfb xauth \
             libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc libshaderc-dev spirv-tools \
             clang-format-14 \
             apitrace apitrace-tracers gfxreconstruct \
