@@ -11,8 +11,6 @@
 namespace {
 
 using namespace engine;
-using living::testing::addRectangle;
-using living::testing::place;
 
 constexpr int kW = 96, kH = 64;
 

@@ -6,15 +6,12 @@
 
 #include "engine/core/ecs/scheduler.hpp"
 #include "engine/core/error.hpp"
-#include "engine/render/soft/soft_backend.hpp"
 #include "living_frame.hpp"
 #include "particles/particle_feature.hpp"
 
 namespace {
 
 using namespace engine;
-using living::testing::addRectangle;
-using living::testing::place;
 
 constexpr int kW = 64, kH = 48;
 

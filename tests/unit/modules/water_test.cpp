@@ -14,8 +14,6 @@
 namespace {
 
 using namespace engine;
-using living::testing::addRectangle;
-using living::testing::place;
 using scene::SurfaceClass;
 
 constexpr int kW = 64, kH = 48;
