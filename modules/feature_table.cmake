@@ -12,12 +12,7 @@
 #   std::unique_ptr<engine::scene::Feature> <name>::makeFeature(const engine::scene::FeatureContext&);
 # The order of the lines is the frame order of the features' passes.
 function(ssam_module name)
-  cmake_parse_arguments(M "" "FLAG;DEFAULT;HELP" "" ${ARGN})
-  foreach(required FLAG DEFAULT HELP)
-    if(NOT DEFINED M_${required})
-      message(FATAL_ERROR "ssam_module(${name}): ${required} is missing")
-    endif()
-  endforeach()
+  ssam_parse_required("ssam_module(${name})" M "FLAG;DEFAULT;HELP" ${ARGN})
   string(TOUPPER ${name} upper)
   option(SSAM_MODULE_${upper} "build the living-scene module ${name}" ON)
   set(built OFF)

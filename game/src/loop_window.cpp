@@ -27,17 +27,28 @@ TextureHandle uploadFrame(engine::render::Device& presenter, const engine::rende
         {"racer soft frame", r.width, r.height, r.format, 1, 1, engine::render::UsageSampled}, &data);
 }
 
-class GlLoopWindow final : public LoopWindow {
+// GLFW's GL context and the Vulkan window answer the loop's window questions alike; only
+// show() differs.
+template <typename Window>
+class GlfwLoopWindow : public LoopWindow {
 public:
-    GlLoopWindow(engine::render::gl::GlfwWindowContext& window, engine::render::Device& presenter,
-                 engine::render::Backend& renderer)
-        : window_(window), presenter_(presenter), renderer_(renderer) {}
+    explicit GlfwLoopWindow(Window& window) : window_(window) {}
     GLFWwindow* window() const override { return window_.window(); }
     glm::ivec2 framebufferSize() const override { return window_.framebufferSize(); }
     void pollEvents() override { window_.pollEvents(); }
     bool shouldClose() const override { return window_.shouldClose(); }
     void requestClose() override { window_.requestClose(); }
     void setSize(int width, int height) override { window_.setSize(width, height); }
+
+private:
+    Window& window_;
+};
+
+class GlLoopWindow final : public GlfwLoopWindow<engine::render::gl::GlfwWindowContext> {
+public:
+    GlLoopWindow(engine::render::gl::GlfwWindowContext& window, engine::render::Device& presenter,
+                 engine::render::Backend& renderer)
+        : GlfwLoopWindow(window), presenter_(presenter), renderer_(renderer) {}
     bool show(TextureHandle color) override {
         if (static_cast<engine::render::Backend*>(&presenter_) == &renderer_) return presenter_.present(color);
         const TextureHandle shown = uploadFrame(presenter_, renderer_.readback(color));
@@ -48,25 +59,17 @@ public:
     }
 
 private:
-    engine::render::gl::GlfwWindowContext& window_;
     engine::render::Device& presenter_;
     engine::render::Backend& renderer_;
 };
 
-class VkLoopWindow final : public LoopWindow {
+class VkLoopWindow final : public GlfwLoopWindow<engine::render::vk::VulkanWindow> {
 public:
     VkLoopWindow(engine::render::vk::VulkanWindow& window, engine::render::Device& backend)
-        : window_(window), backend_(backend) {}
-    GLFWwindow* window() const override { return window_.window(); }
-    glm::ivec2 framebufferSize() const override { return window_.framebufferSize(); }
-    void pollEvents() override { window_.pollEvents(); }
-    bool shouldClose() const override { return window_.shouldClose(); }
-    void requestClose() override { window_.requestClose(); }
-    void setSize(int width, int height) override { window_.setSize(width, height); }
+        : GlfwLoopWindow(window), backend_(backend) {}
     bool show(TextureHandle color) override { return backend_.present(color); }
 
 private:
-    engine::render::vk::VulkanWindow& window_;
     engine::render::Device& backend_;
 };
 

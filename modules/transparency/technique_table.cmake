@@ -10,12 +10,7 @@
 #   std::unique_ptr<Technique> transparency::detail::make<Enumerator>Technique(Backend&, const TechniqueOptions&);
 # The order of the lines is the order of allTechniques() (tables, racer's keys 1-8).
 function(ssam_technique name)
-  cmake_parse_arguments(T "" "KIND;SOURCE;ABOUT" "" ${ARGN})
-  foreach(required KIND SOURCE ABOUT)
-    if(NOT DEFINED T_${required})
-      message(FATAL_ERROR "ssam_technique(${name}): ${required} is missing")
-    endif()
-  endforeach()
+  ssam_parse_required("ssam_technique(${name})" T "KIND;SOURCE;ABOUT" ${ARGN})
   set_property(DIRECTORY APPEND PROPERTY SSAM_TECHNIQUES ${name})
   set_property(DIRECTORY PROPERTY SSAM_TECHNIQUE_${name}_KIND ${T_KIND})
   set_property(DIRECTORY PROPERTY SSAM_TECHNIQUE_${name}_SOURCE ${T_SOURCE})

@@ -63,14 +63,19 @@ SsamPasses addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
             ssam.colorPass(*plan, view, toTextureHandle(r.get(d.depth)), targetsOf(r, {}, {}, d.foliage, d.depthCopy));
         });
 
+    // The composite and the depth restore read the mask pass's targets.
+    auto readMasks = [&maskPass](FrameGraph::Builder& b) {
+        b.read(maskPass.mask);
+        if (maskPass.maskAdd.isValid()) b.read(maskPass.maskAdd);
+    };
+
     struct CompositeData {
         FrameGraphTexture color;
     };
     const CompositeData& compositePass = graph.addPass<CompositeData>(
         "ssam composite",
         [&](FrameGraph::Builder& b, CompositeData& d) {
-            b.read(maskPass.mask);
-            if (maskPass.maskAdd.isValid()) b.read(maskPass.maskAdd);
+            readMasks(b);
             b.read(colorPass.foliage);
             d.color = b.write(b.read(color));  // blended in place onto the opaque colour
             if (empty) b.markEmpty();
@@ -89,8 +94,7 @@ SsamPasses addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
         const DepthData& depthPass = graph.addPass<DepthData>(
             "ssam depth restore",
             [&](FrameGraph::Builder& b, DepthData& d) {
-                b.read(maskPass.mask);
-                if (maskPass.maskAdd.isValid()) b.read(maskPass.maskAdd);
+                readMasks(b);
                 b.read(compositePass.color);  // after the composite, as the other hosts' restore
                 d.depth = b.write(b.read(colorPass.depth));
                 if (empty) b.markEmpty();

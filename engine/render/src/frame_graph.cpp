@@ -11,10 +11,7 @@
 
 namespace engine::render {
 
-using frame_graph_detail::kNone;
-using frame_graph_detail::PassNode;
-using frame_graph_detail::VersionNode;
-using frame_graph_detail::VirtualResource;
+using namespace frame_graph_detail;  // the graph's nodes (frame_graph/graph_nodes.hpp)
 
 namespace {
 

@@ -12,8 +12,7 @@
 
 namespace engine::render {
 
-using frame_graph_detail::PassNode;
-using frame_graph_detail::VirtualResource;
+using namespace frame_graph_detail;  // the graph's nodes (frame_graph/graph_nodes.hpp)
 
 void FrameGraph::execute(const TextureAllocator& allocator) {
     // Refused rather than repeated: passes may hold references to data of the frame the

@@ -6,29 +6,23 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/core/field_checks.hpp"
 #include "engine/scene/transform.hpp"
 
 namespace particles {
 
 void validate(const ParticleOptions& o) {
-    auto finite = [](float v, const char* field) {
-        if (!std::isfinite(v)) throw engine::Error(std::string("ParticleOptions.") + field + " is not finite");
-    };
-    auto positive = [&](float v, const char* field) {
-        finite(v, field);
-        if (!(v > 0.0f))
-            throw engine::Error(std::string("ParticleOptions.") + field + " = " + std::to_string(v) + " must be > 0");
-    };
+    const engine::FieldChecks check{"ParticleOptions"};
     if (o.maxParticles > kMaxParticles)
         throw engine::Error("ParticleOptions.maxParticles = " + std::to_string(o.maxParticles) +
                             " exceeds the limit of 1000000 particles");
-    positive(o.lifetime, "lifetime");
-    positive(o.startSize, "startSize");
-    positive(o.endSize, "endSize");
-    positive(o.softness, "softness");
-    positive(o.thinning, "thinning");
-    finite(o.drag, "drag");
-    finite(o.gravity, "gravity");
+    check.positive(o.lifetime, "lifetime");
+    check.positive(o.startSize, "startSize");
+    check.positive(o.endSize, "endSize");
+    check.positive(o.softness, "softness");
+    check.positive(o.thinning, "thinning");
+    check.finite(o.drag, "drag");
+    check.finite(o.gravity, "gravity");
     if (o.drag < 0.0f) throw engine::Error("ParticleOptions.drag must be >= 0");
 }
 

@@ -41,11 +41,8 @@ class BlendSortedTechnique final : public SinglePassTechnique {
 public:
     BlendSortedTechnique(Backend& backend, const TechniqueOptions& options)
         : SinglePassTechnique({TechniqueKind::BlendSorted}), backend_(backend), depthFunc_(options.depthFunc) {
-        PipelineDesc p = foliagePipeline("foliage blend (sorted)");
-        p.depth = DepthState::testOnly(depthFunc_);
-        p.blend[0] = BlendState::alphaOver();
-        p.blend[0].writeMask = WriteRGB;
-        pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
+        pipeline_ = Owned<PipelineHandle>(
+            backend_, backend_.createPipeline(blendOverPipeline("foliage blend (sorted)", depthFunc_)));
     }
 
     void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,

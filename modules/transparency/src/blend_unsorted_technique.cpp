@@ -20,11 +20,8 @@ class BlendUnsortedTechnique final : public SinglePassTechnique {
 public:
     BlendUnsortedTechnique(Backend& backend, const TechniqueOptions& options)
         : SinglePassTechnique({TechniqueKind::BlendUnsorted}), backend_(backend) {
-        PipelineDesc p = foliagePipeline("foliage blend (unsorted)");
-        p.depth = DepthState::testOnly(options.depthFunc);
-        p.blend[0] = BlendState::alphaOver();
-        p.blend[0].writeMask = WriteRGB;
-        pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
+        pipeline_ = Owned<PipelineHandle>(
+            backend_, backend_.createPipeline(blendOverPipeline("foliage blend (unsorted)", options.depthFunc)));
     }
 
     void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,

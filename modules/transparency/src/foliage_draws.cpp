@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "foliage_draws.hpp"
 
+#include "engine/render/pass_scope.hpp"
 #include "engine/render/screen_bounds.hpp"
 
 namespace transparency::detail {
@@ -16,6 +17,13 @@ std::vector<const FoliageDraw*> visibleDraws(const FoliageFrame& frame, int widt
         visible.push_back(&draw);
     }
     return visible;
+}
+
+Rect screenRegion(std::span<const FoliageDraw* const> visible, const FoliageFrame& frame, int width, int height) {
+    Rect region;
+    for (const FoliageDraw* draw : visible)
+        if (auto r = screenBounds(draw->batch.worldBounds, frame.viewProj, width, height)) region = unite(region, *r);
+    return region;
 }
 
 std::vector<engine::render::MaskedBatch> batchesOf(const FoliageFrame& frame) {
@@ -42,12 +50,34 @@ PipelineDesc foliagePipeline(const char* name) {
     return p;
 }
 
+PipelineDesc blendOverPipeline(const char* name, CompareFunc depthFunc) {
+    PipelineDesc p = foliagePipeline(name);
+    p.depth = DepthState::testOnly(depthFunc);
+    p.blend[0] = BlendState::alphaOver();
+    p.blend[0].writeMask = WriteRGB;
+    return p;
+}
+
 PassDesc resolvedPass(const engine::render::FrameTargets& opaque, const char* name) {
     PassDesc pass;
     pass.name = name;
     pass.color[0] = {opaque.color(), LoadOp::Load};
     pass.depth = {opaque.depth(), LoadOp::Load};
     return pass;
+}
+
+void compositeOnto(Backend& backend, const engine::render::FrameTargets& opaque, const char* name,
+                   PipelineHandle pipeline, DrawParams params, const Rect& region) {
+    PassDesc pass;
+    pass.name = name;
+    pass.color[0] = {opaque.color(), LoadOp::Load};
+    PassScope scope(backend, pass);
+    DrawDesc d;
+    d.pipeline = pipeline;
+    d.params = std::move(params);
+    d.scissor = region;
+    backend.draw(d);
+    scope.end();
 }
 
 DrawDesc batchDraw(const engine::render::MaskedBatch& batch, PipelineHandle pipeline, DrawParams params) {

@@ -83,7 +83,8 @@ inline float layerCoverage(CoverageModel model, float maxMask, float addMask) {
     return coverage > 0.0f ? (coverage < 1.0f ? coverage : 1.0f) : 0.0f;  // NaN -> 0
 }
 
-struct CoverageCompositeKernel {
+// What both SSAM+ composites read: CoverageCompositeParams' textures, looked up once per draw.
+struct CoverageCompositeInputs {
     static constexpr soft::ProgramNeeds kNeeds{};
     static constexpr bool kReadsPixels = true;
     CoverageModel model = CoverageModel::EqualLayers;
@@ -91,9 +92,13 @@ struct CoverageCompositeKernel {
     const soft::SoftTexture* mask = nullptr;
     const soft::SoftTexture* maskAdd = nullptr;
 
-    CoverageCompositeKernel(const CoverageCompositeParams& p, const soft::TextureLookup& textures)
+    CoverageCompositeInputs(const CoverageCompositeParams& p, const soft::TextureLookup& textures)
         : model(p.model), foliage(textures.texture(p.foliage)), mask(textures.texture(p.mask)),
           maskAdd(textures.texture(p.maskAdd)) {}
+};
+
+struct CoverageCompositeKernel : CoverageCompositeInputs {
+    using CoverageCompositeInputs::CoverageCompositeInputs;
 
     const soft::SoftTexture* compositeColor() const { return foliage; }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
@@ -114,17 +119,8 @@ struct CoverageCompositeKernel {
 
 // SSAM+'s blurred composite (programs.hpp CoverageBlurComposite): the same coverage, the
 // colour averaged over the written 3x3 neighbours in the order the GLSL sums them.
-struct CoverageBlurCompositeKernel {
-    static constexpr soft::ProgramNeeds kNeeds{};
-    static constexpr bool kReadsPixels = true;
-    CoverageModel model = CoverageModel::EqualLayers;
-    const soft::SoftTexture* foliage = nullptr;
-    const soft::SoftTexture* mask = nullptr;
-    const soft::SoftTexture* maskAdd = nullptr;
-
-    CoverageBlurCompositeKernel(const CoverageCompositeParams& p, const soft::TextureLookup& textures)
-        : model(p.model), foliage(textures.texture(p.foliage)), mask(textures.texture(p.mask)),
-          maskAdd(textures.texture(p.maskAdd)) {}
+struct CoverageBlurCompositeKernel : CoverageCompositeInputs {
+    using CoverageCompositeInputs::CoverageCompositeInputs;
 
     glm::vec4 shade(const soft::Fragment& f) const {
         Window window;

@@ -15,6 +15,15 @@ namespace {
 
 using namespace engine::render;
 
+// A full-screen program whose fragment shader is its samplers' declarations and `fragment`.
+template <typename Params, typename Kernel>
+ProgramDesc fullscreenProgram(const char* name, const char* paramsName, const char* fragment) {
+    ProgramDesc d = describeProgram<Params>(name, VertexInput::Fullscreen, paramsName);
+    d.gl.fragment = samplerDeclarations(d.gl) + fragment;
+    d.soft = soft::makeKernel<Kernel, Params>();
+    return d;
+}
+
 // Both SSAM+ composites: the same params, textures and checks; `blur` picks the colour.
 ProgramDesc coverageComposite(bool blur) {
     ProgramDesc d =
@@ -46,22 +55,16 @@ ProgramDesc wboitAccumulateProgram() {
 }
 
 ProgramDesc wboitResolveProgram() {
-    ProgramDesc d = describeProgram<WboitResolveParams>("WboitResolve", VertexInput::Fullscreen,
-                                                        "transparency::WboitResolveParams");
-    d.gl.fragment = samplerDeclarations(d.gl) + glsl::kWboitResolveFragment;
-    d.soft = soft::makeKernel<WboitResolveKernel, WboitResolveParams>();
-    return d;
+    return fullscreenProgram<WboitResolveParams, WboitResolveKernel>("WboitResolve", "transparency::WboitResolveParams",
+                                                                     glsl::kWboitResolveFragment);
 }
 
 ProgramDesc coverageCompositeProgram() { return coverageComposite(false); }
 ProgramDesc coverageBlurCompositeProgram() { return coverageComposite(true); }
 
 ProgramDesc transmittanceCompositeProgram() {
-    ProgramDesc d = describeProgram<TransmittanceCompositeParams>("TransmittanceComposite", VertexInput::Fullscreen,
-                                                                  "transparency::TransmittanceCompositeParams");
-    d.gl.fragment = samplerDeclarations(d.gl) + glsl::kTransmittanceCompositeFragment;
-    d.soft = soft::makeKernel<TransmittanceCompositeKernel, TransmittanceCompositeParams>();
-    return d;
+    return fullscreenProgram<TransmittanceCompositeParams, TransmittanceCompositeKernel>(
+        "TransmittanceComposite", "transparency::TransmittanceCompositeParams", glsl::kTransmittanceCompositeFragment);
 }
 
 }  // namespace transparency

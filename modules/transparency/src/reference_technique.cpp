@@ -114,10 +114,7 @@ public:
         const int width = opaque.desc().width, height = opaque.desc().height;
         const auto visible = visibleDraws(frame, width, height);
         if (visible.empty()) return;
-        Rect region;
-        for (const FoliageDraw* draw : visible)
-            if (auto r = engine::render::screenBounds(draw->batch.worldBounds, frame.viewProj, width, height))
-                region = engine::render::unite(region, *r);
+        const Rect region = screenRegion(visible, frame, width, height);
 
         // Premultiplied foliage colour C (rgb) and transmittance T, per pixel.
         std::vector<float> color(std::size_t(width) * height * 4, 0.0f),
@@ -149,16 +146,8 @@ public:
                               " farthest fragment(s) were left out, so the reference is not exact there");
         upload(width, height, color, transmittance);
 
-        PassDesc pass;
-        pass.name = "reference composite";
-        pass.color[0] = {opaque.color(), LoadOp::Load};
-        PassScope passScope(backend_, pass);
-        DrawDesc d;
-        d.pipeline = composite_;
-        d.params = TransmittanceCompositeParams{colorTexture_, transmittanceTexture_};
-        d.scissor = region;
-        backend_.draw(d);
-        passScope.end();
+        compositeOnto(backend_, opaque, "reference composite", composite_,
+                      TransmittanceCompositeParams{colorTexture_, transmittanceTexture_}, region);
     }
 
     std::vector<NamedTarget> intermediates() const override {

@@ -81,16 +81,8 @@ public:
         ssam_.maskPass(plan, view, opaque.depth(), t);
         ssam_.colorPass(plan, view, opaque.depth(), t);
 
-        PassDesc pass;
-        pass.name = "ssam+ composite";
-        pass.color[0] = {opaque.color(), LoadOp::Load};
-        PassScope passScope(backend_, pass);
-        DrawDesc d;
-        d.pipeline = composite_;
-        d.params = CoverageCompositeParams{t.foliage, t.mask, t.maskAdd, model_};
-        d.scissor = plan.compositeRegion;
-        backend_.draw(d);
-        passScope.end();
+        compositeOnto(backend_, opaque, "ssam+ composite", composite_,
+                      CoverageCompositeParams{t.foliage, t.mask, t.maskAdd, model_}, plan.compositeRegion);
     }
 
 private:

@@ -84,51 +84,40 @@ public:
         const auto visible = visibleDraws(frame, width, height);
         if (visible.empty()) return;
         const TextureHandle accumulation = targets[0], revealage = targets[1];
-        Rect region;
-        for (const FoliageDraw* draw : visible)
-            if (auto r = engine::render::screenBounds(draw->batch.worldBounds, frame.viewProj, width, height))
-                region = engine::render::unite(region, *r);
+        const Rect region = screenRegion(visible, frame, width, height);
 
-        PassDesc accumulate;
-        accumulate.name = "wboit accumulate";
-        accumulate.color[0] = {accumulation, LoadOp::Clear, glm::vec4(0.0f)};
-        accumulate.depth = {opaque.depth(), LoadOp::Load};
-        PassScope accumulateScope(backend_, accumulate);
-        for (const FoliageDraw* draw : visible) {
-            const engine::render::MaskedBatch& b = draw->batch;
-            WboitAccumulateParams params{frame.viewProj, b.baseColorFactor, b.baseColor, frame.light, depthScale_};
-            backend_.draw(batchDraw(b, accumulatePipeline_, params));
-        }
-        accumulateScope.end();
-
-        PassDesc reveal;
-        reveal.name = "wboit revealage";
-        reveal.color[0] = {revealage, LoadOp::Clear, glm::vec4(1.0f)};
-        reveal.depth = {opaque.depth(), LoadOp::Load};
-        PassScope revealScope(backend_, reveal);
-        for (const FoliageDraw* draw : visible) {
-            const engine::render::MaskedBatch& b = draw->batch;
-            AlphaOnlyParams params;
-            params.viewProj = frame.viewProj;
-            params.alphaFactor = b.baseColorFactor.a;
-            params.baseColor = b.baseColor;
-            backend_.draw(batchDraw(b, revealagePipeline_, params));
-        }
-        revealScope.end();
-
-        PassDesc composite;
-        composite.name = "wboit resolve";
-        composite.color[0] = {opaque.color(), LoadOp::Load};
-        PassScope compositeScope(backend_, composite);
-        DrawDesc d;
-        d.pipeline = resolvePipeline_;
-        d.params = WboitResolveParams{accumulation, revealage};
-        d.scissor = region;
-        backend_.draw(d);
-        compositeScope.end();
+        drawInto(
+            "wboit accumulate", accumulation, glm::vec4(0.0f), opaque, visible, accumulatePipeline_,
+            [&](const engine::render::MaskedBatch& b) {
+                return WboitAccumulateParams{frame.viewProj, b.baseColorFactor, b.baseColor, frame.light, depthScale_};
+            });
+        drawInto("wboit revealage", revealage, glm::vec4(1.0f), opaque, visible, revealagePipeline_,
+                 [&](const engine::render::MaskedBatch& b) {
+                     AlphaOnlyParams params;
+                     params.viewProj = frame.viewProj;
+                     params.alphaFactor = b.baseColorFactor.a;
+                     params.baseColor = b.baseColor;
+                     return params;
+                 });
+        compositeOnto(backend_, opaque, "wboit resolve", resolvePipeline_, WboitResolveParams{accumulation, revealage},
+                      region);
     }
 
 private:
+    // One pass of every visible draw into `target` (cleared to `clear`), depth-tested against
+    // the opaque depth, with the parameters `paramsOf` makes for each batch.
+    template <typename ParamsOf>
+    void drawInto(const char* name, TextureHandle target, glm::vec4 clear, const engine::render::FrameTargets& opaque,
+                  std::span<const FoliageDraw* const> visible, PipelineHandle pipeline, ParamsOf paramsOf) {
+        PassDesc pass;
+        pass.name = name;
+        pass.color[0] = {target, LoadOp::Clear, clear};
+        pass.depth = {opaque.depth(), LoadOp::Load};
+        PassScope scope(backend_, pass);
+        for (const FoliageDraw* draw : visible) backend_.draw(batchDraw(draw->batch, pipeline, paramsOf(draw->batch)));
+        scope.end();
+    }
+
     Backend& backend_;
     float depthScale_;
     Owned<ProgramHandle> accumulateProgram_, resolveProgram_;  // programs.hpp

@@ -6,17 +6,15 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/core/field_checks.hpp"
 
 namespace water {
 
 void validate(const Ripples& r) {
-    auto check = [](float v, const char* field) {
-        if (!std::isfinite(v)) throw engine::Error(std::string("Ripples.") + field + " is not finite");
-        if (v < 0.0f) throw engine::Error(std::string("Ripples.") + field + " = " + std::to_string(v) + " is negative");
-    };
-    check(r.amplitude, "amplitude");
-    check(r.wavelength, "wavelength");
-    check(r.speed, "speed");
+    const engine::FieldChecks check{"Ripples"};
+    check.nonNegative(r.amplitude, "amplitude");
+    check.nonNegative(r.wavelength, "wavelength");
+    check.nonNegative(r.speed, "speed");
     if (!(r.wavelength > 0.0f)) throw engine::Error("Ripples.wavelength must be positive");
 }
 

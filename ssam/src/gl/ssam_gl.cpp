@@ -12,6 +12,7 @@
 
 #include "../core/frame_sequence.hpp"
 #include "../core/host_channel.hpp"
+#include "../core/host_passes_impl.hpp"
 #include "ssam/core/passes.hpp"
 #include "../core/frame_rules.hpp"
 #include "depth_restore.hpp"
@@ -415,7 +416,31 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         phase = Phase::Idle;
     }
 
+    // What HostPasses calls (host_passes_impl.hpp): way (b)'s passes by name.
+    PassInfo beginFoliagePass(FoliagePass which) {
+        return which == FoliagePass::Mask ? beginMaskPass() : beginColorPass();
+    }
+    void endFoliagePass(FoliagePass which) {
+        if (which == FoliagePass::Mask) endPass(Phase::InMaskPass, "endMaskPass");
+        else endPass(Phase::InColorPass, "endColorPass");
+    }
+
     // ---- Way (a): the built-in programs inside the passes ---------------------------------
+
+    // The whole frame; a report only when the foliage was in view and every pass ran.
+    FrameReport render(const FrameDesc& desc, DrawFoliage draw, void* user) {
+        expect(Phase::Idle, "render");  // named as the host called it, not as beginFrame
+        const FrameReport begun = beginFrame(desc);
+        if (!begun.foliageInView) return {};
+        const PassInfo maskPass = beginMaskPass();
+        drawBuiltIn(mask, maskPass, draw, user);
+        endPass(Phase::InMaskPass, "endMaskPass");
+        const PassInfo colorPass = beginColorPass();
+        drawBuiltIn(color, colorPass, draw, user);
+        endPass(Phase::InColorPass, "endColorPass");
+        compositeFrame();
+        return begun;
+    }
 
     void drawBuiltIn(const FoliageProgramObject& p, const PassInfo& pass, DrawFoliage draw, void* user) {
         // Generic values for attributes the host's VAO leaves disabled (initialize(), setAttributeLocations()). A
@@ -466,23 +491,12 @@ struct ScreenSpaceAlphaMaskGl::Impl {
 
 namespace {
 
-constexpr const char* kMovedFrom = "ssam::gl: this ScreenSpaceAlphaMaskGl was moved from (or out of memory)";
-
 // A public call's frame: InvalidCall on a moved-from object, else `step(impl)` inside
 // Impl::run, which turns a Failure (or any exception) into its Status and message.
 template <class ImplPointer, class Step>
 Status runStep(ImplPointer& impl, Step&& step) noexcept {
     if (!impl) return Status::InvalidCall;
     return impl->run([&] { step(*impl); });
-}
-
-// A begin...Pass call: the pass's PassInfo into `info` (where given) once `begin(impl)` opened it.
-template <class ImplPointer, class Begin>
-Status runBeginPass(ImplPointer& impl, PassInfo* info, Begin&& begin) noexcept {
-    return runStep(impl, [&](auto& s) {
-        const PassInfo pass = begin(s);
-        if (info) *info = pass;
-    });
 }
 
 }  // namespace
@@ -496,15 +510,6 @@ ScreenSpaceAlphaMaskGl& ScreenSpaceAlphaMaskGl::operator=(ScreenSpaceAlphaMaskGl
         impl_ = std::move(other.impl_);
     }
     return *this;
-}
-
-void ScreenSpaceAlphaMaskGl::setMessageCallback(MessageCallback callback, void* user) noexcept {
-    if (!impl_) return;
-    impl_->channel.setCallback(callback, user);
-}
-
-const char* ScreenSpaceAlphaMaskGl::lastMessage() const noexcept {
-    return impl_ ? impl_->channel.lastMessage() : kMovedFrom;
 }
 
 Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddress getProcAddress, const Settings& settings,
@@ -562,64 +567,13 @@ const AttributeLocations& ScreenSpaceAlphaMaskGl::attributeLocations() const noe
     return impl_ ? impl_->attributes : defaults;
 }
 
-const Settings& ScreenSpaceAlphaMaskGl::settings() const noexcept {
-    static const Settings defaults;
-    return impl_ ? impl_->settings : defaults;
-}
-
-Status ScreenSpaceAlphaMaskGl::render(const FrameDesc& frame, DrawFoliage draw, void* user,
-                                      FrameReport* report) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    Impl& s = *impl_;
-    if (report) *report = {};
-    if (!draw) return s.fail(Status::InvalidArgument, "ssam::gl: render() without a draw callback");
-    return s.run([&] {
-        s.expect(Phase::Idle, "render");  // named as the host called it, not as beginFrame
-        const FrameReport begun = s.beginFrame(frame);
-        if (!begun.foliageInView) return;
-        const PassInfo maskPass = s.beginMaskPass();
-        s.drawBuiltIn(s.mask, maskPass, draw, user);
-        s.endPass(Phase::InMaskPass, "endMaskPass");
-        const PassInfo colorPass = s.beginColorPass();
-        s.drawBuiltIn(s.color, colorPass, draw, user);
-        s.endPass(Phase::InColorPass, "endColorPass");
-        s.compositeFrame();
-        if (report) *report = begun;
-    });
-}
-
-Status ScreenSpaceAlphaMaskGl::beginFrame(const FrameDesc& frame, FrameReport* report) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    if (report) *report = {};
-    return impl_->run([&] {
-        const FrameReport begun = impl_->beginFrame(frame);
-        if (report) *report = begun;
-    });
-}
-
-Status ScreenSpaceAlphaMaskGl::beginMaskPass(PassInfo* info) noexcept {
-    return runBeginPass(impl_, info, [](Impl& s) { return s.beginMaskPass(); });
-}
-
-Status ScreenSpaceAlphaMaskGl::endMaskPass() noexcept {
-    return runStep(impl_, [](Impl& s) { s.endPass(Phase::InMaskPass, "endMaskPass"); });
-}
-
-Status ScreenSpaceAlphaMaskGl::beginColorPass(PassInfo* info) noexcept {
-    return runBeginPass(impl_, info, [](Impl& s) { return s.beginColorPass(); });
-}
-
-Status ScreenSpaceAlphaMaskGl::endColorPass() noexcept {
-    return runStep(impl_, [](Impl& s) { s.endPass(Phase::InColorPass, "endColorPass"); });
-}
-
-Status ScreenSpaceAlphaMaskGl::composite() noexcept {
-    return runStep(impl_, [](Impl& s) { s.compositeFrame(); });
-}
-
 Intermediates ScreenSpaceAlphaMaskGl::intermediates() const noexcept {
     if (!impl_) return {};
     return {impl_->targets.mask(), impl_->targets.maskAdd(), impl_->targets.foliage()};
 }
 
 }  // namespace ssam::gl
+
+// The calls ssam::gl shares with every host API, over Impl (host_passes_impl.hpp).
+template class ssam::HostPasses<ssam::gl::ScreenSpaceAlphaMaskGl, ssam::gl::FrameDesc, ssam::gl::FoliageProgram,
+                                ssam::gl::PassInfo>;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ssam/core/settings.hpp"
+#include "../core/host_passes_impl.hpp"
 #include "impl.hpp"
 
 namespace ssam::vk {
@@ -237,16 +238,6 @@ ScreenSpaceAlphaMaskVk& ScreenSpaceAlphaMaskVk::operator=(ScreenSpaceAlphaMaskVk
     return *this;
 }
 
-void ScreenSpaceAlphaMaskVk::setMessageCallback(MessageCallback callback, void* user) noexcept {
-    if (!impl_) return;
-    impl_->channel.setCallback(callback, user);
-}
-
-const char* ScreenSpaceAlphaMaskVk::lastMessage() const noexcept {
-    return impl_ ? impl_->channel.lastMessage()
-                 : "ssam::vk: this ScreenSpaceAlphaMaskVk was moved from (or out of memory)";
-}
-
 Status ScreenSpaceAlphaMaskVk::initialize(const DeviceDesc& device, const Settings& settings,
                                           const VertexLayout& vertexLayout) noexcept {
     if (!impl_) return Status::InvalidCall;
@@ -284,11 +275,6 @@ Status ScreenSpaceAlphaMaskVk::setSettings(const Settings& settings) noexcept {
     });
 }
 
-const Settings& ScreenSpaceAlphaMaskVk::settings() const noexcept {
-    static const Settings defaults;
-    return impl_ ? impl_->settings : defaults;
-}
-
 Status ScreenSpaceAlphaMaskVk::setVertexLayout(const VertexLayout& vertexLayout) noexcept {
     return changeOutsideFrame(impl_.get(), "setVertexLayout", [&](Impl& s) {
         validate(vertexLayout);
@@ -319,61 +305,6 @@ Status ScreenSpaceAlphaMaskVk::destroyTexture(TextureId id, std::uint64_t lastFr
     return impl_->run([&] { impl_->destroyTexture(id, lastFrameIndex); }, false);
 }
 
-Status ScreenSpaceAlphaMaskVk::render(const FrameDesc& frame, DrawFoliage draw, void* user,
-                                      FrameReport* report) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    if (report) *report = {};
-    if (!draw) return impl_->fail(Status::InvalidArgument, "ssam::vk: render() without a draw callback");
-    return impl_->run([&] {
-        const FrameReport done = impl_->render(frame, draw, user);
-        if (report) *report = done;
-    });
-}
-
-Status ScreenSpaceAlphaMaskVk::beginFrame(const FrameDesc& frame, FrameReport* report) noexcept {
-    if (!impl_) return Status::InvalidCall;
-    if (report) *report = {};
-    return impl_->run([&] {
-        const FrameReport begun = impl_->beginFrame(frame);
-        if (report) *report = begun;
-    });
-}
-
-namespace {
-
-// begin...Pass: the pass's PassInfo into `info` (where given); InvalidCall on a moved-from object.
-Status beginFoliagePass(ScreenSpaceAlphaMaskVk::Impl* impl, FoliagePass foliagePass, PassInfo* info) noexcept {
-    if (!impl) return Status::InvalidCall;
-    return impl->run([&] {
-        const PassInfo pass = impl->beginFoliagePass(foliagePass);
-        if (info) *info = pass;
-    });
-}
-
-Status endFoliagePass(ScreenSpaceAlphaMaskVk::Impl* impl, FoliagePass foliagePass) noexcept {
-    if (!impl) return Status::InvalidCall;
-    return impl->run([&] { impl->endFoliagePass(foliagePass); });
-}
-
-}  // namespace
-
-Status ScreenSpaceAlphaMaskVk::beginMaskPass(PassInfo* info) noexcept {
-    return beginFoliagePass(impl_.get(), FoliagePass::Mask, info);
-}
-
-Status ScreenSpaceAlphaMaskVk::endMaskPass() noexcept { return endFoliagePass(impl_.get(), FoliagePass::Mask); }
-
-Status ScreenSpaceAlphaMaskVk::beginColorPass(PassInfo* info) noexcept {
-    return beginFoliagePass(impl_.get(), FoliagePass::Color, info);
-}
-
-Status ScreenSpaceAlphaMaskVk::endColorPass() noexcept { return endFoliagePass(impl_.get(), FoliagePass::Color); }
-
-Status ScreenSpaceAlphaMaskVk::composite() noexcept {
-    if (!impl_) return Status::InvalidCall;
-    return impl_->run([&] { impl_->compositeFrame(); });
-}
-
 Status ScreenSpaceAlphaMaskVk::pipelineState(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat,
                                              PipelineState* state) const noexcept {
     if (!impl_) return Status::InvalidCall;
@@ -394,3 +325,7 @@ ScreenSpaceAlphaMaskVk::Intermediates ScreenSpaceAlphaMaskVk::intermediates() co
 }
 
 }  // namespace ssam::vk
+
+// The calls ssam::vk shares with every host API, over Impl (host_passes_impl.hpp).
+template class ssam::HostPasses<ssam::vk::ScreenSpaceAlphaMaskVk, ssam::vk::FrameDesc, ssam::vk::FoliageProgram,
+                                ssam::vk::PassInfo>;

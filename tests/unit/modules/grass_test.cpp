@@ -11,28 +11,13 @@
 namespace {
 
 using namespace engine;
-using living::testing::addRectangle;
-using living::testing::place;
 
 constexpr int kW = 96, kH = 64;
 
-struct GrassScene {
-    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
-    scene::MeshLibrary library{*backend};
-    ecs::Registry registry;
-    living::testing::LivingFrame frame{*backend, library, kW, kH};
-    living::testing::Camera camera{{0.0f, 1.0f, 0.0f}, {0.0f, 1.0f, 1.0f}, 1.0f};
-
-    explicit GrassScene(bool tree) {
+struct GrassScene : living::testing::LivingScene {
+    explicit GrassScene(bool tree) : LivingScene(kW, kH, {{0.0f, 1.0f, 0.0f}, {0.0f, 1.0f, 1.0f}, 1.0f}) {
         // A foliage card of full alpha (a "tree") 5 m ahead, covering the grass at 8 m.
-        if (tree)
-            place(registry, addRectangle(library, "tree", -1, -1, 1, 3, 5.0f, scene::SurfaceClass::Mask,
-                                         {0.2f, 0.5f, 0.1f, 1.0f}));
-    }
-    render::Readback render(grass::GrassFeature* grass, float time = 0.0f) {
-        std::vector<scene::Feature*> features;
-        if (grass) features.push_back(grass);
-        return frame.render(registry, camera, time, features);
+        if (tree) addCard("tree", -1, -1, 1, 3, 5.0f, scene::SurfaceClass::Mask, {0.2f, 0.5f, 0.1f, 1.0f});
     }
 };
 

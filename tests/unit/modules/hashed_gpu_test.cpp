@@ -28,16 +28,7 @@ using transparency::testing::kGpuName;
 constexpr int kSize = 64;
 
 std::vector<Vertex> card(const glm::vec3 (&corners)[4], float uvMax, float alpha) {
-    const glm::vec2 uv[4] = {{0, 0}, {uvMax, 0}, {uvMax, uvMax}, {0, uvMax}};
-    std::vector<Vertex> out;
-    for (int i : {0, 1, 2, 0, 2, 3}) {
-        Vertex v;
-        v.position = corners[i];
-        v.uv = uv[i];
-        v.color = {1.0f, 1.0f, 1.0f, alpha};
-        out.push_back(v);
-    }
-    return out;
+    return test_support::cardVertices(corners, uvMax, {1.0f, 1.0f, 1.0f, alpha});
 }
 
 // HashedLit with outputThreshold: the threshold itself at every pixel.
@@ -96,24 +87,13 @@ TEST(SSAM_GPU_SUITE(Hashed), TechniqueFrameMatchesTheSoftBackendButForRoundingFl
     auto run = [](Backend& backend) {
         auto technique = createTechnique(TechniqueKind::Hashed, backend, {});
         const glm::vec3 corners[4] = {{-2, -1.5f, -3}, {2, -1.5f, -3}, {2, 1.5f, -9}, {-2, 1.5f, -9}};
-        const std::vector<Vertex> vertices = card(corners, 3.1f, 0.5f);
-        const auto bytes = std::as_bytes(std::span(vertices));
-        const BufferHandle buffer = backend.createBuffer({"card", BufferKind::Vertex, bytes.size()}, bytes);
+        const test_support::OneDraw draw(backend, card(corners, 3.1f, 0.5f), {{-2, -1.5f, -9}, {2, 1.5f, -3}});
         FrameTargets opaque(backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
         backend.beginPass(opaque.passDesc({0, 0, 0, 1}));
         backend.endPass();
-        FoliageDraw draw;
-        draw.batch.vertices = buffer;
-        draw.batch.count = std::uint32_t(vertices.size());
-        draw.batch.worldBounds = {{-2, -1.5f, -9}, {2, 1.5f, -3}};
-        FoliageFrame frame;
-        frame.viewProj = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
-        frame.light = unlitLight();
-        frame.draws = std::span(&draw, 1);
-        test_support::runTechnique(backend, *technique, opaque, frame);
-        Readback r = backend.readback(opaque.color());
-        backend.destroy(buffer);
-        return r;
+        test_support::runTechnique(backend, *technique, opaque,
+                                   draw.frame(glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f)));
+        return backend.readback(opaque.color());
     };
     auto soft = soft::createSoftBackend({.threads = 1});
     auto gpu = gpuBackend();

@@ -13,6 +13,7 @@
 #include "engine/core/ecs/registry.hpp"
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/projection.hpp"
+#include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/components.hpp"
 #include "engine/scene/draw_lists.hpp"
 #include "engine/scene/frame_feature.hpp"
@@ -151,5 +152,30 @@ inline engine::ecs::Entity place(engine::ecs::Registry& registry, engine::scene:
     registry.add<engine::scene::Renderable>(e, engine::scene::Renderable{model});
     return e;
 }
+
+// A scene of cards on its own soft backend (one thread) and one frame of it, seen by
+// `camera`: where each module's scene tests start.
+struct LivingScene {
+    std::unique_ptr<engine::render::Device> backend = engine::render::soft::createSoftBackend({1, 64, false});
+    engine::scene::MeshLibrary library{*backend};
+    engine::ecs::Registry registry;
+    LivingFrame frame;
+    Camera camera;
+
+    LivingScene(int width, int height, const Camera& view = {})
+        : frame(*backend, library, width, height), camera(view) {}
+
+    // A camera-facing card (addRectangle), placed at the origin.
+    engine::ecs::Entity addCard(const char* name, float x0, float y0, float x1, float y1, float z,
+                                engine::scene::SurfaceClass surface, const glm::vec4& color) {
+        return place(registry, addRectangle(library, name, x0, y0, x1, y1, z, surface, color));
+    }
+    // The frame with `feature`'s passes (none for nullptr) at `time`.
+    engine::render::Readback render(engine::scene::Feature* feature, float time = 0.0f) {
+        std::vector<engine::scene::Feature*> features;
+        if (feature) features.push_back(feature);
+        return frame.render(registry, camera, time, features);
+    }
+};
 
 }  // namespace living::testing

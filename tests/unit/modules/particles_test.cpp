@@ -6,34 +6,19 @@
 
 #include "engine/core/ecs/scheduler.hpp"
 #include "engine/core/error.hpp"
-#include "engine/render/soft/soft_backend.hpp"
 #include "living_frame.hpp"
 #include "particles/particle_feature.hpp"
 
 namespace {
 
 using namespace engine;
-using living::testing::addRectangle;
-using living::testing::place;
 
 constexpr int kW = 64, kH = 48;
 
-struct ParticleScene {
-    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
-    scene::MeshLibrary library{*backend};
-    ecs::Registry registry;
-    living::testing::LivingFrame frame{*backend, library, kW, kH};
-
-    explicit ParticleScene(bool tree, float treeRight = 1.0f) {
+struct ParticleScene : living::testing::LivingScene {
+    explicit ParticleScene(bool tree, float treeRight = 1.0f) : LivingScene(kW, kH) {
         // A full-alpha foliage card 5 m ahead: the left part of the view.
-        if (tree)
-            place(registry, addRectangle(library, "tree", -4, -3, treeRight, 3, 5.0f, scene::SurfaceClass::Mask,
-                                         {0.2f, 0.5f, 0.1f, 1.0f}));
-    }
-    render::Readback render(particles::ParticleFeature* p) {
-        std::vector<scene::Feature*> f;
-        if (p) f.push_back(p);
-        return frame.render(registry, {}, 0.0f, f);
+        if (tree) addCard("tree", -4, -3, treeRight, 3, 5.0f, scene::SurfaceClass::Mask, {0.2f, 0.5f, 0.1f, 1.0f});
     }
 };
 

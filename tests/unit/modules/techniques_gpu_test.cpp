@@ -64,24 +64,13 @@ TEST(SSAM_GPU_SUITE(Techniques), WboitDepthWeightMatchesTheSoftBackend) {
         quad(3.0f, 0.5f, {1, 0, 0, 0.5f});
         quad(8.0f, -0.3f, {0, 1, 0, 0.6f});
         quad(40.0f, 0.2f, {0, 0, 1, 0.7f});
-        const auto bytes = std::as_bytes(std::span(vertices));
-        const BufferHandle buffer = backend.createBuffer({"quads", BufferKind::Vertex, bytes.size()}, bytes);
+        const test_support::OneDraw draw(backend, vertices, {{-60, -60, -60}, {60, 60, -1}});
         engine::render::FrameTargets opaque(backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
-        FoliageDraw draw;
-        draw.batch.vertices = buffer;
-        draw.batch.count = std::uint32_t(vertices.size());
-        draw.batch.worldBounds = {{-60, -60, -60}, {60, 60, -1}};
-        draw.meshBounds = draw.batch.worldBounds;
         backend.beginPass(opaque.passDesc(kOpaqueColor));
         backend.endPass();
-        FoliageFrame frame;
-        frame.viewProj = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f);
-        frame.light = unlitLight();
-        frame.draws = std::span(&draw, 1);
-        test_support::runTechnique(backend, *technique, opaque, frame);
-        Readback r = backend.readback(opaque.color());
-        backend.destroy(buffer);
-        return r;
+        test_support::runTechnique(backend, *technique, opaque,
+                                   draw.frame(glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f)));
+        return backend.readback(opaque.color());
     };
     auto soft = soft::createSoftBackend({.threads = 1});
     auto gpu = gpuBackend();

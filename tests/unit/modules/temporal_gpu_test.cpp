@@ -27,39 +27,21 @@ constexpr int kSize = 64;
 Readback sixFrames(Backend& backend, TechniqueKind kind) {
     auto technique = createTechnique(kind, backend, {});
     const glm::vec3 corners[4] = {{-2, -1.5f, -3}, {2, -1.5f, -3}, {2, 1.5f, -9}, {-2, 1.5f, -9}};
-    const glm::vec2 uv[4] = {{0, 0}, {3.1f, 0}, {3.1f, 3.1f}, {0, 3.1f}};
-    std::vector<Vertex> vertices;
-    for (int i : {0, 1, 2, 0, 2, 3}) {
-        Vertex v;
-        v.position = corners[i];
-        v.uv = uv[i];
-        v.color = {1.0f, 0.8f, 0.4f, 0.6f};
-        vertices.push_back(v);
-    }
-    const auto bytes = std::as_bytes(std::span(vertices));
-    const BufferHandle buffer = backend.createBuffer({"card", BufferKind::Vertex, bytes.size()}, bytes);
+    const test_support::OneDraw draw(backend, test_support::cardVertices(corners, 3.1f, {1.0f, 0.8f, 0.4f, 0.6f}),
+                                     {{-2, -1.5f, -9}, {2, 1.5f, -3}});
     FrameTargets opaque(backend, {kSize, kSize, technique->opaqueSamples(), Format::RGBA32F, CompareFunc::Less});
-    FoliageDraw draw;
-    draw.batch.vertices = buffer;
-    draw.batch.count = std::uint32_t(vertices.size());
-    draw.batch.worldBounds = {{-2, -1.5f, -9}, {2, 1.5f, -3}};
-    draw.meshBounds = draw.batch.worldBounds;
     for (std::uint64_t i = 0; i < 6; ++i) {
         backend.beginPass(opaque.passDesc({0.1f, 0.2f, 0.3f, 1.0f}));
         backend.endPass();
         const glm::mat4 view =
             glm::lookAt(glm::vec3(0.05f * float(i), 0, 0), glm::vec3(0.05f * float(i), 0, -1), glm::vec3(0, 1, 0));
-        FoliageFrame frame;
-        frame.viewProj = jitteredViewProj(glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) * view,
-                                          technique->projectionJitter(i), kSize, kSize);
-        frame.light = unlitLight();
-        frame.draws = std::span(&draw, 1);
+        FoliageFrame frame =
+            draw.frame(jitteredViewProj(glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) * view,
+                                        technique->projectionJitter(i), kSize, kSize));
         frame.frameIndex = i;
         test_support::runTechnique(backend, *technique, opaque, frame);
     }
-    Readback r = backend.readback(opaque.color());
-    backend.destroy(buffer);
-    return r;
+    return backend.readback(opaque.color());
 }
 
 TEST(SSAM_GPU_SUITE(Temporal), SixFramesMatchTheSoftBackend) {

@@ -14,26 +14,19 @@
 namespace {
 
 using namespace engine;
-using living::testing::addRectangle;
-using living::testing::place;
 using scene::SurfaceClass;
 
 constexpr int kW = 64, kH = 48;
 const glm::vec4 kWater{0.1f, 0.3f, 0.9f, 0.6f};
 
-struct WaterScene {
-    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
-    scene::MeshLibrary library{*backend};
-    ecs::Registry registry;
-    living::testing::LivingFrame frame{*backend, library, kW, kH};
-    WaterScene() {
+struct WaterScene : living::testing::LivingScene {
+    WaterScene() : LivingScene(kW, kH) {
         // An opaque-alpha foliage card (a "tree") in the middle, 5 m away.
-        place(registry,
-              addRectangle(library, "tree", -1, -1, 1, 1, 5.0f, SurfaceClass::Mask, {0.2f, 0.7f, 0.1f, 1.0f}));
+        addCard("tree", -1, -1, 1, 1, 5.0f, SurfaceClass::Mask, {0.2f, 0.7f, 0.1f, 1.0f});
     }
     void addPools() {
-        place(registry, addRectangle(library, "pool behind", -6, 0, 6, 3, 8.0f, SurfaceClass::Blend, kWater));
-        place(registry, addRectangle(library, "pool in front", -6, -3, 6, -0.01f, 3.0f, SurfaceClass::Blend, kWater));
+        addCard("pool behind", -6, 0, 6, 3, 8.0f, SurfaceClass::Blend, kWater);
+        addCard("pool in front", -6, -3, 6, -0.01f, 3.0f, SurfaceClass::Blend, kWater);
     }
 };
 

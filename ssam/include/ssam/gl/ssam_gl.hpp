@@ -60,6 +60,7 @@
 #include <type_traits>
 
 #include "ssam/core/frame.hpp"
+#include "ssam/core/host_passes.hpp"
 #include "ssam/core/settings.hpp"
 #include "ssam/core/status.hpp"
 #include "ssam/version.hpp"
@@ -186,7 +187,9 @@ struct Intermediates {
 
 // ---- SSAM ----------------------------------------------------------------------------------
 
-class ScreenSpaceAlphaMaskGl {
+// From HostPasses (ssam/core/host_passes.hpp): setMessageCallback, lastMessage, settings, render
+// (way a), beginFrame ... composite (way b); what they mean for the host's GL state is said above.
+class ScreenSpaceAlphaMaskGl : public HostPasses<ScreenSpaceAlphaMaskGl, FrameDesc, FoliageProgram, PassInfo> {
 public:
     ScreenSpaceAlphaMaskGl() noexcept;  // no GL yet
     // Deletes SSAM's GL objects (release()); the context must be current then, or release()
@@ -194,12 +197,6 @@ public:
     ~ScreenSpaceAlphaMaskGl();
     ScreenSpaceAlphaMaskGl(ScreenSpaceAlphaMaskGl&&) noexcept;
     ScreenSpaceAlphaMaskGl& operator=(ScreenSpaceAlphaMaskGl&&) noexcept;
-    ScreenSpaceAlphaMaskGl(const ScreenSpaceAlphaMaskGl&) = delete;
-    ScreenSpaceAlphaMaskGl& operator=(const ScreenSpaceAlphaMaskGl&) = delete;
-
-    void setMessageCallback(MessageCallback callback, void* user) noexcept;
-    // The message of the last call that did not return Ok ("" before any).
-    const char* lastMessage() const noexcept;
 
     // Resolves the GL entry points through the host's loader (MissingEntryPoint names the first
     // one it has no address for), checks the current context (OpenGL 3.3 or newer, core or
@@ -217,46 +214,28 @@ public:
 
     // InvalidArgument naming the knob (the core's rules, ssam::settingsError).
     Status setSettings(const Settings& settings) noexcept;
-    const Settings& settings() const noexcept;
     // New locations recompile the built-in programs (the context must be current then; before
     // initialize() they are only kept). InvalidArgument naming the attribute.
     Status setAttributeLocations(const AttributeLocations& attributes) noexcept;
     const AttributeLocations& attributeLocations() const noexcept;
 
-    // Way (a): the three passes with SSAM's built-in programs. `draw(user, program)` runs twice,
-    // mask pass then colour pass, with SSAM's program, framebuffer and state set: it binds its
-    // VAO(s) at attributeLocations(), sets per-draw values through `program` and draws; it may
-    // instead bind its own program if that keeps the host-shader contract. Every piece of GL
-    // state SSAM changes is restored before this returns, also when `draw` throws.
-    using DrawFoliage = void (*)(void* user, const FoliageProgram& program);
-    Status render(const FrameDesc& frame, DrawFoliage draw, void* user, FrameReport* report = nullptr) noexcept;
-    // The same with any callable, e.g. a lambda: render(frame, [&](const FoliageProgram& p) {...}).
-    template <class Draw>
-    Status render(const FrameDesc& frame, Draw&& draw, FrameReport* report = nullptr) noexcept {
-        using Callable = std::remove_reference_t<Draw>;
-        return render(
-            frame, [](void* user, const FoliageProgram& p) { (*static_cast<Callable*>(user))(p); },
-            const_cast<void*>(static_cast<const void*>(std::addressof(draw))), report);
-    }
-
-    // Way (b): the host's own shaders, one pass at a time. beginFrame checks the frame and
-    // (re)creates SSAM's targets; when FrameReport::foliageInView is false the frame is over.
-    // Each begin...Pass saves the GL state it changes and sets the pass's; the matching end...Pass
-    // restores it (between them, the host binds its program, VAOs and textures and draws).
-    // composite() blends the foliage onto the host's colour, restores its state and ends the frame.
-    // Out of order: InvalidCall; the open frame is then abandoned and the host's state restored.
-    Status beginFrame(const FrameDesc& frame, FrameReport* report = nullptr) noexcept;
-    Status beginMaskPass(PassInfo* info = nullptr) noexcept;
-    Status endMaskPass() noexcept;
-    Status beginColorPass(PassInfo* info = nullptr) noexcept;
-    Status endColorPass() noexcept;
-    Status composite() noexcept;
+    // Way (a), render(): `draw(user, program)` runs with SSAM's program, framebuffer and state
+    // set: it binds its VAO(s) at attributeLocations(), sets per-draw values through `program` and
+    // draws; it may instead bind its own program if that keeps the host-shader contract. Every
+    // piece of GL state SSAM changes is restored before render() returns, also when `draw` throws.
+    // Way (b): each begin...Pass saves the GL state it changes and sets the pass's; the matching
+    // end...Pass restores it (between them, the host binds its program, VAOs and textures and
+    // draws). composite() blends the foliage onto the host's colour, restores its state and ends
+    // the frame. Out of order: InvalidCall; the open frame is abandoned and the host's state restored.
 
     Intermediates intermediates() const noexcept;
 
     struct Impl;
 
 private:
+    friend HostPasses;  // reaches impl_ and the two messages below
+    static constexpr const char* kMovedFrom = "ssam::gl: this ScreenSpaceAlphaMaskGl was moved from (or out of memory)";
+    static constexpr const char* kRenderWithoutCallback = "ssam::gl: render() without a draw callback";
     std::unique_ptr<Impl> impl_;
 };
 

@@ -72,6 +72,7 @@
 #include <vulkan/vulkan.h>
 
 #include "ssam/core/frame.hpp"
+#include "ssam/core/host_passes.hpp"
 #include "ssam/core/settings.hpp"
 #include "ssam/core/status.hpp"
 #include "ssam/version.hpp"  // SSAM_VERSION_MAJOR / MINOR / PATCH, generated (cmake/package.cmake)
@@ -281,17 +282,14 @@ struct PipelineState {
 
 // ---- SSAM ----------------------------------------------------------------------------------
 
-class ScreenSpaceAlphaMaskVk {
+// From HostPasses (ssam/core/host_passes.hpp): setMessageCallback, lastMessage, settings, render
+// (way a), beginFrame ... composite (way b), recorded into FrameDesc::commandBuffer.
+class ScreenSpaceAlphaMaskVk : public HostPasses<ScreenSpaceAlphaMaskVk, FrameDesc, FoliageProgram, PassInfo> {
 public:
     ScreenSpaceAlphaMaskVk() noexcept;  // no Vulkan yet
     ~ScreenSpaceAlphaMaskVk();          // release()
     ScreenSpaceAlphaMaskVk(ScreenSpaceAlphaMaskVk&&) noexcept;
     ScreenSpaceAlphaMaskVk& operator=(ScreenSpaceAlphaMaskVk&&) noexcept;
-    ScreenSpaceAlphaMaskVk(const ScreenSpaceAlphaMaskVk&) = delete;
-    ScreenSpaceAlphaMaskVk& operator=(const ScreenSpaceAlphaMaskVk&) = delete;
-
-    void setMessageCallback(MessageCallback callback, void* user) noexcept;
-    const char* lastMessage() const noexcept;  // of the last call that did not return Ok ("" before any)
 
     // Resolves SSAM's Vulkan functions through the host's loader (MissingEntryPoint names the
     // first one missing) and creates what does not depend on a frame: shader modules, layouts,
@@ -305,7 +303,6 @@ public:
     // InvalidArgument naming the knob (the core's rules, ssam::settingsError); a new depth test
     // rebuilds the pipelines (the old ones retired until the frames using them completed).
     Status setSettings(const Settings& settings) noexcept;
-    const Settings& settings() const noexcept;
     // InvalidArgument naming the attribute or binding; a new layout rebuilds the pipelines (the
     // old ones retired likewise).
     Status setVertexLayout(const VertexLayout& vertexLayout) noexcept;
@@ -318,18 +315,7 @@ public:
     Status createTexture(VkImageView view, VkSampler sampler, TextureId* id) noexcept;
     Status destroyTexture(TextureId id, std::uint64_t lastFrameIndex) noexcept;
 
-    // Way (a): records the three passes with SSAM's built-in programs; `draw(user, program)` runs
-    // twice (mask pass, colour pass) and records the same draws in the same order each time (§3.8).
-    using DrawFoliage = void (*)(void* user, const FoliageProgram& program);
-    Status render(const FrameDesc& frame, DrawFoliage draw, void* user, FrameReport* report = nullptr) noexcept;
-    template <class Draw>
-    Status render(const FrameDesc& frame, Draw&& draw, FrameReport* report = nullptr) noexcept {
-        using Callable = std::remove_reference_t<Draw>;
-        return render(
-            frame, [](void* user, const FoliageProgram& p) { (*static_cast<Callable*>(user))(p); },
-            const_cast<void*>(static_cast<const void*>(std::addressof(draw))), report);
-    }
-
+    // Way (a), render(): records the three passes with SSAM's built-in programs.
     // Way (b): the host's own pipelines, one pass at a time, recorded into FrameDesc::commandBuffer.
     // beginFrame checks the frame, (re)creates SSAM's targets and records its per-frame update;
     // each begin...Pass begins SSAM's render pass (viewport and scissor set, nothing bound); the
@@ -337,12 +323,6 @@ public:
     // matching end...Pass ends it; composite() records the composite and ends the frame. Out of
     // order: InvalidCall; an open pass is then ended (the command buffer stays valid) and the frame
     // abandoned.
-    Status beginFrame(const FrameDesc& frame, FrameReport* report = nullptr) noexcept;
-    Status beginMaskPass(PassInfo* info = nullptr) noexcept;
-    Status endMaskPass() noexcept;
-    Status beginColorPass(PassInfo* info = nullptr) noexcept;
-    Status endColorPass() noexcept;
-    Status composite() noexcept;
     // The state the host's pipeline for `pass` must use with the host's colour and depth formats.
     Status pipelineState(FoliagePass pass, VkFormat colorFormat, VkFormat depthFormat,
                          PipelineState* state) const noexcept;
@@ -360,6 +340,9 @@ public:
     struct Impl;
 
 private:
+    friend HostPasses;  // reaches impl_ and the two messages below
+    static constexpr const char* kMovedFrom = "ssam::vk: this ScreenSpaceAlphaMaskVk was moved from (or out of memory)";
+    static constexpr const char* kRenderWithoutCallback = "ssam::vk: render() without a draw callback";
     std::unique_ptr<Impl> impl_;
 };
 
