@@ -16,6 +16,7 @@
 #include "engine/render/soft/soft_backend.hpp"
 #include "transparency/create_technique.hpp"
 #include "transparency/hashed_alpha.hpp"
+#include "program_card.hpp"
 #include "run_technique.hpp"
 
 namespace {
@@ -33,37 +34,12 @@ std::vector<Vertex> card(const glm::vec3 (&corners)[4], float uvMax, float alpha
 
 // HashedLit with outputThreshold: the threshold itself at every pixel.
 Readback thresholds(Backend& backend, const std::vector<Vertex>& vertices, bool anisotropic) {
-    const auto bytes = std::as_bytes(std::span(vertices));
-    const BufferHandle buffer = backend.createBuffer({"card", BufferKind::Vertex, bytes.size()}, bytes);
-    const ProgramHandle program = backend.createProgram(hashedLitProgram());
-    PipelineDesc p;
-    p.name = "thresholds";
-    p.program = program;
-    p.raster.cull = CullMode::None;
-    const PipelineHandle pipeline = backend.createPipeline(p);
-    const TextureHandle target = backend.createTexture(renderTargetDesc("thresholds", kSize, kSize, Format::RGBA32F));
-    PassDesc pass;
-    pass.name = "thresholds";
-    pass.color[0] = {target, LoadOp::Clear, {0, 0, 0, 0}};
-    backend.beginPass(pass);
     HashedLitParams params;
     params.light = unlitLight();
     params.seed = 12345u;
     params.anisotropic = anisotropic;
     params.outputThreshold = true;
-    DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = params;
-    d.vertices = buffer;
-    d.count = std::uint32_t(vertices.size());
-    backend.draw(d);
-    backend.endPass();
-    Readback r = backend.readback(target);
-    backend.destroy(target);
-    backend.destroy(pipeline);
-    backend.destroy(program);
-    backend.destroy(buffer);
-    return r;
+    return test_support::drawProgramCard(backend, hashedLitProgram(), params, vertices, kSize);
 }
 
 TEST(SSAM_GPU_SUITE(Hashed), ThresholdIsBitIdenticalWhereUvAndDerivativesAreExact) {
