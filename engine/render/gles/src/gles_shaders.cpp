@@ -19,6 +19,13 @@ constexpr const char* kEsHead =
     "precision highp float;\n"
     "precision highp int;\n"
     "precision highp sampler2D;\n"
+    // fwidthFine (GLSL 4.00 §8.13.3) is not in ES 3.00, whose fwidth takes the quad's
+    // differences as the implementation chooses (coarse or fine): a sharpened alpha-to-coverage
+    // edge ([Golus 2017]) may then differ from GL 4.5's by the other pixel pair's difference.
+    "#define fwidthFine fwidth\n"
+    // ldexp (GLSL 4.00, ES 3.10) as the exact power-of-two scale it is, for the exponents
+    // float has normal values for (hashed alpha's cell scales are clamped to +-60).
+    "float ldexp(float x, int e) { return x * uintBitsToFloat(uint(e + 127) << 23u); }\n"
     // `precise` (ES 3.20 §4.7) has no ES 3.00 equivalent: contraction stays the compiler's choice.
     "#define precise\n";
 
