@@ -32,13 +32,14 @@ public:
 
 struct HeadlessEglOptions {
     int major = 4, minor = 5;  // core profile, at least 4.5 is what the backend needs
-    // An OpenGL ES context of version major.minor (EGL_OPENGL_ES_API, an ES3 config) instead of
-    // a core one: the GLES driver's (engine/render/gles), which asks for 3.0.
-    bool es = false;
-    bool debug = false;  // ask for a debug context (KHR_debug messages go to the log)
+    bool debug = false;        // ask for a debug context (KHR_debug messages go to the log)
     // -1: Mesa's surfaceless platform first, then every EGL device in order;
     // >= 0: only that EGL device (EGL_EXT_device_enumeration order).
     int device = -1;
+    // An OpenGL ES context of version major.minor (EGL_OPENGL_ES_API, an ES3 config) instead of
+    // a core one: the GLES driver's (engine/render/gles), which asks for 3.0. Last, so that a
+    // host's positional {major, minor, debug, device} keeps its meaning.
+    bool es = false;
 };
 
 class HeadlessEglContext final : public GlContext {
