@@ -3,6 +3,8 @@
 // The soft backend's kernel of SharpenedCoverageLit (transparency/sharpened_coverage.hpp): the
 // MaskedLit surface, then its alpha sharpened by the fine derivative of a 2x2 quad, taken from
 // the texture at the quad partners' uv (this pixel's uv moved by its analytic derivatives).
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "engine/render/kernel/fragment.hpp"
