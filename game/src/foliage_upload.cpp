@@ -26,6 +26,8 @@ std::span<const transparency::FoliageDraw> FoliageUpload::upload(const engine::s
         d.instances = b.instances;
         d.meshBounds = {part.bounds.min, part.bounds.max};
         d.alphaCutoff = part.material.alphaCutoff;
+        d.lodLevel = b.level;
+        d.crossfading = b.crossfading;
         draws_.push_back(d);
     }
     return draws_;

@@ -11,7 +11,8 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                            const glm::vec3& cameraPosition) {
     // Per part, the batch it fills this frame (index into its list), so instances of one
     // mesh become one instanced draw.
-    std::vector<int> batchOfPart(library.partCount(), -1);
+    // Crossfading instances (weight < 1) have batches of their own (DrawBatch::crossfading).
+    std::vector<int> batchOfPart(library.partCount(), -1), fadingBatchOfPart(library.partCount(), -1);
     DrawLists lists;
     std::vector<DrawBatch> ownMask, ownOpaque;  // batches of overridden parts, one entity each
     registry.view<const Transform, const Renderable>().each([&](ecs::Entity e, const Transform& t,
@@ -19,7 +20,7 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
         const glm::mat4 model = t.matrix();
         const LevelsOfDetail* lod = registry.tryGet<LevelsOfDetail>(e);
         // One level, or the two of a crossfade, each with its weight in the tint's alpha.
-        auto drawLevel = [&](int chosen, float weight) {
+        auto drawLevel = [&](int chosen, float weight, bool crossfading) {
             const int level = lod ? std::clamp(chosen, 0, lod->levels - 1) : 0;
             const VertexOverride* override = level == 0 ? registry.tryGet<VertexOverride>(e) : nullptr;
             const std::vector<std::uint32_t>& parts =
@@ -37,19 +38,19 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                 const render::Instance instance{model, glm::vec4(1.0f, 1.0f, 1.0f, weight)};
                 const float distance = glm::length((world.min + world.max) * 0.5f - cameraPosition);
                 if (part.material.surface == SurfaceClass::Blend) {
-                    lists.blend.push_back({partIndex, own, {instance}, world, distance});
+                    lists.blend.push_back({partIndex, own, {instance}, world, distance, level, crossfading});
                     continue;
                 }
                 if (own) {
                     (part.material.surface == SurfaceClass::Mask ? ownMask : ownOpaque)
-                        .push_back({partIndex, own, {instance}, world, distance});
+                        .push_back({partIndex, own, {instance}, world, distance, level, crossfading});
                     continue;
                 }
                 std::vector<DrawBatch>& list = part.material.surface == SurfaceClass::Mask ? lists.mask : lists.opaque;
-                int& slot = batchOfPart[partIndex];
+                int& slot = (crossfading ? fadingBatchOfPart : batchOfPart)[partIndex];
                 if (slot < 0) {
                     slot = static_cast<int>(list.size());
-                    list.push_back({partIndex, {}, {}, {}, 0.0f});
+                    list.push_back({partIndex, {}, {}, {}, 0.0f, level, crossfading});
                 }
                 list[slot].instances.push_back(instance);
                 list[slot].worldBounds.add(world);
@@ -57,14 +58,18 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
             if (lod && drawn) ++lists.instancesAtLevel[std::size_t(level)];
         };
         if (lod && lod->blend.crossfading()) {
-            drawLevel(lod->blend.levels[0], 1.0f - lod->blend.coarserWeight);
-            drawLevel(lod->blend.levels[1], lod->blend.coarserWeight);
+            drawLevel(lod->blend.levels[0], 1.0f - lod->blend.coarserWeight, true);
+            drawLevel(lod->blend.levels[1], lod->blend.coarserWeight, true);
         } else {
-            drawLevel(lod ? lod->level : 0, 1.0f);
+            drawLevel(lod ? lod->level : 0, 1.0f, false);
         }
     });
-    auto byPart = [](const DrawBatch& a, const DrawBatch& b) { return a.part < b.part; };
-    // Own-vertex batches follow the shared batch of their part, in view order (deterministic).
+    // A part's steady batch, then its crossfading one, then its own-vertex batches in view
+    // order (deterministic).
+    auto byPart = [](const DrawBatch& a, const DrawBatch& b) {
+        auto group = [](const DrawBatch& d) { return d.vertices ? 2 : (d.crossfading ? 1 : 0); };
+        return a.part != b.part ? a.part < b.part : group(a) < group(b);
+    };
     lists.opaque.insert(lists.opaque.end(), ownOpaque.begin(), ownOpaque.end());
     lists.mask.insert(lists.mask.end(), ownMask.begin(), ownMask.end());
     std::stable_sort(lists.opaque.begin(), lists.opaque.end(), byPart);

@@ -1,6 +1,7 @@
 // HashedLit's output hook (transparency/hashed_alpha.hpp; soft: hashed_kernel.hpp). SURFACE_OUTPUT
 // is expanded inside the lit surface's main(), after v_uv is declared.
-#define SURFACE_OUTPUT(c) hashedOutput(c, v_uv)
+// A crossfading instance is dithered first (lod_dither.glsl): its other-level pixels have alpha 0.
+#define SURFACE_OUTPUT(c) hashedOutput(lodDitherOutput(c, v_color.a), v_uv)
 
 uvec3 pcg3d(uvec3 v) {
     v = v * 1664525u + 1013904223u;

@@ -6,6 +6,7 @@
 // coverage, the frame's alpha stays the opaque 1.
 #include <map>
 #include <string>
+#include <utility>
 
 #include "engine/core/error.hpp"
 #include "engine/render/owned.hpp"
@@ -35,9 +36,17 @@ public:
             PassDesc pass = opaque.loadPassDesc();
             pass.name = "foliage alpha test";
             PassScope passScope(backend_, pass);
-            for (const FoliageDraw* draw : visible)
-                backend_.draw(batchDraw(draw->batch, pipelineFor(reference_.value_or(draw->alphaCutoff)),
-                                        surfaceParams(frame, draw->batch)));
+            for (const FoliageDraw* draw : visible) {
+                const float reference = reference_.value_or(draw->alphaCutoff);
+                const SurfaceParams s = surfaceParams(frame, draw->batch);
+                const LodDither dither = lodDitherOf(*draw);
+                if (dither == LodDither::Off) {
+                    backend_.draw(batchDraw(draw->batch, pipelineFor(reference, false), s));
+                    continue;
+                }
+                const DitheredSurfaceParams dithered{s.viewProj, s.baseColorFactor, s.baseColor, s.light, dither};
+                backend_.draw(batchDraw(draw->batch, pipelineFor(reference, true), dithered));
+            }
             passScope.end();
         }
         opaque.resolve();
@@ -50,26 +59,34 @@ private:
                                 " is outside [0, 1]");
     }
 
-    // One pipeline per distinct reference (materials rarely differ). Made before it is
-    // entered, so a refused reference or a create that throws leaves no empty entry behind.
-    PipelineHandle pipelineFor(float reference) {
-        if (const auto it = pipelines_.find(reference); it != pipelines_.end()) return it->second;
+    // One pipeline per distinct reference (materials rarely differ), and per crossfade dither
+    // (DitheredMaskedLit, made with the first crossfading batch). Made before it is entered,
+    // so a refused reference or a create that throws leaves no empty entry behind.
+    PipelineHandle pipelineFor(float reference, bool dithered) {
+        const auto key = std::make_pair(reference, dithered);
+        if (const auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
         checkReference(reference, "alphaCutoff");
         PipelineDesc p;
-        p.name = "foliage alpha test";
+        p.name = dithered ? "foliage alpha test, crossfade dithered" : "foliage alpha test";
         p.program = ProgramKind::MaskedLit;
+        if (dithered) {
+            if (!ditheredProgram_.get())
+                ditheredProgram_ = Owned<ProgramHandle>(backend_, backend_.createProgram(ditheredMaskedLitProgram()));
+            p.program = ditheredProgram_.get();
+        }
         p.depth = DepthState::testAndWrite(depthFunc_);
         p.raster.cull = CullMode::None;
         p.alphaTest = AlphaTest::discardBelow(reference);
         p.blend[0].writeMask = WriteRGB;
         Owned<PipelineHandle> pipeline(backend_, backend_.createPipeline(p));
-        return pipelines_.emplace(reference, std::move(pipeline)).first->second;
+        return pipelines_.emplace(key, std::move(pipeline)).first->second;
     }
 
     Backend& backend_;
     std::optional<float> reference_;
     CompareFunc depthFunc_;
-    std::map<float, Owned<PipelineHandle>> pipelines_;
+    Owned<ProgramHandle> ditheredProgram_;  // before the pipelines that use it, so released after them
+    std::map<std::pair<float, bool>, Owned<PipelineHandle>> pipelines_;
 };
 
 }  // namespace

@@ -44,6 +44,7 @@ public:
         p.alphaTest.alphaToCoverage = true;
         p.blend[0].writeMask = WriteRGB;  // the frame's alpha stays 1
         pipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
+        desc_ = p;
     }
 
     void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
@@ -65,13 +66,30 @@ public:
     }
 
 private:
-    DrawDesc drawOf(const FoliageFrame& frame, const FoliageDraw& draw) const {
+    DrawDesc drawOf(const FoliageFrame& frame, const FoliageDraw& draw) {
         const SurfaceParams s = surfaceParams(frame, draw.batch);
-        if (!sharpenProgram_.get()) return batchDraw(draw.batch, pipeline_, s);
-        // The reference the alpha test would use: the material's cutoff, or the one for all.
-        const SharpenedCoverageParams sharp{s.viewProj, s.baseColorFactor, s.baseColor, s.light,
-                                            reference_.value_or(draw.alphaCutoff)};
-        return batchDraw(draw.batch, pipeline_, sharp);
+        const LodDither dither = lodDitherOf(draw);
+        if (sharpenProgram_.get()) {
+            // The reference the alpha test would use: the material's cutoff, or the one for all.
+            const SharpenedCoverageParams sharp{
+                s.viewProj, s.baseColorFactor, s.baseColor, s.light, reference_.value_or(draw.alphaCutoff), dither};
+            return batchDraw(draw.batch, pipeline_, sharp);
+        }
+        if (dither == LodDither::Off) return batchDraw(draw.batch, pipeline_, s);
+        return batchDraw(draw.batch, ditheredPipeline(),
+                         DitheredSurfaceParams{s.viewProj, s.baseColorFactor, s.baseColor, s.light, dither});
+    }
+
+    // The plain pipeline on DitheredMaskedLit, for crossfading batches: made with the first.
+    PipelineHandle ditheredPipeline() {
+        if (!ditheredPipeline_.get()) {
+            ditheredProgram_ = Owned<ProgramHandle>(backend_, backend_.createProgram(ditheredMaskedLitProgram()));
+            PipelineDesc p = desc_;
+            p.name = "foliage alpha-to-coverage, crossfade dithered";
+            p.program = ditheredProgram_.get();
+            ditheredPipeline_ = Owned<PipelineHandle>(backend_, backend_.createPipeline(p));
+        }
+        return ditheredPipeline_;
     }
 
     Backend& backend_;
@@ -79,6 +97,9 @@ private:
     std::optional<float> reference_;
     Owned<ProgramHandle> sharpenProgram_;  // null: the plain MaskedLit surface
     Owned<PipelineHandle> pipeline_;
+    PipelineDesc desc_;  // pipeline_'s
+    Owned<ProgramHandle> ditheredProgram_;
+    Owned<PipelineHandle> ditheredPipeline_;
 };
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/masked_batch.hpp"
+#include "transparency/lod_dither.hpp"
 #include "transparency/technique.hpp"
 
 namespace transparency::detail {
@@ -21,6 +22,9 @@ engine::render::Rect screenRegion(std::span<const FoliageDraw* const> visible, c
 
 // The batches of every draw, for ssam::FoliageView.
 std::vector<engine::render::MaskedBatch> batchesOf(const FoliageFrame& frame);
+
+// How a draw's crossfade is dithered by the techniques that cannot fade by alpha.
+inline LodDither lodDitherOf(const FoliageDraw& draw) { return lodDitherFor(draw.lodLevel, draw.crossfading); }
 
 // MaskedLit's parameters for one batch under the frame's camera and light.
 engine::render::SurfaceParams surfaceParams(const FoliageFrame& frame, const engine::render::MaskedBatch& batch);

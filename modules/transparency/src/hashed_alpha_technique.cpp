@@ -57,8 +57,8 @@ public:
             std::size_t slot = 0;
             for (const FoliageDraw* draw : visible) {
                 const SurfaceParams s = surfaceParams(frame, draw->batch);
-                HashedLitParams params{s.viewProj, s.baseColorFactor,  s.baseColor,          s.light,
-                                       0u,         options_.hashScale, options_.anisotropic, false};
+                HashedLitParams params{s.viewProj,         s.baseColorFactor,    s.baseColor, s.light,           0u,
+                                       options_.hashScale, options_.anisotropic, false,       lodDitherOf(*draw)};
                 if (!draw->batch.instances) {  // one identity instance
                     params.seed = seedOfInstance(glm::mat4(1.0f)) ^ frameSeed;
                     backend_.draw(batchDraw(draw->batch, pipeline_, params));

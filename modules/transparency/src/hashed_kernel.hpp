@@ -16,15 +16,18 @@ namespace soft = engine::render::soft;
 struct HashedLitKernel {
     static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;  // uv and its derivatives included
     static_assert(kNeeds.uv && kNeeds.derivatives);
+    static constexpr bool kReadsPixels = true;  // the crossfade's screen-space dither (lod_dither.hpp)
     soft::MaskedLitProgram surface;
     std::uint32_t seed = 0;
     float hashScale = 1.0f;
     bool anisotropic = false;
     bool outputThreshold = false;
+    LodDither dither = LodDither::Off;
 
     HashedLitKernel(const HashedLitParams& p, const soft::TextureLookup& textures)
         : surface(engine::render::SurfaceParams{p.viewProj, p.baseColorFactor, p.baseColor, p.light}, textures),
-          seed(p.seed), hashScale(p.hashScale), anisotropic(p.anisotropic), outputThreshold(p.outputThreshold) {}
+          seed(p.seed), hashScale(p.hashScale), anisotropic(p.anisotropic), outputThreshold(p.outputThreshold),
+          dither(p.dither) {}
 
     glm::vec4 shade(const soft::Fragment& f) const {
         // The derivatives are exact for the triangle: d(uv)/dx = (d(uv/w)/dx - uv d(1/w)/dx) w
@@ -32,7 +35,8 @@ struct HashedLitKernel {
         // per-quad differences.
         const float t = hashedThreshold(f.uv, f.duv.dx, f.duv.dy, seed, hashScale, anisotropic);
         if (outputThreshold) return {t, t, t, 1.0f};
-        const glm::vec4 c = surface.shade(f);
+        // A crossfading instance's other-level pixels have alpha 0, below every threshold.
+        const glm::vec4 c = lodDitherOutput(surface.shade(f), f.color.a, dither, f.x, f.y);
         return {glm::vec3(c), c.a >= t ? 1.0f : 0.0f};
     }
 };

@@ -18,15 +18,18 @@ using namespace engine::render;
 ProgramDesc hashedLitProgram() {
     ProgramDesc d = describeProgram<HashedLitParams>("HashedLit", VertexInput::Mesh, "transparency::HashedLitParams");
     d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" +
-                    glsl::kHashedOutput + engine::render::glsl::kLitSurface;
+                    glsl::kLodDither + glsl::kHashedOutput + engine::render::glsl::kLitSurface;
     litSurfaceLayout<HashedLitParams>(d.gl);
     d.gl.uniforms.push_back({"u_seed", UniformType::Int, offsetof(HashedLitParams, seed)});
     d.gl.uniforms.push_back({"u_hashScale", UniformType::Float, offsetof(HashedLitParams, hashScale)});
     d.gl.uniforms.push_back({"u_anisotropic", UniformType::Bool, offsetof(HashedLitParams, anisotropic)});
     d.gl.uniforms.push_back({"u_outputThreshold", UniformType::Bool, offsetof(HashedLitParams, outputThreshold)});
+    d.gl.uniforms.push_back({"u_lodDither", UniformType::Int, offsetof(HashedLitParams, dither)});
     d.check = [](const void* params, const DrawCheck& check) {
-        const float scale = static_cast<const HashedLitParams*>(params)->hashScale;
-        if (!(scale > 0.0f && scale < 1e6f)) check.fail("hashScale " + std::to_string(scale) + " must be in (0, 1e6)");
+        const auto& p = *static_cast<const HashedLitParams*>(params);
+        if (!(p.hashScale > 0.0f && p.hashScale < 1e6f))
+            check.fail("hashScale " + std::to_string(p.hashScale) + " must be in (0, 1e6)");
+        checkLodDither(p.dither, check);
     };
     d.soft = soft::makeKernel<HashedLitKernel, HashedLitParams>();
     return d;

@@ -19,15 +19,19 @@ namespace soft = engine::render::soft;
 struct SharpenedCoverageLitKernel {
     static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;  // uv and its derivatives included
     static_assert(kNeeds.uv && kNeeds.derivatives);
+    static constexpr bool kReadsPixels = true;  // the crossfade's screen-space dither (lod_dither.hpp)
     soft::MaskedLitProgram surface;
     float reference = 0.5f;
+    LodDither dither = LodDither::Off;
 
     SharpenedCoverageLitKernel(const SharpenedCoverageParams& p, const soft::TextureLookup& textures)
         : surface(engine::render::SurfaceParams{p.viewProj, p.baseColorFactor, p.baseColor, p.light}, textures),
-          reference(p.reference) {}
+          reference(p.reference), dither(p.dither) {}
 
     glm::vec4 shade(const soft::Fragment& f) const {
-        const glm::vec4 c = surface.shade(f);
+        // A crossfading batch: sharpened without its weight, then the other level's pixels dropped.
+        const float weight = f.color.a;
+        const glm::vec4 c = lodFadeRemoved(surface.shade(f), weight, dither);
         float width = 0.0f;
         if (surface.texture) {  // without one, alpha is the factor's times the vertex's: flat
             // The quad's fine differences: x even pairs with x + 1, x odd with x - 1 (the
@@ -35,11 +39,13 @@ struct SharpenedCoverageLitKernel {
             // the sign moot).
             const float stepX = (f.x & 1) ? -1.0f : 1.0f, stepY = (f.y & 1) ? -1.0f : 1.0f;
             const float scale = surface.params.baseColorFactor.a * f.color.a;
-            const float ax = texelAlpha(f.uv + stepX * f.duv.dx, f) * scale;
-            const float ay = texelAlpha(f.uv + stepY * f.duv.dy, f) * scale;
+            const float ax =
+                lodFadeRemoved({0, 0, 0, texelAlpha(f.uv + stepX * f.duv.dx, f) * scale}, weight, dither).a;
+            const float ay =
+                lodFadeRemoved({0, 0, 0, texelAlpha(f.uv + stepY * f.duv.dy, f) * scale}, weight, dither).a;
             width = std::abs(ax - c.a) + std::abs(ay - c.a);
         }
-        return {glm::vec3(c), sharpenedCoverage(c.a, width, reference)};
+        return lodDitherDropped({glm::vec3(c), sharpenedCoverage(c.a, width, reference)}, weight, dither, f.x, f.y);
     }
 
 private:

@@ -19,13 +19,15 @@ ProgramDesc sharpenedCoverageLitProgram() {
     ProgramDesc d = describeProgram<SharpenedCoverageParams>("SharpenedCoverageLit", VertexInput::Mesh,
                                                              "transparency::SharpenedCoverageParams");
     d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" +
-                    glsl::kSharpenedCoverageOutput + engine::render::glsl::kLitSurface;
+                    glsl::kLodDither + glsl::kSharpenedCoverageOutput + engine::render::glsl::kLitSurface;
     litSurfaceLayout<SharpenedCoverageParams>(d.gl);
     d.gl.uniforms.push_back({"u_reference", UniformType::Float, offsetof(SharpenedCoverageParams, reference)});
+    d.gl.uniforms.push_back({"u_lodDither", UniformType::Int, offsetof(SharpenedCoverageParams, dither)});
     d.check = [](const void* params, const DrawCheck& check) {
-        const float reference = static_cast<const SharpenedCoverageParams*>(params)->reference;
-        if (!(reference >= 0.0f && reference <= 1.0f))
-            check.fail("reference " + std::to_string(reference) + " must be in [0, 1]");
+        const auto& p = *static_cast<const SharpenedCoverageParams*>(params);
+        if (!(p.reference >= 0.0f && p.reference <= 1.0f))
+            check.fail("reference " + std::to_string(p.reference) + " must be in [0, 1]");
+        checkLodDither(p.dither, check);
     };
     d.soft = soft::makeKernel<SharpenedCoverageLitKernel, SharpenedCoverageParams>();
     return d;

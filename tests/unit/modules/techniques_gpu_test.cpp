@@ -12,6 +12,7 @@
 #include "gpu_backend.hpp"
 #include "technique_fixture.hpp"
 #include "run_technique.hpp"
+#include "lod_dither_card.hpp"
 #include "sharpened_coverage_frame.hpp"
 
 namespace {
@@ -115,6 +116,25 @@ TEST(SSAM_GPU_SUITE(Techniques), SharpenedCoverageDerivativeMatchesTheSoftBacken
     // 0.0068.
     EXPECT_LE(worst, 1e-2f);
     std::printf("sharpened ramp on %s: largest difference from soft %.5f\n", kGpuName, worst);
+}
+
+// The crossfade dither (transparency/lod_dither.hpp) keeps the same pixels as on soft: the
+// GPU's gl_FragCoord and the soft rasterizer's pixel agree, and the weight divides out to 1.
+TEST(SSAM_GPU_SUITE(Techniques), LodDitherKeepsTheSoftBackendsPixels) {
+    auto soft = soft::createSoftBackend({.threads = 1});
+    auto gpu = gpuBackend();
+    for (const LodDither dither : {LodDither::KeepBelow, LodDither::KeepAbove})
+        for (const float w : {0.3f, 0.7f}) {
+            const Readback s = drawDitheredCard(*soft, w, dither), g = drawDitheredCard(*gpu, w, dither);
+            ASSERT_EQ(s.values.size(), g.values.size());
+            int differing = 0, kept = 0;
+            for (std::size_t i = 3; i < s.values.size(); i += 4) {
+                differing += s.values[i] != g.values[i];
+                kept += g.values[i] == 1.0f;
+            }
+            EXPECT_EQ(differing, 0) << kGpuName << " dither " << int(dither) << " w " << w;
+            EXPECT_GT(kept, 0);
+        }
 }
 
 TEST(SSAM_GPU_SUITE(Techniques), SSAM_GPU_NAME(ReferenceRefuses, WithAClearMessage)) {

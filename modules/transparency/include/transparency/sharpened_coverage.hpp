@@ -23,6 +23,7 @@
 #include "engine/render/program.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
+#include "transparency/lod_dither.hpp"
 
 namespace transparency {
 
@@ -42,7 +43,8 @@ struct SharpenedCoverageParams {
     glm::vec4 baseColorFactor{1.0f};
     engine::render::TextureBinding baseColor;
     engine::render::DirectionalLight light;
-    float reference = 0.5f;  // the alpha test's reference, in [0, 1]
+    float reference = 0.5f;             // the alpha test's reference, in [0, 1]
+    LodDither dither = LodDither::Off;  // a crossfading batch's level (lod_dither.hpp)
 };
 
 engine::render::ProgramDesc sharpenedCoverageLitProgram();

@@ -42,6 +42,10 @@ struct FoliageDraw {
     std::span<const engine::render::Instance> instances;  // the contents of batch.instances
     engine::render::BoundingBox meshBounds;               // of one instance, in model space
     float alphaCutoff = 0.5f;  // the material's (glTF alphaCutoff): alpha-test techniques use it
+    // Its level of detail and whether its instances crossfade (engine::scene::DrawBatch): the
+    // alpha-test techniques dither those (transparency/lod_dither.hpp).
+    int lodLevel = 0;
+    bool crossfading = false;
 };
 
 struct FoliageFrame {

@@ -20,6 +20,12 @@ struct DrawBatch {
     std::vector<render::Instance> instances;
     Aabb worldBounds;
     float viewDistance = 0.0f;  // of the bounds' centre, for sorting Blend batches
+    // The level of detail the part belongs to (0: the full model, or no LevelsOfDetail), and
+    // whether the batch holds instances inside a crossfade band (each one's weight in its tint
+    // alpha). Crossfading instances are batched apart from steady ones, so that techniques
+    // which cannot fade by alpha (alpha testing: a dither instead) change only those draws.
+    int level = 0;
+    bool crossfading = false;
 };
 
 struct DrawLists {
@@ -41,8 +47,9 @@ inline render::BufferHandle vertexBufferOf(const DrawBatch& batch, const MeshPar
 // A part overridden by the entity's VertexOverride gets a batch of its own with that buffer
 // and the override's bounds, after the shared batch of the same part. An entity with
 // LevelsOfDetail draws the model of its chosen level (levels_of_detail.hpp), or inside a
-// crossfade band both levels, each instance's tint alpha its level's weight (else 1); its
-// VertexOverride belongs to level 0's parts and is used only there.
+// crossfade band both levels, each instance's tint alpha its level's weight (else 1), in
+// batches of their own after the steady batch of the same part; its VertexOverride belongs to
+// level 0's parts and is used only there.
 DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, const glm::mat4& viewProj,
                            const glm::vec3& cameraPosition);
 

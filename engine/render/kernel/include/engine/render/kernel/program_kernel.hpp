@@ -8,8 +8,9 @@
 //     skips the others, [Hathaway 2010] §3.5.2's dead-code stripping done by hand);
 //   - `glm::vec4 shade(const Fragment&) const`: straight-alpha colour of one pixel;
 //   - optionally `static constexpr bool kReadsPixels = true` when shade() reads textures
-//     at the fragment's pixel (full-screen programs): the output then varies across a
-//     triangle even when every interpolant is constant;
+//     at the fragment's pixel (full-screen programs) or otherwise depends on the pixel (a
+//     screen-space dither): the output then varies across a triangle even when every
+//     interpolant is constant;
 //   - optionally fast-path hooks, each taken by the rasterizer for any program that declares
 //     it (rasterizer/rasterizer_class.hpp defines each contract; the built-in programs of
 //     kernel/programs.hpp use the same): the composite hooks (compositeColor, compositeFactor),

@@ -98,7 +98,7 @@ constexpr bool hasReplicatedAlphaHooks() {
 }
 #endif
 
-// Whether the program's shade() reads textures at the fragment's pixel (program_kernel.hpp).
+// Whether the program's shade() depends on the fragment's pixel (program_kernel.hpp).
 template <typename Program>
 constexpr bool readsPixels() {
     if constexpr (requires { Program::kReadsPixels; }) return Program::kReadsPixels;
