@@ -163,6 +163,8 @@ TEST(LevelsOfDetail, ExtractionDrawsBothLevelsOfACrossfadeWithTheirWeights) {
             const auto& parts = row.library.partsOf(row.levels.models[std::size_t(level)]);
             if (std::find(parts.begin(), parts.end(), b.part) == parts.end()) continue;
             ASSERT_EQ(b.instances.size(), 1u);
+            EXPECT_EQ(b.level, level);
+            EXPECT_TRUE(b.crossfading);
             weight[std::size_t(level)] = b.instances[0].tint.a;
             EXPECT_EQ(glm::vec3(b.instances[0].tint), glm::vec3(1.0f)) << "only the alpha carries the weight";
         }
@@ -172,6 +174,35 @@ TEST(LevelsOfDetail, ExtractionDrawsBothLevelsOfACrossfadeWithTheirWeights) {
     EXPECT_FLOAT_EQ(weight[0] + weight[1], 1.0f);
     scene::selectLevelsOfDetail(row.registry, row.library, {glm::vec3(0, 4, 0), row.focal, 0.1f, 0.0f});
     EXPECT_EQ(row.extract().instancesAtLevel, (std::array<std::uint32_t, 3>{1, 0, 0})) << "no band: the level kept";
+}
+
+// A crossfading plant's instances are batched apart from the steady plants of the same level
+// (after them), so the techniques that dither draw only those: DrawBatch::crossfading.
+TEST(LevelsOfDetail, CrossfadingInstancesHaveBatchesOfTheirOwn) {
+    TreeRow row;
+    row.plantAt(row.levels.belowPixels[0] * 1.02f);  // in the band: levels 0 and 1
+    // Level 1, steady: between the two thresholds, outside both bands.
+    row.plantAt(0.5f * (row.levels.belowPixels[0] * 0.85f + row.levels.belowPixels[1] * 1.15f));
+    racer::attachPlantLevels(row.registry, {{row.full, row.levels}});
+    scene::selectLevelsOfDetail(row.registry, row.library, {glm::vec3(0, 4, 0), row.focal, 0.1f, 0.1f});
+    const scene::DrawLists lists = row.extract();
+    const auto& levelOne = row.library.partsOf(row.levels.models[1]);
+    int steady = 0, fading = 0;
+    for (std::size_t i = 0; i < lists.mask.size(); ++i) {
+        const scene::DrawBatch& b = lists.mask[i];
+        if (std::find(levelOne.begin(), levelOne.end(), b.part) == levelOne.end()) continue;
+        EXPECT_EQ(b.level, 1);
+        ASSERT_EQ(b.instances.size(), 1u);
+        EXPECT_EQ(b.instances[0].tint.a < 1.0f, b.crossfading);
+        (b.crossfading ? fading : steady) += 1;
+        if (b.crossfading) {  // right after its part's steady batch
+            ASSERT_GT(i, 0u);
+            EXPECT_EQ(lists.mask[i - 1].part, b.part);
+            EXPECT_FALSE(lists.mask[i - 1].crossfading);
+        }
+    }
+    EXPECT_GT(steady, 0);
+    EXPECT_EQ(fading, steady);  // each level-1 part: one steady batch, one crossfading
 }
 
 // The band damps motion only: the same height on screen reached by moving keeps the level,

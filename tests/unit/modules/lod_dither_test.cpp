@@ -89,8 +89,8 @@ TEST(LodDither, CrossfadingLevelsShareThePixelsUnderEveryTechniqueThatTests) {
             for (int x = 0; x < kSize; ++x) {
                 const glm::vec3 c = rgbAt(r, x, y);
                 const bool red = c == glm::vec3(1, 0, 0), isGreen = c == glm::vec3(0, 1, 0);
-                EXPECT_TRUE(red || isGreen) << techniqueName(kind) << " at " << x << "," << y << ": " << c.r << " "
-                                            << c.g << " " << c.b;
+                EXPECT_TRUE(red || isGreen)
+                    << techniqueName(kind) << " at " << x << "," << y << ": " << c.r << " " << c.g << " " << c.b;
                 green += isGreen;
             }
         EXPECT_NEAR(float(green) / float(kSize * kSize), 0.6f, 1.0f / 16.0f) << techniqueName(kind);
