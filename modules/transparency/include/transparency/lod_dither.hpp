@@ -5,10 +5,11 @@
 // (engine/scene/levels_of_detail.hpp): SSAM and the blending techniques multiply alpha by it,
 // but an alpha test, a hashed test or alpha to coverage would only thin the leaves. They keep
 // a weight's share of the pixels instead, by a 4x4 ordered dither in screen space [Bayer 1973],
-// as engines ship it (Unreal's dithered LOD transition): the finer level keeps the pixels whose
-// dither threshold lies below its weight 1 - w, the coarser one the others, so every pixel of
-// the band is drawn by exactly one level — no hole, no double coverage — and each level's
-// alpha is taken without the weight (divided out) before its test.
+// as engines ship it (Unreal's dithered LOD transition): of the 16 thresholds of each 4x4
+// block, one level keeps those below its weight and the other those at or above one minus its
+// weight, so every pixel of the band is drawn by exactly one level (no hole, no double
+// coverage) and the coarser level's share rises with its weight, in steps of 1/16. Each
+// level's alpha is taken without the weight (divided out) before its test.
 //
 // Which pixels a level keeps goes by the parity of its level, since a crossfade always pairs
 // two neighbouring levels: even levels keep thresholds below their weight, odd levels those at
