@@ -2,7 +2,6 @@
 #include "ssam/composite_program.hpp"
 
 #include <cmath>
-#include <cstddef>
 #include <string>
 
 #include "ssam_engine_glsl.hpp"  // generated from engine_glsl/
@@ -25,15 +24,6 @@ std::string fragment() {
 ProgramDesc compositeProgram() {
     ProgramDesc d = describeProgram<CompositeParams>("Composite", VertexInput::Fullscreen, "ssam::CompositeParams");
     d.gl.fragment = fragment();
-    d.gl.uniforms = {{"u_maskLerp", UniformType::Float, offsetof(CompositeParams, maskLerp)},
-                     {"u_squareMask", UniformType::Bool, offsetof(CompositeParams, squareMask)}};
-    // Read at every target pixel: at least the target's size.
-    d.gl.textures = {
-        {"u_foliage", offsetof(CompositeParams, foliage), 0, TextureRead::Texel, TextureUse::FullSize},
-        {"u_mask", offsetof(CompositeParams, mask), 1, TextureRead::Texel, TextureUse::FullSize},
-        {"u_maskAdd", offsetof(CompositeParams, maskAdd), 2, TextureRead::Texel, TextureUse::FullSize, true,
-         "u_hasMaskAdd"},
-    };
     d.check = [](const void* params, const DrawCheck& check) {
         if (!std::isfinite(static_cast<const CompositeParams*>(params)->maskLerp)) check.fail("maskLerp is not finite");
     };

@@ -2,7 +2,6 @@
 #include "foliage_depth_program.hpp"
 
 #include <cmath>
-#include <cstddef>
 #include <string>
 
 #include "ssam_engine_glsl.hpp"  // generated from engine_glsl/
@@ -21,15 +20,6 @@ ProgramDesc foliageDepthProgram() {
     d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" +
                     engine_glsl::kFoliageDepthHead + ssam::glsl::kCompositeMask + ssam::glsl::kFoliageDepthOutput +
                     engine::render::glsl::kLitSurface;
-    litSurfaceLayout<FoliageDepthParams>(d.gl);
-    d.gl.uniforms.push_back({"u_maskLerp", UniformType::Float, offsetof(FoliageDepthParams, maskLerp)});
-    d.gl.uniforms.push_back({"u_squareMask", UniformType::Bool, offsetof(FoliageDepthParams, squareMask)});
-    d.gl.uniforms.push_back({"u_threshold", UniformType::Float, offsetof(FoliageDepthParams, threshold)});
-    // Read at the fragment's pixel: at least the target's size.
-    d.gl.textures.push_back(
-        {"u_mask", offsetof(FoliageDepthParams, mask), 1, TextureRead::Texel, TextureUse::FullSize});
-    d.gl.textures.push_back({"u_maskAdd", offsetof(FoliageDepthParams, maskAdd), 2, TextureRead::Texel,
-                             TextureUse::FullSize, true, "u_hasMaskAdd"});
     d.check = [](const void* params, const DrawCheck& check) {
         const auto* p = static_cast<const FoliageDepthParams*>(params);
         if (!std::isfinite(p->maskLerp)) check.fail("maskLerp is not finite");

@@ -8,6 +8,7 @@
 // the foliage again, depth only, with the colour pass's surface and alpha test, discarding where
 // the composited mask is below the threshold. Where the mask reaches it the host's depth is the
 // colour pass's; below it, the opaque depth: the same depth as the full-screen restore.
+#include "engine/render/param_block.hpp"
 #include "engine/render/program.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
@@ -15,19 +16,16 @@
 
 namespace ssam {
 
-struct FoliageDepthParams {
-    // The colour pass's surface (MaskedLit's): its alpha is the one the alpha test sees.
-    glm::mat4 viewProj{1.0f};
-    glm::vec4 baseColorFactor{1.0f};
-    engine::render::TextureBinding baseColor;
-    engine::render::DirectionalLight light;
-    // The composite's mask (composite_program.hpp's fields) and the threshold.
-    engine::render::TextureHandle mask;
-    engine::render::TextureHandle maskAdd;
-    float maskLerp = 0.85f;
-    bool squareMask = true;
-    float threshold = 0.0f;
-};
+// The parameter block, declared once (engine/render/param_block.hpp): the colour pass's surface
+// (MaskedLit's: its alpha is the one the alpha test sees), then the composite's mask
+// (composite_program.hpp's fields), each read at the fragment's pixel, and the threshold.
+#define SSAM_FOLIAGE_DEPTH_PARAMS(UNIFORM, DIRECTION, TEXTURE) \
+    TEXTURE(mask, Texel, FullSize, Required)                   \
+    TEXTURE(maskAdd, Texel, FullSize, Optional)                \
+    UNIFORM(float, maskLerp, 0.85f)                            \
+    UNIFORM(bool, squareMask, true)                            \
+    UNIFORM(float, threshold, 0.0f)
+ENGINE_PARAM_BLOCK_ON_LIT_SURFACE(FoliageDepthParams, SSAM_FOLIAGE_DEPTH_PARAMS);
 
 // The colour pass's surface, the composite's mask and the threshold as one draw's parameters.
 inline FoliageDepthParams foliageDepthParams(const engine::render::SurfaceParams& surface,

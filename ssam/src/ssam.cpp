@@ -79,6 +79,16 @@ glm::vec4 clearColorOf(const core::ColorTarget& target) {
     return {target.clearColor[0], target.clearColor[1], target.clearColor[2], target.clearColor[3]};
 }
 
+// One of the core's foliage passes (its name, its first target cleared as it says) into `color`,
+// on `depth` as it is.
+PassDesc foliagePassOf(const core::PassDescription& description, TextureHandle color, TextureHandle depth) {
+    PassDesc pass;
+    pass.name = description.name;
+    pass.color[0] = {color, LoadOp::Clear, clearColorOf(description.colorTargets[0])};
+    pass.depth = {depth, LoadOp::Load};
+    return pass;
+}
+
 }  // namespace
 
 CompareFunc compareFuncOf(DepthTest test) {
@@ -193,18 +203,11 @@ FramePlan ScreenSpaceAlphaMask::cull(int width, int height, const FoliageView& v
 
 void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
                                     const Intermediates& targets) {
-    PassDesc pass;
-    const core::PassDescription& mask = passes_.mask;
-    pass.name = mask.name;
-    pass.color[0] = {targets.mask, LoadOp::Clear, clearColorOf(mask.colorTargets[0])};
-    if (targets.maskAdd) pass.color[1] = {targets.maskAdd, LoadOp::Clear, clearColorOf(mask.colorTargets[1])};
-    pass.depth = {depth, LoadOp::Load};
+    PassDesc pass = foliagePassOf(passes_.mask, targets.mask, depth);
+    if (targets.maskAdd) pass.color[1] = {targets.maskAdd, LoadOp::Clear, clearColorOf(passes_.mask.colorTargets[1])};
     PassScope passScope(backend_, pass);
     for (const MaskedBatch* batch : plan.visible) {
-        AlphaOnlyParams params;
-        params.viewProj = view.viewProj;
-        params.alphaFactor = batch->baseColorFactor.a;
-        params.baseColor = batch->baseColor;
+        const AlphaOnlyParams params{view.viewProj, batch->baseColorFactor.a, batch->baseColor};
         backend_.draw(maskedBatchDraw(*batch, pipelines_.mask, params));
     }
     passScope.end();
@@ -212,11 +215,7 @@ void ScreenSpaceAlphaMask::maskPass(const FramePlan& plan, const FoliageView& vi
 
 void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& view, TextureHandle depth,
                                      const Intermediates& targets) {
-    PassDesc pass;
-    const core::PassDescription& color = passes_.color;
-    pass.name = color.name;
-    pass.color[0] = {targets.foliage, LoadOp::Clear, clearColorOf(color.colorTargets[0])};
-    pass.depth = {depth, LoadOp::Load};
+    PassDesc pass = foliagePassOf(passes_.color, targets.foliage, depth);
     if (targets.depthCopy) {
         // depthMaskThreshold > 0: the colour pass picks the nearest leaf in a copy of the opaque
         // depth; the host's depth gets the foliage later (foliageDepthPass), where the mask allows.
@@ -230,13 +229,7 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
 }
 
 CompositeParams ScreenSpaceAlphaMask::compositeParams(const Intermediates& targets) const {
-    CompositeParams params;
-    params.foliage = targets.foliage;
-    params.mask = targets.mask;
-    params.maskAdd = targets.maskAdd;
-    params.maskLerp = settings_.maskLerp;
-    params.squareMask = settings_.squareMask;
-    return params;
+    return {targets.foliage, targets.mask, targets.maskAdd, settings_.maskLerp, settings_.squareMask};
 }
 
 void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color, const Intermediates& targets) {

@@ -2,11 +2,14 @@
 #pragma once
 // The draws tests issue most: a pipeline, its parameters and a range of vertices, or a
 // full-screen program's pipeline and parameters. Fields a test needs beyond these (indices,
-// instances, a scissor) it sets on the result.
+// instances, a scissor) it sets on the result. And the whole of a full-screen program's one draw.
 #include <cstdint>
+#include <string>
 #include <utility>
 
+#include "engine/render/backend.hpp"
 #include "engine/render/pass.hpp"
+#include "engine/render/pass_scope.hpp"
 
 namespace ssam::testing {
 
@@ -28,6 +31,30 @@ inline engine::render::DrawDesc fullscreenDraw(engine::render::PipelineHandle pi
     d.pipeline = pipeline;
     d.params = std::move(params);
     return d;
+}
+
+// `program` drawn full screen once into `target`, cleared to zero first, in a pass of its own
+// named `name`, through a pipeline made for it and destroyed again (also when the draw throws).
+inline void drawFullscreenInto(engine::render::Backend& backend, engine::render::ProgramRef program,
+                               engine::render::DrawParams params, engine::render::TextureHandle target,
+                               const std::string& name = "fullscreen") {
+    using namespace engine::render;
+    PipelineDesc pd;
+    pd.name = name;
+    pd.program = program;
+    const PipelineHandle pipeline = backend.createPipeline(pd);
+    PassDesc pass;
+    pass.name = name;
+    pass.color[0] = {target, LoadOp::Clear, glm::vec4(0.0f)};
+    try {
+        PassScope scope(backend, pass);
+        backend.draw(fullscreenDraw(pipeline, std::move(params)));
+        scope.end();
+    } catch (...) {
+        backend.destroy(pipeline);
+        throw;
+    }
+    backend.destroy(pipeline);
 }
 
 }  // namespace ssam::testing

@@ -111,18 +111,8 @@ inline engine::render::Readback drawProbe(engine::render::Backend& backend, Prob
     const TextureHandle target =
         backend.createTexture(renderTargetDesc("probe target", kProbeWidth, kProbeHeight, Format::RGBA32F));
     const ProgramHandle program = backend.createProgram(probeProgram());
-    PipelineDesc pd;
-    pd.name = "probe";
-    pd.program = program;
-    const PipelineHandle pipeline = backend.createPipeline(pd);
-    PassDesc pass;
-    pass.name = "probe";
-    pass.color[0] = {target, LoadOp::Clear, glm::vec4(0.0f)};
-    backend.beginPass(pass);
-    backend.draw(fullscreenDraw(pipeline, p));
-    backend.endPass();
+    drawFullscreenInto(backend, program, p, target, "probe");
     Readback r = backend.readback(target);
-    backend.destroy(pipeline);
     backend.destroy(program);
     backend.destroy(target);
     backend.destroy(p.source);

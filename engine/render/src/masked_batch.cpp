@@ -4,16 +4,15 @@
 namespace engine::render {
 
 DrawDesc maskedBatchDraw(const MaskedBatch& batch, PipelineHandle pipeline, DrawParams params) {
-    DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = params;
-    d.vertices = batch.vertices;
-    d.indices = batch.indices;
-    d.first = batch.first;
-    d.count = batch.count;
-    d.instances = batch.instances;
-    d.instanceCount = batch.instanceCount;
-    return d;
+    return {.pipeline = pipeline,
+            .params = params,
+            .vertices = batch.vertices,
+            .indices = batch.indices,
+            .first = batch.first,
+            .count = batch.count,
+            .instances = batch.instances,
+            .instanceCount = batch.instanceCount,
+            .scissor = std::nullopt};
 }
 
 }  // namespace engine::render

@@ -14,25 +14,18 @@ ProgramDesc describe(ProgramKind kind, VertexInput input, const char* paramsName
     return describeProgram<Params>(programKindName(kind), input, paramsName);
 }
 
-ProgramDesc flat() {
-    ProgramDesc d = describe<FlatParams>(ProgramKind::Flat, VertexInput::Mesh, "FlatParams");
-    d.gl.uniforms = {{"u_viewProj", UniformType::Mat4, offsetof(FlatParams, viewProj)},
-                     {"u_color", UniformType::Vec4, offsetof(FlatParams, color)}};
-    return d;
-}
+ProgramDesc flat() { return describe<FlatParams>(ProgramKind::Flat, VertexInput::Mesh, "FlatParams"); }
 
-ProgramDesc surface(ProgramKind kind) {
-    ProgramDesc d = describe<SurfaceParams>(kind, VertexInput::Mesh, "SurfaceParams");
-    litSurfaceLayout<SurfaceParams>(d.gl);
-    return d;
-}
+ProgramDesc surface(ProgramKind kind) { return describe<SurfaceParams>(kind, VertexInput::Mesh, "SurfaceParams"); }
 
 ProgramDesc alphaOnly() {
     ProgramDesc d = describe<AlphaOnlyParams>(ProgramKind::AlphaOnly, VertexInput::Mesh, "AlphaOnlyParams");
-    d.gl.uniforms = {{"u_viewProj", UniformType::Mat4, offsetof(AlphaOnlyParams, viewProj)},
-                     {"u_alphaFactor", UniformType::Float, offsetof(AlphaOnlyParams, alphaFactor)}};
-    d.gl.textures = {{"u_baseColor", offsetof(AlphaOnlyParams, baseColor), 0, TextureRead::Sampled, TextureUse::Sampled,
-                      true, "u_hasTexture", "u_filter"}};
+    // The shared sampling (glsl/base_color_sampling.glsl) reads the lit surface's names, and this
+    // program ignores premultiplication (it outputs alpha alone).
+    TextureField& baseColor = d.gl.textures.at(0);
+    baseColor.presentUniform = "u_hasTexture";
+    baseColor.filterUniform = "u_filter";
+    baseColor.premultipliedUniform = nullptr;
     return d;
 }
 

@@ -77,19 +77,17 @@ void GrassFeature::draw(const engine::scene::FeatureFrame& frame) {
     pass.color[0] = {frame.color, LoadOp::Load};
     pass.depth = {frame.depth, LoadOp::Load};
     PassScope passScope(backend_, pass);
-    SurfaceParams s;
-    s.viewProj = frame.viewProj;
-    s.baseColor = {blades_, {Filter::Bilinear, AddressMode::Wrap, AddressMode::Clamp}};
-    s.light = frame.sun;
-    DrawDesc d;
-    d.pipeline = cards;
-    d.params = s;
-    d.vertices = vertices_;
-    d.indices = indices_;
-    d.count = indexCount_;
-    d.instances = instances;
-    d.instanceCount = std::uint32_t(visible_.size());
-    backend_.draw(d);
+    const SurfaceParams surface{.viewProj = frame.viewProj,
+                                .baseColor = {blades_, {Filter::Bilinear, AddressMode::Wrap, AddressMode::Clamp}},
+                                .light = frame.sun};
+    backend_.draw({.pipeline = cards,
+                   .params = surface,
+                   .vertices = vertices_,
+                   .indices = indices_,
+                   .count = indexCount_,
+                   .instances = instances,
+                   .instanceCount = std::uint32_t(visible_.size()),
+                   .scissor = std::nullopt});
     passScope.end();
 }
 

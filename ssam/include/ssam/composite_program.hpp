@@ -9,18 +9,22 @@
 // post-process ("resembles frame-buffer blending ... SRCALPHA and INVSRCALPHA"). Composing in
 // place lets a scissor limit the work to the foliage's screen bounds.
 // One GLSL source serves both the engine backend's program and ssam::gl (ssam/src/core/glsl/composite*.glsl).
+#include "engine/render/param_block.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
 
 namespace ssam {
 
-struct CompositeParams {
-    engine::render::TextureHandle foliage;
-    engine::render::TextureHandle mask;     // r = MAX mask, a = ADD mask (one RGBA target)
-    engine::render::TextureHandle maskAdd;  // optional: ADD mask in its own R target (then `mask` holds MAX in r)
-    float maskLerp = 0.85f;
-    bool squareMask = true;
-};
+// The parameter block, declared once (engine/render/param_block.hpp): the struct, its uniform and
+// texture table (every texture read at every target pixel: at least the target's size) and the
+// names the GLSL reads (u_maskAddBound: whether maskAdd is given).
+#define SSAM_COMPOSITE_PARAMS(UNIFORM, DIRECTION, TEXTURE)                                                      \
+    TEXTURE(foliage, Texel, FullSize, Required)                                                                 \
+    TEXTURE(mask, Texel, FullSize, Required)    /* r = MAX mask, a = ADD mask (one RGBA target) */              \
+    TEXTURE(maskAdd, Texel, FullSize, Optional) /* ADD mask in its own R target (then `mask` holds MAX in r) */ \
+    UNIFORM(float, maskLerp, 0.85f)                                                                             \
+    UNIFORM(bool, squareMask, true)
+ENGINE_PARAM_BLOCK(CompositeParams, SSAM_COMPOSITE_PARAMS);
 
 // For Backend::createProgram. Draws are checked for: foliage and mask textures of at least the
 // target's size (and maskAdd when given), a finite maskLerp.

@@ -63,7 +63,7 @@ const std::string kCompositeHead = std::string(R"(#version 330 core
 uniform sampler2D u_foliage;
 uniform sampler2D u_mask;
 uniform sampler2D u_maskAdd;
-uniform bool u_hasMaskAdd;
+uniform bool u_maskAddBound;
 uniform float u_maskLerp;
 uniform bool u_squareMask;
 )") + ssam::glsl::kCompositeMask + ssam::glsl::kComposite;
@@ -78,7 +78,7 @@ void CompositeInputs::locate(const detail::GlFunctions& gl, unsigned int program
                            {{&foliage, "u_foliage"},
                             {&mask, "u_mask"},
                             {&maskAdd, "u_maskAdd"},
-                            {&hasMaskAdd, "u_hasMaskAdd"},
+                            {&hasMaskAdd, "u_maskAddBound"},
                             {&maskLerp, "u_maskLerp"},
                             {&square, "u_squareMask"}});
 }

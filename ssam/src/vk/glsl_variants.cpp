@@ -85,7 +85,7 @@ layout(push_constant, std430) uniform SsamComposite {
            R"(} u_composite;
 #define u_maskLerp u_composite.maskLerp
 #define u_squareMask (u_composite.squareMask != 0u)
-#define u_hasMaskAdd (u_composite.hasMaskAdd != 0u)
+#define u_maskAddBound (u_composite.hasMaskAdd != 0u)
 )";
 }
 constexpr const char* kRestoreExtra = "    layout(offset = 12) float threshold;\n";

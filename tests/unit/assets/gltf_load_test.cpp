@@ -15,6 +15,7 @@ namespace {
 using assets_test::errorOf;
 using assets_test::fixture;
 using engine::assets::AlphaMode;
+using engine::assets::Camera;
 using engine::assets::LoadedModel;
 using engine::assets::LoadOptions;
 using engine::assets::loadGltf;
@@ -29,6 +30,19 @@ void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance = 1e-5f) {
 void expectNear(glm::vec2 actual, glm::vec2 expected, float tolerance = 1e-5f) {
     EXPECT_NEAR(actual.x, expected.x, tolerance);
     EXPECT_NEAR(actual.y, expected.y, tolerance);
+}
+
+// The model has one camera, `expected` in every field (the fixtures name none), carried by node `node`.
+void expectOneCamera(const LoadedModel& model, const Camera& expected, std::size_t node) {
+    ASSERT_EQ(model.cameras.size(), 1u);
+    const Camera& camera = model.cameras[0];
+    EXPECT_EQ(camera.name, expected.name);
+    EXPECT_EQ(camera.type, expected.type);
+    for (auto field :
+         {&Camera::yfov, &Camera::aspectRatio, &Camera::xmag, &Camera::ymag, &Camera::znear, &Camera::zfar})
+        EXPECT_FLOAT_EQ(camera.*field, expected.*field);
+    ASSERT_LT(node, model.nodes.size());
+    EXPECT_EQ(model.nodes[node].camera, 0);
 }
 
 // What make_fixtures.py wrote: a triangle under a translated root, scaled by 2 and rotated
@@ -87,14 +101,14 @@ void expectTriangle(const LoadedModel& model) {
     expectNear(model.bounds.min, {-1, 2, 3});
     expectNear(model.bounds.max, {1, 4, 3});
 
-    ASSERT_EQ(model.cameras.size(), 1u);
-    const auto& camera = model.cameras[0];
-    EXPECT_EQ(camera.type, engine::assets::Camera::Type::Perspective);
-    EXPECT_FLOAT_EQ(camera.yfov, 0.8f);
-    EXPECT_FLOAT_EQ(camera.aspectRatio, 1.5f);
-    EXPECT_FLOAT_EQ(camera.znear, 0.1f);
-    EXPECT_FLOAT_EQ(camera.zfar, 100.0f);
-    EXPECT_EQ(model.nodes[2].camera, 0);
+    expectOneCamera(model,
+                    {.name = "",
+                     .type = Camera::Type::Perspective,
+                     .yfov = 0.8f,
+                     .aspectRatio = 1.5f,
+                     .znear = 0.1f,
+                     .zfar = 100.0f},
+                    2);
     expectNear(glm::vec3(model.nodes[2].world[3]), {0, 1, 5});  // from the node's matrix
     EXPECT_TRUE(model.warnings.empty());
 }
@@ -197,14 +211,9 @@ TEST(GltfLoad, ChosenSceneAndItsBounds) {
 
 TEST(GltfLoad, OrthographicCamera) {
     const LoadedModel model = loadGltf(fixture("alpha_modes.gltf"));
-    ASSERT_EQ(model.cameras.size(), 1u);
-    const auto& camera = model.cameras[0];
-    EXPECT_EQ(camera.type, engine::assets::Camera::Type::Orthographic);
-    EXPECT_FLOAT_EQ(camera.xmag, 2.0f);
-    EXPECT_FLOAT_EQ(camera.ymag, 1.5f);
-    EXPECT_FLOAT_EQ(camera.znear, 0.01f);
-    EXPECT_FLOAT_EQ(camera.zfar, 50.0f);
-    EXPECT_EQ(model.nodes[7].camera, 0);
+    expectOneCamera(
+        model,
+        {.name = "", .type = Camera::Type::Orthographic, .xmag = 2.0f, .ymag = 1.5f, .znear = 0.01f, .zfar = 50.0f}, 7);
 }
 
 TEST(GltfLoad, ExtensionOnlyUsedIsAWarning) {

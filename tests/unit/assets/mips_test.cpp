@@ -14,11 +14,7 @@
 
 namespace {
 
-using engine::assets::alphaCoverage;
-using engine::assets::generateCoveragePreservingMips;
-using engine::assets::generateMips;
-using engine::assets::MipOptions;
-using engine::assets::RgbaImage;
+using namespace engine::assets;
 using engine::render::AlphaMode;
 
 // Foliage-like alpha: small leaves (discs of radius 1.5..3.5 texels with a soft one-texel

@@ -13,19 +13,22 @@
 namespace {
 
 using engine::Error;
-using engine::ecs::CommandBuffer;
-using engine::ecs::Entity;
-using engine::ecs::Registry;
+using namespace engine::ecs;
 
 struct Value {
     int v = 0;
 };
 struct Tag {};
 
-TEST(EcsCommandBuffer, NothingHappensBeforeFlush) {
+// A registry and a command buffer recording for it.
+class EcsCommandBuffer : public ::testing::Test {
+protected:
     Registry registry;
+    CommandBuffer commands{registry};
+};
+
+TEST_F(EcsCommandBuffer, NothingHappensBeforeFlush) {
     const Entity e = registry.create();
-    CommandBuffer commands(registry);
     commands.add<Value>(e, 1);
     commands.destroy(e);
     EXPECT_EQ(commands.size(), 2u);
@@ -33,11 +36,9 @@ TEST(EcsCommandBuffer, NothingHappensBeforeFlush) {
     EXPECT_FALSE(registry.has<Value>(e));
 }
 
-TEST(EcsCommandBuffer, SameEntityCommandsApplyInRecordingOrder) {
-    Registry registry;
+TEST_F(EcsCommandBuffer, SameEntityCommandsApplyInRecordingOrder) {
     const Entity added = registry.create();
     const Entity removed = registry.create();
-    CommandBuffer commands(registry);
     commands.add<Value>(added, 1);
     commands.remove<Value>(added);
     commands.add<Value>(added, 3);
@@ -50,11 +51,9 @@ TEST(EcsCommandBuffer, SameEntityCommandsApplyInRecordingOrder) {
     EXPECT_FALSE(registry.has<Value>(removed));
 }
 
-TEST(EcsCommandBuffer, DestroyOrderDecidesWhatSurvives) {
-    Registry registry;
+TEST_F(EcsCommandBuffer, DestroyOrderDecidesWhatSurvives) {
     const Entity first = registry.create();
     const Entity second = registry.create();
-    CommandBuffer commands(registry);
     commands.add<Value>(first, 1);  // before the destroy: applied, then destroyed with it
     commands.destroy(first);
     commands.destroy(second);
@@ -68,9 +67,7 @@ TEST(EcsCommandBuffer, DestroyOrderDecidesWhatSurvives) {
     EXPECT_EQ(registry.count<Value>(), 0u);
 }
 
-TEST(EcsCommandBuffer, CreatedHandleIsUsableBeforeFlushAndAliveAfter) {
-    Registry registry;
-    CommandBuffer commands(registry);
+TEST_F(EcsCommandBuffer, CreatedHandleIsUsableBeforeFlushAndAliveAfter) {
     const Entity e = commands.create();
     EXPECT_FALSE(e.isNull());
     EXPECT_FALSE(registry.alive(e));
@@ -83,9 +80,7 @@ TEST(EcsCommandBuffer, CreatedHandleIsUsableBeforeFlushAndAliveAfter) {
     EXPECT_TRUE(registry.has<Tag>(e));
 }
 
-TEST(EcsCommandBuffer, CreatesKeepRecordingOrderAndDistinctSlots) {
-    Registry registry;
-    CommandBuffer commands(registry);
+TEST_F(EcsCommandBuffer, CreatesKeepRecordingOrderAndDistinctSlots) {
     std::vector<Entity> created;
     for (int i = 0; i < 5; ++i) {
         created.push_back(commands.create());
@@ -100,11 +95,9 @@ TEST(EcsCommandBuffer, CreatesKeepRecordingOrderAndDistinctSlots) {
     EXPECT_EQ(registry.size(), 6u);
 }
 
-TEST(EcsCommandBuffer, RecordingForAStaleHandleThrowsImmediately) {
-    Registry registry;
+TEST_F(EcsCommandBuffer, RecordingForAStaleHandleThrowsImmediately) {
     const Entity e = registry.create();
     registry.destroy(e);
-    CommandBuffer commands(registry);
     EXPECT_THROW(commands.add<Value>(e, 1), Error);
     EXPECT_THROW(commands.remove<Value>(e), Error);
     EXPECT_THROW(commands.destroy(e), Error);
@@ -112,19 +105,17 @@ TEST(EcsCommandBuffer, RecordingForAStaleHandleThrowsImmediately) {
     EXPECT_TRUE(commands.empty());
 }
 
-TEST(EcsCommandBuffer, DiscardedCreatesAreReleasedAndStale) {
-    Registry registry;
+TEST_F(EcsCommandBuffer, DiscardedCreatesAreReleasedAndStale) {
     Entity pending;
     {
-        CommandBuffer commands(registry);
-        pending = commands.create();
-        commands.add<Value>(pending, 1);
+        CommandBuffer discarded(registry);
+        pending = discarded.create();
+        discarded.add<Value>(pending, 1);
     }  // destroyed without a flush
     EXPECT_FALSE(registry.alive(pending));
     const Entity next = registry.create();
     EXPECT_EQ(next.index(), pending.index());  // the slot came back...
     EXPECT_NE(next, pending);                  // ...with a new generation
-    CommandBuffer commands(registry);
     EXPECT_THROW(commands.add<Value>(pending, 1), Error);
 
     const Entity cleared = commands.create();
@@ -135,11 +126,9 @@ TEST(EcsCommandBuffer, DiscardedCreatesAreReleasedAndStale) {
     EXPECT_EQ(registry.size(), 1u);
 }
 
-TEST(EcsCommandBuffer, FailedFlushDiscardsTheRestAndEmptiesTheBuffer) {
-    Registry registry;
+TEST_F(EcsCommandBuffer, FailedFlushDiscardsTheRestAndEmptiesTheBuffer) {
     const Entity e = registry.create();
     registry.add<Value>(e, 1);
-    CommandBuffer commands(registry);
     const Entity other = registry.create();
     commands.add<Value>(other, 2);  // refused: Value is being iterated below
     const Entity pending = commands.create();

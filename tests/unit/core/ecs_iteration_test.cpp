@@ -16,9 +16,7 @@
 namespace {
 
 using engine::Error;
-using engine::ecs::CommandBuffer;
-using engine::ecs::Entity;
-using engine::ecs::Registry;
+using namespace engine::ecs;
 
 struct Position {
     float x = 0;

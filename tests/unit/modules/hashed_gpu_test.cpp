@@ -23,8 +23,7 @@ namespace {
 
 using namespace engine::render;
 using namespace transparency;
-using transparency::testing::gpuBackend;
-using transparency::testing::kGpuName;
+using namespace transparency::testing;
 
 constexpr int kSize = 64;
 

@@ -5,6 +5,7 @@
 // count (the soft backend's promise, seeds of the goldens).
 #include <gtest/gtest.h>
 
+#include "draws.hpp"         // tests/support
 #include "expect_error.hpp"  // tests/support
 
 #include <cmath>
@@ -19,6 +20,7 @@ namespace {
 
 using namespace transparency;
 using namespace transparency::testing;
+using ssam::testing::drawFullscreenInto;
 
 TextureHandle texture(Backend& b, int size, Format format, std::uint8_t usage = UsageSampled | UsageRenderTarget) {
     TextureDesc t;
@@ -29,29 +31,6 @@ TextureHandle texture(Backend& b, int size, Format format, std::uint8_t usage = 
     return b.createTexture(t);
 }
 
-void drawFullscreen(Backend& b, ProgramRef program, DrawParams params, TextureHandle target) {
-    PipelineDesc p;
-    p.name = "fullscreen";
-    p.program = program;
-    const PipelineHandle pipeline = b.createPipeline(p);
-    PassDesc pass;
-    pass.name = "pass";
-    pass.color[0] = {target, LoadOp::Clear};
-    b.beginPass(pass);
-    DrawDesc d;
-    d.pipeline = pipeline;
-    d.params = std::move(params);
-    try {
-        b.draw(d);
-    } catch (...) {
-        b.endPass();
-        b.destroy(pipeline);
-        throw;
-    }
-    b.endPass();
-    b.destroy(pipeline);
-}
-
 TEST(TransparencyPrograms, FullscreenKindsRefuseMissingOrSmallInputs) {
     auto b = soft::createSoftBackend({});
     const TextureHandle target = texture(*b, 8, Format::RGBA32F);
@@ -59,17 +38,17 @@ TEST(TransparencyPrograms, FullscreenKindsRefuseMissingOrSmallInputs) {
     const TextureHandle good = texture(*b, 8, Format::RGBA16F);
     const ProgramHandle resolve = b->createProgram(wboitResolveProgram());
     const ProgramHandle coverage = b->createProgram(coverageCompositeProgram());
-    EXPECT_THROW(drawFullscreen(*b, resolve, WboitResolveParams{{}, good}, target), engine::Error);
-    EXPECT_THROW(drawFullscreen(*b, resolve, WboitResolveParams{good, small}, target), engine::Error);
+    EXPECT_THROW(drawFullscreenInto(*b, resolve, WboitResolveParams{{}, good}, target), engine::Error);
+    EXPECT_THROW(drawFullscreenInto(*b, resolve, WboitResolveParams{good, small}, target), engine::Error);
     EXPECT_THROW(
-        drawFullscreen(*b, coverage, CoverageCompositeParams{good, {}, {}, CoverageModel::EqualLayers}, target),
+        drawFullscreenInto(*b, coverage, CoverageCompositeParams{good, {}, {}, CoverageModel::EqualLayers}, target),
         engine::Error);
-    EXPECT_THROW(drawFullscreen(*b, coverage, CoverageCompositeParams{good, good, {}, CoverageModel(7)}, target),
+    EXPECT_THROW(drawFullscreenInto(*b, coverage, CoverageCompositeParams{good, good, {}, CoverageModel(7)}, target),
                  engine::Error);
     // Parameters of another kind.
-    EXPECT_THROW(drawFullscreen(*b, resolve, ssam::CompositeParams{good, good, {}, 0.85f, true}, target),
+    EXPECT_THROW(drawFullscreenInto(*b, resolve, ssam::CompositeParams{good, good, {}, 0.85f, true}, target),
                  engine::Error);
-    EXPECT_NO_THROW(drawFullscreen(*b, resolve, WboitResolveParams{good, good}, target));
+    EXPECT_NO_THROW(drawFullscreenInto(*b, resolve, WboitResolveParams{good, good}, target));
 }
 
 // Non-finite accumulation (hostile HDR data) composites as black, never NaN.
@@ -89,7 +68,7 @@ TEST(TransparencyPrograms, WboitResolveNeverOutputsNaN) {
     data.levels[0] = std::as_bytes(std::span(revealage));
     const TextureHandle rev = b->createTexture(t, &data);
     const TextureHandle target = texture(*b, 1, Format::RGBA32F);
-    drawFullscreen(*b, b->createProgram(wboitResolveProgram()), WboitResolveParams{acc, rev}, target);
+    drawFullscreenInto(*b, b->createProgram(wboitResolveProgram()), WboitResolveParams{acc, rev}, target);
     const Readback r = b->readback(target);
     for (float v : r.values) EXPECT_TRUE(std::isfinite(v));
 }
@@ -123,8 +102,8 @@ TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursOnly) {
     data.levels[0] = std::as_bytes(std::span(mask));
     const TextureHandle m = b->createTexture(t, &data);
     const TextureHandle target = texture(*b, n, Format::RGBA32F);
-    drawFullscreen(*b, b->createProgram(coverageBlurCompositeProgram()),
-                   CoverageCompositeParams{f, m, {}, CoverageModel::EqualLayers}, target);
+    drawFullscreenInto(*b, b->createProgram(coverageBlurCompositeProgram()),
+                       CoverageCompositeParams{f, m, {}, CoverageModel::EqualLayers}, target);
     const Readback r = b->readback(target);
     auto expected = [&](int x, int y) {
         glm::vec3 sum(0.0f);

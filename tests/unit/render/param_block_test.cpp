@@ -25,8 +25,8 @@ using namespace engine::render;
 using ssam::testing::ProbeMode;
 using ssam::testing::ProbeParams;
 
-template <typename Member>
-std::size_t placeOf(const ProbeParams& p, const Member& member) {
+template <typename Params, typename Member>
+std::size_t placeOf(const Params& p, const Member& member) {
     return std::size_t(reinterpret_cast<const std::byte*>(&member) - reinterpret_cast<const std::byte*>(&p));
 }
 
@@ -49,6 +49,41 @@ std::vector<ExpectedUniform> expectedUniforms() {
             {"u_towardLight", UniformType::Direction, placeOf(p, p.towardLight)}};
 }
 
+void expectUniforms(const GlslProgram& gl, const std::vector<ExpectedUniform>& want) {
+    ASSERT_EQ(gl.uniforms.size(), want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        SCOPED_TRACE(want[i].name);
+        EXPECT_STREQ(gl.uniforms[i].name, want[i].name);
+        EXPECT_EQ(gl.uniforms[i].type, want[i].type);
+        EXPECT_EQ(gl.uniforms[i].offset, want[i].offset);
+    }
+}
+
+void expectTextures(const GlslProgram& gl, const std::vector<TextureField>& want) {
+    auto same = [](const char* a, const char* b) { return a == b || (a && b && std::string(a) == b); };
+    ASSERT_EQ(gl.textures.size(), want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        const TextureField& t = gl.textures[i];
+        SCOPED_TRACE(want[i].name);
+        EXPECT_STREQ(t.name, want[i].name);
+        EXPECT_EQ(t.offset, want[i].offset);
+        EXPECT_EQ(t.unit, want[i].unit);
+        EXPECT_EQ(t.read, want[i].read);
+        EXPECT_EQ(t.use, want[i].use);
+        EXPECT_EQ(t.optional, want[i].optional);
+        EXPECT_TRUE(same(t.presentUniform, want[i].presentUniform));
+        EXPECT_TRUE(same(t.filterUniform, want[i].filterUniform));
+        EXPECT_TRUE(same(t.premultipliedUniform, want[i].premultipliedUniform));
+    }
+}
+
+// A block on the engine's lit surface (ENGINE_PARAM_BLOCK_ON_LIT_SURFACE), as WBOIT's
+// accumulation and SSAM's foliage depth declare theirs.
+#define PARAM_BLOCK_TEST_ON_SURFACE(UNIFORM, DIRECTION, TEXTURE) \
+    TEXTURE(mask, Texel, FullSize, Optional)                     \
+    UNIFORM(float, threshold, 0.5f)
+ENGINE_PARAM_BLOCK_ON_LIT_SURFACE(OnSurfaceParams, PARAM_BLOCK_TEST_ON_SURFACE);
+
 TEST(ParamBlock, StructHasEachMemberWithItsTypeAndDefault) {
     static_assert(std::is_same_v<decltype(ProbeParams::viewProj), glm::mat4>);
     static_assert(std::is_same_v<decltype(ProbeParams::mode), ProbeMode>);
@@ -67,39 +102,42 @@ TEST(ParamBlock, StructHasEachMemberWithItsTypeAndDefault) {
 TEST(ParamBlock, TableNamesTypesAndPlacesEachMember) {
     GlslProgram gl;
     ProbeParams::describe(gl);
-    const std::vector<ExpectedUniform> want = expectedUniforms();
-    ASSERT_EQ(gl.uniforms.size(), want.size());
-    for (std::size_t i = 0; i < want.size(); ++i) {
-        SCOPED_TRACE(want[i].name);
-        EXPECT_STREQ(gl.uniforms[i].name, want[i].name);
-        EXPECT_EQ(gl.uniforms[i].type, want[i].type);
-        EXPECT_EQ(gl.uniforms[i].offset, want[i].offset);
-    }
+    expectUniforms(gl, expectedUniforms());
     const ProbeParams p;
-    const TextureField wantTextures[] = {
-        {"u_source", placeOf(p, p.source), 0, TextureRead::Texel, TextureUse::FullSize},
-        {"u_detail", placeOf(p, p.detail), 1, TextureRead::Sampled, TextureUse::Sampled, true, "u_detailBound",
-         "u_detailFilter", "u_detailPremultiplied"},
-    };
-    auto same = [](const char* a, const char* b) { return a == b || (a && b && std::string(a) == b); };
-    ASSERT_EQ(gl.textures.size(), std::size(wantTextures));
-    for (std::size_t i = 0; i < std::size(wantTextures); ++i) {
-        const TextureField& t = gl.textures[i];
-        SCOPED_TRACE(wantTextures[i].name);
-        EXPECT_STREQ(t.name, wantTextures[i].name);
-        EXPECT_EQ(t.offset, wantTextures[i].offset);
-        EXPECT_EQ(t.unit, wantTextures[i].unit);
-        EXPECT_EQ(t.read, wantTextures[i].read);
-        EXPECT_EQ(t.use, wantTextures[i].use);
-        EXPECT_EQ(t.optional, wantTextures[i].optional);
-        EXPECT_TRUE(same(t.presentUniform, wantTextures[i].presentUniform));
-        EXPECT_TRUE(same(t.filterUniform, wantTextures[i].filterUniform));
-        EXPECT_TRUE(same(t.premultipliedUniform, wantTextures[i].premultipliedUniform));
-    }
+    expectTextures(gl, {
+                           {"u_source", placeOf(p, p.source), 0, TextureRead::Texel, TextureUse::FullSize},
+                           {"u_detail", placeOf(p, p.detail), 1, TextureRead::Sampled, TextureUse::Sampled, true,
+                            "u_detailBound", "u_detailFilter", "u_detailPremultiplied"},
+                       });
     // describeProgram() fills the same table.
     const ProgramDesc d = ssam::testing::probeProgram();
     ASSERT_EQ(d.gl.uniforms.size(), gl.uniforms.size());
     EXPECT_EQ(d.gl.textures.size(), gl.textures.size());
+}
+
+// The lit surface's members come first with their defaults and the surface's table
+// (glsl/lit_surface.glsl's names, the light's members inside `light`, the base colour at unit 0),
+// then the block's own members and entries, its textures from unit 1.
+TEST(ParamBlock, ABlockOnTheLitSurfaceStartsWithTheSurface) {
+    const OnSurfaceParams p;
+    EXPECT_EQ(p.viewProj, glm::mat4(1.0f));
+    EXPECT_EQ(p.baseColorFactor, glm::vec4(1.0f));
+    EXPECT_FALSE(bool(p.baseColor.texture));
+    EXPECT_FALSE(bool(p.mask));
+    EXPECT_EQ(p.threshold, 0.5f);
+    EXPECT_EQ(placeOf(p, p.viewProj), 0u);
+    GlslProgram gl;
+    OnSurfaceParams::describe(gl);
+    expectUniforms(gl, {{"u_viewProj", UniformType::Mat4, placeOf(p, p.viewProj)},
+                        {"u_color", UniformType::Vec4, placeOf(p, p.baseColorFactor)},
+                        {"u_towardLight", UniformType::Direction, placeOf(p, p.light.towardLight)},
+                        {"u_lightColor", UniformType::Vec3, placeOf(p, p.light.color)},
+                        {"u_ambient", UniformType::Vec3, placeOf(p, p.light.ambient)},
+                        {"u_threshold", UniformType::Float, placeOf(p, p.threshold)}});
+    expectTextures(gl,
+                   {{"u_baseColor", placeOf(p, p.baseColor), 0, TextureRead::Sampled, TextureUse::Sampled, true,
+                     "u_hasTexture", "u_filter", "u_premultiplied"},
+                    {"u_mask", placeOf(p, p.mask), 1, TextureRead::Texel, TextureUse::FullSize, true, "u_maskBound"}});
 }
 
 TEST(ParamBlock, DeclarationsHoldEveryMemberOnBothDialects) {

@@ -5,6 +5,7 @@
 // reads back, each left as ssam::vk's synchronization contract asks (ssam_vk.hpp).
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -182,6 +183,37 @@ struct HostFrame {
     }
     // Submitted under validation: whatever SSAM refused, the command buffer must still be valid.
     void submitAndWait() const { targets.host.wait(targets.host.submit(cb)); }
+};
+
+// Frames recorded the way a host's ring of two frame slots records them: before a third is
+// recorded the oldest is waited for, and each frame says how many have completed
+// (FrameDesc::framesCompleted).
+struct FramesInFlight {
+    vk_example::VulkanHost& host;
+    std::deque<VkFence> fences;
+    std::uint64_t completed = 0;
+
+    // SSAM's render() of `targets`' prepared frame number `frame`, drawing nothing, then submitted.
+    ssam::vk::Status renderNothing(ssam::vk::ScreenSpaceAlphaMaskVk& ssam, const Targets& targets,
+                                   std::uint64_t frame) {
+        if (fences.size() == 2) {
+            host.wait(fences.front());
+            fences.pop_front();
+            ++completed;
+        }
+        const VkCommandBuffer cb = host.begin();
+        ssam::vk::FrameDesc f = targets.preparedFrame(cb);
+        f.frameIndex = frame;
+        f.framesCompleted = completed;
+        const ssam::vk::Status status = ssam.render(f, [](const ssam::vk::FoliageProgram&) {});
+        fences.push_back(host.submit(cb));
+        return status;
+    }
+    void waitForAll() {
+        for (VkFence f : fences) host.wait(f);
+        completed += fences.size();
+        fences.clear();
+    }
 };
 
 // A quad over the middle half of the frame at depth 0.5, drawn by SSAM's built-in programs (the

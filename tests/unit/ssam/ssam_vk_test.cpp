@@ -48,6 +48,15 @@ protected:
     Messages messages;
 };
 
+// The same, with SSAM initialized on the host's device with the default settings.
+class SsamVkInitialized : public SsamVk {
+protected:
+    void SetUp() override {
+        SsamVk::SetUp();
+        ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok) << ssam.lastMessage();
+    }
+};
+
 TEST_F(SsamVk, CallsBeforeInitializeAreInvalid) {
     ssam::vk::FrameDesc frame;
     EXPECT_EQ(ssam.render(frame, [](const ssam::vk::FoliageProgram&) {}), Status::InvalidCall);
@@ -137,38 +146,24 @@ TEST_F(SsamVk, AResizeRetiresTheOldIntermediatesUntilTheirFramesComplete) {
     const int atStart = memory.allocations;  // the constants buffer and the white texel
     EXPECT_EQ(atStart, 2);
     Targets big(host, 64, 48), small(host, 32, 16);
-    std::deque<VkFence> inFlight;
-    std::uint64_t completed = 0;
+    FramesInFlight frames{host};
     VkImage previousMask = VK_NULL_HANDLE;
     int maskChanges = 0;
     for (std::uint64_t frame = 0; frame < 6; ++frame) {
-        if (inFlight.size() == 2) {
-            host.wait(inFlight.front());
-            inFlight.pop_front();
-            ++completed;
-        }
-        const Targets& t = frame % 2 == 0 ? big : small;
-        const VkCommandBuffer cb = host.begin();
-        ssam::vk::FrameDesc f = t.preparedFrame(cb);
-        f.frameIndex = frame;
-        f.framesCompleted = completed;
-        ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
-        inFlight.push_back(host.submit(cb));
+        ASSERT_EQ(frames.renderNothing(ssam, frame % 2 == 0 ? big : small, frame), Status::Ok) << ssam.lastMessage();
         if (ssam.intermediates().mask != previousMask) ++maskChanges;
         previousMask = ssam.intermediates().mask;
         // Two images per size change; at most the current ones and those of the two frames in flight.
         EXPECT_LE(memory.live.size(), std::size_t(atStart + 2 * 3)) << "frame " << frame;
     }
     EXPECT_EQ(maskChanges, 6);  // every frame changed the size
-    for (VkFence f : inFlight) host.wait(f);
+    frames.waitForAll();
+    ASSERT_EQ(frames.completed, 6u);
     // Everything completed: the next frame (the same size as the last) destroys every retired
     // generation, leaving SSAM's first two allocations and the current mask and rt_foliage.
-    const VkCommandBuffer cb = host.begin();
-    ssam::vk::FrameDesc f = small.preparedFrame(cb);
-    f.frameIndex = f.framesCompleted = 6;
-    ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
+    ASSERT_EQ(frames.renderNothing(ssam, small, 6), Status::Ok) << ssam.lastMessage();
     EXPECT_EQ(memory.live.size(), std::size_t(atStart + 2));
-    host.wait(host.submit(cb));
+    frames.waitForAll();
     vkDeviceWaitIdle(host.device);
     ssam.release();
     EXPECT_TRUE(memory.live.empty()) << memory.live.size() << " allocations not given back";
@@ -192,23 +187,10 @@ TEST(SsamVkDynamicRendering, FramesOfTwoSizesRecordCleanly) {
     ASSERT_EQ(ssam.initialize(d), Status::Ok) << ssam.lastMessage();
     {
         Targets big(host, 64, 48), small(host, 32, 16);
-        std::deque<VkFence> inFlight;
-        std::uint64_t completed = 0;
-        for (std::uint64_t frame = 0; frame < 4; ++frame) {
-            if (inFlight.size() == 2) {
-                host.wait(inFlight.front());
-                inFlight.pop_front();
-                ++completed;
-            }
-            const Targets& t = frame < 2 ? big : small;
-            const VkCommandBuffer cb = host.begin();
-            ssam::vk::FrameDesc f = t.preparedFrame(cb);
-            f.frameIndex = frame;
-            f.framesCompleted = completed;
-            ASSERT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) {}), Status::Ok) << ssam.lastMessage();
-            inFlight.push_back(host.submit(cb));
-        }
-        for (VkFence f : inFlight) host.wait(f);
+        FramesInFlight frames{host};
+        for (std::uint64_t frame = 0; frame < 4; ++frame)
+            ASSERT_EQ(frames.renderNothing(ssam, frame < 2 ? big : small, frame), Status::Ok) << ssam.lastMessage();
+        frames.waitForAll();
         vkDeviceWaitIdle(host.device);
     }
     ssam.release();
@@ -217,8 +199,7 @@ TEST(SsamVkDynamicRendering, FramesOfTwoSizesRecordCleanly) {
 
 // Way (b): the frame's steps in order only; an out-of-order call ends the open pass (the host's
 // command buffer stays valid: it is submitted here under validation) and abandons the frame.
-TEST_F(SsamVk, HostPipelineStepsOutOfOrderAreInvalidAndLeaveTheCommandBufferValid) {
-    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+TEST_F(SsamVkInitialized, HostPipelineStepsOutOfOrderAreInvalidAndLeaveTheCommandBufferValid) {
     EXPECT_EQ(ssam.beginMaskPass(), Status::InvalidCall);
     EXPECT_THAT(ssam.lastMessage(), HasSubstr("beginMaskPass called when no frame is open"));
     HostFrame h(host, 16, 16);
@@ -246,8 +227,7 @@ TEST_F(SsamVk, HostPipelineStepsOutOfOrderAreInvalidAndLeaveTheCommandBufferVali
 
 // What the host's pipelines are created with: SSAM's own state, and a version that moves only
 // when a setting changes it.
-TEST_F(SsamVk, PipelineStateFollowsTheSettings) {
-    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+TEST_F(SsamVkInitialized, PipelineStateFollowsTheSettings) {
     ssam::vk::PipelineState mask, color;
     ASSERT_EQ(ssam.pipelineState(ssam::vk::FoliagePass::Mask, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, &mask),
               Status::Ok);
@@ -359,8 +339,7 @@ TEST_F(SsamVk, DepthMaskThresholdNeedsTheDepthImage) {
 
 // FrameDesc::foliageBounds: none in view records nothing (the callback is not called); in view,
 // the composite's region is their screen rectangle, rows from the top (Vulkan's y down).
-TEST_F(SsamVk, FoliageBoundsOutOfViewRecordNothing) {
-    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+TEST_F(SsamVkInitialized, FoliageBoundsOutOfViewRecordNothing) {
     HostFrame h(host, 64, 64);
     ssam::vk::FrameDesc& f = h.frame;
     const float vulkanViewProj[16] = {1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // world y up
@@ -370,18 +349,18 @@ TEST_F(SsamVk, FoliageBoundsOutOfViewRecordNothing) {
     f.foliageBoundsCount = 1;
     int calls = 0;
     ssam::vk::FrameReport report;
-    ASSERT_EQ(ssam.render(
-                  f, [&](const ssam::vk::FoliageProgram&) { ++calls; }, &report),
-              Status::Ok);
+    const auto renderCountingCalls = [&] {
+        return ssam.render(
+            f, [&](const ssam::vk::FoliageProgram&) { ++calls; }, &report);
+    };
+    ASSERT_EQ(renderCountingCalls(), Status::Ok);
     EXPECT_FALSE(report.foliageInView);
     EXPECT_EQ(report.passesRun, 0);
     EXPECT_EQ(calls, 0);
     EXPECT_EQ(ssam.intermediates().mask, VK_NULL_HANDLE);                  // not even its targets were made
     const ssam::vk::Box topRight{{0.0f, 0.0f, 0.5f}, {1.0f, 1.0f, 0.5f}};  // world x, y >= 0
     f.foliageBounds = &topRight;
-    ASSERT_EQ(ssam.render(
-                  f, [&](const ssam::vk::FoliageProgram&) { ++calls; }, &report),
-              Status::Ok);
+    ASSERT_EQ(renderCountingCalls(), Status::Ok);
     EXPECT_TRUE(report.foliageInView);
     EXPECT_EQ(report.passesRun, 3);
     EXPECT_EQ(calls, 2);
@@ -393,8 +372,7 @@ TEST_F(SsamVk, FoliageBoundsOutOfViewRecordNothing) {
     h.submitAndWait();
 }
 
-TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {
-    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+TEST_F(SsamVkInitialized, AFrameWithAnUnsupportedFormatIsNamed) {
     HostFrame h(host, 8, 8, false);
     ssam::vk::FrameDesc& f = h.frame;
     f.colorFormat = VK_FORMAT_R5G6B5_UNORM_PACK16;
@@ -405,8 +383,7 @@ TEST_F(SsamVk, AFrameWithAnUnsupportedFormatIsNamed) {
     h.submitAndWait();
 }
 
-TEST_F(SsamVk, AThrowingDrawCallbackIsReported) {
-    ASSERT_EQ(ssam.initialize(describe(host)), Status::Ok);
+TEST_F(SsamVkInitialized, AThrowingDrawCallbackIsReported) {
     HostFrame h(host, 8, 8);
     ssam::vk::FrameDesc& f = h.frame;
     EXPECT_EQ(ssam.render(f, [](const ssam::vk::FoliageProgram&) { throw std::runtime_error("no cards"); }),

@@ -34,11 +34,20 @@ std::vector<Vertex> triangle() {
     return {a, b, c};
 }
 
+// A triangle frame's 32x24 RGBA8 target and vertex buffer.
+struct TriangleFrame {
+    TextureHandle target;
+    BufferHandle vb;
+};
+TriangleFrame triangleFrame(Backend& gfx, const std::vector<Vertex>& vertices) {
+    return {gfx.createTexture(renderTargetDesc("target", 32, 24, Format::RGBA8_UNORM)),
+            gfx.createBuffer({"triangle", BufferKind::Vertex, vertices.size() * sizeof(Vertex)},
+                             std::as_bytes(std::span<const Vertex>(vertices)))};
+}
+
 // A 32x24 RGBA8 frame: clear, one Flat triangle with colour interpolation, read back.
 Readback drawTriangle(Backend& gfx, const std::vector<Vertex>& vertices) {
-    const TextureHandle target = gfx.createTexture(renderTargetDesc("target", 32, 24, Format::RGBA8_UNORM));
-    const BufferHandle vb = gfx.createBuffer({"triangle", BufferKind::Vertex, vertices.size() * sizeof(Vertex)},
-                                             std::as_bytes(std::span<const Vertex>(vertices)));
+    const auto [target, vb] = triangleFrame(gfx, vertices);
     PipelineDesc pd;
     pd.name = "flat";
     pd.program = ProgramKind::Flat;
@@ -111,9 +120,7 @@ TEST(VkBackend, PipelinesCreatedMidPassLeaveRecordedDrawsIntact) {
     const std::vector<Vertex> vertices = triangle();
     const glm::vec4 clear(0.1f, 0.2f, 0.3f, 1.0f);
     auto run = [&](Backend& b) {
-        const TextureHandle target = b.createTexture(renderTargetDesc("target", 32, 24, Format::RGBA8_UNORM));
-        const BufferHandle vb = b.createBuffer({"triangle", BufferKind::Vertex, vertices.size() * sizeof(Vertex)},
-                                               std::as_bytes(std::span<const Vertex>(vertices)));
+        const auto [target, vb] = triangleFrame(b, vertices);
         PipelineDesc pd;
         pd.name = "culls the triangle";
         pd.program = ProgramKind::Flat;

@@ -51,31 +51,15 @@ public:
 
     // gl_resources.cpp
     void checkTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
-    NativeId createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
     NativeId wrapTexture(unsigned int id, const TextureDesc& desc, const std::string& what) override;
-    NativeId createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) override;
-    void updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) override;
-    NativeId createProgram(std::shared_ptr<const ProgramDesc> desc) override;
-    NativeId createStandardProgram(ProgramKind kind, ProgramDesc desc) override;
     void notePipeline(const PipelineDesc& desc, ResolvedPipeline& resolved) override;
-    void destroyTexture(NativeId h) override;
-    void destroyBuffer(NativeId h) override;
-    void destroyProgram(NativeId h) override;
     NativeId createQuery(const std::string&) override { return queries_.add({}); }
-    void destroyQuery(NativeId h) override;
-    bool anySamplesPassed(NativeId h) override;
-
     // gl_passes.cpp
-    void beginPass(const DriverPass& pass) override;
-    void endPass() override;
-    void abortPass() noexcept override;
-    void resolve(NativeId source, NativeId destination, const ResolveDesc& r, const std::string& what) override;
-    Readback readback(NativeId h, const TextureDesc& desc) override;
-    std::vector<DriverTiming> takeTimings() override;
     bool present(NativeId h, const TextureDesc& desc) override;
 
-    // gl_draw.cpp
-    void draw(const DriverDraw& d) override;
+    // The driver calls: resources and queries in gl_resources.cpp, passes, resolves, readbacks
+    // and timings in gl_passes.cpp, draws in gl_draw.cpp.
+    ENGINE_DRIVER_CALLS(ENGINE_DRIVER_OVERRIDE)
 
 private:
     void makeCurrent() {

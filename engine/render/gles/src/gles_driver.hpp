@@ -70,31 +70,12 @@ public:
 
     // gles_resources.cpp
     void checkTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
-    NativeId createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
-    NativeId createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) override;
-    void updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) override;
-    NativeId createProgram(std::shared_ptr<const ProgramDesc> desc) override;
-    NativeId createStandardProgram(ProgramKind kind, ProgramDesc desc) override;
     void notePipeline(const PipelineDesc& desc, ResolvedPipeline& resolved) override;
-    void destroyTexture(NativeId h) override;
-    void destroyBuffer(NativeId h) override;
-    void destroyProgram(NativeId h) override;
     NativeId createQuery(const std::string&) override { return queries_.add({}); }
-    void destroyQuery(NativeId h) override;
-    bool anySamplesPassed(NativeId h) override;
 
-    // gles_passes.cpp
-    void beginPass(const DriverPass& pass) override;
-    void endPass() override;
-    void abortPass() noexcept override;
-    void resolve(NativeId source, NativeId destination, const ResolveDesc& r, const std::string& what) override;
-    std::vector<DriverTiming> takeTimings() override;
-
-    // gles_readback.cpp
-    Readback readback(NativeId h, const TextureDesc& desc) override;
-
-    // gles_draw.cpp
-    void draw(const DriverDraw& d) override;
+    // The driver calls: resources and queries in gles_resources.cpp, passes, resolves and
+    // timings in gles_passes.cpp, readbacks in gles_readback.cpp, draws in gles_draw.cpp.
+    ENGINE_DRIVER_CALLS(ENGINE_DRIVER_OVERRIDE)
 
 private:
     void makeCurrent() {

@@ -79,32 +79,14 @@ public:
     std::uint64_t textureFootprint(const TextureDesc& desc) const override;
     MemoryProbe memoryProbe() const override;
     void checkTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
-    NativeId createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) override;
-    NativeId createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) override;
-    void updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) override;
-    NativeId createProgram(std::shared_ptr<const ProgramDesc> desc) override;
-    NativeId createStandardProgram(ProgramKind kind, ProgramDesc desc) override;
     void notePipeline(const PipelineDesc& desc, ResolvedPipeline& resolved) override;
-    void destroyTexture(NativeId h) override;
-    void destroyBuffer(NativeId h) override;
-    void destroyProgram(NativeId h) override;
     NativeId createQuery(const std::string& name) override;
-    void destroyQuery(NativeId h) override;
-    bool anySamplesPassed(NativeId h) override;
-
-    // vk_passes.cpp
-    void beginPass(const DriverPass& pass) override;
-    void draw(const DriverDraw& d) override;
-    void endPass() override;
-    void abortPass() noexcept override;
-    std::vector<DriverTiming> takeTimings() override;
-
-    // vk_transfer.cpp
-    void resolve(NativeId source, NativeId destination, const ResolveDesc& r, const std::string& what) override;
-    Readback readback(NativeId h, const TextureDesc& desc) override;
-
     // vk_swapchain.cpp
     bool present(NativeId h, const TextureDesc& desc) override;
+
+    // The driver calls: resources and queries in vk_resources.cpp, passes, draws and timings in
+    // vk_passes.cpp, resolves and readbacks in vk_transfer.cpp.
+    ENGINE_DRIVER_CALLS(ENGINE_DRIVER_OVERRIDE)
 
 private:
     // vk_resources.cpp

@@ -2,8 +2,8 @@
 #pragma once
 // The transparency module's own programs (weighted blended OIT and SSAM+'s composite),
 // described once for every backend (engine/render/program_desc.hpp): the full-screen ones'
-// parameter blocks declared once below (engine/render/param_block.hpp; WboitAccumulate's is the
-// engine's lit surface's, litSurfaceLayout), the GLSL bodies in glsl/, the CPU kernels in
+// parameter blocks declared once below (engine/render/param_block.hpp; WboitAccumulate's on the
+// engine's lit surface), the GLSL bodies in glsl/, the CPU kernels in
 // src/program_kernels.hpp.
 #include <cstdint>
 
@@ -23,13 +23,8 @@ namespace transparency {
 //   w(z, a) = a * clamp(10 / (1e-5 + (|z|/5)^2 + (|z|/200)^6), 1e-2, 3e3)
 // with z the view depth (clip w; 1 under an orthographic or identity projection) times
 // depthScale, which maps the scene's units onto the metres eq. (7) was tuned for.
-struct WboitAccumulateParams {
-    glm::mat4 viewProj{1.0f};
-    glm::vec4 baseColorFactor{1.0f};
-    engine::render::TextureBinding baseColor;
-    engine::render::DirectionalLight light;
-    float depthScale = 1.0f;
-};
+#define TRANSPARENCY_WBOIT_ACCUMULATE_PARAMS(UNIFORM, DIRECTION, TEXTURE) UNIFORM(float, depthScale, 1.0f)
+ENGINE_PARAM_BLOCK_ON_LIT_SURFACE(WboitAccumulateParams, TRANSPARENCY_WBOIT_ACCUMULATE_PARAMS);
 
 // WboitResolve (McGuire & Bavoil 2013, the composite pass), one texel per pixel:
 //   out = (accum.rgb / max(accum.a, 1e-5), revealage.r)

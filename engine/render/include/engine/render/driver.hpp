@@ -63,6 +63,39 @@ struct DriverTiming {
     bool skipped = false;
 };
 
+// The calls every driver carries out itself, listed once: the interface below declares them pure
+// and each driver's class declares its overrides with ENGINE_DRIVER_CALLS(ENGINE_DRIVER_OVERRIDE),
+// so a signature is written here alone. X(result, name, parameters, qualifiers):
+//   createProgram          a module's program: throws when it lacks this driver's part or does
+//                          not compile
+//   createStandardProgram  `neutral` is the backend-neutral description, which the driver
+//                          completes with its own part (its GLSL, its CPU kernel)
+//   anySamplesPassed       the result of the last pass that counted into a query the Device
+//                          knows was counted
+//   endPass                the open pass's query (if any) was counted; its timing is taken later
+//   takeTimings            one entry per pass ended since the last call, in order (a pass whose
+//                          endPass threw or that was aborted may have none)
+#define ENGINE_DRIVER_CALLS(X)                                                                                       \
+    X(NativeId, createTexture, (const TextureDesc& desc, const TextureData* data, const std::string& what), )        \
+    X(NativeId, createBuffer, (const BufferDesc& desc, std::span<const std::byte> data, const std::string& what), )  \
+    X(void, updateBuffer, (NativeId buffer, std::uint64_t offset, std::span<const std::byte> data), )                \
+    X(NativeId, createProgram, (std::shared_ptr<const ProgramDesc> desc), )                                          \
+    X(NativeId, createStandardProgram, (ProgramKind kind, ProgramDesc neutral), )                                    \
+    X(void, destroyTexture, (NativeId texture), )                                                                    \
+    X(void, destroyBuffer, (NativeId buffer), )                                                                      \
+    X(void, destroyProgram, (NativeId program), )                                                                    \
+    X(void, destroyQuery, (NativeId query), )                                                                        \
+    X(bool, anySamplesPassed, (NativeId query), )                                                                    \
+    X(void, beginPass, (const DriverPass& pass), )                                                                   \
+    X(void, draw, (const DriverDraw& draw), )                                                                        \
+    X(void, endPass, (), )                                                                                           \
+    X(void, abortPass, (), noexcept)                                                                                 \
+    X(void, resolve, (NativeId source, NativeId destination, const ResolveDesc& resolve, const std::string& what), ) \
+    X(Readback, readback, (NativeId texture, const TextureDesc& desc), )                                             \
+    X(std::vector<DriverTiming>, takeTimings, (), )
+#define ENGINE_DRIVER_PURE(result, name, parameters, qualifiers) virtual result name parameters qualifiers = 0;
+#define ENGINE_DRIVER_OVERRIDE(result, name, parameters, qualifiers) result name parameters qualifiers override;
+
 class Driver {
 public:
     virtual ~Driver() = default;
@@ -84,37 +117,13 @@ public:
     // What only this driver refuses of a texture the shared rules accepted (sample counts and
     // sizes its API lacks), checked before its initial data and the memory budget.
     virtual void checkTexture(const TextureDesc& /*desc*/, const TextureData* /*data*/, const std::string& /*what*/) {}
-    virtual NativeId createTexture(const TextureDesc& desc, const TextureData* data, const std::string& what) = 0;
-    virtual NativeId createBuffer(const BufferDesc& desc, std::span<const std::byte> data, const std::string& what) = 0;
-    virtual void updateBuffer(NativeId buffer, std::uint64_t offset, std::span<const std::byte> data) = 0;
-    // A module's program: throws when it lacks this driver's part or does not compile.
-    virtual NativeId createProgram(std::shared_ptr<const ProgramDesc> desc) = 0;
-    // A standard program: `neutral` is its backend-neutral description, which the driver
-    // completes with its own part (its GLSL, its CPU kernel).
-    virtual NativeId createStandardProgram(ProgramKind kind, ProgramDesc neutral) = 0;
     // A pipeline about to be made: the driver may only add what it cannot do exactly to `info`.
     virtual void notePipeline(const PipelineDesc& /*desc*/, ResolvedPipeline& /*resolved*/) {}
-    virtual void destroyTexture(NativeId texture) = 0;
-    virtual void destroyBuffer(NativeId buffer) = 0;
-    virtual void destroyProgram(NativeId program) = 0;
-
     virtual NativeId createQuery(const std::string& name) = 0;
-    virtual void destroyQuery(NativeId query) = 0;
-    // The result of the last pass that counted into a query the Device knows was counted.
-    virtual bool anySamplesPassed(NativeId query) = 0;
 
-    virtual void beginPass(const DriverPass& pass) = 0;
-    virtual void draw(const DriverDraw& draw) = 0;
-    // The open pass's query (if any) was counted; its timing is taken later.
-    virtual void endPass() = 0;
-    virtual void abortPass() noexcept = 0;
+    // The calls every driver carries out itself (ENGINE_DRIVER_CALLS above).
+    ENGINE_DRIVER_CALLS(ENGINE_DRIVER_PURE)
 
-    virtual void resolve(NativeId source, NativeId destination, const ResolveDesc& resolve,
-                         const std::string& what) = 0;
-    virtual Readback readback(NativeId texture, const TextureDesc& desc) = 0;
-    // One entry per pass ended since the last call, in order (a pass whose endPass threw or
-    // that was aborted may have none).
-    virtual std::vector<DriverTiming> takeTimings() = 0;
     virtual void endFrame() {}
     // Shows a single-sampled colour texture in the driver's window; false when there is none
     // to show it in (or it is minimised).

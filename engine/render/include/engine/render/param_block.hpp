@@ -116,3 +116,25 @@ inline TextureField textureField(const char* name, std::size_t offset, int unit,
             LIST(ENGINE_PARAM_UNIFORM_ENTRY, ENGINE_PARAM_DIRECTION_ENTRY, ENGINE_PARAM_TEXTURE_ENTRY) \
         }                                                                                              \
     }
+
+// struct Name on the lit surface (glsl/lit_surface.glsl, program_desc.hpp's litSurfaceLayout):
+// the surface's members viewProj, baseColorFactor, baseColor (unit 0) and light first, then the
+// list's, whose textures take units 1, 2, ...; describe() gives the surface's table, then the
+// list's. The programs that shade the engine's surface (OpaqueLit, MaskedLit) and build on it.
+#define ENGINE_PARAM_BLOCK_ON_LIT_SURFACE(Name, LIST)                                                  \
+    struct Name {                                                                                      \
+        glm::mat4 viewProj{1.0f};                                                                      \
+        glm::vec4 baseColorFactor{1.0f};                                                               \
+        ::engine::render::TextureBinding baseColor; /* null texture: white */                          \
+        ::engine::render::DirectionalLight light;                                                      \
+        LIST(ENGINE_PARAM_MEMBER, ENGINE_PARAM_DIRECTION_MEMBER, ENGINE_PARAM_TEXTURE_MEMBER)          \
+        static void describe(::engine::render::GlslProgram& gl) {                                      \
+            using Self = Name;                                                                         \
+            [[maybe_unused]] int unit = 1;                                                             \
+            ::engine::render::litSurfaceLayout<Self>(gl);                                              \
+            LIST(ENGINE_PARAM_UNIFORM_ENTRY, ENGINE_PARAM_DIRECTION_ENTRY, ENGINE_PARAM_TEXTURE_ENTRY) \
+        }                                                                                              \
+    }
+
+// A list with no members of its own (a block that is the lit surface alone).
+#define ENGINE_NO_PARAMS(UNIFORM, DIRECTION, TEXTURE)

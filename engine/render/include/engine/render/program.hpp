@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/handles.hpp"
+#include "engine/render/param_block.hpp"
 #include "engine/render/texture.hpp"
 
 namespace engine::render {
@@ -33,28 +34,25 @@ struct DirectionalLight {
 // base colour as it is.
 inline DirectionalLight unlitLight() { return {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f), glm::vec3(1.0f)}; }
 
-struct FlatParams {
-    glm::mat4 viewProj{1.0f};
-    glm::vec4 color{1.0f};
-};
+// Flat's parameter block, declared once (param_block.hpp): the struct and its uniform table.
+#define ENGINE_FLAT_PARAMS(UNIFORM, DIRECTION, TEXTURE) \
+    UNIFORM(glm::mat4, viewProj, glm::mat4(1.0f))       \
+    UNIFORM(glm::vec4, color, glm::vec4(1.0f))
+ENGINE_PARAM_BLOCK(FlatParams, ENGINE_FLAT_PARAMS);
 
-// OpaqueLit and MaskedLit.
-struct SurfaceParams {
-    glm::mat4 viewProj{1.0f};
-    glm::vec4 baseColorFactor{1.0f};
-    TextureBinding baseColor;  // null texture: white
-    DirectionalLight light;
-};
+// OpaqueLit and MaskedLit: the lit surface alone (param_block.hpp).
+ENGINE_PARAM_BLOCK_ON_LIT_SURFACE(SurfaceParams, ENGINE_NO_PARAMS);
 
 // AlphaOnly: out = (a, a, a, a) with a = saturate(texture alpha * factor * vertex alpha).
 // Saturated because an alpha outside [0,1] (HDR sources) has no meaning as coverage and
 // would make float masks negative or unbounded ([Turánszki 2017] saturates particle alpha alike);
-// NaN saturates to 0.
-struct AlphaOnlyParams {
-    glm::mat4 viewProj{1.0f};
-    float alphaFactor = 1.0f;
-    TextureBinding baseColor;
-};
+// NaN saturates to 0. Its base colour is sampled as the lit surface's (glsl/base_color_sampling.glsl),
+// so standardProgramDesc names that texture's uniforms as the surface names them.
+#define ENGINE_ALPHA_ONLY_PARAMS(UNIFORM, DIRECTION, TEXTURE) \
+    UNIFORM(glm::mat4, viewProj, glm::mat4(1.0f))             \
+    UNIFORM(float, alphaFactor, 1.0f)                         \
+    TEXTURE(baseColor, Sampled, Sampled, Optional) /* null: alpha from the factor and vertex alone */
+ENGINE_PARAM_BLOCK(AlphaOnlyParams, ENGINE_ALPHA_ONLY_PARAMS);
 
 // Which program a pipeline runs: one of the standard programs every backend brings
 // (standard_programs.hpp), or one a module created with Backend::createProgram.

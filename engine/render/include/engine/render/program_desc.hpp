@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "engine/render/draw_params.hpp"
-#include "engine/render/program.hpp"
 #include "engine/render/texture.hpp"
 
 namespace engine::render {
@@ -124,13 +123,12 @@ ProgramDesc describeProgram(std::string name, VertexInput input, const char* par
 // use it, and modules whose programs shade that surface (WBOIT's accumulation).
 template <typename Params>
 void litSurfaceLayout(GlslProgram& gl) {
-    const std::size_t light = offsetof(Params, light);
     gl.uniforms = {
         {"u_viewProj", UniformType::Mat4, offsetof(Params, viewProj)},
         {"u_color", UniformType::Vec4, offsetof(Params, baseColorFactor)},
-        {"u_towardLight", UniformType::Direction, light + offsetof(DirectionalLight, towardLight)},
-        {"u_lightColor", UniformType::Vec3, light + offsetof(DirectionalLight, color)},
-        {"u_ambient", UniformType::Vec3, light + offsetof(DirectionalLight, ambient)},
+        {"u_towardLight", UniformType::Direction, offsetof(Params, light.towardLight)},
+        {"u_lightColor", UniformType::Vec3, offsetof(Params, light.color)},
+        {"u_ambient", UniformType::Vec3, offsetof(Params, light.ambient)},
     };
     gl.textures = {{"u_baseColor", offsetof(Params, baseColor), 0, TextureRead::Sampled, TextureUse::Sampled, true,
                     "u_hasTexture", "u_filter", "u_premultiplied"}};
