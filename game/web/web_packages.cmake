@@ -30,3 +30,8 @@ add_library(Threads::Threads INTERFACE IMPORTED GLOBAL)
 # Natively these headers sit in /usr/include, a system directory, so our warnings never judge
 # them even where a target names their folder with a plain -I: the same here.
 include_directories(SYSTEM ${SSAM_WEB_HEADERS} ${SSAM_WEB_HEADERS}/Imath)
+# The engine reports bad input and refusals as engine::Error exceptions (a technique the GLES
+# driver refuses is named on the page, not a crash): Emscripten leaves C++ exceptions off unless
+# asked, at compile and at link time.
+add_compile_options(-fexceptions)
+add_link_options(-fexceptions)

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/render/buffer.hpp"
 #include "engine/render/native_slots.hpp"

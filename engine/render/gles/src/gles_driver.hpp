@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/render/driver.hpp"
 #include "engine/render/gles/gles_backend.hpp"
