@@ -35,3 +35,17 @@ include_directories(SYSTEM ${SSAM_WEB_HEADERS} ${SSAM_WEB_HEADERS}/Imath)
 # asked, at compile and at link time.
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions)
+# oneTBB: none for WebAssembly. The engine's loops run in order without it (SSAM_WITH_TBB off,
+# parallel_for.hpp), so the modules that link TBB::tbb for those loops build unchanged against
+# this empty target.
+add_library(TBB::tbb INTERFACE IMPORTED GLOBAL)
+set(SSAM_STB_INCLUDE_DIR ${SSAM_WEB_HEADERS} CACHE PATH "stb headers (the web build links Debian's)" FORCE)
+# The light shafts module's CPU march is written for SSE2 and AVX2 in one file (the soft
+# backend's), and AVX2 has no WebAssembly form: the page leaves that module out (its flag, as
+# natively --no-lightshafts, stays in the table, its factory empty).
+set(SSAM_MODULE_LIGHTSHAFTS OFF CACHE BOOL "the web build has no light shafts (x86 SIMD kernels)" FORCE)
+# The page is one program over the engine's libraries: no GL 4.5 or Vulkan package components,
+# no installed library, none of the native demo's tools or tests (game/web builds what it needs).
+set(SSAM_LIBRARY_ONLY ON)
+set(SSAM_WITH_GL OFF)
+set(SSAM_WITH_VK OFF)

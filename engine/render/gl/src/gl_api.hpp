@@ -6,7 +6,7 @@
 //   In the web page's WebAssembly build (__EMSCRIPTEN__, only the GLES driver and the shared
 //   sources it uses): Emscripten's GLES 3.0 headers, whose calls its WebGL2 library implements;
 //   the extension entry points that library lacks (EXT_clip_control, OES_draw_buffers_indexed)
-//   are defined in the GLES driver's gles_web_entry_points.cpp.
+//   are defined in the GLES driver's gles_web_entry_points.js.
 #if defined(__EMSCRIPTEN__)
 #define GL_GLEXT_PROTOTYPES 1
 #include <GLES3/gl3.h>

@@ -64,7 +64,13 @@ GlTextureLimits queryGlTextureLimits(const std::string& renderer, bool es) {
 
 int maxSamplesOf(unsigned int target, unsigned int internal) {
     GLint count = 0;
+#if defined(__EMSCRIPTEN__)
+    // WebGL2 answers GL_SAMPLES only (the counts themselves, never their number): as many as fit
+    // in 16 entries, the rest left 0.
+    count = 16;
+#else
     glGetInternalformativ(target, internal, GL_NUM_SAMPLE_COUNTS, 1, &count);
+#endif
     std::vector<GLint> counts(std::size_t(std::max(count, 0)));
     if (count > 0) glGetInternalformativ(target, internal, GL_SAMPLES, count, counts.data());
     int best = 1;

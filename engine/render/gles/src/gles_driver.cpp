@@ -71,6 +71,8 @@ GlesDriver::~GlesDriver() {
         if (q.id) glDeleteQueries(1, &q.id);
     });
     samplers_.release();
+    glDeleteTextures(1, &presentCopy_.texture);
+    glDeleteBuffers(1, &presentCopy_.pixels);
     glDeleteBuffers(1, &identityInstance_);
     glDeleteVertexArrays(1, &vao_);
     glDeleteVertexArrays(1, &emptyVao_);
