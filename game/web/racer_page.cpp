@@ -141,13 +141,11 @@ EM_JS(void, notifyRefused, (const char* technique, const char* why), {
 class Page {
 public:
     explicit Page(const PageSettings& settings)
-        : settings_(settings),
-          context_(std::make_shared<CanvasContext>()),
+        : settings_(settings), context_(std::make_shared<CanvasContext>()),
           device_(engine::render::gles::createGlesBackend({.context = context_})),
           racing_(*device_, racer::SceneOptions{"/content", 1, {}, true}),
           frame_(*device_, racing_.library(), rendererOptions(settings, racing_)),
-          living_(racing_.registry(), racing_.library(), livingOptions(racing_)),
-          hudShown_(settings.hud) {
+          living_(racing_.registry(), racing_.library(), livingOptions(racing_)), hudShown_(settings.hud) {
         frame_.setLivingScene(&living_);
         std::printf("racer page: %s, %dx%d, %s\n", transparency::techniqueName(frame_.technique()), settings.width,
                     settings.height, device_->driver().describe().c_str());
@@ -299,7 +297,6 @@ private:
     std::vector<engine::render::PassTiming> lastPasses_;
     std::vector<unsigned char> pixels_;
 };
-
 
 std::unique_ptr<Page> page;
 std::string lastMessage;  // what the last call from index.html has to say (empty: done)

@@ -31,8 +31,7 @@ RgbaImage decodeImage(std::span<const std::uint8_t> encoded, const std::string& 
     const int length = int(encoded.size());
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, length, &width, &height, &channels))
-        throw fail("not a PNG or JPEG image (glTF 2.0 images must be one of these): it " +
-                   describeFileStart(encoded));
+        throw fail("not a PNG or JPEG image (glTF 2.0 images must be one of these): it " + describeFileStart(encoded));
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
     if (width <= 0 || height <= 0) throw fail("zero-size image (" + size + ")");
     if (width > limits.maxDimension || height > limits.maxDimension)
@@ -45,7 +44,8 @@ RgbaImage decodeImage(std::span<const std::uint8_t> encoded, const std::string& 
 
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
         stbi_load_from_memory(bytes, length, &width, &height, &channels, 4), stbi_image_free);
-    if (!pixels) throw fail(std::string("cannot read the pixels (truncated or corrupt image?): ") + stbi_failure_reason());
+    if (!pixels)
+        throw fail(std::string("cannot read the pixels (truncated or corrupt image?): ") + stbi_failure_reason());
     RgbaImage image = RgbaImage::make(width, height, render::AlphaMode::Straight);
     std::memcpy(image.pixels.data(), pixels.get(), image.pixels.size());
     return image;
