@@ -17,7 +17,9 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 # then the frame-capture tools engine teams use, whose captures of SSAM's frames the tests replay
 # (tests/capture/tools: apitrace, with apitrace-tracers' EGL wrapper, for GL; gfxreconstruct 0.9.18,
 # capture layer and replayer, for Vulkan), then Node.js for the Khronos glTF Validator the content
-# test runs.
+# test runs, then the page's toolchain and browser (make web, the browser test: tests/web):
+# Emscripten 3.1.6 with binaryen's optimizer, and Chromium's headless shell, which
+# puppeteer-core drives (it downloads no browser).
 PACKAGES := build-essential cmake pkg-config ccache \
             libglfw3-dev libglm-dev libtinygltf-dev libdraco-dev nlohmann-json3-dev libpng-dev \
             libopenimageio-dev openimageio-tools libtbb-dev \
@@ -26,12 +28,13 @@ PACKAGES := build-essential cmake pkg-config ccache \
             libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc libshaderc-dev spirv-tools \
             clang-format-14 \
             apitrace apitrace-tracers gfxreconstruct \
+            emscripten binaryen chromium-headless-shell \
             $(NODE_PACKAGES)
 # Debian's nodejs + npm, unless an npm is already on the PATH (e.g. a NodeSource nodejs,
 # which bundles npm and which Debian's npm package would try to replace).
 NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test test-asan test-tsan format-check format lint demo bench readme-images readme-chart content clean node-tools fuzz fuzz-campaign
+.PHONY: all deps configure build test test-asan test-tsan format-check format lint demo bench readme-images readme-chart content clean node-tools web-tools web serve-web fuzz fuzz-campaign
 
 all: build
 
@@ -56,7 +59,37 @@ node-tools: deps
 	@[ -d $(BUILD_DIR)/node/node_modules/gltf-validator ] || \
 	  npm install --prefix $(BUILD_DIR)/node --no-audit --no-fund --loglevel=error $(GLTF_VALIDATOR)
 
-test: build node-tools
+# puppeteer-core for the browser test (tests/web/package-lock.json pins it), installed by
+# `npm ci` into the git-ignored tests/web/node_modules; it drives Debian's chromium-headless-shell
+# and downloads no browser (PUPPETEER_SKIP_DOWNLOAD says so to any that would).
+web-tools: deps
+	@[ -d tests/web/node_modules/puppeteer-core ] || \
+	  PUPPETEER_SKIP_DOWNLOAD=1 npm ci --prefix tests/web --no-audit --no-fund --loglevel=error
+
+# The racer as a web page (README "In a browser"): Emscripten's build in build-web (emcmake;
+# game/web/CMakeLists.txt says what it takes and why), its content generated without Draco by the
+# native content-generator (the WebAssembly build has no Draco decoder), and the page's files in
+# out/web: index.html, racer.js, racer.wasm, racer.data (the content, preloaded) and content/ (the
+# same files, for the browser test's native frames). NODE_PATH: Emscripten's JavaScript optimizer
+# needs Debian's node-acorn, which a NodeSource node (PATH's, when not Debian's) does not look for.
+WEB_BUILD_DIR := build-web
+web: configure
+	cmake --build --preset $(PRESET) -j $(JOBS) --target content-generator
+	$(BUILD_DIR)/bin/content-generator --no-draco --out $(WEB_BUILD_DIR)/content > /dev/null
+	@[ -f $(WEB_BUILD_DIR)/CMakeCache.txt ] || emcmake cmake -S . -B $(WEB_BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DSSAM_WERROR=ON
+	NODE_PATH=/usr/share/nodejs cmake --build $(WEB_BUILD_DIR) -j $(JOBS) --target racer_page
+	@rm -rf out/web && mkdir -p out/web && cp -r $(WEB_BUILD_DIR)/content out/web/content && \
+	  cp $(WEB_BUILD_DIR)/bin/racer.js $(WEB_BUILD_DIR)/bin/racer.wasm $(WEB_BUILD_DIR)/bin/racer.data game/web/index.html out/web/
+	@echo "web: out/web (make serve-web serves it)"
+
+# out/web on http://127.0.0.1:8080/ only (WEB_PORT=...), with the COOP/COEP headers a threaded
+# WebAssembly build would need (tests/web/serve.mjs), until Ctrl+C.
+WEB_PORT ?= 8080
+serve-web:
+	@[ -f out/web/racer.wasm ] || { echo "serve-web: out/web has no page: run make web first"; exit 1; }
+	node tests/web/serve.mjs out/web $(WEB_PORT)
+
+test: build node-tools web-tools web
 	ctest --preset $(PRESET) -j $(JOBS)
 
 # The sanitizer pass CI runs after `make test` (tests/README.md "What CI runs"): the asan preset

@@ -169,7 +169,7 @@ std::vector<fs::path> contentFiles() {
     return files;
 }
 
-std::vector<fs::path> generateContent(const fs::path& dir) {
+std::vector<fs::path> generateContent(const fs::path& dir, bool draco) {
     Pngs pngs;
     pngs.leafImage = makeLeafCluster(0x1EAFu);
     pngs.frondImage = makeFrond(0xF40Du);
@@ -182,7 +182,7 @@ std::vector<fs::path> generateContent(const fs::path& dir) {
     pngs.car = encodePng(makeCarAtlas(0xCA40u));
     for (const PlantRecipe& recipe : plantRecipes())
         pngs.plants.push_back(plantModel(recipe, {recipe.fronds ? &pngs.frondImage : &pngs.leafImage, &pngs.barkImage},
-                                         recipe.fronds ? pngs.fronds : pngs.leaves, pngs.bark));
+                                         recipe.fronds ? pngs.fronds : pngs.leaves, pngs.bark, draco));
 
     engine::PendingFiles staged;  // the content set is replaced whole or not at all
     std::vector<fs::path> written;

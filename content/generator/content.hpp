@@ -11,8 +11,9 @@
 namespace content {
 
 // The set is written whole or not at all: every file to a temporary name first, then all
-// renamed into place together (engine/core/output_file.hpp).
-std::vector<std::filesystem::path> generateContent(const std::filesystem::path& dir);
+// renamed into place together (engine/core/output_file.hpp). draco false writes the plants'
+// meshes plain (the web page's content, game/web: no Draco decoder there); the rest is the same.
+std::vector<std::filesystem::path> generateContent(const std::filesystem::path& dir, bool draco = true);
 
 // The paths generateContent() writes, relative to its dir, without making anything: for a
 // tool to check every place it will write before the work.

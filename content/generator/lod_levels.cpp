@@ -189,7 +189,8 @@ ordered_json foliageMaterial(const std::string& name, int texture) {
 }  // namespace
 
 PlantModel plantModel(const PlantRecipe& recipe, const PlantTextures& textures,
-                      const std::vector<std::uint8_t>& foliagePng, const std::vector<std::uint8_t>& barkPng) {
+                      const std::vector<std::uint8_t>& foliagePng, const std::vector<std::uint8_t>& barkPng,
+                      bool draco) {
     const PlantMeshes full = buildPlant(recipe, 0), middle = buildPlant(recipe, 1);
     const Frame frame = frameOf(full);
     const engine::assets::RgbaImage atlas = impostorAtlas(full, textures, frame);
@@ -213,7 +214,7 @@ PlantModel plantModel(const PlantRecipe& recipe, const PlantTextures& textures,
         std::vector<GlbWriter::Part> parts;
         if (meshes.trunk) parts.push_back({&*meshes.trunk, bark});
         parts.push_back({&meshes.cards, cardsMaterial});
-        const int mesh = glb.addMesh(name, parts, /*draco=*/true);
+        const int mesh = glb.addMesh(name, parts, draco);
         return glb.addNode({{"name", name}, {"mesh", mesh}});
     };
     glb.setSceneNodes({addLevel(recipe.name, full, foliage)});

@@ -44,7 +44,10 @@ struct PlantModel {
     nlohmann::ordered_json lod;
 };
 
+// draco: the plant's meshes KHR_draco_mesh_compression-encoded (the committed content), or plain
+// (the web page's content: its WebAssembly build has no Draco decoder).
 PlantModel plantModel(const PlantRecipe& recipe, const PlantTextures& textures,
-                      const std::vector<std::uint8_t>& foliagePng, const std::vector<std::uint8_t>& barkPng);
+                      const std::vector<std::uint8_t>& foliagePng, const std::vector<std::uint8_t>& barkPng,
+                      bool draco = true);
 
 }  // namespace content

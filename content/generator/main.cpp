@@ -15,11 +15,11 @@
 
 namespace {
 
-int generate(const std::filesystem::path& out) {
+int generate(const std::filesystem::path& out, bool draco) {
     for (const std::filesystem::path& file : content::contentFiles())
         engine::requireWritableFile(out / file, /*createDirectory=*/true);
     std::uintmax_t total = 0;
-    for (const auto& file : content::generateContent(out)) {
+    for (const auto& file : content::generateContent(out, draco)) {
         const std::uintmax_t size = std::filesystem::file_size(out / file);
         total += size;
         std::printf("%8ju  %s\n", size, (out / file).string().c_str());
@@ -36,6 +36,10 @@ int main(int argc, char** argv) {
     app.add_option("--out", out,
                    "output directory, created if missing (the repository's content/ to update the committed files)")
         ->required();
+    bool noDraco = false;
+    app.add_flag("--no-draco", noDraco,
+                 "plants' meshes without Draco compression (the web page's content: make web; its WebAssembly "
+                 "build has no Draco decoder)");
     app.footer(engine::cli::contractHelpFooter());
-    return engine::cli::runTool("content-generator", app, argc, argv, [&] { return generate(out); });
+    return engine::cli::runTool("content-generator", app, argc, argv, [&] { return generate(out, !noDraco); });
 }

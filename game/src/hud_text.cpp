@@ -15,7 +15,10 @@ std::string format(const char* pattern, auto... values) {
 
 // What the backend's pass timings are (engine/render/backend.hpp PassTiming).
 const char* passClock(const std::string& backend) {
-    return backend.rfind("soft", 0) == 0 ? "CPU wall time of each pass" : "GPU time of each pass (GL_TIME_ELAPSED)";
+    if (backend.rfind("soft", 0) == 0) return "CPU wall time of each pass";
+    // The GLES driver's (natively and in the web page) are CPU times: ES 3.0 has no timer query.
+    if (backend.rfind("gles", 0) == 0) return "CPU time recording each pass (ES: no timer query)";
+    return "GPU time of each pass (GL_TIME_ELAPSED)";
 }
 
 }  // namespace

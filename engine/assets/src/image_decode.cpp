@@ -18,18 +18,6 @@
 
 namespace engine::assets {
 
-RgbaImage RgbaImage::make(int width, int height, render::AlphaMode alpha) {
-    if (width <= 0 || height <= 0)
-        throw Error("RgbaImage::make: size " + std::to_string(width) + "x" + std::to_string(height) +
-                    " is not positive");
-    RgbaImage image;
-    image.width = width;
-    image.height = height;
-    image.alpha = alpha;
-    image.pixels.assign(image.pixelCount() * 4, 0);
-    return image;
-}
-
 namespace {
 
 [[noreturn]] void fail(const std::string& name, const std::string& what, std::string detail = {}) {

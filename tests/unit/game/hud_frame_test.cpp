@@ -26,6 +26,9 @@ TEST(HudText, SaysTechniqueBackendSizeAndWhatTheTimesAre) {
     f.extra = "camera chase";
     EXPECT_EQ(racer::hudLines(f)[1], "camera chase");
     EXPECT_EQ(racer::hudLines(f)[3], "passes, ms: GPU time of each pass (GL_TIME_ELAPSED)");
+    f.backend = "gles (WebGL2)";  // the web page's; the GLES driver has CPU times only
+    EXPECT_EQ(racer::hudLines(f)[3], "passes, ms: CPU time recording each pass (ES: no timer query)");
+    f.backend = "gl";
     EXPECT_EQ(racer::compareHudLine("ssam", "alpha-test"),
               "side by side: ssam | alpha-test (passes: alpha-test's frame, then ssam's)");
     f.transientBytes = 115200;  // the previous frame's peak (FrameRenderer::peakTransientBytes)

@@ -43,6 +43,8 @@ GLuint GlFramebufferCache::get(const std::vector<GLuint>& colors, GLuint depth, 
     return fbo;
 }
 
+// GL 4.5's maker (direct state access): the web page's build has only the GLES driver's.
+#if !defined(__EMSCRIPTEN__)
 GLuint makeDirectStateFramebuffer(const std::vector<GLuint>& colors, GLuint depth, const std::string& what) {
     GLuint fbo = 0;
     glCreateFramebuffers(1, &fbo);
@@ -63,6 +65,7 @@ GLuint makeDirectStateFramebuffer(const std::vector<GLuint>& colors, GLuint dept
     }
     return fbo;
 }
+#endif
 
 void GlFramebufferCache::forget(GLuint texture) {
     for (auto it = framebuffers_.begin(); it != framebuffers_.end();) {

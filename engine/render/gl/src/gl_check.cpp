@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/core/error.hpp"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The backend's formats and fixed-function state as GL enums.
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/render/blend_state.hpp"
 #include "engine/render/compare_func.hpp"

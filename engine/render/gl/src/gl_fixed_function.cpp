@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "gl_fixed_function.hpp"
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "gl_enums.hpp"
 

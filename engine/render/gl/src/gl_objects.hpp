@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/render/buffer.hpp"
 #include "engine/render/native_slots.hpp"
@@ -23,6 +23,9 @@ using GlTexturePool = NativeSlots<GlTexture>;
 
 struct GlBuffer {
     GLuint id = 0;
+    // Where the GLES driver binds it to write: WebGL2 lets an index buffer be bound nowhere but
+    // GL_ELEMENT_ARRAY_BUFFER, and any other buffer never there (WebGL 2.0 §5.1).
+    GLenum uploadTarget = GL_COPY_WRITE_BUFFER;
 };
 
 // An occlusion query handle's GL query object (GL_ANY_SAMPLES_PASSED), made at the first

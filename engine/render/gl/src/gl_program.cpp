@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <utility>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/core/error.hpp"
 #include "engine/render/gl/plumbing/build_program.hpp"
@@ -49,6 +49,9 @@ GlProgram compileProgram(std::string name, std::string_view vertexSource, std::s
 
 const char* framebufferStatusName(unsigned int status) { return plumbing::framebufferStatusName(status); }
 
+// GL 4.5's check (direct state access); the GLES driver checks its framebuffers while bound
+// (makeBoundFramebuffer), and the web page's build has no GL 4.5 driver.
+#if !defined(__EMSCRIPTEN__)
 void checkFramebuffer(unsigned int framebuffer, const std::string& what) {
     const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_DRAW_FRAMEBUFFER);
     if (status == GL_FRAMEBUFFER_COMPLETE) return;
@@ -60,5 +63,6 @@ void checkFramebuffer(unsigned int framebuffer, const std::string& what) {
         }() + ")");
     throw Error(what + ": framebuffer incomplete (" + framebufferStatusName(status) + ")");
 }
+#endif
 
 }  // namespace engine::render::gl

@@ -48,6 +48,9 @@ void setUniform(const ParamCalls& c, GLuint p, GLint location, const UniformFiel
 
 }  // namespace
 
+// GL 4.5's (direct state access). The web page's build has only the GLES driver, whose calls go
+// through the program in use (gles_draw.cpp), and WebGL2 has none of these.
+#if !defined(__EMSCRIPTEN__)
 const ParamCalls kDirectStateParamCalls{
     [](GLuint p, GLint l, GLint v) { glProgramUniform1i(p, l, v); },
     [](GLuint p, GLint l, GLfloat v) { glProgramUniform1f(p, l, v); },
@@ -57,6 +60,7 @@ const ParamCalls kDirectStateParamCalls{
     [](GLuint p, GLint l, const GLfloat* v) { glProgramUniformMatrix4fv(p, l, 1, GL_FALSE, v); },
     [](GLuint unit, GLuint texture) { glBindTextureUnit(unit, texture); },
 };
+#endif
 
 std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc, GlslTarget target) {
     return compileSlot(std::move(desc),

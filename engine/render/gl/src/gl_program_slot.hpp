@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/render/draw_params.hpp"
 #include "engine/render/gl/gl_program.hpp"

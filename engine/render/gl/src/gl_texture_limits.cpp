@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "gl_texture_limits.hpp"
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -25,14 +25,14 @@ bool rendersOnTheCpu(const std::string& renderer) {
 
 MemoryProbe memoryProbe(const std::string& renderer) {
     if (rendersOnTheCpu(renderer)) return hostMemoryAvailable;
-    if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info"))
+    if (glHasExtension("GL_NVX_gpu_memory_info"))
         return []() -> std::optional<AvailableMemory> {
             GLint kib = 0;
             glGetIntegerv(kGpuMemoryCurrentAvailableNvx, &kib);
             if (kib <= 0) return std::nullopt;
             return AvailableMemory{std::uint64_t(kib) << 10, "GL_NVX_gpu_memory_info's available video memory"};
         };
-    if (epoxy_has_gl_extension("GL_ATI_meminfo"))
+    if (glHasExtension("GL_ATI_meminfo"))
         return []() -> std::optional<AvailableMemory> {
             GLint kib[4] = {};
             glGetIntegerv(kTextureFreeMemoryAti, kib);
@@ -51,17 +51,26 @@ GlTextureLimits queryGlTextureLimits(const std::string& renderer, bool es) {
     if (es) {
         glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &limits.maxFramebufferWidth);
         limits.maxFramebufferHeight = limits.maxFramebufferWidth;
-    } else {
+    }
+#if !defined(__EMSCRIPTEN__)  // desktop GL's limits (the web build's ES headers have none)
+    else {
         glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &limits.maxFramebufferWidth);
         glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &limits.maxFramebufferHeight);
     }
+#endif
     limits.memory = memoryProbe(renderer);
     return limits;
 }
 
 int maxSamplesOf(unsigned int target, unsigned int internal) {
     GLint count = 0;
+#if defined(__EMSCRIPTEN__)
+    // WebGL2 answers GL_SAMPLES only (the counts themselves, never their number): as many as fit
+    // in 16 entries, the rest left 0.
+    count = 16;
+#else
     glGetInternalformativ(target, internal, GL_NUM_SAMPLE_COUNTS, 1, &count);
+#endif
     std::vector<GLint> counts(std::size_t(std::max(count, 0)));
     if (count > 0) glGetInternalformativ(target, internal, GL_SAMPLES, count, counts.data());
     int best = 1;

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/render/texel_codec.hpp"
 #include "engine/render/texture.hpp"

@@ -3,7 +3,9 @@
 // uses, and the release of every GL object it made. The rest of GlesDriver: gles_driver.hpp.
 #include "gles_driver.hpp"
 
+#if !defined(__EMSCRIPTEN__)
 #include <dlfcn.h>
+#endif
 
 #include <cstddef>
 #include <string>
@@ -25,16 +27,16 @@ GlesDriver::GlesDriver(const GlesOptions& options, std::shared_ptr<gl::GlContext
     const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     if (!version) throw Error("GLES backend: no GL context is current on this thread");
     version_ = version;
-    if (epoxy_is_desktop_gl() || epoxy_gl_version() < 30)
+    if (gl::glIsDesktop() || gl::glVersion() < 30)
         throw Error("GLES backend: OpenGL ES 3.0 or newer needed, the context is " + version_);
     renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     // ES 3.0 has no glClipControl: without EXT_clip_control every picture would be upside down
     // against the soft driver's and depth would lose its [0, 1] range.
-    if (!epoxy_has_gl_extension("GL_EXT_clip_control"))
+    if (!gl::glHasExtension("GL_EXT_clip_control"))
         throw Error("GLES backend: " + renderer_ + " lacks GL_EXT_clip_control (upper-left origin, depth in [0, 1])");
-    extensions_.colorBufferFloat = epoxy_has_gl_extension("GL_EXT_color_buffer_float");
-    extensions_.floatBlend = epoxy_has_gl_extension("GL_EXT_float_blend");
-    extensions_.drawBuffersIndexed = epoxy_has_gl_extension("GL_OES_draw_buffers_indexed");
+    extensions_.colorBufferFloat = gl::glHasExtension("GL_EXT_color_buffer_float");
+    extensions_.floatBlend = gl::glHasExtension("GL_EXT_float_blend");
+    extensions_.drawBuffersIndexed = gl::glHasExtension("GL_OES_draw_buffers_indexed");
     textureLimits_ = gl::queryGlTextureLimits(renderer_, true);
 
     drainGlErrors();
@@ -69,6 +71,8 @@ GlesDriver::~GlesDriver() {
         if (q.id) glDeleteQueries(1, &q.id);
     });
     samplers_.release();
+    glDeleteTextures(1, &presentCopy_.texture);
+    glDeleteBuffers(1, &presentCopy_.pixels);
     glDeleteBuffers(1, &identityInstance_);
     glDeleteVertexArrays(1, &vao_);
     glDeleteVertexArrays(1, &emptyVao_);
@@ -82,6 +86,14 @@ std::string GlesDriver::describe() const {
 
 namespace {
 
+#if defined(__EMSCRIPTEN__)
+// On the web the page makes the WebGL2 context (there is no EGL) and hands it over.
+std::shared_ptr<gl::GlContext> contextFor(const GlesOptions& options) {
+    if (!options.context)
+        throw Error("GLES backend: in a browser the page makes the WebGL2 context; pass it as GlesOptions::context");
+    return options.context;
+}
+#else
 // libepoxy aborts the process when it cannot load the ES library: look for it first.
 std::string esLibraryMissing() {
     static const bool found = dlopen("libGLESv2.so.2", RTLD_LAZY | RTLD_LOCAL) != nullptr;  // kept loaded
@@ -95,6 +107,7 @@ std::shared_ptr<gl::GlContext> contextFor(const GlesOptions& options) {
     headless.es = true;
     return gl::HeadlessEglContext::create(headless);
 }
+#endif
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 //   gles_passes.cpp     passes (framebuffer, clears, queries), resolves, timings
 //   gles_readback.cpp   readback through glReadPixels
 //   gles_draw.cpp       one draw: its fixed-function state, the fail-mode steps, the GL calls
+//   gles_present.cpp    the finished frame shown in the context's window (the web page's canvas)
 // The shared pieces (formats and enums, error checks, program building and parameters, sampler
 // and framebuffer caches) are the GL 4.5 driver's.
 #include <chrono>
@@ -16,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/render/driver.hpp"
 #include "engine/render/gles/gles_backend.hpp"
@@ -77,6 +78,9 @@ public:
     // timings in gles_passes.cpp, readbacks in gles_readback.cpp, draws in gles_draw.cpp.
     ENGINE_DRIVER_CALLS(ENGINE_DRIVER_OVERRIDE)
 
+    // gles_present.cpp
+    bool present(NativeId h, const TextureDesc& desc) override;
+
 private:
     void makeCurrent() {
         if (context_) context_->makeCurrent();
@@ -95,6 +99,9 @@ private:
     // gles_passes.cpp
     void applyBaseState();
     void releaseQueryObject(GLuint query);
+
+    // gles_present.cpp: an sRGB frame's stored codes in a linear RGBA8 texture (why: there)
+    GLuint linearCopy(const GlTexture& t, const std::string& what);
 
     // gles_draw.cpp
     void bindVertices(const DriverDraw& d, std::uint32_t firstInstance);
@@ -117,6 +124,10 @@ private:
     gl::GlSamplerCache samplers_;
     std::optional<ProgramSlot> depthToColor_;  // readback of depth: ES 3.0 cannot glReadPixels it
     GLuint vao_ = 0, emptyVao_ = 0, identityInstance_ = 0;
+    struct PresentCopy {  // gles_present.cpp
+        GLuint pixels = 0, texture = 0;
+        int width = 0, height = 0;
+    } presentCopy_;
 
     std::optional<DriverPass> pass_;
     std::vector<NativeId> targets_;  // the pass's colour attachments, packed

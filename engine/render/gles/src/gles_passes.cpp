@@ -120,7 +120,11 @@ void GlesDriver::applyBaseState() {
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_RASTERIZER_DISCARD);
     glDisable(GL_SAMPLE_COVERAGE);
+    // WebGL2 keeps primitive restart on and refuses the switch (WebGL 2.0 §5.18); the driver's
+    // 32-bit indices never reach its 0xFFFFFFFF (a mesh's vertex count is far below that).
+#if !defined(__EMSCRIPTEN__)
     glDisable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+#endif
 }
 
 }  // namespace engine::render::gles

@@ -166,10 +166,14 @@ NativeId GlesDriver::createBuffer(const BufferDesc& desc, std::span<const std::b
     std::vector<std::byte> zeros;
     if (data.empty()) zeros.assign(desc.size, std::byte{0});
     glGenBuffers(1, &b.id);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, b.id);
-    glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(desc.size), data.empty() ? zeros.data() : data.data(),
-                 GL_DYNAMIC_DRAW);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    // An index buffer is written through the element binding of no vertex array of ours (0).
+    if (desc.kind == BufferKind::Index) {
+        b.uploadTarget = GL_ELEMENT_ARRAY_BUFFER;
+        glBindVertexArray(0);
+    }
+    glBindBuffer(b.uploadTarget, b.id);
+    glBufferData(b.uploadTarget, GLsizeiptr(desc.size), data.empty() ? zeros.data() : data.data(), GL_DYNAMIC_DRAW);
+    glBindBuffer(b.uploadTarget, 0);
     try {
         checkGl(what + ": allocating " + std::to_string(desc.size) + " bytes");
     } catch (...) {
@@ -181,9 +185,11 @@ NativeId GlesDriver::createBuffer(const BufferDesc& desc, std::span<const std::b
 
 void GlesDriver::updateBuffer(NativeId handle, std::uint64_t offset, std::span<const std::byte> data) {
     makeCurrent();
-    glBindBuffer(GL_COPY_WRITE_BUFFER, buffers_[handle].id);
-    glBufferSubData(GL_COPY_WRITE_BUFFER, GLintptr(offset), GLsizeiptr(data.size()), data.data());
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    const GlBuffer& b = buffers_[handle];
+    if (b.uploadTarget == GL_ELEMENT_ARRAY_BUFFER) glBindVertexArray(0);
+    glBindBuffer(b.uploadTarget, b.id);
+    glBufferSubData(b.uploadTarget, GLintptr(offset), GLsizeiptr(data.size()), data.data());
+    glBindBuffer(b.uploadTarget, 0);
 }
 
 GlesProgram GlesDriver::compile(std::shared_ptr<const ProgramDesc> desc) {

@@ -4,7 +4,7 @@
 #include <regex>
 #include <set>
 
-#include <epoxy/gl.h>
+#include "gl_api.hpp"
 
 #include "engine/core/error.hpp"
 #include "engine_render_gles_glsl.hpp"  // generated from glsl/

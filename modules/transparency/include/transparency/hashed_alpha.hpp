@@ -15,12 +15,12 @@
 // The stable coordinate is the texture coordinate, not the position: the wind module bends
 // positions and leaves uv alone, and every instance of a mesh shares its object space, so a
 // per-instance seed (seedOfInstance) tells instances apart.
-#include <bit>
 #include <cmath>
 #include <cstdint>
 
 #include <glm/glm.hpp>
 
+#include "engine/core/bit_cast.hpp"
 #include "engine/render/program.hpp"
 #include "engine/render/program_desc.hpp"
 #include "engine/render/texture.hpp"
@@ -48,8 +48,8 @@ inline float hashToUnit(std::uint32_t h) { return float(h >> 8u) * (1.0f / 16777
 // The per-instance seed: the bits of the instance's translation, hashed. Stable across
 // frames, camera moves and wind (the wind bends vertices, not the instance's transform).
 inline std::uint32_t seedOfInstance(const glm::mat4& model) {
-    const glm::uvec3 bits{std::bit_cast<std::uint32_t>(model[3].x), std::bit_cast<std::uint32_t>(model[3].y),
-                          std::bit_cast<std::uint32_t>(model[3].z)};
+    const glm::uvec3 bits{engine::bitCast<std::uint32_t>(model[3].x), engine::bitCast<std::uint32_t>(model[3].y),
+                          engine::bitCast<std::uint32_t>(model[3].z)};
     return pcg3d(bits).x;
 }
 
@@ -70,9 +70,9 @@ struct Log2Split {
     float fraction = 0.0f;  // in [0, 1)
 };
 inline Log2Split splitLog2(float x) {
-    const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
+    const std::uint32_t bits = engine::bitCast<std::uint32_t>(x);
     const int exponent = int((bits >> 23u) & 0xffu) - 127;
-    const float mantissa = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
+    const float mantissa = engine::bitCast<float>((bits & 0x007fffffu) | 0x3f800000u);
     return {exponent, log2Mantissa(mantissa)};
 }
 
@@ -80,7 +80,7 @@ inline Log2Split splitLog2(float x) {
 inline std::uint32_t cellOf(float scaled) {
     const float f = std::floor(scaled);
     const float c = f > 1073741824.0f ? 1073741824.0f : (f < -1073741824.0f ? -1073741824.0f : f);
-    return std::bit_cast<std::uint32_t>(std::int32_t(c));
+    return engine::bitCast<std::uint32_t>(std::int32_t(c));
 }
 
 // The hash of uv's cell at scale 2^level (per axis: levels.x, levels.y), seeded.

@@ -12,10 +12,15 @@
 // after the loop (join). A real race inside the loop body is still reported. Without TSan
 // they compile to nothing.
 //
-// Header-only and oneTBB's: include it only from code that links TBB::tbb.
+// Header-only and oneTBB's: include it only from code that links TBB::tbb. Where there is no
+// oneTBB (the web page's WebAssembly build: CMake option SSAM_WITH_TBB off defines
+// ENGINE_SERIAL_LOOPS), the same loops run in order on the calling thread.
+#include <algorithm>
 #include <cstddef>
+#if !defined(ENGINE_SERIAL_LOOPS)
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#endif
 
 #if defined(__SANITIZE_THREAD__)
 #define ENGINE_THREAD_SANITIZER 1
@@ -50,6 +55,25 @@ private:
 };
 }  // namespace parallel_detail
 
+#if defined(ENGINE_SERIAL_LOOPS)
+// No oneTBB: body(i) for every i in [begin, end), in order, on this thread.
+template <typename Index, typename Body>
+void parallelFor(Index begin, Index end, const Body& body) {
+    for (Index i = begin; i < end; ++i) body(i);
+}
+
+// No oneTBB: body(first, last) over consecutive chunks of `grain` indices (the last may be
+// shorter), in order, on this thread.
+template <typename Index, typename Body>
+void parallelForChunks(Index begin, Index end, Index grain, const Body& body) {
+    const Index step = std::max(grain, Index(1));
+    for (Index first = begin; first < end;) {
+        const Index last = end - first > step ? first + step : end;
+        body(first, last);
+        first = last;
+    }
+}
+#else
 // body(i) for every i in [begin, end), in parallel (oneTBB's auto partitioner).
 template <typename Index, typename Body>
 void parallelFor(Index begin, Index end, const Body& body) {
@@ -75,5 +99,6 @@ void parallelForChunks(Index begin, Index end, Index grain, const Body& body) {
     });
     handOff.acquire();
 }
+#endif
 
 }  // namespace engine
