@@ -37,19 +37,21 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                 const render::Instance instance{model, glm::vec4(1.0f, 1.0f, 1.0f, weight)};
                 const float distance = glm::length((world.min + world.max) * 0.5f - cameraPosition);
                 if (part.material.surface == SurfaceClass::Blend) {
-                    lists.blend.push_back({partIndex, own, {instance}, world, distance});
+                    lists.blend.push_back({partIndex, own, {instance}, world, distance, {}});
                     continue;
                 }
                 if (own) {
+                    const render::BufferHandle motion =
+                        i < override->motionBuffers.size() ? override->motionBuffers[i] : render::BufferHandle{};
                     (part.material.surface == SurfaceClass::Mask ? ownMask : ownOpaque)
-                        .push_back({partIndex, own, {instance}, world, distance});
+                        .push_back({partIndex, own, {instance}, world, distance, motion});
                     continue;
                 }
                 std::vector<DrawBatch>& list = part.material.surface == SurfaceClass::Mask ? lists.mask : lists.opaque;
                 int& slot = batchOfPart[partIndex];
                 if (slot < 0) {
                     slot = static_cast<int>(list.size());
-                    list.push_back({partIndex, {}, {}, {}, 0.0f});
+                    list.push_back({partIndex, {}, {}, {}, 0.0f, {}});
                 }
                 list[slot].instances.push_back(instance);
                 list[slot].worldBounds.add(world);

@@ -20,6 +20,8 @@ struct DrawBatch {
     std::vector<render::Instance> instances;
     Aabb worldBounds;
     float viewDistance = 0.0f;  // of the bounds' centre, for sorting Blend batches
+    // The override's motion copy of `vertices` (VertexOverride::motionBuffers); null: none.
+    render::BufferHandle motionVertices;
 };
 
 struct DrawLists {
