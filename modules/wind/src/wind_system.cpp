@@ -97,20 +97,22 @@ std::size_t WindSystem::attach(ecs::Registry& registry, std::uint32_t seed) cons
     return foliage.size();
 }
 
-std::span<const Vertex> WindSystem::deformed(ecs::Entity e, std::size_t i) const {
+const WindSystem::DeformedPart* WindSystem::partOf(ecs::Entity e, std::size_t i) const {
     const auto it = plants_.find(e);
-    if (it == plants_.end()) return {};
+    if (it == plants_.end()) return nullptr;
     for (const DeformedPart& p : it->second.parts)
-        if (p.slot == i) return p.vertices;
-    return {};
+        if (p.slot == i) return &p;
+    return nullptr;
+}
+
+std::span<const Vertex> WindSystem::deformed(ecs::Entity e, std::size_t i) const {
+    const DeformedPart* p = partOf(e, i);
+    return p ? std::span<const Vertex>(p->vertices) : std::span<const Vertex>();
 }
 
 std::span<const Vertex> WindSystem::motion(ecs::Entity e, std::size_t i) const {
-    const auto it = plants_.find(e);
-    if (it == plants_.end()) return {};
-    for (const DeformedPart& p : it->second.parts)
-        if (p.slot == i) return p.motion;
-    return {};
+    const DeformedPart* p = partOf(e, i);
+    return p ? std::span<const Vertex>(p->motion) : std::span<const Vertex>();
 }
 
 void WindSystem::releasePlant(ecs::Registry& registry, ecs::Entity e, DeformedPlant& plant) {

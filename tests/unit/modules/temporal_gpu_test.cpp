@@ -8,6 +8,8 @@
 // motion pass and the resolve's nearest-motion search on the GPU against soft.
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/render/frame_targets.hpp"
@@ -47,18 +49,24 @@ Readback sixFrames(Backend& backend, TechniqueKind kind) {
     return backend.readback(opaque.color());
 }
 
+// The largest difference of two readbacks, and how many values differ by more than 1e-3.
+std::pair<float, int> difference(const Readback& s, const Readback& g) {
+    float worst = 0.0f;
+    int over = 0;
+    for (std::size_t i = 0; i < s.values.size(); ++i) {
+        const float d = std::abs(s.values[i] - g.values[i]);
+        worst = std::max(worst, d);
+        over += d > 1e-3f;
+    }
+    return {worst, over};
+}
+
 TEST(SSAM_GPU_SUITE(Temporal), SixFramesMatchTheSoftBackend) {
     for (TechniqueKind kind : {TechniqueKind::HashedTaa, TechniqueKind::AlphaTestTaa}) {
         auto soft = soft::createSoftBackend({.threads = 1});
         auto gpu = gpuBackend();
         const Readback s = sixFrames(*soft, kind), g = sixFrames(*gpu, kind);
-        float worst = 0.0f;
-        int over = 0;
-        for (std::size_t i = 0; i < s.values.size(); ++i) {
-            const float d = std::abs(s.values[i] - g.values[i]);
-            worst = std::max(worst, d);
-            over += d > 1e-3f;
-        }
+        const auto [worst, over] = difference(s, g);
         std::printf("%s soft vs %s after 6 frames: worst %.6f, %d of %zu values over 1e-3\n", techniqueName(kind),
                     kGpuName, worst, over, s.values.size());
         // Measured: hashed+taa 148 of 16384 (its flips, carried on by the history), alpha-test+taa 10.
@@ -80,13 +88,7 @@ TEST(SSAM_GPU_SUITE(Temporal), AMovingCardMatchesTheSoftBackend) {
                 g = b.frame(std::uint64_t(i), offset);
             }
         }
-        float worst = 0.0f;
-        int over = 0;
-        for (std::size_t i = 0; i < s.values.size(); ++i) {
-            const float d = std::abs(s.values[i] - g.values[i]);
-            worst = std::max(worst, d);
-            over += d > 1e-3f;
-        }
+        const auto [worst, over] = difference(s, g);
         std::printf("%s moving card, soft vs %s after 12 frames: worst %.6f, %d of %zu values over 1e-3\n",
                     techniqueName(kind), kGpuName, worst, over, s.values.size());
         // The card's red ramp (0.03 a pixel) is interpolated by each rasterizer to about 1e-3

@@ -108,6 +108,8 @@ private:
         std::size_t slots = 0;  // partsOf(model).size()
     };
 
+    // Part slot `i` of plant `e`, or null when it is not deformed.
+    const DeformedPart* partOf(engine::ecs::Entity e, std::size_t i) const;
     void releasePlant(engine::ecs::Registry& registry, engine::ecs::Entity e, DeformedPlant& plant);
     // The buffers for a deformed copy of library part `part`: a spare pair, or a new one.
     PartBuffers partBuffers(std::uint32_t part, std::span<const engine::render::Vertex> vertices);
