@@ -52,8 +52,8 @@ struct Subject {
     double flicker() const { return flickerPairs ? flickerSum / double(flickerPairs) : 0.0; }
 };
 
-Subject makeSubject(Backend& backend, const BenchScene& scene, const BenchOptions& o,
-                    transparency::TechniqueKind kind, transparency::TechniqueOptions options) {
+Subject makeSubject(Backend& backend, const BenchScene& scene, const BenchOptions& o, transparency::TechniqueKind kind,
+                    transparency::TechniqueOptions options) {
     options.depthFunc = kDepthFunc;
     Subject s;
     s.technique = transparency::createTechnique(kind, backend, options);
@@ -134,7 +134,8 @@ void measure(Backend& soft, SceneKind kind, Motion motion, const BenchOptions& o
         const ViewUpload view(soft, scene, camera);
         if (!measured) {  // history, for the techniques that keep it
             for (Subject& s : subjects)
-                if (s.technique->needsHistory()) s.drawer->draw(*s.targets, s.technique.get(), view, std::uint64_t(j), j == 0);
+                if (s.technique->needsHistory())
+                    s.drawer->draw(*s.targets, s.technique.get(), view, std::uint64_t(j), j == 0);
             continue;
         }
         std::printf("[ssam-bench] %-6s %s frame %d/%d%s\n", sceneName(kind), motionName(motion), k + 1, frames,
@@ -192,8 +193,7 @@ std::vector<Motion> parseMotions(std::string_view list) {
         if (name == "pan") m = Motion::Pan;
         else if (name == "dolly") m = Motion::Dolly;
         else if (name == "wind") m = Motion::Wind;
-        else
-            throw engine::UsageError("--motion: '" + std::string(name) + "' is not one of pan, dolly, wind");
+        else throw engine::UsageError("--motion: '" + std::string(name) + "' is not one of pan, dolly, wind");
 #if !SSAM_BENCH_WIND
         if (m == Motion::Wind) throw engine::UsageError("--motion: 'wind' needs modules/wind, left out of this build");
 #endif
@@ -246,9 +246,8 @@ void printMotionTable(const std::vector<MotionRow>& rows) {
     std::printf("%-7s %-6s %-15s %9s %8s %10s %8s %10s %8s %11s\n", "scene", "motion", "technique", "flicker", "flip",
                 "flip_worst", "rmse", "rmse_worst", "ghost", "ghost_worst");
     for (const MotionRow& r : rows)
-        std::printf("%-7s %-6s %-15s %9.5f %8.4f %10.4f %8.4f %10.4f %8.4f %11.4f\n", r.scene.c_str(),
-                    r.motion.c_str(), r.technique.c_str(), r.flicker, r.flip, r.flipWorst, r.rmse, r.rmseWorst, r.ghost,
-                    r.ghostWorst);
+        std::printf("%-7s %-6s %-15s %9.5f %8.4f %10.4f %8.4f %10.4f %8.4f %11.4f\n", r.scene.c_str(), r.motion.c_str(),
+                    r.technique.c_str(), r.flicker, r.flip, r.flipWorst, r.rmse, r.rmseWorst, r.ghost, r.ghostWorst);
 }
 
 }  // namespace bench
