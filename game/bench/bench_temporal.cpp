@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "bench_frame.hpp"
+#include "foliage_errors.hpp"
 #include "engine/capture/metrics.hpp"
 #include "engine/capture/readback_image.hpp"
 #include "engine/render/frame_targets.hpp"
@@ -33,16 +34,6 @@ Image draw(Backend& backend, FrameDrawer& drawer, FrameTargets& targets, transpa
     drawer.draw(targets, technique, view, index, index == 0);
     backend.takeTimings();
     return engine::capture::imageFromReadback(backend.readback(targets.color()));
-}
-
-// The median of the last half of `v` (the converged value) and its largest element.
-void summarize(std::vector<double> v, double& converged, double& worst) {
-    if (v.empty()) return;
-    worst = *std::max_element(v.begin(), v.end());
-    std::vector<double> tail(v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-    std::sort(tail.begin(), tail.end());
-    const std::size_t n = tail.size();
-    converged = n % 2 ? tail[n / 2] : 0.5 * (tail[n / 2 - 1] + tail[n / 2]);
 }
 
 }  // namespace
@@ -111,35 +102,16 @@ void measureTemporal(const std::vector<TemporalBackend>& backends, const BenchOp
         const Image ref = draw(soft, softDrawer, referenceTargets, reference.get(), *views.front(), 0);
         const Image opaque = draw(soft, softDrawer, opaqueTargets, nullptr, *views.front(), 0);
         // Foliage pixels: where the reference differs from the opaque-only frame.
-        std::vector<char> foliage(std::size_t(o.width) * o.height, 0);
         std::size_t foliageCount = 0;
-        for (int y = 0; y < o.height; ++y)
-            for (int x = 0; x < o.width; ++x)
-                for (int c = 0; c < 3; ++c)
-                    if (ref.at(x, y, c) != opaque.at(x, y, c)) {
-                        foliage[std::size_t(y) * o.width + x] = 1;
-                        ++foliageCount;
-                        break;
-                    }
+        const std::vector<char> foliage = foliagePixels(ref, opaque, foliageCount);
         if (foliageCount == 0) continue;  // nothing to judge in this frame
         for (Subject& s : subjects) {
             const std::uint64_t index = (s.technique->needsHistory() ? kHistoryFrames : 0) + std::uint64_t(k);
             const Image image =
                 draw(*backends[s.backend].backend, *s.drawer, *s.targets, s.technique.get(), *views[s.backend], index);
-            Image map;
-            engine::capture::flip(ref, image, {}, &map);
-            double flipSum = 0.0, squares = 0.0;
-            for (int y = 0; y < o.height; ++y)
-                for (int x = 0; x < o.width; ++x) {
-                    if (!foliage[std::size_t(y) * o.width + x]) continue;
-                    flipSum += map.at(x, y, 0);
-                    for (int c = 0; c < 3; ++c) {
-                        const double d = double(image.at(x, y, c)) - double(ref.at(x, y, c));
-                        squares += d * d;
-                    }
-                }
-            s.flip.push_back(flipSum / double(foliageCount));
-            s.rmse.push_back(std::sqrt(squares / double(3 * foliageCount)));
+            const FoliageError error = foliageError(ref, image, foliage, foliageCount);
+            s.flip.push_back(error.flip);
+            s.rmse.push_back(error.rmse);
         }
     }
     for (Subject& s : subjects) {

@@ -20,6 +20,7 @@
 
 #include "bench_chart.hpp"
 #include "bench_dolly.hpp"
+#include "bench_motion.hpp"
 #include "bench_figures.hpp"
 #include "bench_goals.hpp"
 #include "bench_report.hpp"
@@ -72,6 +73,9 @@ struct Options {
     std::string crossfade = "on";
     bool dolly = false;
     int dollyFrames = kDollyFrames;
+    std::string motion;  // --motion: empty, or a list of pan, dolly, wind
+    int motionFrames = 32;
+    std::string motionVectors = "on";
 };
 
 std::vector<std::string> splitList(const std::string& list, const char* flag) {
@@ -222,12 +226,17 @@ BenchOptions parse(const Options& o) {
     if (o.dolly && (o.dollyFrames < 2 || o.dollyFrames > kDollyFrames))
         throw engine::UsageError("--dolly-frames " + std::to_string(o.dollyFrames) + ": expected 2.." +
                                  std::to_string(kDollyFrames));
+    if (!o.motion.empty()) parseMotions(o.motion);  // a bad name fails before the first frame
+    if (!o.motion.empty() && (o.motionFrames < 2 || o.motionFrames > kDollyFrames))
+        throw engine::UsageError("--motion-frames " + std::to_string(o.motionFrames) + ": expected 2.." +
+                                 std::to_string(kDollyFrames));
     return b;
 }
 
 int run(const CLI::App& app, Options o, int argc, char** argv) {
     if (o.sweep && !app.count("--techniques")) o.techniques = "alpha-test,ssam-plus";
-    if (o.dolly) {  // the whole path on every technique: a small frame, the forest
+    if (app.count("--motion")) parseMotions(o.motion);  // an empty or bad list fails before the first frame
+    if (o.dolly || !o.motion.empty()) {                 // the whole path on every technique: a small frame, the forest
         if (!app.count("--size")) o.size = "320x180";
         if (!app.count("--scenes")) o.scenes = "forest";
     }
@@ -247,10 +256,11 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         throw engine::Error("--content '" + o.contentDir + "': no such directory");
     const std::filesystem::path out(o.out);
     const std::vector<const char*> reports =
-        o.scaling ? std::vector<const char*>{"scaling.csv", "scaling.svg"}
-        : o.dolly ? std::vector<const char*>{"dolly.csv"}
-        : o.sweep ? std::vector<const char*>{"sweep.csv", "sweep.md"}
-                  : std::vector<const char*>{"bench.csv", "bench_passes.csv", "bench.md", "bench.svg"};
+        o.scaling           ? std::vector<const char*>{"scaling.csv", "scaling.svg"}
+        : o.dolly           ? std::vector<const char*>{"dolly.csv"}
+        : !o.motion.empty() ? std::vector<const char*>{"motion.csv"}
+        : o.sweep           ? std::vector<const char*>{"sweep.csv", "sweep.md"}
+                            : std::vector<const char*>{"bench.csv", "bench_passes.csv", "bench.md", "bench.svg"};
     engine::requireWritableDirectory(out, /*create=*/true);
     for (const char* name : reports) engine::requireWritableFile(out / name, /*createDirectory=*/false);
     if (!o.figures.empty()) engine::requireWritableFile(o.figures, /*createDirectory=*/false);
@@ -289,6 +299,15 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         stageReport(files, out / "scaling.svg", [&](std::ostream& s) { writeScalingSvg(s, rows); });
         files.commit();
         std::printf("ssam-bench: wrote %s/scaling.csv, scaling.svg (%zu rows)\n", out.string().c_str(), rows.size());
+        return 0;
+    }
+    if (!o.motion.empty()) {
+        const std::vector<MotionRow> rows =
+            runMotion(run, parseMotions(o.motion), o.motionFrames, o.motionVectors == "on");
+        stageReport(files, out / "motion.csv", [&](std::ostream& s) { writeMotionCsv(s, rows); });
+        files.commit();
+        printMotionTable(rows);
+        std::printf("ssam-bench: wrote %s/motion.csv (%zu rows)\n", out.string().c_str(), rows.size());
         return 0;
     }
     if (o.dolly) {
@@ -435,6 +454,22 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     app.add_option("--dolly-frames", o.dollyFrames, "frames of the dolly from its start (2..117)")
         ->capture_default_str();
     dolly->excludes(sweep)->excludes(scaling)->excludes(figures);
+    CLI::Option* motion = app.add_option(
+        "--motion", o.motion,
+        "instead of comparing techniques: every technique in motion, a comma list of pan (the sideways pan), dolly "
+        "(the forest's dolly toward the trees) and wind (a still camera, the plants in the wind): flicker, ꟻLIP and "
+        "RMSE on foliage pixels against each frame's reference (converged, worst) and ghosting (the error on pixels "
+        "whose surface moved; game/README.md); default 320x180, the forest; writes motion.csv");
+    app.add_option("--motion-frames", o.motionFrames, "frames measured per motion (2..117)")
+        ->capture_default_str()
+        ->needs(motion);
+    app.add_option("--motion-vectors", o.motionVectors,
+                   "with --motion, the temporal techniques reproject by the draws' motion vectors (on) or by the "
+                   "camera alone (off)")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str()
+        ->needs(motion);
+    motion->excludes(sweep)->excludes(scaling)->excludes(figures)->excludes(dolly);
     app.footer(engine::cli::contractHelpFooter());
     return engine::cli::runTool("ssam-bench", app, argc, argv, [&] { return run(app, o, argc, argv); });
 }

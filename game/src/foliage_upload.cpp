@@ -23,6 +23,7 @@ std::span<const transparency::FoliageDraw> FoliageUpload::upload(const engine::s
         d.batch.baseColorFactor = part.material.baseColorFactor;
         d.batch.worldBounds = {b.worldBounds.min, b.worldBounds.max};
         d.batch.unlit = part.material.unlit;
+        d.batch.motionVertices = b.motionVertices;  // the wind's motion copy, for the temporal pass
         d.instances = b.instances;
         d.meshBounds = {part.bounds.min, part.bounds.max};
         d.alphaCutoff = part.material.alphaCutoff;

@@ -38,19 +38,21 @@ DrawLists extractDrawLists(ecs::Registry& registry, const MeshLibrary& library, 
                 const render::Instance instance{model, glm::vec4(1.0f, 1.0f, 1.0f, weight)};
                 const float distance = glm::length((world.min + world.max) * 0.5f - cameraPosition);
                 if (part.material.surface == SurfaceClass::Blend) {
-                    lists.blend.push_back({partIndex, own, {instance}, world, distance, level, crossfading});
+                    lists.blend.push_back({partIndex, own, {instance}, world, distance, {}, level, crossfading});
                     continue;
                 }
                 if (own) {
+                    const render::BufferHandle motion =
+                        i < override->motionBuffers.size() ? override->motionBuffers[i] : render::BufferHandle{};
                     (part.material.surface == SurfaceClass::Mask ? ownMask : ownOpaque)
-                        .push_back({partIndex, own, {instance}, world, distance, level, crossfading});
+                        .push_back({partIndex, own, {instance}, world, distance, motion, level, crossfading});
                     continue;
                 }
                 std::vector<DrawBatch>& list = part.material.surface == SurfaceClass::Mask ? lists.mask : lists.opaque;
                 int& slot = (crossfading ? fadingBatchOfPart : batchOfPart)[partIndex];
                 if (slot < 0) {
                     slot = static_cast<int>(list.size());
-                    list.push_back({partIndex, {}, {}, {}, 0.0f, level, crossfading});
+                    list.push_back({partIndex, {}, {}, {}, 0.0f, {}, level, crossfading});
                 }
                 list[slot].instances.push_back(instance);
                 list[slot].worldBounds.add(world);

@@ -43,28 +43,55 @@ glm::mat4 jitteredViewProj(const glm::mat4& viewProj, glm::vec2 jitterPixels, in
     return j * viewProj;
 }
 
-bool reprojectionMatrix(const glm::mat4& current, const glm::mat4& previous, int width, int height, glm::mat4& out) {
-    const glm::dmat4 c(current), p(previous);
-    if (!(std::abs(glm::determinant(c)) > 0.0)) return false;
-    const double w = width, h = height;
-    // Pixel (centre coordinates) and depth to NDC: x = 2 px / w - 1, y = 1 - 2 py / h.
+namespace {
+
+// Pixel (centre coordinates) and depth to NDC: x = 2 px / w - 1, y = 1 - 2 py / h.
+glm::dmat4 pixelsToNdc(double w, double h) {
     glm::dmat4 toNdc(1.0);
     toNdc[0][0] = 2.0 / w;
     toNdc[1][1] = -2.0 / h;
     toNdc[3][0] = -1.0;
     toNdc[3][1] = 1.0;
-    // Previous clip to pixel coordinates times w: px w = (x + w) * width / 2, py w = (w - y) * height / 2.
+    return toNdc;
+}
+
+// Clip to pixel coordinates times w: px w = (x + w) * width / 2, py w = (w - y) * height / 2.
+glm::dmat4 clipToPixels(double w, double h) {
     glm::dmat4 toPixels(1.0);
     toPixels[0][0] = w / 2.0;
     toPixels[1][1] = -h / 2.0;
     toPixels[3][0] = w / 2.0;
     toPixels[3][1] = h / 2.0;
-    const glm::dmat4 m = toPixels * p * glm::inverse(c) * toNdc;
-    out = glm::mat4(m);
+    return toPixels;
+}
+
+bool allFinite(const glm::mat4& m) {
     for (int i = 0; i < 4; ++i)
         for (int k = 0; k < 4; ++k)
-            if (!std::isfinite(out[i][k])) return false;
+            if (!std::isfinite(m[i][k])) return false;
     return true;
+}
+
+}  // namespace
+
+bool reprojectionMatrix(const glm::mat4& current, const glm::mat4& previous, int width, int height, glm::mat4& out) {
+    const glm::dmat4 c(current), p(previous);
+    if (!(std::abs(glm::determinant(c)) > 0.0)) return false;
+    const glm::dmat4 m = clipToPixels(width, height) * p * glm::inverse(c) * pixelsToNdc(width, height);
+    out = glm::mat4(m);
+    return allFinite(out);
+}
+
+bool motionReprojection(const glm::mat4& current, const glm::mat4& previous, int width, int height,
+                        MotionReprojection& out) {
+    const glm::dmat4 c(current), p(previous);
+    if (!(std::abs(glm::determinant(c)) > 0.0)) return false;
+    const glm::dmat4 toWorld = glm::inverse(c) * pixelsToNdc(width, height);
+    out.previousToPixels = glm::mat4(clipToPixels(width, height) * p);
+    out.worldW = glm::vec4(toWorld[0][3], toWorld[1][3], toWorld[2][3], toWorld[3][3]);
+    glm::mat4 w(0.0f);
+    w[0] = out.worldW;
+    return allFinite(out.previousToPixels) && allFinite(w);
 }
 
 ProgramDesc temporalResolveProgram() {

@@ -3,17 +3,22 @@
 // draws as usual (the caller has moved its projection by projectionJitter()), in the same
 // frame-graph pass; its frame is
 // copied into an RGBA16F `current`, and TemporalResolve writes the blend of current and the
-// reprojected, clamped history both into the frame and into the next history target.
+// reprojected, clamped history both into the frame and into the next history target. Draws
+// that moved (MaskedBatch::motionVertices) first write their motion into an RGBA16F `motion`
+// target (FoliageMotion), which the resolve reprojects those pixels by.
 //
 // The history is dropped (the frame passes through unchanged) on a cut: FoliageFrame::cut,
 // a frame index that does not follow the last one, a new size, or a camera whose matrix does
 // not invert.
+#include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "engine/core/error.hpp"
 #include "engine/render/owned.hpp"
 #include "engine/render/pass_scope.hpp"
+#include "foliage_draws.hpp"
 #include "technique_table.hpp"
 #include "temporal_technique.hpp"
 #include "transparency/temporal.hpp"
@@ -29,8 +34,9 @@ public:
     TemporalTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind,
                       std::unique_ptr<SinglePassTechnique> inner)
         : SinglePassTechnique({kind, inner->opaqueSamples(), /*temporal=*/true, options.temporal.jitterPhases}),
-          backend_(backend), options_(options.temporal), inner_(std::move(inner)),
-          program_(backend, backend.createProgram(temporalResolveProgram())) {
+          backend_(backend), options_(options.temporal), inner_(std::move(inner)), depthFunc_(options.depthFunc),
+          program_(backend, backend.createProgram(temporalResolveProgram())),
+          motionProgram_(backend, backend.createProgram(foliageMotionProgram())) {
         if (!(options_.blend > 0.0f && options_.blend <= 1.0f))
             throw engine::Error(std::string(techniqueName(kind)) + ": temporal blend " +
                                 std::to_string(options_.blend) + " must be in (0, 1]");
@@ -61,6 +67,14 @@ public:
         params.hasHistory = hasHistory_ && sameSize && !frame.cut && frame.frameIndex == lastFrame_ + 1 &&
                             reprojectionMatrix(unjittered, previous_, width, height, params.reprojection);
         hasHistory_ = false;  // until this frame's history is written
+        MotionReprojection motion;
+        if (params.hasHistory && options_.motionVectors &&
+            motionReprojection(unjittered, previous_, width, height, motion) && drawMotion(opaque, frame)) {
+            params.motion = motion_;
+            params.previousToPixels = motion.previousToPixels;
+            params.worldW = motion.worldW;
+            params.reverseDepth = depthFunc_ == CompareFunc::Greater || depthFunc_ == CompareFunc::GreaterEqual;
+        }
 
         PassDesc copy;
         copy.name = "temporal copy";
@@ -96,6 +110,51 @@ public:
     }
 
 private:
+    // FoliageMotion of every visible draw that moved, into `motion` (cleared to 0: not
+    // written), depth-tested against the depth the technique left without writing it, so that
+    // a pixel gets the motion of the nearest moving surface the technique kept there, not of
+    // one behind it. Alpha-tested at the material's cutoff: exactly the surfaces alpha testing
+    // keeps; hashed keeps some below it, which then follow the camera. False when none moved.
+    bool drawMotion(engine::render::FrameTargets& opaque, const FoliageFrame& frame) {
+        std::optional<PassScope> scope;
+        for (const FoliageDraw* draw : visibleDraws(frame, width_, height_)) {
+            if (!draw->batch.motionVertices) continue;
+            if (!scope) {
+                PassDesc pass;
+                pass.name = "temporal motion";
+                pass.color[0] = {motion_, LoadOp::Clear};
+                pass.depth = {opaque.depth(), LoadOp::Load};
+                scope.emplace(backend_, pass);
+            }
+            MaskedBatch moved = draw->batch;
+            moved.vertices = moved.motionVertices;
+            AlphaOnlyParams params;
+            params.viewProj = frame.viewProj;
+            params.alphaFactor = moved.baseColorFactor.a;
+            params.baseColor = moved.baseColor;
+            backend_.draw(batchDraw(moved, motionPipeline(draw->alphaCutoff), params));
+        }
+        if (!scope) return false;
+        scope->end();
+        return true;
+    }
+
+    // One pipeline per cutoff (materials rarely differ), passing the depth the technique wrote.
+    PipelineHandle motionPipeline(float cutoff) {
+        if (const auto it = motionPipelines_.find(cutoff); it != motionPipelines_.end()) return it->second;
+        PipelineDesc p;
+        p.name = "temporal motion";
+        p.program = motionProgram_.get();
+        const CompareFunc f = depthFunc_ == CompareFunc::Less      ? CompareFunc::LessEqual
+                              : depthFunc_ == CompareFunc::Greater ? CompareFunc::GreaterEqual
+                                                                   : depthFunc_;
+        p.depth = DepthState::testOnly(f);
+        p.raster.cull = CullMode::None;
+        p.alphaTest = AlphaTest::discardBelow(cutoff);
+        Owned<PipelineHandle> pipeline(backend_, backend_.createPipeline(p));
+        return motionPipelines_.emplace(cutoff, std::move(pipeline)).first->second;
+    }
+
     DrawDesc fullscreen(const TemporalResolveParams& params) const {
         DrawDesc d;
         d.pipeline = pipeline_;
@@ -109,11 +168,12 @@ private:
     bool ensureTargets(int width, int height, Format format) {
         if (current_.get() && width_ == width && height_ == height && format_ == format) return true;
         hasHistory_ = false;
-        current_.reset(), history_[0].reset(), history_[1].reset();
+        current_.reset(), history_[0].reset(), history_[1].reset(), motion_.reset();
         width_ = height_ = 0;
         current_ = makeTarget("taa current", width, height, format);
         history_[0] = makeTarget("taa history a", width, height, Format::RGBA16F);
         history_[1] = makeTarget("taa history b", width, height, Format::RGBA16F);
+        if (options_.motionVectors) motion_ = makeTarget("taa motion", width, height, Format::RGBA16F);
         width_ = width, height_ = height, format_ = format;
         return false;
     }
@@ -124,10 +184,14 @@ private:
     Backend& backend_;
     TemporalOptions options_;
     std::unique_ptr<SinglePassTechnique> inner_;
+    CompareFunc depthFunc_;
     Owned<ProgramHandle> program_;
+    Owned<ProgramHandle> motionProgram_;
     Owned<PipelineHandle> pipeline_;
+    std::map<float, Owned<PipelineHandle>> motionPipelines_;
     Owned<TextureHandle> current_;
     Owned<TextureHandle> history_[2];
+    Owned<TextureHandle> motion_;  // RGBA16F world-space motion, alpha > 0 where written
     int width_ = 0, height_ = 0;
     Format format_ = Format::RGBA16F;
     bool hasHistory_ = false;

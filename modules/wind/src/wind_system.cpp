@@ -62,20 +62,23 @@ void WindSystem::destroySpares() {
     spares_.clear();
 }
 
-render::Owned<render::BufferHandle> WindSystem::partBuffer(std::uint32_t part, std::span<const Vertex> vertices) {
+WindSystem::PartBuffers WindSystem::partBuffers(std::uint32_t part, std::span<const Vertex> vertices) {
     const auto bytes = std::as_bytes(vertices);
-    std::vector<render::Owned<render::BufferHandle>>& spare = spares_[part];
+    std::vector<PartBuffers>& spare = spares_[part];
     if (!spare.empty()) {
-        library_.backend().updateBuffer(spare.back(), 0, bytes);
-        render::Owned<render::BufferHandle> b = std::move(spare.back());
+        library_.backend().updateBuffer(spare.back().vertices, 0, bytes);
+        PartBuffers b = std::move(spare.back());
         spare.pop_back();
         ++stats_.buffersReused;
         return b;
     }
-    render::Owned<render::BufferHandle> b(
-        library_.backend(),
-        library_.backend().createBuffer(
-            {library_.part(part).name + " (deformed)", render::BufferKind::Vertex, bytes.size()}, bytes));
+    auto create = [&](const char* what) {
+        return render::Owned<render::BufferHandle>(
+            library_.backend(),
+            library_.backend().createBuffer({library_.part(part).name + what, render::BufferKind::Vertex, bytes.size()},
+                                            bytes));
+    };
+    PartBuffers b{create(" (deformed)"), create(" (motion)")};
     ++stats_.buffersCreated;
     return b;
 }
@@ -94,17 +97,27 @@ std::size_t WindSystem::attach(ecs::Registry& registry, std::uint32_t seed) cons
     return foliage.size();
 }
 
-std::span<const Vertex> WindSystem::deformed(ecs::Entity e, std::size_t i) const {
+const WindSystem::DeformedPart* WindSystem::partOf(ecs::Entity e, std::size_t i) const {
     const auto it = plants_.find(e);
-    if (it == plants_.end()) return {};
+    if (it == plants_.end()) return nullptr;
     for (const DeformedPart& p : it->second.parts)
-        if (p.slot == i) return p.vertices;
-    return {};
+        if (p.slot == i) return &p;
+    return nullptr;
+}
+
+std::span<const Vertex> WindSystem::deformed(ecs::Entity e, std::size_t i) const {
+    const DeformedPart* p = partOf(e, i);
+    return p ? std::span<const Vertex>(p->vertices) : std::span<const Vertex>();
+}
+
+std::span<const Vertex> WindSystem::motion(ecs::Entity e, std::size_t i) const {
+    const DeformedPart* p = partOf(e, i);
+    return p ? std::span<const Vertex>(p->motion) : std::span<const Vertex>();
 }
 
 void WindSystem::releasePlant(ecs::Registry& registry, ecs::Entity e, DeformedPlant& plant) {
     for (DeformedPart& p : plant.parts) {
-        spares_[p.part].push_back(std::move(p.buffer));
+        spares_[p.part].push_back(std::move(p.buffers));
         ++stats_.buffersReleased;
     }
     plant.parts.clear();
@@ -225,7 +238,8 @@ void WindSystem::update(ecs::Registry& registry) {
                 p.flutter = mesh.material.surface == scene::SurfaceClass::Mask;
                 p.vertices = library_.vertices(parts[i]);
                 p.push.assign(p.vertices.size(), glm::vec3(0.0f));
-                p.buffer = partBuffer(parts[i], p.vertices);
+                p.motion = p.vertices;
+                p.buffers = partBuffers(parts[i], p.vertices);
                 plant.parts.push_back(std::move(p));
             }
         }
@@ -238,8 +252,14 @@ void WindSystem::update(ecs::Registry& registry) {
     const Wind& w = *wind;
     parallelFor(std::size_t(0), jobs.size(), [&](std::size_t j) {
         DeformedPart& p = *jobs[j].part;
+        for (std::size_t i = 0; i < p.vertices.size(); ++i) p.motion[i].normal = p.vertices[i].position;  // previous
         p.bounds = deformVertices(library_.vertices(p.part), p.vertices, p.push, w, *jobs[j].pose, time, p.flutter,
                                   decay, colliders);
+        for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+            const glm::vec3 previous = p.motion[i].normal;
+            p.motion[i] = p.vertices[i];
+            p.motion[i].normal = previous - p.vertices[i].position;
+        }
     });
 
     // Upload and point extraction at the deformed copies.
@@ -247,10 +267,13 @@ void WindSystem::update(ecs::Registry& registry) {
         DeformedPlant& plant = plants_.at(a.entity);
         scene::VertexOverride override;
         override.buffers.assign(plant.slots, render::BufferHandle{});
+        override.motionBuffers.assign(plant.slots, render::BufferHandle{});
         override.bounds.assign(plant.slots, Aabb{});
         for (const DeformedPart& p : plant.parts) {
-            library_.backend().updateBuffer(p.buffer, 0, std::as_bytes(std::span(p.vertices)));
-            override.buffers[p.slot] = p.buffer;
+            library_.backend().updateBuffer(p.buffers.vertices, 0, std::as_bytes(std::span(p.vertices)));
+            library_.backend().updateBuffer(p.buffers.motion, 0, std::as_bytes(std::span(p.motion)));
+            override.buffers[p.slot] = p.buffers.vertices;
+            override.motionBuffers[p.slot] = p.buffers.motion;
             override.bounds[p.slot] = p.bounds;
             stats_.verticesDeformed += p.vertices.size();
         }

@@ -246,6 +246,41 @@ TEST(Wind, NoWindEntityMeansRestMeshes) {
     EXPECT_FALSE(s.registry.has<scene::VertexOverride>(e));
 }
 
+// The motion copy: this frame's deformed vertices with each normal the previous frame's
+// position minus this one's (the rest mesh's on the first frame, when the plant was drawn at
+// rest), and extraction hands it to the plant's own batch beside its deformed copy.
+TEST(Wind, TheMotionCopyHoldsEachVertexsMotionSinceThePreviousFrame) {
+    WindScene s;
+    const ecs::Entity e = s.addPlant({0, 0, 0});
+    s.system.attach(s.registry);
+    s.step(0.5f, 0.1f);
+    const std::vector<render::Vertex> first(s.system.deformed(e, 0).begin(), s.system.deformed(e, 0).end());
+    ASSERT_FALSE(first.empty());
+    const auto rest = s.library.vertices(s.library.partsOf(s.plant)[0]);
+    for (std::size_t i = 0; i < first.size(); ++i)
+        EXPECT_EQ(s.system.motion(e, 0)[i].normal, rest[i].position - first[i].position) << i;
+    s.step(0.6f, 0.1f);
+    const auto now = s.system.deformed(e, 0), motion = s.system.motion(e, 0);
+    ASSERT_EQ(motion.size(), now.size());
+    float moved = 0.0f;
+    for (std::size_t i = 0; i < now.size(); ++i) {
+        EXPECT_EQ(motion[i].position, now[i].position) << i;
+        EXPECT_EQ(motion[i].uv, now[i].uv) << i;
+        EXPECT_EQ(motion[i].normal, first[i].position - now[i].position) << i;
+        moved = std::max(moved, glm::length(motion[i].normal));
+    }
+    EXPECT_GT(moved, 1e-3f) << "the wind moved the card between the frames";
+    const auto& override = s.registry.get<scene::VertexOverride>(e);
+    ASSERT_EQ(override.motionBuffers.size(), override.buffers.size());
+    EXPECT_TRUE(override.motionBuffers[0]);
+    const scene::DrawLists lists =
+        scene::extractDrawLists(s.registry, s.library, viewProjFrom(s.eye, s.eye + glm::vec3(0, 0, 1)), s.eye);
+    bool found = false;
+    for (const scene::DrawBatch& b : lists.mask)
+        if (b.vertices == override.buffers[0]) found = b.motionVertices == override.motionBuffers[0];
+    EXPECT_TRUE(found) << "the plant's own batch carries its motion copy";
+}
+
 // The same frames give the same bits, for 1 and 2 threads.
 std::vector<render::Vertex> simulate(int threads) {
     WindScene s;

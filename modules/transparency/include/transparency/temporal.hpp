@@ -9,9 +9,14 @@
 // Temporal Supersampling", SIGGRAPH Advances in Real-Time Rendering; Yang et al. 2020, "A Survey
 // of Temporal Antialiasing Techniques", EG STAR).
 //
-// What it cannot see: motion within the scene. The reprojection knows the camera, not the
-// wind, so wind-bent foliage fetches history from where the leaf was not and the clamp only
-// bounds that trail (ghosting): modules/README.md measures it on racer's pan.
+// Motion within the scene (wind, collision bend) comes from motion vectors: a draw whose batch
+// has MaskedBatch::motionVertices (each vertex's previous minus current position) writes that
+// motion, in world space, into a motion target (FoliageMotion, after the technique's frame,
+// depth-tested against the depth it left and alpha-tested at the material's cutoff), and the
+// pixels it covers fetch their history from where their surface was: the previous camera's
+// projection of the pixel's world position plus that motion ([Karis 2014]'s velocity, taken as
+// engines take it, from the previous frame's deformed position). Every other pixel
+// follows the camera alone. TemporalOptions::motionVectors off keeps the camera alone for all.
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -28,6 +33,9 @@ struct TemporalOptions {
     // motion sooner, lower averages more noise away). In (0, 1].
     float blend = 0.1f;
     int jitterPhases = 8;  // the Halton (2, 3) sequence repeats after this many frames; >= 1
+    // Reproject by the draws' motion where they have one (above); false: by the camera alone,
+    // as a TAA without motion vectors does (for comparing the two).
+    bool motionVectors = true;
 };
 
 // The sub-pixel offset, in pixels within (-0.5, 0.5), of frame `frameIndex`: the Halton (2, 3)
@@ -45,25 +53,49 @@ glm::mat4 jitteredViewProj(const glm::mat4& viewProj, glm::vec2 jitterPixels, in
 // view-projections; nullopt-like false when `current` cannot be inverted.
 bool reprojectionMatrix(const glm::mat4& current, const glm::mat4& previous, int width, int height, glm::mat4& out);
 
+// What the resolve adds for a pixel whose surface moved by a world-space motion m since the
+// previous frame (previous minus current position): with h = inverse(current) * NDC of the
+// pixel, the homogeneous world position, and W = worldW . (x + 0.5, y + 0.5, depth, 1) its
+// last component, the previous pixel position * w becomes
+//   reprojection * (x + 0.5, y + 0.5, depth, 1) + W * previousToPixels * (m, 0)
+// (the previous projection of h / W + m, times W). False where reprojectionMatrix is.
+struct MotionReprojection {
+    glm::mat4 previousToPixels{1.0f};  // previous view-projection, then clip to pixel coordinates * w
+    glm::vec4 worldW{0.0f};            // the last row of inverse(current) after pixel-to-NDC
+};
+bool motionReprojection(const glm::mat4& current, const glm::mat4& previous, int width, int height,
+                        MotionReprojection& out);
+
 // TemporalResolve, one texel per pixel, into the frame and the next history (the same value):
 //   p    = reprojection * (x + 0.5, y + 0.5, depth(x, y), 1); prev = p.xy / p.w
 //   hist = history bilinear at prev (clamped to the edge), or none when prev is off screen,
 //          not finite, or hasHistory is false
 //   lo, hi = min, max of current over the 3x3 neighbourhood (clamped to the edge)
+//          where motion is bound: moved by the rgb of the nearest (by depth) of the 3x3
+//          pixels with motion alpha > 0 (MotionReprojection), taken as that pixel's screen
+//          offset; the pixel's own when it is the one (it wins ties)
 //   out  = hist ? h + (current - h) * blend with h = clamp(hist, lo, hi) : current
 //          (exactly current where the clamped history equals it: a still pixel does not drift)
 // Non-finite current components come out as 0.
 // Its parameter block, declared once (engine/render/param_block.hpp; GLSL body in glsl/).
-#define TRANSPARENCY_TEMPORAL_RESOLVE_PARAMS(UNIFORM, DIRECTION, TEXTURE)                \
-    UNIFORM(glm::mat4, reprojection, glm::mat4(1.0f))                                    \
-    TEXTURE(current, Texel, FullSize, Required) /* the frame as the technique left it */ \
-    TEXTURE(depth, Texel, FullSize, Optional)   /* its depth (resolved, D32F) */         \
-    TEXTURE(history, Texel, FullSize, Optional) /* the previous output */                \
-    UNIFORM(float, blend, 0.1f)                                                          \
-    UNIFORM(bool, hasHistory, false)                                                     \
-    UNIFORM(bool, copyOnly, false) /* out = current at the pixel: the copy the resolve reads from */
+#define TRANSPARENCY_TEMPORAL_RESOLVE_PARAMS(UNIFORM, DIRECTION, TEXTURE)                                        \
+    UNIFORM(glm::mat4, reprojection, glm::mat4(1.0f))                                                            \
+    TEXTURE(current, Texel, FullSize, Required) /* the frame as the technique left it */                         \
+    TEXTURE(depth, Texel, FullSize, Optional)   /* its depth (resolved, D32F) */                                 \
+    TEXTURE(history, Texel, FullSize, Optional) /* the previous output */                                        \
+    UNIFORM(float, blend, 0.1f)                                                                                  \
+    UNIFORM(bool, hasHistory, false)                                                                             \
+    UNIFORM(bool, copyOnly, false)             /* out = current at the pixel: the copy the resolve reads from */ \
+    TEXTURE(motion, Texel, FullSize, Optional) /* RGBA16F: world motion, alpha > 0 where written */              \
+    UNIFORM(glm::mat4, previousToPixels, glm::mat4(1.0f))                                                        \
+    UNIFORM(glm::vec4, worldW, glm::vec4(0.0f))                                                                  \
+    UNIFORM(bool, reverseDepth, false) /* the nearest surface has the largest depth */
 ENGINE_PARAM_BLOCK(TemporalResolveParams, TRANSPARENCY_TEMPORAL_RESOLVE_PARAMS);
 
 engine::render::ProgramDesc temporalResolveProgram();
+
+// FoliageMotion, a mesh program drawn with a batch's motionVertices: out = (the interpolated
+// normal, which is the world-space motion, AlphaOnly's saturated alpha) under AlphaOnlyParams.
+engine::render::ProgramDesc foliageMotionProgram();
 
 }  // namespace transparency

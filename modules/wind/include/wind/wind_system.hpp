@@ -11,6 +11,12 @@
 // are kept for the next plant of the same part, so driving along the track creates no
 // buffer once as many plants as are ever active at once have been (racer's FramePooling test).
 //
+// Each deformed part also has a motion copy (VertexOverride::motionBuffers): the same vertices
+// with each normal the vertex's previous minus current position, for the temporal pass's
+// motion vectors (transparency/temporal.hpp). The previous positions are the part's vertices
+// before this frame's deformation (the rest mesh for a plant that just became active, which was
+// drawn at rest), kept in a buffer of the part's size that is reused every frame.
+//
 // Deterministic: the result is a function of the registry, the frame's time and dt, and
 // does not depend on the number of threads (plants are deformed independently, oneTBB).
 #include <cstdint>
@@ -49,9 +55,10 @@ struct WindFrame {
 struct WindStats {
     std::size_t plantsDeformed = 0;    // this update
     std::size_t verticesDeformed = 0;  // this update
-    std::size_t buffersCreated = 0;    // since construction
-    std::size_t buffersReused = 0;     // since construction: a spare of the same part, no create
-    std::size_t buffersReleased = 0;   // since construction: given back (kept as spares)
+    // Buffers count a part's pair (its deformed copy and its motion copy) as one.
+    std::size_t buffersCreated = 0;   // since construction
+    std::size_t buffersReused = 0;    // since construction: a spare of the same part, no create
+    std::size_t buffersReleased = 0;  // since construction: given back (kept as spares)
 };
 
 class WindSystem {
@@ -77,15 +84,23 @@ public:
     // The deformed vertices of `e`'s part `i` (index into partsOf(model)), empty when the
     // plant is not deformed; for tests.
     std::span<const engine::render::Vertex> deformed(engine::ecs::Entity e, std::size_t i) const;
+    // Its motion copy (deformed(), each normal the previous minus current position); for tests.
+    std::span<const engine::render::Vertex> motion(engine::ecs::Entity e, std::size_t i) const;
 
 private:
+    // A part's vertex buffers: the deformed copy and its motion copy.
+    struct PartBuffers {
+        engine::render::Owned<engine::render::BufferHandle> vertices;
+        engine::render::Owned<engine::render::BufferHandle> motion;
+    };
     struct DeformedPart {
         std::size_t slot = 0;    // index into partsOf(model)
         std::uint32_t part = 0;  // library part
         bool flutter = false;    // leaf cards (alpha-tested parts) flutter; trunks only bend
         std::vector<engine::render::Vertex> vertices;
+        std::vector<engine::render::Vertex> motion;  // vertices, each normal previous - current position
         std::vector<glm::vec3> push;
-        engine::render::Owned<engine::render::BufferHandle> buffer;
+        PartBuffers buffers;
         engine::scene::Aabb bounds;
     };
     struct DeformedPlant {
@@ -93,18 +108,18 @@ private:
         std::size_t slots = 0;  // partsOf(model).size()
     };
 
+    // Part slot `i` of plant `e`, or null when it is not deformed.
+    const DeformedPart* partOf(engine::ecs::Entity e, std::size_t i) const;
     void releasePlant(engine::ecs::Registry& registry, engine::ecs::Entity e, DeformedPlant& plant);
-    // A vertex buffer for a deformed copy of library part `part`: a spare one, or a new one.
-    engine::render::Owned<engine::render::BufferHandle> partBuffer(std::uint32_t part,
-                                                                   std::span<const engine::render::Vertex> vertices);
+    // The buffers for a deformed copy of library part `part`: a spare pair, or a new one.
+    PartBuffers partBuffers(std::uint32_t part, std::span<const engine::render::Vertex> vertices);
     void destroySpares();
 
     const engine::scene::MeshLibrary& library_;
     WindFrame frame_;
     WindStats stats_;
-    std::map<engine::ecs::Entity, DeformedPlant> plants_;  // ordered: deterministic walks
-    std::map<std::uint32_t, std::vector<engine::render::Owned<engine::render::BufferHandle>>>
-        spares_;  // by library part
+    std::map<engine::ecs::Entity, DeformedPlant> plants_;       // ordered: deterministic walks
+    std::map<std::uint32_t, std::vector<PartBuffers>> spares_;  // by library part
 };
 
 }  // namespace wind

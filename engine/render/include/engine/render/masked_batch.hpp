@@ -32,6 +32,11 @@ struct MaskedBatch {
     glm::vec4 baseColorFactor{1.0f};
     BoundingBox worldBounds;  // of all instances: decides visibility and the screen region touched
     bool unlit = false;       // KHR_materials_unlit: lit programs ignore the light
+    // The same vertices with each normal replaced by the vertex's motion since the previous
+    // frame, previous minus current position in model space (the instance matrix turns it into
+    // world space as it does normals), for the temporal pass's motion vectors; null: the surface
+    // did not move (static, or a first frame), only the camera's motion applies.
+    BufferHandle motionVertices;
 };
 
 // The draw of one batch with a pipeline and its parameters.

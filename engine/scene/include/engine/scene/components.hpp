@@ -22,9 +22,12 @@ struct Collider {
 // (deformed foliage, modules/wind). Entry i belongs to partsOf(model)[i]; a null buffer keeps
 // the shared mesh. `bounds` (model space, same indexing) covers the deformed vertices, so
 // extraction culls what is really drawn; an empty box falls back to the part's bounds.
+// `motionBuffers` (same indexing, may be empty): the same vertices with each normal the
+// vertex's previous minus current position, for motion vectors (render::MaskedBatch::motionVertices).
 struct VertexOverride {
     std::vector<render::BufferHandle> buffers;
     std::vector<Aabb> bounds;
+    std::vector<render::BufferHandle> motionBuffers;
 };
 
 }  // namespace engine::scene

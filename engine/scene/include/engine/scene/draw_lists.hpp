@@ -20,6 +20,8 @@ struct DrawBatch {
     std::vector<render::Instance> instances;
     Aabb worldBounds;
     float viewDistance = 0.0f;  // of the bounds' centre, for sorting Blend batches
+    // The override's motion copy of `vertices` (VertexOverride::motionBuffers); null: none.
+    render::BufferHandle motionVertices;
     // The level of detail the part belongs to (0: the full model, or no LevelsOfDetail), and
     // whether the batch holds instances inside a crossfade band (each one's weight in its tint
     // alpha). Crossfading instances are batched apart from steady ones, so that techniques

@@ -1,0 +1,78 @@
+# SPDX-License-Identifier: MIT
+# Runs `ssam-bench --motion pan,dolly,wind` (BENCH, OUT) over a few frames at a small size and checks:
+#   - motion.csv has one row per technique and motion, in the forest, each with the frames run;
+#   - every measure is a number (flicker may be negative: less than the reference's), the
+#     wind moves pixels (ghost_frames > 0) and the pan and dolly too;
+#   - two runs, on one thread and on two, write the same file byte for byte;
+#   - --motion-vectors off changes hashed+taa's wind row and nothing of alpha-test's (no history).
+cmake_minimum_required(VERSION 3.20)
+
+function(fail what)
+  message(FATAL_ERROR "ssam-bench --motion: ${what}")
+endfunction()
+
+function(run dir threads vectors)
+  file(REMOVE_RECURSE ${dir})
+  execute_process(COMMAND ${BENCH} --motion pan,dolly,wind --motion-frames 3 --size 96x54
+                          --techniques hashed+taa,alpha-test --motion-vectors ${vectors} --threads ${threads}
+                          --out ${dir}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
+  if(NOT rc EQUAL 0)
+    fail("exited with ${rc}\n${stdout}\n${stderr}")
+  endif()
+  if(NOT EXISTS ${dir}/motion.csv)
+    fail("${dir}/motion.csv was not written")
+  endif()
+endfunction()
+
+run(${OUT}/one 1 on)
+run(${OUT}/two 2 on)
+run(${OUT}/off 2 off)
+file(READ ${OUT}/one/motion.csv one)
+file(READ ${OUT}/two/motion.csv two)
+if(NOT one STREQUAL two)
+  fail("motion.csv differs between one thread and two:\n${one}\n${two}")
+endif()
+
+file(STRINGS ${OUT}/one/motion.csv lines)
+file(STRINGS ${OUT}/off/motion.csv offLines)
+list(POP_FRONT lines header)
+list(POP_FRONT offLines)
+set(expected "scene,motion,technique,backend,motion_vectors,frames,flicker,flip,flip_worst,rmse,rmse_worst,ghost_frames,ghost,ghost_worst")
+if(NOT header STREQUAL expected)
+  fail("header '${header}'")
+endif()
+list(LENGTH lines rows)
+if(NOT rows EQUAL 6)
+  fail("${rows} rows, expected 6 (pan, dolly, wind for hashed+taa and alpha-test)")
+endif()
+set(i 0)
+foreach(row IN LISTS lines)
+  list(GET offLines ${i} offRow)
+  math(EXPR i "${i} + 1")
+  string(REPLACE "," ";" f "${row}")
+  list(GET f 0 scene)
+  list(GET f 1 motion)
+  list(GET f 2 technique)
+  list(GET f 5 frames)
+  list(GET f 11 ghostFrames)
+  if(NOT scene STREQUAL "forest" OR NOT frames EQUAL 3 OR NOT ghostFrames GREATER 0)
+    fail("row '${row}': expected the forest, 3 frames, moved pixels in some")
+  endif()
+  foreach(at 6 7 8 9 10 12 13)
+    list(GET f ${at} v)
+    if(NOT v MATCHES "^-?[0-9]+\\.[0-9]+$")
+      fail("row '${row}': column ${at} '${v}' is not a number")
+    endif()
+  endforeach()
+  # The measures without the motion_vectors column: off changes only the temporal wind row.
+  string(REGEX REPLACE ",o(n|ff)," "," measures "${row}")
+  string(REGEX REPLACE ",o(n|ff)," "," offMeasures "${offRow}")
+  if(technique STREQUAL "hashed+taa" AND motion STREQUAL "wind")
+    if(measures STREQUAL offMeasures)
+      fail("hashed+taa in the wind: the same row with motion vectors on and off ('${row}')")
+    endif()
+  elseif(NOT measures STREQUAL offMeasures)
+    fail("'${row}' changed with --motion-vectors off: '${offRow}'")
+  endif()
+endforeach()
