@@ -4,30 +4,20 @@
 // surface, then the hashed threshold from the rasterizer's analytic uv derivatives.
 #include <glm/glm.hpp>
 
-#include "engine/render/kernel/fragment.hpp"
-#include "engine/render/kernel/programs.hpp"
-#include "engine/render/kernel/texture_lookup.hpp"
+#include "lod_dither_kernel.hpp"
 #include "transparency/hashed_alpha.hpp"
 
 namespace transparency {
 
-namespace soft = engine::render::soft;
-
-struct HashedLitKernel {
-    static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;  // uv and its derivatives included
-    static_assert(kNeeds.uv && kNeeds.derivatives);
-    static constexpr bool kReadsPixels = true;  // the crossfade's screen-space dither (lod_dither.hpp)
-    soft::MaskedLitProgram surface;
+struct HashedLitKernel : DitheredSurfaceKernel {
     std::uint32_t seed = 0;
     float hashScale = 1.0f;
     bool anisotropic = false;
     bool outputThreshold = false;
-    LodDither dither = LodDither::Off;
 
     HashedLitKernel(const HashedLitParams& p, const soft::TextureLookup& textures)
-        : surface(engine::render::SurfaceParams{p.viewProj, p.baseColorFactor, p.baseColor, p.light}, textures),
-          seed(p.seed), hashScale(p.hashScale), anisotropic(p.anisotropic), outputThreshold(p.outputThreshold),
-          dither(p.dither) {}
+        : DitheredSurfaceKernel(p, textures), seed(p.seed), hashScale(p.hashScale), anisotropic(p.anisotropic),
+          outputThreshold(p.outputThreshold) {}
 
     glm::vec4 shade(const soft::Fragment& f) const {
         // The derivatives are exact for the triangle: d(uv)/dx = (d(uv/w)/dx - uv d(1/w)/dx) w

@@ -24,12 +24,12 @@ ProgramDesc hashedLitProgram() {
     d.gl.uniforms.push_back({"u_hashScale", UniformType::Float, offsetof(HashedLitParams, hashScale)});
     d.gl.uniforms.push_back({"u_anisotropic", UniformType::Bool, offsetof(HashedLitParams, anisotropic)});
     d.gl.uniforms.push_back({"u_outputThreshold", UniformType::Bool, offsetof(HashedLitParams, outputThreshold)});
-    d.gl.uniforms.push_back({"u_lodDither", UniformType::Int, offsetof(HashedLitParams, dither)});
+    d.gl.uniforms.push_back({"u_lodDither", UniformType::Byte, offsetof(HashedLitParams, lodDither)});
     d.check = [](const void* params, const DrawCheck& check) {
         const auto& p = *static_cast<const HashedLitParams*>(params);
         if (!(p.hashScale > 0.0f && p.hashScale < 1e6f))
             check.fail("hashScale " + std::to_string(p.hashScale) + " must be in (0, 1e6)");
-        checkLodDither(p.dither, check);
+        checkLodDither(p.lodDither, check);
     };
     d.soft = soft::makeKernel<HashedLitKernel, HashedLitParams>();
     return d;

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The soft backend's kernel of DitheredMaskedLit (transparency/lod_dither.hpp): the MaskedLit
-// surface, its crossfade weight divided out and the other level's pixels dropped.
+// The soft backend's kernels on the MaskedLit surface with the crossfade's dither
+// (transparency/lod_dither.hpp): DitheredMaskedLit here, and the base HashedLit's and
+// SharpenedCoverageLit's kernels share: the surface from the parameters' lit-surface members
+// and the batch's LodDither.
 #include <glm/glm.hpp>
 
 #include "engine/render/kernel/fragment.hpp"
@@ -13,15 +15,22 @@ namespace transparency {
 
 namespace soft = engine::render::soft;
 
-struct DitheredMaskedLitKernel {
-    static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;
-    static constexpr bool kReadsPixels = true;  // the crossfade's screen-space dither (lod_dither.hpp)
+struct DitheredSurfaceKernel {
+    static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;  // uv and its derivatives included
+    static_assert(kNeeds.uv && kNeeds.derivatives);
+    static constexpr bool kReadsPixels = true;  // the dither depends on the pixel
     soft::MaskedLitProgram surface;
     LodDither dither = LodDither::Off;
 
-    DitheredMaskedLitKernel(const DitheredSurfaceParams& p, const soft::TextureLookup& textures)
+    template <typename Params>
+    DitheredSurfaceKernel(const Params& p, const soft::TextureLookup& textures)
         : surface(engine::render::SurfaceParams{p.viewProj, p.baseColorFactor, p.baseColor, p.light}, textures),
-          dither(p.dither) {}
+          dither(p.lodDither) {}
+};
+
+struct DitheredMaskedLitKernel : DitheredSurfaceKernel {
+    DitheredMaskedLitKernel(const DitheredSurfaceParams& p, const soft::TextureLookup& textures)
+        : DitheredSurfaceKernel(p, textures) {}
 
     glm::vec4 shade(const soft::Fragment& f) const {
         return lodDitherOutput(surface.shade(f), f.color.a, dither, f.x, f.y);

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // DitheredMaskedLit's GLSL (transparency/lod_dither.hpp; soft: lod_dither_kernel.hpp): the lit
 // surface with glsl/lod_dither.glsl as its output hook.
-#include <cstddef>
 #include <string>
 
 #include "engine/render/glsl/lit_surface.hpp"
@@ -24,10 +23,8 @@ ProgramDesc ditheredMaskedLitProgram() {
     d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" +
                     glsl::kLodDither + "#define SURFACE_OUTPUT(c) lodDitherOutput(c, v_color.a)\n" +
                     engine::render::glsl::kLitSurface;
-    litSurfaceLayout<DitheredSurfaceParams>(d.gl);
-    d.gl.uniforms.push_back({"u_lodDither", UniformType::Int, offsetof(DitheredSurfaceParams, dither)});
     d.check = [](const void* params, const DrawCheck& check) {
-        checkLodDither(static_cast<const DitheredSurfaceParams*>(params)->dither, check);
+        checkLodDither(static_cast<const DitheredSurfaceParams*>(params)->lodDither, check);
     };
     d.soft = soft::makeKernel<DitheredMaskedLitKernel, DitheredSurfaceParams>();
     return d;

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "transparency/programs.hpp"
 
-#include <cstddef>
 #include <string>
 
 #include "engine/render/glsl/lit_surface.hpp"
@@ -48,8 +47,6 @@ ProgramDesc wboitAccumulateProgram() {
                                                            "transparency::WboitAccumulateParams");
     d.gl.fragment = std::string(engine::render::glsl::kBaseColorSampling) + "#define ALPHA_MASKED 1\n" +
                     glsl::kWboitWeight + engine::render::glsl::kLitSurface;
-    litSurfaceLayout<WboitAccumulateParams>(d.gl);  // the surface it weights
-    d.gl.uniforms.push_back({"u_depthScale", UniformType::Float, offsetof(WboitAccumulateParams, depthScale)});
     d.soft = soft::makeKernel<WboitAccumulateKernel, WboitAccumulateParams>();
     return d;
 }

@@ -7,26 +7,16 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/render/kernel/fragment.hpp"
-#include "engine/render/kernel/programs.hpp"
-#include "engine/render/kernel/texture_lookup.hpp"
+#include "lod_dither_kernel.hpp"
 #include "transparency/sharpened_coverage.hpp"
 
 namespace transparency {
 
-namespace soft = engine::render::soft;
-
-struct SharpenedCoverageLitKernel {
-    static constexpr soft::ProgramNeeds kNeeds = soft::MaskedLitProgram::kNeeds;  // uv and its derivatives included
-    static_assert(kNeeds.uv && kNeeds.derivatives);
-    static constexpr bool kReadsPixels = true;  // the crossfade's screen-space dither (lod_dither.hpp)
-    soft::MaskedLitProgram surface;
+struct SharpenedCoverageLitKernel : DitheredSurfaceKernel {
     float reference = 0.5f;
-    LodDither dither = LodDither::Off;
 
     SharpenedCoverageLitKernel(const SharpenedCoverageParams& p, const soft::TextureLookup& textures)
-        : surface(engine::render::SurfaceParams{p.viewProj, p.baseColorFactor, p.baseColor, p.light}, textures),
-          reference(p.reference), dither(p.dither) {}
+        : DitheredSurfaceKernel(p, textures), reference(p.reference) {}
 
     glm::vec4 shade(const soft::Fragment& f) const {
         // A crossfading batch: sharpened without its weight, then the other level's pixels dropped.

@@ -22,12 +22,12 @@ ProgramDesc sharpenedCoverageLitProgram() {
                     glsl::kLodDither + glsl::kSharpenedCoverageOutput + engine::render::glsl::kLitSurface;
     litSurfaceLayout<SharpenedCoverageParams>(d.gl);
     d.gl.uniforms.push_back({"u_reference", UniformType::Float, offsetof(SharpenedCoverageParams, reference)});
-    d.gl.uniforms.push_back({"u_lodDither", UniformType::Int, offsetof(SharpenedCoverageParams, dither)});
+    d.gl.uniforms.push_back({"u_lodDither", UniformType::Byte, offsetof(SharpenedCoverageParams, lodDither)});
     d.check = [](const void* params, const DrawCheck& check) {
         const auto& p = *static_cast<const SharpenedCoverageParams*>(params);
         if (!(p.reference >= 0.0f && p.reference <= 1.0f))
             check.fail("reference " + std::to_string(p.reference) + " must be in [0, 1]");
-        checkLodDither(p.dither, check);
+        checkLodDither(p.lodDither, check);
     };
     d.soft = soft::makeKernel<SharpenedCoverageLitKernel, SharpenedCoverageParams>();
     return d;

@@ -22,7 +22,7 @@ inline engine::render::Readback drawDitheredCard(engine::render::Backend& backen
         test_support::cardVertices(corners, 1.0f, glm::vec4(1.0f, 1.0f, 1.0f, weight));
     DitheredSurfaceParams params;
     params.light = engine::render::unlitLight();
-    params.dither = dither;
+    params.lodDither = dither;
     return test_support::drawProgramCard(backend, ditheredMaskedLitProgram(), params, vertices, kDitherCardPixels);
 }
 

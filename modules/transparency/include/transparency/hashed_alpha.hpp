@@ -166,8 +166,8 @@ struct HashedLitParams {
     std::uint32_t seed = 0;  // seedOfInstance, mixed with the frame's seed under TAA
     float hashScale = 1.0f;  // the hash cell, in pixels; > 0
     bool anisotropic = false;
-    bool outputThreshold = false;       // tests: output (t, t, t, 1) instead of the surface
-    LodDither dither = LodDither::Off;  // a crossfading instance's level (lod_dither.hpp)
+    bool outputThreshold = false;          // tests: output (t, t, t, 1) instead of the surface
+    LodDither lodDither = LodDither::Off;  // a crossfading instance's level (lod_dither.hpp)
 };
 
 engine::render::ProgramDesc hashedLitProgram();

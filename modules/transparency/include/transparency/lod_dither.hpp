@@ -24,13 +24,13 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/render/param_block.hpp"
 #include "engine/render/program.hpp"
 #include "engine/render/program_desc.hpp"
-#include "engine/render/texture.hpp"
 
 namespace transparency {
 
-enum class LodDither : std::int32_t {
+enum class LodDither : std::uint8_t {
     Off = 0,        // not crossfading: the surface as it is
     KeepBelow = 1,  // an even level: keep where threshold < weight
     KeepAbove = 2,  // an odd level: keep where threshold >= 1 - weight
@@ -74,15 +74,11 @@ inline glm::vec4 lodDitherOutput(const glm::vec4& c, float weight, LodDither dit
 // A program's draw check of its LodDither parameter (a value outside the enum is refused).
 void checkLodDither(LodDither dither, const engine::render::DrawCheck& check);
 
-// DitheredMaskedLit: the MaskedLit surface (engine::render::SurfaceParams's fields), dithered
-// by `dither` (Off gives MaskedLit's output; techniques draw steady batches with MaskedLit).
-struct DitheredSurfaceParams {
-    glm::mat4 viewProj{1.0f};
-    glm::vec4 baseColorFactor{1.0f};
-    engine::render::TextureBinding baseColor;
-    engine::render::DirectionalLight light;
-    LodDither dither = LodDither::Off;
-};
+// DitheredMaskedLit: the MaskedLit surface, dithered by `lodDither` (Off gives MaskedLit's
+// output; techniques draw steady batches with MaskedLit itself).
+#define TRANSPARENCY_DITHERED_SURFACE_PARAMS(UNIFORM, DIRECTION, TEXTURE) \
+    UNIFORM(::transparency::LodDither, lodDither, ::transparency::LodDither::Off)
+ENGINE_PARAM_BLOCK_ON_LIT_SURFACE(DitheredSurfaceParams, TRANSPARENCY_DITHERED_SURFACE_PARAMS);
 
 engine::render::ProgramDesc ditheredMaskedLitProgram();
 

@@ -43,8 +43,8 @@ struct SharpenedCoverageParams {
     glm::vec4 baseColorFactor{1.0f};
     engine::render::TextureBinding baseColor;
     engine::render::DirectionalLight light;
-    float reference = 0.5f;             // the alpha test's reference, in [0, 1]
-    LodDither dither = LodDither::Off;  // a crossfading batch's level (lod_dither.hpp)
+    float reference = 0.5f;                // the alpha test's reference, in [0, 1]
+    LodDither lodDither = LodDither::Off;  // a crossfading batch's level (lod_dither.hpp)
 };
 
 engine::render::ProgramDesc sharpenedCoverageLitProgram();
