@@ -21,9 +21,8 @@ void validate(const ParticleOptions& o) {
     check.positive(o.endSize, "endSize");
     check.positive(o.softness, "softness");
     check.positive(o.thinning, "thinning");
-    check.finite(o.drag, "drag");
+    check.nonNegative(o.drag, "drag");
     check.finite(o.gravity, "gravity");
-    if (o.drag < 0.0f) throw engine::Error("ParticleOptions.drag must be >= 0");
 }
 
 namespace {

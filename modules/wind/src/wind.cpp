@@ -19,13 +19,12 @@ void validate(const Wind& w) {
     check.nonNegative(w.swayFrequency, "swayFrequency");
     check.nonNegative(w.gustStrength, "gustStrength");
     check.nonNegative(w.gustFrequency, "gustFrequency");
-    check.nonNegative(w.gustWavelength, "gustWavelength");
+    check.positive(w.gustWavelength, "gustWavelength");
     check.nonNegative(w.flutterAmplitude, "flutterAmplitude");
     check.nonNegative(w.flutterFrequency, "flutterFrequency");
     check.nonNegative(w.activeRadius, "activeRadius");
     check.nonNegative(w.springRate, "springRate");
     check.nonNegative(w.colliderMargin, "colliderMargin");
-    if (!(w.gustWavelength > 0.0f)) throw engine::Error("Wind.gustWavelength must be positive");
 }
 
 }  // namespace wind

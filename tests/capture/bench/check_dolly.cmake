@@ -10,17 +10,10 @@ function(fail what)
   message(FATAL_ERROR "ssam-bench --dolly: ${what}")
 endfunction()
 
+include(${CMAKE_CURRENT_LIST_DIR}/bench_run.cmake)
+
 function(run dir threads)
-  file(REMOVE_RECURSE ${dir})
-  execute_process(COMMAND ${BENCH} --dolly --dolly-frames 6 --size 96x54 --techniques ssam,alpha-test
-                          --threads ${threads} --out ${dir}
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
-  if(NOT rc EQUAL 0)
-    fail("exited with ${rc}\n${stdout}\n${stderr}")
-  endif()
-  if(NOT EXISTS ${dir}/dolly.csv)
-    fail("${dir}/dolly.csv was not written")
-  endif()
+  run_bench(${dir} dolly.csv --dolly --dolly-frames 6 --size 96x54 --techniques ssam,alpha-test --threads ${threads})
 endfunction()
 
 run(${OUT}/one 1)

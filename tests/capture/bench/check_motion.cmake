@@ -11,18 +11,11 @@ function(fail what)
   message(FATAL_ERROR "ssam-bench --motion: ${what}")
 endfunction()
 
+include(${CMAKE_CURRENT_LIST_DIR}/bench_run.cmake)
+
 function(run dir threads vectors)
-  file(REMOVE_RECURSE ${dir})
-  execute_process(COMMAND ${BENCH} --motion pan,dolly,wind --motion-frames 3 --size 96x54
-                          --techniques hashed+taa,alpha-test --motion-vectors ${vectors} --threads ${threads}
-                          --out ${dir}
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
-  if(NOT rc EQUAL 0)
-    fail("exited with ${rc}\n${stdout}\n${stderr}")
-  endif()
-  if(NOT EXISTS ${dir}/motion.csv)
-    fail("${dir}/motion.csv was not written")
-  endif()
+  run_bench(${dir} motion.csv --motion pan,dolly,wind --motion-frames 3 --size 96x54
+            --techniques hashed+taa,alpha-test --motion-vectors ${vectors} --threads ${threads})
 endfunction()
 
 run(${OUT}/one 1 on)
