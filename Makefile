@@ -207,12 +207,13 @@ content: build
 
 # The benchmarks, the speed table (game/bench/speed_table.sh: the soft backend against Mesa
 # llvmpipe with the same threads, measured in this one run; OLD_BIN=<dir of an older racer and
-# ssam-bench> adds a "before" column, old and new binaries run alternately), then readme-chart,
-# whose ssam-bench run writes game/bench/FIGURES.md with that speed table copied in.
+# ssam-bench> adds a "before" column, old and new binaries run alternately; BEFORE=lod-off makes
+# the "before" column the same binaries with --lod off), then readme-chart, whose ssam-bench run
+# writes game/bench/FIGURES.md with that speed table copied in.
 bench: build
 	$(BUILD_DIR)/bin/bench_ecs
 	$(BUILD_DIR)/bin/ssam_bench
-	BIN=$(BUILD_DIR)/bin OUT=out/bench OLD_BIN=$(OLD_BIN) game/bench/speed_table.sh
+	BIN=$(BUILD_DIR)/bin OUT=out/bench OLD_BIN=$(OLD_BIN) BEFORE=$(BEFORE) game/bench/speed_table.sh
 	$(MAKE) readme-chart
 
 # Fuzzing, outside CI (tests/fuzz/run_fuzzers.sh): the fuzz targets built with Clang as

@@ -13,13 +13,18 @@
 #
 # With OLD_BIN set (a directory holding an older racer and ssam-bench), every soft measure is
 # taken with both, alternately in the same run (old, new, old, new, ...), and the table gets a
-# "before" column. llvmpipe is measured with BIN's binaries (the same Mesa either way).
+# "before" column. With BEFORE=lod-off instead, the "before" column is BIN's binaries with
+# --lod off (every plant at full detail), alternated the same way. llvmpipe is measured with
+# BIN's binaries and the default levels of detail (the same Mesa either way), so each ratio has
+# the same levels of detail on both backends.
 #
-# Usage: game/bench/speed_table.sh   (env: BIN=build/bin OUT=out/bench OLD_BIN= ROUNDS=3 THREADS=2)
+# Usage: game/bench/speed_table.sh
+#   (env: BIN=build/bin OUT=out/bench OLD_BIN= BEFORE= ROUNDS=3 THREADS=2)
 set -euo pipefail
 BIN=${BIN:-build/bin}
 OUT=${OUT:-out/bench}
 OLD_BIN=${OLD_BIN:-}
+BEFORE=${BEFORE:-}
 ROUNDS=${ROUNDS:-3}
 THREADS=${THREADS:-2}
 CONTENT=${CONTENT:-content}
@@ -27,6 +32,8 @@ CONTENT=${CONTENT:-content}
 die() { echo "speed_table: error: $*" >&2; exit 2; }
 [[ "$ROUNDS" =~ ^[1-9][0-9]*$ ]] || die "ROUNDS='$ROUNDS' is not a positive integer"
 [[ "$THREADS" =~ ^[1-9][0-9]*$ ]] || die "THREADS='$THREADS' is not a positive integer"
+[[ -z "$BEFORE" || "$BEFORE" == lod-off ]] || die "BEFORE='$BEFORE': the one value is lod-off"
+[[ -z "$BEFORE" || -z "$OLD_BIN" ]] || die "set OLD_BIN or BEFORE=lod-off, not both"
 for b in "$BIN" ${OLD_BIN:+"$OLD_BIN"}; do
   for tool in racer ssam-bench; do [[ -x "$b/$tool" ]] || die "no executable $b/$tool"; done
 done
@@ -35,17 +42,26 @@ export DISPLAY=  # headless: llvmpipe through EGL
 LOG="$OUT/speed_table.log"
 : > "$LOG"
 
-bins=("$BIN")
-[[ -n "$OLD_BIN" ]] && bins=("$OLD_BIN" "$BIN")
+# A variant is what the soft measures run: "new" (BIN), "old" (OLD_BIN) or "lod-off" (BIN with
+# --lod off). bins lists them in the order they alternate, the "before" one first.
+bins=(new)
+[[ -n "$OLD_BIN" ]] && bins=(old new)
+[[ -n "$BEFORE" ]] && bins=(lod-off new)
+variant_bin() { if [[ $1 == old ]]; then echo "$OLD_BIN"; else echo "$BIN"; fi; }
+variant_args() { if [[ $1 == lod-off ]]; then echo "--lod off"; fi; }
+before_label() { if [[ -n "$OLD_BIN" ]]; then echo "$OLD_BIN"; else echo "$BIN --lod off"; fi; }
 
-# racer's mean frame in ms: racer_ms BIN BACKEND THREADS ARGS...
+# racer's mean frame in ms: racer_ms VARIANT BACKEND THREADS ARGS...
 racer_ms() {
-  local bin=$1 backend=$2 threads=$3; shift 3
+  local bin backend=$2 threads=$3 variantArgs
+  bin=$(variant_bin "$1")
+  read -ra variantArgs <<< "$(variant_args "$1")"
+  shift 3
   local line
   local threadFlag=(--threads "$threads")
   [[ $backend == gl ]] && threadFlag=()  # llvmpipe takes LP_NUM_THREADS; racer refuses --threads with gl
   line=$(LP_NUM_THREADS=$threads "$bin/racer" --headless --content "$CONTENT" --backend "$backend" \
-           "${threadFlag[@]}" --fixed-dt 0.0333 "$@" 2>&1 | tee -a "$LOG" | grep 'racer: mean frame') \
+           "${threadFlag[@]}" --fixed-dt 0.0333 "${variantArgs[@]}" "$@" 2>&1 | tee -a "$LOG" | grep 'racer: mean frame') \
     || die "racer ($bin, $backend $*) failed; see $LOG"
   awk '{print $4}' <<< "$line"
 }
@@ -59,7 +75,7 @@ for round in $(seq "$ROUNDS"); do
     for b in "${bins[@]}"; do
       t[$camera|$b]+=" $(racer_ms "$b" soft "$THREADS" --size 1280x720 --frames 12 --camera "$camera")"
     done
-    t[$camera|gl]+=" $(racer_ms "$BIN" gl "$THREADS" --size 1280x720 --frames 12 --camera "$camera")"
+    t[$camera|gl]+=" $(racer_ms new gl "$THREADS" --size 1280x720 --frames 12 --camera "$camera")"
   done
   for b in "${bins[@]}"; do
     t[small|$b]+=" $(racer_ms "$b" soft "$THREADS" --size 160x90 --frames 60 --camera chase)"
@@ -68,27 +84,30 @@ for round in $(seq "$ROUNDS"); do
   echo "speed_table: round $round of $ROUNDS done" >&2
 done
 
-# ssam-bench: SSAM and alpha test on both backends (new binary) and on soft (old binary), one
-# scene at a time, the binaries alternated scene by scene.
+# ssam-bench: SSAM, SSAM+ and alpha test on both backends (new binary) and on soft (the before
+# variant), one scene at a time, the variants alternated scene by scene.
 echo "speed_table: ssam-bench tree, forest, vista" >&2
 declare -A bench
-bench_csv() {  # bench_csv BIN DIR BACKENDS SCENE
-  "$1/ssam-bench" --content "$CONTENT" --scenes "$4" --techniques ssam,alpha-test --backend "$3" \
-    --threads "$THREADS" --reps 3 --pan-frames 2 --out "$2" >> "$LOG" 2>&1 || die "ssam-bench ($1) failed; see $LOG"
+bench_csv() {  # bench_csv VARIANT DIR BACKENDS SCENE
+  local variantArgs
+  read -ra variantArgs <<< "$(variant_args "$1")"
+  "$(variant_bin "$1")/ssam-bench" --content "$CONTENT" --scenes "$4" --techniques ssam,ssam-plus,alpha-test \
+    --backend "$3" --threads "$THREADS" --reps 3 --pan-frames 2 "${variantArgs[@]}" --out "$2" >> "$LOG" 2>&1 \
+    || die "ssam-bench ($1) failed; see $LOG"
   # scene,technique,backend -> time_ms_median (column 6)
   awk -F, 'NR > 1 && $6 != "" {print $1 "," $2 "," $3, $6}' "$2/bench.csv"
 }
 for scene in tree forest vista; do
-  if [[ -n "$OLD_BIN" ]]; then
-    while read -r key ms; do bench[$key|$OLD_BIN]=$ms; done < <(bench_csv "$OLD_BIN" "$OUT/ssam-bench-old/$scene" soft "$scene")
+  if [[ ${#bins[@]} == 2 ]]; then
+    while read -r key ms; do bench[$key|${bins[0]}]=$ms; done < <(bench_csv "${bins[0]}" "$OUT/ssam-bench-before/$scene" soft "$scene")
   fi
-  while read -r key ms; do bench[$key|$BIN]=$ms; done < <(bench_csv "$BIN" "$OUT/ssam-bench/$scene" soft,gl "$scene")
+  while read -r key ms; do bench[$key|new]=$ms; done < <(bench_csv new "$OUT/ssam-bench/$scene" soft,gl "$scene")
 done
 
 med() { median <<< "${t[$1]}"; }
 row() {  # row MEASURE GOAL VALUE_FOR_BIN...
   local measure=$1 goal=$2; shift 2
-  if [[ -n "$OLD_BIN" ]]; then printf '| %s | %s | %s | %s |\n' "$measure" "$1" "$2" "$goal"
+  if [[ ${#bins[@]} == 2 ]]; then printf '| %s | %s | %s | %s |\n' "$measure" "$1" "$2" "$goal"
   else printf '| %s | %s | %s |\n' "$measure" "$1" "$goal"; fi
 }
 values() {  # values FUNCTION: the function's value for each binary, one line each, in bins order
@@ -99,13 +118,14 @@ chase_ratio() { ratio "$(med "chase|$1")" "$(med chase\|gl)"; }
 ssam_ratio() {
   local worst=0 scene r
   for scene in tree forest vista; do
-    r=$(ratio "${bench[$scene,ssam,soft|$1]}" "${bench[$scene,ssam,gl|$BIN]}")
+    r=$(ratio "${bench[$scene,ssam,soft|$1]}" "${bench[$scene,ssam,gl|new]}")
     worst=$(awk -v a="$worst" -v b="$r" 'BEGIN {print (b > a) ? b : a}')
     printf '%s %s; ' "$scene" "$r"
   done
   printf 'worst %s' "$worst"
 }
 ssam_over_alpha() { ratio "${bench[forest,ssam,soft|$1]}" "${bench[forest,alpha-test,soft|$1]}"; }
+plus_over_ssam() { ratio "${bench[forest,ssam-plus,soft|$1]}" "${bench[forest,ssam,soft|$1]}"; }
 small_ms() { printf '%.1f ms' "$(med "small|$1")"; }
 speedup() { ratio "$(med "one|$1")" "$(med "chase|$1")"; }
 
@@ -113,8 +133,8 @@ speedup() { ratio "$(med "one|$1")" "$(med "chase|$1")"; }
   echo
   echo "The soft backend against llvmpipe on this machine ($(nproc) cores; $THREADS thread(s) each: soft --threads, llvmpipe LP_NUM_THREADS)"
   echo
-  if [[ -n "$OLD_BIN" ]]; then
-    echo "| measure | before ($OLD_BIN) | after ($BIN) | goal |"; echo "|---|---:|---:|---|"
+  if [[ ${#bins[@]} == 2 ]]; then
+    echo "| measure | before ($(before_label)) | after ($BIN) | goal |"; echo "|---|---:|---:|---|"
   else
     echo "| measure | $BIN | goal |"; echo "|---|---:|---|"
   fi
@@ -123,6 +143,7 @@ speedup() { ratio "$(med "one|$1")" "$(med "chase|$1")"; }
   local_row "racer whole frame 1280x720 chase: soft / llvmpipe" "≤ 0.5" chase_ratio
   local_row "ssam-bench SSAM frame soft / llvmpipe" "≤ 0.5 (worst)" ssam_ratio
   local_row "forest: SSAM / alpha test on soft" "≤ 1.5" ssam_over_alpha
+  local_row "forest: SSAM+ / SSAM on soft" "≤ 1.3" plus_over_ssam
   local_row "racer 160x90 chase frame" "≤ 5 ms" small_ms
   local_row "2 threads / 1 thread (racer 720p chase, speed-up)" "≥ 1.8" speedup
   echo
