@@ -197,7 +197,7 @@ BENCH_SIZE ?= 1280x720
 BENCH_BACKENDS ?= soft
 readme-chart: build
 	DISPLAY= $(BUILD_DIR)/bin/ssam-bench --backend $(BENCH_BACKENDS) --threads 2 --size $(BENCH_SIZE) \
-	  --with-paper-ssam --out out/bench --figures game/bench/FIGURES.md \
+	  --with-paper-ssam --lod off --out out/bench --figures game/bench/FIGURES.md \
 	  $(if $(wildcard out/bench/speed_table.md),--speed-table out/bench/speed_table.md)
 	cp out/bench/bench.svg content/readme/bench.svg
 

@@ -20,15 +20,6 @@
 
 namespace bench {
 
-struct DollyRow {
-    std::string scene, technique, backend = "soft";
-    int frames = 0;
-    double pop = 0.0, popLod = 0.0;
-    int popFrame = 0, popLodFrame = 0;  // the later frame of the worst pair
-    double lodFlipMean = 0.0, lodFlipWorst = 0.0, lodFrameFlipMean = 0.0;
-    float crossfade = 0.0f;
-};
-
 // Every subject with a technique of `options`, on each scene that has a dolly, through its
 // first `frames` frames (2 .. kDollyFrames). Prints one progress line per frame.
 std::vector<DollyRow> runDolly(const BenchOptions& options, int frames, float crossfade);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bench_goals.hpp"
+#include "bench_verdict.hpp"
 #include "report_text.hpp"
 
 namespace bench {
@@ -36,8 +37,11 @@ void writeIntro(std::ostream& out, const std::vector<BenchRow>& rows, const Figu
            "with `--speed-table` |\n"
            "| [SSAM against its rivals](#ssam-against-its-rivals) | every technique per scene: time, error, "
            "flicker, error per frame of a pan |\n"
-           "| [Goals](#goals) | SSAM against alpha testing, met or not |\n"
-           "| [SSAM and hashed+taa](#ssam-and-hashedtaa) | the two side by side, and which is better at what |\n\n"
+           "| [Goals](#goals) | SSAM against alpha testing, still, in motion and along the dolly: met or not |\n"
+           "| [In motion](#in-motion) | the forest's pan, dolly and wind: flicker, error per frame, ghosting |\n"
+           "| [Along the dolly](#along-the-dolly) | popping at the levels of detail's changes |\n"
+           "| [SSAM and what engines ship](#ssam-and-what-engines-ship) | SSAM beside hashed+taa, alpha-test+taa "
+           "and sharpened A2C, and which is better at what |\n\n"
            "Wall times scatter from run to run on a shared machine; errors and memory are deterministic "
            "on the soft backend. Every GL figure is Mesa llvmpipe's, a CPU rasterizer.\n\n";
 }
@@ -119,44 +123,72 @@ void writeRivals(std::ostream& out, const std::vector<BenchRow>& rows, const Fig
         }
 }
 
-void writeSideBySide(std::ostream& out, const std::vector<BenchRow>& rows) {
-    out << "## SSAM and hashed+taa\n\n"
-           "Technique `ssam` (its preset above) beside `hashed+taa` (hashed alpha testing [Wyman & McGuire 2017] "
-           "resolved by the temporal pass), on the "
-        << primaryBackend(rows)
-        << " backend; the last column names the lower (better) of the two for each measure. Memory counts "
-           "the temporal pass's history.\n\n"
-           "| scene | measure | ssam | hashed+taa | lower |\n|---|---|---:|---:|---|\n";
-    struct Measure {
-        const char* name;
-        double BenchRow::*field;
-        const char* format;
-    };
-    const Measure measures[] = {{"time ms", &BenchRow::timeMedianMs, "%.2f"},
-                                {"ꟻLIP, still frame", &BenchRow::flipMean, "%.4f"},
-                                {"ꟻLIP, pan converged", &BenchRow::temporalFlip, "%.4f"},
-                                {"ꟻLIP, pan worst frame", &BenchRow::temporalFlipWorst, "%.4f"},
-                                {"RMSE, pan converged", &BenchRow::temporalRmse, "%.5f"},
-                                {"flicker", &BenchRow::flicker, "%.5f"},
-                                {"memory MiB", &BenchRow::peakMemMb, "%.1f"}};
-    const std::string backend = primaryBackend(rows);
-    bool any = false;
-    for (const std::string& scene : distinctScenes(rows)) {
-        const BenchRow* s = findRow(rows, scene, "ssam", backend);
-        const BenchRow* h = findRow(rows, scene, "hashed+taa", backend);
-        if (!s || !h) continue;
-        for (const Measure& m : measures) {
-            const double a = s->*m.field, b = h->*m.field;
-            if (!has(a) && !has(b)) continue;
-            any = true;
-            const bool signedMeasure = m.field == &BenchRow::flicker;  // less than the reference's: |x|
-            const double ka = signedMeasure ? std::abs(a) : a, kb = signedMeasure ? std::abs(b) : b;
-            const std::string lower = !has(a) || !has(b) ? "" : ka < kb ? "ssam" : kb < ka ? "hashed+taa" : "equal";
-            out << "| " << scene << " | " << m.name << " | " << num(a, m.format) << " | " << num(b, m.format) << " | "
-                << lower << " |\n";
-        }
+void writeMotion(std::ostream& out, const std::vector<MotionRow>& motion) {
+    out << "## In motion\n\n";
+    if (motion.empty()) {
+        out << "Not part of this run: `ssam-bench --figures` runs it after the comparison.\n\n";
+        return;
     }
-    if (!any) out << "| | not measured: the run lacked `ssam` or `hashed+taa` | | | |\n";
+    out << "The forest through the three motions of `ssam-bench --motion` (game/docs/motion.md): the sideways "
+           "pan, the dolly toward the trees and the wind under a still camera, "
+        << motion.front().frames
+        << " measured frames each, every frame against that frame's reference over the foliage pixels. "
+           "Converged: the median over the last half of the frames; worst: the worst frame; ghosting: the "
+           "error on the pixels whose surface moved; flicker: the change between frames less the "
+           "reference's. The temporal techniques reproject by motion vectors.\n\n"
+           "| motion | technique | flicker | ꟻLIP converged | ꟻLIP worst | RMSE converged | ghosting converged | "
+           "ghosting worst |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const MotionRow& r : motion)
+        out << "| " << r.motion << " | `" << r.technique << "` | " << num(r.flicker, "%.5f") << " | "
+            << num(r.flip, "%.4f") << " | " << num(r.flipWorst, "%.4f") << " | " << num(r.rmse, "%.5f") << " | "
+            << num(r.ghost, "%.4f") << " | " << num(r.ghostWorst, "%.4f") << " |\n";
+    out << "\n";
+}
+
+void writeDolly(std::ostream& out, const std::vector<DollyRow>& dolly) {
+    out << "## Along the dolly\n\n";
+    if (dolly.empty()) {
+        out << "Not part of this run: `ssam-bench --figures` runs it after the comparison.\n\n";
+        return;
+    }
+    out << "Popping at the levels of detail's changes (`ssam-bench --dolly`, game/docs/levels_of_detail.md): "
+           "the forest's dolly, "
+        << dolly.front().frames
+        << " frames, drawn with the levels of detail and at full detail. pop: the largest ꟻLIP between "
+           "consecutive frames; pop_lod: the largest change the levels add to the motion's own; LOD ꟻLIP: the "
+           "LOD frame against the full-detail frame over the plant pixels, mean and worst.\n\n"
+           "| technique | pop | pop_lod | LOD ꟻLIP mean | LOD ꟻLIP worst |\n|---|---:|---:|---:|---:|\n";
+    for (const DollyRow& r : dolly)
+        out << "| `" << r.technique << "` | " << num(r.pop, "%.4f") << " | " << num(r.popLod, "%.4f") << " | "
+            << num(r.lodFlipMean, "%.4f") << " | " << num(r.lodFlipWorst, "%.4f") << " |\n";
+    out << "\n";
+}
+
+void writeGoalsOrAbsence(std::ostream& out, const std::vector<Goal>& goals) {
+    if (goals.empty()) out << "Not part of this run.\n";
+    else writeGoalTable(out, goals);
+}
+
+void writeGoals(std::ostream& out, const std::vector<BenchRow>& rows, const FiguresInput& in) {
+    out << "## Goals\n\nSSAM against alpha testing, from the rows above (" << primaryBackend(rows)
+        << " backend): the recommended preset's ꟻLIP at or below alpha testing's at no more than 1.25x the "
+           "paper preset's time, SSAM+'s ꟻLIP at most 0.6x alpha testing's, and SSAM's flicker in the forest "
+           "pan at most 0.3x alpha testing's. The time is not the rows' (each technique timed after the other, "
+           "so a change in the machine's speed lands on one): the two presets' frames are timed alternately, "
+           "A B A B, after the rows.";
+    const std::string lodName = in.lodRowsHaveLevelsOfDetail ? "LOD on" : "LOD off";
+    if (!in.lodRows.empty())
+        out << " The last two columns: the same goals from a run of their techniques with the levels of detail "
+            << (in.lodRowsHaveLevelsOfDetail ? "on" : "off") << ".";
+    out << "\n\n";
+    const std::vector<Goal> beside = rivalGoals(in.lodRows);
+    writeGoalTable(out, rivalGoals(rows), in.lodRows.empty() ? nullptr : &beside, lodName);
+    out << "\nIn motion ([In motion](#in-motion)): on the forest, for each motion, SSAM's flicker at most 0.3x "
+           "alpha testing's and SSAM+'s converged ꟻLIP at most 0.6x alpha testing's.\n\n";
+    writeGoalsOrAbsence(out, motionGoals(in.motion));
+    out << "\nAlong the dolly ([Along the dolly](#along-the-dolly)): SSAM's popping below alpha testing's and "
+           "below hashed alpha's, and its LOD frame's ꟻLIP against full detail at most 0.02.\n\n";
+    writeGoalsOrAbsence(out, dollyGoals(in.dolly));
     out << "\n";
 }
 
@@ -166,15 +198,10 @@ void writeFigures(std::ostream& out, const std::vector<BenchRow>& rows, const Fi
     writeIntro(out, rows, input);
     writeSpeed(out, input);
     writeRivals(out, rows, input);
-    out << "## Goals\n\nSSAM against alpha testing, from the rows above (" << primaryBackend(rows)
-        << " backend): the recommended preset's ꟻLIP at or below alpha testing's at no more than 1.25x the "
-           "paper preset's time, SSAM+'s ꟻLIP at most 0.6x alpha testing's, and SSAM's flicker in the forest "
-           "pan at most 0.3x alpha testing's. The time is not the rows' (each technique timed after the other, "
-           "so a change in the machine's speed lands on one): the two presets' frames are timed alternately, "
-           "A B A B, after the rows.\n\n";
-    writeGoalTable(out, rivalGoals(rows));
-    out << "\n";
-    writeSideBySide(out, rows);
+    writeGoals(out, rows, input);
+    writeMotion(out, input.motion);
+    writeDolly(out, input.dolly);
+    writeWhatEnginesShip(out, rows, input.motion);
 }
 
 }  // namespace bench

@@ -2,6 +2,7 @@
 #include "bench_goals.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "report_text.hpp"
 
@@ -20,18 +21,44 @@ std::string primaryBackend(const std::vector<BenchRow>& rows) {
     return rows.empty() ? "" : rows.front().backend;
 }
 
+namespace {
+
+// `what`: a's `field` over b's, or what the run lacked to compute it.
+template <class Row>
+Goal ratioGoal(std::string what, const Row* ra, const std::string& a, const Row* rb, const std::string& b,
+               double Row::*field, double target) {
+    Goal g{std::move(what), std::nullopt, target, ""};
+    if (!ra || !rb) g.missing = "no " + std::string(!ra ? a : b) + " row in this run";
+    else if (!has(ra->*field) || !has(rb->*field)) g.missing = "not measured in this run";
+    else if (rb->*field == 0.0) g.missing = "undefined (division by zero)";
+    else g.ratio = ra->*field / rb->*field;
+    return g;
+}
+
+// The goals of the forest only: the scene the motions and the dolly run in.
+constexpr const char* kMotionScene = "forest";
+
+const MotionRow* findMotionRow(const std::vector<MotionRow>& rows, const std::string& motion,
+                               const std::string& technique) {
+    for (const MotionRow& r : rows)
+        if (r.scene == kMotionScene && r.motion == motion && r.technique == technique) return &r;
+    return nullptr;
+}
+
+const DollyRow* findDollyRow(const std::vector<DollyRow>& rows, const std::string& technique) {
+    for (const DollyRow& r : rows)
+        if (r.scene == kMotionScene && r.technique == technique) return &r;
+    return nullptr;
+}
+
+}  // namespace
+
 std::vector<Goal> rivalGoals(const std::vector<BenchRow>& rows) {
     const std::string backend = primaryBackend(rows);
     auto ratio = [&](const std::string& what, const std::string& scene, const std::string& a, const std::string& b,
                      double BenchRow::*field, double target) {
-        Goal g{scene + ": " + what, std::nullopt, target, ""};
-        const BenchRow* ra = findRow(rows, scene, a, backend);
-        const BenchRow* rb = findRow(rows, scene, b, backend);
-        if (!ra || !rb) g.missing = "no " + std::string(!ra ? a : b) + " row in this run";
-        else if (!has(ra->*field) || !has(rb->*field)) g.missing = "not measured in this run";
-        else if (rb->*field == 0.0) g.missing = "undefined (division by zero)";
-        else g.ratio = ra->*field / rb->*field;
-        return g;
+        return ratioGoal(scene + ": " + what, findRow(rows, scene, a, backend), a, findRow(rows, scene, b, backend), b,
+                         field, target);
     };
     std::vector<Goal> goals;
     for (const char* scene : {"tree", "forest", "vista"}) {
@@ -56,12 +83,64 @@ std::vector<Goal> rivalGoals(const std::vector<BenchRow>& rows) {
     return goals;
 }
 
-void writeGoalTable(std::ostream& out, const std::vector<Goal>& goals) {
-    out << "| goal | measured | target | met? |\n|---|---:|---|---|\n";
-    for (const Goal& g : goals)
-        out << "| " << g.what << " | " << (g.ratio ? num(*g.ratio, "%.3f") + "x" : std::string("n/a"))
-            << " | <= " << num(g.target, "%.2f") << "x | " << (g.ratio ? (g.met() ? "met" : "not met") : g.missing)
-            << " |\n";
+std::vector<Goal> motionGoals(const std::vector<MotionRow>& rows) {
+    std::vector<Goal> goals;
+    for (const char* motion : {"pan", "dolly", "wind"}) {
+        if (std::none_of(rows.begin(), rows.end(), [&](const MotionRow& r) { return r.motion == motion; })) continue;
+        auto ratio = [&](const char* what, const char* a, const char* b, double MotionRow::*field, double target) {
+            return ratioGoal(std::string(kMotionScene) + " " + motion + ": " + what, findMotionRow(rows, motion, a), a,
+                             findMotionRow(rows, motion, b), b, field, target);
+        };
+        goals.push_back(ratio("flicker ssam / alpha-test", "ssam", "alpha-test", &MotionRow::flicker, 0.3));
+        goals.push_back(
+            ratio("ꟻLIP converged ssam-plus / alpha-test", "ssam-plus", "alpha-test", &MotionRow::flip, 0.6));
+    }
+    return goals;
+}
+
+std::vector<Goal> dollyGoals(const std::vector<DollyRow>& rows) {
+    if (rows.empty()) return {};
+    const std::string at = std::string(kMotionScene) + " dolly: ";
+    std::vector<Goal> goals;
+    for (const char* rival : {"alpha-test", "hashed"}) {
+        goals.push_back(ratioGoal(at + "popping (pop_lod) ssam / " + rival, findDollyRow(rows, "ssam"), "ssam",
+                                  findDollyRow(rows, rival), rival, &DollyRow::popLod, 1.0));
+        goals.back().below = true;
+    }
+    Goal flip{at + "LOD frame ꟻLIP against full detail, ssam", std::nullopt, 0.02, ""};
+    flip.isRatio = false;
+    if (const DollyRow* s = findDollyRow(rows, "ssam")) flip.ratio = s->lodFlipMean;
+    else flip.missing = "no ssam row in this run";
+    goals.push_back(flip);
+    return goals;
+}
+
+namespace {
+
+std::string measured(const Goal& g) {
+    if (!g.ratio) return "n/a";
+    return g.isRatio ? num(*g.ratio, "%.3f") + "x" : num(*g.ratio, "%.4f");
+}
+
+std::string verdict(const Goal& g) { return g.ratio ? (g.met() ? "met" : "not met") : g.missing; }
+
+}  // namespace
+
+void writeGoalTable(std::ostream& out, const std::vector<Goal>& goals, const std::vector<Goal>* beside,
+                    const std::string& besideName) {
+    out << "| goal | measured | target | met? |" << (beside ? " " + besideName + " | met? |" : "") << "\n"
+        << "|---|---:|---|---|" << (beside ? "---:|---|" : "") << "\n";
+    for (const Goal& g : goals) {
+        const std::string target = std::string(g.below ? "< " : "<= ") + num(g.target, "%.2f") + (g.isRatio ? "x" : "");
+        out << "| " << g.what << " | " << measured(g) << " | " << target << " | " << verdict(g) << " |";
+        if (beside) {
+            const auto other =
+                std::find_if(beside->begin(), beside->end(), [&](const Goal& b) { return b.what == g.what; });
+            if (other == beside->end()) out << " n/a | not in that run |";
+            else out << " " << measured(*other) << " | " << verdict(*other) << " |";
+        }
+        out << "\n";
+    }
 }
 
 }  // namespace bench

@@ -206,6 +206,14 @@ std::vector<Motion> parseMotions(std::string_view list) {
     return motions;
 }
 
+std::vector<Motion> availableMotions() {
+#if SSAM_BENCH_WIND
+    return {Motion::Pan, Motion::Dolly, Motion::Wind};
+#else
+    return {Motion::Pan, Motion::Dolly};
+#endif
+}
+
 const char* motionName(Motion motion) {
     switch (motion) {
         case Motion::Pan: return "pan";

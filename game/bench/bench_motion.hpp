@@ -34,17 +34,11 @@ enum class Motion { Pan, Dolly, Wind };
 // naming the bad entry.
 std::vector<Motion> parseMotions(std::string_view list);
 const char* motionName(Motion motion);
+// Every motion this build can run: pan and dolly, and wind when modules/wind is in it.
+std::vector<Motion> availableMotions();
 
 // A pixel whose reference changed by more ꟻLIP than this between two frames has moved.
 inline constexpr double kMovedFlip = 0.1;
-
-struct MotionRow {
-    std::string scene, motion, technique, backend = "soft";
-    bool motionVectors = true;
-    int frames = 0;       // frames measured (those with foliage in view)
-    int ghostFrames = 0;  // of those, the ones with moved pixels (the ghost columns' frames)
-    double flicker = 0.0, flip = 0.0, flipWorst = 0.0, rmse = 0.0, rmseWorst = 0.0, ghost = 0.0, ghostWorst = 0.0;
-};
 
 // Every subject with a technique of `options`, on each of its scenes that has the motion,
 // `frames` (>= 2) frames each. Prints one progress line per frame.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// One row of `ssam-bench`'s results: a technique (or the opaque-only frame) on one scene and
+// The rows of `ssam-bench`'s results. BenchRow: a technique (or the opaque-only frame) on one scene and
 // backend. Missing values (no reference yet, no pan, a skipped technique) are NaN and are
 // written as empty CSV cells; `note` says why.
 #include <cmath>
@@ -45,6 +45,27 @@ struct BenchRow {
     double temporalFlip = kMissing, temporalFlipWorst = kMissing;
     double temporalRmse = kMissing, temporalRmseWorst = kMissing;
     std::string note;
+};
+
+// One technique through one motion of ssam-bench --motion (bench_motion.hpp, which defines
+// the measures).
+struct MotionRow {
+    std::string scene, motion, technique, backend = "soft";
+    bool motionVectors = true;
+    int frames = 0;       // frames measured (those with foliage in view)
+    int ghostFrames = 0;  // of those, the ones with moved pixels (the ghost columns' frames)
+    double flicker = 0.0, flip = 0.0, flipWorst = 0.0, rmse = 0.0, rmseWorst = 0.0, ghost = 0.0, ghostWorst = 0.0;
+};
+
+// One technique along the dolly of ssam-bench --dolly (bench_dolly.hpp, which defines the
+// measures).
+struct DollyRow {
+    std::string scene, technique, backend = "soft";
+    int frames = 0;
+    double pop = 0.0, popLod = 0.0;
+    int popFrame = 0, popLodFrame = 0;  // the later frame of the worst pair
+    double lodFlipMean = 0.0, lodFlipWorst = 0.0, lodFrameFlipMean = 0.0;
+    float crossfade = 0.0f;
 };
 
 inline bool has(double v) { return std::isfinite(v); }

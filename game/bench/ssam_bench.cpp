@@ -22,6 +22,7 @@
 #include "bench_dolly.hpp"
 #include "bench_motion.hpp"
 #include "bench_figures.hpp"
+#include "bench_figures_runs.hpp"
 #include "bench_goals.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
@@ -223,7 +224,7 @@ BenchOptions parse(const Options& o) {
     b.crossfade = o.crossfade == "on" ? racer::kLodCrossfade : 0.0f;
     if (o.dolly && !b.levelsOfDetail)
         throw engine::UsageError("--dolly measures the levels of detail: not with --lod off");
-    if (o.dolly && (o.dollyFrames < 2 || o.dollyFrames > kDollyFrames))
+    if ((o.dolly || !o.figures.empty()) && (o.dollyFrames < 2 || o.dollyFrames > kDollyFrames))
         throw engine::UsageError("--dolly-frames " + std::to_string(o.dollyFrames) + ": expected 2.." +
                                  std::to_string(kDollyFrames));
     if (!o.motion.empty()) parseMotions(o.motion);  // a bad name fails before the first frame
@@ -334,7 +335,16 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
     stageReport(files, out / "bench.md", [&](std::ostream& s) { writeMarkdown(s, rows, info); });
     stageReport(files, out / "bench.svg", [&](std::ostream& s) { writeSvg(s, rows); });
     if (!o.figures.empty()) {
-        const FiguresInput figures{info, options.temporalFrames, speedTable, o.speedTable};
+        // --quick checks the page's making, not its figures: the first 16 frames of the dolly.
+        FiguresRuns runs = runFiguresRuns(run, o.quick && !app.count("--dolly-frames") ? 16 : o.dollyFrames);
+        const FiguresInput figures{info,
+                                   options.temporalFrames,
+                                   speedTable,
+                                   o.speedTable,
+                                   std::move(runs.lodRows),
+                                   runs.lodRowsHaveLevelsOfDetail,
+                                   std::move(runs.motion),
+                                   std::move(runs.dolly)};
         stageReport(files, o.figures, [&](std::ostream& s) { writeFigures(s, rows, figures); });
     }
     files.commit();
@@ -416,8 +426,9 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         ->needs(sweep);
     CLI::Option* figures = app.add_option(
         "--figures", o.figures,
-        "also write FIGURES.md (the figures the READMEs quote: every scene's techniques, the goals, ssam beside "
-        "hashed+taa) from this run to this file; make bench writes game/bench/FIGURES.md");
+        "also write FIGURES.md (the figures the READMEs quote: every scene's techniques; the goals still, in motion "
+        "and along the dolly, from further runs of their techniques on the soft backend; ssam beside what engines "
+        "ship) from this run to this file; make bench writes game/bench/FIGURES.md");
     app.add_option("--speed-table", o.speedTable,
                    "game/bench/speed_table.sh's table (its speed_table.md), copied into --figures' file")
         ->check(CLI::ExistingFile)
@@ -451,7 +462,8 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         "--dolly", o.dolly,
         "instead of comparing techniques: popping along the forest's dolly (the camera moving toward the trees "
         "1 m a frame), each technique with levels of detail against full detail; default 320x180; writes dolly.csv");
-    app.add_option("--dolly-frames", o.dollyFrames, "frames of the dolly from its start (2..117)")
+    app.add_option("--dolly-frames", o.dollyFrames,
+                   "frames of the dolly from its start (2..117), for --dolly and --figures' dolly (--quick: 16)")
         ->capture_default_str();
     dolly->excludes(sweep)->excludes(scaling)->excludes(figures);
     CLI::Option* motion = app.add_option(

@@ -9,7 +9,9 @@
 #     is deterministic for any thread count;
 #   - the tree and forest rows have the temporal measures (bench_temporal.hpp), finite;
 #   - --figures writes FIGURES.md (bench_figures.hpp) from the run: the command at its top, a
-#     table per scene with every technique, the goals, and every table row as wide as its header.
+#     table per scene with every technique, the goals (still, in motion, along the dolly), the
+#     forest's motions and dolly (bench_figures_runs.hpp), SSAM beside what engines ship, and
+#     every table row as wide as its header.
 cmake_minimum_required(VERSION 3.20)  # IN_LIST and the other modern if() forms in -P scripts
 set(required scene technique backend width height time_ms_median time_ms_min time_ms_max rmse_linear
     psnr_srgb ssim flip_mean flicker peak_mem_mb)
@@ -161,7 +163,12 @@ if(NOT first STREQUAL "# Current figures")
 endif()
 file(READ ${OUT}/run1/FIGURES.md figuresText)
 expect_matches("${figuresText}" "FIGURES.md lacks the command that wrote it or the goals"
-               "`ssam-bench --quick --out [^`]*--figures [^`]*FIGURES.md`" "\n## Goals\n")
+               "`ssam-bench --quick --out [^`]*--figures [^`]*FIGURES.md`" "\n## Goals\n"
+               "\\| forest wind: flicker ssam / alpha-test \\| [0-9.-]+x \\|"
+               "\\| forest dolly: popping \\(pop_lod\\) ssam / hashed \\| [0-9.]+x \\|"
+               "\n## In motion\n[^#]*\\| dolly \\| `a2c-sharp` \\| [0-9.-]+ \\|"
+               "\n## Along the dolly\n[^#]*\\| `hashed` \\| [0-9.]+ \\|"
+               "\n## SSAM and what engines ship\n.*\\| forest wind \\| ghosting converged \\|")
 foreach(scene IN LISTS scenes)
   string(FIND "${figuresText}" "### ${scene}, soft" at)
   if(at LESS 0)

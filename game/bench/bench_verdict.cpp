@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+#include "bench_verdict.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "bench_goals.hpp"
+#include "report_text.hpp"
+
+namespace bench {
+
+namespace {
+
+// One line of the table: a measure on a scene (or a motion), each technique's value.
+struct Line {
+    std::string where, measure;
+    const char* format;
+    bool magnitude;              // signed measures (flicker less the reference's): the lower |value| is better
+    std::vector<double> values;  // ssam, then kShippedTechniques; kMissing where not measured
+};
+
+std::vector<std::string> columns() {
+    std::vector<std::string> names{"ssam"};
+    for (const char* t : kShippedTechniques) names.push_back(t);
+    return names;
+}
+
+// The techniques sharing the lowest value of `line` (empty when fewer than two were measured).
+std::vector<std::string> lowest(const Line& line, const std::vector<std::string>& names) {
+    double best = kMissing;
+    int measuredCount = 0;
+    for (double v : line.values)
+        if (has(v)) {
+            ++measuredCount;
+            const double k = line.magnitude ? std::abs(v) : v;
+            if (!has(best) || k < best) best = k;
+        }
+    std::vector<std::string> out;
+    if (measuredCount < 2) return out;
+    for (std::size_t i = 0; i < line.values.size(); ++i)
+        if (has(line.values[i]) && (line.magnitude ? std::abs(line.values[i]) : line.values[i]) == best)
+            out.push_back(names[i]);
+    return out;
+}
+
+std::vector<Line> stillLines(const std::vector<BenchRow>& rows, const std::vector<std::string>& names) {
+    struct Measure {
+        const char* name;
+        double BenchRow::*field;
+        const char* format;
+    };
+    const Measure measures[] = {{"time ms", &BenchRow::timeMedianMs, "%.2f"},
+                                {"ꟻLIP, still frame", &BenchRow::flipMean, "%.4f"},
+                                {"ꟻLIP, pan converged", &BenchRow::temporalFlip, "%.4f"},
+                                {"ꟻLIP, pan worst frame", &BenchRow::temporalFlipWorst, "%.4f"},
+                                {"RMSE, pan converged", &BenchRow::temporalRmse, "%.5f"},
+                                {"flicker, pan", &BenchRow::flicker, "%.5f"},
+                                {"memory MiB", &BenchRow::peakMemMb, "%.1f"}};
+    const std::string backend = primaryBackend(rows);
+    std::vector<std::string> scenes;
+    for (const BenchRow& r : rows)
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    std::vector<Line> lines;
+    for (const std::string& scene : scenes)
+        for (const Measure& m : measures) {
+            Line line{scene, m.name, m.format, m.field == &BenchRow::flicker, {}};
+            for (const std::string& t : names) {
+                const BenchRow* r = findRow(rows, scene, t, backend);
+                line.values.push_back(r ? r->*m.field : kMissing);
+            }
+            if (std::any_of(line.values.begin(), line.values.end(), has)) lines.push_back(line);
+        }
+    return lines;
+}
+
+std::vector<Line> motionLines(const std::vector<MotionRow>& motion, const std::vector<std::string>& names) {
+    struct Measure {
+        const char* name;
+        double MotionRow::*field;
+        const char* format;
+    };
+    const Measure measures[] = {{"ꟻLIP converged", &MotionRow::flip, "%.4f"},
+                                {"ꟻLIP worst frame", &MotionRow::flipWorst, "%.4f"},
+                                {"ghosting converged", &MotionRow::ghost, "%.4f"},
+                                {"flicker", &MotionRow::flicker, "%.5f"}};
+    std::vector<std::string> places;  // "forest pan", ... in the run's order
+    for (const MotionRow& r : motion) {
+        const std::string where = r.scene + " " + r.motion;
+        if (std::find(places.begin(), places.end(), where) == places.end()) places.push_back(where);
+    }
+    std::vector<Line> lines;
+    for (const std::string& where : places)
+        for (const Measure& m : measures) {
+            Line line{where, m.name, m.format, m.field == &MotionRow::flicker, {}};
+            for (const std::string& t : names) {
+                auto r = std::find_if(motion.begin(), motion.end(), [&](const MotionRow& x) {
+                    return x.scene + " " + x.motion == where && x.technique == t;
+                });
+                line.values.push_back(r == motion.end() ? kMissing : (*r).*m.field);
+            }
+            if (std::any_of(line.values.begin(), line.values.end(), has)) lines.push_back(line);
+        }
+    return lines;
+}
+
+}  // namespace
+
+void writeWhatEnginesShip(std::ostream& out, const std::vector<BenchRow>& rows, const std::vector<MotionRow>& motion) {
+    const std::vector<std::string> names = columns();
+    out << "## SSAM and what engines ship\n\n"
+           "Technique `ssam` (its preset above) beside what engines ship for alpha-tested foliage at full "
+           "strength: `hashed+taa` (hashed alpha testing [Wyman & McGuire 2017] resolved by the temporal pass "
+           "with motion vectors [Karis 2014]), `alpha-test+taa` (alpha testing resolved by the same pass) and "
+           "`a2c-sharp` (4x alpha to coverage with the alpha sharpened by its screen-space derivative "
+           "[Golus 2017]), on the "
+        << primaryBackend(rows)
+        << " backend. The still frame, the pan, time and memory come from the comparison above; each motion "
+           "of the forest from the run in [In motion](#in-motion). The last column names the lowest (better); "
+           "flicker compares magnitudes (below the reference's is smoothing, not steadiness). Memory counts the "
+           "temporal pass's history and the multisampled targets.\n\n"
+           "| where | measure |";
+    for (const std::string& t : names) out << " " << t << " |";
+    out << " lowest |\n|---|---|";
+    for (std::size_t i = 0; i < names.size(); ++i) out << "---:|";
+    out << "---|\n";
+    std::vector<Line> lines = stillLines(rows, names);
+    for (Line& l : motionLines(motion, names)) lines.push_back(std::move(l));
+    // technique -> measure -> the places it is lowest at
+    std::map<std::string, std::map<std::string, std::vector<std::string>>> wins;
+    for (const Line& line : lines) {
+        out << "| " << line.where << " | " << line.measure << " |";
+        for (double v : line.values) out << " " << num(v, line.format) << " |";
+        const std::vector<std::string> best = lowest(line, names);
+        std::string bestText;
+        for (const std::string& t : best) bestText += (bestText.empty() ? "" : " = ") + t;
+        out << " " << bestText << " |\n";
+        for (const std::string& t : best) wins[t][line.measure].push_back(line.where);
+    }
+    if (lines.empty()) {
+        out << "| | not measured: the run lacked `ssam` and the shipped techniques |";
+        for (std::size_t i = 0; i <= names.size(); ++i) out << " |";
+        out << "\n";
+    }
+    out << "\nWhich is better at what, from the lines above:\n\n";
+    for (const std::string& t : names) {
+        out << "- `" << t << "` is lowest at ";
+        const auto at = wins.find(t);
+        if (at == wins.end()) {
+            out << "nothing measured here.\n";
+            continue;
+        }
+        bool first = true;
+        for (const auto& [measure, places] : at->second) {
+            out << (first ? "" : "; ") << measure << " (";
+            for (std::size_t i = 0; i < places.size(); ++i) out << (i ? ", " : "") << places[i];
+            out << ")";
+            first = false;
+        }
+        out << ".\n";
+    }
+    out << "\n";
+}
+
+}  // namespace bench
