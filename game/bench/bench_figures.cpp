@@ -123,12 +123,15 @@ void writeRivals(std::ostream& out, const std::vector<BenchRow>& rows, const Fig
         }
 }
 
+// The section's heading; false, and says so, when its run was not part of this one.
+bool openSection(std::ostream& out, const char* heading, bool ran) {
+    out << "## " << heading << "\n\n";
+    if (!ran) out << "Not part of this run: `ssam-bench --figures` runs it after the comparison.\n\n";
+    return ran;
+}
+
 void writeMotion(std::ostream& out, const std::vector<MotionRow>& motion) {
-    out << "## In motion\n\n";
-    if (motion.empty()) {
-        out << "Not part of this run: `ssam-bench --figures` runs it after the comparison.\n\n";
-        return;
-    }
+    if (!openSection(out, "In motion", !motion.empty())) return;
     out << "The forest through the three motions of `ssam-bench --motion` (game/docs/motion.md): the sideways "
            "pan, the dolly toward the trees and the wind under a still camera, "
         << motion.front().frames
@@ -146,11 +149,7 @@ void writeMotion(std::ostream& out, const std::vector<MotionRow>& motion) {
 }
 
 void writeDolly(std::ostream& out, const std::vector<DollyRow>& dolly) {
-    out << "## Along the dolly\n\n";
-    if (dolly.empty()) {
-        out << "Not part of this run: `ssam-bench --figures` runs it after the comparison.\n\n";
-        return;
-    }
+    if (!openSection(out, "Along the dolly", !dolly.empty())) return;
     out << "Popping at the levels of detail's changes (`ssam-bench --dolly`, game/docs/levels_of_detail.md): "
            "the forest's dolly, "
         << dolly.front().frames

@@ -45,29 +45,24 @@ std::vector<std::string> lowest(const Line& line, const std::vector<std::string>
     return out;
 }
 
-std::vector<Line> stillLines(const std::vector<BenchRow>& rows, const std::vector<std::string>& names) {
-    struct Measure {
-        const char* name;
-        double BenchRow::*field;
-        const char* format;
-    };
-    const Measure measures[] = {{"time ms", &BenchRow::timeMedianMs, "%.2f"},
-                                {"ꟻLIP, still frame", &BenchRow::flipMean, "%.4f"},
-                                {"ꟻLIP, pan converged", &BenchRow::temporalFlip, "%.4f"},
-                                {"ꟻLIP, pan worst frame", &BenchRow::temporalFlipWorst, "%.4f"},
-                                {"RMSE, pan converged", &BenchRow::temporalRmse, "%.5f"},
-                                {"flicker, pan", &BenchRow::flicker, "%.5f"},
-                                {"memory MiB", &BenchRow::peakMemMb, "%.1f"}};
-    const std::string backend = primaryBackend(rows);
-    std::vector<std::string> scenes;
-    for (const BenchRow& r : rows)
-        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+template <class Row>
+struct Measure {
+    const char* name;
+    double Row::*field;
+    const char* format;
+};
+
+// One line per place and measure, with each technique's value where `find(place, technique)`
+// gives a row; lines no technique measured are left out.
+template <class Row, class Find>
+std::vector<Line> linesOf(const std::vector<std::string>& places, const std::vector<Measure<Row>>& measures,
+                          const std::vector<std::string>& names, double Row::*signedField, Find find) {
     std::vector<Line> lines;
-    for (const std::string& scene : scenes)
-        for (const Measure& m : measures) {
-            Line line{scene, m.name, m.format, m.field == &BenchRow::flicker, {}};
+    for (const std::string& where : places)
+        for (const Measure<Row>& m : measures) {
+            Line line{where, m.name, m.format, m.field == signedField, {}};
             for (const std::string& t : names) {
-                const BenchRow* r = findRow(rows, scene, t, backend);
+                const Row* r = find(where, t);
                 line.values.push_back(r ? r->*m.field : kMissing);
             }
             if (std::any_of(line.values.begin(), line.values.end(), has)) lines.push_back(line);
@@ -75,34 +70,40 @@ std::vector<Line> stillLines(const std::vector<BenchRow>& rows, const std::vecto
     return lines;
 }
 
+// `where(row)` of each row, once each, in the rows' order.
+template <class Row, class Where>
+std::vector<std::string> placesOf(const std::vector<Row>& rows, Where where) {
+    std::vector<std::string> places;
+    for (const Row& r : rows)
+        if (std::find(places.begin(), places.end(), where(r)) == places.end()) places.push_back(where(r));
+    return places;
+}
+
+std::vector<Line> stillLines(const std::vector<BenchRow>& rows, const std::vector<std::string>& names) {
+    const std::vector<Measure<BenchRow>> measures = {{"time ms", &BenchRow::timeMedianMs, "%.2f"},
+                                                     {"ꟻLIP, still frame", &BenchRow::flipMean, "%.4f"},
+                                                     {"ꟻLIP, pan converged", &BenchRow::temporalFlip, "%.4f"},
+                                                     {"ꟻLIP, pan worst frame", &BenchRow::temporalFlipWorst, "%.4f"},
+                                                     {"RMSE, pan converged", &BenchRow::temporalRmse, "%.5f"},
+                                                     {"flicker, pan", &BenchRow::flicker, "%.5f"},
+                                                     {"memory MiB", &BenchRow::peakMemMb, "%.1f"}};
+    const std::string backend = primaryBackend(rows);
+    return linesOf(placesOf(rows, [](const BenchRow& r) { return r.scene; }), measures, names, &BenchRow::flicker,
+                   [&](const std::string& scene, const std::string& t) { return findRow(rows, scene, t, backend); });
+}
+
 std::vector<Line> motionLines(const std::vector<MotionRow>& motion, const std::vector<std::string>& names) {
-    struct Measure {
-        const char* name;
-        double MotionRow::*field;
-        const char* format;
-    };
-    const Measure measures[] = {{"ꟻLIP converged", &MotionRow::flip, "%.4f"},
-                                {"ꟻLIP worst frame", &MotionRow::flipWorst, "%.4f"},
-                                {"ghosting converged", &MotionRow::ghost, "%.4f"},
-                                {"flicker", &MotionRow::flicker, "%.5f"}};
-    std::vector<std::string> places;  // "forest pan", ... in the run's order
-    for (const MotionRow& r : motion) {
-        const std::string where = r.scene + " " + r.motion;
-        if (std::find(places.begin(), places.end(), where) == places.end()) places.push_back(where);
-    }
-    std::vector<Line> lines;
-    for (const std::string& where : places)
-        for (const Measure& m : measures) {
-            Line line{where, m.name, m.format, m.field == &MotionRow::flicker, {}};
-            for (const std::string& t : names) {
-                auto r = std::find_if(motion.begin(), motion.end(), [&](const MotionRow& x) {
-                    return x.scene + " " + x.motion == where && x.technique == t;
-                });
-                line.values.push_back(r == motion.end() ? kMissing : (*r).*m.field);
-            }
-            if (std::any_of(line.values.begin(), line.values.end(), has)) lines.push_back(line);
-        }
-    return lines;
+    const std::vector<Measure<MotionRow>> measures = {{"ꟻLIP converged", &MotionRow::flip, "%.4f"},
+                                                      {"ꟻLIP worst frame", &MotionRow::flipWorst, "%.4f"},
+                                                      {"ghosting converged", &MotionRow::ghost, "%.4f"},
+                                                      {"flicker", &MotionRow::flicker, "%.5f"}};
+    auto where = [](const MotionRow& r) { return r.scene + " " + r.motion; };
+    return linesOf(placesOf(motion, where), measures, names, &MotionRow::flicker,
+                   [&](const std::string& place, const std::string& t) -> const MotionRow* {
+                       for (const MotionRow& r : motion)
+                           if (where(r) == place && r.technique == t) return &r;
+                       return nullptr;
+                   });
 }
 
 }  // namespace
