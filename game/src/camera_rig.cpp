@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/core/usage_error.hpp"
 #include "engine/render/projection.hpp"
 #include "engine/scene/transform.hpp"
 
@@ -83,6 +84,32 @@ CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float asp
     v.projection = engine::render::perspectiveReverseZ(glm::radians(60.0f), aspect, kNearPlane, kFarPlane);
     v.viewProj = v.projection * v.view;
     return v;
+}
+
+CameraMode parseCamera(const std::string& name) {
+    if (name == "chase") return CameraMode::Chase;
+    if (name == "pan") return CameraMode::Pan;
+    if (name == "free") return CameraMode::Free;
+    if (name == "sky") return CameraMode::Sky;
+    throw engine::UsageError("--camera '" + name + "': expected chase, pan, free or sky");
+}
+
+const char* cameraName(CameraMode mode) {
+    switch (mode) {
+        case CameraMode::Chase: return "chase";
+        case CameraMode::Pan: return "pan";
+        case CameraMode::Free: return "free";
+        case CameraMode::Sky: return "sky";
+    }
+    return "?";
+}
+
+CameraMode nextCamera(CameraMode mode) {
+    switch (mode) {
+        case CameraMode::Chase: return CameraMode::Pan;
+        case CameraMode::Pan: return CameraMode::Free;
+        default: return CameraMode::Chase;
+    }
 }
 
 }  // namespace racer

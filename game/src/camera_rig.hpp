@@ -5,6 +5,8 @@
 // overview of the track, which is all a headless run sees; the window flies it, keys in
 // window_keys.hpp) and sky (straight up from above the start line: nothing but the sky, the
 // no-foliage case the capture tests need). Projection: reverse-Z, 0.1 m to 30 km ([Hathaway 2010] §3.1).
+#include <string>
+
 #include <glm/glm.hpp>
 
 #include "racing_scene.hpp"
@@ -57,5 +59,11 @@ inline constexpr float kNearPlane = 0.1f;
 inline constexpr float kFarPlane = 30000.0f;
 
 CameraView cameraView(CameraMode mode, RacingScene& scene, float time, float aspect, const FreeCamera& free);
+
+// "chase", "pan", "free", "sky"; throws engine::UsageError quoting --camera otherwise.
+CameraMode parseCamera(const std::string& name);
+const char* cameraName(CameraMode mode);
+// The C key's order: chase, pan, free, then chase again (sky only by flag).
+CameraMode nextCamera(CameraMode mode);
 
 }  // namespace racer

@@ -173,24 +173,6 @@ FrameSize parseFrameSize(const std::string& size) {
     return s;
 }
 
-CameraMode parseCamera(const std::string& name) {
-    if (name == "chase") return CameraMode::Chase;
-    if (name == "pan") return CameraMode::Pan;
-    if (name == "free") return CameraMode::Free;
-    if (name == "sky") return CameraMode::Sky;
-    throw engine::UsageError("--camera '" + name + "': expected chase, pan, free or sky");
-}
-
-const char* cameraName(CameraMode mode) {
-    switch (mode) {
-        case CameraMode::Chase: return "chase";
-        case CameraMode::Pan: return "pan";
-        case CameraMode::Free: return "free";
-        case CameraMode::Sky: return "sky";
-    }
-    return "?";
-}
-
 ComparedPair parseCompare(const std::string& pair) {
     const std::size_t comma = pair.find(',');
     auto bad = [&](const std::string& why) {

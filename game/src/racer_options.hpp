@@ -70,7 +70,6 @@ struct FrameSize {
 // "WIDTHxHEIGHT", each 1..16384; throws engine::UsageError quoting the flag otherwise.
 FrameSize parseFrameSize(const std::string& size);
 
-CameraMode parseCamera(const std::string& name);                          // chase, pan, free
 transparency::TechniqueKind parseTechniqueName(const std::string& name);  // allTechniques()' names
 
 // --compare's "A,B": two of allTechniques()' names (they may be the same); throws
@@ -79,6 +78,5 @@ struct ComparedPair {
     transparency::TechniqueKind left, right;
 };
 ComparedPair parseCompare(const std::string& pair);
-const char* cameraName(CameraMode mode);
 
 }  // namespace racer

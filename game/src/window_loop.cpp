@@ -141,14 +141,6 @@ void stepTechnique(FrameRenderer& frame, int step) {
         if (trySetTechnique(frame, all[std::size_t(((current + step * k) % n + n) % n)])) return;
 }
 
-CameraMode nextCamera(CameraMode mode) {
-    switch (mode) {
-        case CameraMode::Chase: return CameraMode::Pan;
-        case CameraMode::Pan: return CameraMode::Free;
-        default: return CameraMode::Chase;
-    }
-}
-
 void printPose(const FreeCamera& c) {
     std::printf("racer: free camera at (%.2f, %.2f, %.2f), yaw %.1f deg, pitch %.1f deg\n", c.position.x, c.position.y,
                 c.position.z, glm::degrees(c.yaw), glm::degrees(c.pitch));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The racer as a web page (make web): the racing scene, its chase camera and living scene, drawn
+// The racer as a web page (make web): the racing scene, its cameras and living scene, drawn
 // by the GLES driver into the page's WebGL2 canvas, one frame per browser animation frame
 // (emscripten_set_main_loop: a page must not block). The same racer sources as the native demo;
 // what the page adds is its context, its keys (DOM events read as the GLFW codes window_keys.hpp
@@ -93,6 +93,7 @@ struct PageSettings {
     int frames = 0;        // 0: run until the page closes
     double fixedDt = 0.0;  // 0: the browser clock's step
     bool hud = true;
+    racer::CameraMode camera = racer::CameraMode::Chase;
 };
 
 std::optional<TechniqueKind> techniqueNamed(const std::string& name) {
@@ -120,6 +121,8 @@ PageSettings parseSettings(int argc, char** argv) {
                 throw engine::Error("racer page: size '" + value + "' is not WIDTHxHEIGHT within 16..4096");
         } else if (name == "--hud") {
             s.hud = value != "0";
+        } else if (name == "--camera") {
+            s.camera = racer::parseCamera(value);
         } else {
             throw engine::Error("racer page: unknown argument '" + name + "'");
         }
@@ -145,7 +148,8 @@ public:
           device_(engine::render::gles::createGlesBackend({.context = context_})),
           racing_(*device_, racer::SceneOptions{"/content", 1, {}, true}),
           frame_(*device_, racing_.library(), rendererOptions(settings, racing_)),
-          living_(racing_.registry(), racing_.library(), livingOptions(racing_)), hudShown_(settings.hud) {
+          living_(racing_.registry(), racing_.library(), livingOptions(racing_)), hudShown_(settings.hud),
+          camera_(settings.camera) {
         frame_.setLivingScene(&living_);
         std::printf("racer page: %s, %dx%d, %s\n", transparency::techniqueName(frame_.technique()), settings.width,
                     settings.height, device_->driver().describe().c_str());
@@ -163,7 +167,8 @@ public:
             case racer::WindowAction::ToggleCompare: toggleCompare(); break;
             case racer::WindowAction::TogglePause: paused_ = !paused_; break;
             case racer::WindowAction::Autopilot: autopilot_ = true; break;
-            default: break;  // cameras other than the chase one and quitting are the native window's
+            case racer::WindowAction::NextCamera: camera_ = racer::nextCamera(camera_); break;
+            default: break;  // quitting and the free camera's flight are the native window's
         }
     }
     void keyUp(int key) { held_.erase(key); }
@@ -209,8 +214,7 @@ public:
         if (drive.any || racing_.registry().get<racer::Car>(racing_.car()).driven) racing_.takeWheel(drive.controls);
         racing_.update(float(dt));
         const float aspect = float(settings_.width) / float(settings_.height);
-        const racer::CameraView view =
-            racer::cameraView(racer::CameraMode::Chase, racing_, float(time_), aspect, racer::FreeCamera{});
+        const racer::CameraView view = racer::cameraView(camera_, racing_, float(time_), aspect, racer::FreeCamera{});
         engine::scene::selectLevelsOfDetail(
             racing_.registry(), racing_.library(),
             {view.eye, engine::scene::focalPixels(view.projection, frame_.height()), 0.1f, racer::kLodCrossfade});
@@ -292,6 +296,7 @@ private:
     std::set<int> held_;
     std::optional<TechniqueKind> fallback_;  // the technique before a switch that has not drawn yet
     bool hudShown_ = true, paused_ = false, autopilot_ = false;
+    racer::CameraMode camera_ = racer::CameraMode::Chase;  // C cycles chase, pan, free (the free camera at its start)
     double time_ = 0.0, last_ = -1.0, lastMs_ = -1.0;
     int frames_ = 0;
     std::vector<engine::render::PassTiming> lastPasses_;

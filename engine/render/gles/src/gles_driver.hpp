@@ -88,6 +88,8 @@ private:
 
     // gles_resources.cpp
     int maxSamplesFor(GLenum internal);
+    // Whether occlusion query `id` counted any sample (gles_resources.cpp says when it waits).
+    bool samplesPassed(GLuint id);
     GlesProgram compile(std::shared_ptr<const ProgramDesc> desc);
     void upload(const GlTexture& t, const TextureData& data);
     void fill(const GlTexture& t, const glm::vec4& value);  // every texel of level 0 (or all levels: zero)

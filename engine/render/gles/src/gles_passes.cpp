@@ -38,14 +38,13 @@ void GlesDriver::beginPass(const DriverPass& pass) {
     if (pass.depth != kNoNative && pass.desc->depth.load == LoadOp::Clear)
         fill(textures_[pass.depth], glm::vec4(pass.desc->depth.clear));
     checkGl(what + ": clearing");
-    // ES 3.0 has no conditional rendering: the query's result is waited for here (as
-    // GL_QUERY_WAIT would on the GPU) and the pass's draws are skipped when it counted nothing.
+    // ES 3.0 has no conditional rendering: the query's result is read here (samplesPassed:
+    // waited for natively, as GL_QUERY_WAIT would on the GPU) and the pass's draws are skipped
+    // when it counted nothing.
     passSkipped_ = false;
     if (pass.drawOnlyIfSamplesIn != kNoNative) {
         const GLuint condition = queries_[pass.drawOnlyIfSamplesIn].id;
-        GLuint any = 1;
-        if (condition) glGetQueryObjectuiv(condition, GL_QUERY_RESULT, &any);
-        passSkipped_ = any == 0;
+        passSkipped_ = condition && !samplesPassed(condition);
     }
     if (pass.countSamplesInto != kNoNative) {
         GlQuery& q = queries_[pass.countSamplesInto];

@@ -257,8 +257,23 @@ void GlesDriver::destroyQuery(NativeId h) {
 
 bool GlesDriver::anySamplesPassed(NativeId h) {
     makeCurrent();
+    return queries_[h].id && samplesPassed(queries_[h].id);
+}
+
+// Natively the result is waited for, as GL_QUERY_WAIT would on the GPU: the same answer as the
+// other drivers. A browser cannot wait: WebGL 2.0 (§3.7.12, getQueryParameter) makes no result
+// available before control returns to the browser, and asking for it earlier answers nothing.
+// There an unknown result counts as samples passed, as GL_QUERY_NO_WAIT lets a GPU render
+// (OpenGL 4.6 §10.9 "Conditional Rendering"): the light shafts' glow is drawn whenever the sun's
+// visibility is not yet known, where natively it is skipped behind a hidden sun.
+bool GlesDriver::samplesPassed(GLuint id) {
+#if defined(__EMSCRIPTEN__)
+    GLuint available = 0;
+    glGetQueryObjectuiv(id, GL_QUERY_RESULT_AVAILABLE, &available);
+    if (!available) return true;
+#endif
     GLuint any = 0;
-    glGetQueryObjectuiv(queries_[h].id, GL_QUERY_RESULT, &any);
+    glGetQueryObjectuiv(id, GL_QUERY_RESULT, &any);
     return any != 0;
 }
 
