@@ -138,7 +138,8 @@ void writeMotion(std::ostream& out, const std::vector<MotionRow>& motion) {
         << " measured frames each, every frame against that frame's reference over the foliage pixels. "
            "Converged: the median over the last half of the frames; worst: the worst frame; ghosting: the "
            "error on the pixels whose surface moved; flicker: the change between frames less the "
-           "reference's. The temporal techniques reproject by motion vectors.\n\n"
+           "reference's. The temporal techniques reproject by motion vectors; the levels of detail are the "
+           "comparison's (the command above).\n\n"
            "| motion | technique | flicker | ꟻLIP converged | ꟻLIP worst | RMSE converged | ghosting converged | "
            "ghosting worst |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
     for (const MotionRow& r : motion)
