@@ -10,6 +10,7 @@
 #include "engine/capture/readback_image.hpp"
 #include "engine/render/devices/create_device.hpp"
 #include "engine/render/frame_targets.hpp"
+#include "report_text.hpp"
 
 namespace bench {
 
@@ -163,13 +164,10 @@ std::vector<DollyRow> runDolly(const BenchOptions& o, int frames, float crossfad
 void writeDollyCsv(std::ostream& out, const std::vector<DollyRow>& rows) {
     out << "scene,technique,backend,frames,step_m,crossfade,pop_flip,pop_frame,pop_lod_flip,pop_lod_frame,"
            "lod_flip_mean,lod_flip_worst,lod_frame_flip_mean\n";
-    char line[512];
-    for (const DollyRow& r : rows) {
-        std::snprintf(line, sizeof line, "%s,%s,%s,%d,%.2f,%.2f,%.5f,%d,%.5f,%d,%.5f,%.5f,%.5f\n", r.scene.c_str(),
-                      r.technique.c_str(), r.backend.c_str(), r.frames, double(kDollyStep), double(r.crossfade), r.pop,
-                      r.popFrame, r.popLod, r.popLodFrame, r.lodFlipMean, r.lodFlipWorst, r.lodFrameFlipMean);
-        out << line;
-    }
+    for (const DollyRow& r : rows)
+        out << formatted("%s,%s,%s,%d,%.2f,%.2f,%.5f,%d,%.5f,%d,%.5f,%.5f,%.5f\n", r.scene.c_str(), r.technique.c_str(),
+                         r.backend.c_str(), r.frames, double(kDollyStep), double(r.crossfade), r.pop, r.popFrame,
+                         r.popLod, r.popLodFrame, r.lodFlipMean, r.lodFlipWorst, r.lodFrameFlipMean);
 }
 
 void printDollyTable(const std::vector<DollyRow>& rows) {

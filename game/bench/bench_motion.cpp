@@ -13,6 +13,7 @@
 #include "engine/render/devices/create_device.hpp"
 #include "engine/render/frame_targets.hpp"
 #include "foliage_errors.hpp"
+#include "report_text.hpp"
 #if SSAM_BENCH_WIND
 #include "wind/wind.hpp"
 #include "wind/wind_system.hpp"
@@ -240,14 +241,10 @@ std::vector<MotionRow> runMotion(const BenchOptions& o, const std::vector<Motion
 void writeMotionCsv(std::ostream& out, const std::vector<MotionRow>& rows) {
     out << "scene,motion,technique,backend,motion_vectors,frames,flicker,flip,flip_worst,rmse,rmse_worst,"
            "ghost_frames,ghost,ghost_worst\n";
-    char line[512];
-    for (const MotionRow& r : rows) {
-        std::snprintf(line, sizeof line, "%s,%s,%s,%s,%s,%d,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.5f,%.5f\n", r.scene.c_str(),
-                      r.motion.c_str(), r.technique.c_str(), r.backend.c_str(), r.motionVectors ? "on" : "off",
-                      r.frames, r.flicker, r.flip, r.flipWorst, r.rmse, r.rmseWorst, r.ghostFrames, r.ghost,
-                      r.ghostWorst);
-        out << line;
-    }
+    for (const MotionRow& r : rows)
+        out << formatted("%s,%s,%s,%s,%s,%d,%.5f,%.5f,%.5f,%.5f,%.5f,%d,%.5f,%.5f\n", r.scene.c_str(), r.motion.c_str(),
+                         r.technique.c_str(), r.backend.c_str(), r.motionVectors ? "on" : "off", r.frames, r.flicker,
+                         r.flip, r.flipWorst, r.rmse, r.rmseWorst, r.ghostFrames, r.ghost, r.ghostWorst);
 }
 
 void printMotionTable(const std::vector<MotionRow>& rows) {

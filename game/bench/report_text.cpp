@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "report_text.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -26,6 +28,18 @@ std::string num(double v, const char* format) {
     char buf[64];
     std::snprintf(buf, sizeof buf, format, v);
     return buf;
+}
+
+std::string formatted(const char* format, ...) {
+    std::va_list args, again;
+    va_start(args, format);
+    va_copy(again, args);
+    const int size = std::vsnprintf(nullptr, 0, format, args);
+    va_end(args);
+    std::string out(std::size_t(std::max(size, 0)), '\0');
+    if (size > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+    va_end(again);
+    return out;
 }
 
 std::string csvField(const std::string& s) {

@@ -20,6 +20,9 @@ void stageReport(engine::PendingFiles& files, const std::filesystem::path& path,
 // The default prints 9 significant digits: enough to show that two runs are identical.
 std::string num(double v, const char* format = "%.9g");
 
+// printf's `format` of the arguments, however long (a CSV line of a report).
+[[gnu::format(printf, 1, 2)]] std::string formatted(const char* format, ...);
+
 // A CSV field, quoted when it holds a comma, a quote or a newline.
 std::string csvField(const std::string& s);
 
