@@ -147,10 +147,10 @@ TEST(SsamGlEs, AnEs30ContextRefusesFloatTargetsAndRendersTheRgba8Mask) {
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, kGlSize, kGlSize);
     ssam::gl::FrameDesc frame = targets.frame();
     frame.colorTexture = floatColor;
-    EXPECT_EQ(ssam.render(frame, [&](const ssam::gl::FoliageProgram&) { foliage.draw(); }),
-              Status::UnsupportedFeature);
-    EXPECT_TRUE(says(ssam, "is GL_RGBA16F, which this OpenGL ES context cannot render and blend into without "
-                           "GL_EXT_color_buffer_float"))
+    EXPECT_EQ(ssam.render(frame, [&](const ssam::gl::FoliageProgram&) { foliage.draw(); }), Status::UnsupportedFeature);
+    EXPECT_TRUE(says(ssam,
+                     "is GL_RGBA16F, which this OpenGL ES context cannot render and blend into without "
+                     "GL_EXT_color_buffer_float"))
         << ssam.lastMessage();
     glDeleteTextures(1, &floatColor);
     EXPECT_EQ(ssam.release(), Status::Ok);

@@ -107,8 +107,9 @@ struct AttributeLocations {
 };
 
 // The paper's knobs (ssam/core/settings.hpp), the same struct for every SSAM. Rg16f needs GL 4.0 or
-// GL_ARB_draw_buffers_blend (two mask targets blended differently). depthMaskThreshold > 0: a copy
-// of the host's depth and one full-screen pass (ssam/README.md, "Later transparent passes").
+// GL_ARB_draw_buffers_blend (two mask targets blended differently; on ES: Api below).
+// depthMaskThreshold > 0: a copy of the host's depth and one full-screen pass (ssam/README.md,
+// "Later transparent passes").
 using ssam::DepthTest;
 using ssam::MaskPrecision;
 using ssam::Settings;
