@@ -113,9 +113,16 @@ TextureInfo inspectRenderbuffer(const GlFunctions& gl, unsigned int renderbuffer
     gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_INTERNAL_FORMAT, &info.internalFormat);
     gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
     gl.BindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(previous));
+    // On ES the host cannot do the paper's closest-sample downsample (§3.5.1) either: ES 3.0 reads
+    // no multisampled depth per sample; its resolve blit keeps one sample of the implementation's choice.
     if (samples > 0)
-        throw Failure(Status::InvalidTexture, name + " is multisampled (" + std::to_string(samples) +
-                                                  " samples): resolve it into a single-sample depth first");
+        throw Failure(Status::InvalidTexture,
+                      name + " is multisampled (" + std::to_string(samples) +
+                          " samples): resolve it into a single-sample depth first" +
+                          (gl.es ? " (OpenGL ES 3.0 cannot read a multisampled depth per sample, so the closest-"
+                                   "sample downsample of [Hathaway 2010] 3.5.1 is not possible there: resolve "
+                                   "with glBlitFramebuffer, which keeps one sample)"
+                                 : ""));
     return info;
 }
 

@@ -77,6 +77,28 @@ TEST(SsamGlEs, AContextOfTheOtherApiIsRefused) {
     EXPECT_TRUE(says(ssam, "pass Api::Gles30")) << ssam.lastMessage();
 }
 
+// A multisampled depth: refused on ES too, saying why the paper's closest-sample downsample is
+// not possible there (ssam/docs/gles.md "What is refused").
+TEST(SsamGlEs, AMultisampledDepthIsRefusedSayingWhy) {
+    OwnEglContext es(OwnContextKind::Es30);
+    if (!es.why.empty()) GTEST_SKIP() << "no OpenGL ES context: " << es.why;
+    ssam::gl::ScreenSpaceAlphaMaskGl ssam;
+    ASSERT_EQ(ssam.initialize(eglGetProcAddress, {}, {}, Api::Gles30), Status::Ok) << ssam.lastMessage();
+    RawGlTargets targets(false, GL_DEPTH_COMPONENT32F);
+    GLuint multisampled = 0;
+    glGenRenderbuffers(1, &multisampled);
+    glBindRenderbuffer(GL_RENDERBUFFER, multisampled);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH_COMPONENT24, kGlSize, kGlSize);
+    ssam::gl::FrameDesc frame = targets.frame();
+    frame.depthTexture = 0;
+    frame.depthRenderbuffer = multisampled;
+    EXPECT_EQ(ssam.render(frame, [](const ssam::gl::FoliageProgram&) {}), Status::InvalidTexture);
+    EXPECT_TRUE(says(ssam, "is multisampled (4 samples)")) << ssam.lastMessage();
+    EXPECT_TRUE(says(ssam, "closest-sample downsample of [Hathaway 2010] 3.5.1 is not possible there"))
+        << ssam.lastMessage();
+    glDeleteRenderbuffers(1, &multisampled);
+}
+
 // Mesa's ES context as an ES 3.0 / WebGL2 context without extensions: GL_VERSION and
 // GL_MINOR_VERSION say 3.0, GL_NUM_EXTENSIONS 0 (so no GL_EXT_color_buffer_float, no
 // OES_draw_buffers_indexed); every other function is Mesa's.
