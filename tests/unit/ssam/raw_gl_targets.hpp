@@ -23,6 +23,19 @@ namespace ssam::testing {
 // glClearDepth on desktop GL; OpenGL ES has only the float form.
 inline void clearDepthTo(float depth) { epoxy_is_desktop_gl() ? glClearDepth(depth) : glClearDepthf(depth); }
 
+// A kGlSize² colour texture of `format` (immutable storage) as colour 0 of a new framebuffer
+// (`*fbo`), which is left bound.
+inline GLuint newColorTarget(GLenum format, GLuint* fbo) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexStorage2D(GL_TEXTURE_2D, 1, format, kGlSize, kGlSize);
+    glGenFramebuffers(1, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    return texture;
+}
+
 // A kGlSize² RGBA8 colour texture cleared to kOpaqueCode, and a depth of `depthFormat` cleared to
 // the far plane on the left half and to kOccluderDepth (the host's occluder) on the right half.
 struct RawGlTargets {
@@ -32,12 +45,7 @@ struct RawGlTargets {
     bool renderbuffer;
 
     RawGlTargets(bool depthInRenderbuffer, GLenum depthFormat) : renderbuffer(depthInRenderbuffer) {
-        glGenTextures(1, &color);
-        glBindTexture(GL_TEXTURE_2D, color);
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kGlSize, kGlSize);
-        glGenFramebuffers(1, &fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+        color = newColorTarget(GL_RGBA8, &fbo);
         const GLenum attachment = (depthFormat == GL_DEPTH24_STENCIL8 || depthFormat == GL_DEPTH32F_STENCIL8)
                                       ? GL_DEPTH_STENCIL_ATTACHMENT
                                       : GL_DEPTH_ATTACHMENT;

@@ -298,13 +298,8 @@ std::vector<float> readEsDepth(GLuint depth) {
     GLint linked = 0;
     glGetProgramiv(program, GL_LINK_STATUS, &linked);
     EXPECT_TRUE(linked) << "the ES depth copy does not link";
-    GLuint copy = 0, fbo = 0, vao = 0;
-    glGenTextures(1, &copy);
-    glBindTexture(GL_TEXTURE_2D, copy);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, kSize, kSize);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, copy, 0);
+    GLuint fbo = 0, vao = 0;
+    const GLuint copy = ssam::testing::newColorTarget(GL_RGBA32F, &fbo);
     glViewport(0, 0, kSize, kSize);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
