@@ -48,6 +48,12 @@ EglPlatform parseEgl(const std::string& text) {
     throw UsageError("--egl '" + text + "': expected auto, device or surfaceless");
 }
 
+ContextApi parseApi(const std::string& text) {
+    if (text == "gl") return ContextApi::Gl;
+    if (text == "gles") return ContextApi::Gles;
+    throw UsageError("--api '" + text + "': expected gl or gles");
+}
+
 void requirePng(const char* flag, const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -73,6 +79,7 @@ Arguments parseArguments(const Tool& tool, int argc, char** argv) {
         else if (arg == "--out") args.out = value(), args.headless = true, headlessFlag = "--out";
         else if (arg == "--mask") args.mask = value(), args.headless = true, headlessFlag = "--mask";
         else if (arg == "--egl") args.egl = parseEgl(value()), args.headless = true, headlessFlag = "--egl";
+        else if (arg == "--api") args.api = parseApi(value());
         else if (arg == "--mist") args.mist = parseMist(value());
         else if (arg == "--repeat")
             args.repeat = int(parseNumber<long>("--repeat", value(), 1, 100000, "a whole number in 1..100000")),
@@ -101,11 +108,13 @@ std::string usage(const Tool& tool) {
     return "usage: " + name + " [--headless] [--out PATH.png] [--mask PATH.png]" +
            (tool.bendsInTheWind ? " [--wind AMPLITUDE]" : "") +
            " [--mist after|before] [--depth-threshold T] [--precision P] [--repeat N] [--egl PLATFORM]"
-           " [--frames N]\n"
+           " [--api gl|gles] [--frames N]\n"
            "  --headless    render one frame offscreen (EGL, no window) and write it (the default without a display)\n"
            "  --egl P       the headless context's EGL platform: device (EGL_EXT_platform_device: NVIDIA's and\n"
            "                AMD's headless EGL, Mesa's devices), surfaceless (Mesa), or auto (default: device,\n"
            "                then surfaceless); implies --headless\n"
+           "  --api A       the host's context: gl (OpenGL 3.3 core, default) or gles (OpenGL ES 3.0, what\n"
+           "                WebGL2 is: ssam::gl::Api::Gles30, the host's shaders as GLSL ES 3.00)\n"
            "  --out PATH    the PNG to write (implies --headless; default " +
            name +
            ".png); its directory\n"
@@ -126,7 +135,8 @@ std::string usage(const Tool& tool) {
            "  --repeat N    headless: draw the frame N times and print the median time of SSAM's passes\n"
            "                (glFinish before and after; implies --headless)\n"
            "  --frames N    in a window: close after N frames (default: when the window is closed)\n"
-           "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 context; messages are\n"
+           "Exit status: 0 done, 1 the work failed, 2 usage error, 77 no OpenGL 3.3 (--api gles: ES 3.0)\n"
+           "context; messages are\n"
            "'" +
            name + ": error: ...' on stderr.\n";
 }

@@ -3,7 +3,7 @@
 // The examples' command line, keeping the project's command-line contract (game/README.md
 // "Command-line contract") without the engine's helper, since the examples build against an
 // installed ssam alone: exit 0 done, 1 the work failed, 2 a usage error, each message
-// "<tool>: error: ..." on stderr -- and 77 when no OpenGL 3.3 core context can be made, which
+// "<tool>: error: ..." on stderr -- and 77 when no OpenGL 3.3 core (or ES 3.0) context can be made, which
 // the tests report as skipped.
 #include <stdexcept>
 #include <string>
@@ -25,9 +25,13 @@ struct Tool {
 // device platform first, then the surfaceless one.
 enum class EglPlatform { Auto, Device, Surfaceless };
 
+// The host's context: OpenGL 3.3 core, or OpenGL ES 3.0 (what WebGL2 is; ssam::gl::Api::Gles30).
+enum class ContextApi { Gl, Gles };
+
 struct Arguments {
     bool headless = false;
     EglPlatform egl = EglPlatform::Auto;  // --egl, headless only
+    ContextApi api = ContextApi::Gl;      // --api
     std::string out;                      // headless only; default <tool>.png
     std::string mask;                     // headless only; "" = not written
     int frames = 0;                       // window only; 0: until closed

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "png_writer.hpp"
@@ -30,21 +31,25 @@ struct NoContext : std::runtime_error {
 // ---- Contexts ---------------------------------------------------------------------------
 
 // A context without a window or a config (EGL_KHR_no_config_context, surfaceless make-current) on
-// `display`, or "" and a reason.
-EGLContext createContext(EGLDisplay display, std::string& why) {
+// `display`, or "" and a reason: OpenGL 3.3 core, or OpenGL ES 3.0 (EGL_OPENGL_ES_API; EGL 1.5
+// §3.7.1 gives the newest ES version compatible with 3.0, e.g. 3.2 on Mesa).
+EGLContext createContext(EGLDisplay display, ContextApi api, std::string& why) {
     if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
         why = "the EGL display does not initialise";
         return EGL_NO_CONTEXT;
     }
-    if (!eglBindAPI(EGL_OPENGL_API)) {
-        why = "eglBindAPI(EGL_OPENGL_API) failed";
+    const bool es = api == ContextApi::Gles;
+    if (!eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) {
+        why = es ? "eglBindAPI(EGL_OPENGL_ES_API) failed" : "eglBindAPI(EGL_OPENGL_API) failed";
         return EGL_NO_CONTEXT;
     }
-    const EGLint attributes[] = {
+    const EGLint desktop[] = {
         EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    const EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-    if (context == EGL_NO_CONTEXT) why = "no OpenGL 3.3 core context without a config";
+    const EGLint gles[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
+    const EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, es ? gles : desktop);
+    if (context == EGL_NO_CONTEXT)
+        why = es ? "no OpenGL ES 3.0 context without a config" : "no OpenGL 3.3 core context without a config";
     else if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         why = "eglMakeCurrent without a surface failed";
         eglDestroyContext(display, context);
@@ -59,7 +64,7 @@ struct EglHeadless {
     EGLDisplay display = EGL_NO_DISPLAY;
     EGLContext context = EGL_NO_CONTEXT;
     std::string description;
-    explicit EglHeadless(EglPlatform platform) {
+    EglHeadless(EglPlatform platform, ContextApi api) : api_(api) {
         // libepoxy aborts when libEGL cannot be loaded: check first.
         if (!dlopen("libEGL.so.1", RTLD_LAZY | RTLD_LOCAL)) throw NoContext("libEGL.so.1 cannot be loaded");
         const char* extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -79,6 +84,7 @@ struct EglHeadless {
     EglHeadless& operator=(const EglHeadless&) = delete;
 
 private:
+    ContextApi api_;
     bool onDevice(const std::string& client, std::string& why) {
         if (client.find("EGL_EXT_platform_device") == std::string::npos ||
             client.find("EGL_EXT_device_enumeration") == std::string::npos) {
@@ -93,7 +99,7 @@ private:
         }
         for (EGLint i = 0; i < count && context == EGL_NO_CONTEXT; ++i) {
             display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-            context = createContext(display, why);
+            context = createContext(display, api_, why);
             if (context == EGL_NO_CONTEXT) continue;
             const char* names = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
             description = "EGL device " + std::to_string(i) + " of " + std::to_string(count) + " (" +
@@ -107,7 +113,7 @@ private:
             return false;
         }
         display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        context = createContext(display, why);
+        context = createContext(display, api_, why);
         description = "EGL surfaceless platform";
         return context != EGL_NO_CONTEXT;
     }
@@ -115,16 +121,21 @@ private:
 
 struct GlfwWindow {
     GLFWwindow* window = nullptr;
-    explicit GlfwWindow(const char* title) {
+    GlfwWindow(const char* title, ContextApi api) {
         if (!glfwInit()) throw NoContext("GLFW cannot initialise (no display?)");
+        const bool es = api == ContextApi::Gles;
+        glfwWindowHint(GLFW_CLIENT_API, es ? GLFW_OPENGL_ES_API : GLFW_OPENGL_API);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, es ? 0 : 3);
+        if (!es) {
+            glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+            glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        }
         window = glfwCreateWindow(kWidth, kHeight, title, nullptr, nullptr);
         if (!window) {
             glfwTerminate();
-            throw NoContext("GLFW cannot create an OpenGL 3.3 core window");
+            throw NoContext(es ? "GLFW cannot create an OpenGL ES 3.0 window"
+                               : "GLFW cannot create an OpenGL 3.3 core window");
         }
         glfwMakeContextCurrent(window);
         glfwSwapInterval(1);
@@ -137,8 +148,21 @@ struct GlfwWindow {
 
 // ---- The host program's own GL ------------------------------------------------------------
 
-GLuint compileStage(GLenum stage, const char* source, const std::string& what) {
+// The host's GLSL 3.30 sources on an OpenGL ES context: the same text after an ES 3.00 first
+// line with highp defaults (ES 3.00 §4.5.4: fragment floats have none), as ssam::gl's own; they
+// use nothing GLSL ES 3.00 lacks.
+std::string forThisContext(const char* source) {
+    constexpr std::string_view kDesktop = "#version 330 core\n";
+    const std::string text = source;
+    if (epoxy_is_desktop_gl() || text.compare(0, kDesktop.size(), kDesktop) != 0) return text;
+    return "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n" +
+           text.substr(kDesktop.size());
+}
+
+GLuint compileStage(GLenum stage, const char* glsl330, const std::string& what) {
     const GLuint s = glCreateShader(stage);
+    const std::string text = forThisContext(glsl330);
+    const char* source = text.c_str();
     glShaderSource(s, 1, &source, nullptr);
     glCompileShader(s);
     GLint ok = 0;
@@ -271,7 +295,8 @@ void HostScene::drawOpaque() const {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, kWidth, kHeight);
     glClearColor(kSky[0], kSky[1], kSky[2], 1.0f);
-    glClearDepth(1.0);
+    if (epoxy_is_desktop_gl()) glClearDepth(1.0);
+    else glClearDepthf(1.0f);  // ES has only the float form
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -380,11 +405,12 @@ void initializeSsam(ssam::gl::ScreenSpaceAlphaMaskGl& ssam, const Tool& tool, co
     ssam::gl::Settings settings;
     settings.depthMaskThreshold = args.depthMaskThreshold;
     settings.maskPrecision = maskPrecisionOf(args.precision);
-    check(ssam, ssam.initialize(getProcAddress, settings), "ssam::gl initialize");
+    const ssam::gl::Api api = args.api == ContextApi::Gles ? ssam::gl::Api::Gles30 : ssam::gl::Api::Gl33;
+    check(ssam, ssam.initialize(getProcAddress, settings, {}, api), "ssam::gl initialize");
 }
 
 int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
-    EglHeadless context(args.egl);
+    EglHeadless context(args.egl, args.api);
     std::printf("OpenGL: %s, %s on the %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION),
                 context.description.c_str());
     HostScene scene(args.wind);
@@ -415,7 +441,7 @@ int runHeadless(const Tool& tool, const Arguments& args, const MakeFoliageRender
 }
 
 int runWindow(const Tool& tool, const Arguments& args, const MakeFoliageRenderer& makeRenderer) {
-    GlfwWindow window(tool.name);
+    GlfwWindow window(tool.name, args.api);
     std::printf("OpenGL: %s, %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION));
     HostScene scene(args.wind);
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
@@ -460,7 +486,7 @@ int runExample(const Tool& tool, int argc, char** argv, const MakeFoliageRendere
     try {
         return args.headless ? runHeadless(tool, args, makeRenderer) : runWindow(tool, args, makeRenderer);
     } catch (const NoContext& e) {
-        std::printf("SKIPPED: no OpenGL 3.3 context: %s\n", e.what());
+        std::printf("SKIPPED: no OpenGL %s context: %s\n", args.api == ContextApi::Gles ? "ES 3.0" : "3.3", e.what());
         return kNoContext;
     } catch (const std::exception& e) {
         printError(tool, e.what());

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// The host program both examples share: a plain OpenGL 3.3 program that is not built on our
-// engine (its own context, shaders, buffers and render targets). It draws its opaque scene into
+// The host program both examples share: a plain OpenGL 3.3 program (OpenGL ES 3.0 with --api gles,
+// its GLSL 3.30 compiled as ES 3.00) that is not built on our engine (its own context, shaders,
+// buffers and render targets). It draws its opaque scene into
 // its own colour + depth textures, then hands them to SSAM; what differs between the examples
 // is how its foliage reaches SSAM (a FoliageRenderer):
 //   gl_embedding     SSAM's built-in foliage programs draw the host's VAO (way a)

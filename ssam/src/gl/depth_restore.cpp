@@ -78,7 +78,7 @@ void DepthRestore::saveOpaqueDepth(const GlFunctions& gl, unsigned int source, i
 void DepthRestore::restoreWhereMaskIsLow(const GlFunctions& gl, unsigned int target, bool hasMaskAdd,
                                          const Settings& settings) {
     gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-    gl.ColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl.colorMaskAt(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     gl.Disable(GL_BLEND);
     gl.Enable(GL_DEPTH_TEST);  // needed for depth writes; ALWAYS: every pixel below the threshold
     gl.DepthFunc(GL_ALWAYS);

@@ -62,7 +62,7 @@ TextureInfo inspectDepth(const GlFunctions& gl, const FrameDesc& frame) {
         throw Failure(Status::InvalidTexture, "ssam::gl: depth texture " + std::to_string(name) +
                                                   " is not a texture but a renderbuffer: pass it as "
                                                   "FrameDesc::depthRenderbuffer");
-    const TextureInfo depth = inspectTexture2D(gl, name, "depth texture");
+    const TextureInfo depth = inspectTexture2D(gl, name, "depth texture", TextureRole::Depth);
     if (!isDepthFormat(depth.internalFormat))
         throw Failure(Status::InvalidTexture,
                       "ssam::gl: depth texture " + std::to_string(name) + " has format " +
@@ -73,6 +73,18 @@ TextureInfo inspectDepth(const GlFunctions& gl, const FrameDesc& frame) {
                                                   "FrameDesc::depthRenderbuffer)"
                                             : std::string()));
     return depth;
+}
+
+// OpenGL ES 3.0 renders into float targets (rt_foliage takes the colour's format) only with
+// GL_EXT_color_buffer_float, and blends into 32F ones (the composite) only with GL_EXT_float_blend.
+void checkFloatColor(const GlFunctions& gl, GLint format, GLuint texture) {
+    const char* missing = nullptr;
+    if ((format == GL_RGBA16F || format == GL_RGBA32F) && !gl.colorBufferFloat) missing = "GL_EXT_color_buffer_float";
+    else if (format == GL_RGBA32F && !gl.floatBlend) missing = "GL_EXT_float_blend";
+    if (missing)
+        throw Failure(Status::UnsupportedFeature, "ssam::gl: colour texture " + std::to_string(texture) + " is " +
+                                                      internalFormatName(format) + ", which this OpenGL ES context " +
+                                                      "cannot render and blend into without " + missing);
 }
 
 std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
@@ -108,6 +120,7 @@ void FrameTargets::prepare(const GlFunctions& gl, const FrameDesc& frame, MaskPr
         throw Failure(Status::InvalidTexture, "ssam::gl: colour texture " + std::to_string(frame.colorTexture) +
                                                   " has format " + internalFormatName(color.internalFormat) +
                                                   "; use GL_RGBA8, GL_SRGB8_ALPHA8, GL_RGBA16F or GL_RGBA32F");
+    checkFloatColor(gl, color.internalFormat, frame.colorTexture);
     if (!isDepthFormat(depth.internalFormat))
         throw Failure(Status::InvalidTexture, "ssam::gl: depth renderbuffer " +
                                                   std::to_string(frame.depthRenderbuffer) + " has format " +
@@ -115,7 +128,7 @@ void FrameTargets::prepare(const GlFunctions& gl, const FrameDesc& frame, MaskPr
                                                   "; use a GL_DEPTH_COMPONENT* or depth-stencil format");
     const char* depthKind = frame.depthRenderbuffer ? "depth renderbuffer" : "depth texture";
     for (const auto& [info, what] : {std::pair{color, "colour texture"}, std::pair{depth, depthKind}})
-        if (info.width != frame.width || info.height != frame.height)
+        if (info.width >= 0 && (info.width != frame.width || info.height != frame.height))
             throw Failure(Status::InvalidTexture, std::string("ssam::gl: the ") + what + " is " +
                                                       sizeText(info.width, info.height) + " but the frame is " +
                                                       sizeText(frame.width, frame.height));

@@ -8,13 +8,15 @@
 #include "engine/render/gl/plumbing/framebuffer_status_name.hpp"
 #include "failure.hpp"
 #include "gl_functions.hpp"
+#include "shaders.hpp"
 
 namespace ssam::gl::detail {
 
 unsigned int compileProgram(const GlFunctions& gl, const std::string& name, const char* vertexSource,
                             const char* fragmentSource) {
-    auto built =
-        engine::render::gl::plumbing::buildProgram(gl, "ssam::gl program '" + name + "'", vertexSource, fragmentSource);
+    const std::string head = shaders::glslHead(gl);
+    auto built = engine::render::gl::plumbing::buildProgram(
+        gl, "ssam::gl program '" + name + "'", (head + vertexSource).c_str(), (head + fragmentSource).c_str());
     if (!built.id) throw Failure(Status::ShaderFailed, built.error);
     return built.id;
 }
@@ -23,7 +25,50 @@ void locateUniforms(const GlFunctions& gl, unsigned int program, std::initialize
     for (const UniformSlot& slot : slots) *slot.location = gl.GetUniformLocation(program, slot.name);
 }
 
-TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what) {
+namespace {
+
+// OpenGL ES 3.0 cannot ask a texture its format or size (glGetTexLevelParameteriv is ES 3.1): the
+// format is read from the texture attached to a framebuffer (ES 3.0 §6.1.13: component sizes,
+// type and encoding), the size is left unknown (-1). A format SSAM does not take reads as 0.
+TextureInfo inspectAttached(const GlFunctions& gl, GLuint texture, TextureRole role) {
+    GLint previous = 0;
+    GLuint fbo = 0;
+    gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+    gl.GenFramebuffers(1, &fbo);
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    const GLenum attachment = role == TextureRole::Depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0;
+    gl.FramebufferTexture2D(GL_READ_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
+    const auto get = [&](GLenum what) {
+        GLint value = 0;
+        gl.GetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, what, &value);
+        return value;
+    };
+    const bool isFloat = get(GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE) == GL_FLOAT;
+    TextureInfo info{-1, -1, 0};
+    if (role == TextureRole::Depth) {
+        const GLint depth = get(GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
+        const bool stencil = get(GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE) == 8;
+        if (depth == 16 && !stencil) info.internalFormat = GL_DEPTH_COMPONENT16;
+        else if (depth == 24) info.internalFormat = stencil ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
+        else if (depth == 32 && isFloat) info.internalFormat = stencil ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
+    } else {
+        const GLint bits = get(GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE);
+        const bool rgba = get(GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE) == bits &&
+                          get(GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE) == bits &&
+                          get(GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE) == bits;
+        const bool srgb = get(GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING) == GL_SRGB;
+        if (rgba && bits == 8 && !isFloat) info.internalFormat = srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+        else if (rgba && isFloat && (bits == 16 || bits == 32))
+            info.internalFormat = bits == 16 ? GL_RGBA16F : GL_RGBA32F;
+    }
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previous));
+    gl.DeleteFramebuffers(1, &fbo);
+    return info;
+}
+
+}  // namespace
+
+TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what, TextureRole role) {
     if (texture == 0 || !gl.IsTexture(texture))
         throw Failure(Status::InvalidTexture, std::string("ssam::gl: ") + what + " " + std::to_string(texture) +
                                                   " is not a GL texture name (0, deleted, or never bound)");
@@ -39,6 +84,10 @@ TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const 
                       std::string("ssam::gl: ") + what + " " + std::to_string(texture) +
                           " is not a GL_TEXTURE_2D (multisampled, array, cube... textures are not supported: "
                           "resolve to a single-sample 2D texture first)");
+    }
+    if (gl.es) {
+        gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previous));
+        return inspectAttached(gl, texture, role);
     }
     TextureInfo info;
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &info.width);
@@ -64,9 +113,16 @@ TextureInfo inspectRenderbuffer(const GlFunctions& gl, unsigned int renderbuffer
     gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_INTERNAL_FORMAT, &info.internalFormat);
     gl.GetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
     gl.BindRenderbuffer(GL_RENDERBUFFER, static_cast<GLuint>(previous));
+    // On ES the host cannot do the paper's closest-sample downsample (§3.5.1) either: ES 3.0 reads
+    // no multisampled depth per sample; its resolve blit keeps one sample of the implementation's choice.
     if (samples > 0)
-        throw Failure(Status::InvalidTexture, name + " is multisampled (" + std::to_string(samples) +
-                                                  " samples): resolve it into a single-sample depth first");
+        throw Failure(Status::InvalidTexture,
+                      name + " is multisampled (" + std::to_string(samples) +
+                          " samples): resolve it into a single-sample depth first" +
+                          (gl.es ? " (OpenGL ES 3.0 cannot read a multisampled depth per sample, so the closest-"
+                                   "sample downsample of [Hathaway 2010] 3.5.1 is not possible there: resolve "
+                                   "with glBlitFramebuffer, which keeps one sample)"
+                                 : ""));
     return info;
 }
 
@@ -92,6 +148,7 @@ const char* internalFormatName(int internalFormat) {
         case GL_DEPTH_COMPONENT32F: return "GL_DEPTH_COMPONENT32F";
         case GL_DEPTH24_STENCIL8: return "GL_DEPTH24_STENCIL8";
         case GL_DEPTH32F_STENCIL8: return "GL_DEPTH32F_STENCIL8";
+        case 0: return "one SSAM does not take (read through a framebuffer attachment on OpenGL ES 3.0)";
         default: break;
     }
     static thread_local char hex[16];

@@ -11,7 +11,8 @@ namespace ssam::gl::detail {
 
 struct GlFunctions;
 
-// Compiles and links; Failure(ShaderFailed) naming the program and stage with the info log.
+// Compiles and links the sources after shaders::glslHead(gl); Failure(ShaderFailed) naming the
+// program and stage with the info log.
 unsigned int compileProgram(const GlFunctions& gl, const std::string& name, const char* vertexSource,
                             const char* fragmentSource);
 
@@ -24,13 +25,17 @@ struct UniformSlot {
 void locateUniforms(const GlFunctions& gl, unsigned int program, std::initializer_list<UniformSlot> slots);
 
 struct TextureInfo {
-    int width = 0, height = 0;
+    int width = 0, height = 0;  // -1: not known (a texture on OpenGL ES 3.0)
     int internalFormat = 0;
 };
 
+enum class TextureRole { Color, Depth };
+
 // Level 0 of a GL_TEXTURE_2D; Failure(InvalidTexture) naming `what` when the name is not a
-// texture or not a 2D one. Restores the active unit's GL_TEXTURE_2D binding.
-TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what);
+// texture or not a 2D one. Restores the active unit's GL_TEXTURE_2D binding. On OpenGL ES the
+// format is read as the `role` attachment of a framebuffer and the size is not known.
+TextureInfo inspectTexture2D(const GlFunctions& gl, unsigned int texture, const char* what,
+                             TextureRole role = TextureRole::Color);
 
 // A renderbuffer's size and format (the bound renderbuffer is restored); Failure(InvalidTexture)
 // naming `what` when the name is not a renderbuffer (saying so when it is a texture's) or is

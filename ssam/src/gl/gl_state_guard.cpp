@@ -12,6 +12,12 @@ unsigned char isEnabled(const GlFunctions& gl, GLenum cap) { return gl.IsEnabled
 void setEnabled(const GlFunctions& gl, GLenum cap, unsigned char on) { on ? gl.Enable(cap) : gl.Disable(cap); }
 }  // namespace
 
+// Desktop-only state (GL_FRAMEBUFFER_SRGB, GL_COLOR_LOGIC_OP): ES 3.0 has neither (sRGB targets
+// always encode there, ES 3.0 §4.1.8), so asking would be GL_INVALID_ENUM.
+void setDesktopOnly(const GlFunctions& gl, GLenum cap, bool on) {
+    if (!gl.es) on ? gl.Enable(cap) : gl.Disable(cap);
+}
+
 void disableFixedFunction(const GlFunctions& gl) {
     if (!gl.compatibility) return;
     gl.Disable(kAlphaTest);
@@ -36,14 +42,21 @@ GlStateGuard::GlStateGuard(const GlFunctions& functions)
     stencilTest_ = isEnabled(gl, GL_STENCIL_TEST);
     polygonOffsetFill_ = isEnabled(gl, GL_POLYGON_OFFSET_FILL);
     alphaToCoverage_ = isEnabled(gl, GL_SAMPLE_ALPHA_TO_COVERAGE);
-    framebufferSrgb_ = isEnabled(gl, GL_FRAMEBUFFER_SRGB);
-    logicOp_ = isEnabled(gl, GL_COLOR_LOGIC_OP);
+    if (!gl.es) {
+        framebufferSrgb_ = isEnabled(gl, GL_FRAMEBUFFER_SRGB);
+        logicOp_ = isEnabled(gl, GL_COLOR_LOGIC_OP);
+    }
     rasterizerDiscard_ = isEnabled(gl, GL_RASTERIZER_DISCARD);
     for (GLuint i = 0; i < 2; ++i) {
         BlendTarget& b = blend_[i];
-        b.enabled = gl.IsEnabledi(GL_BLEND, i) ? 1 : 0;
         GLboolean mask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
-        gl.GetBooleani_v(GL_COLOR_WRITEMASK, i, mask);
+        if (gl.indexedBuffers) {
+            b.enabled = gl.IsEnabledi(GL_BLEND, i) ? 1 : 0;
+            gl.GetBooleani_v(GL_COLOR_WRITEMASK, i, mask);
+        } else if (i == 0) {  // ES without per-buffer state: one for all buffers
+            b.enabled = isEnabled(gl, GL_BLEND);
+            gl.GetBooleanv(GL_COLOR_WRITEMASK, mask);
+        }
         for (int c = 0; c < 4; ++c) b.colorMask[c] = mask[c] ? 1 : 0;
         if (i == 0 || perBufferBlend_) {
             // Indexed queries are GL 4.0 (per-buffer blending); buffer 0 = the global state.
@@ -91,8 +104,8 @@ GlStateGuard::~GlStateGuard() {
     setEnabled(gl, GL_STENCIL_TEST, stencilTest_);
     setEnabled(gl, GL_POLYGON_OFFSET_FILL, polygonOffsetFill_);
     setEnabled(gl, GL_SAMPLE_ALPHA_TO_COVERAGE, alphaToCoverage_);
-    setEnabled(gl, GL_FRAMEBUFFER_SRGB, framebufferSrgb_);
-    setEnabled(gl, GL_COLOR_LOGIC_OP, logicOp_);
+    setDesktopOnly(gl, GL_FRAMEBUFFER_SRGB, framebufferSrgb_);
+    setDesktopOnly(gl, GL_COLOR_LOGIC_OP, logicOp_);
     setEnabled(gl, GL_RASTERIZER_DISCARD, rasterizerDiscard_);
     // Global first (all draw buffers get buffer 0's state), then buffer 1 where it can differ.
     const BlendTarget& b0 = blend_[0];
@@ -107,8 +120,9 @@ GlStateGuard::~GlStateGuard() {
     }
     for (GLuint i = 0; i < 2; ++i) {
         const BlendTarget& b = blend_[i];
-        b.enabled ? gl.Enablei(GL_BLEND, i) : gl.Disablei(GL_BLEND, i);
-        gl.ColorMaski(i, b.colorMask[0], b.colorMask[1], b.colorMask[2], b.colorMask[3]);
+        if (gl.indexedBuffers) b.enabled ? gl.Enablei(GL_BLEND, i) : gl.Disablei(GL_BLEND, i);
+        else if (i == 0) setEnabled(gl, GL_BLEND, b.enabled);
+        gl.colorMaskAt(i, b.colorMask[0], b.colorMask[1], b.colorMask[2], b.colorMask[3]);
     }
     gl.UseProgram(static_cast<GLuint>(program_));
     gl.BindVertexArray(static_cast<GLuint>(vertexArray_));

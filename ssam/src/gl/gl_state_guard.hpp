@@ -10,6 +10,8 @@
 // generic vertex attributes 0-15 (0 only in core contexts: in compatibility ones it is the
 // vertex position and has no current value), and in compatibility contexts alpha test, polygon
 // stipple and fragment colour clamping (which the guard also switches off: disableFixedFunction).
+// On OpenGL ES (Api::Gles30) there is no GL_FRAMEBUFFER_SRGB or logic op to save, and without
+// per-buffer state (ES 3.0) draw buffer 0's blend enable and colour mask are every buffer's.
 #include <array>
 
 namespace ssam::gl::detail {
@@ -45,6 +47,9 @@ private:
     unsigned char alphaTest_ = 0, polygonStipple_ = 0;
     int clampFragmentColor_ = 0;
 };
+
+// Enables or disables `cap` on desktop GL; nothing on ES, which has no such state.
+void setDesktopOnly(const GlFunctions& gl, unsigned int cap, bool on);
 
 // In a compatibility context, switches off the fixed-function state that would act on SSAM's
 // shader output (a host's GL_ALPHA_TEST would cut the leaf edges the mask pass blends); a

@@ -7,6 +7,14 @@
 
 namespace ssam::gl::shaders {
 
+// One source per program for both APIs: only the first lines differ. ES 3.00 §4.5.4 gives float
+// no default precision in fragment shaders and sampler2D lowp; highp is what desktop GL computes
+// in and what WebGL2 guarantees in both stages (an RGBA16F mask read at lowp would lose its sums).
+const char* glslHead(const detail::GlFunctions& gl) {
+    return gl.es ? "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+                 : "#version 330 core\n";
+}
+
 // The host's attribute locations (initialize(), setAttributeLocations()) written into the layout qualifiers, so
 // the host's own VAOs are read as they are. Unset attributes read the generic values SSAM sets
 // before each pass (identity instance model, white colour).
@@ -14,8 +22,8 @@ std::string foliageVertex(const AttributeLocations& at) {
     auto in = [](unsigned int location, const char* declaration) {
         return "layout(location = " + std::to_string(location) + ") in " + declaration + ";\n";
     };
-    return "#version 330 core\n" + in(at.position, "vec3 a_position") + in(at.normal, "vec3 a_normal") +
-           in(at.uv, "vec2 a_uv") + in(at.color, "vec4 a_color") + in(at.instanceModel, "vec4 a_instance0") +
+    return in(at.position, "vec3 a_position") + in(at.normal, "vec3 a_normal") + in(at.uv, "vec2 a_uv") +
+           in(at.color, "vec4 a_color") + in(at.instanceModel, "vec4 a_instance0") +
            in(at.instanceModel + 1, "vec4 a_instance1") + in(at.instanceModel + 2, "vec4 a_instance2") +
            in(at.instanceModel + 3, "vec4 a_instance3") + R"(uniform mat4 u_viewProj;
 uniform mat4 u_model;
@@ -26,8 +34,7 @@ out vec4 v_color;
 }
 
 // The formulas are ssam::glsl's (core/glsl/*.glsl), shared with ssam::vk.
-const std::string kMaskFragment = std::string(R"(#version 330 core
-in vec2 v_uv;
+const std::string kMaskFragment = std::string(R"(in vec2 v_uv;
 in vec4 v_color;
 uniform vec4 u_baseColorFactor;
 uniform bool u_hasTexture;
@@ -36,8 +43,7 @@ layout(location = 0) out vec4 o_mask;
 layout(location = 1) out vec4 o_maskAdd;
 )") + ssam::glsl::kMaskFragmentMain;
 
-const std::string kColorFragment = std::string(R"(#version 330 core
-in vec2 v_uv;
+const std::string kColorFragment = std::string(R"(in vec2 v_uv;
 in vec3 v_normal;
 in vec4 v_color;
 uniform vec4 u_baseColorFactor;
@@ -51,15 +57,14 @@ layout(location = 0) out vec4 o_color;
 )") + ssam::glsl::kColorFragmentMain;
 
 const std::string kFullscreenVertex =
-    std::string("#version 330 core\n#define VERTEX_INDEX gl_VertexID\n") + ssam::glsl::kFullscreenVertexMain;
+    std::string("#define VERTEX_INDEX gl_VertexID\n") + ssam::glsl::kFullscreenVertexMain;
 
 // §3.5.4 / Listing 3.2, one texel per pixel: the same function as the engine backend's
 // composite program (core/glsl/composite*.glsl); the output (foliage, mask) is blended SRC_ALPHA /
 // ONE_MINUS_SRC_ALPHA onto the engine's colour, which is lerp(opaque, foliage, mask) and keeps
-// the colour's alpha. GLSL 3.30 has no `precise`; nothing here can be contracted into an FMA
+// the colour's alpha. GLSL 3.30 and ES 3.00 have no `precise`; nothing here can be contracted into an FMA
 // that changes which side of 0 or 1 the mask falls anyway.
-const std::string kCompositeHead = std::string(R"(#version 330 core
-#define PRECISE
+const std::string kCompositeHead = std::string(R"(#define PRECISE
 uniform sampler2D u_foliage;
 uniform sampler2D u_mask;
 uniform sampler2D u_maskAdd;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// GLSL 3.30 core sources of ssam_gl's three programs ([Hathaway 2010] Listings 3.1 and 3.2).
+// GLSL sources of ssam_gl's three programs ([Hathaway 2010] Listings 3.1 and 3.2), without their
+// first lines: glslHead() gives them (GLSL 3.30 core, or ES 3.00 for Api::Gles30) and
+// detail::compileProgram() puts it first.
 #include <string>
 
 #include "ssam/gl/ssam_gl.hpp"
@@ -10,6 +12,8 @@ struct GlFunctions;
 }
 
 namespace ssam::gl::shaders {
+// `#version 330 core`, or `#version 300 es` with highp defaults on OpenGL ES.
+const char* glslHead(const detail::GlFunctions& gl);
 
 // Shared by the mask and colour programs, reading the host's vertex arrays at `locations`.
 std::string foliageVertex(const AttributeLocations& locations);

@@ -193,15 +193,15 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         core::expectPhase("ssam::gl", initialized, phase, expected, call);
     }
 
-    void initialize(const detail::Loader& load, const Settings& wanted, const AttributeLocations& wantedAttributes) {
+    void initialize(const detail::Loader& load, const Settings& wanted, const AttributeLocations& wantedAttributes,
+                    Api api) {
         core::expectNoFrame("ssam::gl", phase, "initialize");
         deleteObjects();
         validate(wanted);
         validateAttributes(wantedAttributes);
-        detail::loadFunctions(gl, load);
-        const std::string context = detail::checkContext(gl);
-        if (wanted.maskPrecision == MaskPrecision::Rg16f && !gl.perBufferBlend)
-            throw Failure(Status::UnsupportedFeature, kRg16fNeedsPerBufferBlend);
+        detail::loadFunctions(gl, load, api);
+        const std::string context = detail::checkContext(gl, api);
+        checkContextHas(gl, wanted);
         settings = wanted;
         passes = core::describePasses(settings);
         attributes = wantedAttributes;
@@ -258,9 +258,23 @@ struct ScreenSpaceAlphaMaskGl::Impl {
                     "current before release() or the destructor to delete them now)");
     }
 
-    static constexpr const char* kRg16fNeedsPerBufferBlend =
-        "ssam::gl settings: maskPrecision Rg16f needs per-buffer blend equations (OpenGL 4.0 or "
-        "GL_ARB_draw_buffers_blend), which this context has not; use Rgba16f";
+    // What the settings' mask needs of the context: float targets (ES: an extension) and, for
+    // Rg16f's two targets blended differently, per-buffer blend equations.
+    static void checkContextHas(const GlFunctions& gl, const Settings& wanted) {
+        const MaskPrecision precision = wanted.maskPrecision;
+        if (precision != MaskPrecision::Rgba8 && !gl.colorBufferFloat)
+            throw Failure(Status::UnsupportedFeature,
+                          std::string("ssam::gl settings: maskPrecision ") + maskPrecisionName(precision) +
+                              " renders into float targets, which this OpenGL ES context cannot without "
+                              "GL_EXT_color_buffer_float; use Rgba8");
+        if (precision == MaskPrecision::Rg16f && !gl.perBufferBlend)
+            throw Failure(Status::UnsupportedFeature,
+                          gl.es ? "ssam::gl settings: maskPrecision Rg16f needs per-buffer blend equations "
+                                  "(OpenGL ES 3.2, GL_OES_draw_buffers_indexed or GL_EXT_draw_buffers_indexed), "
+                                  "which this context has not; use Rgba16f"
+                                : "ssam::gl settings: maskPrecision Rg16f needs per-buffer blend equations (OpenGL "
+                                  "4.0 or GL_ARB_draw_buffers_blend), which this context has not; use Rgba16f");
+    }
 
     // ---- The frame, one step at a time --------------------------------------------------
 
@@ -319,12 +333,12 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Disable(GL_STENCIL_TEST);
         gl.Disable(GL_POLYGON_OFFSET_FILL);
         gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-        gl.Disable(GL_COLOR_LOGIC_OP);  // a logic op would replace blending
+        detail::setDesktopOnly(gl, GL_COLOR_LOGIC_OP, false);  // a logic op would replace blending
         gl.Disable(GL_RASTERIZER_DISCARD);
         detail::disableFixedFunction(gl);  // compatibility contexts: a host's alpha test would cut the edges
-        gl.Enable(GL_FRAMEBUFFER_SRGB);
-        gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        detail::setDesktopOnly(gl, GL_FRAMEBUFFER_SRGB, true);
+        gl.colorMaskAt(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl.colorMaskAt(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
 
     // The core's pass (ssam/core/passes.hpp) as GL state: culling, depth test and write, blend, and the
@@ -394,12 +408,12 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         gl.Viewport(0, 0, frame.width, frame.height);
         applyPass(passes.composite);
         gl.Disable(GL_STENCIL_TEST);
-        gl.Disable(GL_COLOR_LOGIC_OP);
+        detail::setDesktopOnly(gl, GL_COLOR_LOGIC_OP, false);
         gl.Disable(GL_RASTERIZER_DISCARD);
         gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
         detail::disableFixedFunction(gl);
-        gl.Enable(GL_FRAMEBUFFER_SRGB);
-        gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        detail::setDesktopOnly(gl, GL_FRAMEBUFFER_SRGB, true);
+        gl.colorMaskAt(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         gl.Enable(GL_SCISSOR_TEST);
         gl.Scissor(region.x, region.y, region.width, region.height);
         gl.UseProgram(composite);
@@ -513,17 +527,17 @@ ScreenSpaceAlphaMaskGl& ScreenSpaceAlphaMaskGl::operator=(ScreenSpaceAlphaMaskGl
 }
 
 Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddress getProcAddress, const Settings& settings,
-                                          const AttributeLocations& attributes) noexcept {
+                                          const AttributeLocations& attributes, Api api) noexcept {
     if (!impl_) return Status::InvalidCall;
     if (!getProcAddress) return impl_->fail(Status::InvalidArgument, "ssam::gl: initialize() without a GL loader");
-    return impl_->run([&] { impl_->initialize({getProcAddress, nullptr}, settings, attributes); });
+    return impl_->run([&] { impl_->initialize({getProcAddress, nullptr}, settings, attributes, api); });
 }
 
 Status ScreenSpaceAlphaMaskGl::initialize(GetProcAddressFunction getProcAddress, const Settings& settings,
-                                          const AttributeLocations& attributes) noexcept {
+                                          const AttributeLocations& attributes, Api api) noexcept {
     if (!impl_) return Status::InvalidCall;
     if (!getProcAddress) return impl_->fail(Status::InvalidArgument, "ssam::gl: initialize() without a GL loader");
-    return impl_->run([&] { impl_->initialize({nullptr, getProcAddress}, settings, attributes); });
+    return impl_->run([&] { impl_->initialize({nullptr, getProcAddress}, settings, attributes, api); });
 }
 
 Status ScreenSpaceAlphaMaskGl::release() noexcept { return impl_ ? impl_->release() : Status::Ok; }
@@ -532,8 +546,7 @@ Status ScreenSpaceAlphaMaskGl::setSettings(const Settings& settings) noexcept {
     return runStep(impl_, [&](Impl& s) {
         core::expectNoFrame("ssam::gl", s.phase, "setSettings");
         validate(settings);
-        if (s.initialized && settings.maskPrecision == MaskPrecision::Rg16f && !s.gl.perBufferBlend)
-            throw Failure(Status::UnsupportedFeature, Impl::kRg16fNeedsPerBufferBlend);
+        if (s.initialized) Impl::checkContextHas(s.gl, settings);
         s.settings = settings;
         s.passes = core::describePasses(settings);
     });

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // What an engine written elsewhere hands ssam::gl: its own GL colour texture and depth (a texture
-// or a renderbuffer) made with raw GL calls, and, for the compatibility-profile test, its own
-// compatibility context. Used by ssam_gl_engine_test.cpp.
+// or a renderbuffer) made with raw GL calls (on desktop GL or OpenGL ES), and, for the
+// compatibility-profile and OpenGL ES tests, its own context. Used by ssam_gl_engine_test.cpp and
+// ssam_gl_es_test.cpp.
 #include <gtest/gtest.h>
 
 #include <epoxy/egl.h>
@@ -19,6 +20,22 @@
 
 namespace ssam::testing {
 
+// glClearDepth on desktop GL; OpenGL ES has only the float form.
+inline void clearDepthTo(float depth) { epoxy_is_desktop_gl() ? glClearDepth(depth) : glClearDepthf(depth); }
+
+// A kGlSize² colour texture of `format` (immutable storage) as colour 0 of a new framebuffer
+// (`*fbo`), which is left bound.
+inline GLuint newColorTarget(GLenum format, GLuint* fbo) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexStorage2D(GL_TEXTURE_2D, 1, format, kGlSize, kGlSize);
+    glGenFramebuffers(1, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    return texture;
+}
+
 // A kGlSize² RGBA8 colour texture cleared to kOpaqueCode, and a depth of `depthFormat` cleared to
 // the far plane on the left half and to kOccluderDepth (the host's occluder) on the right half.
 struct RawGlTargets {
@@ -28,12 +45,7 @@ struct RawGlTargets {
     bool renderbuffer;
 
     RawGlTargets(bool depthInRenderbuffer, GLenum depthFormat) : renderbuffer(depthInRenderbuffer) {
-        glGenTextures(1, &color);
-        glBindTexture(GL_TEXTURE_2D, color);
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kGlSize, kGlSize);
-        glGenFramebuffers(1, &fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+        color = newColorTarget(GL_RGBA8, &fbo);
         const GLenum attachment = (depthFormat == GL_DEPTH24_STENCIL8 || depthFormat == GL_DEPTH32F_STENCIL8)
                                       ? GL_DEPTH_STENCIL_ATTACHMENT
                                       : GL_DEPTH_ATTACHMENT;
@@ -53,14 +65,14 @@ struct RawGlTargets {
         glDepthMask(GL_TRUE);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glClearColor(kOpaqueCode[0] / 255.0f, kOpaqueCode[1] / 255.0f, kOpaqueCode[2] / 255.0f, 1.0f);
-        glClearDepth(1.0);
+        clearDepthTo(1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_SCISSOR_TEST);
         glScissor(kGlSize / 2, 0, kGlSize / 2, kGlSize);
-        glClearDepth(kOccluderDepth);
+        clearDepthTo(kOccluderDepth);
         glClear(GL_DEPTH_BUFFER_BIT);
         glDisable(GL_SCISSOR_TEST);
-        glClearDepth(1.0);
+        clearDepthTo(1.0f);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
     ~RawGlTargets() {
@@ -96,10 +108,11 @@ struct RawGlTargets {
     }
 };
 
-// An OpenGL 3.3 compatibility-profile context on Mesa's EGL (the device platform, else the
-// surfaceless one), current while this lives; the caller's context is current again afterwards.
-// `why` says what failed ("" when current).
-struct CompatibilityContext {
+// An OpenGL 3.3 compatibility-profile context, or an OpenGL ES 3.0 one (Mesa makes it ES 3.2), on
+// Mesa's EGL (the device platform, else the surfaceless one), current while this lives; the
+// caller's context is current again afterwards. `why` says what failed ("" when current).
+enum class OwnContextKind { Compatibility33, Es30 };
+struct OwnEglContext {
     EGLDisplay previousDisplay = eglGetCurrentDisplay();
     EGLContext previousContext = eglGetCurrentContext();
     EGLSurface previousDraw = eglGetCurrentSurface(EGL_DRAW), previousRead = eglGetCurrentSurface(EGL_READ);
@@ -107,7 +120,8 @@ struct CompatibilityContext {
     EGLContext context = EGL_NO_CONTEXT;
     std::string why;
 
-    CompatibilityContext() {
+    explicit OwnEglContext(OwnContextKind kind) {
+        const bool es = kind == OwnContextKind::Es30;
         const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
         if (client && std::strstr(client, "EGL_EXT_platform_device")) {
             EGLDeviceEXT device = nullptr;
@@ -117,7 +131,8 @@ struct CompatibilityContext {
         }
         if (display == EGL_NO_DISPLAY && client && std::strstr(client, "EGL_MESA_platform_surfaceless"))
             display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr) || !eglBindAPI(EGL_OPENGL_API)) {
+        if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr) ||
+            !eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) {
             why = "no EGL device or surfaceless display";
             return;
         }
@@ -128,16 +143,19 @@ struct CompatibilityContext {
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                      EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
                                      EGL_NONE};
-        context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+        const EGLint esAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
+        context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, es ? esAttributes : attributes);
         if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-            why = "eglCreateContext / eglMakeCurrent refused an OpenGL 3.3 compatibility context";
+            why = es ? "eglCreateContext / eglMakeCurrent refused an OpenGL ES 3.0 context"
+                     : "eglCreateContext / eglMakeCurrent refused an OpenGL 3.3 compatibility context";
             return;
         }
+        if (es) return;
         GLint profile = 0;
         glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
         if (!(profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT)) why = "the context is not a compatibility profile";
     }
-    ~CompatibilityContext() {
+    ~OwnEglContext() {
         if (context != EGL_NO_CONTEXT) {
             eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
             eglDestroyContext(display, context);
@@ -145,8 +163,8 @@ struct CompatibilityContext {
         if (previousContext != EGL_NO_CONTEXT)
             eglMakeCurrent(previousDisplay, previousDraw, previousRead, previousContext);
     }
-    CompatibilityContext(const CompatibilityContext&) = delete;
-    CompatibilityContext& operator=(const CompatibilityContext&) = delete;
+    OwnEglContext(const OwnEglContext&) = delete;
+    OwnEglContext& operator=(const OwnEglContext&) = delete;
 
     // The fixed-function state a compatibility host may leave on: alpha test GREATER 0.9, an
     // all-zero polygon stipple (every fragment dropped), clamped fragment colours.

@@ -231,7 +231,7 @@ TEST(SsamGlEngine, ReleaseWithoutAContextIsReported) {
 // A compatibility-profile host that leaves fixed-function alpha testing on (and stipple, and
 // colour clamping): SSAM's frame is the one it gives with them off, and they are on again after.
 TEST(SsamGlEngine, CompatibilityContextAlphaTestLeavesTheFrameAlone) {
-    CompatibilityContext compat;
+    OwnEglContext compat(OwnContextKind::Compatibility33);
     if (!compat.why.empty()) GTEST_SKIP() << "no compatibility-profile context: " << compat.why;
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     ASSERT_EQ(ssam.initialize(eglGetProcAddress), Status::Ok) << ssam.lastMessage();

@@ -37,7 +37,8 @@
 //    in the same order (§3.8 only needs consistency); both faces are drawn (culling is off: a
 //    foliage card is seen from both sides) unless the host enables culling inside the pass.
 //
-// OpenGL 3.3+, core or compatibility profile. In a compatibility context SSAM also saves,
+// OpenGL 3.3+, core or compatibility profile (Api::Gl33), or OpenGL ES 3.0+ / WebGL2 (Api::Gles30,
+// below). In a compatibility context SSAM also saves,
 // disables and restores the fixed-function state that would act on its shaders' output
 // (GL_ALPHA_TEST, GL_POLYGON_STIPPLE, glClampColor(GL_CLAMP_FRAGMENT_COLOR)): a host that leaves
 // alpha testing on does not cut SSAM's leaf edges.
@@ -106,14 +107,27 @@ struct AttributeLocations {
 };
 
 // The paper's knobs (ssam/core/settings.hpp), the same struct for every SSAM. Rg16f needs GL 4.0 or
-// GL_ARB_draw_buffers_blend (two mask targets blended differently). depthMaskThreshold > 0: a copy
-// of the host's depth and one full-screen pass (ssam/README.md, "Later transparent passes").
+// GL_ARB_draw_buffers_blend (two mask targets blended differently; on ES: Api below).
+// depthMaskThreshold > 0: a copy of the host's depth and one full-screen pass (ssam/README.md,
+// "Later transparent passes").
 using ssam::DepthTest;
 using ssam::MaskPrecision;
 using ssam::Settings;
 
 // ssam::Preset::Measured's knobs (ssam/docs/knobs.md "Presets": lower error than the paper's at its cost).
 inline Settings measuredSettings() { return ssam::presetSettings(ssam::Preset::Measured); }
+
+// The API of the host's context, named at initialize() (a context of the other API: InvalidArgument).
+//  Gl33    OpenGL 3.3 or newer, core or compatibility: `#version 330 core` programs.
+//  Gles30  OpenGL ES 3.0 or newer, and WebGL2 (ES 3.0 through Emscripten): the same programs as
+//          `#version 300 es` (highp), only ES 3.0 entry points and state (no GL_FRAMEBUFFER_SRGB:
+//          sRGB targets always encode; no compatibility state; colour masks and blending per draw
+//          buffer only with ES 3.2 or OES/EXT_draw_buffers_indexed). MaskPrecision::Rgba16f, Rg16f
+//          and a float colour texture need GL_EXT_color_buffer_float (RGBA32F also
+//          GL_EXT_float_blend); Rg16f also per-buffer blending. ES 3.0 cannot ask a texture its size,
+//          so FrameDesc::width x height is taken as the textures' (renderbuffers are checked).
+//          What differs and why: ssam/docs/gles.md.
+enum class Api : unsigned char { Gl33, Gles30 };
 
 struct FrameDesc {
     // The host's opaque colour: GL_RGBA8, GL_SRGB8_ALPHA8 (blended in linear, as
@@ -199,14 +213,14 @@ public:
     ScreenSpaceAlphaMaskGl& operator=(ScreenSpaceAlphaMaskGl&&) noexcept;
 
     // Resolves the GL entry points through the host's loader (MissingEntryPoint names the first
-    // one it has no address for), checks the current context (OpenGL 3.3 or newer, core or
-    // compatibility), compiles
-    // SSAM's programs. May be called again (e.g. after release()).
+    // one it has no address for), checks the current context (`api`: OpenGL 3.3 or newer, core or
+    // compatibility, or OpenGL ES 3.0 or newer), compiles SSAM's programs. May be called again
+    // (e.g. after release()).
     // `attributes`: where the built-in programs read the host's vertex arrays (way a).
     Status initialize(GetProcAddress getProcAddress, const Settings& settings = {},
-                      const AttributeLocations& attributes = {}) noexcept;
+                      const AttributeLocations& attributes = {}, Api api = Api::Gl33) noexcept;
     Status initialize(GetProcAddressFunction getProcAddress, const Settings& settings = {},
-                      const AttributeLocations& attributes = {}) noexcept;
+                      const AttributeLocations& attributes = {}, Api api = Api::Gl33) noexcept;
     // Deletes SSAM's GL objects; initialize() again to use it. Needs the context current: without
     // one nothing is deleted and NoContext is returned (the objects then go with the context);
     // SSAM is released either way. Ok when there was nothing to delete.
