@@ -85,6 +85,10 @@ void FrameRenderer::setLivingScene(LivingScene* living) {
     if (compare_) compare_->right().setLivingScene(living);
 }
 
+bool FrameRenderer::needsMotionVectors() const {
+    return technique_->needsMotionVectors() || (compare_ && compare_->right().needsMotionVectors());
+}
+
 std::optional<transparency::TechniqueKind> FrameRenderer::comparedTechnique() const {
     if (!compare_) return std::nullopt;
     return compare_->right().technique();

@@ -214,7 +214,7 @@ int run(const CLI::App& app, const Options& o) {
             engine::scene::selectLevelsOfDetail(
                 registry, library,
                 {view.eye, engine::scene::focalPixels(view.projection, frame.height()), 0.1f, kLodCrossfade});
-        if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
+        if (living) living->update(time, dt, view, frame.needsMotionVectors());  // wind etc., before extraction
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };
 

@@ -33,7 +33,8 @@ class TemporalTechnique final : public SinglePassTechnique {
 public:
     TemporalTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind,
                       std::unique_ptr<SinglePassTechnique> inner)
-        : SinglePassTechnique({kind, inner->opaqueSamples(), /*temporal=*/true, options.temporal.jitterPhases}),
+        : SinglePassTechnique({kind, inner->opaqueSamples(), /*temporal=*/true, options.temporal.jitterPhases,
+                               options.temporal.motionVectors}),
           backend_(backend), options_(options.temporal), inner_(std::move(inner)), depthFunc_(options.depthFunc),
           program_(backend, backend.createProgram(temporalResolveProgram())),
           motionProgram_(backend, backend.createProgram(foliageMotionProgram())) {

@@ -44,7 +44,7 @@ struct RacingFrame {
                 engine::scene::selectLevelsOfDetail(
                     scene.registry(), scene.library(),
                     {view.eye, engine::scene::focalPixels(view.projection, kHeight), 0.1f, racer::kLodCrossfade});
-            living.update(time, dt, view);
+            living.update(time, dt, view, renderer.needsMotionVectors());
             renderer.render(engine::scene::extractDrawLists(scene.registry(), scene.library(), view.viewProj, view.eye),
                             view);
         }

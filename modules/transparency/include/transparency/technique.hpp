@@ -91,6 +91,10 @@ struct TechniqueTraits {
     // projection by haltonJitter(i, jitterPhases) (Technique::projectionJitter).
     bool temporal = false;
     int jitterPhases = 1;
+    // The technique reads the draws' motion vectors (MaskedBatch::motionVertices: a temporal
+    // technique with TemporalOptions::motionVectors): only then need the features that move
+    // vertices (the wind) make their motion copies (scene::SimulationFrame::motionVectors).
+    bool motionVectors = false;
 };
 
 // A technique runs its frame one way only, as passes added to the caller's frame graph
@@ -104,6 +108,7 @@ public:
     TechniqueKind kind() const { return traits_.kind; }
     int opaqueSamples() const { return traits_.opaqueSamples; }
     bool needsHistory() const { return traits_.temporal; }
+    bool needsMotionVectors() const { return traits_.motionVectors; }
     // The sub-pixel offset, in pixels, the caller moves frame `frameIndex`'s projection by,
     // for the opaque pass and FoliageFrame::viewProj alike (transparency/temporal.hpp
     // jitteredViewProj); zero but for temporal techniques.
