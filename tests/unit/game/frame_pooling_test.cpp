@@ -6,6 +6,7 @@
 // frame_pooling_gl_test.cpp (label gl).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <sstream>
 #include <string>
@@ -81,6 +82,12 @@ TEST(FramePooling, MotionCopiesOnlyForATechniqueThatReadsThemAndSteadyFramesCrea
     ASSERT_TRUE(frame.renderer.needsMotionVectors());
     frame.run(10, 20);
     EXPECT_GT(motionCopiesDrawn(frame), 0) << "hashed+taa reads motion vectors, the wind made none";
+    // The car moves rigidly (engine/scene rigid_motion.hpp): its opaque batches carry its motion.
+    const engine::scene::VertexOverride* car =
+        frame.scene.registry().tryGet<engine::scene::VertexOverride>(frame.scene.car());
+    ASSERT_NE(car, nullptr) << "the car has no motion copy under hashed+taa";
+    EXPECT_TRUE(std::any_of(car->motionBuffers.begin(), car->motionBuffers.end(),
+                            [](engine::render::BufferHandle b) { return bool(b); }));
     frame.run(30, 1, CameraMode::Chase, /*paused=*/true);
     const int createsBefore = backend.creates;
     frame.run(30, 20, CameraMode::Chase, /*paused=*/true);

@@ -57,6 +57,10 @@ struct FoliageFrame {
     // temporal pass keeps its history only from one index to the next.
     std::uint64_t frameIndex = 0;
     bool cut = false;  // the camera jumped: temporal techniques drop their history
+    // Opaque draws that moved (the car; engine/scene rigid_motion.hpp), drawn by the host's
+    // opaque pass: each batch's vertices and motionVertices, its instances, cutoff 0. Only the
+    // temporal pass reads them, to write their motion (transparency/temporal.hpp).
+    std::span<const FoliageDraw> movingOpaque;
 };
 
 // What the exact reference found in its last frame (Technique::referenceReport).
