@@ -57,7 +57,8 @@ void RigidMotion::update(ecs::Registry& registry, bool motionVectors) {
             const std::vector<render::Vertex>& rest = library_.vertices(parts[i]);
             std::vector<render::Vertex>& copy = m.copies[i];
             copy.assign(rest.begin(), rest.end());
-            for (render::Vertex& v : copy) v.normal = glm::vec3(previousHere * glm::vec4(v.position, 1.0f)) - v.position;
+            for (render::Vertex& v : copy)
+                v.normal = glm::vec3(previousHere * glm::vec4(v.position, 1.0f)) - v.position;
             const auto bytes = std::as_bytes(std::span(copy));
             if (!m.buffers[i].get())
                 m.buffers[i] = render::Owned<render::BufferHandle>(

@@ -63,8 +63,8 @@ TEST(RigidMotion, TheMotionCopyTurnedIntoWorldSpaceIsTheVertexsMotion) {
     for (std::size_t i = 0; i < copy.size(); ++i) {
         EXPECT_EQ(copy[i].position, rest[i].position) << i;
         const glm::vec3 world = glm::mat3(model) * copy[i].normal;
-        const glm::vec3 expected =
-            glm::vec3(previous * glm::vec4(rest[i].position, 1.0f)) - glm::vec3(model * glm::vec4(rest[i].position, 1.0f));
+        const glm::vec3 expected = glm::vec3(previous * glm::vec4(rest[i].position, 1.0f)) -
+                                   glm::vec3(model * glm::vec4(rest[i].position, 1.0f));
         EXPECT_LT(glm::length(world - expected), 1e-5f) << i;
         EXPECT_GT(glm::length(expected), 0.1f) << i;
     }
