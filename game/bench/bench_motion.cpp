@@ -118,6 +118,9 @@ void measure(Backend& soft, SceneKind kind, Motion motion, const BenchOptions& o
     std::printf("[ssam-bench] %s %s: %d frames, %zu technique(s), motion vectors %s\n", sceneName(kind),
                 motionName(motion), frames, subjects.size(), motionVectors ? "on" : "off");
 
+    // The wind makes its motion copies only for a technique that reads them (racer's rule).
+    [[maybe_unused]] const bool readsMotion = std::any_of(
+        subjects.begin(), subjects.end(), [](const Subject& s) { return s.technique->needsMotionVectors(); });
     Image lastReference;
     std::vector<char> lastFoliage;
     for (int j = 0; j < kHistoryFrames + frames; ++j) {
@@ -127,7 +130,7 @@ void measure(Backend& soft, SceneKind kind, Motion motion, const BenchOptions& o
         std::string bent;
 #if SSAM_BENCH_WIND
         if (windSystem) {
-            windSystem->setFrame({float(j) * kWindStep, kWindStep, camera.eye, camera.viewProj, true});
+            windSystem->setFrame({float(j) * kWindStep, kWindStep, camera.eye, camera.viewProj, true, readsMotion});
             windSystem->update(scene.registry());
             bent = ", " + std::to_string(windSystem->stats().plantsDeformed) + " plants bent";
         }

@@ -23,10 +23,14 @@ public:
     // Valid until the next call (the draws point into `lists`' instance vectors).
     std::span<const transparency::FoliageDraw> upload(const engine::scene::DrawLists& lists,
                                                       const engine::scene::MeshLibrary& library);
+    // The opaque batches of the last upload() that carry a motion copy (a rigidly moving entity,
+    // engine/scene rigid_motion.hpp), as FoliageFrame::movingOpaque: opaque, alpha 1, cutoff 0.
+    std::span<const transparency::FoliageDraw> movingOpaque() const { return moving_; }
 
 private:
     engine::render::FrameBufferPool instances_;
     std::vector<transparency::FoliageDraw> draws_;
+    std::vector<transparency::FoliageDraw> moving_;
 };
 
 }  // namespace racer

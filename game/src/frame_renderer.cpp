@@ -85,6 +85,10 @@ void FrameRenderer::setLivingScene(LivingScene* living) {
     if (compare_) compare_->right().setLivingScene(living);
 }
 
+bool FrameRenderer::needsMotionVectors() const {
+    return technique_->needsMotionVectors() || (compare_ && compare_->right().needsMotionVectors());
+}
+
 std::optional<transparency::TechniqueKind> FrameRenderer::comparedTechnique() const {
     if (!compare_) return std::nullopt;
     return compare_->right().technique();
@@ -218,7 +222,8 @@ void FrameRenderer::render(const engine::scene::DrawLists& lists, const CameraVi
     // 2. Foliage by the technique: it draws, resolves the frame targets and leaves the
     //    colour and the depth later passes test against in them.
     const transparency::FoliageFrame foliage{
-        camera.viewProj, camera.eye, options_.sun, foliage_.upload(lists, library_), frameIndex_, cut_};
+        camera.viewProj, camera.eye, options_.sun,           foliage_.upload(lists, library_),
+        frameIndex_,     cut_,       foliage_.movingOpaque()};
     ++frameIndex_;
     cut_ = false;
     ColorDepth frame = technique_->addPasses(*graph, *opaque_, drawn, resolved, foliage);

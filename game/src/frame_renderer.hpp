@@ -60,6 +60,10 @@ public:
     // current technique when the new one cannot be created.
     void setTechnique(transparency::TechniqueKind kind);
     transparency::TechniqueKind technique() const { return technique_->kind(); }
+    // Whether the next frame reads the draws' motion vectors (a temporal technique with them
+    // runs, on either side of a compare): the living scene's update is told so
+    // (scene::SimulationFrame::motionVectors), and without it the wind makes no motion copies.
+    bool needsMotionVectors() const;
     int opaqueSamples() const { return opaque_->desc().samples; }
 
     // Renders at width x height from the next frame on (the window follows its framebuffer).

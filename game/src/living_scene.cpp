@@ -38,9 +38,9 @@ LivingScene::LivingScene(engine::ecs::Registry& registry, const engine::scene::M
 
 LivingScene::~LivingScene() = default;
 
-void LivingScene::update(float time, float dt, const CameraView& camera) {
+void LivingScene::update(float time, float dt, const CameraView& camera, bool motionVectors) {
     time_ = time;
-    for (const auto& f : features_) f->beginFrame({time, dt, camera.eye, camera.viewProj});
+    for (const auto& f : features_) f->beginFrame({time, dt, camera.eye, camera.viewProj, motionVectors});
     scheduler_.run(registry_);
 }
 

@@ -46,8 +46,9 @@ public:
     LivingScene& operator=(const LivingScene&) = delete;
 
     // The features' systems for this frame (wind deformation, water ripples), seen from
-    // `camera`; call after the simulation step, before extraction.
-    void update(float time, float dt, const CameraView& camera);
+    // `camera`; call after the simulation step, before extraction. `motionVectors`: the frame
+    // reads motion vectors (FrameRenderer::needsMotionVectors), so the wind makes its motion copies.
+    void update(float time, float dt, const CameraView& camera, bool motionVectors = false);
     // Every feature's passes, in frame order, onto `frame`'s colour and depth, whose latest
     // versions in `graph` are `targets` (its time is the last update's). Returns the
     // versions the last feature left.

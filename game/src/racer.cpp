@@ -23,6 +23,7 @@
 #include "engine/render/devices/create_device.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "engine/scene/draw_lists.hpp"
+#include "engine/scene/rigid_motion.hpp"
 #include "frame_renderer.hpp"
 #include "frame_source.hpp"
 #include "gltf_scene.hpp"
@@ -197,6 +198,7 @@ int run(const CLI::App& app, const Options& o) {
         living = std::make_unique<LivingScene>(registry, library, lo);
         frame.setLivingScene(living.get());
     }
+    engine::scene::RigidMotion rigidMotion(library);
     const FrameSource source = [&](float time, float dt, CameraMode camera, const PlayerInput& input,
                                    float frameAspect) {
         if (racing) {
@@ -214,7 +216,8 @@ int run(const CLI::App& app, const Options& o) {
             engine::scene::selectLevelsOfDetail(
                 registry, library,
                 {view.eye, engine::scene::focalPixels(view.projection, frame.height()), 0.1f, kLodCrossfade});
-        if (living) living->update(time, dt, view);  // wind deformation etc., before extraction
+        if (living) living->update(time, dt, view, frame.needsMotionVectors());  // wind etc., before extraction
+        rigidMotion.update(registry, frame.needsMotionVectors());                // the car's motion copies
         return SceneFrame{view, engine::scene::extractDrawLists(registry, library, view.viewProj, view.eye)};
     };
 

@@ -10,6 +10,7 @@
 #include "engine/assets/gltf.hpp"
 #include "engine/assets/image.hpp"
 #include "engine/assets/mips.hpp"
+#include "engine/scene/rigid_motion.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/scene/components.hpp"
@@ -113,6 +114,7 @@ RacingScene::RacingScene(Backend& backend, const SceneOptions& options)
     registry_.add<scene::Renderable>(car_, scene::Renderable{carModel});
     registry_.add<scene::Collider>(car_, scene::Collider{2.5f});
     registry_.add<Car>(car_);
+    registry_.add<scene::MovesRigidly>(car_);  // its motion vectors (engine/scene rigid_motion.hpp)
     update(0.0f);
     log::info("racing scene: ", registry_.size(), " entities, ", library_.partCount(), " mesh parts, track ",
               int(track_.length()), " m");

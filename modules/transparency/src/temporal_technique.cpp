@@ -33,7 +33,8 @@ class TemporalTechnique final : public SinglePassTechnique {
 public:
     TemporalTechnique(Backend& backend, const TechniqueOptions& options, TechniqueKind kind,
                       std::unique_ptr<SinglePassTechnique> inner)
-        : SinglePassTechnique({kind, inner->opaqueSamples(), /*temporal=*/true, options.temporal.jitterPhases}),
+        : SinglePassTechnique({kind, inner->opaqueSamples(), /*temporal=*/true, options.temporal.jitterPhases,
+                               options.temporal.motionVectors}),
           backend_(backend), options_(options.temporal), inner_(std::move(inner)), depthFunc_(options.depthFunc),
           program_(backend, backend.createProgram(temporalResolveProgram())),
           motionProgram_(backend, backend.createProgram(foliageMotionProgram())) {
@@ -110,14 +111,17 @@ public:
     }
 
 private:
-    // FoliageMotion of every visible draw that moved, into `motion` (cleared to 0: not
-    // written), depth-tested against the depth the technique left without writing it, so that
-    // a pixel gets the motion of the nearest moving surface the technique kept there, not of
-    // one behind it. Alpha-tested at the material's cutoff: exactly the surfaces alpha testing
+    // FoliageMotion of every visible draw that moved, and of the opaque draws that moved
+    // (FoliageFrame::movingOpaque, their alpha 1), into `motion` (cleared to 0: not written),
+    // depth-tested against the depth the technique left without writing it, so that a pixel
+    // gets the motion of the nearest moving surface the technique kept there, not of one
+    // behind it. Alpha-tested at the material's cutoff: exactly the surfaces alpha testing
     // keeps; hashed keeps some below it, which then follow the camera. False when none moved.
     bool drawMotion(engine::render::FrameTargets& opaque, const FoliageFrame& frame) {
         std::optional<PassScope> scope;
-        for (const FoliageDraw* draw : visibleDraws(frame, width_, height_)) {
+        std::vector<const FoliageDraw*> moved = visibleDraws(frame, width_, height_);
+        for (const FoliageDraw& draw : frame.movingOpaque) moved.push_back(&draw);
+        for (const FoliageDraw* draw : moved) {
             if (!draw->batch.motionVertices) continue;
             if (!scope) {
                 PassDesc pass;
@@ -126,13 +130,13 @@ private:
                 pass.depth = {opaque.depth(), LoadOp::Load};
                 scope.emplace(backend_, pass);
             }
-            MaskedBatch moved = draw->batch;
-            moved.vertices = moved.motionVertices;
+            MaskedBatch motion = draw->batch;
+            motion.vertices = motion.motionVertices;
             AlphaOnlyParams params;
             params.viewProj = frame.viewProj;
-            params.alphaFactor = moved.baseColorFactor.a;
-            params.baseColor = moved.baseColor;
-            backend_.draw(batchDraw(moved, motionPipeline(draw->alphaCutoff), params));
+            params.alphaFactor = motion.baseColorFactor.a;
+            params.baseColor = motion.baseColor;
+            backend_.draw(batchDraw(motion, motionPipeline(draw->alphaCutoff), params));
         }
         if (!scope) return false;
         scope->end();

@@ -15,7 +15,7 @@ void WindFeature::registerSystems(engine::ecs::Scheduler& scheduler) {
 }
 
 void WindFeature::beginFrame(const engine::scene::SimulationFrame& frame) {
-    system_.setFrame({frame.time, frame.dt, frame.eye, frame.viewProj, true});
+    system_.setFrame({frame.time, frame.dt, frame.eye, frame.viewProj, true, frame.motionVectors});
 }
 
 }  // namespace wind

@@ -72,15 +72,17 @@ WindSystem::PartBuffers WindSystem::partBuffers(std::uint32_t part, std::span<co
         ++stats_.buffersReused;
         return b;
     }
-    auto create = [&](const char* what) {
-        return render::Owned<render::BufferHandle>(
-            library_.backend(),
-            library_.backend().createBuffer({library_.part(part).name + what, render::BufferKind::Vertex, bytes.size()},
-                                            bytes));
-    };
-    PartBuffers b{create(" (deformed)"), create(" (motion)")};
+    PartBuffers b{createBuffer(part, " (deformed)", vertices), {}};
     ++stats_.buffersCreated;
     return b;
+}
+
+render::Owned<render::BufferHandle> WindSystem::createBuffer(std::uint32_t part, const char* what,
+                                                             std::span<const Vertex> vertices) {
+    const auto bytes = std::as_bytes(vertices);
+    return render::Owned<render::BufferHandle>(
+        library_.backend(), library_.backend().createBuffer(
+                                {library_.part(part).name + what, render::BufferKind::Vertex, bytes.size()}, bytes));
 }
 
 std::size_t WindSystem::attach(ecs::Registry& registry, std::uint32_t seed) const {
@@ -131,7 +133,7 @@ void WindSystem::release(ecs::Registry& registry) {
 }
 
 void WindSystem::update(ecs::Registry& registry) {
-    stats_.plantsDeformed = stats_.verticesDeformed = 0;
+    stats_.plantsDeformed = stats_.verticesDeformed = stats_.motionCopies = 0;
     const Wind* wind = nullptr;
     std::size_t winds = 0;
     registry.view<const Wind>().each([&](const Wind& w) {
@@ -238,12 +240,19 @@ void WindSystem::update(ecs::Registry& registry) {
                 p.flutter = mesh.material.surface == scene::SurfaceClass::Mask;
                 p.vertices = library_.vertices(parts[i]);
                 p.push.assign(p.vertices.size(), glm::vec3(0.0f));
-                p.motion = p.vertices;
                 p.buffers = partBuffers(parts[i], p.vertices);
                 plant.parts.push_back(std::move(p));
             }
         }
-        for (DeformedPart& p : plant.parts) jobs.push_back({&p, &a.pose});
+        for (DeformedPart& p : plant.parts) {
+            // Motion from the vertices drawn last frame (the rest mesh for a new plant): a copy
+            // only on the frame motion is first asked for, freed on the frame it no longer is.
+            if (!frame_.motionVectors) std::vector<Vertex>().swap(p.motion);
+            else if (p.motion.size() != p.vertices.size()) p.motion = p.vertices;
+            if (frame_.motionVectors && !p.buffers.motion.get())
+                p.buffers.motion = createBuffer(p.part, " (motion)", p.vertices);
+            jobs.push_back({&p, &a.pose});
+        }
     }
 
     // The deformation itself: independent per part, so any thread count gives the same bits.
@@ -252,10 +261,10 @@ void WindSystem::update(ecs::Registry& registry) {
     const Wind& w = *wind;
     parallelFor(std::size_t(0), jobs.size(), [&](std::size_t j) {
         DeformedPart& p = *jobs[j].part;
-        for (std::size_t i = 0; i < p.vertices.size(); ++i) p.motion[i].normal = p.vertices[i].position;  // previous
+        for (std::size_t i = 0; i < p.motion.size(); ++i) p.motion[i].normal = p.vertices[i].position;  // previous
         p.bounds = deformVertices(library_.vertices(p.part), p.vertices, p.push, w, *jobs[j].pose, time, p.flutter,
                                   decay, colliders);
-        for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+        for (std::size_t i = 0; i < p.motion.size(); ++i) {
             const glm::vec3 previous = p.motion[i].normal;
             p.motion[i] = p.vertices[i];
             p.motion[i].normal = previous - p.vertices[i].position;
@@ -267,13 +276,16 @@ void WindSystem::update(ecs::Registry& registry) {
         DeformedPlant& plant = plants_.at(a.entity);
         scene::VertexOverride override;
         override.buffers.assign(plant.slots, render::BufferHandle{});
-        override.motionBuffers.assign(plant.slots, render::BufferHandle{});
+        if (frame_.motionVectors) override.motionBuffers.assign(plant.slots, render::BufferHandle{});
         override.bounds.assign(plant.slots, Aabb{});
         for (const DeformedPart& p : plant.parts) {
             library_.backend().updateBuffer(p.buffers.vertices, 0, std::as_bytes(std::span(p.vertices)));
-            library_.backend().updateBuffer(p.buffers.motion, 0, std::as_bytes(std::span(p.motion)));
             override.buffers[p.slot] = p.buffers.vertices;
-            override.motionBuffers[p.slot] = p.buffers.motion;
+            if (frame_.motionVectors) {
+                library_.backend().updateBuffer(p.buffers.motion, 0, std::as_bytes(std::span(p.motion)));
+                override.motionBuffers[p.slot] = p.buffers.motion;
+                ++stats_.motionCopies;
+            }
             override.bounds[p.slot] = p.bounds;
             stats_.verticesDeformed += p.vertices.size();
         }

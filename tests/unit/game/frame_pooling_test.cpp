@@ -6,12 +6,14 @@
 // frame_pooling_gl_test.cpp (label gl).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "engine/render/forwarding_backend.hpp"
+#include "engine/scene/components.hpp"
 
 #include "engine/render/soft/soft_backend.hpp"
 #include "racing_frame.hpp"
@@ -48,6 +50,48 @@ TEST(FramePooling, SteadyFramesWithCrossfadingPlantsCreateNothingOnSoft) {
     const int createsBefore = backend.creates;
     frame.run(30, 20, CameraMode::Chase, /*paused=*/true);
     EXPECT_EQ(backend.creates - createsBefore, 0) << "textures or buffers created in 20 steady crossfading frames";
+}
+
+// The wind's motion copies (of every bent plant part, in buffers of their own) are made only
+// while the frame's technique reads motion vectors (FrameRenderer::needsMotionVectors ->
+// scene::SimulationFrame::motionVectors): none under SSAM, some once hashed+taa runs; and
+// hashed+taa's steady frames, motion copies and all, create nothing.
+int motionCopiesDrawn(RacingFrame& frame) {
+    int copies = 0;
+    frame.scene.registry().view<const engine::scene::VertexOverride>().each(
+        [&](engine::ecs::Entity, const engine::scene::VertexOverride& o) {
+            for (engine::render::BufferHandle b : o.motionBuffers) copies += bool(b);
+        });
+    return copies;
+}
+
+TEST(FramePooling, MotionCopiesOnlyForATechniqueThatReadsThemAndSteadyFramesCreateNothing) {
+    auto soft = engine::render::soft::createSoftBackend({2, 64, false});
+    ssam::testing::FailingBackend backend(*soft);
+    RacingFrame frame(backend);
+    ASSERT_FALSE(frame.renderer.needsMotionVectors());
+    frame.run(0, 10);
+    int bent = 0;
+    frame.scene.registry().view<const engine::scene::VertexOverride>().each(
+        [&](engine::ecs::Entity, const engine::scene::VertexOverride&) { ++bent; });
+    ASSERT_GT(bent, 0) << "no plant bent: the case is not exercised";
+    EXPECT_EQ(motionCopiesDrawn(frame), 0)
+        << "motion copies made for " << transparency::techniqueName(frame.renderer.technique());
+
+    frame.renderer.setTechnique(transparency::TechniqueKind::HashedTaa);
+    ASSERT_TRUE(frame.renderer.needsMotionVectors());
+    frame.run(10, 20);
+    EXPECT_GT(motionCopiesDrawn(frame), 0) << "hashed+taa reads motion vectors, the wind made none";
+    // The car moves rigidly (engine/scene rigid_motion.hpp): its opaque batches carry its motion.
+    const engine::scene::VertexOverride* car =
+        frame.scene.registry().tryGet<engine::scene::VertexOverride>(frame.scene.car());
+    ASSERT_NE(car, nullptr) << "the car has no motion copy under hashed+taa";
+    EXPECT_TRUE(std::any_of(car->motionBuffers.begin(), car->motionBuffers.end(),
+                            [](engine::render::BufferHandle b) { return bool(b); }));
+    frame.run(30, 1, CameraMode::Chase, /*paused=*/true);
+    const int createsBefore = backend.creates;
+    frame.run(30, 20, CameraMode::Chase, /*paused=*/true);
+    EXPECT_EQ(backend.creates - createsBefore, 0) << "textures or buffers created in 20 steady hashed+taa frames";
 }
 
 // Counts the textures created through it.

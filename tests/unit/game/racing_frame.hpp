@@ -7,6 +7,7 @@
 #include "camera_rig.hpp"
 #include "content_dir.hpp"
 #include "engine/scene/draw_lists.hpp"
+#include "engine/scene/rigid_motion.hpp"
 #include "failing_backend.hpp"
 #include "frame_renderer.hpp"
 #include "living_scene.hpp"
@@ -44,7 +45,8 @@ struct RacingFrame {
                 engine::scene::selectLevelsOfDetail(
                     scene.registry(), scene.library(),
                     {view.eye, engine::scene::focalPixels(view.projection, kHeight), 0.1f, racer::kLodCrossfade});
-            living.update(time, dt, view);
+            living.update(time, dt, view, renderer.needsMotionVectors());
+            rigidMotion.update(scene.registry(), renderer.needsMotionVectors());
             renderer.render(engine::scene::extractDrawLists(scene.registry(), scene.library(), view.viewProj, view.eye),
                             view);
         }
@@ -54,6 +56,7 @@ struct RacingFrame {
     bool lod;
     FrameRenderer renderer;
     LivingScene living;
+    engine::scene::RigidMotion rigidMotion{scene.library()};
 };
 
 // A steady frame is one the frame before it needed as much as: here the paused scene (the

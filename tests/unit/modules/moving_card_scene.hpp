@@ -2,7 +2,9 @@
 #pragma once
 // A card that moves under a still camera, drawn by a temporal technique frame after frame,
 // with or without motion vectors (MaskedBatch::motionVertices: previous minus current position
-// in each vertex's normal): the scene of the motion-vector tests on soft, GL and Vulkan.
+// in each vertex's normal): the scene of the motion-vector tests on soft, GL and Vulkan. The
+// card is foliage (the technique draws it), or an opaque box seen face on (Surface::Opaque: the
+// opaque pass draws it with OpaqueLit, and it moves as FoliageFrame::movingOpaque, as the car does).
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -21,14 +23,26 @@ public:
     static constexpr int kSize = 64;
     static constexpr float kPixel = 2.0f / kSize;  // one pixel in NDC, exact
 
-    // `alpha`: the card's vertex alpha; its colour is a ramp in red across it, so that a
-    // history fetched from the wrong place is seen inside the card as well as along its edges.
-    MovingCardScene(engine::render::Backend& backend, TechniqueKind kind, float alpha, bool motionVectors)
+    enum class Surface { Foliage, Opaque };
+
+    // `alpha`: the card's vertex alpha (1 for an opaque box); its colour is a ramp in red across
+    // it, so that a history fetched from the wrong place is seen inside the card as well as
+    // along its edges.
+    MovingCardScene(engine::render::Backend& backend, TechniqueKind kind, float alpha, bool motionVectors,
+                    Surface surface = Surface::Foliage)
         : backend_(backend), technique_(createTechnique(kind, backend, options(motionVectors))),
           opaque_(backend, {kSize, kSize, technique_->opaqueSamples(), engine::render::Format::RGBA32F,
                             engine::render::CompareFunc::Less}),
-          alpha_(alpha) {
+          alpha_(surface == Surface::Opaque ? 1.0f : alpha), surface_(surface) {
         using namespace engine::render;
+        if (surface_ == Surface::Opaque) {
+            PipelineDesc p;
+            p.name = "moving box";
+            p.program = ProgramKind::OpaqueLit;
+            p.depth = DepthState::testAndWrite(CompareFunc::Less);
+            boxPipeline_ = backend.createPipeline(p);
+            draw_.alphaCutoff = 0.0f;
+        }
         const std::vector<Vertex> rest = vertices(0.0f, 0.0f);
         const auto bytes = std::as_bytes(std::span(rest));
         vertices_ = backend.createBuffer({"card", BufferKind::Vertex, bytes.size()}, bytes);
@@ -37,6 +51,7 @@ public:
         draw_.batch.count = 6;
     }
     ~MovingCardScene() {
+        if (boxPipeline_) backend_.destroy(boxPipeline_);
         backend_.destroy(vertices_);
         backend_.destroy(motion_);
     }
@@ -58,12 +73,23 @@ public:
         previous_ = offset;
         draw_.batch.worldBounds = {{-0.5f + offset, -0.5f, 0.5f}, {0.5f + offset, 0.5f, 0.5f}};
         draw_.meshBounds = draw_.batch.worldBounds;
-        backend_.beginPass(opaque_.passDesc({0.1f, 0.2f, 0.3f, 1.0f}));
-        backend_.endPass();
         FoliageFrame f;
         f.viewProj = jitteredViewProj(glm::mat4(1.0f), technique_->projectionJitter(index), kSize, kSize);
         f.light = unlitLight();
-        f.draws = std::span(&draw_, 1);
+        backend_.beginPass(opaque_.passDesc({0.1f, 0.2f, 0.3f, 1.0f}));
+        if (surface_ == Surface::Opaque) {
+            DrawDesc box;
+            box.pipeline = boxPipeline_;
+            SurfaceParams params;
+            params.viewProj = f.viewProj;
+            params.light = f.light;
+            box.params = params;
+            box.vertices = vertices_;
+            box.count = 6;
+            backend_.draw(box);
+        }
+        backend_.endPass();
+        (surface_ == Surface::Opaque ? f.movingOpaque : f.draws) = std::span(&draw_, 1);
         f.frameIndex = index;
         test_support::runTechnique(backend_, *technique_, opaque_, f);
         return backend_.readback(opaque_.color());
@@ -96,6 +122,8 @@ private:
     std::unique_ptr<Technique> technique_;
     engine::render::FrameTargets opaque_;
     float alpha_;
+    Surface surface_;
+    engine::render::PipelineHandle boxPipeline_;
     engine::render::BufferHandle vertices_, motion_;
     FoliageDraw draw_;
     float previous_ = 0.0f;

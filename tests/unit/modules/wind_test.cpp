@@ -34,6 +34,7 @@ struct WindScene {
     scene::ModelId plant = wind::testing::addCardPlant(library);
     wind::WindSystem system{library};
     glm::vec3 eye{0.0f, 2.0f, -10.0f};
+    bool motionVectors = true;  // a temporal technique with motion vectors runs (WindFrame::motionVectors)
 
     WindScene() { registry.add<wind::Wind>(registry.create()); }
 
@@ -44,7 +45,7 @@ struct WindScene {
         return e;
     }
     void step(float time, float dt) {
-        system.setFrame({time, dt, eye, viewProjFrom(eye, eye + glm::vec3(0, 0, 1)), true});
+        system.setFrame({time, dt, eye, viewProjFrom(eye, eye + glm::vec3(0, 0, 1)), true, motionVectors});
         system.update(registry);
     }
     glm::vec3 world(ecs::Entity e, const render::Vertex& v) {
@@ -279,6 +280,40 @@ TEST(Wind, TheMotionCopyHoldsEachVertexsMotionSinceThePreviousFrame) {
     for (const scene::DrawBatch& b : lists.mask)
         if (b.vertices == override.buffers[0]) found = b.motionVertices == override.motionBuffers[0];
     EXPECT_TRUE(found) << "the plant's own batch carries its motion copy";
+}
+
+// No technique reads motion vectors (none with history runs): the wind bends the plant the
+// same, but computes, uploads and makes a buffer for no motion copy; asked again, the copy is
+// back, with the motion since the frame drawn before.
+TEST(Wind, NoMotionCopyWithoutATechniqueThatReadsMotion) {
+    WindScene with, without;
+    without.motionVectors = false;
+    const ecs::Entity e = with.addPlant({0, 0, 0}), f = without.addPlant({0, 0, 0});
+    with.system.attach(with.registry);
+    without.system.attach(without.registry);
+    for (int i = 0; i < 3; ++i) {
+        with.step(0.5f + 0.1f * float(i), 0.1f);
+        without.step(0.5f + 0.1f * float(i), 0.1f);
+        EXPECT_GT(with.system.stats().motionCopies, 0u);
+        EXPECT_EQ(without.system.stats().motionCopies, 0u);
+    }
+    const auto bent = with.system.deformed(e, 0), bentToo = without.system.deformed(f, 0);
+    ASSERT_EQ(bent.size(), bentToo.size());
+    EXPECT_EQ(std::memcmp(bent.data(), bentToo.data(), bent.size() * sizeof(render::Vertex)), 0);
+    EXPECT_TRUE(without.system.motion(f, 0).empty());
+    const auto& override = without.registry.get<scene::VertexOverride>(f);
+    for (render::BufferHandle b : override.motionBuffers) EXPECT_FALSE(b);
+    const scene::DrawLists lists = scene::extractDrawLists(
+        without.registry, without.library, viewProjFrom(without.eye, without.eye + glm::vec3(0, 0, 1)), without.eye);
+    for (const scene::DrawBatch& b : lists.mask) EXPECT_FALSE(b.motionVertices);
+
+    const std::vector<render::Vertex> drawn(bentToo.begin(), bentToo.end());
+    without.motionVectors = true;
+    without.step(0.8f, 0.1f);
+    const auto now = without.system.deformed(f, 0), motion = without.system.motion(f, 0);
+    ASSERT_EQ(motion.size(), now.size());
+    for (std::size_t i = 0; i < now.size(); ++i) EXPECT_EQ(motion[i].normal, drawn[i].position - now[i].position) << i;
+    EXPECT_TRUE(without.registry.get<scene::VertexOverride>(f).motionBuffers.at(0));
 }
 
 // The same frames give the same bits, for 1 and 2 threads.

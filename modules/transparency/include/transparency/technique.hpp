@@ -57,6 +57,10 @@ struct FoliageFrame {
     // temporal pass keeps its history only from one index to the next.
     std::uint64_t frameIndex = 0;
     bool cut = false;  // the camera jumped: temporal techniques drop their history
+    // Opaque draws that moved (the car; engine/scene rigid_motion.hpp), drawn by the host's
+    // opaque pass: each batch's vertices and motionVertices, its instances, cutoff 0. Only the
+    // temporal pass reads them, to write their motion (transparency/temporal.hpp).
+    std::span<const FoliageDraw> movingOpaque;
 };
 
 // What the exact reference found in its last frame (Technique::referenceReport).
@@ -91,6 +95,10 @@ struct TechniqueTraits {
     // projection by haltonJitter(i, jitterPhases) (Technique::projectionJitter).
     bool temporal = false;
     int jitterPhases = 1;
+    // The technique reads the draws' motion vectors (MaskedBatch::motionVertices: a temporal
+    // technique with TemporalOptions::motionVectors): only then need the features that move
+    // vertices (the wind) make their motion copies (scene::SimulationFrame::motionVectors).
+    bool motionVectors = false;
 };
 
 // A technique runs its frame one way only, as passes added to the caller's frame graph
@@ -104,6 +112,7 @@ public:
     TechniqueKind kind() const { return traits_.kind; }
     int opaqueSamples() const { return traits_.opaqueSamples; }
     bool needsHistory() const { return traits_.temporal; }
+    bool needsMotionVectors() const { return traits_.motionVectors; }
     // The sub-pixel offset, in pixels, the caller moves frame `frameIndex`'s projection by,
     // for the opaque pass and FoliageFrame::viewProj alike (transparency/temporal.hpp
     // jitteredViewProj); zero but for temporal techniques.

@@ -9,8 +9,9 @@
 // Temporal Supersampling", SIGGRAPH Advances in Real-Time Rendering; Yang et al. 2020, "A Survey
 // of Temporal Antialiasing Techniques", EG STAR).
 //
-// Motion within the scene (wind, collision bend) comes from motion vectors: a draw whose batch
-// has MaskedBatch::motionVertices (each vertex's previous minus current position) writes that
+// Motion within the scene (wind, collision bend, the car) comes from motion vectors: a draw
+// whose batch has MaskedBatch::motionVertices (each vertex's previous minus current position;
+// foliage, or an opaque draw of FoliageFrame::movingOpaque) writes that
 // motion, in world space, into a motion target (FoliageMotion, after the technique's frame,
 // depth-tested against the depth it left and alpha-tested at the material's cutoff), and the
 // pixels it covers fetch their history from where their surface was: the previous camera's

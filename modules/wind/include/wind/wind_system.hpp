@@ -11,11 +11,13 @@
 // are kept for the next plant of the same part, so driving along the track creates no
 // buffer once as many plants as are ever active at once have been (racer's FramePooling test).
 //
-// Each deformed part also has a motion copy (VertexOverride::motionBuffers): the same vertices
-// with each normal the vertex's previous minus current position, for the temporal pass's
-// motion vectors (transparency/temporal.hpp). The previous positions are the part's vertices
+// While the frame asks for motion vectors (WindFrame::motionVectors: a temporal technique that
+// reads them runs), each deformed part also has a motion copy (VertexOverride::motionBuffers):
+// the same vertices with each normal the vertex's previous minus current position, for the
+// temporal pass (transparency/temporal.hpp). The previous positions are the part's vertices
 // before this frame's deformation (the rest mesh for a plant that just became active, which was
-// drawn at rest), kept in a buffer of the part's size that is reused every frame.
+// drawn at rest), kept in a buffer of the part's size that is reused every frame. Without the
+// request no motion is computed, uploaded or given a buffer.
 //
 // Deterministic: the result is a function of the registry, the frame's time and dt, and
 // does not depend on the number of threads (plants are deformed independently, oneTBB).
@@ -49,13 +51,16 @@ struct WindFrame {
     float dt = 0.0f;
     glm::vec3 eye{0.0f};
     glm::mat4 viewProj{1.0f};
-    bool hasView = false;  // false: no view-volume culling (everything near counts as visible)
+    bool hasView = false;        // false: no view-volume culling (everything near counts as visible)
+    bool motionVectors = false;  // make the motion copies (scene::SimulationFrame::motionVectors)
 };
 
 struct WindStats {
     std::size_t plantsDeformed = 0;    // this update
     std::size_t verticesDeformed = 0;  // this update
-    // Buffers count a part's pair (its deformed copy and its motion copy) as one.
+    std::size_t motionCopies = 0;      // this update: parts given a motion copy
+    // Buffers count a part's pair (its deformed copy and its motion copy) as one; a part's
+    // motion buffer is made the first time it is asked for, and travels with its pair.
     std::size_t buffersCreated = 0;   // since construction
     std::size_t buffersReused = 0;    // since construction: a spare of the same part, no create
     std::size_t buffersReleased = 0;  // since construction: given back (kept as spares)
@@ -84,11 +89,12 @@ public:
     // The deformed vertices of `e`'s part `i` (index into partsOf(model)), empty when the
     // plant is not deformed; for tests.
     std::span<const engine::render::Vertex> deformed(engine::ecs::Entity e, std::size_t i) const;
-    // Its motion copy (deformed(), each normal the previous minus current position); for tests.
+    // Its motion copy (deformed(), each normal the previous minus current position), empty
+    // without WindFrame::motionVectors; for tests.
     std::span<const engine::render::Vertex> motion(engine::ecs::Entity e, std::size_t i) const;
 
 private:
-    // A part's vertex buffers: the deformed copy and its motion copy.
+    // A part's vertex buffers: the deformed copy and its motion copy (null until one is asked for).
     struct PartBuffers {
         engine::render::Owned<engine::render::BufferHandle> vertices;
         engine::render::Owned<engine::render::BufferHandle> motion;
@@ -98,7 +104,7 @@ private:
         std::uint32_t part = 0;  // library part
         bool flutter = false;    // leaf cards (alpha-tested parts) flutter; trunks only bend
         std::vector<engine::render::Vertex> vertices;
-        std::vector<engine::render::Vertex> motion;  // vertices, each normal previous - current position
+        std::vector<engine::render::Vertex> motion;  // vertices, each normal previous - current; or empty
         std::vector<glm::vec3> push;
         PartBuffers buffers;
         engine::scene::Aabb bounds;
@@ -113,6 +119,9 @@ private:
     void releasePlant(engine::ecs::Registry& registry, engine::ecs::Entity e, DeformedPlant& plant);
     // The buffers for a deformed copy of library part `part`: a spare pair, or a new one.
     PartBuffers partBuffers(std::uint32_t part, std::span<const engine::render::Vertex> vertices);
+    // A vertex buffer for library part `part` holding `vertices`, named "<part><what>".
+    engine::render::Owned<engine::render::BufferHandle> createBuffer(std::uint32_t part, const char* what,
+                                                                     std::span<const engine::render::Vertex> vertices);
     void destroySpares();
 
     const engine::scene::MeshLibrary& library_;

@@ -57,6 +57,10 @@ struct SimulationFrame {
     float dt = 0.0f;    // this step
     glm::vec3 eye{0.0f};
     glm::mat4 viewProj{1.0f};
+    // Whether this frame's draws are read with motion vectors (a temporal technique that uses
+    // them runs): only then does a feature that moves vertices (the wind) make their motion
+    // copies (render::MaskedBatch::motionVertices); without, it computes and uploads none.
+    bool motionVectors = false;
 };
 
 class Feature {
