@@ -38,12 +38,17 @@ struct CompositeKernel {
         glm::vec3 color(fetchTexel(*foliage, f.x, f.y));
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(color[c])) color[c] = 0.0f;
+        if (fades())
+            color = glm::mix(params.foliageClear, color, glm::smoothstep(params.colorFade.x, params.colorFade.y, m.r));
         return {color, blend};
     }
+    // Settings::colorFade is on: the colour is not the foliage texture's, so no fast path.
+    bool fades() const { return params.colorFade.y > params.colorFade.x; }
 
     // The rasterizer's composite fast path (raster::hasCompositeHooks): shade()'s alpha, read
     // channel by channel.
-    const engine::render::soft::SoftTexture* compositeColor() const { return foliage; }
+    // None (the general path, shade()) when the colour fades.
+    const engine::render::soft::SoftTexture* compositeColor() const { return fades() ? nullptr : foliage; }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
         using engine::render::soft::texelChannel;
         const float maxMask = texelChannel(*mask, x, y, 0);

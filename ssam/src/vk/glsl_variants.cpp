@@ -68,9 +68,9 @@ layout(location = 2) in vec4 v_color;
 )";
 
 // Set 0: rt_foliage, the mask and the second mask target (the mask again when there is none);
-// push constants: maskLerp at 0, squareMask at 4, hasMaskAdd at 8. Settings::depthMaskThreshold's
-// pass (restore.frag) adds the saved opaque depth at binding 3 and the threshold at 12 (one
-// push-constant block per shader, hence `extra`).
+// push constants: maskLerp at 0, squareMask at 4, hasMaskAdd at 8, colorFade at 16, foliageClear
+// at 32. Settings::depthMaskThreshold's pass (restore.frag) adds the saved opaque depth at binding 3
+// and the threshold at 12 (one push-constant block per shader, hence `extra`, in offset order).
 std::string compositeInterface(const char* extra) {
     return std::string(R"(#version 450
 #define PRECISE precise
@@ -82,8 +82,12 @@ layout(push_constant, std430) uniform SsamComposite {
     layout(offset = 4) uint squareMask;
     layout(offset = 8) uint hasMaskAdd;
 )") + extra +
-           R"(} u_composite;
+           R"(    layout(offset = 16) vec2 colorFade;
+    layout(offset = 32) vec3 foliageClear;
+} u_composite;
 #define u_maskLerp u_composite.maskLerp
+#define u_colorFade u_composite.colorFade
+#define u_foliageClear u_composite.foliageClear
 #define u_squareMask (u_composite.squareMask != 0u)
 #define u_maskAddBound (u_composite.hasMaskAdd != 0u)
 )";

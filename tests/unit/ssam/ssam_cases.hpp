@@ -155,6 +155,31 @@ TYPED_TEST_P(SsamCases, SquaringAndLerpChangeTheResultAsTheFormulaSays) {
     EXPECT_LT(overlapRed(maxOnly), overlapRed(squared));
 }
 
+// Settings::colorFade: a leaf whose alpha crosses the colour reference (64/255) between two frames
+// changes the pixel by about alpha * |leaf - clear colour| without the fade (the colour pass's
+// step, §3.5.3), by no more than its mask's change with it; past reference + fade the picture is
+// the step's.
+TYPED_TEST_P(SsamCases, ColourFadeKeepsALeafCrossingTheReferenceFromJumping) {
+    auto red = [](float alpha, float fade) {
+        Frame<TypeParam> f;
+        f.opaquePass();
+        ssam::Settings config;
+        config.squareMask = false;
+        config.colorFade = fade;
+        ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
+        QuadBatches q(*f.backend, {{-1.0f, -1.0f, 1.0f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, alpha}}});
+        test_support::runSsam(ssam, f.targets(), viewOf(q));
+        return f.backend->readback(f.opaque.color()).at(kOverlap, 4, 0);
+    };
+    const float below = 60.0f / 255.0f, above = 68.0f / 255.0f;
+    const float step = std::abs(red(above, 0.0f) - red(below, 0.0f));
+    const float faded = std::abs(red(above, 0.5f) - red(below, 0.5f));
+    EXPECT_GT(step, 0.15f);  // 0.267 * 1 - 0.235 * 0.16 with the opaque's 0.2 mixed out
+    EXPECT_LT(faded, 0.02f);
+    EXPECT_NEAR(red(0.9f, 0.5f), red(0.9f, 0.0f), TypeParam::kBlendTolerance);
+    EXPECT_NEAR(red(below, 0.5f), red(below, 0.0f), TypeParam::kBlendTolerance);  // the clear colour either way
+}
+
 TYPED_TEST_P(SsamCases, Rgba8AddMaskSaturatesWhereFloatMasksDoNot) {
     constexpr int kLayers = 12;  // 12 layers of alpha 0.1: ADD = 1.2
     std::vector<Quad> quads;
@@ -287,6 +312,9 @@ TYPED_TEST_P(SsamCases, BadConfigurationIsRejectedWithTheKnobName) {
     c.depthMaskThreshold = 2.0f;
     expectError(c, "depthMaskThreshold");
     c = {};
+    c.colorFade = -0.5f;
+    expectError(c, "colorFade");
+    c = {};
     c.depthTest = static_cast<ssam::DepthTest>(9);
     expectError(c, "depthTest");
 }
@@ -340,6 +368,7 @@ TYPED_TEST_P(SsamCases, DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskReach
 
 REGISTER_TYPED_TEST_SUITE_P(SsamCases, CrossingQuadsGiveMaxAndAddMasks, ColourPassAlphaTestsAndWritesFoliageDepth,
                             CompositeFollowsListing32, SquaringAndLerpChangeTheResultAsTheFormulaSays,
+                            ColourFadeKeepsALeafCrossingTheReferenceFromJumping,
                             Rgba8AddMaskSaturatesWhereFloatMasksDoNot, OpaqueGeometryOccludesFoliageInEveryPass,
                             FoliageDepthOccludesLaterDrawsBehindNotInFront, NoFoliageInViewRunsNoPass,
                             ClosestSampleDepthResolveWithMsaaOpaquePass, MaskProgramIgnoresColour,

@@ -43,6 +43,12 @@ struct Settings {
     // round it. Above 0: those edges take the later pass, for a copy of the depth and one
     // full-screen depth pass (ssam/README.md, "Later transparent passes").
     float depthMaskThreshold = 0.0f;
+    // The composite fades the colour pass's colour in from foliageClearColor as the MAX mask goes
+    // from colorAlphaReference to colorAlphaReference + colorFade (smoothstep), so a leaf whose
+    // alpha crosses the reference (§3.5.3) changes the picture continuously instead of by its
+    // alpha times |leaf - clear colour| in one frame (ssam/docs/steady_in_motion.md). 0 (the
+    // paper's): the step. In [0, 1].
+    float colorFade = 0.0f;
 };
 
 // "" when every knob is usable, else what is wrong, naming the knob and its value
