@@ -236,7 +236,8 @@ CompositeParams ScreenSpaceAlphaMask::compositeParams(const Intermediates& targe
             settings_.maskLerp,
             settings_.squareMask,
             {fade.start, fade.end},
-            {fade.clearColor[0], fade.clearColor[1], fade.clearColor[2]}};
+            {fade.clearColor[0], fade.clearColor[1], fade.clearColor[2]},
+            settings_.colorBlur};
 }
 
 void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color, const Intermediates& targets) {

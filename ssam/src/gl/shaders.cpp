@@ -69,7 +69,9 @@ uniform float u_maskLerp;
 uniform bool u_squareMask;
 uniform vec2 u_colorFade;
 uniform vec3 u_foliageClear;
-)") + ssam::glsl::kCompositeMask + ssam::glsl::kComposite;
+uniform bool u_colorBlur;
+)") + ssam::glsl::kCompositeMask + ssam::glsl::kCompositeBlur +
+                                   ssam::glsl::kComposite;
 
 const std::string kCompositeFragment = kCompositeHead + R"(
 layout(location = 0) out vec4 o_color;
@@ -85,7 +87,8 @@ void CompositeInputs::locate(const detail::GlFunctions& gl, unsigned int program
                             {&maskLerp, "u_maskLerp"},
                             {&square, "u_squareMask"},
                             {&colorFade, "u_colorFade"},
-                            {&foliageClear, "u_foliageClear"}});
+                            {&foliageClear, "u_foliageClear"},
+                            {&colorBlur, "u_colorBlur"}});
 }
 
 void CompositeInputs::set(const detail::GlFunctions& gl, int foliageUnit, bool withMaskAdd,
@@ -99,6 +102,7 @@ void CompositeInputs::set(const detail::GlFunctions& gl, int foliageUnit, bool w
     const core::ColorFade fade = core::colorFadeOf(settings);
     gl.Uniform2f(colorFade, fade.start, fade.end);
     gl.Uniform3fv(foliageClear, 1, fade.clearColor);
+    gl.Uniform1i(colorBlur, settings.colorBlur ? 1 : 0);
 }
 
 }  // namespace ssam::gl::shaders

@@ -383,7 +383,8 @@ void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
                                      g.key.maskPair() ? 1u : 0u,
                                      settings.depthMaskThreshold,
                                      {fade.start, fade.end},
-                                     {0.0f, 0.0f},
+                                     settings.colorBlur ? 1u : 0u,
+                                     0u,
                                      {fade.clearColor[0], fade.clearColor[1], fade.clearColor[2]}};
     vk.CmdPushConstants(cb, shared.compositeLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, detail::kCompositePushSize, &push);
     vk.CmdDraw(cb, 3, 1, 0, 0);

@@ -13,7 +13,7 @@
 namespace ssam::vk::detail {
 
 // Push constants of the foliage programs (glsl_variants.cpp: model 0, factor 64, hasTexture 80)
-// and of the composite (maskLerp 0, squareMask 4, hasMaskAdd 8, colorFade 16, foliageClear 32;
+// and of the composite (maskLerp 0, squareMask 4, hasMaskAdd 8, colorFade 16, colorBlur 24, foliageClear 32;
 // the depth restore also reads threshold at 12).
 inline constexpr std::uint32_t kFoliagePushSize = 84;
 inline constexpr std::uint32_t kCompositePushSize = 44;

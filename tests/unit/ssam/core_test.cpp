@@ -24,13 +24,14 @@ void expectSameKnobs(const ssam::Settings& a, const ssam::Settings& b) {
     EXPECT_EQ(a.depthTest, b.depthTest);
     EXPECT_EQ(a.depthMaskThreshold, b.depthMaskThreshold);
     EXPECT_EQ(a.colorFade, b.colorFade);
+    EXPECT_EQ(a.colorBlur, b.colorBlur);
 }
 
 TEST(SsamCore, SettingsHoldEveryKnobOnce) {
     // A knob added to Settings must reach the engine-hosted SSAM, ssam::gl and ssam::vk (each
     // translates describePasses() or reads the knob) and expectSameKnobs above: this size is the
     // reminder, changed together with them.
-    EXPECT_EQ(sizeof(ssam::Settings), 36u);
+    EXPECT_EQ(sizeof(ssam::Settings), 40u);
 }
 
 TEST(SsamCore, PaperIsTheDefaultSettings) {
@@ -51,6 +52,7 @@ TEST(SsamCore, MeasuredChangesOnlyTheMaskKnobsAndIsValid) {
     EXPECT_EQ(measured.depthTest, paper.depthTest);
     EXPECT_EQ(measured.depthMaskThreshold, paper.depthMaskThreshold);
     EXPECT_EQ(measured.colorFade, paper.colorFade);  // off: ssam/docs/steady_in_motion.md
+    EXPECT_EQ(measured.colorBlur, paper.colorBlur);
 }
 
 TEST(SsamCore, PresetNamesRoundTripAndUnknownNamesAreRefused) {
