@@ -137,10 +137,10 @@ void applySsamSetting(ssam::Settings& c, const std::string& item) {
     const std::string name = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
     if (eq == std::string::npos || value.empty())
         throw engine::UsageError("--ssam-setting '" + item + "': expected NAME=VALUE, e.g. colorAlphaReference=0.5");
-    if (name == "squareMask") {
+    if (name == "squareMask" || name == "colorBlur") {
         if (value != "on" && value != "off")
-            throw engine::UsageError("--ssam-setting: '" + value + "' for squareMask (known: on, off)");
-        c.squareMask = value == "on";
+            throw engine::UsageError("--ssam-setting: '" + value + "' for " + name + " (known: on, off)");
+        (name == "squareMask" ? c.squareMask : c.colorBlur) = value == "on";
     } else if (name == "maskLerp") {
         c.maskLerp = parseNumber(value, "--ssam-setting");
     } else if (name == "colorAlphaReference") {
@@ -149,7 +149,7 @@ void applySsamSetting(ssam::Settings& c, const std::string& item) {
         c.colorFade = parseNumber(value, "--ssam-setting");
     } else {
         throw engine::UsageError("--ssam-setting: unknown knob '" + name +
-                                 "' (known: maskLerp, colorAlphaReference, colorFade, squareMask)");
+                                 "' (known: maskLerp, colorAlphaReference, colorFade, squareMask, colorBlur)");
     }
     validateKnob(c, "--ssam-setting");
 }
@@ -390,9 +390,10 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
            "within 1.25x the paper's time; ssam/docs/knobs.md)")
         ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
         ->capture_default_str();
-    app.add_option("--ssam-setting", o.ssamSettings,
-                   "NAME=VALUE, repeatable: one of techniques ssam's and ssam+taa's knobs over the preset's (maskLerp, "
-                   "colorAlphaReference, colorFade in [0,1], squareMask on/off; ssam/docs/steady_in_motion.md)");
+    app.add_option(
+        "--ssam-setting", o.ssamSettings,
+        "NAME=VALUE, repeatable: one of techniques ssam's and ssam+taa's knobs over the preset's (maskLerp, "
+        "colorAlphaReference, colorFade in [0,1], squareMask, colorBlur on/off; ssam/docs/steady_in_motion.md)");
     app.add_option("--ssam-plus-blur", o.ssamPlusBlur,
                    "technique ssam-plus's composite averages the foliage colour over 3x3 (on) or takes the pixel's "
                    "own (off; ssam/docs/ssam_plus.md)")
