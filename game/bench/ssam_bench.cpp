@@ -77,6 +77,7 @@ struct Options {
     std::string motion;  // --motion: empty, or a list of pan, dolly, wind
     int motionFrames = 32;
     std::string motionVectors = "on";
+    std::vector<std::string> ssamSettings;  // --ssam-setting NAME=VALUE, over the preset's knobs
 };
 
 std::vector<std::string> splitList(const std::string& list, const char* flag) {
@@ -128,6 +129,30 @@ float parseNumber(const std::string& item, const char* flag) {
 void validateKnob(const ssam::Settings& c, const char* flag) {
     if (const std::string error = ssam::settingsError(c); !error.empty())
         throw engine::UsageError(std::string(flag) + ": " + error);
+}
+
+// --ssam-setting NAME=VALUE: one knob of ssam::Settings over the preset's, checked by
+// ssam::settingsError (the steadiness ideas are measured this way: ssam/docs/steady_in_motion.md).
+void applySsamSetting(ssam::Settings& c, const std::string& item) {
+    const std::size_t eq = item.find('=');
+    const std::string name = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+    if (eq == std::string::npos || value.empty())
+        throw engine::UsageError("--ssam-setting '" + item + "': expected NAME=VALUE, e.g. colorAlphaReference=0.5");
+    if (name == "squareMask" || name == "colorBlur") {
+        if (value != "on" && value != "off")
+            throw engine::UsageError("--ssam-setting: '" + value + "' for " + name + " (known: on, off)");
+        (name == "squareMask" ? c.squareMask : c.colorBlur) = value == "on";
+    } else if (name == "maskLerp") {
+        c.maskLerp = parseNumber(value, "--ssam-setting");
+    } else if (name == "colorAlphaReference") {
+        c.colorAlphaReference = parseNumber(value, "--ssam-setting");
+    } else if (name == "colorFade") {
+        c.colorFade = parseNumber(value, "--ssam-setting");
+    } else {
+        throw engine::UsageError("--ssam-setting: unknown knob '" + name +
+                                 "' (known: maskLerp, colorAlphaReference, colorFade, squareMask, colorBlur)");
+    }
+    validateKnob(c, "--ssam-setting");
 }
 
 SweepGrid parseSweepGrid(const Options& o) {
@@ -185,8 +210,10 @@ BenchOptions parse(const Options& o) {
     }
     // Technique ssam's knobs (CLI11 checked the name); the sweep's settings carry their own.
     for (BenchSubject& subject : b.subjects)
-        if (subject.kind == transparency::TechniqueKind::Ssam)
+        if (subject.kind == transparency::TechniqueKind::Ssam || subject.kind == transparency::TechniqueKind::SsamTaa) {
             subject.options.ssam = ssam::presetSettings(*ssam::parsePreset(o.ssamPreset));
+            for (const std::string& item : o.ssamSettings) applySsamSetting(subject.options.ssam, item);
+        }
     for (BenchSubject& subject : b.subjects)
         if (subject.kind == transparency::TechniqueKind::SsamPlus)
             subject.options.ssamPlus.compositeBlur = o.ssamPlusBlur == "on";
@@ -367,11 +394,16 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
                        ") or all; with --sweep, the ones measured beside the settings (default there: "
                        "alpha-test,ssam-plus; or none)")
         ->capture_default_str();
-    app.add_option("--ssam-preset", o.ssamPreset,
-                   "technique ssam's knobs: paper ([Hathaway 2010]'s values) or measured (the knob sweep's best "
-                   "within 1.25x the paper's time; ssam/docs/knobs.md)")
+    app.add_option(
+           "--ssam-preset", o.ssamPreset,
+           "techniques ssam's and ssam+taa's knobs: paper ([Hathaway 2010]'s values) or measured (the knob sweep's best "
+           "within 1.25x the paper's time; ssam/docs/knobs.md)")
         ->check(CLI::IsMember({ssam::presetName(ssam::Preset::Paper), ssam::presetName(ssam::Preset::Measured)}))
         ->capture_default_str();
+    app.add_option(
+        "--ssam-setting", o.ssamSettings,
+        "NAME=VALUE, repeatable: one of techniques ssam's and ssam+taa's knobs over the preset's (maskLerp, "
+        "colorAlphaReference, colorFade in [0,1], squareMask, colorBlur on/off; ssam/docs/steady_in_motion.md)");
     app.add_option("--ssam-plus-blur", o.ssamPlusBlur,
                    "technique ssam-plus's composite averages the foliage colour over 3x3 (on) or takes the pixel's "
                    "own (off; ssam/docs/ssam_plus.md)")

@@ -35,15 +35,40 @@ struct CompositeKernel {
         if (params.squareMask) blend *= blend;  // the squared alpha trick (§3.6.2)
         // A non-finite foliage colour (NaN/Inf from HDR lighting or hostile data) would make
         // the blended result non-finite on float targets; it composites as black instead.
-        glm::vec3 color(fetchTexel(*foliage, f.x, f.y));
+        glm::vec3 color = params.colorBlur ? blurred(f.x, f.y) : glm::vec3(fetchTexel(*foliage, f.x, f.y));
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(color[c])) color[c] = 0.0f;
+        if (fades())
+            color = glm::mix(params.foliageClear, color, glm::smoothstep(params.colorFade.x, params.colorFade.y, m.r));
         return {color, blend};
+    }
+    // Settings::colorFade is on: the colour is not the foliage texture's, so no fast path.
+    bool fades() const { return params.colorFade.y > params.colorFade.x; }
+    // Settings::colorBlur: the written neighbours' colour weighted 1-2-1 by 1-2-1, summed in the
+    // GLSL's order (composite.glsl); the pixel's own where none was written.
+    glm::vec3 blurred(int x, int y) const {
+        using engine::render::soft::fetchTexel;
+        glm::vec3 sum(0.0f);
+        float weights = 0.0f;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int qx = x + dx, qy = y + dy;
+                if (qx < 0 || qy < 0 || qx >= foliage->desc.width || qy >= foliage->desc.height) continue;
+                const glm::vec4 c = fetchTexel(*foliage, qx, qy);
+                if (!(c.a > 0.0f)) continue;
+                const float weight = float((2 - dx * dx) * (2 - dy * dy));
+                sum += weight * glm::vec3(c);
+                weights += weight;
+            }
+        return weights > 0.0f ? sum / weights : glm::vec3(fetchTexel(*foliage, x, y));
     }
 
     // The rasterizer's composite fast path (raster::hasCompositeHooks): shade()'s alpha, read
     // channel by channel.
-    const engine::render::soft::SoftTexture* compositeColor() const { return foliage; }
+    // None (the general path, shade()) when the colour fades or is averaged.
+    const engine::render::soft::SoftTexture* compositeColor() const {
+        return fades() || params.colorBlur ? nullptr : foliage;
+    }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
         using engine::render::soft::texelChannel;
         const float maxMask = texelChannel(*mask, x, y, 0);

@@ -15,7 +15,7 @@ namespace {
 using namespace engine::render;
 
 std::string fragment() {
-    return std::string(engine_glsl::kCompositeHead) + glsl::kCompositeMask + glsl::kComposite +
+    return std::string(engine_glsl::kCompositeHead) + glsl::kCompositeMask + glsl::kCompositeBlur + glsl::kComposite +
            engine_glsl::kCompositeMain;
 }
 

@@ -229,7 +229,15 @@ void ScreenSpaceAlphaMask::colorPass(const FramePlan& plan, const FoliageView& v
 }
 
 CompositeParams ScreenSpaceAlphaMask::compositeParams(const Intermediates& targets) const {
-    return {targets.foliage, targets.mask, targets.maskAdd, settings_.maskLerp, settings_.squareMask};
+    const core::ColorFade fade = core::colorFadeOf(settings_);
+    return {targets.foliage,
+            targets.mask,
+            targets.maskAdd,
+            settings_.maskLerp,
+            settings_.squareMask,
+            {fade.start, fade.end},
+            {fade.clearColor[0], fade.clearColor[1], fade.clearColor[2]},
+            settings_.colorBlur};
 }
 
 void ScreenSpaceAlphaMask::compositePass(const FramePlan& plan, TextureHandle color, const Intermediates& targets) {

@@ -7,6 +7,7 @@
 #include "engine/render/kernel/program_kernel.hpp"
 #include "engine/render/shader_interface.hpp"
 #include "program_kernels.hpp"
+#include "ssam_glsl.hpp"          // generated from ssam/src/core/glsl/
 #include "transparency_glsl.hpp"  // generated from glsl/
 
 namespace transparency {
@@ -29,7 +30,8 @@ ProgramDesc coverageComposite(bool blur) {
         describeProgram<CoverageCompositeParams>(blur ? "CoverageBlurComposite" : "CoverageComposite",
                                                  VertexInput::Fullscreen, "transparency::CoverageCompositeParams");
     d.gl.fragment = samplerDeclarations(d.gl) + glsl::kLayerCoverage +
-                    (blur ? glsl::kCoverageBlurCompositeMain : glsl::kCoverageCompositeMain);
+                    (blur ? std::string(ssam::glsl::kCompositeBlur) + glsl::kCoverageBlurCompositeMain
+                          : std::string(glsl::kCoverageCompositeMain));
     d.check = [](const void* params, const DrawCheck& check) {
         const CoverageModel model = static_cast<const CoverageCompositeParams*>(params)->model;
         if (model != CoverageModel::EqualLayers && model != CoverageModel::Exponential)

@@ -62,25 +62,15 @@ public:
     // SSAM's targets are the graph's transients, made only when foliage is in view.
     std::vector<TransientTarget> transientTargets(int width, int height, Format colorFormat,
                                                   const FoliageFrame& frame) const override {
-        const std::vector<engine::render::MaskedBatch> batches = batchesOf(frame);
-        if (ssam_.cull(width, height, {frame.viewProj, frame.light, batches}).empty()) return {};
-        return ssamTransients(ssam_.intermediateDescs(width, height, colorFormat));
+        return ssamFrameTransients(ssam_, width, height, colorFormat, frame);
     }
     // Into `targets` (ssamTransients' order); none when no foliage is in view.
     void drawFrame(engine::render::FrameTargets& opaque, const FoliageFrame& frame,
                    std::span<const TextureHandle> targets) override {
-        opaque.resolve();
-        if (targets.empty()) return;
-        batches_ = batchesOf(frame);
-        const ssam::FoliageView view{frame.viewProj, frame.light, batches_};
-        const TextureDesc& color = backend_.describe(opaque.color());
-        const ssam::FramePlan plan = ssam_.cull(color.width, color.height, view);
-        if (plan.empty()) return;
-        const bool separateAdd = targets.size() == 3;
-        const ssam::Intermediates t{targets[0], separateAdd ? targets[1] : TextureHandle{}, targets.back(), {}};
-        ssam_.maskPass(plan, view, opaque.depth(), t);
-        ssam_.colorPass(plan, view, opaque.depth(), t);
-
+        const SsamLayers layers = drawSsamLayers(backend_, ssam_, opaque, frame, targets, batches_);
+        if (layers.plan.empty()) return;
+        const ssam::Intermediates& t = layers.targets;
+        const ssam::FramePlan& plan = layers.plan;
         compositeOnto(backend_, opaque, "ssam+ composite", composite_,
                       CoverageCompositeParams{t.foliage, t.mask, t.maskAdd, model_}, plan.compositeRegion);
     }

@@ -98,4 +98,14 @@ PassPlan describePasses(const Settings& settings) {
     return plan;
 }
 
+ColorFade colorFadeOf(const Settings& settings) {
+    ColorFade fade;
+    if (settings.colorFade > 0.0f) {
+        fade.start = settings.colorAlphaReference;
+        fade.end = settings.colorAlphaReference + settings.colorFade;
+    }
+    for (int c = 0; c < 3; ++c) fade.clearColor[c] = settings.foliageClearColor[c];
+    return fade;
+}
+
 }  // namespace ssam::core

@@ -32,6 +32,7 @@ std::string settingsError(const Settings& s) {
     if (!inUnitRange(s.maskLerp)) return outside("maskLerp", s.maskLerp);
     if (!inUnitRange(s.colorAlphaReference)) return outside("colorAlphaReference", s.colorAlphaReference);
     if (!inUnitRange(s.depthMaskThreshold)) return outside("depthMaskThreshold", s.depthMaskThreshold);
+    if (!inUnitRange(s.colorFade)) return outside("colorFade", s.colorFade);
     for (int c = 0; c < 4; ++c)
         if (!std::isfinite(s.foliageClearColor[c]))
             return "ssam settings: foliageClearColor[" + std::to_string(c) +

@@ -62,6 +62,7 @@ namespace ssam::gl::detail {
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                             \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                                                     \
     X(PFNGLUNIFORM1IPROC, Uniform1i)                                                     \
+    X(PFNGLUNIFORM2FPROC, Uniform2f)                                                     \
     X(PFNGLUNIFORM3FVPROC, Uniform3fv)                                                   \
     X(PFNGLUNIFORM4FPROC, Uniform4f)                                                     \
     X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                                       \

@@ -3,6 +3,7 @@
 
 #include "gl_functions.hpp"
 #include "gl_objects.hpp"
+#include "ssam/core/passes.hpp"
 #include "ssam_glsl.hpp"  // generated from core/glsl/
 
 namespace ssam::gl::shaders {
@@ -71,7 +72,11 @@ uniform sampler2D u_maskAdd;
 uniform bool u_maskAddBound;
 uniform float u_maskLerp;
 uniform bool u_squareMask;
-)") + ssam::glsl::kCompositeMask + ssam::glsl::kComposite;
+uniform vec2 u_colorFade;
+uniform vec3 u_foliageClear;
+uniform bool u_colorBlur;
+)") + ssam::glsl::kCompositeMask + ssam::glsl::kCompositeBlur +
+                                   ssam::glsl::kComposite;
 
 const std::string kCompositeFragment = kCompositeHead + R"(
 layout(location = 0) out vec4 o_color;
@@ -85,7 +90,10 @@ void CompositeInputs::locate(const detail::GlFunctions& gl, unsigned int program
                             {&maskAdd, "u_maskAdd"},
                             {&hasMaskAdd, "u_maskAddBound"},
                             {&maskLerp, "u_maskLerp"},
-                            {&square, "u_squareMask"}});
+                            {&square, "u_squareMask"},
+                            {&colorFade, "u_colorFade"},
+                            {&foliageClear, "u_foliageClear"},
+                            {&colorBlur, "u_colorBlur"}});
 }
 
 void CompositeInputs::set(const detail::GlFunctions& gl, int foliageUnit, bool withMaskAdd,
@@ -96,6 +104,10 @@ void CompositeInputs::set(const detail::GlFunctions& gl, int foliageUnit, bool w
     gl.Uniform1i(hasMaskAdd, withMaskAdd ? 1 : 0);
     gl.Uniform1f(maskLerp, settings.maskLerp);
     gl.Uniform1i(square, settings.squareMask ? 1 : 0);
+    const core::ColorFade fade = core::colorFadeOf(settings);
+    gl.Uniform2f(colorFade, fade.start, fade.end);
+    gl.Uniform3fv(foliageClear, 1, fade.clearColor);
+    gl.Uniform1i(colorBlur, settings.colorBlur ? 1 : 0);
 }
 
 }  // namespace ssam::gl::shaders

@@ -28,10 +28,11 @@ extern const std::string kCompositeFragment;  // Listing 3.2 as (foliage, mask) 
 // The uniforms kCompositeHead declares, in every program that starts with it (the composite and
 // the depth restore).
 struct CompositeInputs {
-    int foliage = -1, mask = -1, maskAdd = -1, hasMaskAdd = -1, maskLerp = -1, square = -1;
+    int foliage = -1, mask = -1, maskAdd = -1, hasMaskAdd = -1, maskLerp = -1, square = -1, colorFade = -1,
+        foliageClear = -1, colorBlur = -1;
     void locate(const detail::GlFunctions& gl, unsigned int program);
     // rt_foliage read from texture unit `foliageUnit`, the mask from unit 1 and the ADD mask (where
-    // `hasMaskAdd`) from unit 2; the settings' mask lerp and squaring. The program must be in use.
+    // `hasMaskAdd`) from unit 2; the settings' mask lerp, squaring, colour fade and blur. The program must be in use.
     void set(const detail::GlFunctions& gl, int foliageUnit, bool hasMaskAdd, const Settings& settings) const;
 };
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "../core/frame_rules.hpp"
+#include "ssam/core/passes.hpp"
 #include "bounds.hpp"
 #include "impl.hpp"
 
@@ -376,8 +377,15 @@ void ScreenSpaceAlphaMaskVk::Impl::compositeFrame() {
     vk.CmdSetScissor(cb, 0, 1, &scissor);  // only where the foliage can be
     vk.CmdBindDescriptorSets(cb, VK_PIPELINE_BIND_POINT_GRAPHICS, shared.compositeLayout, 0, 1, &g.compositeSet, 0,
                              nullptr);
-    const detail::CompositePush push{settings.maskLerp, settings.squareMask ? 1u : 0u, g.key.maskPair() ? 1u : 0u,
-                                     settings.depthMaskThreshold};
+    const core::ColorFade fade = core::colorFadeOf(settings);
+    const detail::CompositePush push{settings.maskLerp,
+                                     settings.squareMask ? 1u : 0u,
+                                     g.key.maskPair() ? 1u : 0u,
+                                     settings.depthMaskThreshold,
+                                     {fade.start, fade.end},
+                                     settings.colorBlur ? 1u : 0u,
+                                     0u,
+                                     {fade.clearColor[0], fade.clearColor[1], fade.clearColor[2]}};
     vk.CmdPushConstants(cb, shared.compositeLayout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, detail::kCompositePushSize, &push);
     vk.CmdDraw(cb, 3, 1, 0, 0);
     endPass(cb, g, detail::PassKind::Composite);

@@ -68,9 +68,9 @@ layout(location = 2) in vec4 v_color;
 )";
 
 // Set 0: rt_foliage, the mask and the second mask target (the mask again when there is none);
-// push constants: maskLerp at 0, squareMask at 4, hasMaskAdd at 8. Settings::depthMaskThreshold's
-// pass (restore.frag) adds the saved opaque depth at binding 3 and the threshold at 12 (one
-// push-constant block per shader, hence `extra`).
+// push constants: maskLerp at 0, squareMask at 4, hasMaskAdd at 8, colorFade at 16, colorBlur at
+// 24, foliageClear at 32. Settings::depthMaskThreshold's pass (restore.frag) adds the saved opaque depth at binding 3
+// and the threshold at 12 (one push-constant block per shader, hence `extra`, in offset order).
 std::string compositeInterface(const char* extra) {
     return std::string(R"(#version 450
 #define PRECISE precise
@@ -82,8 +82,14 @@ layout(push_constant, std430) uniform SsamComposite {
     layout(offset = 4) uint squareMask;
     layout(offset = 8) uint hasMaskAdd;
 )") + extra +
-           R"(} u_composite;
+           R"(    layout(offset = 16) vec2 colorFade;
+    layout(offset = 24) uint colorBlur;
+    layout(offset = 32) vec3 foliageClear;
+} u_composite;
 #define u_maskLerp u_composite.maskLerp
+#define u_colorFade u_composite.colorFade
+#define u_foliageClear u_composite.foliageClear
+#define u_colorBlur (u_composite.colorBlur != 0u)
 #define u_squareMask (u_composite.squareMask != 0u)
 #define u_maskAddBound (u_composite.hasMaskAdd != 0u)
 )";
@@ -130,10 +136,11 @@ int main(int argc, char** argv) {
         write(dir + "/fullscreen.vert",
               std::string("#version 450\n#define VERTEX_INDEX gl_VertexIndex\n") + ssam::glsl::kFullscreenVertexMain) &&
         write(dir + "/composite.frag", compositeInterface("") + "layout(location = 0) out vec4 o_color;\n" +
-                                           ssam::glsl::kCompositeMask + ssam::glsl::kComposite +
+                                           ssam::glsl::kCompositeMask + ssam::glsl::kCompositeBlur +
+                                           ssam::glsl::kComposite +
                                            "void main() { o_color = ssamComposite(ivec2(gl_FragCoord.xy)); }\n") &&
         write(dir + "/restore.frag", compositeInterface(kRestoreExtra) + kRestoreInterface +
-                                         ssam::glsl::kCompositeMask + ssam::glsl::kComposite +
-                                         ssam::glsl::kDepthRestoreMain);
+                                         ssam::glsl::kCompositeMask + ssam::glsl::kCompositeBlur +
+                                         ssam::glsl::kComposite + ssam::glsl::kDepthRestoreMain);
     return ok ? 0 : 1;
 }

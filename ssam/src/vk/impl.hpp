@@ -67,9 +67,14 @@ static_assert(sizeof(Constants) == 256 + 28 * 4, "Constants' layout is pipelines
 struct CompositePush {
     float maskLerp;
     std::uint32_t squareMask, hasMaskAdd;
-    float threshold;  // the depth restore only
+    float threshold;     // the depth restore only
+    float colorFade[2];  // core::ColorFade's start, end (std430: a vec2 at 16)
+    std::uint32_t colorBlur, pad;
+    float foliageClear[3];  // a vec3 at 32
 };
-static_assert(sizeof(CompositePush) == kRestorePushSize && offsetof(CompositePush, threshold) == kCompositePushSize);
+static_assert(sizeof(CompositePush) == kRestorePushSize && sizeof(CompositePush) == kCompositePushSize &&
+              offsetof(CompositePush, threshold) == 12 && offsetof(CompositePush, colorFade) == 16 &&
+              offsetof(CompositePush, colorBlur) == 24 && offsetof(CompositePush, foliageClear) == 32);
 
 // Where a frame is: each call of way (b) moves it one step, in this order only (the core's).
 using core::Phase;

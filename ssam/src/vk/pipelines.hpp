@@ -13,10 +13,11 @@
 namespace ssam::vk::detail {
 
 // Push constants of the foliage programs (glsl_variants.cpp: model 0, factor 64, hasTexture 80)
-// and of the composite (maskLerp 0, squareMask 4, hasMaskAdd 8; the depth restore: threshold 12).
+// and of the composite (maskLerp 0, squareMask 4, hasMaskAdd 8, colorFade 16, colorBlur 24, foliageClear 32;
+// the depth restore also reads threshold at 12).
 inline constexpr std::uint32_t kFoliagePushSize = 84;
-inline constexpr std::uint32_t kCompositePushSize = 12;
-inline constexpr std::uint32_t kRestorePushSize = 16;
+inline constexpr std::uint32_t kCompositePushSize = 44;
+inline constexpr std::uint32_t kRestorePushSize = 44;
 
 // DepthRestore: Settings::depthMaskThreshold's depth-only pass after the composite.
 enum class PassKind { Mask, Color, Composite, DepthRestore };

@@ -19,7 +19,7 @@ set(deterministic rmse_linear psnr_linear rmse_srgb psnr_srgb ssim flip_mean fli
     temporal_flip temporal_flip_worst temporal_rmse temporal_rmse_worst)
 set(scenes tree forest vista empty)
 set(techniques opaque-only ssam ssam-plus alpha-test a2c blend-unsorted blend-sorted wboit reference hashed a2c8
-    hashed+taa alpha-test+taa a2c-sharp a2c8-sharp)
+    hashed+taa alpha-test+taa a2c-sharp a2c8-sharp ssam+taa)
 
 function(fail what)
   message(FATAL_ERROR "ssam-bench quick run: ${what}")

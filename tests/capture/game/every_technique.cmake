@@ -6,7 +6,7 @@
 cmake_minimum_required(VERSION 3.20)  # IN_LIST in a -P script
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 set(techniques ssam ssam-plus alpha-test a2c blend-unsorted blend-sorted wboit reference hashed a2c8 hashed+taa
-    alpha-test+taa a2c-sharp a2c8-sharp)
+    alpha-test+taa a2c-sharp a2c8-sharp ssam+taa)
 foreach(name IN LISTS techniques)
   set(png ${OUT}/every_${name}.png)
   file(REMOVE ${png})

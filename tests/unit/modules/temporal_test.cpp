@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "engine/core/error.hpp"
 #include "engine/render/frame_targets.hpp"
 #include "engine/render/soft/soft_backend.hpp"
 #include "transparency/create_technique.hpp"
@@ -116,7 +118,7 @@ TEST(Temporal, ReprojectionOfAStillCameraIsTheIdentityOnPixels) {
 // where the card was, so both end with the same image, bit for bit; fetching the history at
 // the same pixel instead (no reprojection) smears the card over its path and fails this.
 TEST(Temporal, StaticSceneUnderAMovingCameraConvergesToTheStillCamerasImage) {
-    for (TechniqueKind kind : {TechniqueKind::HashedTaa, TechniqueKind::AlphaTestTaa}) {
+    for (TechniqueKind kind : {TechniqueKind::HashedTaa, TechniqueKind::AlphaTestTaa, TechniqueKind::SsamTaa}) {
         auto backend = soft::createSoftBackend({.threads = 2});
         TemporalScene still(*backend, kind, 0.5f), moving(*backend, kind, 0.5f);
         constexpr int kFrames = 12;
@@ -127,11 +129,28 @@ TEST(Temporal, StaticSceneUnderAMovingCameraConvergesToTheStillCamerasImage) {
         }
         EXPECT_EQ(a, b) << techniqueName(kind);
         // The average is at work: pixels neither background nor white (hashed: inside the
-        // card; alpha testing keeps the whole card, so only along its jittered edges).
+        // card; alpha testing keeps the whole card, so only along its jittered edges; SSAM: the
+        // whole card, its mask 0.5 squared).
         int between = 0;
         for (float v : a) between += v > 0.15f && v < 0.95f;
         EXPECT_GT(between, kind == TechniqueKind::HashedTaa ? 500 : 40) << techniqueName(kind);
     }
+}
+
+// ssam+taa draws SSAM inside the temporal pass's own pass: SSAM's depth restore, which needs a
+// copy of the depth among its targets, is refused by name rather than drawn without it.
+TEST(Temporal, SsamTaaRefusesTheDepthRestore) {
+    auto backend = soft::createSoftBackend({.threads = 1});
+    TechniqueOptions options;
+    options.ssam.depthMaskThreshold = 0.3f;
+    try {
+        createTechnique(TechniqueKind::SsamTaa, *backend, options);
+        ADD_FAILURE() << "ssam+taa accepted depthMaskThreshold 0.3";
+    } catch (const engine::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("ssam+taa: depthMaskThreshold"), std::string::npos) << e.what();
+    }
+    options.ssam.depthMaskThreshold = 0.0f;
+    EXPECT_NE(createTechnique(TechniqueKind::SsamTaa, *backend, options), nullptr);
 }
 
 // hashed+taa: the threshold changes every frame, so the history averages the kept fraction

@@ -23,13 +23,15 @@ void expectSameKnobs(const ssam::Settings& a, const ssam::Settings& b) {
     EXPECT_EQ(a.maskPrecision, b.maskPrecision);
     EXPECT_EQ(a.depthTest, b.depthTest);
     EXPECT_EQ(a.depthMaskThreshold, b.depthMaskThreshold);
+    EXPECT_EQ(a.colorFade, b.colorFade);
+    EXPECT_EQ(a.colorBlur, b.colorBlur);
 }
 
 TEST(SsamCore, SettingsHoldEveryKnobOnce) {
     // A knob added to Settings must reach the engine-hosted SSAM, ssam::gl and ssam::vk (each
     // translates describePasses() or reads the knob) and expectSameKnobs above: this size is the
     // reminder, changed together with them.
-    EXPECT_EQ(sizeof(ssam::Settings), 32u);
+    EXPECT_EQ(sizeof(ssam::Settings), 40u);
 }
 
 TEST(SsamCore, PaperIsTheDefaultSettings) {
@@ -49,6 +51,8 @@ TEST(SsamCore, MeasuredChangesOnlyTheMaskKnobsAndIsValid) {
                            paper.foliageClearColor));
     EXPECT_EQ(measured.depthTest, paper.depthTest);
     EXPECT_EQ(measured.depthMaskThreshold, paper.depthMaskThreshold);
+    EXPECT_EQ(measured.colorFade, paper.colorFade);  // off: ssam/docs/steady_in_motion.md
+    EXPECT_EQ(measured.colorBlur, paper.colorBlur);
 }
 
 TEST(SsamCore, PresetNamesRoundTripAndUnknownNamesAreRefused) {
@@ -73,6 +77,7 @@ TEST(SsamCore, SettingsErrorsNameTheKnobAndTheValue) {
         {"maskLerp", [](ssam::Settings& s) { s.maskLerp = NAN; }, "nan"},
         {"colorAlphaReference", [](ssam::Settings& s) { s.colorAlphaReference = -0.25f; }, "-0.25"},
         {"depthMaskThreshold", [](ssam::Settings& s) { s.depthMaskThreshold = INFINITY; }, "inf"},
+        {"colorFade", [](ssam::Settings& s) { s.colorFade = 1.5f; }, "1.5"},
         {"foliageClearColor[2]", [](ssam::Settings& s) { s.foliageClearColor[2] = NAN; }, "nan"},
         {"maskPrecision", [](ssam::Settings& s) { s.maskPrecision = static_cast<ssam::MaskPrecision>(7); }, "7"},
         {"depthTest", [](ssam::Settings& s) { s.depthTest = static_cast<ssam::DepthTest>(4); }, "4"},

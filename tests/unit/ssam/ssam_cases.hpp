@@ -155,6 +155,54 @@ TYPED_TEST_P(SsamCases, SquaringAndLerpChangeTheResultAsTheFormulaSays) {
     EXPECT_LT(overlapRed(maxOnly), overlapRed(squared));
 }
 
+// The composited red at (kOverlap, 4) of `quads` under SSAM with `config`, on the opaque clear colour.
+template <typename BackendKind>
+float compositedRed(const ssam::Settings& config, const std::vector<Quad>& quads) {
+    Frame<BackendKind> f;
+    f.opaquePass();
+    ssam::ScreenSpaceAlphaMask ssam(*f.backend, config);
+    QuadBatches q(*f.backend, quads);
+    test_support::runSsam(ssam, f.targets(), viewOf(q));
+    return f.backend->readback(f.opaque.color()).at(kOverlap, 4, 0);
+}
+
+// Settings::colorFade: a leaf whose alpha crosses the colour reference (64/255) between two frames
+// changes the pixel by about alpha * |leaf - clear colour| without the fade (the colour pass's
+// step, §3.5.3), by no more than its mask's change with it; past reference + fade the picture is
+// the step's.
+TYPED_TEST_P(SsamCases, ColourFadeKeepsALeafCrossingTheReferenceFromJumping) {
+    auto red = [](float alpha, float fade) {
+        ssam::Settings config;
+        config.squareMask = false;
+        config.colorFade = fade;
+        return compositedRed<TypeParam>(config, {{-1.0f, -1.0f, 1.0f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, alpha}}});
+    };
+    const float below = 60.0f / 255.0f, above = 68.0f / 255.0f;
+    const float step = std::abs(red(above, 0.0f) - red(below, 0.0f));
+    const float faded = std::abs(red(above, 0.5f) - red(below, 0.5f));
+    EXPECT_GT(step, 0.15f);  // 0.267 * 1 - 0.235 * 0.16 with the opaque's 0.2 mixed out
+    EXPECT_LT(faded, 0.02f);
+    EXPECT_NEAR(red(0.9f, 0.5f), red(0.9f, 0.0f), TypeParam::kBlendTolerance);
+    EXPECT_NEAR(red(below, 0.5f), red(below, 0.0f), TypeParam::kBlendTolerance);  // the clear colour either way
+}
+
+// Settings::colorBlur: a one-pixel red leaf over a green one moves a pixel between two frames; the
+// pixel it leaves changes from red to green at once with the pixel's own colour, by about a
+// quarter of that with the 3x3 average (its red share goes from 8/16 to 4/16).
+TYPED_TEST_P(SsamCases, ColourBlurSoftensALeafMovingAPixel) {
+    auto red = [](float x0, bool blur) {
+        ssam::Settings config;
+        config.colorBlur = blur;
+        return compositedRed<TypeParam>(config, {{x0, -1.0f, x0 + 2.0f / kSize, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.9f}},
+                                                 {-1.0f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 0.9f}}});
+    };
+    const float step = std::abs(red(0.0f, false) - red(2.0f / kSize, false));
+    const float blurred = std::abs(red(0.0f, true) - red(2.0f / kSize, true));
+    EXPECT_GT(step, 0.8f);
+    EXPECT_LT(blurred, 0.4f * step);
+    EXPECT_GT(blurred, 0.1f);  // the average, not a blank: the leaf still shows
+}
+
 TYPED_TEST_P(SsamCases, Rgba8AddMaskSaturatesWhereFloatMasksDoNot) {
     constexpr int kLayers = 12;  // 12 layers of alpha 0.1: ADD = 1.2
     std::vector<Quad> quads;
@@ -287,6 +335,9 @@ TYPED_TEST_P(SsamCases, BadConfigurationIsRejectedWithTheKnobName) {
     c.depthMaskThreshold = 2.0f;
     expectError(c, "depthMaskThreshold");
     c = {};
+    c.colorFade = -0.5f;
+    expectError(c, "colorFade");
+    c = {};
     c.depthTest = static_cast<ssam::DepthTest>(9);
     expectError(c, "depthTest");
 }
@@ -340,6 +391,7 @@ TYPED_TEST_P(SsamCases, DepthMaskThresholdKeepsFoliageDepthOnlyWhereTheMaskReach
 
 REGISTER_TYPED_TEST_SUITE_P(SsamCases, CrossingQuadsGiveMaxAndAddMasks, ColourPassAlphaTestsAndWritesFoliageDepth,
                             CompositeFollowsListing32, SquaringAndLerpChangeTheResultAsTheFormulaSays,
+                            ColourFadeKeepsALeafCrossingTheReferenceFromJumping, ColourBlurSoftensALeafMovingAPixel,
                             Rgba8AddMaskSaturatesWhereFloatMasksDoNot, OpaqueGeometryOccludesFoliageInEveryPass,
                             FoliageDepthOccludesLaterDrawsBehindNotInFront, NoFoliageInViewRunsNoPass,
                             ClosestSampleDepthResolveWithMsaaOpaquePass, MaskProgramIgnoresColour,

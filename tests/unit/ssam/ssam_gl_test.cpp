@@ -49,6 +49,13 @@ TEST(SsamGl, MatchesSsamOnTheGlBackendForEveryKnob) {
     c.foliageClearColor[0] = 0.9f, c.foliageClearColor[1] = 0.1f, c.foliageClearColor[2] = 0.5f;
     cases.push_back({"colour reference 0.5 + clear colour", c});
     c = {};
+    c.colorFade = 0.5f;
+    c.foliageClearColor[0] = 0.9f, c.foliageClearColor[1] = 0.1f, c.foliageClearColor[2] = 0.5f;
+    cases.push_back({"colour fade 0.5 + clear colour", c});
+    c = {};
+    c.colorBlur = true;
+    cases.push_back({"colour blur", c});
+    c = {};
     c.depthTest = ssam::DepthTest::Greater;
     cases.push_back({"reverse-Z (Greater)", c});
     cases.push_back({"sRGB colour", {}, Format::RGBA8_SRGB});

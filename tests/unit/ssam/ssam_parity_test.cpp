@@ -60,6 +60,8 @@ std::vector<Case> cases() {
     knobs.colorAlphaReference = 0.3f;
     knobs.foliageClearColor[0] = 0.5f, knobs.foliageClearColor[1] = 0.1f, knobs.foliageClearColor[2] = 0.7f;
     knobs.squareMask = false;
+    knobs.colorFade = 0.5f;  // A (0.4) and B (0.3) inside the fade, C (0.9) past it
+    knobs.colorBlur = true;
     knobs.maskPrecision = ssam::MaskPrecision::Rgba16f;
     out.push_back({"every knob, rgba16f", knobs});
     ssam::Settings rg16f;
@@ -73,6 +75,13 @@ std::vector<Case> cases() {
     out.push_back({"depth threshold", threshold});
     threshold.maskPrecision = ssam::MaskPrecision::Rg16f;
     out.push_back({"depth threshold, rg16f", threshold});
+    ssam::Settings blur;
+    blur.colorBlur = true;
+    out.push_back({"colour blur", blur});
+    ssam::Settings fade;  // Settings::colorFade on the paper's knobs, with the depth restore (its push block)
+    fade.colorFade = 0.3f;
+    fade.depthMaskThreshold = 0.2f;
+    out.push_back({"colour fade, depth threshold", fade});
     out.push_back({"msaa 2", {}, 2});
     out.push_back({"msaa 4", {}, 4});
     threshold.maskPrecision = ssam::MaskPrecision::Rgba8;

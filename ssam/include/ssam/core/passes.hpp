@@ -61,4 +61,12 @@ struct PassPlan {
 // The plan for `settings` (valid: settingsError() is empty).
 PassPlan describePasses(const Settings& settings);
 
+// Settings::colorFade as every composite reads it: the MAX-mask values the fade runs between
+// (end > start) and the colour it fades from; end == start == 0 when the knob is off.
+struct ColorFade {
+    float start = 0.0f, end = 0.0f;
+    float clearColor[3] = {0.0f, 0.0f, 0.0f};
+};
+ColorFade colorFadeOf(const Settings& settings);
+
 }  // namespace ssam::core

@@ -43,6 +43,18 @@ struct Settings {
     // round it. Above 0: those edges take the later pass, for a copy of the depth and one
     // full-screen depth pass (ssam/README.md, "Later transparent passes").
     float depthMaskThreshold = 0.0f;
+    // The composite fades the colour pass's colour in from foliageClearColor as the MAX mask goes
+    // from colorAlphaReference to colorAlphaReference + colorFade (smoothstep), so a leaf whose
+    // alpha crosses the reference (§3.5.3) changes the picture continuously instead of by its
+    // alpha times |leaf - clear colour| in one frame (ssam/docs/steady_in_motion.md). 0 (the
+    // paper's): the step. In [0, 1].
+    float colorFade = 0.0f;
+    // The composite takes the 1-2-1 3x3 average of the colours the colour pass wrote (alpha > 0)
+    // around the pixel instead of the pixel's own, as SSAM+ does: the colour pass keeps one
+    // alpha-tested layer per pixel, a different leaf from pixel to pixel and frame to frame, and
+    // the average stands in for the blend of the layers (ssam/docs/steady_in_motion.md). False
+    // (the paper's): the pixel's own.
+    bool colorBlur = false;
 };
 
 // "" when every knob is usable, else what is wrong, naming the knob and its value
