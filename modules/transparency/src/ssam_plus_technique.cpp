@@ -32,11 +32,9 @@ namespace {
 using namespace engine::render;
 
 ssam::Settings plusSettings(const TechniqueOptions& options) {
-    ssam::Settings settings = ssamSettings(options);
     // The threshold is tested against SSAM's composited mask; SSAM+'s coverage composite has another.
-    if (settings.depthMaskThreshold > 0.0f)
-        throw engine::Error("ssam-plus: depthMaskThreshold = " + std::to_string(settings.depthMaskThreshold) +
-                            " is SSAM's (its mask); SSAM+'s coverage composite has none: use 0");
+    ssam::Settings settings = ssamSettingsWithoutDepthRestore(
+        options, "ssam-plus", "is SSAM's (its mask); SSAM+'s coverage composite has none");
     settings.maskPrecision = options.ssamPlus.maskPrecision;
     settings.colorAlphaReference = options.ssamPlus.colorAlphaReference;
     settings.squareMask = false;  // not used by the coverage composite

@@ -19,13 +19,9 @@ namespace {
 
 using namespace engine::render;
 
+// The restore needs a depth copy among the targets; the temporal pass reads the depth SSAM left.
 ssam::Settings taaSettings(const TechniqueOptions& options) {
-    ssam::Settings settings = ssamSettings(options);
-    // The restore needs a depth copy among the targets; the temporal pass reads the depth SSAM left.
-    if (settings.depthMaskThreshold > 0.0f)
-        throw engine::Error("ssam+taa: depthMaskThreshold = " + std::to_string(settings.depthMaskThreshold) +
-                            " is not supported under the temporal pass: use 0");
-    return settings;
+    return ssamSettingsWithoutDepthRestore(options, "ssam+taa", "is not supported under the temporal pass");
 }
 
 // SSAM's three passes as one frame-graph pass's work, so that the temporal pass can run it.

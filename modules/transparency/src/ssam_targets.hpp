@@ -1,18 +1,33 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// What the SSAM, SSAM+ and SSAM+TAA adapters share: SSAM's targets as the racer names its layers,
-// and SSAM's mask and colour passes inside a technique's single pass.
+// What the SSAM, SSAM+ and SSAM+TAA adapters share: their settings, SSAM's targets as the racer
+// names its layers, and SSAM's mask and colour passes inside a technique's single pass.
 #include <span>
+#include <string>
 #include <vector>
 
+#include "engine/core/error.hpp"
 #include "engine/render/frame_targets.hpp"
 #include "foliage_draws.hpp"
 #include "ssam/ssam.hpp"
 #include "single_pass_technique.hpp"
+#include "transparency/create_technique.hpp"
 
 namespace transparency::detail {
 
 // The layer names: mask (or mask_max + mask_add), foliage.
+// ssamSettings(options) for a technique built on SSAM's passes that has no use for its depth
+// restore (depthMaskThreshold, tested against SSAM's own composited mask): a threshold above 0 is
+// refused, naming the technique and `why`.
+inline ssam::Settings ssamSettingsWithoutDepthRestore(const TechniqueOptions& options, const char* technique,
+                                                      const char* why) {
+    ssam::Settings settings = ssamSettings(options);
+    if (settings.depthMaskThreshold > 0.0f)
+        throw engine::Error(std::string(technique) + ": depthMaskThreshold = " +
+                            std::to_string(settings.depthMaskThreshold) + " " + why + ": use 0");
+    return settings;
+}
+
 inline const char* maskLayer(bool separateAdd) { return separateAdd ? "mask_max" : "mask"; }
 
 // SSAM's targets as transients of a frame graph, in the order of ssam::Intermediates.
