@@ -28,10 +28,10 @@ void RigidMotion::update(ecs::Registry& registry, bool motionVectors) {
         it = moving_.erase(it);
     }
     if (!motionVectors) return;
-    std::vector<ecs::Entity> marked;  // collected first: the walk below adds components
+    marked_.clear();  // collected first: the walk below adds components
     registry.view<const Transform, const Renderable, const MovesRigidly>().each(
-        [&](ecs::Entity e, const Transform&, const Renderable&, const MovesRigidly&) { marked.push_back(e); });
-    for (ecs::Entity e : marked) {
+        [&](ecs::Entity e, const Transform&, const Renderable&, const MovesRigidly&) { marked_.push_back(e); });
+    for (ecs::Entity e : marked_) {
         const glm::mat4 model = registry.get<Transform>(e).matrix();
         const Renderable& r = registry.get<Renderable>(e);
         auto [it, fresh] = moving_.try_emplace(e);
@@ -48,7 +48,10 @@ void RigidMotion::update(ecs::Registry& registry, bool motionVectors) {
         m.copies.resize(parts.size());
         // Model space of this frame: where each vertex was last frame, minus where it is.
         const glm::mat4 previousHere = glm::inverse(model) * m.previous;
-        VertexOverride override;
+        // Refilled in place after the first frame: its vectors keep their capacity, so a moving car
+        // allocates nothing per frame.
+        VertexOverride* existing = registry.tryGet<VertexOverride>(e);
+        VertexOverride& override = existing ? *existing : registry.add<VertexOverride>(e);
         override.buffers.assign(parts.size(), render::BufferHandle{});
         override.motionBuffers.assign(parts.size(), render::BufferHandle{});
         for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -71,8 +74,6 @@ void RigidMotion::update(ecs::Registry& registry, bool motionVectors) {
             ++motionCopies_;
         }
         m.previous = model;
-        if (VertexOverride* existing = registry.tryGet<VertexOverride>(e)) *existing = std::move(override);
-        else registry.add<VertexOverride>(e, std::move(override));
     }
 }
 

@@ -54,6 +54,7 @@ private:
 
     const MeshLibrary& library_;
     std::map<ecs::Entity, Moving> moving_;  // ordered: deterministic walks
+    std::vector<ecs::Entity> marked_;       // update()'s scratch list, kept for its capacity
     std::size_t motionCopies_ = 0;
 };
 
