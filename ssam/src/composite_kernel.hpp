@@ -2,9 +2,11 @@
 #pragma once
 // The soft backend's kernel of SSAM's composite (composite_program.hpp).
 #include <cmath>
+#include <cstdint>
 
 #include <glm/glm.hpp>
 
+#include "engine/render/kernel/covered_tent.hpp"
 #include "engine/render/kernel/fragment.hpp"
 #include "engine/render/kernel/sampler.hpp"
 #include "engine/render/kernel/texture_lookup.hpp"
@@ -15,6 +17,7 @@ namespace ssam {
 struct CompositeKernel {
     static constexpr engine::render::soft::ProgramNeeds kNeeds{};
     static constexpr bool kReadsPixels = true;
+    static constexpr int kRow = 8;  // the rasterizer's block row (raster_support.hpp kBlockSize)
     CompositeParams params;
     const engine::render::soft::SoftTexture* foliage = nullptr;
     const engine::render::soft::SoftTexture* mask = nullptr;
@@ -44,30 +47,28 @@ struct CompositeKernel {
     }
     // Settings::colorFade is on: the colour is not the foliage texture's, so no fast path.
     bool fades() const { return params.colorFade.y > params.colorFade.x; }
-    // Settings::colorBlur: the written neighbours' colour weighted 1-2-1 by 1-2-1, summed in the
-    // GLSL's order (composite.glsl); the pixel's own where none was written.
+    // Settings::colorBlur: the covered neighbours' colour weighted 1-2-1 by 1-2-1, summed in the
+    // GLSL's order (composite_blur.glsl); the pixel's own where none was written.
     glm::vec3 blurred(int x, int y) const {
-        using engine::render::soft::fetchTexel;
-        glm::vec3 sum(0.0f);
-        float weights = 0.0f;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                const int qx = x + dx, qy = y + dy;
-                if (qx < 0 || qy < 0 || qx >= foliage->desc.width || qy >= foliage->desc.height) continue;
-                const glm::vec4 c = fetchTexel(*foliage, qx, qy);
-                if (!(c.a > 0.0f)) continue;
-                const float weight = float((2 - dx * dx) * (2 - dy * dy));
-                sum += weight * glm::vec3(c);
-                weights += weight;
-            }
-        return weights > 0.0f ? sum / weights : glm::vec3(fetchTexel(*foliage, x, y));
+        engine::render::soft::CoveredTentWindow<1> window;
+        window.load(*foliage, x, y, 1);
+        return window.filtered(0);
     }
 
     // The rasterizer's composite fast path (raster::hasCompositeHooks): shade()'s alpha, read
-    // channel by channel.
-    // None (the general path, shade()) when the colour fades or is averaged.
-    const engine::render::soft::SoftTexture* compositeColor() const {
-        return fades() || params.colorBlur ? nullptr : foliage;
+    // channel by channel, and its colour: the foliage texel, or with colorBlur the block row's
+    // averages (compositeColorRow), each texel decoded once instead of nine times. None (the
+    // general path, shade()) when the colour fades.
+    const engine::render::soft::SoftTexture* compositeColor() const { return fades() ? nullptr : foliage; }
+    bool compositeColorRow(int bx, int py, std::uint32_t live, glm::vec3* out) const {
+        if (!params.colorBlur) return false;
+        engine::render::soft::CoveredTentWindow<kRow> window;
+        window.load(*foliage, bx, py, kRow);
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            out[i] = window.filtered(i);
+        }
+        return true;
     }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
         using engine::render::soft::texelChannel;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Checks a soft-backend program's row hook (shadeRow, engine/render/kernel/program_kernel.hpp)
-// against its per-pixel shade(), bit for bit, over every block row of an image.
+// Checks a soft-backend program's row hooks (shadeRow, engine/render/kernel/program_kernel.hpp;
+// compositeColorRow, the composite fast path's colours) against its per-pixel shade(), bit for
+// bit, over every block row of an image.
 #include <bit>
 #include <cstdint>
 
@@ -17,13 +18,20 @@ namespace ssam::testing {
 // kernel.shadeRow(isa, bx, y, live, out) for every 8-pixel block row of a width x height
 // image, `live` the row's pixels inside the image with random gaps in every third row, each
 // live lane compared with kernel.shade() of that pixel; seen(shade's result) for each.
+// The live lanes of the 8-pixel block row at (bx, y) of a `width`-wide image: the row's pixels
+// inside the image, with random gaps in every third row.
+inline std::uint32_t liveLanes(int bx, int y, int width, Lcg& rng) {
+    std::uint32_t live = bx + 8 <= width ? 0xFFu : (1u << (width - bx)) - 1u;
+    if ((y + bx) % 3 == 0) live &= std::uint32_t(rng.unit() * 256.0f);  // gaps in the row
+    return live;
+}
+
 template <typename Kernel, typename Seen>
 ::testing::AssertionResult rowHookMatchesShade(const Kernel& kernel, engine::render::soft::SimdIsa isa, int width,
                                                int height, Lcg& rng, Seen seen) {
     for (int y = 0; y < height; ++y) {
         for (int bx = 0; bx < width; bx += 8) {
-            std::uint32_t live = bx + 8 <= width ? 0xFFu : (1u << (width - bx)) - 1u;
-            if ((y + bx) % 3 == 0) live &= std::uint32_t(rng.unit() * 256.0f);  // gaps in the row
+            const std::uint32_t live = liveLanes(bx, y, width, rng);
             glm::vec4 out[8];
             kernel.shadeRow(isa, bx, y, live, out);
             for (int i = 0; i < 8; ++i) {
@@ -41,6 +49,32 @@ template <typename Kernel, typename Seen>
             }
         }
     }
+    return ::testing::AssertionSuccess();
+}
+
+// kernel.compositeColorRow(bx, y, live, out) for every block row, as above, each live lane
+// compared with the colour of kernel.shade() at that pixel; fails where the kernel says its
+// colour is the texel's (returns false).
+template <typename Kernel>
+::testing::AssertionResult compositeColorRowMatchesShade(const Kernel& kernel, int width, int height, Lcg& rng) {
+    for (int y = 0; y < height; ++y)
+        for (int bx = 0; bx < width; bx += 8) {
+            const std::uint32_t live = liveLanes(bx, y, width, rng);
+            glm::vec3 out[8];
+            if (!kernel.compositeColorRow(bx, y, live, out))
+                return ::testing::AssertionFailure() << "compositeColorRow gave no colours at row " << y;
+            for (int i = 0; i < 8; ++i) {
+                if (!((live >> i) & 1u)) continue;
+                engine::render::soft::Fragment f;
+                f.x = bx + i;
+                f.y = y;
+                const glm::vec4 expected = kernel.shade(f);
+                for (int c = 0; c < 3; ++c)
+                    if (std::bit_cast<std::uint32_t>(out[i][c]) != std::bit_cast<std::uint32_t>(expected[c]))
+                        return ::testing::AssertionFailure() << "pixel (" << bx + i << ", " << y << "), channel " << c
+                                                             << ": " << out[i][c] << " != " << expected[c];
+            }
+        }
     return ::testing::AssertionSuccess();
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/render/kernel/covered_tent.hpp"
 #include "engine/render/kernel/fragment.hpp"
 #include "engine/render/kernel/programs.hpp"
 #include "engine/render/kernel/sampler.hpp"
@@ -95,17 +96,19 @@ struct CoverageCompositeInputs {
     CoverageCompositeInputs(const CoverageCompositeParams& p, const soft::TextureLookup& textures)
         : model(p.model), foliage(textures.texture(p.foliage)), mask(textures.texture(p.mask)),
           maskAdd(textures.texture(p.maskAdd)) {}
-};
 
-struct CoverageCompositeKernel : CoverageCompositeInputs {
-    using CoverageCompositeInputs::CoverageCompositeInputs;
-
+    // The rasterizer's composite fast path (raster::hasCompositeHooks): shade()'s alpha, read
+    // channel by channel; the colour is the foliage texel's, or the blurred kernel's row.
     const soft::SoftTexture* compositeColor() const { return foliage; }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
         const float maxMask = soft::texelChannel(*mask, x, y, 0);
         const float addMask = maskAdd ? soft::texelChannel(*maskAdd, x, y, 0) : soft::texelChannel(*mask, x, y, 3);
         return layerCoverage(model, maxMask, addMask);
     }
+};
+
+struct CoverageCompositeKernel : CoverageCompositeInputs {
+    using CoverageCompositeInputs::CoverageCompositeInputs;
 
     glm::vec4 shade(const soft::Fragment& f) const {
         const glm::vec4 m = soft::fetchTexel(*mask, f.x, f.y);
@@ -130,7 +133,8 @@ struct CoverageBlurCompositeKernel : CoverageCompositeInputs {
 
     // The rasterizer's row hook (program_kernel.hpp): shade() of the live pixels of a block row,
     // each foliage texel of the 3 x (8 + 2) window decoded once instead of once per neighbour
-    // (nine times); the sums run in shade()'s order, so the bits are shade()'s.
+    // (nine times); the sums run in shade()'s order, so the bits are shade()'s. Taken where the
+    // composite fast path (compositeColorRow) is not: a float target or foliage.
     void shadeRow(soft::SimdIsa, int bx, int py, std::uint32_t live, glm::vec4* out) const {
         Window window;
         window.load(*foliage, bx, py, kRow);
@@ -139,41 +143,28 @@ struct CoverageBlurCompositeKernel : CoverageCompositeInputs {
             out[i] = blurred(window, i, bx + i, py);
         }
     }
+    // The composite fast path's colours (raster::hasCompositeColorRow): shadeRow's, without the
+    // coverage, which the fast path reads through compositeFactor.
+    bool compositeColorRow(int bx, int py, std::uint32_t live, glm::vec3* out) const {
+        Window window;
+        window.load(*foliage, bx, py, kRow);
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            out[i] = window.filtered(i);
+        }
+        return true;
+    }
 
 private:
     static constexpr int kRow = 8;  // the rasterizer's block row (raster_support.hpp kBlockSize)
-    // The foliage texels around `count` pixels from (x0, y): rows y - 1 .. y + 1, columns x0 - 1 ..
-    // x0 + count; `written` false outside the texture or where the colour pass wrote nothing.
-    struct Window {
-        glm::vec4 texel[3][kRow + 2];
-        bool written[3][kRow + 2];
-        void load(const soft::SoftTexture& foliage, int x0, int y, int count) {
-            const int width = foliage.desc.width, height = foliage.desc.height;
-            for (int row = 0; row < 3; ++row)
-                for (int column = 0; column < count + 2; ++column) {
-                    const int x = x0 + column - 1, yy = y + row - 1;
-                    const bool inside = x >= 0 && yy >= 0 && x < width && yy < height;
-                    texel[row][column] = inside ? soft::fetchTexel(foliage, x, yy) : glm::vec4(0.0f);
-                    written[row][column] = inside && texel[row][column].a > 0.0f;  // NaN: nothing written
-                }
-        }
-    };
+    using Window = soft::CoveredTentWindow<kRow>;
 
-    // Pixel (x, y), column `i` of the window: the written neighbours' colour, weighted 1-2-1 by
+    // Pixel (x, y), column `i` of the window: the covered neighbours' colour, weighted 1-2-1 by
     // 1-2-1 and summed row by row (the GLSL's order), and SSAM+'s coverage.
     glm::vec4 blurred(const Window& w, int i, int x, int y) const {
         const glm::vec4 m = soft::fetchTexel(*mask, x, y);
         const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, x, y).r : m.a;
-        glm::vec3 sum(0.0f);
-        float weights = 0.0f;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                if (!w.written[dy + 1][i + dx + 1]) continue;
-                const float weight = float((2 - dx * dx) * (2 - dy * dy));
-                sum += weight * glm::vec3(w.texel[dy + 1][i + dx + 1]);
-                weights += weight;
-            }
-        glm::vec3 color = weights > 0.0f ? sum / weights : glm::vec3(w.texel[1][i + 1]);
+        glm::vec3 color = w.filtered(i);
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(color[c])) color[c] = 0.0f;
         return {color, layerCoverage(model, m.r, addMask)};

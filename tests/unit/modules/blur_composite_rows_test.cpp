@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // SSAM+'s blurred composite on the soft backend (CoverageBlurCompositeKernel, program_kernels.hpp):
-// its row hook against the formula as written before it had one -- each of the nine neighbours
-// fetched on its own, the written ones (alpha > 0, NaN not) weighted 1-2-1 by 1-2-1 and summed row
-// by row -- bit for bit, over random foliage with unwritten and NaN texels, image borders and
-// partly live rows. The pictures stay the same (Racer.Golden.technique_ssam-plus pins them too).
+// its row hooks (the general path's shadeRow, the 8-bit composite fast path's compositeColorRow)
+// against the formula as written before it had one -- each of the nine neighbours fetched on its
+// own, the written ones (alpha > 0, NaN not) weighted 1-2-1 by 1-2-1 and summed row by row -- bit
+// for bit, over random float and sRGB 8-bit foliage with unwritten and NaN texels, image borders
+// and partly live rows. The pictures stay the same (Racer.Golden.technique_ssam-plus pins them too).
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -14,7 +15,8 @@
 
 #include "lcg.hpp"  // tests/support
 #include "program_kernels.hpp"
-#include "soft_image.hpp"  // tests/support
+#include "row_hook_check.hpp"  // tests/support
+#include "soft_image.hpp"      // tests/support
 
 namespace {
 
@@ -31,6 +33,17 @@ soft::SoftTexture randomImage(int w, int h, Lcg& rng, bool withNan) {
         if (u < 0.3f) texel[3] = 0.0f;                                                 // nothing written
         if (withNan && u > 0.97f) texel[3] = std::numeric_limits<float>::quiet_NaN();  // nor here
         std::memcpy(t.levels[0].texels.data() + 16 * std::size_t(i), texel, sizeof texel);
+    }
+    return t;
+}
+
+// The colour pass's own format: sRGB 8-bit, alpha 0 where nothing was written.
+soft::SoftTexture randomSrgbImage(int w, int h, Lcg& rng) {
+    soft::SoftTexture t = ssam::testing::softImage(w, h, Format::RGBA8_SRGB, 4);
+    for (int i = 0; i < w * h; ++i) {
+        std::byte* texel = t.levels[0].texels.data() + 4 * std::size_t(i);
+        for (int c = 0; c < 4; ++c) texel[c] = std::byte(std::uint8_t(rng.unit() * 256.0f));
+        if (rng.unit() < 0.3f) texel[3] = std::byte{0};
     }
     return t;
 }
@@ -60,7 +73,8 @@ TEST(BlurCompositeRows, RowHookAndShadeGiveTheBitsOfTheFormula) {
     Lcg rng{20261206};
     constexpr int kW = 45, kH = 23;  // rows end in partial blocks
     for (int trial = 0; trial < 6; ++trial) {
-        const soft::SoftTexture foliage = randomImage(kW, kH, rng, trial % 2 == 1);
+        const soft::SoftTexture foliage =
+            trial >= 4 ? randomSrgbImage(kW, kH, rng) : randomImage(kW, kH, rng, trial % 2 == 1);
         const soft::SoftTexture mask = randomImage(kW, kH, rng, false);
         struct Textures final : soft::TextureLookup {
             const soft::SoftTexture *foliage, *mask;
@@ -75,8 +89,7 @@ TEST(BlurCompositeRows, RowHookAndShadeGiveTheBitsOfTheFormula) {
         const transparency::CoverageBlurCompositeKernel kernel(params, Textures(&foliage, &mask));
         for (int y = 0; y < kH; ++y)
             for (int bx = 0; bx < kW; bx += 8) {
-                std::uint32_t live = bx + 8 <= kW ? 0xFFu : (1u << (kW - bx)) - 1u;
-                if ((y + bx) % 3 == 0) live &= std::uint32_t(rng.unit() * 256.0f);
+                const std::uint32_t live = ssam::testing::liveLanes(bx, y, kW, rng);
                 glm::vec4 row[8];
                 kernel.shadeRow(soft::SimdIsa::Sse2, bx, y, live, row);
                 for (int i = 0; i < 8; ++i) {
@@ -94,6 +107,7 @@ TEST(BlurCompositeRows, RowHookAndShadeGiveTheBitsOfTheFormula) {
                     ASSERT_EQ(std::bit_cast<std::uint32_t>(row[i].a), std::bit_cast<std::uint32_t>(shaded.a));
                 }
             }
+        ASSERT_TRUE(ssam::testing::compositeColorRowMatchesShade(kernel, kW, kH, rng)) << "trial " << trial;
     }
 }
 

@@ -11,13 +11,14 @@ namespace raster {
 namespace {  // as raster_support.hpp's
 
 // The composite programs' row (compositeRow_): shade() and the composite blend, per live
-// pixel the same operations, with the 8-bit texels decoded straight from the tables;
-// factorAt(px, py) is the program's alpha, in [0, 1] (both programs clamp it). The
-// foliage colour is finite (8-bit), so shade()'s non-finite check changes nothing; every
-// value is in [0, 1], so blend()'s clamps change nothing, and the alpha written is the
-// stored one (blend * 0 + d = d, encoded back to the same byte). Where the factor is 0
-// the colour is c * 0 + d * 1 = d, the decoded stored byte: nothing to write when bytes
-// round-trip (bytesRoundTrip), and most of the screen has no foliage.
+// pixel the same operations, with the 8-bit texels decoded straight from the tables (or the
+// colours the program's compositeColorRow gives); factorAt(px, py) is the program's alpha, in
+// [0, 1] (both programs clamp it). The foliage colour is finite (8-bit, or a weighted mean of
+// 8-bit values), so shade()'s non-finite check changes nothing; every value is in [0, 1], so
+// blend()'s clamps change nothing, and the alpha written is the stored one (blend * 0 + d = d,
+// encoded back to the same byte). Where the factor is 0 the colour is c * 0 + d * 1 = d, the
+// decoded stored byte: nothing to write when bytes round-trip (bytesRoundTrip), and most of the
+// screen has no foliage, so the colours are asked only for the pixels left.
 template <typename Program>
 template <typename Factor>
 inline void TriangleRasterizer<Program>::compositeRow(int bx, int py, std::uint32_t live, const Factor& factorAt) {
@@ -30,15 +31,26 @@ inline void TriangleRasterizer<Program>::compositeRow(int bx, int py, std::uint3
     const float* colorTable = colorTexture.desc.format == Format::RGBA8_SRGB ? tables.srgb : tables.unorm;
     const bool skipZero = bytesRoundTrip();
     auto byteAt = [](const std::byte* p, int c) { return std::to_integer<std::uint8_t>(p[c]); };
+    float blends[kBlockSize];
+    std::uint32_t drawn = 0;
     for (std::uint32_t bits = live; bits; bits &= bits - 1) {
-        const int px = bx + __builtin_ctz(bits);
-        const float blend = factorAt(px, py);
-        if (blend == 0.0f && skipZero) continue;
+        const int i = __builtin_ctz(bits);
+        blends[i] = factorAt(bx + i, py);
+        if (blends[i] != 0.0f || !skipZero) drawn |= 1u << i;
+    }
+    glm::vec3 ownColors[kBlockSize];
+    bool own = false;
+    if constexpr (hasCompositeColorRow<Program>())
+        own = drawn != 0 && program_.compositeColorRow(bx, py, drawn, ownColors);
+    for (std::uint32_t bits = drawn; bits; bits &= bits - 1) {
+        const int i = __builtin_ctz(bits), px = bx + i;
+        const float blend = blends[i];
         const std::byte* source = colorTexture.texel(0, px, py);
         std::byte* p = target.at(px, py);
         const float keep = 1.0f - blend;
         for (int c = 0; c < 3; ++c) {
-            const float out = colorTable[byteAt(source, c)] * blend + targetTable[byteAt(p, c)] * keep;
+            const float color = own ? ownColors[i][c] : colorTable[byteAt(source, c)];
+            const float out = color * blend + targetTable[byteAt(p, c)] * keep;
             p[c] = std::byte{srgbTarget ? encodeSrgb8(out) : encodeUnorm8(out)};
         }
         if (!skipZero) p[3] = std::byte{encodeUnorm8(tables.unorm[byteAt(p, 3)])};

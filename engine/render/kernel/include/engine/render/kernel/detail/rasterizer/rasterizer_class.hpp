@@ -34,6 +34,18 @@ constexpr bool hasCompositeHooks() {
     };
 }
 
+// Optionally, a composite program whose colour is not compositeColor()'s texel at the pixel but
+// computed from that texture (e.g. filtered over its neighbours) gives it a block row at a time:
+// compositeColorRow(bx, py, live, out) puts shade()'s colour of pixel (bx + i, py) into out[i]
+// for each lane i set in `live` and returns true, or returns false when the colour is the texel
+// (compositeRow then reads it from the bytes).
+template <typename Program>
+constexpr bool hasCompositeColorRow() {
+    return requires(const Program& p, glm::vec3* out) {
+        { p.compositeColorRow(0, 0, std::uint32_t{0}, out) } -> std::same_as<bool>;
+    };
+}
+
 // Whether the program shades a block row's pixels at once (program_kernel.hpp's row hook):
 // shadeRow(isa, bx, py, live, out) puts shade() of pixel (bx + i, py) into out[i] for each lane
 // i set in `live`, with the same bits, in wide kernels of the draw's instruction set.
