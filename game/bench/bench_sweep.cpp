@@ -15,7 +15,8 @@ bool sameKnobs(const ssam::Settings& a, const ssam::Settings& b) {
     return a.maskLerp == b.maskLerp && a.squareMask == b.squareMask && a.colorAlphaReference == b.colorAlphaReference &&
            a.maskPrecision == b.maskPrecision &&
            std::equal(std::begin(a.foliageClearColor), std::end(a.foliageClearColor), b.foliageClearColor) &&
-           a.depthTest == b.depthTest && a.depthMaskThreshold == b.depthMaskThreshold;
+           a.depthTest == b.depthTest && a.depthMaskThreshold == b.depthMaskThreshold && a.colorFade == b.colorFade &&
+           a.colorBlur == b.colorBlur;
 }
 
 template <typename T>
@@ -28,8 +29,9 @@ void requireValues(const std::vector<T>& values, const char* knob) {
 std::string settingName(const ssam::Settings& c) {
     char buf[96];
     // The reference in 255ths, as the paper counts it (§3.5.3: "≈ 64", "≈ 128").
-    std::snprintf(buf, sizeof buf, "ssam-lerp%g-%s-ref%.4g-%s", double(c.maskLerp), c.squareMask ? "sq" : "nosq",
-                  double(c.colorAlphaReference) * 255.0, ssam::maskPrecisionName(c.maskPrecision));
+    std::snprintf(buf, sizeof buf, "ssam-lerp%g-%s-ref%.4g-%s%s", double(c.maskLerp), c.squareMask ? "sq" : "nosq",
+                  double(c.colorAlphaReference) * 255.0, ssam::maskPrecisionName(c.maskPrecision),
+                  c.colorBlur ? "-blur" : "");
     return buf;
 }
 
@@ -38,6 +40,7 @@ std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
     requireValues(grid.squareMask, "squareMask");
     requireValues(grid.colorAlphaReference, "colorAlphaReference");
     requireValues(grid.maskPrecision, "maskPrecision");
+    requireValues(grid.colorBlur, "colorBlur");
     const ssam::Settings defaults;
     std::vector<SweepSetting> settings;
     auto add = [&](const ssam::Settings& c) {
@@ -51,14 +54,16 @@ std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
         for (float lerp : grid.maskLerp)
             for (bool square : grid.squareMask)
                 for (float reference : grid.colorAlphaReference)
-                    for (ssam::MaskPrecision precision : grid.maskPrecision) {
-                        ssam::Settings c = defaults;
-                        c.maskLerp = lerp;
-                        c.squareMask = square;
-                        c.colorAlphaReference = reference;
-                        c.maskPrecision = precision;
-                        add(c);
-                    }
+                    for (ssam::MaskPrecision precision : grid.maskPrecision)
+                        for (bool blur : grid.colorBlur) {
+                            ssam::Settings c = defaults;
+                            c.maskLerp = lerp;
+                            c.squareMask = square;
+                            c.colorAlphaReference = reference;
+                            c.maskPrecision = precision;
+                            c.colorBlur = blur;
+                            add(c);
+                        }
         return settings;
     }
     for (float lerp : grid.maskLerp)
@@ -76,6 +81,11 @@ std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
     for (ssam::MaskPrecision precision : grid.maskPrecision) {
         ssam::Settings c = defaults;
         c.maskPrecision = precision;
+        add(c);
+    }
+    for (bool blur : grid.colorBlur) {
+        ssam::Settings c = defaults;
+        c.colorBlur = blur;
         add(c);
     }
     return settings;

@@ -66,6 +66,7 @@ struct Options {
     std::string speedTable;           // speed_table.sh's table to copy into it
     std::string sweepLerp = "0,0.25,0.5,0.85,1";
     std::string sweepSquare = "on,off";
+    std::string sweepBlur = "off";
     std::string sweepReference = "16,64,128";
     std::string sweepPrecision = "rgba8,rgba16f";
     std::string out = "out/bench";
@@ -92,6 +93,17 @@ std::vector<std::string> splitList(const std::string& list, const char* flag) {
         start = comma + 1;
     }
     return items;
+}
+
+// A comma list of on / off for a boolean knob of the sweep.
+std::vector<bool> onOffList(const std::string& list, const char* flag, const char* knob) {
+    std::vector<bool> values;
+    for (const std::string& item : splitList(list, flag)) {
+        if (item != "on" && item != "off")
+            throw engine::UsageError(std::string(flag) + ": '" + item + "' for " + knob + " (known: on, off)");
+        values.push_back(item == "on");
+    }
+    return values;
 }
 
 std::string allTechniqueNames() {
@@ -165,12 +177,8 @@ SweepGrid parseSweepGrid(const Options& o) {
         validateKnob(c, "--sweep-lerp");
         g.maskLerp.push_back(c.maskLerp);
     }
-    g.squareMask.clear();
-    for (const std::string& item : splitList(o.sweepSquare, "--sweep-square")) {
-        if (item != "on" && item != "off")
-            throw engine::UsageError("--sweep-square: '" + item + "' for squareMask (known: on, off)");
-        g.squareMask.push_back(item == "on");
-    }
+    g.squareMask = onOffList(o.sweepSquare, "--sweep-square", "squareMask");
+    g.colorBlur = onOffList(o.sweepBlur, "--sweep-blur", "colorBlur");
     g.colorAlphaReference.clear();
     for (const std::string& item : splitList(o.sweepReference, "--sweep-reference")) {
         ssam::Settings c;
@@ -447,6 +455,9 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         ->capture_default_str()
         ->needs(sweep);
     app.add_option("--sweep-square", o.sweepSquare, "squareMask values (§3.6.2): on, off")
+        ->capture_default_str()
+        ->needs(sweep);
+    app.add_option("--sweep-blur", o.sweepBlur, "colorBlur values (the composite's 3x3 colour mean): on, off")
         ->capture_default_str()
         ->needs(sweep);
     app.add_option("--sweep-reference", o.sweepReference,

@@ -31,6 +31,8 @@ const std::vector<Knob>& knobs() {
          [](const ssam::Settings& c) { return referenceIn255ths(c.colorAlphaReference); }},
         {"maskPrecision", [](const ssam::Settings& c) { return double(c.maskPrecision); },
          [](const ssam::Settings& c) { return std::string(ssam::maskPrecisionName(c.maskPrecision)); }},
+        {"colorBlur", [](const ssam::Settings& c) { return c.colorBlur ? 1.0 : 0.0; },
+         [](const ssam::Settings& c) { return std::string(c.colorBlur ? "on" : "off"); }},
     };
     return k;
 }
@@ -68,8 +70,9 @@ void sweepTable(std::ostream& out, std::vector<const SweepResult*> results) {
     std::stable_sort(results.begin(), results.end(), [](const SweepResult* a, const SweepResult* b) {
         return rankValue(a->row.flipMean, false) < rankValue(b->row.flipMean, false);
     });
-    out << "| # | maskLerp | squareMask | colour ref | mask | ꟻLIP | RMSE sRGB | RMSE lin | SSIM | flicker | time ms | |\n"
-           "|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---|\n";
+    out << "| # | maskLerp | squareMask | colour ref | mask | colour blur | ꟻLIP | RMSE sRGB | RMSE lin | SSIM | flicker | "
+           "time ms | |\n"
+           "|---:|---:|---|---:|---|---|---:|---:|---:|---:|---:|---:|---|\n";
     int rank = 0;
     for (const SweepResult* r : results) {
         std::string marks;

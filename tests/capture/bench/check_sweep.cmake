@@ -82,7 +82,7 @@ run(${OUT}/sweep2 --sweep --threads 1)
 run(${OUT}/plain --techniques ssam --ssam-preset paper)
 run(${OUT}/plain_measured --techniques ssam)
 run(${OUT}/measured --sweep --sweep-full --sweep-lerp 0.9 --sweep-square off --sweep-reference 96
-    --sweep-precision rgba8 --techniques none)
+    --sweep-precision rgba8 --sweep-blur on --techniques none)
 run(${OUT}/full --sweep --sweep-full --sweep-lerp 0.5,1 --sweep-square on --sweep-reference 64
     --sweep-precision rgba8,rgba16f --techniques none)
 
@@ -144,7 +144,8 @@ endif()
 expect_same_columns("${defaults}" "${s1_header}" "the defaults row's"
                     "${plainSsam}" "${plain_header}" "the plain ssam row's")
 
-# The default preset (measured) is the sweep's maskLerp 0.9, no squaring, reference 96, RGBA8.
+# The default preset (measured) is the sweep's maskLerp 0.9, no squaring, reference 96, RGBA8,
+# colour blur on.
 find_row("${plainMeasured_rows}" "${plainMeasured_header}" technique ssam plainMeasuredSsam)
 find_row("${measured_rows}" "${measured_header}" is_default 0 measuredRow)
 if(plainMeasuredSsam STREQUAL "" OR measuredRow STREQUAL "")

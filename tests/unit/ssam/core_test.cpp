@@ -52,7 +52,8 @@ TEST(SsamCore, MeasuredChangesOnlyTheMaskKnobsAndIsValid) {
     EXPECT_EQ(measured.depthTest, paper.depthTest);
     EXPECT_EQ(measured.depthMaskThreshold, paper.depthMaskThreshold);
     EXPECT_EQ(measured.colorFade, paper.colorFade);  // off: ssam/docs/steady_in_motion.md
-    EXPECT_EQ(measured.colorBlur, paper.colorBlur);
+    EXPECT_TRUE(measured.colorBlur);                 // on: the same page, idea 4
+    EXPECT_FALSE(paper.colorBlur);
 }
 
 TEST(SsamCore, PresetNamesRoundTripAndUnknownNamesAreRefused) {
