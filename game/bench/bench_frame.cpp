@@ -42,6 +42,7 @@ transparency::FoliageFrame ViewUpload::foliageFrame(const glm::mat4& viewProj) c
     frame.eye = camera_.eye;
     frame.light = kSun;
     frame.draws = draws_;
+    frame.movingOpaque = foliage_.movingOpaque();  // the car's motion copies, when it moves
     return frame;
 }
 

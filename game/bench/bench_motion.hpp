@@ -4,7 +4,9 @@
 // ([Hathaway 2010] §3.4: motion is where alpha testing sparkles):
 //   pan    the scene's sideways pan (bench_scenes.hpp), as the comparison run's flicker;
 //   dolly  the last frames of the forest's dolly, the camera moving toward the trees;
-//   wind   the still view, the plants bent by the wind (modules/wind), a frame every 1/60 s.
+//   wind   the still view, the plants bent by the wind (modules/wind), a frame every 1/60 s;
+//   car    the still view, the racer's car crossing it in front of the trees (kCarStep a frame),
+//          its motion vectors from engine/scene's RigidMotion.
 // Each frame of each technique (soft backend) is judged against the exact reference of the same
 // frame over the foliage pixels (foliage_errors.hpp). Per technique and motion:
 //   flicker        temporalFlicker (engine/capture/metrics.hpp) over the measured frames, minus
@@ -14,7 +16,9 @@
 //                  foliage pixels (of this frame's reference or the previous one's) where the
 //                  reference's ꟻLIP between the two frames exceeds kMovedFlip, i.e. whose
 //                  surface visibly changed; what a history fetched from the wrong place (or a
-//                  trail) costs. Converged and worst, as flip.
+//                  trail) costs. In the car motion, every pixel whose reference changed so (the
+//                  car's own pixels too: a history without the car's motion smears it). Converged
+//                  and worst, as flip.
 // A technique with history draws kHistoryFrames frames first (the wind already blowing, the
 // camera on the first view), so none is measured on its first frame. `motionVectors` sets
 // TemporalOptions::motionVectors for every technique (off: the camera-only TAA). Deterministic:
@@ -28,13 +32,13 @@
 
 namespace bench {
 
-enum class Motion { Pan, Dolly, Wind };
+enum class Motion { Pan, Dolly, Wind, Car };
 
-// "pan,dolly,wind" (any non-empty subset, each once) into `motions`; throws engine::UsageError
+// "pan,dolly,wind,car" (any non-empty subset, each once) into `motions`; throws engine::UsageError
 // naming the bad entry.
 std::vector<Motion> parseMotions(std::string_view list);
 const char* motionName(Motion motion);
-// Every motion this build can run: pan and dolly, and wind when modules/wind is in it.
+// Every motion this build can run: pan, dolly and car, and wind when modules/wind is in it.
 std::vector<Motion> availableMotions();
 
 // A pixel whose reference changed by more ꟻLIP than this between two frames has moved.

@@ -17,6 +17,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/projection.hpp"
 #include "engine/scene/components.hpp"
+#include "engine/scene/rigid_motion.hpp"
 #include "content_files.hpp"
 #include "plant_levels.hpp"
 #include "track.hpp"  // terrainHeight, buildTerrain, Random: the racer's ground and placement PRNG
@@ -214,6 +215,27 @@ void BenchScene::useLevelsOfDetail(int viewportHeight, float crossfade) {
     }
     lodViewportHeight_ = viewportHeight;
     lodCrossfade_ = crossfade;
+}
+
+engine::ecs::Entity BenchScene::addCar() {
+    if (!hasCar()) throw engine::Error(std::string("ssam-bench: the ") + sceneName(kind_) + " scene has no car");
+    const scene::ModelId model = racer::loadContentModel(library_, contentDir_ / "models" / "car.glb");
+    const engine::ecs::Entity car = registry_.create();
+    registry_.add<scene::Transform>(car);
+    registry_.add<scene::Renderable>(car, scene::Renderable{model});
+    registry_.add<scene::MovesRigidly>(car);
+    placeCar(car, 0);
+    return car;
+}
+
+void BenchScene::placeCar(engine::ecs::Entity car, int frame) {
+    const glm::vec3 ahead = glm::normalize(glm::vec3(target_.x - eye_.x, 0.0f, target_.z - eye_.z));
+    const glm::vec3 right = glm::normalize(glm::cross(ahead, glm::vec3(0.0f, 1.0f, 0.0f)));
+    glm::vec3 p = eye_ + 6.0f * ahead + right * (kCarStep * float(frame) - 4.0f);
+    p.y = racer::terrainHeight(p.x, p.z);
+    scene::Transform& t = registry_.get<scene::Transform>(car);
+    t.position = p;
+    t.rotation = glm::angleAxis(std::atan2(right.x, right.z), glm::vec3(0.0f, 1.0f, 0.0f));  // facing its way
 }
 
 BenchCamera BenchScene::dollyCamera(float aspect, int frame) const {

@@ -50,6 +50,8 @@ struct BenchCamera {
 inline constexpr float kDollyLength = 116.0f;
 inline constexpr float kDollyStep = 1.0f;
 inline constexpr int kDollyFrames = int(kDollyLength / kDollyStep) + 1;
+// The car's step: 0.25 m a frame, 15 m/s at the racer's 60 Hz.
+inline constexpr float kCarStep = 0.25f;
 
 class BenchScene {
 public:
@@ -82,6 +84,16 @@ public:
 
     // Whether the scene has the dolly (the forest: trees from near to far along the way).
     bool hasDolly() const { return kind_ == SceneKind::Forest; }
+    // Whether the scene has the car (the forest): the racer's car crossing the still view in
+    // front of the trees, kCarStep metres a frame.
+    bool hasCar() const { return kind_ == SceneKind::Forest; }
+    // Adds the car (content/models/car.glb), marked MovesRigidly (engine/scene rigid_motion.hpp)
+    // so a technique that reads motion vectors gets its motion; placeCar() moves it. Throws
+    // engine::Error when the model is missing or bad, or the scene has no car.
+    engine::ecs::Entity addCar();
+    // The car at frame `frame` of its crossing: on the ground 6 m in front of the still view's
+    // eye, driving from left to right across it.
+    void placeCar(engine::ecs::Entity car, int frame);
     // Frame `frame` (0 .. kDollyFrames - 1) of the dolly; the last is the still view.
     BenchCamera dollyCamera(float aspect, int frame) const;
 
