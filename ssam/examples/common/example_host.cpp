@@ -234,7 +234,7 @@ HostScene::HostScene(float wind) {
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
     // The cards' VAO at SSAM's default ssam::gl::AttributeLocations: position and uv; normal,
-    // colour and the instance matrix are left to SSAM's generic values. (A host whose VAOs use
+    // colour, the instance matrix and tint are left to SSAM's generic values. (A host whose VAOs use
     // other locations passes them to initialize() as AttributeLocations instead.)
     glGenVertexArrays(1, &cardsVao_);
     glBindVertexArray(cardsVao_);

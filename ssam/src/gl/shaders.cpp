@@ -18,7 +18,7 @@ const char* glslHead(const detail::GlFunctions& gl) {
 
 // The host's attribute locations (initialize(), setAttributeLocations()) written into the layout qualifiers, so
 // the host's own VAOs are read as they are. Unset attributes read the generic values SSAM sets
-// before each pass (identity instance model, white colour).
+// before each pass (identity instance model, white colour and tint).
 std::string foliageVertex(const AttributeLocations& at) {
     auto in = [](unsigned int location, const char* declaration) {
         return "layout(location = " + std::to_string(location) + ") in " + declaration + ";\n";
@@ -26,7 +26,8 @@ std::string foliageVertex(const AttributeLocations& at) {
     return in(at.position, "vec3 a_position") + in(at.normal, "vec3 a_normal") + in(at.uv, "vec2 a_uv") +
            in(at.color, "vec4 a_color") + in(at.instanceModel, "vec4 a_instance0") +
            in(at.instanceModel + 1, "vec4 a_instance1") + in(at.instanceModel + 2, "vec4 a_instance2") +
-           in(at.instanceModel + 3, "vec4 a_instance3") + R"(uniform mat4 u_viewProj;
+           in(at.instanceModel + 3, "vec4 a_instance3") + in(at.instanceTint, "vec4 a_instanceTint") +
+           R"(uniform mat4 u_viewProj;
 uniform mat4 u_model;
 out vec2 v_uv;
 out vec3 v_normal;

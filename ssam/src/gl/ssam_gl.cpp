@@ -93,12 +93,13 @@ struct AttributeSlot {
     const char* name;
     unsigned int first, count;
 };
-std::array<AttributeSlot, 5> slotsOf(const AttributeLocations& at) {
+std::array<AttributeSlot, 6> slotsOf(const AttributeLocations& at) {
     return {{{"position", at.position, 1},
              {"normal", at.normal, 1},
              {"uv", at.uv, 1},
              {"color", at.color, 1},
-             {"instanceModel", at.instanceModel, 4}}};
+             {"instanceModel", at.instanceModel, 4},
+             {"instanceTint", at.instanceTint, 1}}};
 }
 
 // Each location below 16 (GL 3.3's minimum GL_MAX_VERTEX_ATTRIBS, so any context has it) and no
@@ -121,7 +122,7 @@ void validateAttributes(const AttributeLocations& at) {
 
 bool sameLocations(const AttributeLocations& a, const AttributeLocations& b) {
     return a.position == b.position && a.normal == b.normal && a.uv == b.uv && a.color == b.color &&
-           a.instanceModel == b.instanceModel;
+           a.instanceModel == b.instanceModel && a.instanceTint == b.instanceTint;
 }
 
 // Settings are checked by the core's rules (ssam::settingsError): every SSAM accepts the same knobs.
@@ -467,6 +468,7 @@ struct ScreenSpaceAlphaMaskGl::Impl {
         generic(at.uv, 0.0f, 0.0f, 0.0f, 1.0f);
         generic(at.color, 1.0f, 1.0f, 1.0f, 1.0f);
         for (unsigned int c = 0; c < 4; ++c) generic(at.instanceModel + c, c == 0, c == 1, c == 2, c == 3);
+        generic(at.instanceTint, 1.0f, 1.0f, 1.0f, 1.0f);
         gl.UseProgram(p.id);
         gl.UniformMatrix4fv(p.viewProj, 1, GL_FALSE, frame.viewProj);
         const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};

@@ -51,6 +51,7 @@ layout(location = 4) in vec4 a_instance0;
 layout(location = 5) in vec4 a_instance1;
 layout(location = 6) in vec4 a_instance2;
 layout(location = 7) in vec4 a_instance3;
+layout(location = 8) in vec4 a_instanceTint;
 layout(location = 0) out vec2 v_uv;
 layout(location = 2) out vec4 v_color;
 )";

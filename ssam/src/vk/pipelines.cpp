@@ -117,7 +117,7 @@ VkCompareOp toVk(DepthTest test) {
     return VK_COMPARE_OP_LESS;
 }
 
-// Where the shaders' locations 0-7 (foliage.vert) come from: the host's bindings, or SSAM's
+// Where the shaders' locations 0-8 (foliage.vert) come from: the host's bindings, or SSAM's
 // constants buffer (offsets: ssam_vk.cpp's Constants) for an attribute the host does not give.
 struct VertexInput {
     std::vector<VkVertexInputBindingDescription> bindings;
@@ -147,6 +147,7 @@ VertexInput vertexInput(const VertexLayout& layout, bool withNormal) {
         if (column.format != VK_FORMAT_UNDEFINED) column.format = VK_FORMAT_R32G32B32A32_SFLOAT;
         add(4 + c, column, VK_FORMAT_R32G32B32A32_SFLOAT, base + 48 + 16 * c);
     }
+    add(8, layout.instanceTint, VK_FORMAT_R32G32B32A32_SFLOAT, base + 32);  // no tint: the colour's (1,1,1,1)
     return in;
 }
 

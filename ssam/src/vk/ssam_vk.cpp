@@ -30,7 +30,27 @@ void validate(const Settings& s) {
         throw Failure(Status::InvalidArgument, "ssam::vk: " + error);
 }
 
-// Where the built-in programs read the host's vertex buffers: bindings that exist, a position.
+// The instance tint's formats: the four-channel ones the shader reads as float (not UINT / SINT)
+// that every Vulkan device supports for vertex buffers (the specification's "Required Format
+// Support" tables), so no device query is needed to accept one.
+bool isTintFormat(VkFormat f) {
+    switch (f) {
+        case VK_FORMAT_R32G32B32A32_SFLOAT:
+        case VK_FORMAT_R16G16B16A16_SFLOAT:
+        case VK_FORMAT_R16G16B16A16_UNORM:
+        case VK_FORMAT_R16G16B16A16_SNORM:
+        case VK_FORMAT_R8G8B8A8_UNORM:
+        case VK_FORMAT_R8G8B8A8_SNORM:
+        case VK_FORMAT_B8G8R8A8_UNORM:
+        case VK_FORMAT_A8B8G8R8_UNORM_PACK32:
+        case VK_FORMAT_A8B8G8R8_SNORM_PACK32:
+        case VK_FORMAT_A2B10G10R10_UNORM_PACK32: return true;
+        default: return false;
+    }
+}
+
+// Where the built-in programs read the host's vertex buffers: bindings that exist, a position, a
+// tint of a format Vulkan reads as float.
 void validate(const VertexLayout& v) {
     if (v.bindingCount == 0 || v.bindingCount > VertexLayout::kMaxBindings)
         throw Failure(Status::InvalidArgument,
@@ -51,12 +71,18 @@ void validate(const VertexLayout& v) {
                                                                          {"normal", &v.normal},
                                                                          {"uv", &v.uv},
                                                                          {"color", &v.color},
-                                                                         {"instanceModel", &v.instanceModel}};
+                                                                         {"instanceModel", &v.instanceModel},
+                                                                         {"instanceTint", &v.instanceTint}};
     for (const auto& [name, a] : attributes)
         if (!known(*a))
             throw Failure(Status::InvalidArgument, std::string("ssam::vk: vertexLayout.") + name + " reads binding " +
                                                        std::to_string(a->binding) +
                                                        ", which vertexLayout.bindings does not describe");
+    if (v.instanceTint.format != VK_FORMAT_UNDEFINED && !isTintFormat(v.instanceTint.format))
+        throw Failure(Status::InvalidArgument,
+                      "ssam::vk: vertexLayout.instanceTint.format " + detail::formatName(v.instanceTint.format) +
+                          " is not a four-channel float, UNORM or SNORM format every device reads from vertex "
+                          "buffers (ssam_vk.hpp's VertexLayout lists them)");
     for (std::uint32_t i = 0; i < v.bindingCount; ++i)
         if (v.bindings[i].binding == v.constantsBinding)
             throw Failure(Status::InvalidArgument, "ssam::vk: vertexLayout.bindings[" + std::to_string(i) +

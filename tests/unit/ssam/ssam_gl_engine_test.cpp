@@ -118,7 +118,7 @@ TEST(SsamGlEngine, ARenderbufferGivenAsATextureIsNamedForWhatItIs) {
     glDeleteRenderbuffers(1, &lone);
 }
 
-// The host's vertex arrays at its own locations (uv at 8, normal at 2, ...): the built-in programs
+// The host's vertex arrays at its own locations (uv at 8, normal at 2, tint at 10, ...): the built-in programs
 // read them there and give the image of SSAM's default locations; the generic values SSAM sets at
 // the new locations are the host's again afterwards. Bad locations are named.
 TEST(SsamGlEngine, BuiltInProgramsReadTheHostsAttributeLocations) {
@@ -134,6 +134,7 @@ TEST(SsamGlEngine, BuiltInProgramsReadTheHostsAttributeLocations) {
     attributes.uv = 8;
     attributes.color = 9;
     attributes.instanceModel = 11;
+    attributes.instanceTint = 10;  // off uv's 8, its default
     HostFoliage atHosts(quads, attributes);
     auto moved = initializedSsam({}, attributes);
     auto again = host.opaque();

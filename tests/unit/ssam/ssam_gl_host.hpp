@@ -11,6 +11,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,13 +49,15 @@ inline std::unique_ptr<ssam::gl::ScreenSpaceAlphaMaskGl> initializedSsam(
     return ssam;
 }
 
-// The host's foliage: one VAO and buffer of position + colour quads, drawn one quad per draw.
+// The host's foliage: one VAO and buffer of position + colour quads, drawn one quad per draw;
+// with `instances`, each quad drawn as all of them (model and tint per instance, divisor 1).
 struct HostFoliage {
-    GLuint vao = 0, buffer = 0;
-    int quads = 0;
+    GLuint vao = 0, buffer = 0, instanceBuffer = 0;
+    int quads = 0, instanceCount = 0;
     // `at`: where the host's VAO puts position and colour (the AttributeLocations given to SSAM must say the same).
-    explicit HostFoliage(const std::vector<Quad>& qs, const ssam::gl::AttributeLocations& at = {})
-        : quads(static_cast<int>(qs.size())) {
+    explicit HostFoliage(const std::vector<Quad>& qs, const ssam::gl::AttributeLocations& at = {},
+                         const std::vector<engine::render::Instance>& instances = {})
+        : quads(static_cast<int>(qs.size())), instanceCount(static_cast<int>(instances.size())) {
         std::vector<float> data;
         for (const Quad& q : qs)
             for (const engine::render::Vertex& v : quadVertices(q))
@@ -70,15 +73,33 @@ struct HostFoliage {
         glEnableVertexAttribArray(at.color);
         glVertexAttribPointer(at.color, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
                               reinterpret_cast<const void*>(3 * sizeof(float)));
+        if (!instances.empty()) {
+            using engine::render::Instance;
+            glGenBuffers(1, &instanceBuffer);
+            glBindBuffer(GL_ARRAY_BUFFER, instanceBuffer);
+            glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(Instance)), instances.data(),
+                         GL_STATIC_DRAW);
+            const auto perInstance = [](GLuint location, std::size_t offset) {
+                glEnableVertexAttribArray(location);
+                glVertexAttribPointer(location, 4, GL_FLOAT, GL_FALSE, sizeof(Instance),
+                                      reinterpret_cast<const void*>(offset));
+                glVertexAttribDivisor(location, 1);
+            };
+            for (unsigned int c = 0; c < 4; ++c) perInstance(at.instanceModel + c, c * sizeof(glm::vec4));
+            perInstance(at.instanceTint, offsetof(Instance, tint));
+        }
         glBindVertexArray(0);
     }
     ~HostFoliage() {
+        glDeleteBuffers(1, &instanceBuffer);
         glDeleteBuffers(1, &buffer);
         glDeleteVertexArrays(1, &vao);
     }
     void draw() const {
         glBindVertexArray(vao);
-        for (int i = 0; i < quads; ++i) glDrawArrays(GL_TRIANGLES, i * 6, 6);
+        for (int i = 0; i < quads; ++i)
+            if (instanceCount > 0) glDrawArraysInstanced(GL_TRIANGLES, i * 6, 6, instanceCount);
+            else glDrawArrays(GL_TRIANGLES, i * 6, 6);
     }
 };
 

@@ -52,11 +52,21 @@ std::function<Status(Sweep&)> renderWith(std::function<void(Sweep&, ssam::gl::Fr
     };
 }
 const std::function<void(Sweep&)> kNothing = [](Sweep&) {};
+
+// The default attribute locations changed by `change`, given to setAttributeLocations.
+std::function<Status(Sweep&)> locationsWith(std::function<void(ssam::gl::AttributeLocations&)> change) {
+    return [change](Sweep& s) {
+        ssam::gl::AttributeLocations at;
+        change(at);
+        return s.ssam.setAttributeLocations(at);
+    };
+}
 const ssam::gl::Box kGoodBox{{-0.5f, -0.5f, 0.25f}, {0.5f, 0.5f, 0.75f}};
 
 std::vector<Hostile> hostileCalls() {
     const Status invalidArgument = Status::InvalidArgument, invalidTexture = Status::InvalidTexture;
     using F = ssam::gl::FrameDesc;
+    using L = ssam::gl::AttributeLocations;
     std::vector<Hostile> calls = {
         {"width 0", kNothing, renderWith([](Sweep&, F& f) { f.width = 0; }), invalidArgument,
          "frame size (FrameDesc::width x height) 0x16 is not positive"},
@@ -102,6 +112,11 @@ std::vector<Hostile> hostileCalls() {
         {"render without a draw callback", kNothing,
          [](Sweep& s) { return s.ssam.render(s.good, ssam::gl::ScreenSpaceAlphaMaskGl::DrawFoliage{}, nullptr); },
          invalidArgument, "render() without a draw callback"},
+        // The built-in programs' attribute locations (way a); instanceModel takes 4..7.
+        {"instance tint inside instanceModel's locations", kNothing, locationsWith([](L& at) { at.instanceTint = 7; }),
+         invalidArgument, "attributes.instanceModel (4) and attributes.instanceTint (7) overlap"},
+        {"instance tint at location 16", kNothing, locationsWith([](L& at) { at.instanceTint = 16; }), invalidArgument,
+         "attributes.instanceTint = 16 is past location 15"},
     };
     for (Hostile& h : ssam_host_test::callsOutOfOrder<Hostile, Sweep>()) calls.push_back(std::move(h));
     return calls;

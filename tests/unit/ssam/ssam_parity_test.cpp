@@ -5,7 +5,8 @@
 // buffer -- each compared with the soft
 // backend's picture (the goldens' source) under the differential thresholds of
 // engine/render/README.md. The cases put every knob at a non-default value, each mask precision,
-// MSAA 1/2/4 and depthMaskThreshold on and off. Compared: the composited colour, the depth left
+// MSAA 1/2/4, depthMaskThreshold on and off, and a level-of-detail crossfade drawn as instances
+// whose tints carry the levels' weights. Compared: the composited colour, the depth left
 // for later passes, the mask and rt_foliage (every entry point exposes them). A knob added to
 // the core (ssam::Settings) that one SSAM ignores shows here as a difference.
 #include <gtest/gtest.h>
@@ -13,10 +14,12 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,7 +52,23 @@ struct Case {
     std::string name;
     ssam::Settings settings;
     int samples = 1;
+    // None: each foliage quad drawn once, where it is. Else each quad drawn as these instances
+    // (engine::render::Instance: the model matrix, then the tint; every host reads that layout).
+    std::vector<Instance> instances{};
 };
+
+// A level-of-detail crossfade by the per-instance tint: each quad drawn twice, the levels' weights
+// 0.25 and 0.75 in the tints' alpha (rgb tinted too), moved apart so that they overlap in part, the
+// heavier one farther; the colour reference below every tinted alpha, so both reach rt_foliage.
+Case tintCrossfade() {
+    Case c{"tint crossfade", {}, 1, {Instance{}, Instance{}}};
+    c.settings.colorAlphaReference = 0.05f;
+    c.instances[0].model[3] = {-0.2f, 0.0f, 0.0f, 1.0f};
+    c.instances[0].tint = {1.0f, 0.5f, 1.0f, 0.25f};
+    c.instances[1].model[3] = {0.2f, 0.0f, 0.05f, 1.0f};
+    c.instances[1].tint = {0.5f, 1.0f, 0.8f, 0.75f};
+    return c;
+}
 
 // Every knob away from its default at least once; each precision; MSAA 1, 2, 4; the threshold.
 std::vector<Case> cases() {
@@ -86,6 +105,7 @@ std::vector<Case> cases() {
     out.push_back({"msaa 4", {}, 4});
     threshold.maskPrecision = ssam::MaskPrecision::Rgba8;
     out.push_back({"msaa 4, depth threshold", threshold, 4});
+    out.push_back(tintCrossfade());
     return out;
 }
 
@@ -101,6 +121,23 @@ std::vector<Quad> foliage(const Case& c) {
         for (Quad& quad : q) quad.depth = 1.0f - quad.depth;  // the nearer stays nearer
     return q;
 }
+// World boxes round what a case draws: each quad, moved by each of its instances.
+std::vector<ssam::Box> boundsOf(const Case& c) {
+    const std::vector<Quad> quads = foliage(c);
+    if (c.instances.empty()) return ssam::testing::boxesOf(quads);
+    std::vector<ssam::Box> out;
+    for (const Quad& q : quads) {
+        glm::vec3 low(INFINITY), high(-INFINITY);
+        for (const Instance& instance : c.instances)
+            for (const glm::vec2 corner : {glm::vec2(q.x0, q.y0), glm::vec2(q.x1, q.y1)}) {
+                const glm::vec3 p = glm::vec3(instance.model * glm::vec4(corner, q.depth, 1.0f));
+                low = glm::min(low, p), high = glm::max(high, p);
+            }
+        out.push_back({{low.x, low.y, low.z}, {high.x, high.y, high.z}});
+    }
+    return out;
+}
+
 std::vector<Quad> occluder(const Case& c) {
     return {{0.3f, -1.0f, 1.0f, 0.35f, reverseZ(c) ? 0.55f : 0.45f, kOpaque * 0.5f + glm::vec4(0, 0, 0, 0.5f)}};
 }
@@ -133,9 +170,22 @@ Result engineHosted(Backend& backend, const Case& c, Readback* opaqueColor = nul
     if (opaqueDepth) *opaqueDepth = backend.readback(t->depth());
     ssam::ScreenSpaceAlphaMask ssam(backend, c.settings);
     QuadBatches batches(backend, foliage(c));
+    BufferHandle instances;
+    if (!c.instances.empty()) {
+        const auto bytes = std::as_bytes(std::span(c.instances));
+        instances = backend.createBuffer({"instances", BufferKind::Instance, bytes.size()}, bytes);
+        const std::vector<ssam::Box> bounds = boundsOf(c);
+        for (std::size_t i = 0; i < batches.batches.size(); ++i) {
+            batches.batches[i].instances = instances;
+            batches.batches[i].instanceCount = std::uint32_t(c.instances.size());
+            const ssam::Box& b = bounds[i];
+            batches.batches[i].worldBounds = {{b.min[0], b.min[1], b.min[2]}, {b.max[0], b.max[1], b.max[2]}};
+        }
+    }
     const test_support::SsamRun run =
         test_support::runSsam(ssam, {t->color(), t->depth()}, {glm::mat4(1.0f), kUnlit, batches.batches}, true);
     EXPECT_EQ(run.report.passesRun, 3);
+    if (instances) backend.destroy(instances);
     return {backend.readback(t->color()), backend.readback(t->depth()), run.mask, run.foliage};
 }
 
@@ -144,9 +194,8 @@ Result glHost(const Case& c) {
     ssam::testing::GlHost host;
     auto t = opaqueFrame(*host.backend, c);
     auto ssam = ssam::testing::initializedSsam(c.settings);
-    const std::vector<Quad> quads = foliage(c);
-    ssam::testing::HostFoliage leaves(quads);
-    const std::vector<ssam::gl::Box> bounds = ssam::testing::boxesOf(quads);
+    ssam::testing::HostFoliage leaves(foliage(c), {}, c.instances);
+    const std::vector<ssam::gl::Box> bounds = boundsOf(c);
     ssam::gl::FrameDesc frame = host.frameOf(*t);
     frame.foliageBounds = bounds.data();
     frame.foliageBoundsCount = bounds.size();
@@ -187,6 +236,17 @@ Result vkHost(const Case& c, const Readback& opaqueColor, const Readback& opaque
     layout.bindings[0] = {0, std::uint32_t(7 * sizeof(float)), VK_VERTEX_INPUT_RATE_VERTEX};
     layout.position = {0, VK_FORMAT_R32G32B32_SFLOAT, 0};
     layout.color = {0, VK_FORMAT_R32G32B32A32_SFLOAT, std::uint32_t(3 * sizeof(float))};
+    // Instances (model, then tint) at binding 1, one per instance.
+    vk_example::HostBuffer instanceBuffer;
+    if (!c.instances.empty()) {
+        instanceBuffer = host.createBuffer(c.instances.size() * sizeof(Instance), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        std::memcpy(instanceBuffer.mapped, c.instances.data(), c.instances.size() * sizeof(Instance));
+        layout.bindings[1] = {1, std::uint32_t(sizeof(Instance)), VK_VERTEX_INPUT_RATE_INSTANCE};
+        layout.bindingCount = 2;
+        layout.instanceModel = {1, VK_FORMAT_R32G32B32A32_SFLOAT, 0};
+        layout.instanceTint = {1, VK_FORMAT_R32G32B32A32_SFLOAT, std::uint32_t(offsetof(Instance, tint))};
+    }
+    const std::uint32_t instanceCount = c.instances.empty() ? 1 : std::uint32_t(c.instances.size());
 
     ssam::vk::ScreenSpaceAlphaMaskVk ssam;
     ssam::vk::DeviceDesc device = ssam_vk_test::describe(host);
@@ -199,9 +259,10 @@ Result vkHost(const Case& c, const Readback& opaqueColor, const Readback& opaque
     frame.viewProj[5] = -1.0f;  // NDC y up (the quads') to Vulkan's y down
     EXPECT_EQ(ssam.render(frame,
                           [&](const ssam::vk::FoliageProgram& p) {
-                              const VkDeviceSize offset = 0;
-                              vkCmdBindVertexBuffers(p.commandBuffer, 0, 1, &vertexBuffer.buffer, &offset);
-                              vkCmdDraw(p.commandBuffer, std::uint32_t(vertices.size() / 7), 1, 0, 0);
+                              const VkBuffer buffers[2] = {vertexBuffer.buffer, instanceBuffer.buffer};
+                              const VkDeviceSize offsets[2] = {0, 0};
+                              vkCmdBindVertexBuffers(p.commandBuffer, 0, c.instances.empty() ? 1 : 2, buffers, offsets);
+                              vkCmdDraw(p.commandBuffer, std::uint32_t(vertices.size() / 7), instanceCount, 0, 0);
                           }),
               ssam::Status::Ok)
         << ssam.lastMessage();
@@ -257,6 +318,7 @@ Result vkHost(const Case& c, const Readback& opaqueColor, const Readback& opaque
     vkDeviceWaitIdle(host.device);
     ssam.release();
     host.destroy(intermediates);
+    host.destroy(instanceBuffer);
     host.destroy(vertexBuffer);
     host.destroy(upload);
     for (const std::string& m : host.validationMessages) ADD_FAILURE() << "validation: " << m;
@@ -362,9 +424,8 @@ std::optional<Result> esHost(const Case& c, const Readback& opaqueColor, const R
     ssam::gl::ScreenSpaceAlphaMaskGl ssam;
     EXPECT_EQ(ssam.initialize(eglGetProcAddress, c.settings, {}, ssam::gl::Api::Gles30), ssam::Status::Ok)
         << ssam.lastMessage();
-    const std::vector<Quad> quads = foliage(c);
-    ssam::testing::HostFoliage leaves(quads);
-    const std::vector<ssam::gl::Box> bounds = ssam::testing::boxesOf(quads);
+    ssam::testing::HostFoliage leaves(foliage(c), {}, c.instances);
+    const std::vector<ssam::gl::Box> bounds = boundsOf(c);
     ssam::gl::FrameDesc frame;
     frame.colorTexture = color;
     frame.depthTexture = depth;

@@ -109,11 +109,21 @@ std::function<Status(Sweep&)> renderWith(std::function<void(ssam::vk::FrameDesc&
 }
 const std::function<void(Sweep&)> kNothing = [](Sweep&) {};
 
+// The default vertex layout changed by `change`, given to setVertexLayout.
+std::function<Status(Sweep&)> layoutWith(std::function<void(ssam::vk::VertexLayout&)> change) {
+    return [change](Sweep& s) {
+        ssam::vk::VertexLayout layout;
+        change(layout);
+        return s.ssam.setVertexLayout(layout);
+    };
+}
+
 const ssam::vk::Box kGoodBox{{-0.5f, -0.5f, 0.25f}, {0.5f, 0.5f, 0.75f}};
 
 std::vector<Hostile> hostileCalls() {
     const Status invalidArgument = Status::InvalidArgument, invalidCall = Status::InvalidCall;
     using F = ssam::vk::FrameDesc;
+    using L = ssam::vk::VertexLayout;
     std::vector<Hostile> calls = {
         // FrameDesc, field by field.
         {"null command buffer", kNothing, renderWith([](F& f) { f.commandBuffer = VK_NULL_HANDLE; }), invalidArgument,
@@ -245,6 +255,19 @@ std::vector<Hostile> hostileCalls() {
                                          &state);
          },
          invalidArgument, "colorFormat VK_FORMAT_D32_SFLOAT is not"},
+        // What the built-in programs read (way a): the per-instance tint.
+        {"instance tint of an integer format", kNothing, layoutWith([](L& l) {
+             l.instanceTint = {0, VK_FORMAT_R8G8B8A8_UINT, 0};
+         }),
+         invalidArgument, "vertexLayout.instanceTint.format VK_FORMAT_R8G8B8A8_UINT is not"},
+        {"instance tint of three channels", kNothing, layoutWith([](L& l) {
+             l.instanceTint = {0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+         }),
+         invalidArgument, "vertexLayout.instanceTint.format VK_FORMAT_R32G32B32_SFLOAT is not"},
+        {"instance tint on a binding not described", kNothing, layoutWith([](L& l) {
+             l.instanceTint = {1, VK_FORMAT_R32G32B32A32_SFLOAT, 0};
+         }),
+         invalidArgument, "vertexLayout.instanceTint reads binding 1, which vertexLayout.bindings does not describe"},
         // Calls out of order: these, and those every host API refuses alike (callsOutOfOrder).
         {"render after release", [](Sweep& s) { s.ssam.release(); }, [](Sweep& s) { return s.render(s.frame()); },
          invalidCall, "render before initialize()"},

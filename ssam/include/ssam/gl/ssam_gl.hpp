@@ -94,16 +94,19 @@ using ssam::Rect;
 // Vertex attribute locations of SSAM's built-in foliage programs (way a; initialize() and
 // setAttributeLocations()):
 // set them to the locations the host's own VAOs already use (e.g. uv at 8, normal at 2) so its
-// vertex arrays are reused as they are. Each below 16 (GL's minimum GL_MAX_VERTEX_ATTRIBS), no two
-// overlapping (instanceModel takes four). An attribute the host's VAO does not enable reads SSAM's
-// generic value: normal (0,0,1), uv (0,0), colour (1,1,1,1), instance model columns the identity;
-// a plain mesh needs only position (+ uv for a texture). SSAM restores the generic values it sets.
+// vertex arrays are reused as they are (a host with something at 8 moves instanceTint too). Each
+// below 16 (GL's minimum GL_MAX_VERTEX_ATTRIBS), no two overlapping (instanceModel takes four). An attribute the host's VAO does not enable reads SSAM's
+// generic value: normal (0,0,1), uv (0,0), colour and instance tint (1,1,1,1), instance model
+// columns the identity; a plain mesh needs only position (+ uv for a texture). SSAM restores the
+// generic values it sets. The tint's alpha is how a host crossfades two levels of detail through
+// the mask, sort-free: each level's instances carry its weight.
 struct AttributeLocations {
     unsigned int position = 0;       // vec3
     unsigned int normal = 1;         // vec3, double-sided lighting (colour pass)
     unsigned int uv = 2;             // vec2, base-colour texture coordinates
     unsigned int color = 3;          // vec4, multiplies the base colour (straight alpha)
     unsigned int instanceModel = 4;  // mat4 as 4 vec4 columns at instanceModel .. + 3 (divisor 1)
+    unsigned int instanceTint = 8;   // vec4 (divisor 1), multiplies the colour (straight alpha)
 };
 
 // The paper's knobs (ssam/core/settings.hpp), the same struct for every SSAM. Rg16f needs GL 4.0 or
@@ -172,8 +175,9 @@ struct GlFunctions;
 }
 
 // What the built-in programs' draw callback gets (way a). Clip position = viewProj (FrameDesc) *
-// model (setModel) * instanceModel (attribute) * position. Alpha = factor.a * colour.a * texel.a;
-// the colour pass discards alpha < alphaReference and writes base rgb * (ambient + light * lambert).
+// model (setModel) * instanceModel (attribute) * position. Base = factor * colour * instanceTint *
+// texel; the colour pass discards base.a < alphaReference and writes base.rgb * (ambient + light *
+// lambert).
 struct FoliageProgram {
     FoliagePass pass = FoliagePass::Mask;
     unsigned int program = 0;         // bound with glUseProgram

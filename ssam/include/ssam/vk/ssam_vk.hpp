@@ -137,8 +137,10 @@ using ssam::Rect;
 // Where the built-in programs read the host's vertex buffers: each attribute's binding, format
 // and offset (any format Vulkan converts to the shader's float vector: e.g. R32G32B32_SFLOAT for
 // the position, R8G8B8A8_UNORM for the colour). An absent attribute (format VK_FORMAT_UNDEFINED)
-// reads SSAM's constant: normal (0,0,1), uv (0,0), colour (1,1,1,1), instance model the identity,
-// from a buffer SSAM binds at `constantsBinding`, which the host must leave alone in the draw callback.
+// reads SSAM's constant: normal (0,0,1), uv (0,0), colour and instance tint (1,1,1,1), instance
+// model the identity, from a buffer SSAM binds at `constantsBinding`, which the host must leave
+// alone in the draw callback. The tint's alpha is how a host crossfades two levels of detail
+// through the mask, sort-free: each level's instances carry its weight.
 struct VertexAttribute {
     std::uint32_t binding = 0;
     VkFormat format = VK_FORMAT_UNDEFINED;
@@ -160,7 +162,12 @@ struct VertexLayout {
     VertexAttribute normal;                                      // vec3, double-sided lighting
     VertexAttribute uv;                                          // vec2, base-colour texture coordinates
     VertexAttribute color;                                       // vec4, multiplies the base colour
-    VertexAttribute instanceModel;        // mat4 as 4 vec4 columns at offset, + 16, + 32, + 48 (R32G32B32A32_SFLOAT)
+    VertexAttribute instanceModel;  // mat4 as 4 vec4 columns at offset, + 16, + 32, + 48 (R32G32B32A32_SFLOAT)
+    // vec4 per instance, multiplies the colour (straight alpha): a four-channel format read as
+    // float that every device takes for vertex buffers (R32G32B32A32_SFLOAT, R16G16B16A16_SFLOAT /
+    // UNORM / SNORM, R8G8B8A8_UNORM / SNORM, B8G8R8A8_UNORM, A8B8G8R8_UNORM / SNORM_PACK32,
+    // A2B10G10R10_UNORM_PACK32).
+    VertexAttribute instanceTint;
     std::uint32_t constantsBinding = 15;  // below maxVertexInputBindings (16 at least); not one of `bindings`
 };
 
@@ -231,8 +238,8 @@ struct Recorder;
 }
 
 // What the draw callback gets (way a). Clip position = viewProj (FrameDesc) * model (setModel) *
-// instanceModel (attribute) * position. Alpha = factor.a * colour.a * texel.a; the colour pass
-// discards alpha < alphaReference and writes base rgb * (ambient + light * lambert). SSAM's
+// instanceModel (attribute) * position. Base = factor * colour * instanceTint * texel; the colour
+// pass discards base.a < alphaReference and writes base.rgb * (ambient + light * lambert). SSAM's
 // pipeline is bound, with its descriptor sets and push constants: the host records
 // vkCmdBindVertexBuffers / vkCmdBindIndexBuffer / vkCmdDraw* (and nothing that binds another
 // pipeline, descriptor set or the constants binding) into `commandBuffer`.
