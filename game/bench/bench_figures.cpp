@@ -132,8 +132,8 @@ bool openSection(std::ostream& out, const char* heading, bool ran) {
 
 void writeMotion(std::ostream& out, const std::vector<MotionRow>& motion) {
     if (!openSection(out, "In motion", !motion.empty())) return;
-    out << "The forest through the three motions of `ssam-bench --motion` (game/docs/motion.md): the sideways "
-           "pan, the dolly toward the trees and the wind under a still camera, "
+    out << "The forest through the motions of `ssam-bench --motion` (game/docs/motion.md): the sideways "
+           "pan, the dolly toward the trees, the wind under a still camera and the car crossing it, "
         << motion.front().frames
         << " measured frames each, every frame against that frame's reference over the foliage pixels. "
            "Converged: the median over the last half of the frames; worst: the worst frame; ghosting: the "
