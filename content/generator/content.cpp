@@ -38,6 +38,27 @@ ordered_json opaqueMaterial(const std::string& name, int texture, double metalli
         {"alphaMode", "OPAQUE"}};
 }
 
+// The skin of a model drawn opaque: one embedded image, sampled by one material.
+struct OpaqueSkin {
+    const std::vector<std::uint8_t>& png;
+    const char* image;
+    int wrap;
+    const char* material;
+    double metallic;
+    double roughness;
+};
+
+// A file of one opaque textured mesh, scene 0's only node: the car, the terrain, the track.
+std::vector<std::uint8_t> opaqueModel(const char* name, const MeshData& mesh, const OpaqueSkin& skin,
+                                      ordered_json extras = nullptr) {
+    GlbWriter glb;
+    const int texture = glb.addTexture(glb.addPngImage(skin.png, skin.image), skin.wrap);
+    const int material = glb.addMaterial(opaqueMaterial(skin.material, texture, skin.metallic, skin.roughness));
+    const int model = glb.addMesh(name, {{&mesh, material}}, false, std::move(extras));
+    glb.setSceneNodes({glb.addNode({{"name", name}, {"mesh", model}})});
+    return glb.glb();
+}
+
 // The images every model embeds, encoded once, and the plants made from them (each plant's
 // levels are measured once, for its file and for the table of levels).
 struct Pngs {
@@ -78,12 +99,7 @@ std::vector<std::uint8_t> car(const Pngs& pngs) {
         for (int axle = -1; axle <= 1; axle += 2)
             addWheel(body, {0.9f * static_cast<float>(side), 0.34f, 1.35f * static_cast<float>(axle)}, 0.34f, 0.3f, 12,
                      tyre);
-    GlbWriter glb;
-    const int texture = glb.addTexture(glb.addPngImage(pngs.car, "car_atlas"), kClampToEdge);
-    const int material = glb.addMaterial(opaqueMaterial("car", texture, 0.2, 0.4));
-    const int mesh = glb.addMesh("car", {{&body, material}}, false);
-    glb.setSceneNodes({glb.addNode({{"name", "car"}, {"mesh", mesh}})});
-    return glb.glb();
+    return opaqueModel("car", body, {pngs.car, "car_atlas", kClampToEdge, "car", 0.2, 0.4});
 }
 
 // A round pool of radius 1 (placed scaled): a BLEND material, untextured.
@@ -102,12 +118,7 @@ std::vector<std::uint8_t> water() {
 
 std::vector<std::uint8_t> terrain(const Pngs& pngs) {
     const MeshData ground = terrainPatch(64.0f, 32, 1.2f, 8.0f, 0x7E44u);
-    GlbWriter glb;
-    const int texture = glb.addTexture(glb.addPngImage(pngs.ground, "ground"), kRepeat);
-    const int material = glb.addMaterial(opaqueMaterial("ground", texture, 0.0, 1.0));
-    const int mesh = glb.addMesh("terrain", {{&ground, material}}, false);
-    glb.setSceneNodes({glb.addNode({{"name", "terrain"}, {"mesh", mesh}})});
-    return glb.glb();
+    return opaqueModel("terrain", ground, {pngs.ground, "ground", kRepeat, "ground", 0.0, 1.0});
 }
 
 // Millimetre-rounded coordinates keep the centre line's JSON short and exact.
@@ -124,9 +135,6 @@ ordered_json pointsJson(const std::vector<glm::vec3>& points) {
 std::vector<std::uint8_t> track(const Pngs& pngs) {
     const TrackShape shape = trackShape(0x7AC4u, 10, {130.0f, 85.0f}, 24, 12.0f);
     const MeshData ribbon = trackRibbon(shape);
-    GlbWriter glb;
-    const int texture = glb.addTexture(glb.addPngImage(pngs.track, "track"), kRepeat);
-    const int material = glb.addMaterial(opaqueMaterial("track", texture, 0.0, 0.9));
     ordered_json extras = {
         {"centreLine",
          {{"closed", true},
@@ -134,9 +142,7 @@ std::vector<std::uint8_t> track(const Pngs& pngs) {
           {"width", shape.width},
           {"controlPoints", pointsJson(shape.control)},
           {"samples", pointsJson(shape.centreLine)}}}};
-    const int mesh = glb.addMesh("track", {{&ribbon, material}}, false, std::move(extras));
-    glb.setSceneNodes({glb.addNode({{"name", "track"}, {"mesh", mesh}})});
-    return glb.glb();
+    return opaqueModel("track", ribbon, {pngs.track, "track", kRepeat, "track", 0.0, 0.9}, std::move(extras));
 }
 
 // Every file, in the fixed order generateContent() writes them, and how it is made.

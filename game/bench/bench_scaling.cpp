@@ -152,9 +152,7 @@ const std::vector<std::string>& scalingCsvColumns() {
 }
 
 void writeScalingCsv(std::ostream& out, const std::vector<ScalingRow>& rows) {
-    const std::vector<std::string>& columns = scalingCsvColumns();
-    for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
-    out << "\n";
+    writeCsvHeader(out, scalingCsvColumns());
     for (const ScalingRow& r : rows) {
         const double mpix = double(r.width) * double(r.height) * 1e-6;
         out << r.axis << ',' << r.backend << ',' << r.technique << ',' << r.width << ',' << r.height << ','

@@ -49,6 +49,11 @@ std::string csvField(const std::string& s) {
     return q + "\"";
 }
 
+void writeCsvHeader(std::ostream& out, const std::vector<std::string>& columns) {
+    for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
+    out << "\n";
+}
+
 std::string mdCell(const std::string& s) {
     std::string r;
     for (char c : s) r += c == '|' ? std::string("\\|") : std::string(1, c == '\n' ? ' ' : c);

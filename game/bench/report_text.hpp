@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Text helpers shared by ssam-bench's reports (bench.* and sweep.*): numbers as the CSV and
-// Markdown print them, quoting, and staging a report file.
+// Markdown print them, quoting, a CSV header line, and staging a report file.
 #include <filesystem>
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "engine/core/output_file.hpp"
 
@@ -25,6 +26,9 @@ std::string num(double v, const char* format = "%.9g");
 
 // A CSV field, quoted when it holds a comma, a quote or a newline.
 std::string csvField(const std::string& s);
+
+// A CSV file's first line: the column names, comma-separated.
+void writeCsvHeader(std::ostream& out, const std::vector<std::string>& columns);
 
 // A Markdown table cell: pipes escaped, newlines as spaces.
 std::string mdCell(const std::string& s);

@@ -269,6 +269,20 @@ BenchOptions parse(const Options& o) {
     return b;
 }
 
+// The report of a run whose rows make one CSV (--motion, --dolly): writes it whole to `csv`,
+// then prints its table and where it went.
+template <typename Row>
+int writeCsvAndTable(const std::filesystem::path& csv, const std::vector<Row>& rows,
+                     void (*writeRows)(std::ostream&, const std::vector<Row>&),
+                     void (*printTable)(const std::vector<Row>&)) {
+    engine::PendingFiles files;
+    stageReport(files, csv, [&](std::ostream& s) { writeRows(s, rows); });
+    files.commit();
+    printTable(rows);
+    std::printf("ssam-bench: wrote %s (%zu rows)\n", csv.string().c_str(), rows.size());
+    return 0;
+}
+
 int run(const CLI::App& app, Options o, int argc, char** argv) {
     if (o.sweep && !app.count("--techniques")) o.techniques = "alpha-test,ssam-plus";
     if (app.count("--motion")) parseMotions(o.motion);  // an empty or bad list fails before the first frame
@@ -337,23 +351,13 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         std::printf("ssam-bench: wrote %s/scaling.csv, scaling.svg (%zu rows)\n", out.string().c_str(), rows.size());
         return 0;
     }
-    if (!o.motion.empty()) {
-        const std::vector<MotionRow> rows =
-            runMotion(run, parseMotions(o.motion), o.motionFrames, o.motionVectors == "on");
-        stageReport(files, out / "motion.csv", [&](std::ostream& s) { writeMotionCsv(s, rows); });
-        files.commit();
-        printMotionTable(rows);
-        std::printf("ssam-bench: wrote %s/motion.csv (%zu rows)\n", out.string().c_str(), rows.size());
-        return 0;
-    }
-    if (o.dolly) {
-        const std::vector<DollyRow> rows = runDolly(run, o.dollyFrames, options.crossfade);
-        stageReport(files, out / "dolly.csv", [&](std::ostream& s) { writeDollyCsv(s, rows); });
-        files.commit();
-        printDollyTable(rows);
-        std::printf("ssam-bench: wrote %s/dolly.csv (%zu rows)\n", out.string().c_str(), rows.size());
-        return 0;
-    }
+    if (!o.motion.empty())
+        return writeCsvAndTable(out / "motion.csv",
+                                runMotion(run, parseMotions(o.motion), o.motionFrames, o.motionVectors == "on"),
+                                writeMotionCsv, printMotionTable);
+    if (o.dolly)
+        return writeCsvAndTable(out / "dolly.csv", runDolly(run, o.dollyFrames, options.crossfade), writeDollyCsv,
+                                printDollyTable);
     if (o.sweep) {
         std::printf("ssam-bench --sweep: %zu setting(s) per scene\n", settings.size());
         const SweepRun sweepRun = runSweep(run, settings, options.subjects);

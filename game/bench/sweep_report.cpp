@@ -190,9 +190,7 @@ const std::vector<std::string>& sweepCsvColumns() {
 }
 
 void writeSweepCsv(std::ostream& out, const std::vector<SweepResult>& results) {
-    const auto& columns = sweepCsvColumns();
-    for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
-    out << "\n";
+    writeCsvHeader(out, sweepCsvColumns());
     for (const SweepResult& s : results) {
         const BenchRow& r = s.row;
         const ssam::Settings& c = s.setting.config;

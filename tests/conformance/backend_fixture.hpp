@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -124,6 +125,36 @@ protected:
     };
     ColorAndDepth colorAndDepthTargets(int width, int height, int samples = 1) {
         return {renderTarget(width, height, render::Format::RGBA8_UNORM, samples), depthTarget(width, height, samples)};
+    }
+
+    // The same targets, the colour cleared to 0 and the depth to `depth` by an empty pass.
+    ColorAndDepth colorAndClearedDepth(int width, int height, float depth) {
+        const ColorAndDepth targets = colorAndDepthTargets(width, height);
+        pass(
+            targets.color, glm::vec4(0.0f), [] {}, targets.depth, depth);
+        return targets;
+    }
+
+    // A pixel rectangle [x0,x1) x [y0,y1) at clip depth z (pixelRect).
+    struct DepthRect {
+        float x0, y0, x1, y1, z;
+    };
+    // A depth target of `samples` per pixel cleared to `clear`, then `rects` drawn into it in
+    // order through depth function `func` (beside a scratch colour target).
+    render::TextureHandle drawnDepth(int width, int height, int samples, float clear, render::CompareFunc func,
+                                     std::initializer_list<DepthRect> rects) {
+        const ColorAndDepth targets = colorAndDepthTargets(width, height, samples);
+        const render::PipelineHandle pipeline = flatPipeline({}, render::DepthState::testAndWrite(func));
+        std::vector<render::BufferHandle> quads;
+        for (const DepthRect& r : rects)
+            quads.push_back(vertexBuffer(pixelRect(width, height, r.x0, r.y0, r.x1, r.y1, r.z)));
+        pass(
+            targets.color, glm::vec4(0.0f),
+            [&] {
+                for (render::BufferHandle quad : quads) drawFlat(pipeline, quad, 6);
+            },
+            targets.depth, clear);
+        return targets.depth;
     }
 
     // A colour and a depth target read back, in that order.

@@ -82,4 +82,17 @@ private:
     transparency::FoliageDraw draw_;
 };
 
+// The colour of `technique`'s frame of `draw` through `viewProj`, over an opaque frame of
+// size x size cleared to `clear` (RGBA32F, nothing opaque drawn).
+inline engine::render::Readback frameOverClear(engine::render::Backend& backend, transparency::Technique& technique,
+                                               const OneDraw& draw, const glm::mat4& viewProj, int size,
+                                               const glm::vec4& clear) {
+    using namespace engine::render;
+    FrameTargets opaque(backend, {size, size, technique.opaqueSamples(), Format::RGBA32F, CompareFunc::Less});
+    backend.beginPass(opaque.passDesc(clear));
+    backend.endPass();
+    runTechnique(backend, technique, opaque, draw.frame(viewProj));
+    return backend.readback(opaque.color());
+}
+
 }  // namespace test_support

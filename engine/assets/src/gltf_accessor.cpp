@@ -2,7 +2,10 @@
 #include "gltf_accessor.hpp"
 
 #include <algorithm>
+#include <concepts>
 #include <cstring>
+#include <limits>
+#include <type_traits>
 
 namespace engine::assets::detail {
 
@@ -67,24 +70,21 @@ T load(const std::uint8_t* p) {
 
 // glTF 2.0 §3.11 "Animations" / KHR_mesh_quantization: normalised signed integers map to
 // max(c / MAX, -1), unsigned to c / MAX.
+float integerToFloat(std::integral auto c, bool normalized) {
+    using Integer = decltype(c);
+    const float v = c;
+    if (!normalized) return v;
+    constexpr float kMax = std::numeric_limits<Integer>::max();
+    if constexpr (std::is_signed_v<Integer>) return std::max(v / kMax, -1.0f);
+    return v / kMax;
+}
+
 float toFloat(const std::uint8_t* p, int componentType, bool normalized) {
     switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            const float v = load<std::int8_t>(p);
-            return normalized ? std::max(v / 127.0f, -1.0f) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-            const float v = load<std::uint8_t>(p);
-            return normalized ? v / 255.0f : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            const float v = load<std::int16_t>(p);
-            return normalized ? std::max(v / 32767.0f, -1.0f) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            const float v = load<std::uint16_t>(p);
-            return normalized ? v / 65535.0f : v;
-        }
+        case TINYGLTF_COMPONENT_TYPE_BYTE: return integerToFloat(load<std::int8_t>(p), normalized);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return integerToFloat(load<std::uint8_t>(p), normalized);
+        case TINYGLTF_COMPONENT_TYPE_SHORT: return integerToFloat(load<std::int16_t>(p), normalized);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return integerToFloat(load<std::uint16_t>(p), normalized);
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return static_cast<float>(load<std::uint32_t>(p));
         default: return load<float>(p);
     }

@@ -27,6 +27,16 @@ inline std::string indexed(const char* array, std::size_t index) {
     return std::string(array) + "[" + std::to_string(index) + "]";
 }
 
+// One converted element per element of the glTF array `array` (`sources`), in order:
+// `convert(source, field)`, where `field` names the element in errors ("materials[2]").
+template <typename Converted, typename Source, typename Convert>
+std::vector<Converted> convertEach(const std::vector<Source>& sources, const char* array, Convert&& convert) {
+    std::vector<Converted> converted;
+    converted.reserve(sources.size());
+    for (std::size_t i = 0; i < sources.size(); ++i) converted.push_back(convert(sources[i], indexed(array, i)));
+    return converted;
+}
+
 // a + b and a * b on 64-bit unsigned values; false on overflow.
 inline bool checkedAdd(std::uint64_t a, std::uint64_t b, std::uint64_t& out) {
     return !__builtin_add_overflow(a, b, &out);

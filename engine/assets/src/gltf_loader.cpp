@@ -204,19 +204,18 @@ render::SamplerState convertSampler(const LoadContext& ctx, const tinygltf::Samp
 }
 
 std::vector<Texture> convertTextures(const LoadContext& ctx, const tinygltf::Model& model) {
-    std::vector<Texture> textures(model.textures.size());
-    for (std::size_t i = 0; i < model.textures.size(); ++i) {
-        const tinygltf::Texture& source = model.textures[i];
-        const std::string field = indexed("textures", i);
-        checkIndex(ctx, source.source, model.images.size(), field + ".source", "images");
-        checkIndex(ctx, source.sampler, model.samplers.size(), field + ".sampler", "samplers");
-        textures[i].name = source.name;
-        textures[i].image = source.source;
-        if (source.sampler >= 0)
-            textures[i].sampler = convertSampler(ctx, model.samplers[static_cast<std::size_t>(source.sampler)],
+    return convertEach<Texture>(
+        model.textures, "textures", [&](const tinygltf::Texture& source, const std::string& field) {
+            checkIndex(ctx, source.source, model.images.size(), field + ".source", "images");
+            checkIndex(ctx, source.sampler, model.samplers.size(), field + ".sampler", "samplers");
+            Texture texture;
+            texture.name = source.name;
+            texture.image = source.source;
+            if (source.sampler >= 0)
+                texture.sampler = convertSampler(ctx, model.samplers[static_cast<std::size_t>(source.sampler)],
                                                  indexed("samplers", static_cast<std::size_t>(source.sampler)));
-    }
-    return textures;
+            return texture;
+        });
 }
 
 TextureRef convertTextureRef(const LoadContext& ctx, const tinygltf::Model& model, const tinygltf::TextureInfo& info,
@@ -248,39 +247,37 @@ TextureRef convertTextureRef(const LoadContext& ctx, const tinygltf::Model& mode
 }
 
 std::vector<Material> convertMaterials(const LoadContext& ctx, const tinygltf::Model& model) {
-    std::vector<Material> materials(model.materials.size());
-    for (std::size_t i = 0; i < model.materials.size(); ++i) {
-        const tinygltf::Material& source = model.materials[i];
-        Material& m = materials[i];
-        const std::string field = indexed("materials", i);
-        m.name = source.name;
+    return convertEach<Material>(
+        model.materials, "materials", [&](const tinygltf::Material& source, const std::string& field) {
+            Material m;
+            m.name = source.name;
 
-        if (source.alphaMode == "OPAQUE" || source.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
-        else if (source.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
-        else if (source.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
-        else ctx.fail(field + ".alphaMode", "'" + source.alphaMode + "': must be OPAQUE, MASK or BLEND");
-        if (!std::isfinite(source.alphaCutoff) || source.alphaCutoff < 0.0)
-            ctx.fail(field + ".alphaCutoff", std::to_string(source.alphaCutoff) + ": must be a finite number >= 0");
-        m.alphaCutoff = static_cast<float>(source.alphaCutoff);
-        m.doubleSided = source.doubleSided;
+            if (source.alphaMode == "OPAQUE" || source.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
+            else if (source.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
+            else if (source.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
+            else ctx.fail(field + ".alphaMode", "'" + source.alphaMode + "': must be OPAQUE, MASK or BLEND");
+            if (!std::isfinite(source.alphaCutoff) || source.alphaCutoff < 0.0)
+                ctx.fail(field + ".alphaCutoff", std::to_string(source.alphaCutoff) + ": must be a finite number >= 0");
+            m.alphaCutoff = static_cast<float>(source.alphaCutoff);
+            m.doubleSided = source.doubleSided;
 
-        const auto& pbr = source.pbrMetallicRoughness;
-        const std::string pbrField = field + ".pbrMetallicRoughness";
-        m.baseColorFactor = finiteVector<4>(ctx, pbr.baseColorFactor, pbrField + ".baseColorFactor");
-        m.metallicFactor = finite(ctx, pbr.metallicFactor, pbrField + ".metallicFactor");
-        m.roughnessFactor = finite(ctx, pbr.roughnessFactor, pbrField + ".roughnessFactor");
-        m.baseColorTexture = convertTextureRef(ctx, model, pbr.baseColorTexture, pbrField + ".baseColorTexture");
-        if (!source.emissiveFactor.empty())
-            m.emissiveFactor = finiteVector<3>(ctx, source.emissiveFactor, field + ".emissiveFactor");
+            const auto& pbr = source.pbrMetallicRoughness;
+            const std::string pbrField = field + ".pbrMetallicRoughness";
+            m.baseColorFactor = finiteVector<4>(ctx, pbr.baseColorFactor, pbrField + ".baseColorFactor");
+            m.metallicFactor = finite(ctx, pbr.metallicFactor, pbrField + ".metallicFactor");
+            m.roughnessFactor = finite(ctx, pbr.roughnessFactor, pbrField + ".roughnessFactor");
+            m.baseColorTexture = convertTextureRef(ctx, model, pbr.baseColorTexture, pbrField + ".baseColorTexture");
+            if (!source.emissiveFactor.empty())
+                m.emissiveFactor = finiteVector<3>(ctx, source.emissiveFactor, field + ".emissiveFactor");
 
-        m.unlit = source.extensions.count("KHR_materials_unlit") != 0;
-        if (source.extras.IsObject() && source.extras.Has("foliage")) {
-            const tinygltf::Value& foliage = source.extras.Get("foliage");
-            if (!foliage.IsBool()) ctx.fail(field + ".extras.foliage", "must be true or false");
-            m.foliage = foliage.Get<bool>();
-        }
-    }
-    return materials;
+            m.unlit = source.extensions.count("KHR_materials_unlit") != 0;
+            if (source.extras.IsObject() && source.extras.Has("foliage")) {
+                const tinygltf::Value& foliage = source.extras.Get("foliage");
+                if (!foliage.IsBool()) ctx.fail(field + ".extras.foliage", "must be true or false");
+                m.foliage = foliage.Get<bool>();
+            }
+            return m;
+        });
 }
 
 // ---------------------------------------------------------------------------------------

@@ -48,11 +48,8 @@ glm::mat4 localTransform(const LoadContext& ctx, const tinygltf::Node& node, con
 }  // namespace
 
 std::vector<Camera> convertCameras(const LoadContext& ctx, const tinygltf::Model& model) {
-    std::vector<Camera> cameras(model.cameras.size());
-    for (std::size_t i = 0; i < model.cameras.size(); ++i) {
-        const tinygltf::Camera& source = model.cameras[i];
-        Camera& c = cameras[i];
-        const std::string field = indexed("cameras", i);
+    return convertEach<Camera>(model.cameras, "cameras", [&](const tinygltf::Camera& source, const std::string& field) {
+        Camera c;
         c.name = source.name;
         if (source.type == "perspective") {
             const auto& p = source.perspective;
@@ -83,25 +80,24 @@ std::vector<Camera> convertCameras(const LoadContext& ctx, const tinygltf::Model
         } else {
             ctx.fail(field + ".type", "'" + source.type + "': must be perspective or orthographic");
         }
-    }
-    return cameras;
+        return c;
+    });
 }
 
 std::vector<Node> convertNodes(const LoadContext& ctx, const tinygltf::Model& model) {
     const std::size_t count = model.nodes.size();
-    std::vector<Node> nodes(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const tinygltf::Node& source = model.nodes[i];
-        Node& node = nodes[i];
-        const std::string field = indexed("nodes", i);
-        node.name = source.name;
-        checkIndex(ctx, source.mesh, model.meshes.size(), field + ".mesh", "meshes");
-        checkIndex(ctx, source.camera, model.cameras.size(), field + ".camera", "cameras");
-        node.mesh = source.mesh;
-        node.camera = source.camera;
-        node.local = localTransform(ctx, source, field);
-        node.children = source.children;
-    }
+    std::vector<Node> nodes =
+        convertEach<Node>(model.nodes, "nodes", [&](const tinygltf::Node& source, const std::string& field) {
+            Node node;
+            node.name = source.name;
+            checkIndex(ctx, source.mesh, model.meshes.size(), field + ".mesh", "meshes");
+            checkIndex(ctx, source.camera, model.cameras.size(), field + ".camera", "cameras");
+            node.mesh = source.mesh;
+            node.camera = source.camera;
+            node.local = localTransform(ctx, source, field);
+            node.children = source.children;
+            return node;
+        });
     // glTF 2.0 §3.5.3: the nodes form disjoint strict trees: every node has at most one
     // parent and there are no cycles.
     for (std::size_t i = 0; i < count; ++i)

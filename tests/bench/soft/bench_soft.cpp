@@ -339,14 +339,7 @@ void runComposite(benchmark::State& state, render::Device& b, render::TextureHan
                   const render::ProgramDesc& program, const render::DrawParams& params, const char* name) {
     render::PipelineDesc pd;
     pd.program = b.createProgram(program);
-    pd.blend[0] = {true,
-                   render::BlendFactor::SrcAlpha,
-                   render::BlendFactor::InvSrcAlpha,
-                   render::BlendOp::Add,
-                   render::BlendFactor::Zero,
-                   render::BlendFactor::One,
-                   render::BlendOp::Add,
-                   render::WriteAll};
+    pd.blend[0] = render::BlendState::alphaOverKeepAlpha();
     const auto pipeline = b.createPipeline(pd);
     render::PassDesc pass;
     pass.name = name;

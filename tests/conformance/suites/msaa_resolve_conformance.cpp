@@ -15,6 +15,11 @@ namespace {
 constexpr int kWide = 6, kHigh = 4;
 constexpr float kEdge = 2.5f;  // pixel centre of column 2
 
+// Why the depth resolves are skipped on GLES.
+constexpr const char* kNoSampleDepthOnGles =
+    "OpenGL ES 3.0 cannot read a multisampled depth per sample: the GLES driver refuses the closest-sample resolve "
+    "([Hathaway 2010] §3.5.1; gles_differences checks the refusal)";
+
 TEST_P(MsaaResolveConformance, ColourIsTheSampleAverage) {
     const glm::vec4 left{1.0f, 0.25f, 0.0f, 0.5f}, right{0.0f, 0.75f, 2.0f, 1.0f};
     for (int samples : {2, 4, 8}) {
@@ -62,21 +67,10 @@ TEST_P(MsaaResolveConformance, UncoveredSamplesKeepTheClear) {
 // Left of the edge depth 0.3, right of it 0.7: the split column resolves to 0.3 under Less
 // and LessEqual, 0.7 under Greater and GreaterEqual; whole pixels resolve to their one value.
 TEST_P(MsaaResolveConformance, DepthKeepsTheClosestSample) {
-    if (gfx().name() == "gles")
-        GTEST_SKIP() << "OpenGL ES 3.0 cannot read a multisampled depth per sample: the GLES driver refuses the "
-                        "closest-sample resolve ([Hathaway 2010] §3.5.1; gles_differences checks the refusal)";
+    if (gfx().name() == "gles") GTEST_SKIP() << kNoSampleDepthOnGles;
     for (int samples : {2, 4, 8}) {
-        const auto [color, depth] = colorAndDepthTargets(kWide, kHigh, samples);
-        const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Always));
-        const render::BufferHandle l = vertexBuffer(pixelRect(kWide, kHigh, 0, 0, kEdge, kHigh, 0.3f));
-        const render::BufferHandle r = vertexBuffer(pixelRect(kWide, kHigh, kEdge, 0, kWide, kHigh, 0.7f));
-        pass(
-            color, glm::vec4(0.0f),
-            [&] {
-                drawFlat(pipeline, l, 6);
-                drawFlat(pipeline, r, 6);
-            },
-            depth, 1.0f);
+        const render::TextureHandle depth = drawnDepth(kWide, kHigh, samples, 1.0f, CompareFunc::Always,
+                                                       {{0, 0, kEdge, kHigh, 0.3f}, {kEdge, 0, kWide, kHigh, 0.7f}});
         for (CompareFunc func :
              {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater, CompareFunc::GreaterEqual}) {
             const bool greater = func == CompareFunc::Greater || func == CompareFunc::GreaterEqual;
@@ -94,15 +88,10 @@ TEST_P(MsaaResolveConformance, DepthKeepsTheClosestSample) {
 // Reverse-Z: clear 0 (far), only the left part drawn at 0.6. Greater keeps the drawn sample
 // in the split column; Less would keep the far clear.
 TEST_P(MsaaResolveConformance, DepthReverseZWithUncoveredSamples) {
-    if (gfx().name() == "gles")
-        GTEST_SKIP() << "OpenGL ES 3.0 cannot read a multisampled depth per sample: the GLES driver refuses the "
-                        "closest-sample resolve ([Hathaway 2010] §3.5.1; gles_differences checks the refusal)";
+    if (gfx().name() == "gles") GTEST_SKIP() << kNoSampleDepthOnGles;
     for (int samples : {2, 4, 8}) {
-        const auto [color, depth] = colorAndDepthTargets(kWide, kHigh, samples);
-        const render::PipelineHandle pipeline = flatPipeline({}, DepthState::testAndWrite(CompareFunc::Greater));
-        const render::BufferHandle l = vertexBuffer(pixelRect(kWide, kHigh, 0, 0, kEdge, kHigh, 0.6f));
-        pass(
-            color, glm::vec4(0.0f), [&] { drawFlat(pipeline, l, 6); }, depth, 0.0f);
+        const render::TextureHandle depth =
+            drawnDepth(kWide, kHigh, samples, 0.0f, CompareFunc::Greater, {{0, 0, kEdge, kHigh, 0.6f}});
         const render::Readback greater = gfx().readback(resolved(depth, CompareFunc::Greater));
         const render::Readback less = gfx().readback(resolved(depth, CompareFunc::Less));
         EXPECT_EQ(greater.at(2, 0, 0), 0.6f) << samples;

@@ -25,9 +25,7 @@ void countQuad(render::Backend& gfx, render::TextureHandle depth, render::Pipeli
 }
 
 TEST_P(OcclusionQueryConformance, CountsSamplesThatPassTheDepthTest) {
-    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
-    pass(
-        color, {0, 0, 0, 0}, [] {}, depth, 0.5f);  // every pixel at depth 0.5
+    const auto [color, depth] = colorAndClearedDepth(kSize, kSize, 0.5f);  // every pixel at depth 0.5
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::QueryHandle query = gfx().createQuery("q");
     struct Case {
@@ -51,9 +49,7 @@ TEST_P(OcclusionQueryConformance, CountsSamplesThatPassTheDepthTest) {
 }
 
 TEST_P(OcclusionQueryConformance, ConditionalPassSkipsItsDrawsButNotItsClears) {
-    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
-    pass(
-        color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
+    const auto [color, depth] = colorAndClearedDepth(kSize, kSize, 0.5f);
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::PipelineHandle plain = flatPipeline();
     const render::QueryHandle query = gfx().createQuery("sun");
@@ -87,9 +83,7 @@ TEST_P(OcclusionQueryConformance, ConditionalPassSkipsItsDrawsButNotItsClears) {
 // The query keeps the last count while another pass reuses it before timings are taken
 // (GL keeps a query object per pending read).
 TEST_P(OcclusionQueryConformance, ReusedBeforeTimingsAreTaken) {
-    const auto [color, depth] = colorAndDepthTargets(kSize, kSize);
-    pass(
-        color, {0, 0, 0, 0}, [] {}, depth, 0.5f);
+    const auto [color, depth] = colorAndClearedDepth(kSize, kSize, 0.5f);
     const render::PipelineHandle less = flatPipeline({}, DepthState::testOnly(CompareFunc::Less));
     const render::QueryHandle query = gfx().createQuery("q");
     const render::BufferHandle front = vertexBuffer(pixelRect(kSize, kSize, 0, 0, kSize, kSize, 0.25f));

@@ -63,12 +63,8 @@ TEST(SSAM_GPU_SUITE(Hashed), TechniqueFrameMatchesTheSoftBackendButForRoundingFl
         auto technique = createTechnique(TechniqueKind::Hashed, backend, {});
         const glm::vec3 corners[4] = {{-2, -1.5f, -3}, {2, -1.5f, -3}, {2, 1.5f, -9}, {-2, 1.5f, -9}};
         const test_support::OneDraw draw(backend, card(corners, 3.1f, 0.5f), {{-2, -1.5f, -9}, {2, 1.5f, -3}});
-        FrameTargets opaque(backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
-        backend.beginPass(opaque.passDesc({0, 0, 0, 1}));
-        backend.endPass();
-        test_support::runTechnique(backend, *technique, opaque,
-                                   draw.frame(glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f)));
-        return backend.readback(opaque.color());
+        return test_support::frameOverClear(
+            backend, *technique, draw, glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f), kSize, {0, 0, 0, 1});
     };
     auto soft = soft::createSoftBackend({.threads = 1});
     auto gpu = gpuBackend();

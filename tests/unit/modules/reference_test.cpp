@@ -5,21 +5,15 @@
 
 #include "engine/core/error.hpp"
 #include "technique_fixture.hpp"
+#include "two_quads.hpp"
 
 namespace {
 
 using namespace transparency;
 using namespace transparency::testing;
 
-const Quad kQuadA{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.4f}};
-const Quad kQuadB{-0.25f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 0.6f}};
-const Quad kQuadC{-0.5f, -1.0f, 0.5f, 1.0f, 0.45f, {0.0f, 0.0f, 1.0f, 0.5f}};
-constexpr int kOnlyA = 1, kOverlap = 8, kOnlyB = 14, kRow = 5;
+const Quad kQuadC{-0.5f, -1.0f, 0.5f, 1.0f, 0.45f, {0.0f, 0.0f, 1.0f, 0.5f}};  // blue, between A and B
 const glm::vec3 kOpaque(kOpaqueColor);
-
-void expectRgbNear(const glm::vec3& got, const glm::vec3& want, float tolerance, const std::string& where) {
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << where << " channel " << c;
-}
 
 struct ReferenceRun {
     std::unique_ptr<engine::render::Device> backend = soft::createSoftBackend({});

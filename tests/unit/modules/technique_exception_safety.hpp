@@ -51,20 +51,20 @@ inline void expectTechniqueExceptionSafe(Backend& inner, TechniqueKind kind) {
     EXPECT_GT(creates, 0);
     EXPECT_GT(draws, 0);
 
-    for (int n = 0; n < creates; ++n) {
-        backend.failAt = backend.creates + n;
-        EXPECT_THROW(firstFrame(), engine::Error) << "create " << n << " of " << creates << " was not reached";
-        backend.failAt = -1;
-        EXPECT_EQ(backend.live, live) << "leaked after create " << n << " of " << creates << " threw";
-        EXPECT_TRUE(usable(backend, probe)) << "unusable after create " << n << " threw";
-    }
-    for (int n = 0; n < draws; ++n) {
-        backend.failDrawAt = backend.draws + n;
-        EXPECT_THROW(firstFrame(), engine::Error) << "draw " << n << " of " << draws << " was not reached";
-        backend.failDrawAt = -1;
-        EXPECT_EQ(backend.live, live) << "leaked after draw " << n << " of " << draws << " threw";
-        EXPECT_TRUE(usable(backend, probe)) << "unusable (a pass left open?) after draw " << n << " threw";
-    }
+    // Makes the `n`th of the first frame's `count` creates (or draws) throw, for every n:
+    // `failAt` is the backend's trigger, `calls` its running count of those calls.
+    const auto failEachCall = [&](const char* call, int count, int& failAt, const int& calls) {
+        for (int n = 0; n < count; ++n) {
+            failAt = calls + n;
+            EXPECT_THROW(firstFrame(), engine::Error) << call << " " << n << " of " << count << " was not reached";
+            failAt = -1;
+            EXPECT_EQ(backend.live, live) << "leaked after " << call << " " << n << " of " << count << " threw";
+            EXPECT_TRUE(usable(backend, probe))
+                << "unusable (a pass left open?) after " << call << " " << n << " threw";
+        }
+    };
+    failEachCall("create", creates, backend.failAt, backend.creates);
+    failEachCall("draw", draws, backend.failDrawAt, backend.draws);
     backend.destroy(probe);
 }
 

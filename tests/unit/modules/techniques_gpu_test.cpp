@@ -25,6 +25,13 @@ const Quad kQuadB{-0.25f, -1.0f, 1.0f, 0.5f, 0.6f, {0.0f, 1.0f, 0.5f, 0.6f}};
 const Quad kQuadC{-0.5f, -0.5f, 0.5f, 1.0f, 0.45f, {0.2f, 0.3f, 1.0f, 0.75f}};
 const Quad kWall{0.5f, -1.0f, 1.0f, 1.0f, 0.4f, {1.0f, 1.0f, 1.0f, 1.0f}};
 
+// The largest difference between two readbacks of one size, over every value.
+float largestDifference(const Readback& s, const Readback& g) {
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+    return worst;
+}
+
 Readback runOn(Backend& backend, TechniqueKind kind) {
     auto technique = createTechnique(kind, backend, {});
     TechniqueFrame f(backend, technique->opaqueSamples(), {kQuadA, kQuadB, kQuadC});
@@ -39,8 +46,7 @@ TEST(SSAM_GPU_SUITE(Techniques), EachTechniqueMatchesTheSoftBackend) {
         auto gpu = gpuBackend();
         const Readback s = runOn(*soft, kind), g = runOn(*gpu, kind);
         ASSERT_EQ(s.values.size(), g.values.size());
-        float worst = 0.0f;
-        for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+        const float worst = largestDifference(s, g);
         // Half-float WBOIT targets round alike on both (same operations); 1e-3 leaves room
         // for the GPU's own float evaluation order.
         EXPECT_LE(worst, 1e-3f) << techniqueName(kind);
@@ -66,18 +72,13 @@ TEST(SSAM_GPU_SUITE(Techniques), WboitDepthWeightMatchesTheSoftBackend) {
         quad(8.0f, -0.3f, {0, 1, 0, 0.6f});
         quad(40.0f, 0.2f, {0, 0, 1, 0.7f});
         const test_support::OneDraw draw(backend, vertices, {{-60, -60, -60}, {60, 60, -1}});
-        engine::render::FrameTargets opaque(backend, {kSize, kSize, 1, Format::RGBA32F, CompareFunc::Less});
-        backend.beginPass(opaque.passDesc(kOpaqueColor));
-        backend.endPass();
-        test_support::runTechnique(backend, *technique, opaque,
-                                   draw.frame(glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f)));
-        return backend.readback(opaque.color());
+        return test_support::frameOverClear(
+            backend, *technique, draw, glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f), kSize, kOpaqueColor);
     };
     auto soft = soft::createSoftBackend({.threads = 1});
     auto gpu = gpuBackend();
     const Readback s = run(*soft), g = run(*gpu);
-    float worst = 0.0f;
-    for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+    const float worst = largestDifference(s, g);
     EXPECT_LE(worst, 2e-3f);
 }
 
@@ -96,8 +97,7 @@ TEST(SSAM_GPU_SUITE(Techniques), AlphaToCoverage8MatchesSoftOrIsRefusedWithAClea
     made.reset();
     auto soft = soft::createSoftBackend({.threads = 1});
     const Readback s = runOn(*soft, TechniqueKind::AlphaToCoverage8), g = runOn(*gpu, TechniqueKind::AlphaToCoverage8);
-    float worst = 0.0f;
-    for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+    const float worst = largestDifference(s, g);
     EXPECT_LE(worst, 1e-3f);
 }
 
@@ -109,8 +109,7 @@ TEST(SSAM_GPU_SUITE(Techniques), SharpenedCoverageDerivativeMatchesTheSoftBacken
     auto gpu = gpuBackend();
     const Readback s = drawSharpenedRamp(*soft, 0.45f), g = drawSharpenedRamp(*gpu, 0.45f);
     EXPECT_EQ(expectSharpenedRamp(g, 0.45f, 1e-2f), 1) << kGpuName;
-    float worst = 0.0f;
-    for (std::size_t i = 0; i < s.values.size(); ++i) worst = std::max(worst, std::abs(s.values[i] - g.values[i]));
+    const float worst = largestDifference(s, g);
     // The bilinear filter's weights round differently (llvmpipe: 8 bits of fraction), and the
     // sharpening multiplies alpha's rounding by 1 / width = 56: llvmpipe and lavapipe measured
     // 0.0068.

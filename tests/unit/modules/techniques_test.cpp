@@ -10,6 +10,7 @@
 
 #include "engine/core/error.hpp"
 #include "technique_fixture.hpp"
+#include "two_quads.hpp"
 
 namespace {
 
@@ -17,16 +18,6 @@ using namespace transparency;
 using namespace transparency::testing;
 
 std::unique_ptr<engine::render::Device> softBackend() { return soft::createSoftBackend({}); }
-
-// A (red, alpha 0.4, nearer) covers the left 5/8, B (green, alpha 0.6, farther) the right 5/8.
-const Quad kQuadA{-1.0f, -1.0f, 0.25f, 1.0f, 0.3f, {1.0f, 0.0f, 0.0f, 0.4f}};
-const Quad kQuadB{-0.25f, -1.0f, 1.0f, 1.0f, 0.6f, {0.0f, 1.0f, 0.0f, 0.6f}};
-constexpr int kOnlyA = 1, kOverlap = 8, kOnlyB = 14;  // pixel columns
-constexpr int kRow = 5;
-
-void expectRgbNear(const glm::vec3& got, const glm::vec3& want, float tolerance, const char* where) {
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << where << " channel " << c;
-}
 
 TEST(Techniques, EveryImplementedKindLeavesTheOpaqueFrameUnchangedWithoutFoliage) {
     for (TechniqueKind kind : allTechniques()) {
@@ -175,15 +166,20 @@ TEST(Techniques, SortedBlendingSortsTheInstancesOfOneBatch) {
     }
 }
 
+// A, B and a blue strip (alpha 0.9, nearest) over the bottom rows, drawn by an alpha-to-coverage
+// technique `kind` into the `samples` per pixel it asks for.
+Readback alphaToCoverageFrame(TechniqueKind kind, int samples) {
+    auto backend = softBackend();
+    auto technique = createTechnique(kind, *backend, {});
+    EXPECT_EQ(technique->opaqueSamples(), samples) << techniqueName(kind);
+    TechniqueFrame f(*backend, samples, {kQuadA, kQuadB, {-1.0f, -1.0f, 1.0f, -0.5f, 0.1f, {0, 0, 1, 0.9f}}});
+    return f.run(*technique);
+}
+
 // 4 samples, round(alpha * 4) of them covered: A (0.4) covers 2, B (0.6) covers round(2.4) = 2,
 // the same first two, where A is nearer and wins the depth test.
 TEST(Techniques, AlphaToCoverageCoversRoundAlphaTimesFourSamples) {
-    auto backend = softBackend();
-    auto technique = createTechnique(TechniqueKind::AlphaToCoverage, *backend, {});
-    ASSERT_EQ(technique->opaqueSamples(), 4);
-    TechniqueFrame f(*backend, technique->opaqueSamples(),
-                     {kQuadA, kQuadB, {-1.0f, -1.0f, 1.0f, -0.5f, 0.1f, {0, 0, 1, 0.9f}}});
-    const Readback r = f.run(*technique);
+    const Readback r = alphaToCoverageFrame(TechniqueKind::AlphaToCoverage, 4);
     const glm::vec3 opaque(kOpaqueColor);
     expectRgbNear(rgbAt(r, kOnlyA, kRow), glm::mix(opaque, {1, 0, 0}, 0.5f), 1e-6f, "only A");
     expectRgbNear(rgbAt(r, kOverlap, kRow), glm::mix(opaque, {1, 0, 0}, 0.5f), 1e-6f, "overlap");
@@ -202,12 +198,7 @@ TEST(Techniques, AlphaToCoverageRefusesSingleSampledTargets) {
 // a2c8: round(alpha * 8) of 8 samples, the first ones in sample order, so that nearer layers
 // of lower alpha leave the later samples to those behind: A (0.4) covers 3, B (0.6) 5.
 TEST(Techniques, AlphaToCoverage8CoversRoundAlphaTimesEightSamples) {
-    auto backend = softBackend();
-    auto technique = createTechnique(TechniqueKind::AlphaToCoverage8, *backend, {});
-    ASSERT_EQ(technique->opaqueSamples(), 8);
-    TechniqueFrame f(*backend, technique->opaqueSamples(),
-                     {kQuadA, kQuadB, {-1.0f, -1.0f, 1.0f, -0.5f, 0.1f, {0, 0, 1, 0.9f}}});
-    const Readback r = f.run(*technique);
+    const Readback r = alphaToCoverageFrame(TechniqueKind::AlphaToCoverage8, 8);
     const glm::vec3 opaque(kOpaqueColor), red(1, 0, 0), green(0, 1, 0), blue(0, 0, 1);
     expectRgbNear(rgbAt(r, kOnlyA, kRow), (3.0f * red + 5.0f * opaque) / 8.0f, 1e-6f, "only A");
     expectRgbNear(rgbAt(r, kOverlap, kRow), (3.0f * red + 2.0f * green + 3.0f * opaque) / 8.0f, 1e-6f, "overlap");

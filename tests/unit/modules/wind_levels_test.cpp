@@ -35,12 +35,7 @@ TEST(WindLevels, RestWeightEasesContinuouslyToZero) {
 
 // One plant walked away from the camera, the wind's clock stopped, so only the distance
 // changes the bend.
-struct Walk {
-    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
-    scene::MeshLibrary library{*backend};
-    ecs::Registry registry;
-    scene::ModelId plant = wind::testing::addCardPlant(library);
-    wind::WindSystem system{library};
+struct Walk : wind::testing::CardPlantWorld {
     ecs::Entity e = registry.create();
 
     explicit Walk(bool levels) {

@@ -1,15 +1,20 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Hand-made plants for the wind tests: a crown of intersecting vertical cards around the y
-// axis ([Hathaway 2010] §3.3, Figure 3.2), as one alpha-tested (Mask) part, from y = 0 to `height`.
+// axis ([Hathaway 2010] §3.3, Figure 3.2), as one alpha-tested (Mask) part, from y = 0 to `height`;
+// and the world every wind test starts from, one such plant in a soft backend's library.
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "engine/core/ecs/registry.hpp"
+#include "engine/render/soft/soft_backend.hpp"
 #include "engine/render/vertex.hpp"
 #include "engine/scene/mesh_library.hpp"
+#include "wind/wind_system.hpp"
 
 namespace wind::testing {
 
@@ -45,5 +50,15 @@ inline engine::scene::ModelId addCardPlant(engine::scene::MeshLibrary& library, 
     material.doubleSided = true;
     return library.add("card plant", vertices, indices, material);
 }
+
+// A card plant's model (not yet placed), an empty registry and the wind system; each test
+// adds the Wind and its plants in the order its entities need.
+struct CardPlantWorld {
+    std::unique_ptr<engine::render::Device> backend = engine::render::soft::createSoftBackend({1, 64, false});
+    engine::scene::MeshLibrary library{*backend};
+    engine::ecs::Registry registry;
+    engine::scene::ModelId plant = addCardPlant(library);
+    WindSystem system{library};
+};
 
 }  // namespace wind::testing

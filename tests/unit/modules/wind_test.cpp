@@ -27,12 +27,7 @@ glm::mat4 viewProjFrom(const glm::vec3& eye, const glm::vec3& target) {
     return render::perspectiveReverseZ(1.0f, 1.5f, 0.1f, 30000.0f) * glm::lookAt(eye, target, glm::vec3(0, 1, 0));
 }
 
-struct WindScene {
-    std::unique_ptr<render::Device> backend = render::soft::createSoftBackend({1, 64, false});
-    scene::MeshLibrary library{*backend};
-    ecs::Registry registry;
-    scene::ModelId plant = wind::testing::addCardPlant(library);
-    wind::WindSystem system{library};
+struct WindScene : wind::testing::CardPlantWorld {
     glm::vec3 eye{0.0f, 2.0f, -10.0f};
     bool motionVectors = true;  // a temporal technique with motion vectors runs (WindFrame::motionVectors)
 

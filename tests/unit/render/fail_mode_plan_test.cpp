@@ -4,6 +4,10 @@
 // it can matter), so whether a test is dropped is resolved_draw_state_test's.
 #include <gtest/gtest.h>
 
+#include <tuple>
+#include <utility>
+#include <vector>
+
 #include "engine/render/blend_state.hpp"
 #include "engine/render/fail_mode_plan.hpp"
 
@@ -19,34 +23,35 @@ FailModeInputs inputs(AlphaFailMode mode, bool test, bool write, CompareFunc fun
     return in;
 }
 
+// A plan step as (select, channels, depthWrite): one expectation compares a whole plan and
+// prints it when it differs.
+using Step = std::tuple<FragmentSelect, int, bool>;
+
+std::vector<Step> steps(const FailModePlan& plan) {
+    std::vector<Step> out;
+    for (const PlanStep& s : plan.steps) out.emplace_back(s.select, s.channels, s.depthWrite);
+    return out;
+}
+
 TEST(FailModePlan, OffTestIsOneStepOverAllFragments) {
     FailModeInputs in = inputs(AlphaFailMode::Keep, true, true);
     in.alphaTest.enabled = false;
-    FailModePlan plan = planFailMode(in);
-    ASSERT_EQ(plan.steps.size(), 1u);
-    EXPECT_EQ(plan.steps[0].select, FragmentSelect::All);
-    EXPECT_EQ(plan.steps[0].channels, WriteAll);
-    EXPECT_TRUE(plan.steps[0].depthWrite);
+    EXPECT_EQ(steps(planFailMode(in)), (std::vector<Step>{{FragmentSelect::All, WriteAll, true}}));
     in.depthWrite = false;
-    plan = planFailMode(in);
-    ASSERT_EQ(plan.steps.size(), 1u);
-    EXPECT_FALSE(plan.steps[0].depthWrite);
+    const FailModePlan plan = planFailMode(in);
+    EXPECT_EQ(steps(plan), (std::vector<Step>{{FragmentSelect::All, WriteAll, false}}));
     EXPECT_TRUE(plan.exact);
 }
 
 TEST(FailModePlan, KeepIsADiscard) {
     const FailModePlan plan = planFailMode(inputs(AlphaFailMode::Keep, true, true));
-    ASSERT_EQ(plan.steps.size(), 1u);
-    EXPECT_EQ(plan.steps[0].select, FragmentSelect::Passing);
-    EXPECT_EQ(plan.steps[0].channels, WriteAll);
-    EXPECT_TRUE(plan.steps[0].depthWrite);
+    EXPECT_EQ(steps(plan), (std::vector<Step>{{FragmentSelect::Passing, WriteAll, true}}));
     EXPECT_TRUE(plan.exact);
 }
 
 TEST(FailModePlan, ZbOnlyWithoutDepthWritesIsADiscard) {
     const FailModePlan plan = planFailMode(inputs(AlphaFailMode::ZbOnly, true, false));
-    ASSERT_EQ(plan.steps.size(), 1u);
-    EXPECT_EQ(plan.steps[0].select, FragmentSelect::Passing);
+    EXPECT_EQ(steps(plan), (std::vector<Step>{{FragmentSelect::Passing, WriteAll, false}}));
     EXPECT_TRUE(plan.exact);
 }
 
@@ -54,33 +59,21 @@ TEST(FailModePlan, ZbOnlyWithoutDepthWritesIsADiscard) {
 // that write depth, each in primitive order: exact.
 TEST(FailModePlan, DepthAlwaysRewrite) {
     FailModePlan plan = planFailMode(inputs(AlphaFailMode::FbOnly, true, true, CompareFunc::Always));
-    ASSERT_EQ(plan.steps.size(), 2u);
-    EXPECT_EQ(plan.steps[0].select, FragmentSelect::All);
-    EXPECT_EQ(plan.steps[0].channels, WriteAll);
-    EXPECT_FALSE(plan.steps[0].depthWrite);
-    EXPECT_EQ(plan.steps[1].select, FragmentSelect::Passing);
-    EXPECT_EQ(plan.steps[1].channels, 0);
-    EXPECT_TRUE(plan.steps[1].depthWrite);
+    EXPECT_EQ(steps(plan),
+              (std::vector<Step>{{FragmentSelect::All, WriteAll, false}, {FragmentSelect::Passing, 0, true}}));
     EXPECT_TRUE(plan.exact);
 
     plan = planFailMode(inputs(AlphaFailMode::ZbOnly, true, true, CompareFunc::Always));
-    ASSERT_EQ(plan.steps.size(), 2u);
-    EXPECT_EQ(plan.steps[0].select, FragmentSelect::All);
-    EXPECT_EQ(plan.steps[0].channels, 0);
-    EXPECT_TRUE(plan.steps[0].depthWrite);
-    EXPECT_EQ(plan.steps[1].select, FragmentSelect::Passing);
-    EXPECT_EQ(plan.steps[1].channels, WriteAll);
+    EXPECT_EQ(steps(plan),
+              (std::vector<Step>{{FragmentSelect::All, 0, true}, {FragmentSelect::Passing, WriteAll, false}}));
     EXPECT_TRUE(plan.exact);
 }
 
 TEST(FailModePlan, RgbOnlySplitsColourAndAlpha) {
     FailModeInputs in = inputs(AlphaFailMode::RgbOnly, true, false);
     FailModePlan plan = planFailMode(in);
-    ASSERT_EQ(plan.steps.size(), 2u);
-    EXPECT_EQ(plan.steps[0].select, FragmentSelect::All);
-    EXPECT_EQ(plan.steps[0].channels, WriteRGB);
-    EXPECT_EQ(plan.steps[1].select, FragmentSelect::Passing);
-    EXPECT_EQ(plan.steps[1].channels, WriteA);
+    EXPECT_EQ(steps(plan),
+              (std::vector<Step>{{FragmentSelect::All, WriteRGB, false}, {FragmentSelect::Passing, WriteA, false}}));
     EXPECT_TRUE(plan.exact);
     in.rgbReadsDstAlpha = true;
     plan = planFailMode(in);
@@ -94,14 +87,16 @@ TEST(FailModePlan, RgbOnlySplitsColourAndAlpha) {
 }
 
 TEST(FailModePlan, DepthTestedAndWrittenIsTwoPassAndInexact) {
-    for (AlphaFailMode mode : {AlphaFailMode::FbOnly, AlphaFailMode::ZbOnly, AlphaFailMode::RgbOnly}) {
+    // Each mode's failing fragments write what the mode keeps: everything, depth only, RGB only.
+    const std::pair<AlphaFailMode, Step> failingSteps[] = {
+        {AlphaFailMode::FbOnly, {FragmentSelect::Failing, WriteAll, false}},
+        {AlphaFailMode::ZbOnly, {FragmentSelect::Failing, 0, true}},
+        {AlphaFailMode::RgbOnly, {FragmentSelect::Failing, WriteRGB, false}}};
+    for (const auto& [mode, failing] : failingSteps) {
         FailModeInputs in = inputs(mode, true, true, CompareFunc::LessEqual);
         FailModePlan plan = planFailMode(in);
-        ASSERT_EQ(plan.steps.size(), 2u) << alphaFailModeName(mode);
-        EXPECT_EQ(plan.steps[0].select, FragmentSelect::Passing);
-        EXPECT_EQ(plan.steps[0].channels, WriteAll);
-        EXPECT_TRUE(plan.steps[0].depthWrite);
-        EXPECT_EQ(plan.steps[1].select, FragmentSelect::Failing);
+        EXPECT_EQ(steps(plan), (std::vector<Step>{{FragmentSelect::Passing, WriteAll, true}, failing}))
+            << alphaFailModeName(mode);
         EXPECT_FALSE(plan.exact);
         EXPECT_NE(plan.note.find(alphaFailModeName(mode)), std::string::npos) << plan.note;
         EXPECT_FALSE(plan.perTriangle);
@@ -110,12 +105,6 @@ TEST(FailModePlan, DepthTestedAndWrittenIsTwoPassAndInexact) {
         EXPECT_TRUE(plan.exact);
         EXPECT_TRUE(plan.perTriangle);
     }
-    const FailModePlan zb = planFailMode(inputs(AlphaFailMode::ZbOnly, true, true));
-    EXPECT_EQ(zb.steps[1].channels, 0);
-    EXPECT_TRUE(zb.steps[1].depthWrite);
-    const FailModePlan rgb = planFailMode(inputs(AlphaFailMode::RgbOnly, true, true));
-    EXPECT_EQ(rgb.steps[1].channels, WriteRGB);
-    EXPECT_FALSE(rgb.steps[1].depthWrite);
 }
 
 }  // namespace
