@@ -40,12 +40,6 @@ add_link_options(-fexceptions)
 # this empty target.
 add_library(TBB::tbb INTERFACE IMPORTED GLOBAL)
 set(SSAM_STB_INCLUDE_DIR ${SSAM_WEB_HEADERS} CACHE PATH "stb headers (the web build links Debian's)" FORCE)
-# The light shafts: the module builds for WebAssembly (its x86 march is left out there, the
-# scalar one kept), and its passes run on the page, but under WebGL2 (ANGLE on SwiftShader) the
-# shafts add nothing where the native GLES driver draws them, cause not yet found: the page
-# leaves the module out rather than draw a frame without them while saying they are on (its
-# flag, as natively --no-lightshafts, stays in the table, its factory empty).
-set(SSAM_MODULE_LIGHTSHAFTS OFF CACHE BOOL "the web build has no light shafts (they add nothing under WebGL2 yet)" FORCE)
 # The page is one program over the engine's libraries: no GL 4.5 or Vulkan package components,
 # no installed library, none of the native demo's tools or tests (game/web builds what it needs).
 set(SSAM_LIBRARY_ONLY ON)

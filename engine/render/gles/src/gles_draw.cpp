@@ -118,6 +118,27 @@ void GlesDriver::applyBlend(const DriverDraw& draw) {
     glBlendColor(state.blendConstant.r, state.blendConstant.g, state.blendConstant.b, state.blendConstant.a);
 }
 
+// ES 3.0 filters no depth format, and no 32-bit float one without OES_texture_float_linear
+// (§3.8.13, Table 3.13): such a texture under a Bilinear or Trilinear sampler is incomplete and
+// every read of it returns 0, silently. The draw is refused instead, naming the texture.
+void GlesDriver::refuseUnfilterable(const GlesProgram& program, const DriverDraw& draw) {
+    const auto* bytes = static_cast<const std::byte*>(draw.desc->params.data());
+    for (const TextureField& field : program.slot->desc->gl.textures) {
+        if (field.read != TextureRead::Sampled) continue;
+        TextureBinding binding;
+        std::memcpy(&binding, bytes + field.offset, sizeof binding);
+        if (!binding.texture || binding.sampler.filter == Filter::Nearest) continue;
+        const TextureDesc& desc = textures_[natives_->texture(binding.texture)].desc;
+        const FormatInfo& info = formatInfo(desc.format);
+        const bool wide = desc.format == Format::RGBA32F || desc.format == Format::R32F;
+        if (!info.isDepth && !(wide && !extensions_.floatLinear)) continue;
+        throw Error(drawName(draw, *pass_) + ": " + quotedName(desc.name) + " (" + std::string(info.name) +
+                    ") is sampled with a filter, which OpenGL ES 3.0 does not allow for this format" +
+                    (info.isDepth ? "" : " without GL_OES_texture_float_linear (" + renderer_ + " lacks it)") +
+                    ": its reads would return 0; sample it with Filter::Nearest or read it with texelFetch");
+    }
+}
+
 // What textureQueryLevels would return for each sampled texture (glslEs).
 void GlesDriver::setLevels(const GlesProgram& program, const DrawParams& params) {
     const auto* bytes = static_cast<const std::byte*>(params.data());
@@ -145,6 +166,7 @@ void GlesDriver::draw(const DriverDraw& draw) {
     const bool fullscreen = draw.fullscreen;
     const ResolvedDrawState& state = *draw.state;
     const FailModePlan& plan = state.failModes;
+    refuseUnfilterable(program, draw);
     makeCurrent();
 
     glBindFramebuffer(GL_FRAMEBUFFER, passFbo_);

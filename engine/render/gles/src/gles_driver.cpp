@@ -37,6 +37,7 @@ GlesDriver::GlesDriver(const GlesOptions& options, std::shared_ptr<gl::GlContext
     extensions_.colorBufferFloat = gl::glHasExtension("GL_EXT_color_buffer_float");
     extensions_.floatBlend = gl::glHasExtension("GL_EXT_float_blend");
     extensions_.drawBuffersIndexed = gl::glHasExtension("GL_OES_draw_buffers_indexed");
+    extensions_.floatLinear = gl::glHasExtension("GL_OES_texture_float_linear");
     textureLimits_ = gl::queryGlTextureLimits(renderer_, true);
 
     drainGlErrors();

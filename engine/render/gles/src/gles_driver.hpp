@@ -41,6 +41,7 @@ struct GlesExtensions {
     bool floatBlend = false;          // EXT_float_blend: blend into 32F
     bool drawBuffersIndexed = false;  // OES_draw_buffers_indexed: blend state per target
     bool gpuShader5 = false;          // EXT_gpu_shader5: `precise`
+    bool floatLinear = false;         // OES_texture_float_linear: filter 32F
 };
 
 // Framebuffer attachments are named by their GL names; a renderbuffer's (multisampled targets:
@@ -109,6 +110,7 @@ private:
     void bindVertices(const DriverDraw& d, std::uint32_t firstInstance);
     void drawRange(const DriverDraw& d, std::uint32_t first, std::uint32_t count, std::uint32_t instances);
     void applyBlend(const DriverDraw& draw);
+    void refuseUnfilterable(const GlesProgram& program, const DriverDraw& draw);
     void setLevels(const GlesProgram& program, const DrawParams& params);
 
     GlesOptions options_;

@@ -89,6 +89,12 @@ NativeId GlesDriver::createTexture(const TextureDesc& desc, const TextureData* d
         glGenTextures(1, &t.id);
         glBindTexture(GL_TEXTURE_2D, t.id);
         glTexStorage2D(GL_TEXTURE_2D, desc.mipLevels, f.internal, desc.width, desc.height);
+        // A texture's own filters apply where no sampler object is bound: the texelFetch reads
+        // (TextureRead::Texel) and the depth readback. texelFetch ignores them, but completeness
+        // does not (ES 3.0 §3.8.13): a depth texture under the default LINEAR filters is
+        // incomplete and every read of it returns 0 (ANGLE holds to this, llvmpipe does not).
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
     try {
         checkGl(what + ": allocating " + std::to_string(desc.width) + "x" + std::to_string(desc.height) + " " +
