@@ -20,7 +20,7 @@ struct SweepGrid {
     std::vector<float> colorAlphaReference{16.0f / 255.0f, 64.0f / 255.0f, 128.0f / 255.0f};
     std::vector<ssam::MaskPrecision> maskPrecision{ssam::MaskPrecision::Rgba8, ssam::MaskPrecision::Rgba16f};
     std::vector<bool> colorBlur{false};  // Settings::colorBlur: off unless asked (--sweep-blur)
-    bool full = false;  // every combination; otherwise around the defaults (see sweepSettings)
+    bool full = false;                   // every combination; otherwise around the defaults (see sweepSettings)
 };
 
 struct SweepSetting {
