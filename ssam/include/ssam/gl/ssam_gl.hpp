@@ -95,10 +95,10 @@ using ssam::Rect;
 // setAttributeLocations()):
 // set them to the locations the host's own VAOs already use (e.g. uv at 8, normal at 2) so its
 // vertex arrays are reused as they are (a host with something at 8 moves instanceTint too). Each
-// below 16 (GL's minimum GL_MAX_VERTEX_ATTRIBS), no two overlapping (instanceModel takes four). An attribute the host's VAO does not enable reads SSAM's
-// generic value: normal (0,0,1), uv (0,0), colour and instance tint (1,1,1,1), instance model
-// columns the identity; a plain mesh needs only position (+ uv for a texture). SSAM restores the
-// generic values it sets. The tint's alpha is how a host crossfades two levels of detail through
+// below 16 (GL's minimum GL_MAX_VERTEX_ATTRIBS), no two overlapping (instanceModel takes four).
+// An attribute the host's VAO does not enable reads SSAM's generic value: normal (0,0,1), uv
+// (0,0), colour and instance tint (1,1,1,1), instance model columns the identity; a plain mesh
+// needs only position (+ uv for a texture). SSAM restores the generic values it sets. The tint's alpha is how a host crossfades two levels of detail through
 // the mask, sort-free: each level's instances carry its weight.
 struct AttributeLocations {
     unsigned int position = 0;       // vec3
