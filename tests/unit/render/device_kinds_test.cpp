@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "expect_error.hpp"  // tests/support
+#include "pin_vulkan_libraries.hpp"
 #include "engine/render/devices/create_device.hpp"
 
 namespace {
@@ -31,8 +32,10 @@ TEST(DeviceKinds, EveryKindIsNamedOnceAndParsedBack) {
 }
 
 // Whatever this machine has: a kind the table calls available is made, one it does not is
-// refused by createDevice too, and each device runs the driver its row names.
+// refused by createDevice too, and each device runs the driver its row names. (The Vulkan kind
+// loads lavapipe: pinned first under the sanitizers, as the Vulkan test programs do.)
 TEST(DeviceKinds, AKindIsMadeExactlyWhereTheTableSaysItCanBe) {
+    test_support::pinVulkanLibrariesForLeakSanitizer();
     EXPECT_EQ(render::deviceUnavailableReason(DeviceKind::Soft), "");
     for (const render::DeviceKindInfo& k : render::deviceKinds()) {
         render::DeviceOptions options;
