@@ -130,38 +130,49 @@ bool openSection(std::ostream& out, const char* heading, bool ran) {
     return ran;
 }
 
-void writeMotion(std::ostream& out, const std::vector<MotionRow>& motion) {
-    if (!openSection(out, "In motion", !motion.empty())) return;
-    out << "The forest through the motions of `ssam-bench --motion` (game/docs/motion.md): the sideways "
-           "pan, the dolly toward the trees, the wind under a still camera and the car crossing it, "
-        << motion.front().frames
-        << " measured frames each, every frame against that frame's reference over the foliage pixels. "
-           "Converged: the median over the last half of the frames; worst: the worst frame; ghosting: the "
-           "error on the pixels whose surface moved; flicker: the change between frames less the "
-           "reference's. The temporal techniques reproject by motion vectors; the levels of detail are the "
-           "comparison's (the command above).\n\n"
-           "| motion | technique | flicker | ꟻLIP converged | ꟻLIP worst | RMSE converged | ghosting converged | "
-           "ghosting worst |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
-    for (const MotionRow& r : motion)
-        out << "| " << r.motion << " | `" << r.technique << "` | " << num(r.flicker, "%.5f") << " | "
-            << num(r.flip, "%.4f") << " | " << num(r.flipWorst, "%.4f") << " | " << num(r.rmse, "%.5f") << " | "
-            << num(r.ghost, "%.4f") << " | " << num(r.ghostWorst, "%.4f") << " |\n";
+// A section over runs of `frames` frames: the text before and after the frame count (the
+// table's head at its end), then one table line per row.
+template <class Row, class WriteRow>
+void writeFramesSection(std::ostream& out, const char* heading, const std::vector<Row>& rows, const char* before,
+                        const char* after, WriteRow writeRow) {
+    if (!openSection(out, heading, !rows.empty())) return;
+    out << before << rows.front().frames << after;
+    for (const Row& r : rows) writeRow(r);
     out << "\n";
 }
 
+void writeMotion(std::ostream& out, const std::vector<MotionRow>& motion) {
+    writeFramesSection(
+        out, "In motion", motion,
+        "The forest through the motions of `ssam-bench --motion` (game/docs/motion.md): the sideways "
+        "pan, the dolly toward the trees, the wind under a still camera and the car crossing it, ",
+        " measured frames each, every frame against that frame's reference over the foliage pixels. "
+        "Converged: the median over the last half of the frames; worst: the worst frame; ghosting: the "
+        "error on the pixels whose surface moved; flicker: the change between frames less the "
+        "reference's. The temporal techniques reproject by motion vectors; the levels of detail are the "
+        "comparison's (the command above).\n\n"
+        "| motion | technique | flicker | ꟻLIP converged | ꟻLIP worst | RMSE converged | ghosting converged | "
+        "ghosting worst |\n|---|---|---:|---:|---:|---:|---:|---:|\n",
+        [&out](const MotionRow& r) {
+            out << "| " << r.motion << " | `" << r.technique << "` | " << num(r.flicker, "%.5f") << " | "
+                << num(r.flip, "%.4f") << " | " << num(r.flipWorst, "%.4f") << " | " << num(r.rmse, "%.5f") << " | "
+                << num(r.ghost, "%.4f") << " | " << num(r.ghostWorst, "%.4f") << " |\n";
+        });
+}
+
 void writeDolly(std::ostream& out, const std::vector<DollyRow>& dolly) {
-    if (!openSection(out, "Along the dolly", !dolly.empty())) return;
-    out << "Popping at the levels of detail's changes (`ssam-bench --dolly`, game/docs/levels_of_detail.md): "
-           "the forest's dolly, "
-        << dolly.front().frames
-        << " frames, drawn with the levels of detail and at full detail. pop: the largest ꟻLIP between "
-           "consecutive frames; pop_lod: the largest change the levels add to the motion's own; LOD ꟻLIP: the "
-           "LOD frame against the full-detail frame over the plant pixels, mean and worst.\n\n"
-           "| technique | pop | pop_lod | LOD ꟻLIP mean | LOD ꟻLIP worst |\n|---|---:|---:|---:|---:|\n";
-    for (const DollyRow& r : dolly)
-        out << "| `" << r.technique << "` | " << num(r.pop, "%.4f") << " | " << num(r.popLod, "%.4f") << " | "
-            << num(r.lodFlipMean, "%.4f") << " | " << num(r.lodFlipWorst, "%.4f") << " |\n";
-    out << "\n";
+    writeFramesSection(
+        out, "Along the dolly", dolly,
+        "Popping at the levels of detail's changes (`ssam-bench --dolly`, game/docs/levels_of_detail.md): "
+        "the forest's dolly, ",
+        " frames, drawn with the levels of detail and at full detail. pop: the largest ꟻLIP between "
+        "consecutive frames; pop_lod: the largest change the levels add to the motion's own; LOD ꟻLIP: the "
+        "LOD frame against the full-detail frame over the plant pixels, mean and worst.\n\n"
+        "| technique | pop | pop_lod | LOD ꟻLIP mean | LOD ꟻLIP worst |\n|---|---:|---:|---:|---:|\n",
+        [&out](const DollyRow& r) {
+            out << "| `" << r.technique << "` | " << num(r.pop, "%.4f") << " | " << num(r.popLod, "%.4f") << " | "
+                << num(r.lodFlipMean, "%.4f") << " | " << num(r.lodFlipWorst, "%.4f") << " |\n";
+        });
 }
 
 void writeGoalsOrAbsence(std::ostream& out, const std::vector<Goal>& goals) {

@@ -73,21 +73,17 @@ std::vector<SweepSetting> sweepSettings(const SweepGrid& grid) {
             c.squareMask = square;
             add(c);
         }
-    for (float reference : grid.colorAlphaReference) {
-        ssam::Settings c = defaults;
-        c.colorAlphaReference = reference;
-        add(c);
-    }
-    for (ssam::MaskPrecision precision : grid.maskPrecision) {
-        ssam::Settings c = defaults;
-        c.maskPrecision = precision;
-        add(c);
-    }
-    for (bool blur : grid.colorBlur) {
-        ssam::Settings c = defaults;
-        c.colorBlur = blur;
-        add(c);
-    }
+    // The other knobs one at a time from the defaults.
+    auto vary = [&](const auto& values, auto knob) {
+        for (auto value : values) {
+            ssam::Settings c = defaults;
+            c.*knob = value;
+            add(c);
+        }
+    };
+    vary(grid.colorAlphaReference, &ssam::Settings::colorAlphaReference);
+    vary(grid.maskPrecision, &ssam::Settings::maskPrecision);
+    vary(grid.colorBlur, &ssam::Settings::colorBlur);
     return settings;
 }
 

@@ -34,6 +34,7 @@
 #include "engine/core/output_file.hpp"
 #include "engine/core/usage_error.hpp"
 #include "engine/render/devices/create_device.hpp"
+#include "on_off_option.hpp"
 #include "report_text.hpp"
 #include "simd_flag.hpp"
 #include "ssam/core/settings.hpp"
@@ -416,11 +417,10 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         "--ssam-setting", o.ssamSettings,
         "NAME=VALUE, repeatable: one of techniques ssam's and ssam+taa's knobs over the preset's (maskLerp, "
         "colorAlphaReference, colorFade in [0,1], squareMask, colorBlur on/off; ssam/docs/steady_in_motion.md)");
-    app.add_option("--ssam-plus-blur", o.ssamPlusBlur,
-                   "technique ssam-plus's composite averages the foliage colour over 3x3 (on) or takes the pixel's "
-                   "own (off; ssam/docs/ssam_plus.md)")
-        ->check(CLI::IsMember({"on", "off"}))
-        ->capture_default_str();
+    racer::addOnOffOption(
+        app, "--ssam-plus-blur", o.ssamPlusBlur,
+        "technique ssam-plus's composite averages the foliage colour over 3x3 (on) or takes the pixel's "
+        "own (off; ssam/docs/ssam_plus.md)");
     app.add_option(
            "--backend", o.backends,
            "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU), vk (Vulkan; lavapipe without a GPU)")
@@ -495,16 +495,13 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     app.add_option("--out", o.out, "output directory (created if missing; checked before the first frame)")
         ->capture_default_str();
     app.add_option("--content", o.contentDir, "content directory")->capture_default_str();
-    app.add_option("--lod", o.lod,
-                   "levels of detail for the scenes' trees and bushes, chosen for --size: on, or off (every plant "
-                   "at full detail)")
-        ->check(CLI::IsMember({"on", "off"}))
-        ->capture_default_str();
-    app.add_option("--crossfade", o.crossfade,
-                   "with --lod on, crossfade each level change over 10 % of its threshold (both levels drawn, "
-                   "their weights in the instance alpha): on, or off (each level switches in one frame)")
-        ->check(CLI::IsMember({"on", "off"}))
-        ->capture_default_str();
+    racer::addOnOffOption(
+        app, "--lod", o.lod,
+        "levels of detail for the scenes' trees and bushes, chosen for --size: on, or off (every plant "
+        "at full detail)");
+    racer::addOnOffOption(app, "--crossfade", o.crossfade,
+                          "with --lod on, crossfade each level change over 10 % of its threshold (both levels drawn, "
+                          "their weights in the instance alpha): on, or off (each level switches in one frame)");
     CLI::Option* dolly = app.add_flag(
         "--dolly", o.dolly,
         "instead of comparing techniques: popping along the forest's dolly (the camera moving toward the trees "
@@ -522,11 +519,10 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     app.add_option("--motion-frames", o.motionFrames, "frames measured per motion (2..117)")
         ->capture_default_str()
         ->needs(motion);
-    app.add_option("--motion-vectors", o.motionVectors,
-                   "with --motion, the temporal techniques reproject by the draws' motion vectors (on) or by the "
-                   "camera alone (off)")
-        ->check(CLI::IsMember({"on", "off"}))
-        ->capture_default_str()
+    racer::addOnOffOption(
+        app, "--motion-vectors", o.motionVectors,
+        "with --motion, the temporal techniques reproject by the draws' motion vectors (on) or by the "
+        "camera alone (off)")
         ->needs(motion);
     motion->excludes(sweep)->excludes(scaling)->excludes(figures)->excludes(dolly);
     app.footer(engine::cli::contractHelpFooter());

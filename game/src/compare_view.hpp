@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/non_copyable.hpp"
 #include "engine/render/backend.hpp"
 #include "engine/render/frame_graph.hpp"
 #include "engine/render/owned.hpp"
@@ -22,15 +23,13 @@ namespace racer {
 class FrameRenderer;
 struct RendererOptions;
 
-class CompareView {
+class CompareView : engine::NonCopyable {
 public:
     // `right` is made from `options` (its technique is B). Throws engine::Error when B
     // cannot run on this backend.
     CompareView(engine::render::Backend& backend, const engine::scene::MeshLibrary& library,
                 const RendererOptions& options);
     ~CompareView();
-    CompareView(const CompareView&) = delete;
-    CompareView& operator=(const CompareView&) = delete;
 
     FrameRenderer& right() { return *right_; }
 

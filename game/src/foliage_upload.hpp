@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/core/non_copyable.hpp"
 #include "engine/render/backend.hpp"
 #include "engine/render/frame_buffer_pool.hpp"
 #include "engine/scene/draw_lists.hpp"
@@ -14,11 +15,9 @@
 
 namespace racer {
 
-class FoliageUpload {
+class FoliageUpload : engine::NonCopyable {
 public:
     explicit FoliageUpload(engine::render::Backend& backend) : instances_(backend) {}
-    FoliageUpload(const FoliageUpload&) = delete;
-    FoliageUpload& operator=(const FoliageUpload&) = delete;
 
     // Valid until the next call (the draws point into `lists`' instance vectors).
     std::span<const transparency::FoliageDraw> upload(const engine::scene::DrawLists& lists,

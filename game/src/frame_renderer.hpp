@@ -16,6 +16,7 @@
 
 #include "camera_rig.hpp"
 #include "engine/capture/target_capture.hpp"
+#include "engine/core/non_copyable.hpp"
 #include "engine/render/backend.hpp"
 #include "engine/render/frame_buffer_pool.hpp"
 #include "engine/render/frame_graph.hpp"
@@ -46,15 +47,13 @@ struct RendererOptions {
     bool captureLayers = false;  // keep every intermediate of the last frame (EXR layers)
 };
 
-class FrameRenderer {
+class FrameRenderer : engine::NonCopyable {
 public:
     // Throws engine::Error (from transparency::createTechnique) when the backend cannot run
     // the technique or it is not implemented.
     FrameRenderer(engine::render::Backend& backend, const engine::scene::MeshLibrary& library,
                   const RendererOptions& options);
     ~FrameRenderer();
-    FrameRenderer(const FrameRenderer&) = delete;
-    FrameRenderer& operator=(const FrameRenderer&) = delete;
 
     // Switches the foliage technique (the window's keys). Throws engine::Error and keeps the
     // current technique when the new one cannot be created.

@@ -15,6 +15,7 @@
 
 #include "camera_rig.hpp"
 #include "engine/core/ecs/scheduler.hpp"
+#include "engine/core/non_copyable.hpp"
 #include "engine/scene/feature_module.hpp"
 #include "engine/scene/frame_feature.hpp"
 #include "racer_feature_modules.hpp"
@@ -37,13 +38,11 @@ struct LivingSceneOptions {
 std::map<std::string, bool> onlyModules(std::span<const engine::scene::FeatureModule> modules,
                                         std::initializer_list<const char*> on);
 
-class LivingScene {
+class LivingScene : engine::NonCopyable {
 public:
     LivingScene(engine::ecs::Registry& registry, const engine::scene::MeshLibrary& library,
                 const LivingSceneOptions& options);
     ~LivingScene();
-    LivingScene(const LivingScene&) = delete;
-    LivingScene& operator=(const LivingScene&) = delete;
 
     // The features' systems for this frame (wind deformation, water ripples), seen from
     // `camera`; call after the simulation step, before extraction. `motionVectors`: the frame

@@ -9,6 +9,7 @@
 #include "engine/cli/command_line.hpp"
 #include "engine/core/usage_error.hpp"
 #include "engine/render/devices/create_device.hpp"
+#include "on_off_option.hpp"
 #include "racer_feature_modules.hpp"
 #include "simd_flag.hpp"
 
@@ -93,11 +94,9 @@ void addOptions(CLI::App& app, Options& o) {
                    "A,B: render the frame with technique A and with B, side by side (A left, B right), labelled, "
                    "with 4x insets of the crop where they differ most, e.g. ssam,alpha-test; in a window V toggles "
                    "it and B steps B");
-    app.add_option("--lod", o.lod,
+    addOnOffOption(app, "--lod", o.lod,
                    "levels of detail for trees and bushes: on (the full model near, fewer and larger cards further, "
-                   "an impostor far; switched by measured screen-space error) or off (every plant at full detail)")
-        ->check(CLI::IsMember({"on", "off"}))
-        ->capture_default_str();
+                   "an impostor far; switched by measured screen-space error) or off (every plant at full detail)");
     app.add_flag("--hud", o.hud,
                  "draw the HUD into the frame (and so into --capture): technique, backend, size, frame and pass "
                  "times; in a window H toggles it");

@@ -63,50 +63,48 @@ SsamPasses addSsamPasses(FrameGraph& graph, ScreenSpaceAlphaMask& ssam, const Fo
             ssam.colorPass(*plan, view, toTextureHandle(r.get(d.depth)), targetsOf(r, {}, {}, d.foliage, d.depthCopy));
         });
 
-    // The composite and the depth restore read the mask pass's targets.
-    auto readMasks = [&maskPass](FrameGraph::Builder& b) {
+    // The composite and the depth restore read the mask pass's targets and one earlier output
+    // (`after`), and write `target` in place; InPlaceData keeps the written version.
+    struct InPlaceData {
+        FrameGraphTexture written;
+    };
+    auto afterMasksInPlace = [&maskPass, empty](FrameGraph::Builder& b, FrameGraphTexture after,
+                                                FrameGraphTexture target) {
         b.read(maskPass.mask);
         if (maskPass.maskAdd.isValid()) b.read(maskPass.maskAdd);
+        b.read(after);
+        const FrameGraphTexture written = b.write(b.read(target));
+        if (empty) b.markEmpty();
+        return written;
     };
 
-    struct CompositeData {
-        FrameGraphTexture color;
-    };
-    const CompositeData& compositePass = graph.addPass<CompositeData>(
+    const InPlaceData& compositePass = graph.addPass<InPlaceData>(
         "ssam composite",
-        [&](FrameGraph::Builder& b, CompositeData& d) {
-            readMasks(b);
-            b.read(colorPass.foliage);
-            d.color = b.write(b.read(color));  // blended in place onto the opaque colour
-            if (empty) b.markEmpty();
+        [&](FrameGraph::Builder& b, InPlaceData& d) {
+            d.written = afterMasksInPlace(b, colorPass.foliage, color);  // blended in place onto the opaque colour
         },
-        [&ssam, plan, targetsOf, &maskPass, &colorPass](const FrameGraph::Resources& r, const CompositeData& d) {
-            ssam.compositePass(*plan, toTextureHandle(r.get(d.color)),
+        [&ssam, plan, targetsOf, &maskPass, &colorPass](const FrameGraph::Resources& r, const InPlaceData& d) {
+            ssam.compositePass(*plan, toTextureHandle(r.get(d.written)),
                                targetsOf(r, maskPass.mask, maskPass.maskAdd, colorPass.foliage));
         });
 
     FrameGraphTexture depthOut = colorPass.depth;
     if (descs.depthCopy) {
         // depthMaskThreshold > 0: the foliage depth where the composited mask reaches it.
-        struct DepthData {
-            FrameGraphTexture depth;
-        };
-        const DepthData& depthPass = graph.addPass<DepthData>(
+        const InPlaceData& depthPass = graph.addPass<InPlaceData>(
             "ssam depth restore",
-            [&](FrameGraph::Builder& b, DepthData& d) {
-                readMasks(b);
-                b.read(compositePass.color);  // after the composite, as the other hosts' restore
-                d.depth = b.write(b.read(colorPass.depth));
-                if (empty) b.markEmpty();
+            [&](FrameGraph::Builder& b, InPlaceData& d) {
+                // after the composite, as the other hosts' restore
+                d.written = afterMasksInPlace(b, compositePass.written, colorPass.depth);
             },
-            [&ssam, &view, plan, targetsOf, &maskPass](const FrameGraph::Resources& r, const DepthData& d) {
-                ssam.foliageDepthPass(*plan, view, toTextureHandle(r.get(d.depth)),
+            [&ssam, &view, plan, targetsOf, &maskPass](const FrameGraph::Resources& r, const InPlaceData& d) {
+                ssam.foliageDepthPass(*plan, view, toTextureHandle(r.get(d.written)),
                                       targetsOf(r, maskPass.mask, maskPass.maskAdd, {}));
             });
-        depthOut = depthPass.depth;
+        depthOut = depthPass.written;
     }
 
-    SsamPasses out{{compositePass.color, depthOut}, {}, {}, {}};
+    SsamPasses out{{compositePass.written, depthOut}, {}, {}, {}};
     if (!empty) out.mask = maskPass.mask, out.maskAdd = maskPass.maskAdd, out.foliage = colorPass.foliage;
     return out;
 }

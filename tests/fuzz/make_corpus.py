@@ -320,18 +320,28 @@ def gltf_text_seeds():
             seeds[path.name] = path.read_bytes()
     # Siblings the fuzz target provides next to the input (fuzz_gltf_text.cpp).
     doc = fx.triangle_doc("triangle.bin")
-    seeds["sibling_texture_subdir.gltf"] = compact(mutated(doc, "images", 0, "uri", "textures/leaf4.png"))
-    seeds["sibling_symlink_escape.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "escape.bin"))
-    seeds["sibling_directory_as_buffer.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "textures"))
-    seeds["sibling_image_as_buffer.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "leaf4.png"))
-    seeds["sibling_buffer_as_image.gltf"] = compact(mutated(doc, "images", 0, "uri", "triangle.bin"))
-    seeds["sibling_percent_encoded.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "triangle%2Ebin"))
-    seeds["sibling_self_as_buffer.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "input.gltf"))
-    seeds["sibling_dot_segments.gltf"] = compact(mutated(doc, "images", 0, "uri", "./textures/./leaf4.png"))
-    seeds["uri_nul_byte.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "triangle.bin%00.png"))
-    seeds["uri_windows_drive.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "C:\\Windows\\win.ini"))
-    seeds["uri_home.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "~/triangle.bin"))
-    seeds["uri_bad_percent.gltf"] = compact(mutated(doc, "buffers", 0, "uri", "triangle%2"))
+    # The image's or the buffer's URI, one per seed: {seed: uri} for each of the two.
+    uris = {
+        "images": {
+            "sibling_texture_subdir.gltf": "textures/leaf4.png",
+            "sibling_buffer_as_image.gltf": "triangle.bin",
+            "sibling_dot_segments.gltf": "./textures/./leaf4.png",
+        },
+        "buffers": {
+            "sibling_symlink_escape.gltf": "escape.bin",
+            "sibling_directory_as_buffer.gltf": "textures",
+            "sibling_image_as_buffer.gltf": "leaf4.png",
+            "sibling_percent_encoded.gltf": "triangle%2Ebin",
+            "sibling_self_as_buffer.gltf": "input.gltf",
+            "uri_nul_byte.gltf": "triangle.bin%00.png",
+            "uri_windows_drive.gltf": "C:\\Windows\\win.ini",
+            "uri_home.gltf": "~/triangle.bin",
+            "uri_bad_percent.gltf": "triangle%2",
+        },
+    }
+    for array, seed_uris in uris.items():
+        for name, uri in seed_uris.items():
+            seeds[name] = compact(mutated(doc, array, 0, "uri", uri))
 
     palm, blob = palm_draco()
     palm["buffers"][0]["uri"] = fx.data_uri(blob)

@@ -18,6 +18,15 @@ namespace transparency {
 
 namespace soft = engine::render::soft;
 
+// The composites' guards against a degenerate accumulation reaching the frame: a value clamped
+// to [0, 1] with NaN to 0 (the comparisons' order does that), and non-finite channels to 0.
+inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+inline glm::vec3 finiteRgb(glm::vec3 c) {
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(c[i])) c[i] = 0.0f;
+    return c;
+}
+
 // Weighted blended OIT (McGuire & Bavoil, JCGT 2(2), 2013), eq. (7):
 //   w(z, a) = a * clamp(10 / (1e-5 + (|z|/5)^2 + (|z|/200)^6), 1e-2, 3e3)
 // (programs.hpp WboitAccumulateParams). Written out with multiplications only, in the same
@@ -47,26 +56,28 @@ struct WboitAccumulateKernel {
     }
 };
 
-// The WBOIT composite: (average colour, revealage), blended INV_SRC_ALPHA / SRC_ALPHA onto
-// the opaque colour by the pipeline (program.hpp WboitResolveParams).
-struct WboitResolveKernel {
+// What the WBOIT and transmittance resolves read at their pixel: an accumulated colour and a
+// second target whose red channel is the factor the pipeline blends by, clamped to [0, 1].
+struct ColorFactorInputs {
     static constexpr soft::ProgramNeeds kNeeds{};
     static constexpr bool kReadsPixels = true;
-    const soft::SoftTexture* accumulation = nullptr;
-    const soft::SoftTexture* revealage = nullptr;
+    const soft::SoftTexture* color = nullptr;
+    const soft::SoftTexture* factor = nullptr;
 
+    glm::vec4 colorAt(const soft::Fragment& f) const { return soft::fetchTexel(*color, f.x, f.y); }
+    float factorAt(const soft::Fragment& f) const { return clamp01(soft::fetchTexel(*factor, f.x, f.y).r); }
+};
+
+// The WBOIT composite: (average colour, revealage), blended INV_SRC_ALPHA / SRC_ALPHA onto
+// the opaque colour by the pipeline (program.hpp WboitResolveParams).
+struct WboitResolveKernel : ColorFactorInputs {
     WboitResolveKernel(const WboitResolveParams& p, const soft::TextureLookup& textures)
-        : accumulation(textures.texture(p.accumulation)), revealage(textures.texture(p.revealage)) {}
+        : ColorFactorInputs{textures.texture(p.accumulation), textures.texture(p.revealage)} {}
 
     glm::vec4 shade(const soft::Fragment& f) const {
-        const glm::vec4 sum = soft::fetchTexel(*accumulation, f.x, f.y);
-        float reveal = soft::fetchTexel(*revealage, f.x, f.y).r;
-        reveal = reveal > 0.0f ? (reveal < 1.0f ? reveal : 1.0f) : 0.0f;  // NaN -> 0
-        const float weight = sum.a > 1e-5f ? sum.a : 1e-5f;               // the paper's max(accum.a, 1e-5)
-        glm::vec3 average = glm::vec3(sum) / weight;
-        for (int c = 0; c < 3; ++c)
-            if (!std::isfinite(average[c])) average[c] = 0.0f;
-        return {average, reveal};
+        const glm::vec4 sum = colorAt(f);
+        const float weight = sum.a > 1e-5f ? sum.a : 1e-5f;  // the paper's max(accum.a, 1e-5)
+        return {finiteRgb(glm::vec3(sum) / weight), factorAt(f)};
     }
 };
 
@@ -81,7 +92,7 @@ inline float layerCoverage(CoverageModel model, float maxMask, float addMask) {
     } else if (maxMask > 0.0f) {
         coverage = 1.0f - std::pow(1.0f - maxMask, addMask / maxMask);
     }
-    return coverage > 0.0f ? (coverage < 1.0f ? coverage : 1.0f) : 0.0f;  // NaN -> 0
+    return clamp01(coverage);
 }
 
 // What both SSAM+ composites read: CoverageCompositeParams' textures, looked up once per draw.
@@ -113,10 +124,7 @@ struct CoverageCompositeKernel : CoverageCompositeInputs {
     glm::vec4 shade(const soft::Fragment& f) const {
         const glm::vec4 m = soft::fetchTexel(*mask, f.x, f.y);
         const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, f.x, f.y).r : m.a;
-        glm::vec3 color(soft::fetchTexel(*foliage, f.x, f.y));
-        for (int c = 0; c < 3; ++c)
-            if (!std::isfinite(color[c])) color[c] = 0.0f;
-        return {color, layerCoverage(model, m.r, addMask)};
+        return {finiteRgb(glm::vec3(soft::fetchTexel(*foliage, f.x, f.y))), layerCoverage(model, m.r, addMask)};
     }
 };
 
@@ -164,29 +172,16 @@ private:
     glm::vec4 blurred(const Window& w, int i, int x, int y) const {
         const glm::vec4 m = soft::fetchTexel(*mask, x, y);
         const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, x, y).r : m.a;
-        glm::vec3 color = w.filtered(i);
-        for (int c = 0; c < 3; ++c)
-            if (!std::isfinite(color[c])) color[c] = 0.0f;
-        return {color, layerCoverage(model, m.r, addMask)};
+        return {finiteRgb(w.filtered(i)), layerCoverage(model, m.r, addMask)};
     }
 };
 
-struct TransmittanceCompositeKernel {
-    static constexpr soft::ProgramNeeds kNeeds{};
-    static constexpr bool kReadsPixels = true;
-    const soft::SoftTexture* color = nullptr;
-    const soft::SoftTexture* transmittance = nullptr;
-
+// (colour, transmittance): the colour as accumulated, the transmittance the blend factor.
+struct TransmittanceCompositeKernel : ColorFactorInputs {
     TransmittanceCompositeKernel(const TransmittanceCompositeParams& p, const soft::TextureLookup& textures)
-        : color(textures.texture(p.color)), transmittance(textures.texture(p.transmittance)) {}
+        : ColorFactorInputs{textures.texture(p.color), textures.texture(p.transmittance)} {}
 
-    glm::vec4 shade(const soft::Fragment& f) const {
-        const float t = soft::fetchTexel(*transmittance, f.x, f.y).r;
-        glm::vec3 c(soft::fetchTexel(*color, f.x, f.y));
-        for (int i = 0; i < 3; ++i)
-            if (!std::isfinite(c[i])) c[i] = 0.0f;
-        return {c, t > 0.0f ? (t < 1.0f ? t : 1.0f) : 0.0f};  // NaN -> 0
-    }
+    glm::vec4 shade(const soft::Fragment& f) const { return {finiteRgb(glm::vec3(colorAt(f))), factorAt(f)}; }
 };
 
 }  // namespace transparency

@@ -19,5 +19,7 @@ std::string formatName(VkFormat format);
 
 // Throws DeviceError (OutOfMemory for the VK_ERROR_OUT_OF_*_MEMORY results) naming `what`.
 void check(VkResult result, const char* what);
+// The same, naming "`call`, `what`": the call that failed and the object it was making for.
+void check(VkResult result, const char* call, const char* what);
 
 }  // namespace ssam::vk::detail

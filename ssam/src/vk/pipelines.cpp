@@ -17,8 +17,7 @@ VkShaderModule createModule(const VkFunctions& vk, const std::uint32_t* code, st
     info.codeSize = bytes;
     info.pCode = code;
     VkShaderModule module = VK_NULL_HANDLE;
-    check(vk.CreateShaderModule(vk.device, &info, vk.allocator, &module),
-          (std::string("vkCreateShaderModule, ") + what).c_str());
+    check(vk.CreateShaderModule(vk.device, &info, vk.allocator, &module), "vkCreateShaderModule", what);
     return module;
 }
 

@@ -95,16 +95,14 @@ Image createImage(const VkFunctions& vk, const MemorySource& memory, VkFormat fo
         info.usage = usage;
         info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
         info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-        check(vk.CreateImage(vk.device, &info, vk.allocator, &out.image),
-              (std::string("vkCreateImage, ") + what).c_str());
+        check(vk.CreateImage(vk.device, &info, vk.allocator, &out.image), "vkCreateImage", what);
         allocateAndBind(vk, memory, out, what);
         VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = out.image;
         view.viewType = VK_IMAGE_VIEW_TYPE_2D;
         view.format = format;
         view.subresourceRange = {aspect, 0, 1, 0, 1};
-        check(vk.CreateImageView(vk.device, &view, vk.allocator, &out.view),
-              (std::string("vkCreateImageView, ") + what).c_str());
+        check(vk.CreateImageView(vk.device, &view, vk.allocator, &out.view), "vkCreateImageView", what);
     });
 }
 
@@ -122,8 +120,7 @@ Buffer createBuffer(const VkFunctions& vk, const MemorySource& memory, VkDeviceS
         info.size = size;
         info.usage = usage;
         info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-        check(vk.CreateBuffer(vk.device, &info, vk.allocator, &out.buffer),
-              (std::string("vkCreateBuffer, ") + what).c_str());
+        check(vk.CreateBuffer(vk.device, &info, vk.allocator, &out.buffer), "vkCreateBuffer", what);
         allocateAndBind(vk, memory, out, what);
     });
 }

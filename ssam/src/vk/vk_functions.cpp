@@ -36,6 +36,10 @@ void check(VkResult result, const char* what) {
                       std::to_string(static_cast<int>(result)) + ")");
 }
 
+void check(VkResult result, const char* call, const char* what) {
+    if (result != VK_SUCCESS) check(result, (std::string(call) + ", " + what).c_str());
+}
+
 void loadFunctions(VkFunctions& vk, const DeviceDesc& desc) {
     PFN_vkGetDeviceProcAddr getDevice = desc.getDeviceProcAddr;
     if (!getDevice)

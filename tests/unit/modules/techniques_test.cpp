@@ -19,6 +19,26 @@ using namespace transparency::testing;
 
 std::unique_ptr<engine::render::Device> softBackend() { return soft::createSoftBackend({}); }
 
+// One soft frame of `kind` over `foliage`: kept whole so a test can check the technique and
+// the opaque targets after the frame as well as its colour.
+struct SoftRun {
+    std::unique_ptr<engine::render::Device> backend;
+    std::unique_ptr<Technique> technique;
+    TechniqueFrame frame;
+    Readback result;
+
+    SoftRun(TechniqueKind kind, int samples, const std::vector<Quad>& foliage, const TechniqueOptions& options = {})
+        : backend(softBackend()), technique(createTechnique(kind, *backend, options)),
+          frame(*backend, samples, foliage), result(frame.run(*technique)) {}
+};
+
+// The layers a technique asks the frame graph for, in order: what a host must allocate for it.
+std::vector<std::string> intermediateLayers(const Technique& technique) {
+    std::vector<std::string> names;
+    for (const GraphTarget& t : technique.graphIntermediates()) names.push_back(t.layer);
+    return names;
+}
+
 TEST(Techniques, EveryImplementedKindLeavesTheOpaqueFrameUnchangedWithoutFoliage) {
     for (TechniqueKind kind : allTechniques()) {
         auto backend = softBackend();
@@ -66,21 +86,30 @@ TEST(Techniques, AlphaTestHonoursTheOpaqueDepth) {
     expectRgbNear(rgbAt(r, kOnlyB, kRow), {1.0f, 1.0f, 1.0f}, 0.0f, "behind the wall");
 }
 
-TEST(Techniques, AlphaTestRejectsABadReference) {
-    auto backend = softBackend();
-    TechniqueOptions options;
-    options.alphaTestReference = 1.5f;
-    EXPECT_THROW(createTechnique(TechniqueKind::AlphaTest, *backend, options), engine::Error);
+// Each technique refuses an option outside its range when it is created, not mid-frame.
+TEST(Techniques, RejectBadOptions) {
+    struct Case {
+        TechniqueKind kind;
+        void (*spoil)(TechniqueOptions&);
+    };
+    const Case cases[] = {
+        {TechniqueKind::AlphaTest, [](TechniqueOptions& o) { o.alphaTestReference = 1.5f; }},
+        {TechniqueKind::Wboit, [](TechniqueOptions& o) { o.wboitDepthScale = 0.0f; }},
+    };
+    for (const Case& c : cases) {
+        auto backend = softBackend();
+        TechniqueOptions options;
+        c.spoil(options);
+        EXPECT_THROW(createTechnique(c.kind, *backend, options), engine::Error) << techniqueName(c.kind);
+    }
 }
 
 // [Hathaway 2010] §3.5.4 with Pure's defaults: mask = lerp(max, add, 0.85), squared; the colour
 // pass keeps fragments with alpha >= 64/255 and the nearest one wins its depth test.
 TEST(Techniques, SsamMatchesThePaperFormula) {
-    auto backend = softBackend();
-    auto technique = createTechnique(TechniqueKind::Ssam, *backend, {});
-    EXPECT_EQ(technique->kind(), TechniqueKind::Ssam);
-    TechniqueFrame f(*backend, 2, {kQuadA, kQuadB});
-    const Readback r = f.run(*technique);
+    const SoftRun run(TechniqueKind::Ssam, 2, {kQuadA, kQuadB});
+    EXPECT_EQ(run.technique->kind(), TechniqueKind::Ssam);
+    const Readback& r = run.result;
     auto q8 = [](float v) { return std::round(v * 255.0f) / 255.0f; };  // RGBA8 mask
     auto ssamMask = [&](float maxMask, float addMask) {
         const float m = std::clamp(q8(maxMask) + (q8(addMask) - q8(maxMask)) * 0.85f, 0.0f, 1.0f);
@@ -91,17 +120,13 @@ TEST(Techniques, SsamMatchesThePaperFormula) {
     expectRgbNear(rgbAt(r, kOnlyA, kRow), glm::mix(opaque, red, ssamMask(0.4f, 0.4f)), 1e-5f, "only A");
     expectRgbNear(rgbAt(r, kOverlap, kRow), glm::mix(opaque, red, ssamMask(0.6f, 1.0f)), 1e-5f, "overlap");
     expectRgbNear(rgbAt(r, kOnlyB, kRow), glm::mix(opaque, green, ssamMask(0.6f, 0.6f)), 1e-5f, "only B");
-    std::vector<std::string> names;
-    for (const GraphTarget& t : technique->graphIntermediates()) names.push_back(t.layer);
-    EXPECT_EQ(names, (std::vector<std::string>{"mask", "foliage"}));
+    EXPECT_EQ(intermediateLayers(*run.technique), (std::vector<std::string>{"mask", "foliage"}));
 }
 
 // Drawn A (near) then B (far): the wrong order for "over" where they overlap.
 TEST(Techniques, UnsortedBlendingComposesInSubmissionOrder) {
-    auto backend = softBackend();
-    auto technique = createTechnique(TechniqueKind::BlendUnsorted, *backend, {});
-    TechniqueFrame f(*backend, 1, {kQuadA, kQuadB});
-    const Readback r = f.run(*technique);
+    const SoftRun run(TechniqueKind::BlendUnsorted, 1, {kQuadA, kQuadB});
+    const Readback& r = run.result;
     const glm::vec3 opaque(kOpaqueColor);
     expectRgbNear(rgbAt(r, kOnlyA, kRow), over(kQuadA.color, opaque), 1e-6f, "only A");
     expectRgbNear(rgbAt(r, kOnlyB, kRow), over(kQuadB.color, opaque), 1e-6f, "only B");
@@ -113,15 +138,13 @@ TEST(Techniques, UnsortedBlendingComposesInSubmissionOrder) {
 }
 
 TEST(Techniques, SortedBlendingIsExactForSeparateQuads) {
-    auto backend = softBackend();
-    auto technique = createTechnique(TechniqueKind::BlendSorted, *backend, {});
-    TechniqueFrame f(*backend, 1, {kQuadA, kQuadB});
-    const Readback r = f.run(*technique);
+    const SoftRun run(TechniqueKind::BlendSorted, 1, {kQuadA, kQuadB});
+    const Readback& r = run.result;
     const glm::vec3 opaque(kOpaqueColor);
     expectRgbNear(rgbAt(r, kOverlap, kRow), over(kQuadA.color, over(kQuadB.color, opaque)), 1e-6f, "overlap");
     expectRgbNear(rgbAt(r, kOnlyA, kRow), over(kQuadA.color, opaque), 1e-6f, "only A");
     // The opaque depth is left as it was (no depth write).
-    EXPECT_FLOAT_EQ(backend->readback(f.opaque.depth()).at(kOverlap, kRow, 0), 1.0f);
+    EXPECT_FLOAT_EQ(run.backend->readback(run.frame.opaque.depth()).at(kOverlap, kRow, 0), 1.0f);
 }
 
 // One batch, three instances of a white quad tinted and moved in depth, submitted near to
@@ -229,10 +252,8 @@ TEST(Techniques, AlphaToCoverageSharpWithFlatAlphaCoversAllOrNothingAtFourAndEig
 //   average = sum(C a^2) / sum(a^2),  revealage = prod(1 - a),
 //   result  = average * (1 - revealage) + opaque * revealage.
 TEST(Techniques, WboitMatchesThePaperFormula) {
-    auto backend = softBackend();
-    auto technique = createTechnique(TechniqueKind::Wboit, *backend, {});
-    TechniqueFrame f(*backend, 1, {kQuadA, kQuadB});
-    const Readback r = f.run(*technique);
+    const SoftRun run(TechniqueKind::Wboit, 1, {kQuadA, kQuadB});
+    const Readback& r = run.result;
     const glm::vec3 opaque(kOpaqueColor), red(1, 0, 0), green(0, 1, 0);
     auto wboit = [&](std::vector<glm::vec4> layers) {
         glm::vec3 sum(0.0f);
@@ -251,14 +272,11 @@ TEST(Techniques, WboitMatchesThePaperFormula) {
     const glm::vec3 both = wboit({kQuadA.color, kQuadB.color});
     expectRgbNear(rgbAt(r, kOverlap, kRow), both, kHalf, "overlap");
     // Order independent: the same in the other submission order.
-    auto backend2 = softBackend();
-    auto technique2 = createTechnique(TechniqueKind::Wboit, *backend2, {});
-    TechniqueFrame f2(*backend2, 1, {kQuadB, kQuadA});
-    const Readback r2 = f2.run(*technique2);
-    expectRgbNear(rgbAt(r2, kOverlap, kRow), both, kHalf, "overlap, B submitted first");
+    const SoftRun reversed(TechniqueKind::Wboit, 1, {kQuadB, kQuadA});
+    expectRgbNear(rgbAt(reversed.result, kOverlap, kRow), both, kHalf, "overlap, B submitted first");
     // and not the exact "over" (the approximation is visible in this case).
     EXPECT_GT(glm::length(both - over(kQuadA.color, over(kQuadB.color, opaque))), 0.02f);
-    EXPECT_EQ(technique->graphIntermediates().size(), 2u);
+    EXPECT_EQ(run.technique->graphIntermediates().size(), 2u);
 }
 
 // Eq. (7)'s weight falls with view depth: nearer layers dominate the average.
@@ -308,46 +326,32 @@ TEST(Techniques, WboitWeightsNearerLayersMore) {
     backend->destroy(buffer);
 }
 
-TEST(Techniques, WboitRejectsABadDepthScale) {
-    auto backend = softBackend();
-    TechniqueOptions options;
-    options.wboitDepthScale = 0.0f;
-    EXPECT_THROW(createTechnique(TechniqueKind::Wboit, *backend, options), engine::Error);
-}
-
 // SSAM+: coverage = 1 - (1 - MAX)^(ADD / MAX) from a float mask (program.hpp
 // CoverageModel::EqualLayers), exact for layers of equal alpha: three stacked quads of
 // alpha 0.5 cover 1 - 0.5^3 = 0.875, where the paper's lerp(0.5, min(1.5, 1), 0.85)^2 gives
 // 0.855 and the exact "over" of their colours would be reached only with exact colours.
 TEST(Techniques, SsamPlusEstimatesTheCoverageOfEqualLayersExactly) {
-    auto backend = softBackend();
-    auto technique = createTechnique(TechniqueKind::SsamPlus, *backend, {});
-    EXPECT_EQ(technique->kind(), TechniqueKind::SsamPlus);
     const glm::vec4 grey{0.5f, 0.5f, 0.5f, 0.5f};
-    TechniqueFrame f(*backend, 1, {{-1, -1, 1, 1, 0.3f, grey}, {-1, -1, 1, 1, 0.4f, grey}, {-1, -1, 0, 1, 0.5f, grey}});
-    const Readback r = f.run(*technique);
+    const std::vector<Quad> layers{{-1, -1, 1, 1, 0.3f, grey}, {-1, -1, 1, 1, 0.4f, grey}, {-1, -1, 0, 1, 0.5f, grey}};
+    const SoftRun run(TechniqueKind::SsamPlus, 1, layers);
+    EXPECT_EQ(run.technique->kind(), TechniqueKind::SsamPlus);
+    const Readback& r = run.result;
     const glm::vec3 opaque(kOpaqueColor);
     // Left: three layers; right: two. All grey, so the colour pass's choice does not matter.
     expectRgbNear(rgbAt(r, 3, kRow), glm::mix(opaque, glm::vec3(0.5f), 0.875f), 1e-3f, "three layers");
     expectRgbNear(rgbAt(r, 12, kRow), glm::mix(opaque, glm::vec3(0.5f), 0.75f), 1e-3f, "two layers");
     // The exact reference agrees (equal-colour layers: over is exactly the coverage lerp).
-    auto reference = createTechnique(TechniqueKind::Reference, *backend, {});
-    TechniqueFrame g(*backend, 1, {{-1, -1, 1, 1, 0.3f, grey}, {-1, -1, 1, 1, 0.4f, grey}, {-1, -1, 0, 1, 0.5f, grey}});
-    const Readback exact = g.run(*reference);
-    expectRgbNear(rgbAt(r, 3, kRow), rgbAt(exact, 3, kRow), 1e-3f, "three layers vs reference");
-    std::vector<std::string> names;
-    for (const GraphTarget& t : technique->graphIntermediates()) names.push_back(t.layer);
-    EXPECT_EQ(names, (std::vector<std::string>{"mask_max", "mask_add", "foliage"}));
+    const SoftRun exact(TechniqueKind::Reference, 1, layers);
+    expectRgbNear(rgbAt(r, 3, kRow), rgbAt(exact.result, 3, kRow), 1e-3f, "three layers vs reference");
+    EXPECT_EQ(intermediateLayers(*run.technique), (std::vector<std::string>{"mask_max", "mask_add", "foliage"}));
 }
 
 TEST(Techniques, SsamPlusExponentialModel) {
-    auto backend = softBackend();
     TechniqueOptions options;
     options.ssamPlus.coverage = CoverageModel::Exponential;
     options.ssamPlus.maskPrecision = ssam::MaskPrecision::Rgba16f;
-    auto technique = createTechnique(TechniqueKind::SsamPlus, *backend, options);
-    TechniqueFrame f(*backend, 1, {kQuadA, kQuadB});
-    const Readback r = f.run(*technique);
+    const SoftRun run(TechniqueKind::SsamPlus, 1, {kQuadA, kQuadB}, options);
+    const Readback& r = run.result;
     const glm::vec3 opaque(kOpaqueColor);
     // Overlap: ADD = 1.0, coverage 1 - e^-1; the colour pass keeps A (nearest, 0.4 >= 64/255).
     expectRgbNear(rgbAt(r, kOverlap, kRow), glm::mix(opaque, glm::vec3(1, 0, 0), 1.0f - std::exp(-1.0f)), 1e-3f,

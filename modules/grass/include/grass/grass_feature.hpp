@@ -18,8 +18,6 @@ public:
     // Throws engine::Error for bad options or more tufts than options.maxTufts.
     GrassFeature(engine::render::Backend& backend, std::vector<Tuft> tufts, const GrassOptions& options = {});
     ~GrassFeature() override;
-    GrassFeature(const GrassFeature&) = delete;
-    GrassFeature& operator=(const GrassFeature&) = delete;
 
     std::string_view name() const override { return "grass"; }
     // One pass, "grass", that writes the depth too (later passes see the grass); empty when

@@ -37,8 +37,6 @@ class LightShaftFeature final : public engine::scene::Feature {
 public:
     LightShaftFeature(engine::render::Backend& backend, const LightShaftOptions& options = {});
     ~LightShaftFeature() override;
-    LightShaftFeature(const LightShaftFeature&) = delete;
-    LightShaftFeature& operator=(const LightShaftFeature&) = delete;
 
     std::string_view name() const override { return "light shafts"; }
     // One pass, "light shafts"; none issued (an empty pass) when the sun's glow misses the frame.

@@ -23,8 +23,6 @@ class ParticleFeature final : public engine::scene::Feature {
 public:
     ParticleFeature(engine::render::Backend& backend, const ParticleOptions& options = {}, std::uint64_t seed = 1);
     ~ParticleFeature() override;
-    ParticleFeature(const ParticleFeature&) = delete;
-    ParticleFeature& operator=(const ParticleFeature&) = delete;
 
     std::string_view name() const override { return "particles"; }
     void registerSystems(engine::ecs::Scheduler& scheduler) override;

@@ -21,21 +21,18 @@ void print(Level lvl, const Args&... args) {
     write(lvl, out.str());
 }
 
-template <typename... Args>
-void debug(const Args&... args) {
-    print(Level::Debug, args...);
-}
-template <typename... Args>
-void info(const Args&... args) {
-    print(Level::Info, args...);
-}
-template <typename... Args>
-void warn(const Args&... args) {
-    print(Level::Warn, args...);
-}
-template <typename... Args>
-void error(const Args&... args) {
-    print(Level::Error, args...);
-}
+// log::debug(...), log::info(...), log::warn(...), log::error(...): print at a fixed level, one
+// callable per level rather than four copies of the same forwarding function.
+template <Level L>
+struct AtLevel {
+    template <typename... Args>
+    void operator()(const Args&... args) const {
+        print(L, args...);
+    }
+};
+inline constexpr AtLevel<Level::Debug> debug{};
+inline constexpr AtLevel<Level::Info> info{};
+inline constexpr AtLevel<Level::Warn> warn{};
+inline constexpr AtLevel<Level::Error> error{};
 
 }  // namespace engine::log

@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/core/ecs/scheduler.hpp"
+#include "engine/core/non_copyable.hpp"
 #include "engine/render/backend.hpp"
 #include "engine/render/compare_func.hpp"
 #include "engine/render/frame_graph/color_depth.hpp"
@@ -63,7 +64,7 @@ struct SimulationFrame {
     bool motionVectors = false;
 };
 
-class Feature {
+class Feature : NonCopyable {
 public:
     virtual ~Feature() = default;
     // Also the prefix of every pass the feature runs (backend->takeTimings() shows them).
