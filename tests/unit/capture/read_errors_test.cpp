@@ -23,6 +23,10 @@ extern "C" const char* __lsan_default_suppressions() {
     return "leak:OpenImageIO_v2_4::PNGInput::PngReadCallback\n"
            "leak:OpenImageIO_v2_4::ImageInput::geterror\n";
 }
+// The leaked blocks are allocated in libstdc++ on the library's behalf, and neither library keeps
+// frame pointers: the fast unwinder's stack may stop in libstdc++ before reaching a frame the
+// suppressions name (it did at -O1). The slow unwinder reaches them; only this binary pays for it.
+extern "C" const char* __asan_default_options() { return "fast_unwind_on_malloc=0"; }
 
 namespace {
 
