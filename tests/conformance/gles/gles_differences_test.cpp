@@ -4,7 +4,8 @@
 // [Hathaway 2010] §3.5.1 is refused by name, native alpha-to-coverage is reported inexact,
 // pass times say they are the CPU's, a colour resolve still averages by blit, and a depth
 // texture sampled with a filter (incomplete on ES 3.0: its reads would be 0) is refused by name,
-// as a 32-bit float one is without OES_texture_float_linear.
+// as a 32-bit float one is without OES_texture_float_linear, and without EXT_clip_control the
+// device still starts, says so, and draws with the extension's origin, facing and depth.
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
@@ -65,6 +66,16 @@ TEST(GlesDifferences, MultisampledColourResolvesToTheClearValue) {
         }
 }
 
+// Where a ctest entry turns `extension` off with Mesa's MESA_EXTENSION_OVERRIDE, the current
+// context must lack it: an ignored override would otherwise pass as the extension's own path.
+::testing::AssertionResult overrideHonoured(const std::string& extension) {
+    const char* override = std::getenv("MESA_EXTENSION_OVERRIDE");
+    const bool turnedOff = override && std::string_view(override).find("-" + extension) != std::string_view::npos;
+    if (turnedOff && epoxy_has_gl_extension(extension.c_str()))
+        return ::testing::AssertionFailure() << "MESA_EXTENSION_OVERRIDE did not turn " << extension << " off";
+    return ::testing::AssertionSuccess();
+}
+
 // A triangle over a target sampling `texture` as its base colour through `filter`.
 void drawSampling(Device& device, TextureHandle texture, Filter filter) {
     const TextureHandle colour = device.createTexture(target("colour", Format::RGBA8_UNORM, 1));
@@ -119,13 +130,8 @@ TEST(GlesDifferences, Float32SampledWithAFilterNeedsFloatLinear) {
     TextureDesc desc = target("float colour", Format::RGBA32F, 1);
     desc.usage = UsageSampled;
     const TextureHandle texture = device->createTexture(desc);
-    const char* override = std::getenv("MESA_EXTENSION_OVERRIDE");
-    const bool turnedOff =
-        override && std::string_view(override).find("-GL_OES_texture_float_linear") != std::string_view::npos;
+    ASSERT_TRUE(overrideHonoured("GL_OES_texture_float_linear"));
     const bool floatLinear = epoxy_has_gl_extension("GL_OES_texture_float_linear");
-    if (turnedOff) {
-        ASSERT_FALSE(floatLinear) << "MESA_EXTENSION_OVERRIDE did not turn the extension off";
-    }
     EXPECT_NO_THROW(drawSampling(*device, texture, Filter::Nearest));
     for (const Filter filter : {Filter::Bilinear, Filter::Trilinear}) {
         if (floatLinear) {
@@ -141,6 +147,54 @@ TEST(GlesDifferences, Float32SampledWithAFilterNeedsFloatLinear) {
             EXPECT_NE(message.find("without GL_OES_texture_float_linear"), std::string::npos) << message;
         }
     }
+}
+
+// Without EXT_clip_control the vertex stages remap origin and depth themselves (gles_shaders.cpp).
+// Mesa offers the extension, so the fallback runs where ctest's
+// GlesDifferences.ClipControlRemappedWithoutTheExtension turns it off (MESA_EXTENSION_OVERRIDE);
+// there the test first checks that it is off. Either way the device starts, says which path it
+// took, and a back-culled counter-clockwise triangle over the top half lands in rows 0-1 at its
+// depth: origin, facing and depth as the extension gives them.
+TEST(GlesDifferences, ClipControlPathIsNamedAndDrawsTheSame) {
+    const auto device = createGlesBackend();
+    ASSERT_TRUE(overrideHonoured("GL_EXT_clip_control"));
+    const bool clipControl = epoxy_has_gl_extension("GL_EXT_clip_control");
+    const std::string line = device->driver().describe();
+    EXPECT_NE(line.find(clipControl ? "by EXT_clip_control"
+                                    : "depth and origin remapped in the vertex stage: no EXT_clip_control"),
+              std::string::npos)
+        << line;
+
+    const TextureHandle colour = device->createTexture(target("colour", Format::RGBA8_UNORM, 1));
+    const TextureHandle depth = device->createTexture(target("depth", Format::D32F, 1));
+    // Counter-clockwise as displayed (y up in NDC), covering NDC y > 0: the top two rows.
+    const std::vector<Vertex> triangle{{{-1.0f, 0.0f, 0.25f}}, {{3.0f, 0.0f, 0.25f}}, {{-1.0f, 4.0f, 0.25f}}};
+    const auto bytes = std::as_bytes(std::span(triangle));
+    const BufferHandle vertices = device->createBuffer({"triangle", BufferKind::Vertex, bytes.size()}, bytes);
+    PipelineDesc desc;
+    desc.name = "top half";
+    desc.program = ProgramKind::Flat;
+    desc.depth = DepthState::testAndWrite(CompareFunc::Less);
+    desc.raster.cull = CullMode::Back;
+    PassDesc pass;
+    pass.name = "top half";
+    pass.color[0] = {colour, LoadOp::Clear};
+    pass.depth = {depth, LoadOp::Clear, 1.0f};
+    device->beginPass(pass);
+    DrawDesc d;
+    d.pipeline = device->createPipeline(desc);
+    d.params = FlatParams{};
+    d.vertices = vertices;
+    d.count = 3;
+    device->draw(d);
+    device->endPass();
+    const Readback c = device->readback(colour);
+    const Readback z = device->readback(depth);
+    for (int y = 0; y < c.height; ++y)
+        for (int x = 0; x < c.width; ++x) {
+            EXPECT_EQ(c.at(x, y, 0), y < 2 ? 1.0f : 0.0f) << x << ", " << y;
+            EXPECT_EQ(z.at(x, y, 0), y < 2 ? 0.25f : 1.0f) << x << ", " << y;
+        }
 }
 
 TEST(GlesDifferences, AlphaToCoverageIsReportedInexact) {

@@ -63,16 +63,18 @@ const ParamCalls kDirectStateParamCalls{
 #endif
 
 std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc, GlslTarget target) {
-    return compileSlot(std::move(desc),
-                       [target](std::string source) { return withGlslVersion(source, target.major, target.minor); });
+    return compileSlot(std::move(desc), [target](std::string source, GLenum) {
+        return withGlslVersion(source, target.major, target.minor);
+    });
 }
 
 std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc,
                                                const GlslTranslation& translate) {
     auto s = std::make_shared<ProgramSlot>();
     const UniformBlockLayout layout = uniformBlockLayout(desc->name, desc->gl);
-    s->program = compileProgram(desc->name, translate(vertexSource(desc->vertexInput, desc->name, layout)),
-                                translate(fragmentSource(desc->vertexInput, layout, desc->gl.fragment)));
+    s->program =
+        compileProgram(desc->name, translate(vertexSource(desc->vertexInput, desc->name, layout), GL_VERTEX_SHADER),
+                       translate(fragmentSource(desc->vertexInput, layout, desc->gl.fragment), GL_FRAGMENT_SHADER));
     for (const UniformField& u : desc->gl.uniforms) s->uniforms.push_back(s->program.uniform(u.name));
     for (const TextureField& t : desc->gl.textures) {
         ProgramSlot::TextureUniforms& l = s->textures.emplace_back();

@@ -37,8 +37,9 @@ struct GlslTarget {
 // Compiles a program's GLSL and locates its uniforms.
 std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc, GlslTarget target);
 // The same with the GL 4.5 stages turned into the GLSL a context compiles by `translate` (the
-// GLES driver's `#version 300 es` dialect).
-using GlslTranslation = std::function<std::string(std::string source)>;
+// GLES driver's `#version 300 es` dialect), told which stage (GL_VERTEX_SHADER or
+// GL_FRAGMENT_SHADER) each source is: the GLES driver's vertex stages may end differently.
+using GlslTranslation = std::function<std::string(std::string source, GLenum stage)>;
 std::shared_ptr<const ProgramSlot> compileSlot(std::shared_ptr<const ProgramDesc> desc,
                                                const GlslTranslation& translate);
 

@@ -30,10 +30,10 @@ GlesDriver::GlesDriver(const GlesOptions& options, std::shared_ptr<gl::GlContext
     if (gl::glIsDesktop() || gl::glVersion() < 30)
         throw Error("GLES backend: OpenGL ES 3.0 or newer needed, the context is " + version_);
     renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    // ES 3.0 has no glClipControl: without EXT_clip_control every picture would be upside down
-    // against the soft driver's and depth would lose its [0, 1] range.
-    if (!gl::glHasExtension("GL_EXT_clip_control"))
-        throw Error("GLES backend: " + renderer_ + " lacks GL_EXT_clip_control (upper-left origin, depth in [0, 1])");
+    // ES 3.0 has no glClipControl: without EXT_clip_control every vertex stage ends by changing
+    // its clip position to what the extension's origin and depth mode give (why it is the same
+    // picture and depth: gles_shaders.cpp), and front faces are decided reversed (gles_draw.cpp).
+    extensions_.clipControl = gl::glHasExtension("GL_EXT_clip_control");
     extensions_.colorBufferFloat = gl::glHasExtension("GL_EXT_color_buffer_float");
     extensions_.floatBlend = gl::glHasExtension("GL_EXT_float_blend");
     extensions_.drawBuffersIndexed = gl::glHasExtension("GL_OES_draw_buffers_indexed");
@@ -82,7 +82,11 @@ GlesDriver::~GlesDriver() {
 }
 
 std::string GlesDriver::describe() const {
-    return "gles: " + renderer_ + ", " + version_ + " (pass times: CPU wall time of recording, ES has no timer query)";
+    return "gles: " + renderer_ + ", " + version_ +
+           " (pass times: CPU wall time of recording, ES has no timer query; " +
+           (extensions_.clipControl ? "upper-left origin and depth in [0, 1] by EXT_clip_control"
+                                    : "depth and origin remapped in the vertex stage: no EXT_clip_control") +
+           ")";
 }
 
 namespace {

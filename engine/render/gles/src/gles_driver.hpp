@@ -37,6 +37,7 @@ using gl::ProgramSlot;
 // What the context offers beyond ES 3.0 that the driver uses (each refused by name when a
 // resource or draw needs it and it is missing).
 struct GlesExtensions {
+    bool clipControl = false;         // EXT_clip_control: else remapped in the vertex stage (glslEs)
     bool colorBufferFloat = false;    // EXT_color_buffer_float: render to 16F/32F
     bool floatBlend = false;          // EXT_float_blend: blend into 32F
     bool drawBuffersIndexed = false;  // OES_draw_buffers_indexed: blend state per target

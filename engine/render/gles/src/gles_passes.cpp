@@ -112,7 +112,9 @@ std::vector<DriverTiming> GlesDriver::takeTimings() { return std::exchange(timin
 // context may have changed it. ES 3.0 has no GL_MULTISAMPLE or GL_FRAMEBUFFER_SRGB switch:
 // both are always on.
 void GlesDriver::applyBaseState() {
-    glClipControlEXT(GL_UPPER_LEFT_EXT, GL_ZERO_TO_ONE_EXT);
+    // Without the extension the vertex stages do its work (glslEs) under ES's default
+    // (lower-left, -1 to 1), which nothing else changes.
+    if (extensions_.clipControl) glClipControlEXT(GL_UPPER_LEFT_EXT, GL_ZERO_TO_ONE_EXT);
     glDepthRangef(0.0f, 1.0f);
     glDisable(GL_DITHER);
     glDisable(GL_STENCIL_TEST);

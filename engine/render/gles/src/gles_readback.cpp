@@ -44,7 +44,8 @@ Readback GlesDriver::readback(NativeId h, const TextureDesc&) {
         if (!depthToColor_) {
             depthToColor_.emplace();
             depthToColor_->program = gl::compileProgram(
-                "depth readback", glslEs(gl::fullscreenVertexSource(), "depth readback"), depthToColorFragmentSource());
+                "depth readback", glslEs(gl::fullscreenVertexSource(), "depth readback", !extensions_.clipControl),
+                depthToColorFragmentSource());
         }
         glGenTextures(1, &copy);
         glBindTexture(GL_TEXTURE_2D, copy);

@@ -202,7 +202,10 @@ GlesProgram GlesDriver::compile(std::shared_ptr<const ProgramDesc> desc) {
     makeCurrent();
     const std::string name = desc->name;
     GlesProgram p;
-    p.slot = gl::compileSlot(std::move(desc), [&name](std::string source) { return glslEs(std::move(source), name); });
+    const bool remap = !extensions_.clipControl;
+    p.slot = gl::compileSlot(std::move(desc), [&name, remap](std::string source, GLenum stage) {
+        return glslEs(std::move(source), name, remap && stage == GL_VERTEX_SHADER);
+    });
     bindSamplerUnits(p.slot->program.id(), p.slot->desc->gl);
     for (const TextureField& t : p.slot->desc->gl.textures)
         p.levels.push_back(p.slot->program.uniform(levelsUniform(t.name).c_str()));

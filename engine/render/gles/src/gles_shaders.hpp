@@ -13,8 +13,11 @@ namespace engine::render::gles {
 // (bindSamplerUnits); gl_SampleMask (ES 3.2) written to a variable nobody reads, the driver
 // using GL_SAMPLE_ALPHA_TO_COVERAGE instead; textureQueryLevels(s) (GLSL 4.30, not in ES) read
 // from a uniform the driver sets to the bound texture's levels (levelsUniform). Throws
-// engine::Error naming `program` when the source is not a GLSL 4.50 stage.
-std::string glslEs(std::string source, const std::string& program);
+// engine::Error naming `program` when the source is not a GLSL 4.50 stage. `remapClip` (vertex
+// stages, on a context without EXT_clip_control) ends the stage with the clip position changed
+// so that the window sees what the extension's upper-left origin and [0, 1] depth give, up to
+// depth's rounding (why: gles_shaders.cpp).
+std::string glslEs(std::string source, const std::string& program, bool remapClip = false);
 
 // The uniform that stands for textureQueryLevels(sampler) in glslEs's translation.
 std::string levelsUniform(const char* sampler);

@@ -4,7 +4,7 @@
 // the WebGL extension object's method of the same meaning on the current context (GLctx).
 // Emscripten's context creation has already enabled every extension the browser offers, and the
 // driver calls these only after it found the extension (gles_driver.cpp): EXT_clip_control
-// (required), OES_draw_buffers_indexed (blend state per target).
+// (without it the vertex stages remap instead), OES_draw_buffers_indexed (blend state per target).
 mergeInto(LibraryManager.library, {
   glClipControlEXT: function(origin, depth) {
     GLctx.getExtension('EXT_clip_control').clipControlEXT(origin, depth);

@@ -5,8 +5,11 @@
 // translated to `#version 300 es`, and keeps the GL driver's conventions (upper-left origin,
 // depth in [0, 1], scissor rows from the top) where ES 3.0 reaches them. What differs from GL
 // 4.5, and why (README "Drivers"):
-//   - EXT_clip_control is required (ES 3.0 has no glClipControl; WebGL2 offers the extension):
-//     without it the picture would be flipped and depth remapped, so the device is unavailable.
+//   - ES 3.0 has no glClipControl: EXT_clip_control sets the origin and depth mode where the
+//     context offers it (WebGL2 and Mesa do); without it every vertex stage the driver compiles
+//     ends by negating y and remapping z to 2z - w, which gives the same picture and depth, up
+//     to rounding, with depth passing through [-1, 1] (reverse-Z loses its float precision near
+//     the far plane). describe() says which path the device took.
 //   - No direct state access, no base-instance draws (the instance attributes are pointed at
 //     the draw's first instance instead), no timer queries: a pass's time is the CPU wall time
 //     of recording it (describe() says so), never the GPU's.
