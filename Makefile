@@ -93,7 +93,8 @@ test: build node-tools web-tools web
 	ctest --preset $(PRESET) -j $(JOBS)
 
 # The sanitizer pass CI runs after `make test` (tests/README.md "What CI runs"): the asan preset
-# (Debug, AddressSanitizer + UndefinedBehaviorSanitizer, no recovery) built in build-asan, then
+# (Debug's assertions at -O1, AddressSanitizer + UndefinedBehaviorSanitizer, no recovery; no
+# benchmark binaries; why: tests/docs/ci.md) built in build-asan, then
 # these ctest labels under it. Left out: the label `capture` (whole racer and ssam-bench runs:
 # the largest share of the pass's time, and their pictures are proven the same in every build
 # by `make test`; hostile input is the fuzzers' and the unit tests' under the sanitizers), tests
