@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/render/kernel/clamp01.hpp"
 #include "engine/render/kernel/covered_tent.hpp"
 #include "engine/render/kernel/fragment.hpp"
 #include "engine/render/kernel/programs.hpp"
@@ -18,9 +19,10 @@ namespace transparency {
 
 namespace soft = engine::render::soft;
 
-// The composites' guards against a degenerate accumulation reaching the frame: a value clamped
-// to [0, 1] with NaN to 0 (the comparisons' order does that), and non-finite channels to 0.
-inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+using soft::clamp01;
+
+// The composites' guard against a degenerate accumulation reaching the frame: non-finite
+// channels to 0 (factors go through clamp01, which takes NaN to 0).
 inline glm::vec3 finiteRgb(glm::vec3 c) {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(c[i])) c[i] = 0.0f;

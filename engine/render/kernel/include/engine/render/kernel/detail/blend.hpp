@@ -10,13 +10,10 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/blend_state.hpp"
+#include "engine/render/kernel/clamp01.hpp"
 #include "engine/render/pixel_codec.hpp"
 
 namespace engine::render::soft {
-
-// NaN clamps to 0, as a UNORM store would make it.
-inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
-inline glm::vec4 clamp01(const glm::vec4& v) { return {clamp01(v.x), clamp01(v.y), clamp01(v.z), clamp01(v.w)}; }
 
 // Factor for the RGB half; `c` is the constant colour.
 inline glm::vec3 rgbFactor(BlendFactor f, const glm::vec4& s, const glm::vec4& d, const glm::vec4& c) {
