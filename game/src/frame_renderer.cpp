@@ -104,7 +104,8 @@ void FrameRenderer::ensureOpaqueTargets(int width, int height, int samples) {
     if (opaque_ && width == options_.width && height == options_.height && opaque_->desc().samples == samples) return;
     // The new targets are made before the current ones go, so a refused size keeps the frame.
     auto next = std::make_unique<engine::render::FrameTargets>(
-        backend_, engine::render::FrameTargetsDesc{width, height, samples, Format::RGBA8_SRGB, kDepthFunc});
+        backend_,
+        engine::render::FrameTargetsDesc{width, height, samples, Format::RGBA8_SRGB, kDepthFunc, options_.msaaDepth});
     opaque_ = std::move(next);
     options_.width = width;
     options_.height = height;

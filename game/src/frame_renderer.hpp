@@ -40,6 +40,9 @@ struct RendererOptions {
     // The opaque pass's samples are max(msaa, technique->opaqueSamples()): --msaa asks for
     // at least this many (Pure used 2 under SSAM), alpha-to-coverage needs 4 whatever is asked.
     int msaa = 1;
+    // Which sample the MSAA depth resolves to (frame_targets.hpp): the closest, as §3.5.1 asks, or
+    // any one where the backend cannot read samples (the GLES driver, the web page).
+    engine::render::DepthResolve msaaDepth = engine::render::DepthResolve::Closest;
     transparency::TechniqueOptions techniqueOptions;  // its depthFunc is set to the scene's
     glm::vec4 background{0.55f, 0.70f, 0.88f, 1.0f};  // the opaque pass's clear colour (the racing scene's sky)
     // The scene's sun; this default is the one a glTF file without lights gets.

@@ -118,6 +118,8 @@ int run(const CLI::App& app, const Options& o) {
         comparedWith = pair.right;
     }
     renderer.msaa = o.msaa;
+    renderer.msaaDepth = o.msaaDepth == "any" ? engine::render::DepthResolve::AnySample
+                                              : engine::render::DepthResolve::Closest;        // checked by CLI11
     renderer.techniqueOptions.ssam = ssam::presetSettings(*ssam::parsePreset(o.ssamPreset));  // checked by CLI11
     renderer.techniqueOptions.ssam.depthMaskThreshold = o.ssamDepthThreshold;
     renderer.captureLayers = o.captureLayers;

@@ -84,6 +84,11 @@ void addOptions(CLI::App& app, Options& o) {
     app.add_option("--msaa", o.msaa, "opaque-pass samples at least (1, 2, 4; Pure used 2; a2c always uses 4)")
         ->check(CLI::IsMember({1, 2, 4}))
         ->capture_default_str();
+    app.add_option("--msaa-depth", o.msaaDepth,
+                   "which sample an MSAA depth resolves to: closest (to the eye, [Hathaway 2010] 3.5.1) or any (the "
+                   "implementation's choice: all --backend gles can do, ES 3.0 reads no sample)")
+        ->check(CLI::IsMember({"closest", "any"}))
+        ->capture_default_str();
     app.add_option(
         "--layer-pictures", o.layerPictures,
         "with --capture-layers: write each captured layer as a PNG into this directory (created if missing)");

@@ -37,6 +37,7 @@ struct Options {
     bool headless = false;
     std::string contentDir = defaultContentDir().string();
     int msaa = 1;
+    std::string msaaDepth = "closest";  // --msaa-depth closest|any: which sample the MSAA depth keeps
     std::string layerPictures;
     std::string dumpGraphPath;  // --dump-graph: Graphviz dot of the last frame's graph
     std::string compare;        // --compare A,B: A on the left, B on the right

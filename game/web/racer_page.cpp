@@ -94,6 +94,9 @@ struct PageSettings {
     double fixedDt = 0.0;  // 0: the browser clock's step
     bool hud = true;
     racer::CameraMode camera = racer::CameraMode::Chase;
+    // A2C's 4x depth keeps any one sample: WebGL2 (ES 3.0) cannot read the samples for the
+    // closest (engine/render/docs/gles.md); msaa-depth=closest asks anyway, and a2c is refused.
+    engine::render::DepthResolve msaaDepth = engine::render::DepthResolve::AnySample;
 };
 
 std::optional<TechniqueKind> techniqueNamed(const std::string& name) {
@@ -123,6 +126,11 @@ PageSettings parseSettings(int argc, char** argv) {
             s.hud = value != "0";
         } else if (name == "--camera") {
             s.camera = racer::parseCamera(value);
+        } else if (name == "--msaa-depth") {
+            if (value != "closest" && value != "any")
+                throw engine::Error("racer page: msaa-depth '" + value + "' is not closest or any");
+            s.msaaDepth =
+                value == "any" ? engine::render::DepthResolve::AnySample : engine::render::DepthResolve::Closest;
         } else {
             throw engine::Error("racer page: unknown argument '" + name + "'");
         }
@@ -227,7 +235,8 @@ public:
             frame_.render(lists, view);
         } catch (const engine::Error& e) {
             // A technique just chosen that the GLES driver refuses only when it draws (a2c's
-            // closest-sample depth resolve): the switch is undone and the page says why.
+            // closest-sample depth resolve under msaa-depth=closest): the switch is undone and
+            // the page says why.
             if (!fallback_) throw;
             const TechniqueKind refused = frame_.technique();
             frame_.setTechnique(*std::exchange(fallback_, std::nullopt));
@@ -264,6 +273,7 @@ private:
         o.width = s.width;
         o.height = s.height;
         o.technique = s.technique;
+        o.msaaDepth = s.msaaDepth;
         o.sun = racing.sun();
         return o;
     }

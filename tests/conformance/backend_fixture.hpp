@@ -212,11 +212,12 @@ protected:
     }
 
     render::TextureHandle resolved(render::TextureHandle source,
-                                   render::CompareFunc depthFunc = render::CompareFunc::Less) {
+                                   render::CompareFunc depthFunc = render::CompareFunc::Less,
+                                   render::DepthResolve depthResolve = render::DepthResolve::Closest) {
         const render::TextureDesc& desc = gfx().describe(source);
         const render::TextureHandle destination =
             renderTarget(desc.width, desc.height, desc.format, 1, desc.name + "_resolved");
-        gfx().resolve({source, destination, depthFunc});
+        gfx().resolve({source, destination, depthFunc, depthResolve});
         return destination;
     }
 

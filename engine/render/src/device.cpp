@@ -241,6 +241,14 @@ void Device::resolve(const ResolveDesc& r) {
     const DeviceTexture& dst = textures_.get(r.destination);
     const std::string what = validateResolve(src.desc, dst.desc);
     requireNoOpenPass(what);
+    if (formatInfo(src.desc.format).isDepth && src.desc.samples > 1 && r.depthResolve == DepthResolve::Closest) {
+        const std::string why = driver_->whyNoClosestDepthResolve();
+        if (!why.empty())
+            throw Error(what + ": " + why +
+                        ", so the closest-sample depth resolve ([Hathaway 2010] §3.5.1) cannot run on the " +
+                        driver_->name() + " driver; resolve with DepthResolve::AnySample (racer --msaa-depth any) " +
+                        "or render depth at 1x");
+    }
     driver_->resolve(src.native, dst.native, r, what);
 }
 

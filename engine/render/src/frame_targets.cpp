@@ -59,7 +59,7 @@ PassDesc FrameTargets::loadPassDesc() const {
 void FrameTargets::resolve() {
     if (!msaaColor_) return;
     backend_.resolve({msaaColor_, color_, desc_.depthFunc});
-    backend_.resolve({msaaDepth_, depth_, desc_.depthFunc});
+    backend_.resolve({msaaDepth_, depth_, desc_.depthFunc, desc_.depthResolve});
 }
 
 FrameTargets::InGraph FrameTargets::importInto(FrameGraph& graph) const {

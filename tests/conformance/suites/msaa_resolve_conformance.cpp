@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // MSAA resolve: colour resolves to the average of the samples, depth to the sample closest
-// to the observer under the given depth function ([Hathaway 2010] §3.5.1), never an average.
+// to the observer under the given depth function ([Hathaway 2010] §3.5.1), never an average;
+// under DepthResolve::AnySample (every backend, GLES included) to one of the pixel's samples.
 //
 // The partial pixels come from a vertical edge exactly through the centre of column 2: with
 // the standard sample patterns (D3D/Vulkan standard locations, which GL implementations use
 // in practice) exactly half of a pixel's samples lie on each side for 2, 4 and 8 samples.
 #include <cmath>
+#include <string>
 
 #include "../backend_fixture.hpp"
 
@@ -17,8 +19,8 @@ constexpr float kEdge = 2.5f;  // pixel centre of column 2
 
 // Why the depth resolves are skipped on GLES.
 constexpr const char* kNoSampleDepthOnGles =
-    "OpenGL ES 3.0 cannot read a multisampled depth per sample: the GLES driver refuses the closest-sample resolve "
-    "([Hathaway 2010] §3.5.1; gles_differences checks the refusal)";
+    "OpenGL ES 3.0 cannot read a multisampled depth per sample: the device refuses the GLES driver's closest-sample "
+    "resolve ([Hathaway 2010] §3.5.1; gles_differences checks the refusal, DepthIsOneOfItsSamples its AnySample)";
 
 TEST_P(MsaaResolveConformance, ColourIsTheSampleAverage) {
     const glm::vec4 left{1.0f, 0.25f, 0.0f, 0.5f}, right{0.0f, 0.75f, 2.0f, 1.0f};
@@ -98,6 +100,35 @@ TEST_P(MsaaResolveConformance, DepthReverseZWithUncoveredSamples) {
         EXPECT_EQ(less.at(2, 0, 0), 0.0f) << samples;
         EXPECT_EQ(greater.at(4, 0, 0), 0.0f);
         EXPECT_EQ(greater.at(0, 0, 0), 0.6f);
+    }
+}
+
+// AnySample: a whole pixel resolves to its one value, a split one to one of its two samples' values,
+// never between them (an average would invent a surface; §3.5.1). Forward Z with both sides
+// drawn, and reverse-Z with the right side left at the far clear.
+TEST_P(MsaaResolveConformance, DepthIsOneOfItsSamples) {
+    // The resolved depth of `depth` (drawn left `left`, right `right`) under `func`.
+    const auto expectOneOfItsSamples = [&](render::TextureHandle depth, CompareFunc func, float left, float right,
+                                           int samples) {
+        const render::Readback out = gfx().readback(resolved(depth, func, render::DepthResolve::AnySample));
+        for (int y = 0; y < kHigh; ++y)
+            for (int x = 0; x < kWide; ++x) {
+                const float value = out.at(x, y, 0);
+                const std::string where = std::to_string(samples) + "x " + render::compareFuncName(func) + " pixel " +
+                                          std::to_string(x) + "," + std::to_string(y);
+                if (x == 2) EXPECT_TRUE(value == left || value == right) << where << ": " << value;
+                else EXPECT_EQ(value, x < 2 ? left : right) << where;
+            }
+    };
+    for (int samples : {2, 4, 8}) {
+        // 4x everywhere (llvmpipe offers no 8x, lavapipe no 2x), every count on the soft backend.
+        if (samples != 4 && gfx().name() != "soft") continue;
+        expectOneOfItsSamples(drawnDepth(kWide, kHigh, samples, 1.0f, CompareFunc::Always,
+                                         {{0, 0, kEdge, kHigh, 0.3f}, {kEdge, 0, kWide, kHigh, 0.7f}}),
+                              CompareFunc::Less, 0.3f, 0.7f, samples);
+        expectOneOfItsSamples(
+            drawnDepth(kWide, kHigh, samples, 0.0f, CompareFunc::Greater, {{0, 0, kEdge, kHigh, 0.6f}}),
+            CompareFunc::Greater, 0.6f, 0.0f, samples);
     }
 }
 

@@ -79,6 +79,7 @@ public:
     // The driver calls: resources and queries in gles_resources.cpp, passes, resolves and
     // timings in gles_passes.cpp, readbacks in gles_readback.cpp, draws in gles_draw.cpp.
     ENGINE_DRIVER_CALLS(ENGINE_DRIVER_OVERRIDE)
+    std::string whyNoClosestDepthResolve() const override;  // gles_passes.cpp
 
     // gles_present.cpp
     bool present(NativeId h, const TextureDesc& desc) override;

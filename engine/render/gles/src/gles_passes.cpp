@@ -77,17 +77,18 @@ void GlesDriver::abortPass() noexcept {
     targets_.clear();
 }
 
-// glBlitFramebuffer: a copy between single-sampled textures, or the implementation's average
-// of a multisampled colour renderbuffer. A multisampled depth has no closest-sample resolve on
-// ES 3.0 (§4.3.3 resolves depth to an undefined sample, and nothing can read the samples).
+std::string GlesDriver::whyNoClosestDepthResolve() const {
+    return "OpenGL ES 3.0 cannot read a multisampled depth per sample";
+}
+
+// glBlitFramebuffer: a copy between single-sampled textures, the implementation's average of a
+// multisampled colour renderbuffer, or one sample of a multisampled depth, the implementation's
+// choice (ES 3.0 §4.3.3): DepthResolve::AnySample, the only depth resolve the Device lets
+// through here (whyNoClosestDepthResolve), since nothing on ES 3.0 can read the samples.
 void GlesDriver::resolve(NativeId source, NativeId destination, const ResolveDesc&, const std::string& what) {
     const GlTexture& src = textures_[source];
     const GlTexture& dst = textures_[destination];
     const bool depth = formatInfo(src.desc.format).isDepth;
-    if (depth && src.desc.samples > 1)
-        throw Error(what +
-                    ": OpenGL ES 3.0 cannot read a multisampled depth per sample, so the closest-sample "
-                    "depth resolve ([Hathaway 2010] §3.5.1) cannot run on the GLES driver; render depth at 1x");
     makeCurrent();
     drainGlErrors();
     const GLuint read =

@@ -46,12 +46,22 @@ struct PassTiming {
     bool skipped = false;       // its PassDesc::drawOnlyIfSamplesIn found no sample: no draw ran
 };
 
+// Which of a pixel's samples a multisampled depth resolves to; never an average, which would
+// invent surfaces between foreground and background ([Hathaway 2010] §3.5.1).
+enum class DepthResolve : std::uint8_t {
+    Closest,    // the sample closest to the observer under ResolveDesc::depthFunc (§3.5.1)
+    AnySample,  // one of the pixel's samples, the implementation's choice: all OpenGL ES 3.0's
+                // glBlitFramebuffer offers (ES 3.0 §4.3.3), so at a silhouette it may be the
+                // farther one. A driver that keeps the closest keeps it here too (it is a sample).
+};
+
 struct ResolveDesc {
     TextureHandle source;       // multisampled colour or depth
     TextureHandle destination;  // single-sampled, same format and size
-    // Depth resolve keeps the sample closest to the observer under this depth function
-    // ([Hathaway 2010] §3.5.1); colour resolve averages the samples.
+    // Depth resolve keeps the sample `depthResolve` names (the closest under this depth
+    // function by default); colour resolve averages the samples.
     CompareFunc depthFunc = CompareFunc::Less;
+    DepthResolve depthResolve = DepthResolve::Closest;
 };
 
 class Backend {

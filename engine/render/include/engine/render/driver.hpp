@@ -117,6 +117,9 @@ public:
     // What only this driver refuses of a texture the shared rules accepted (sample counts and
     // sizes its API lacks), checked before its initial data and the memory budget.
     virtual void checkTexture(const TextureDesc& /*desc*/, const TextureData* /*data*/, const std::string& /*what*/) {}
+    // Why this driver cannot keep the closest sample of a multisampled depth (DepthResolve::Closest),
+    // or empty where it can; the Device then refuses such a resolve with this reason.
+    virtual std::string whyNoClosestDepthResolve() const { return {}; }
     // A pipeline about to be made: the driver may only add what it cannot do exactly to `info`.
     virtual void notePipeline(const PipelineDesc& /*desc*/, ResolvedPipeline& /*resolved*/) {}
     virtual NativeId createQuery(const std::string& name) = 0;

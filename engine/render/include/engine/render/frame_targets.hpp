@@ -20,6 +20,9 @@ struct FrameTargetsDesc {
     int samples = 1;  // 1, 2, 4 or 8 (Pure used 2; 8 where the backend has it: a2c8)
     Format colorFormat = Format::RGBA8_SRGB;
     CompareFunc depthFunc = CompareFunc::Less;
+    // Which sample the MSAA depth resolves to: the closest (§3.5.1), or any one where the backend
+    // cannot read samples (OpenGL ES 3.0; backend.hpp's DepthResolve).
+    DepthResolve depthResolve = DepthResolve::Closest;
 };
 
 class FrameTargets {
@@ -35,7 +38,8 @@ public:
     // The same targets loaded, not cleared: for drawing more (e.g. alpha-tested surfaces)
     // into the opaque frame before resolve().
     PassDesc loadPassDesc() const;
-    // MSAA only: averages colour into rt_opaque and keeps the closest depth in rt_depth.
+    // MSAA only: averages colour into rt_opaque and keeps the closest depth (or the sample
+    // desc().depthResolve names) in rt_depth.
     void resolve();
 
     // The targets in a frame graph, imported (the graph never allocates or frees them):
