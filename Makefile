@@ -34,7 +34,7 @@ PACKAGES := build-essential cmake pkg-config ccache \
 # which bundles npm and which Debian's npm package would try to replace).
 NODE_PACKAGES := $(if $(shell command -v npm 2>/dev/null),,nodejs npm)
 
-.PHONY: all deps configure build test test-asan test-tsan format-check format lint demo bench readme-images readme-chart content clean node-tools web-tools web serve-web fuzz fuzz-campaign
+.PHONY: all deps configure build test test-asan test-tsan format-check format lint demo bench readme-images readme-chart content clean node-tools web-tools web web-picture serve-web fuzz fuzz-campaign
 
 all: build
 
@@ -88,6 +88,11 @@ WEB_PORT ?= 8080
 serve-web:
 	@[ -f out/web/racer.wasm ] || { echo "serve-web: out/web has no page: run make web first"; exit 1; }
 	node tests/web/serve.mjs out/web $(WEB_PORT)
+
+# README's picture of the page (game/web/page.png): SSAM, its HUD and the pan camera's light
+# shafts in headless Chromium (tests/web/page_picture.mjs says how it is taken).
+web-picture: web-tools web
+	node tests/web/page_picture.mjs --out out/web --png game/web/page.png
 
 test: build node-tools web-tools web
 	ctest --preset $(PRESET) -j $(JOBS)
