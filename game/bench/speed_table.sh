@@ -105,10 +105,19 @@ for scene in tree forest vista; do
 done
 
 med() { median <<< "${t[$1]}"; }
-row() {  # row MEASURE GOAL VALUE_FOR_BIN...
+# met VALUE GOAL: "yes" or "no", the value's last number (a worst, or ms) against the goal's bound
+# ("≤ 0.5 (worst)", "≥ 1.8", "≤ 5 ms").
+met() {
+  awk -v value="$1" -v goal="$2" 'BEGIN {
+    n = split(value, v, /[^0-9.]+/); x = ""; for (i = n; i >= 1 && x == ""; --i) if (v[i] != "") x = v[i];
+    split(goal, g, /[^0-9.]+/); bound = (g[1] != "") ? g[1] : g[2];
+    ok = index(goal, "≥") ? (x + 0 >= bound + 0) : (x + 0 <= bound + 0);
+    print ok ? "yes" : "no" }'
+}
+row() {  # row MEASURE GOAL VALUE_FOR_BIN... (met: the last binary's, the "after" column)
   local measure=$1 goal=$2; shift 2
-  if [[ ${#bins[@]} == 2 ]]; then printf '| %s | %s | %s | %s |\n' "$measure" "$1" "$2" "$goal"
-  else printf '| %s | %s | %s |\n' "$measure" "$1" "$goal"; fi
+  if [[ ${#bins[@]} == 2 ]]; then printf '| %s | %s | %s | %s | %s |\n' "$measure" "$1" "$2" "$goal" "$(met "$2" "$goal")"
+  else printf '| %s | %s | %s | %s |\n' "$measure" "$1" "$goal" "$(met "$1" "$goal")"; fi
 }
 values() {  # values FUNCTION: the function's value for each binary, one line each, in bins order
   local b; for b in "${bins[@]}"; do "$1" "$b"; echo; done
@@ -134,9 +143,9 @@ speedup() { ratio "$(med "one|$1")" "$(med "chase|$1")"; }
   echo "The soft backend against llvmpipe on this machine ($(nproc) cores; $THREADS thread(s) each: soft --threads, llvmpipe LP_NUM_THREADS)"
   echo
   if [[ ${#bins[@]} == 2 ]]; then
-    echo "| measure | before ($(before_label)) | after ($BIN) | goal |"; echo "|---|---:|---:|---|"
+    echo "| measure | before ($(before_label)) | after ($BIN) | goal | met |"; echo "|---|---:|---:|---|---|"
   else
-    echo "| measure | $BIN | goal |"; echo "|---|---:|---|"
+    echo "| measure | $BIN | goal | met |"; echo "|---|---:|---|---|"
   fi
   local_row() { local measure=$1 goal=$2 fn=$3 v; mapfile -t v < <(values "$fn"); row "$measure" "$goal" "${v[@]}"; }
   local_row "racer whole frame 1280x720 pan: soft / llvmpipe" "≤ 0.5" pan_ratio
