@@ -89,8 +89,8 @@ serve-web:
 	@[ -f out/web/racer.wasm ] || { echo "serve-web: out/web has no page: run make web first"; exit 1; }
 	node tests/web/serve.mjs out/web $(WEB_PORT)
 
-# README's picture of the page (game/web/page.png): SSAM, its HUD and the pan camera's light
-# shafts in headless Chromium (tests/web/page_picture.mjs says how it is taken).
+# README's picture of the page (game/web/page.png): SSAM with its HUD (the light shafts' passes
+# among them), chase camera, in headless Chromium (tests/web/page_picture.mjs says how it is taken).
 web-picture: web-tools web
 	node tests/web/page_picture.mjs --out out/web --png game/web/page.png
 
