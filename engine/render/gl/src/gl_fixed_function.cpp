@@ -7,7 +7,8 @@
 
 namespace engine::render::gl {
 
-void applyDepthAndFaces(const PipelineDesc& desc, const ResolvedDrawState& state, bool fullscreen) {
+void applyDepthAndFaces(const PipelineDesc& desc, const ResolvedDrawState& state, bool fullscreen,
+                        bool windingReversed) {
     if (state.depthTest) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(glCompare(state.depthFunc));
@@ -21,8 +22,9 @@ void applyDepthAndFaces(const PipelineDesc& desc, const ResolvedDrawState& state
         glDisable(GL_CULL_FACE);
     }
     // With an upper-left origin GL still decides facing on NDC winding (ARB_clip_control,
-    // EXT_clip_control), so counter-clockwise as displayed is GL_CCW.
-    glFrontFace(desc.raster.frontFace == Winding::CounterClockwise ? GL_CCW : GL_CW);
+    // EXT_clip_control), so counter-clockwise as displayed is GL_CCW; reversed, GL_CW.
+    const bool counterClockwise = (desc.raster.frontFace == Winding::CounterClockwise) != windingReversed;
+    glFrontFace(counterClockwise ? GL_CCW : GL_CW);
     glEnable(GL_SCISSOR_TEST);
 }
 

@@ -8,7 +8,10 @@
 namespace engine::render::gl {
 
 // Depth test and function, culling (never for full-screen programs, whose triangle the soft
-// backend never culls), the front face, and the scissor test switched on.
-void applyDepthAndFaces(const PipelineDesc& desc, const ResolvedDrawState& state, bool fullscreen);
+// backend never culls), the front face, and the scissor test switched on. `windingReversed`:
+// the vertex stage flips y under a lower-left origin (the GLES driver without EXT_clip_control),
+// so the displayed winding is the opposite of GL's.
+void applyDepthAndFaces(const PipelineDesc& desc, const ResolvedDrawState& state, bool fullscreen,
+                        bool windingReversed = false);
 
 }  // namespace engine::render::gl

@@ -184,11 +184,10 @@ void GlesDriver::draw(const DriverDraw& draw) {
     glUniform1i(s.a2cSamples, 0);
     glUniform1i(s.a2cActual, passActualSamples_);
 
-    gl::applyDepthAndFaces(desc, state, fullscreen);
     // Without EXT_clip_control the vertex stage negates y (glslEs), which reverses every
     // triangle's winding, and the lower-left origin does not negate the facing area back as
     // the upper-left one does: counter-clockwise as displayed is then GL_CW.
-    if (!extensions_.clipControl) glFrontFace(desc.raster.frontFace == Winding::CounterClockwise ? GL_CW : GL_CCW);
+    gl::applyDepthAndFaces(desc, state, fullscreen, !extensions_.clipControl);
     const Rect& scissor = state.scissor;
     if (scissor.empty()) return;
     glScissor(scissor.x, scissor.y, scissor.width, scissor.height);  // upper-left origin: y from the top
