@@ -8,22 +8,18 @@
 //   node page_picture.mjs --out OUT_WEB --png PATH [--frames N] [--camera chase|pan|free|sky]
 import { existsSync } from 'node:fs';
 import { join } from 'node:path';
+import { launchChromium, parseArgs } from './browser.mjs';
 import { serve } from './serve.mjs';
 
-const args = Object.fromEntries(process.argv.slice(2).reduce((pairs, value, i, all) =>
-  (i % 2 === 0 ? [...pairs, [all[i].replace(/^--/, ''), all[i + 1]]] : pairs), []));
+const args = parseArgs(process.argv.slice(2));
 const fail = (message) => { console.error(`page_picture: ${message}`); process.exit(1); };
 if (!args.out || !args.png) fail('usage: node page_picture.mjs --out OUT_WEB --png PATH [--frames N] [--camera C]');
 if (!existsSync(join(args.out, 'racer.wasm'))) fail(`${args.out} has no page: run \`make web\` first`);
 const frames = Number(args.frames ?? 200);
 if (!Number.isInteger(frames) || frames < 1) fail(`--frames ${args.frames}: a whole number of at least 1`);
 
-const puppeteer = (await import('puppeteer-core')).default;
+const chromium = await launchChromium(fail);
 const server = await serve(args.out, 0);
-const chromium = await puppeteer.launch({
-  executablePath: '/usr/bin/chromium-headless-shell', headless: 'shell',
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-gpu-sandbox'],
-});
 try {
   const page = await chromium.newPage();
   await page.setViewport({ width: 520, height: 400 });

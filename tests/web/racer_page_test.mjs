@@ -13,24 +13,17 @@
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { launchChromium, parseArgs } from './browser.mjs';
 import { serve } from './serve.mjs';
 
-const args = Object.fromEntries(process.argv.slice(2).reduce((pairs, value, i, all) =>
-  (i % 2 === 0 ? [...pairs, [all[i].replace(/^--/, ''), all[i + 1]]] : pairs), []));
+const args = parseArgs(process.argv.slice(2));
 const fail = (message) => { console.error(`racer_page_test: FAIL: ${message}`); process.exit(1); };
 
 for (const file of ['index.html', 'racer.js', 'racer.wasm', 'racer.data', 'content/models/car.glb'])
   if (!existsSync(join(args.out, file)))
     fail(`${join(args.out, file)} is missing: build the page first with \`make web\` ` +
          '(or configure with -DSSAM_WEB_TESTS=OFF to leave the browser suite out)');
-const browser = '/usr/bin/chromium-headless-shell';
-if (!existsSync(browser)) fail(`${browser} is missing (Debian: chromium-headless-shell; make deps installs it)`);
-let puppeteer;
-try {
-  puppeteer = (await import('puppeteer-core')).default;
-} catch {
-  fail('puppeteer-core is not installed in tests/web/node_modules: run `make web-tools` (npm ci)');
-}
+const chromium = await launchChromium(fail);
 
 // The frame the test renders: small, a few fixed steps of the chase camera.
 const frame = { width: 320, height: 180, frames: 3, dt: 0.0333333 };
@@ -59,10 +52,6 @@ mkdirSync(args.work, { recursive: true });
 const started = Date.now();
 const server = await serve(args.out, 0);
 const base = `http://127.0.0.1:${server.address().port}/`;
-const chromium = await puppeteer.launch({
-  executablePath: browser, headless: 'shell',
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-gpu-sandbox'],
-});
 const problems = [];
 let failed = false;
 const check = (ok, message) => {
