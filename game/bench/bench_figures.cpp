@@ -19,12 +19,10 @@ std::vector<std::string> distinctScenes(const std::vector<BenchRow>& rows) {
     return out;
 }
 
-void writeIntro(std::ostream& out, const std::vector<BenchRow>& rows, const FiguresInput& in) {
-    out << "# Current figures\n\n"
-           "The figures that more than one README quotes live here, once each; the READMEs link to this page "
-           "instead of restating them. **This file is generated** by `ssam-bench --figures` "
-           "(game/bench/bench_figures.cpp) from one run; do not edit it by hand: run the command again and commit "
-           "what it writes. This one was written by\n\n`"
+// The command that wrote both pages and what the run measured.
+void writeRun(std::ostream& out, const std::vector<BenchRow>& rows, const FiguresInput& in) {
+    out << "**This file is generated** by `ssam-bench --figures` (game/bench/bench_figures.cpp) from one run; do "
+           "not edit it by hand: run the command again and commit what it writes. This one was written by\n\n`"
         << in.run.command << "`\n\n";
     if (!rows.empty())
         out << rows.front().width << "x" << rows.front().height << ", " << in.run.reps << " timed repetition(s) after "
@@ -32,18 +30,32 @@ void writeIntro(std::ostream& out, const std::vector<BenchRow>& rows, const Figu
             << " pan frames, the per-frame error over " << in.temporalFrames << " pan frames, " << in.run.threads
             << " thread(s) (soft tiles; LP_NUM_THREADS for gl). Technique `ssam` runs preset `" << in.run.ssamPreset
             << "`.\n\n";
+    out << "Wall times scatter from run to run on a shared machine; errors and memory are deterministic on the "
+           "soft backend. Every GL figure is Mesa llvmpipe's, a CPU rasterizer.\n\n";
+}
+
+void writeIntro(std::ostream& out, const std::vector<BenchRow>& rows, const FiguresInput& in) {
+    out << "# Current figures\n\n"
+           "The figures that more than one README quotes live here, once each; the READMEs link to this page "
+           "instead of restating them. Every row they come from is in ["
+        << in.rowsPage << "](" << in.rowsPage << "). ";
+    writeRun(out, rows, in);
     out << "| section | what |\n|---|---|\n"
            "| [Speed: soft against llvmpipe](#speed-soft-against-llvmpipe) | game/bench/speed_table.sh, given "
            "with `--speed-table` |\n"
-           "| [SSAM against its rivals](#ssam-against-its-rivals) | every technique per scene: time, error, "
-           "flicker, error per frame of a pan |\n"
-           "| [Goals](#goals) | SSAM against alpha testing, still, in motion and along the dolly: met or not |\n"
-           "| [In motion](#in-motion) | the forest's pan, dolly and wind: flicker, error per frame, ghosting |\n"
+           "| [Goals](#goals) | SSAM against alpha testing, still, in motion and along the dolly: met or not, "
+           "and what limits those not met |\n"
            "| [Along the dolly](#along-the-dolly) | popping at the levels of detail's changes |\n"
            "| [SSAM and what engines ship](#ssam-and-what-engines-ship) | SSAM beside hashed+taa, alpha-test+taa "
-           "and sharpened A2C, and which is better at what |\n\n"
-           "Wall times scatter from run to run on a shared machine; errors and memory are deterministic "
-           "on the soft backend. Every GL figure is Mesa llvmpipe's, a CPU rasterizer.\n\n";
+           "and sharpened A2C, and which is better at what |\n"
+           "| [SSAM against its rivals]("
+        << in.rowsPage
+        << "#ssam-against-its-rivals) | every technique per "
+           "scene: time, error, flicker, error per frame of a pan |\n"
+           "| [In motion]("
+        << in.rowsPage
+        << "#in-motion) | every technique in the forest's pan, dolly and "
+           "wind: flicker, error per frame, ghosting |\n\n";
 }
 
 void writeSpeed(std::ostream& out, const FiguresInput& in) {
@@ -181,7 +193,8 @@ void writeGoalsOrAbsence(std::ostream& out, const std::vector<Goal>& goals) {
 }
 
 void writeGoals(std::ostream& out, const std::vector<BenchRow>& rows, const FiguresInput& in) {
-    out << "## Goals\n\nSSAM against alpha testing, from the rows above (" << primaryBackend(rows)
+    out << "## Goals\n\nSSAM against alpha testing, from the rows of [SSAM against its rivals](" << in.rowsPage
+        << "#ssam-against-its-rivals) (" << primaryBackend(rows)
         << " backend): the recommended preset's ꟻLIP at or below alpha testing's at no more than 1.25x the "
            "paper preset's time, SSAM+'s ꟻLIP at most 0.6x alpha testing's, and SSAM's flicker in the forest "
            "pan at most 0.3x alpha testing's. The time is not the rows' (each technique timed after the other, "
@@ -194,25 +207,46 @@ void writeGoals(std::ostream& out, const std::vector<BenchRow>& rows, const Figu
     out << "\n\n";
     const std::vector<Goal> beside = rivalGoals(in.lodRows);
     writeGoalTable(out, rivalGoals(rows), in.lodRows.empty() ? nullptr : &beside, lodName);
-    out << "\nIn motion ([In motion](#in-motion)): on the forest, for each motion, SSAM's flicker at most 0.3x "
-           "alpha testing's and SSAM+'s converged ꟻLIP at most 0.6x alpha testing's.\n\n";
-    writeGoalsOrAbsence(out, motionGoals(in.motion));
+    out << "\nIn motion ([In motion](" << in.rowsPage
+        << "#in-motion)): on the forest, for each motion, SSAM's flicker at most 0.3x alpha testing's and SSAM+'s "
+           "converged ꟻLIP at most 0.6x alpha testing's.\n\n";
+    const std::vector<Goal> inMotion = motionGoals(in.motion);
+    writeGoalsOrAbsence(out, inMotion);
     out << "\nAlong the dolly ([Along the dolly](#along-the-dolly)): SSAM's popping below alpha testing's and "
            "below hashed alpha's, and its LOD frame's ꟻLIP against full detail at most 0.02.\n\n";
-    writeGoalsOrAbsence(out, dollyGoals(in.dolly));
+    const std::vector<Goal> alongTheDolly = dollyGoals(in.dolly);
+    writeGoalsOrAbsence(out, alongTheDolly);
+    out << "\n";
+    std::vector<Goal> all = rivalGoals(rows);
+    all.insert(all.end(), inMotion.begin(), inMotion.end());
+    all.insert(all.end(), alongTheDolly.begin(), alongTheDolly.end());
+    writeGoalLimits(out, all);
     out << "\n";
 }
 
 }  // namespace
 
-void writeFigures(std::ostream& out, const std::vector<BenchRow>& rows, const FiguresInput& input) {
+std::string rowsPagePath(const std::string& figuresPath) {
+    const std::size_t slash = figuresPath.find_last_of('/');
+    const std::size_t dot = figuresPath.find_last_of('.');
+    const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    return hasExtension ? figuresPath.substr(0, dot) + "_ROWS" + figuresPath.substr(dot) : figuresPath + "_ROWS";
+}
+
+void writeFigures(std::ostream& out, std::ostream& rowsOut, const std::vector<BenchRow>& rows,
+                  const FiguresInput& input) {
     writeIntro(out, rows, input);
     writeSpeed(out, input);
-    writeRivals(out, rows, input);
     writeGoals(out, rows, input);
-    writeMotion(out, input.motion);
     writeDolly(out, input.dolly);
-    writeWhatEnginesShip(out, rows, input.motion);
+    writeWhatEnginesShip(out, rows, input.motion, input.rowsPage);
+
+    rowsOut << "# Every row of the current figures\n\n"
+               "The rows [FIGURES.md](FIGURES.md)'s goals and verdict come from: every technique per scene, and "
+               "every technique in the forest's motions. ";
+    writeRun(rowsOut, rows, input);
+    writeRivals(rowsOut, rows, input);
+    writeMotion(rowsOut, input.motion);
 }
 
 }  // namespace bench

@@ -51,6 +51,19 @@ const DollyRow* findDollyRow(const std::vector<DollyRow>& rows, const std::strin
     return nullptr;
 }
 
+// Where each kind of goal's limit is worked out.
+constexpr const char* kSsamFlipLimits =
+    "ssam/docs/knobs.md, \"Why SSAM's ꟻLIP exceeds alpha testing's in the dense forest\"";
+constexpr const char* kTimeLimits = "ssam/docs/knobs.md, \"Presets\"";
+constexpr const char* kSsamPlusLimits = "ssam/docs/ssam_plus.md, \"Where the goal stands\"";
+constexpr const char* kFlickerLimits = "ssam/docs/steady_in_motion.md, \"Figures\"";
+constexpr const char* kDollyLimits = "game/docs/levels_of_detail.md, \"Popping along the dolly\"";
+
+Goal limitedBy(Goal goal, const char* where) {
+    goal.limitedBy = where;
+    return goal;
+}
+
 }  // namespace
 
 std::vector<Goal> rivalGoals(const std::vector<BenchRow>& rows) {
@@ -62,16 +75,20 @@ std::vector<Goal> rivalGoals(const std::vector<BenchRow>& rows) {
     };
     std::vector<Goal> goals;
     for (const char* scene : {"tree", "forest", "vista"}) {
-        goals.push_back(ratio("ꟻLIP ssam / alpha-test", scene, "ssam", "alpha-test", &BenchRow::flipMean, 1.0));
-        goals.push_back(ratio("time ssam / ssam-paper, frames alternated", scene, "ssam", kSsamPaperRow,
-                              &BenchRow::timeAlternatedMs, 1.25));
+        goals.push_back(limitedBy(
+            ratio("ꟻLIP ssam / alpha-test", scene, "ssam", "alpha-test", &BenchRow::flipMean, 1.0), kSsamFlipLimits));
+        goals.push_back(limitedBy(ratio("time ssam / ssam-paper, frames alternated", scene, "ssam", kSsamPaperRow,
+                                        &BenchRow::timeAlternatedMs, 1.25),
+                                  kTimeLimits));
         if (!findRow(rows, scene, kSsamPaperRow, backend) && goals.back().missing.rfind("no ", 0) == 0)
             goals.back().missing = "no paper-preset row (run with --with-paper-ssam)";
     }
     for (const char* scene : {"tree", "forest", "vista"})
         goals.push_back(
-            ratio("ꟻLIP ssam-plus / alpha-test", scene, "ssam-plus", "alpha-test", &BenchRow::flipMean, 0.6));
-    goals.push_back(ratio("flicker ssam / alpha-test", "forest", "ssam", "alpha-test", &BenchRow::flicker, 0.3));
+            limitedBy(ratio("ꟻLIP ssam-plus / alpha-test", scene, "ssam-plus", "alpha-test", &BenchRow::flipMean, 0.6),
+                      kSsamPlusLimits));
+    goals.push_back(limitedBy(
+        ratio("flicker ssam / alpha-test", "forest", "ssam", "alpha-test", &BenchRow::flicker, 0.3), kFlickerLimits));
     // Only scenes the run measured: a --scenes subset drops the others' goals.
     goals.erase(std::remove_if(goals.begin(), goals.end(),
                                [&](const Goal& g) {
@@ -91,9 +108,11 @@ std::vector<Goal> motionGoals(const std::vector<MotionRow>& rows) {
             return ratioGoal(std::string(kMotionScene) + " " + motion + ": " + what, findMotionRow(rows, motion, a), a,
                              findMotionRow(rows, motion, b), b, field, target);
         };
-        goals.push_back(ratio("flicker ssam / alpha-test", "ssam", "alpha-test", &MotionRow::flicker, 0.3));
+        goals.push_back(limitedBy(ratio("flicker ssam / alpha-test", "ssam", "alpha-test", &MotionRow::flicker, 0.3),
+                                  kFlickerLimits));
         goals.push_back(
-            ratio("ꟻLIP converged ssam-plus / alpha-test", "ssam-plus", "alpha-test", &MotionRow::flip, 0.6));
+            limitedBy(ratio("ꟻLIP converged ssam-plus / alpha-test", "ssam-plus", "alpha-test", &MotionRow::flip, 0.6),
+                      kSsamPlusLimits));
     }
     return goals;
 }
@@ -106,12 +125,13 @@ std::vector<Goal> dollyGoals(const std::vector<DollyRow>& rows) {
         goals.push_back(ratioGoal(at + "popping (pop_lod) ssam / " + rival, findDollyRow(rows, "ssam"), "ssam",
                                   findDollyRow(rows, rival), rival, &DollyRow::popLod, 1.0));
         goals.back().below = true;
+        goals.back().limitedBy = kDollyLimits;
     }
     Goal flip{at + "LOD frame ꟻLIP against full detail, ssam", std::nullopt, 0.02, ""};
     flip.isRatio = false;
     if (const DollyRow* s = findDollyRow(rows, "ssam")) flip.ratio = s->lodFlipMean;
     else flip.missing = "no ssam row in this run";
-    goals.push_back(flip);
+    goals.push_back(limitedBy(flip, kDollyLimits));
     return goals;
 }
 
@@ -125,6 +145,18 @@ std::string measured(const Goal& g) {
 std::string verdict(const Goal& g) { return g.ratio ? (g.met() ? "met" : "not met") : g.missing; }
 
 }  // namespace
+
+void writeGoalLimits(std::ostream& out, const std::vector<Goal>& goals) {
+    std::vector<const Goal*> notMet;
+    for (const Goal& g : goals)
+        if (g.ratio && !g.met()) notMet.push_back(&g);
+    if (notMet.empty()) {
+        out << "Every goal measured in this run is met.\n";
+        return;
+    }
+    out << "What limits each goal not met in this run is worked out in:\n\n";
+    for (const Goal* g : notMet) out << "- " << g->what << " (" << measured(*g) << "): " << g->limitedBy << ".\n";
+}
 
 void writeGoalTable(std::ostream& out, const std::vector<Goal>& goals, const std::vector<Goal>* beside,
                     const std::string& besideName) {

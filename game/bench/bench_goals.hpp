@@ -23,6 +23,8 @@ struct Goal {
     std::string missing;          // when ratio is unset: what the run lacked
     bool below = false;           // "below the rival's": strictly less than the target
     bool isRatio = true;          // a ratio of two rows (printed 0.500x), else a value of one row
+    // The document and section that work out what limits this goal, named where it is not met.
+    std::string limitedBy = {};
     bool met() const { return ratio && (below ? *ratio < target : *ratio <= target); }
 };
 
@@ -41,6 +43,10 @@ std::vector<Goal> motionGoals(const std::vector<MotionRow>& rows);
 // popping (pop_lod, the change the levels add to the motion's own) below alpha testing's and
 // below hashed alpha's, and its LOD frame's mean ꟻLIP against full detail at most 0.02.
 std::vector<Goal> dollyGoals(const std::vector<DollyRow>& rows);
+
+// "What limits ...": each measured goal not met, with its measure and its Goal::limitedBy; or
+// that every measured goal is met.
+void writeGoalLimits(std::ostream& out, const std::vector<Goal>& goals);
 
 // | goal | measured | target | met? |; with `beside`, two more columns: the same goals measured
 // in another run (matched by `what`), headed by `besideName`.

@@ -108,7 +108,8 @@ std::vector<Line> motionLines(const std::vector<MotionRow>& motion, const std::v
 
 }  // namespace
 
-void writeWhatEnginesShip(std::ostream& out, const std::vector<BenchRow>& rows, const std::vector<MotionRow>& motion) {
+void writeWhatEnginesShip(std::ostream& out, const std::vector<BenchRow>& rows, const std::vector<MotionRow>& motion,
+                          const std::string& rowsPage) {
     const std::vector<std::string> names = columns();
     out << "## SSAM and what engines ship\n\n"
            "Technique `ssam` (its preset above) beside what engines ship for alpha-tested foliage at full "
@@ -117,8 +118,10 @@ void writeWhatEnginesShip(std::ostream& out, const std::vector<BenchRow>& rows, 
            "`a2c-sharp` (4x alpha to coverage with the alpha sharpened by its screen-space derivative "
            "[Golus 2017]), on the "
         << primaryBackend(rows)
-        << " backend. The still frame, the pan, time and memory come from the comparison above; each motion "
-           "of the forest from the run in [In motion](#in-motion). The last column names the lowest (better); "
+        << " backend. The still frame, the pan, time and memory come from the comparison ([SSAM against its "
+           "rivals]("
+        << rowsPage << "#ssam-against-its-rivals)); each motion of the forest from the run in [In motion](" << rowsPage
+        << "#in-motion). The last column names the lowest (better); "
            "flicker compares magnitudes (below the reference's is smoothing, not steadiness). Memory counts the "
            "temporal pass's history and the multisampled targets.\n\n"
            "| where | measure |";

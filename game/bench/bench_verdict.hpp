@@ -8,6 +8,7 @@
 // forest each motion of ssam-bench --motion (ꟻLIP, ghosting, flicker). Each line names the lowest
 // (better) technique; a closing list says, per technique, what it is best at.
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "bench_result.hpp"
@@ -17,6 +18,8 @@ namespace bench {
 // The rivals beside `ssam`, in the table's column order.
 inline constexpr const char* kShippedTechniques[] = {"hashed+taa", "alpha-test+taa", "a2c-sharp"};
 
-void writeWhatEnginesShip(std::ostream& out, const std::vector<BenchRow>& rows, const std::vector<MotionRow>& motion);
+// rowsPage: the page holding the comparison's and the motions' rows, linked from the table's text.
+void writeWhatEnginesShip(std::ostream& out, const std::vector<BenchRow>& rows, const std::vector<MotionRow>& motion,
+                          const std::string& rowsPage);
 
 }  // namespace bench

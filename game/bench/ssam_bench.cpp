@@ -314,7 +314,9 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
                             : std::vector<const char*>{"bench.csv", "bench_passes.csv", "bench.md", "bench.svg"};
     engine::requireWritableDirectory(out, /*create=*/true);
     for (const char* name : reports) engine::requireWritableFile(out / name, /*createDirectory=*/false);
-    if (!o.figures.empty()) engine::requireWritableFile(o.figures, /*createDirectory=*/false);
+    const std::string rowsPage = o.figures.empty() ? "" : rowsPagePath(o.figures);
+    for (const std::string& page : {o.figures, rowsPage})
+        if (!page.empty()) engine::requireWritableFile(page, /*createDirectory=*/false);
     std::string speedTable;
     if (!o.speedTable.empty()) {
         std::ifstream in(o.speedTable, std::ios::binary);
@@ -384,11 +386,14 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
                                    std::move(runs.lodRows),
                                    runs.lodRowsHaveLevelsOfDetail,
                                    std::move(runs.motion),
-                                   std::move(runs.dolly)};
-        stageReport(files, o.figures, [&](std::ostream& s) { writeFigures(s, rows, figures); });
+                                   std::move(runs.dolly),
+                                   std::filesystem::path(rowsPage).filename().string()};
+        std::ostringstream rowsText;
+        stageReport(files, o.figures, [&](std::ostream& s) { writeFigures(s, rowsText, rows, figures); });
+        stageReport(files, rowsPage, [&](std::ostream& s) { s << rowsText.str(); });
     }
     files.commit();
-    if (!o.figures.empty()) std::printf("ssam-bench: wrote %s\n", o.figures.c_str());
+    if (!o.figures.empty()) std::printf("ssam-bench: wrote %s and %s\n", o.figures.c_str(), rowsPage.c_str());
     std::printf("ssam-bench: wrote %s/bench.csv, bench_passes.csv, bench.md, bench.svg (%zu rows)\n",
                 out.string().c_str(), rows.size());
     return 0;
@@ -473,9 +478,11 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         ->needs(sweep);
     CLI::Option* figures = app.add_option(
         "--figures", o.figures,
-        "also write FIGURES.md (the figures the READMEs quote: every scene's techniques; the goals still, in motion "
-        "and along the dolly, from further runs of their techniques on the soft backend; ssam beside what engines "
-        "ship) from this run to this file; make bench writes game/bench/FIGURES.md");
+        "also write FIGURES.md (the figures the READMEs quote: the goals still, in motion and along the dolly, from "
+        "further runs of their techniques on the soft backend, and what limits those not met; ssam beside what "
+        "engines ship) from this run to this file, and the rows they come from (every scene's techniques, every "
+        "technique in motion) to the file beside it named with _ROWS (FIGURES_ROWS.md); make bench writes "
+        "game/bench/FIGURES.md");
     app.add_option("--speed-table", o.speedTable,
                    "game/bench/speed_table.sh's table (its speed_table.md), copied into --figures' file")
         ->check(CLI::ExistingFile)

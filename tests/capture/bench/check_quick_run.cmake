@@ -8,9 +8,10 @@
 #   - the two runs (the second on one thread) give identical error columns: the soft backend
 #     is deterministic for any thread count;
 #   - the tree and forest rows have the temporal measures (bench_temporal.hpp), finite;
-#   - --figures writes FIGURES.md (bench_figures.hpp) from the run: the command at its top, a
-#     table per scene with every technique, the goals (still, in motion, along the dolly), the
-#     forest's motions and dolly (bench_figures_runs.hpp), SSAM beside what engines ship, and
+#   - --figures writes FIGURES.md (bench_figures.hpp) from the run: the command at its top, the
+#     goals (still, in motion, along the dolly) and what limits those not met, the forest's dolly
+#     (bench_figures_runs.hpp), SSAM beside what engines ship; and FIGURES_ROWS.md beside it: the
+#     same command, a table per scene with every technique, the forest's motions; in both pages
 #     every table row as wide as its header.
 cmake_minimum_required(VERSION 3.20)  # IN_LIST and the other modern if() forms in -P scripts
 set(required scene technique backend width height time_ms_median time_ms_min time_ms_max rmse_linear
@@ -162,19 +163,28 @@ if(NOT first STREQUAL "# Current figures")
   fail("FIGURES.md opens with '${first}'")
 endif()
 file(READ ${OUT}/run1/FIGURES.md figuresText)
-expect_matches("${figuresText}" "FIGURES.md lacks the command that wrote it or the goals"
+expect_matches("${figuresText}" "FIGURES.md lacks the command that wrote it, the goals or what limits them"
                "`ssam-bench --quick --out [^`]*--figures [^`]*FIGURES.md`" "\n## Goals\n"
                "\\| forest wind: flicker ssam / alpha-test \\| [0-9.-]+x \\|"
                "\\| forest dolly: popping \\(pop_lod\\) ssam / hashed \\| [0-9.]+x \\|"
-               "\n## In motion\n[^#]*\\| dolly \\| `a2c-sharp` \\| [0-9.-]+ \\|"
+               "\n(Every goal measured in this run is met|What limits each goal not met in this run)"
                "\n## Along the dolly\n[^#]*\\| `hashed` \\| [0-9.]+ \\|"
-               "\n## SSAM and what engines ship\n.*\\| forest wind \\| ghosting converged \\|")
+               "\n## SSAM and what engines ship\n.*\\| forest wind \\| ghosting converged \\|"
+               "\\(FIGURES_ROWS.md#ssam-against-its-rivals\\)")
+if(NOT EXISTS ${OUT}/run1/FIGURES_ROWS.md)
+  fail("--figures did not write FIGURES_ROWS.md beside FIGURES.md")
+endif()
+file(STRINGS ${OUT}/run1/FIGURES_ROWS.md rowsLines ENCODING UTF-8)
+file(READ ${OUT}/run1/FIGURES_ROWS.md rowsText)
+expect_matches("${rowsText}" "FIGURES_ROWS.md lacks the command that wrote it or the motions"
+               "`ssam-bench --quick --out [^`]*--figures [^`]*FIGURES.md`"
+               "\n## In motion\n[^#]*\\| dolly \\| `a2c-sharp` \\| [0-9.-]+ \\|")
 foreach(scene IN LISTS scenes)
-  string(FIND "${figuresText}" "### ${scene}, soft" at)
+  string(FIND "${rowsText}" "### ${scene}, soft" at)
   if(at LESS 0)
-    fail("FIGURES.md has no table for ${scene}")
+    fail("FIGURES_ROWS.md has no table for ${scene}")
   endif()
-  string(SUBSTRING "${figuresText}" ${at} -1 rest)
+  string(SUBSTRING "${rowsText}" ${at} -1 rest)
   string(FIND "${rest}" "\n\n" headEnd)
   math(EXPR tableStart "${headEnd} + 2")
   string(SUBSTRING "${rest}" ${tableStart} -1 rest)
@@ -183,24 +193,26 @@ foreach(scene IN LISTS scenes)
   foreach(technique IN LISTS techniques)
     string(REPLACE "+" "\\+" escaped "${technique}")
     if(NOT table MATCHES "\\| `?${escaped}`? \\|")
-      fail("FIGURES.md's ${scene} table lacks ${technique}")
+      fail("FIGURES_ROWS.md's ${scene} table lacks ${technique}")
     endif()
   endforeach()
 endforeach()
-# Every table row has as many cells as the header above it.
-set(width -1)
-foreach(line IN LISTS figures)
-  if(line MATCHES "^\\|")
-    string(REPLACE "\\|" "" bare "${line}")
-    string(REGEX MATCHALL "\\|" bars "${bare}")
-    list(LENGTH bars n)
-    if(width LESS 0)
-      set(width ${n})
-    elseif(NOT n EQUAL width)
-      fail("FIGURES.md row '${line}' has ${n} bars, its header ${width}")
+# Every table row has as many cells as the header above it, in both pages.
+foreach(page figures rowsLines)
+  set(width -1)
+  foreach(line IN LISTS ${page})
+    if(line MATCHES "^\\|")
+      string(REPLACE "\\|" "" bare "${line}")
+      string(REGEX MATCHALL "\\|" bars "${bare}")
+      list(LENGTH bars n)
+      if(width LESS 0)
+        set(width ${n})
+      elseif(NOT n EQUAL width)
+        fail("${page}: row '${line}' has ${n} bars, its header ${width}")
+      endif()
+    else()
+      set(width -1)
     endif()
-  else()
-    set(width -1)
-  endif()
+  endforeach()
 endforeach()
 message(STATUS "ssam-bench quick run: ${n1} lines, outputs complete, error columns identical across two runs")

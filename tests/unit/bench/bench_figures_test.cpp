@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // FIGURES.md's generator (bench_figures.hpp) and the goals it shares with bench.md
 // (bench_goals.hpp): the command that wrote the file is at its top, every table is well
-// formed (each row as many cells as its header), every row of the run is in its scene's table,
+// formed (each row as many cells as its header), every row of the run is in its scene's table
+// on the rows page beside FIGURES.md, each goal not met names what limits it,
 // each goal's ratio and verdict come from the rows (still, in motion, along the dolly, and the
 // still goals of the other levels-of-detail run beside), SSAM beside what engines ship names the
 // lowest of each line, the speed table is copied in whole, and a run that lacks a row says so
@@ -100,7 +101,12 @@ std::vector<DollyRow> dolly() {
     return rows;
 }
 
-std::string figures(const std::vector<BenchRow>& rows, const std::string& speed = "", bool withRuns = false) {
+// FIGURES.md and the rows page beside it.
+struct Pages {
+    std::string figures, rows;
+};
+
+Pages pages(const std::vector<BenchRow>& rows, const std::string& speed = "", bool withRuns = false) {
     FiguresInput in;
     if (withRuns) {
         in.lodRows = rows;
@@ -113,9 +119,13 @@ std::string figures(const std::vector<BenchRow>& rows, const std::string& speed 
     in.temporalFrames = 8;
     in.speedTable = speed;
     in.speedTableSource = "out/bench/speed_table.md";
-    std::ostringstream out;
-    writeFigures(out, rows, in);
-    return out.str();
+    std::ostringstream out, rowsOut;
+    writeFigures(out, rowsOut, rows, in);
+    return {out.str(), rowsOut.str()};
+}
+
+std::string figures(const std::vector<BenchRow>& rows, const std::string& speed = "", bool withRuns = false) {
+    return pages(rows, speed, withRuns).figures;
 }
 
 std::vector<std::string> lines(const std::string& text) {
@@ -133,30 +143,54 @@ int cells(const std::string& line) {
     return n;
 }
 
-TEST(BenchFigures, TheCommandIsAtTheTopAndEveryTableIsWellFormed) {
-    const std::string text = figures(run(), "| measure | soft / gl |\n|---|---:|\n| pan | 0.78 |\n", true);
+// The tables of a page (a header line after a line that is not a table's), each row as many
+// cells as its header.
+int wellFormedTables(const std::string& text) {
     const auto l = lines(text);
-    ASSERT_FALSE(l.empty());
-    EXPECT_EQ(l[0], "# Current figures");
-    EXPECT_NE(text.find("generated"), std::string::npos);
-    EXPECT_NE(text.find("`ssam-bench --size 320x180 --figures F`"), std::string::npos);
-    EXPECT_NE(text.find("320x180"), std::string::npos);
     int tables = 0;
     for (std::size_t i = 0; i + 1 < l.size(); ++i) {
         if (l[i].rfind("|", 0) != 0 || (i > 0 && l[i - 1].rfind("|", 0) == 0)) continue;  // a table's header
         ++tables;
-        ASSERT_EQ(l[i + 1].rfind("|---", 0), 0u) << l[i];
+        EXPECT_EQ(l[i + 1].rfind("|---", 0), 0u) << l[i];
         const int n = cells(l[i]);
         for (std::size_t k = i + 1; k < l.size() && l[k].rfind("|", 0) == 0; ++k) EXPECT_EQ(cells(l[k]), n) << l[k];
     }
-    // Contents, speed, tree, forest, vista, the three goal tables, motion, dolly, what engines ship.
-    EXPECT_EQ(tables, 11);
-    EXPECT_NE(text.find("| pan | 0.78 |"), std::string::npos);
-    EXPECT_NE(text.find("out/bench/speed_table.md"), std::string::npos);
+    return tables;
+}
+
+TEST(BenchFigures, TheCommandIsAtTheTopAndEveryTableIsWellFormed) {
+    const Pages p = pages(run(), "| measure | soft / gl |\n|---|---:|\n| pan | 0.78 |\n", true);
+    const auto l = lines(p.figures);
+    ASSERT_FALSE(l.empty());
+    EXPECT_EQ(l[0], "# Current figures");
+    EXPECT_EQ(lines(p.rows).at(0), "# Every row of the current figures");
+    for (const std::string& text : {p.figures, p.rows}) {
+        EXPECT_NE(text.find("generated"), std::string::npos);
+        EXPECT_NE(text.find("`ssam-bench --size 320x180 --figures F`"), std::string::npos);
+        EXPECT_NE(text.find("320x180"), std::string::npos);
+    }
+    // Contents, speed, the three goal tables, dolly, what engines ship; beside it tree, forest,
+    // vista and the motions.
+    EXPECT_EQ(wellFormedTables(p.figures), 7);
+    EXPECT_EQ(wellFormedTables(p.rows), 4);
+    EXPECT_NE(p.figures.find("| pan | 0.78 |"), std::string::npos);
+    EXPECT_NE(p.figures.find("out/bench/speed_table.md"), std::string::npos);
+    // FIGURES.md links the rows page's sections by the name it was given.
+    EXPECT_NE(p.figures.find("](FIGURES_ROWS.md#ssam-against-its-rivals)"), std::string::npos);
+    EXPECT_NE(p.figures.find("](FIGURES_ROWS.md#in-motion)"), std::string::npos);
+    EXPECT_NE(p.rows.find("\n## SSAM against its rivals\n"), std::string::npos);
+    EXPECT_NE(p.rows.find("\n## In motion\n"), std::string::npos);
+}
+
+TEST(BenchFigures, TheRowsPageIsNamedBesideFigures) {
+    EXPECT_EQ(rowsPagePath("game/bench/FIGURES.md"), "game/bench/FIGURES_ROWS.md");
+    EXPECT_EQ(rowsPagePath("out.d/figures"), "out.d/figures_ROWS");
+    EXPECT_EQ(rowsPagePath("F.md"), "F_ROWS.md");
 }
 
 TEST(BenchFigures, EveryRowIsInItsScenesTable) {
-    const std::string text = figures(run());
+    const Pages p = pages(run());
+    const std::string& text = p.rows;
     for (const char* scene : {"tree", "forest", "vista"}) {
         const std::size_t at = text.find(std::string("### ") + scene + ", soft");
         ASSERT_NE(at, std::string::npos) << scene;
@@ -166,7 +200,7 @@ TEST(BenchFigures, EveryRowIsInItsScenesTable) {
             EXPECT_NE(table.find(std::string("| ") + t + " |"), std::string::npos) << scene << " " << t;
         EXPECT_NE(table.find("| opaque-only |"), std::string::npos);
     }
-    EXPECT_NE(text.find("Not part of this run"), std::string::npos);  // no --speed-table: says how to get it
+    EXPECT_NE(p.figures.find("Not part of this run"), std::string::npos);  // no --speed-table: says how to get it
 }
 
 TEST(BenchFigures, GoalsComeFromTheRows) {
@@ -197,6 +231,14 @@ TEST(BenchFigures, GoalsComeFromTheRows) {
     EXPECT_NE(text.find("- `a2c-sharp` is lowest at "), std::string::npos);
     EXPECT_NE(text.find("time ms (tree, forest, vista)"), std::string::npos);
     EXPECT_NE(text.find("- `alpha-test+taa` is lowest at nothing measured here."), std::string::npos);
+    // What limits each goal not met is named, those met are not listed.
+    EXPECT_NE(text.find("What limits each goal not met in this run is worked out in:\n\n"
+                        "- tree: time ssam / ssam-paper, frames alternated (1.300x): ssam/docs/knobs.md, "),
+              std::string::npos);
+    EXPECT_NE(text.find("\n- forest: ꟻLIP ssam / alpha-test (1.250x): ssam/docs/knobs.md, "), std::string::npos);
+    EXPECT_NE(text.find("- forest: ꟻLIP ssam-plus / alpha-test (0.750x): ssam/docs/ssam_plus.md, "), std::string::npos);
+    EXPECT_EQ(text.find("- tree: ꟻLIP ssam / alpha-test ("), std::string::npos);
+    for (const Goal& g : goals) EXPECT_FALSE(g.limitedBy.empty()) << g.what;
 }
 
 TEST(BenchFigures, GoalsInMotionAndAlongTheDollyComeFromTheirRows) {
@@ -219,7 +261,10 @@ TEST(BenchFigures, GoalsInMotionAndAlongTheDollyComeFromTheirRows) {
     EXPECT_FALSE(popping[1].met());
     EXPECT_NEAR(*popping[2].ratio, 0.015, 1e-12);
     EXPECT_TRUE(popping[2].met());
-    const std::string text = figures(run(), "", true);
+    const Pages p = pages(run(), "", true);
+    const std::string& text = p.figures;
+    EXPECT_NE(text.find("- forest dolly: popping (pop_lod) ssam / hashed (1.000x): game/docs/levels_of_detail.md"),
+              std::string::npos);
     EXPECT_NE(text.find("| forest dolly: popping (pop_lod) ssam / hashed | 1.000x | < 1.00x | not met |"),
               std::string::npos);
     EXPECT_NE(text.find("| forest dolly: LOD frame ꟻLIP against full detail, ssam | 0.0150 | <= 0.02 | met |"),
@@ -230,12 +275,13 @@ TEST(BenchFigures, GoalsInMotionAndAlongTheDollyComeFromTheirRows) {
     EXPECT_NE(text.find("| goal | measured | target | met? | LOD on | met? |"), std::string::npos);
     EXPECT_NE(text.find("| forest: ꟻLIP ssam / alpha-test | 1.250x | <= 1.00x | not met | 1.250x | not met |"),
               std::string::npos);
-    EXPECT_NE(text.find("| pan | `ssam` | 0.00020 | 0.1000 | 0.1500 | 0.03333 | 0.1200 | 0.2400 |"), std::string::npos);
+    EXPECT_NE(p.rows.find("| pan | `ssam` | 0.00020 | 0.1000 | 0.1500 | 0.03333 | 0.1200 | 0.2400 |"),
+              std::string::npos);
     EXPECT_NE(text.find("| `alpha-test` | 0.0800 | 0.0400 | 0.0300 | 0.0600 |"), std::string::npos);
     // No motion or dolly run: said, not invented.
-    const std::string bare = figures(run());
-    EXPECT_NE(bare.find("## In motion\n\nNot part of this run"), std::string::npos);
-    EXPECT_NE(bare.find("## Along the dolly\n\nNot part of this run"), std::string::npos);
+    const Pages bare = pages(run());
+    EXPECT_NE(bare.rows.find("## In motion\n\nNot part of this run"), std::string::npos);
+    EXPECT_NE(bare.figures.find("## Along the dolly\n\nNot part of this run"), std::string::npos);
     EXPECT_EQ(motionGoals({}).size(), 0u);
     EXPECT_EQ(dollyGoals({}).size(), 0u);
 }
