@@ -134,6 +134,8 @@ std::vector<DollyRow> runDolly(const BenchOptions& o, int frames, float crossfad
                 s.lodFlipSum += lodFlip;
                 s.lodFrameFlipSum += frameFlip;
                 s.row.lodFlipWorst = std::max(s.row.lodFlipWorst, lodFlip);
+                DollyFrame& measured = s.row.perFrame.emplace_back();
+                measured.lodFlip = lodFlip;
                 if (k > 0) {
                     Image lodMap, fullMap;
                     engine::capture::flip(s.lod.last, lod, {}, &lodMap);
@@ -143,6 +145,8 @@ std::vector<DollyRow> runDolly(const BenchOptions& o, int frames, float crossfad
                     for (std::size_t i = 0; i < lodMap.pixels.size(); ++i)
                         lodMap.pixels[i] = std::max(0.0f, lodMap.pixels[i] - fullMap.pixels[i]);
                     const double excess = meanOver(lodMap, plants, s.lastPlants);
+                    measured.change = change;
+                    measured.excess = excess;
                     if (change > s.row.pop) s.row.pop = change, s.row.popFrame = k;
                     if (excess > s.row.popLod) s.row.popLod = excess, s.row.popLodFrame = k;
                 }
@@ -168,6 +172,16 @@ void writeDollyCsv(std::ostream& out, const std::vector<DollyRow>& rows) {
         out << formatted("%s,%s,%s,%d,%.2f,%.2f,%.5f,%d,%.5f,%d,%.5f,%.5f,%.5f\n", r.scene.c_str(), r.technique.c_str(),
                          r.backend.c_str(), r.frames, double(kDollyStep), double(r.crossfade), r.pop, r.popFrame,
                          r.popLod, r.popLodFrame, r.lodFlipMean, r.lodFlipWorst, r.lodFrameFlipMean);
+}
+
+void writeDollyFramesCsv(std::ostream& out, const std::vector<DollyRow>& rows) {
+    out << "scene,technique,frame,change_flip,lod_excess_flip,lod_flip\n";
+    for (const DollyRow& r : rows)
+        for (std::size_t k = 0; k < r.perFrame.size(); ++k) {
+            const DollyFrame& f = r.perFrame[k];
+            out << r.scene << "," << r.technique << "," << k << "," << num(f.change, "%.5f") << ","
+                << num(f.excess, "%.5f") << "," << num(f.lodFlip, "%.5f") << "\n";
+        }
 }
 
 void printDollyTable(const std::vector<DollyRow>& rows) {

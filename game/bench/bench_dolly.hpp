@@ -25,6 +25,10 @@ namespace bench {
 std::vector<DollyRow> runDolly(const BenchOptions& options, int frames, float crossfade);
 
 void writeDollyCsv(std::ostream& out, const std::vector<DollyRow>& rows);
+// dolly_frames.csv: each technique's measures frame by frame (the change and the excess from
+// the frame before, empty on the first; the LOD frame's ꟻLIP against full detail), to tell a
+// level switching in one frame (a peak) from the difference every frame shows (a floor).
+void writeDollyFramesCsv(std::ostream& out, const std::vector<DollyRow>& rows);
 // The table printed at the end of a run.
 void printDollyTable(const std::vector<DollyRow>& rows);
 

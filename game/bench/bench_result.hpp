@@ -57,6 +57,12 @@ struct MotionRow {
     double flicker = 0.0, flip = 0.0, flipWorst = 0.0, rmse = 0.0, rmseWorst = 0.0, ghost = 0.0, ghostWorst = 0.0;
 };
 
+// One frame of the dolly, for one technique: the measures whose worst or mean DollyRow keeps
+// (change and excess from the frame before; NaN on the first frame).
+struct DollyFrame {
+    double change = kMissing, excess = kMissing, lodFlip = 0.0;
+};
+
 // One technique along the dolly of ssam-bench --dolly (bench_dolly.hpp, which defines the
 // measures).
 struct DollyRow {
@@ -66,6 +72,7 @@ struct DollyRow {
     int popFrame = 0, popLodFrame = 0;  // the later frame of the worst pair
     double lodFlipMean = 0.0, lodFlipWorst = 0.0, lodFrameFlipMean = 0.0;
     float crossfade = 0.0f;
+    std::vector<DollyFrame> perFrame = {};  // frame k at index k
 };
 
 inline bool has(double v) { return std::isfinite(v); }

@@ -270,13 +270,15 @@ BenchOptions parse(const Options& o) {
     return b;
 }
 
-// The report of a run whose rows make one CSV (--motion, --dolly): writes it whole to `csv`,
-// then prints its table and where it went.
+// The report of a run whose rows make one CSV (--motion, --dolly): writes it whole to `csv`
+// (with the files already staged in `others`, all or none), then prints its table and where
+// it went.
 template <typename Row>
 int writeCsvAndTable(const std::filesystem::path& csv, const std::vector<Row>& rows,
                      void (*writeRows)(std::ostream&, const std::vector<Row>&),
-                     void (*printTable)(const std::vector<Row>&)) {
-    engine::PendingFiles files;
+                     void (*printTable)(const std::vector<Row>&), engine::PendingFiles* others = nullptr) {
+    engine::PendingFiles own;
+    engine::PendingFiles& files = others ? *others : own;
     stageReport(files, csv, [&](std::ostream& s) { writeRows(s, rows); });
     files.commit();
     printTable(rows);
@@ -308,7 +310,7 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
     const std::filesystem::path out(o.out);
     const std::vector<const char*> reports =
         o.scaling           ? std::vector<const char*>{"scaling.csv", "scaling.svg"}
-        : o.dolly           ? std::vector<const char*>{"dolly.csv"}
+        : o.dolly           ? std::vector<const char*>{"dolly.csv", "dolly_frames.csv"}
         : !o.motion.empty() ? std::vector<const char*>{"motion.csv"}
         : o.sweep           ? std::vector<const char*>{"sweep.csv", "sweep.md"}
                             : std::vector<const char*>{"bench.csv", "bench_passes.csv", "bench.md", "bench.svg"};
@@ -358,9 +360,11 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         return writeCsvAndTable(out / "motion.csv",
                                 runMotion(run, parseMotions(o.motion), o.motionFrames, o.motionVectors == "on"),
                                 writeMotionCsv, printMotionTable);
-    if (o.dolly)
-        return writeCsvAndTable(out / "dolly.csv", runDolly(run, o.dollyFrames, options.crossfade), writeDollyCsv,
-                                printDollyTable);
+    if (o.dolly) {
+        const std::vector<DollyRow> rows = runDolly(run, o.dollyFrames, options.crossfade);
+        stageReport(files, out / "dolly_frames.csv", [&](std::ostream& s) { writeDollyFramesCsv(s, rows); });
+        return writeCsvAndTable(out / "dolly.csv", rows, writeDollyCsv, printDollyTable, &files);
+    }
     if (o.sweep) {
         std::printf("ssam-bench --sweep: %zu setting(s) per scene\n", settings.size());
         const SweepRun sweepRun = runSweep(run, settings, options.subjects);
@@ -512,7 +516,7 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     CLI::Option* dolly = app.add_flag(
         "--dolly", o.dolly,
         "instead of comparing techniques: popping along the forest's dolly (the camera moving toward the trees "
-        "1 m a frame), each technique with levels of detail against full detail; default 320x180; writes dolly.csv");
+        "1 m a frame), each technique with levels of detail against full detail; default 320x180; writes dolly.csv and, frame by frame, dolly_frames.csv");
     app.add_option("--dolly-frames", o.dollyFrames,
                    "frames of the dolly from its start (2..117), for --dolly and --figures' dolly (--quick: 16)")
         ->capture_default_str();
