@@ -9,6 +9,9 @@
 //   pop_lod   the largest mean, over the plant pixels, of each pixel's excess of that ꟻLIP
 //             over the same pair's at full detail (0 where full detail changed as much): the
 //             change the levels add to the motion's own (a level switching in one frame);
+//   pop_lod_median  the same excess in the median frame: the floor a switch rises above,
+//             which the per-pixel difference between the LOD and full-detail frames leaves in
+//             every frame of a moving camera;
 //   lod_flip  the LOD frame against the full-detail frame over the plant pixels, mean and
 //             worst over the dolly; lod_frame_flip the same over the whole frame.
 // A technique with history draws kHistoryFrames of the first view first, in both runs.

@@ -178,12 +178,16 @@ void writeDolly(std::ostream& out, const std::vector<DollyRow>& dolly) {
         "Popping at the levels of detail's changes (`ssam-bench --dolly`, game/docs/levels_of_detail.md): "
         "the forest's dolly, ",
         " frames, drawn with the levels of detail and at full detail. pop: the largest ꟻLIP between "
-        "consecutive frames; pop_lod: the largest change the levels add to the motion's own; LOD ꟻLIP: the "
-        "LOD frame against the full-detail frame over the plant pixels, mean and worst.\n\n"
-        "| technique | pop | pop_lod | LOD ꟻLIP mean | LOD ꟻLIP worst |\n|---|---:|---:|---:|---:|\n",
+        "consecutive frames; pop_lod: the largest change the levels add to the motion's own, and its frame; "
+        "median: the same in the median frame, the floor a level switching rises above (each frame in the "
+        "run's dolly_frames.csv); LOD ꟻLIP: the LOD frame against the full-detail frame over the plant "
+        "pixels, mean and worst.\n\n"
+        "| technique | pop | pop_lod | frame | pop_lod median | LOD ꟻLIP mean | LOD ꟻLIP worst |\n"
+        "|---|---:|---:|---:|---:|---:|---:|\n",
         [&out](const DollyRow& r) {
             out << "| `" << r.technique << "` | " << num(r.pop, "%.4f") << " | " << num(r.popLod, "%.4f") << " | "
-                << num(r.lodFlipMean, "%.4f") << " | " << num(r.lodFlipWorst, "%.4f") << " |\n";
+                << r.popLodFrame << " | " << num(r.popLodMedian, "%.4f") << " | " << num(r.lodFlipMean, "%.4f") << " | "
+                << num(r.lodFlipWorst, "%.4f") << " |\n";
         });
 }
 

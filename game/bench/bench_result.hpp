@@ -70,6 +70,7 @@ struct DollyRow {
     int frames = 0;
     double pop = 0.0, popLod = 0.0;
     int popFrame = 0, popLodFrame = 0;  // the later frame of the worst pair
+    double popLodMedian = 0.0;          // the median frame's excess: the floor a level switch rises above
     double lodFlipMean = 0.0, lodFlipWorst = 0.0, lodFrameFlipMean = 0.0;
     float crossfade = 0.0f;
     std::vector<DollyFrame> perFrame = {};  // frame k at index k

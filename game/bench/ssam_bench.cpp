@@ -319,6 +319,7 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
     const std::string rowsPage = o.figures.empty() ? "" : rowsPagePath(o.figures);
     for (const std::string& page : {o.figures, rowsPage})
         if (!page.empty()) engine::requireWritableFile(page, /*createDirectory=*/false);
+    if (!o.figures.empty()) engine::requireWritableFile(out / "dolly_frames.csv", /*createDirectory=*/false);
     std::string speedTable;
     if (!o.speedTable.empty()) {
         std::ifstream in(o.speedTable, std::ios::binary);
@@ -395,9 +396,12 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         std::ostringstream rowsText;
         stageReport(files, o.figures, [&](std::ostream& s) { writeFigures(s, rowsText, rows, figures); });
         stageReport(files, rowsPage, [&](std::ostream& s) { s << rowsText.str(); });
+        stageReport(files, out / "dolly_frames.csv", [&](std::ostream& s) { writeDollyFramesCsv(s, figures.dolly); });
     }
     files.commit();
-    if (!o.figures.empty()) std::printf("ssam-bench: wrote %s and %s\n", o.figures.c_str(), rowsPage.c_str());
+    if (!o.figures.empty())
+        std::printf("ssam-bench: wrote %s, %s and %s/dolly_frames.csv\n", o.figures.c_str(), rowsPage.c_str(),
+                    out.string().c_str());
     std::printf("ssam-bench: wrote %s/bench.csv, bench_passes.csv, bench.md, bench.svg (%zu rows)\n",
                 out.string().c_str(), rows.size());
     return 0;
