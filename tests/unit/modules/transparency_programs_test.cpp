@@ -8,6 +8,7 @@
 #include "draws.hpp"         // tests/support
 #include "expect_error.hpp"  // tests/support
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -77,7 +78,7 @@ TEST(TransparencyPrograms, WboitResolveNeverOutputsNaN) {
 // the colour pass wrote (alpha > 0) around the pixel and inside the target, the coverage the
 // unblurred composite's; with nothing written around it, the pixel's own texel; non-finite
 // colour comes out as 0.
-TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursOnly) {
+TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursByTheirAlpha) {
     auto b = soft::createSoftBackend({});
     constexpr int n = 4;
     std::vector<float> foliage(n * n * 4, 0.0f), mask(n * n * 4, 0.0f);
@@ -87,7 +88,10 @@ TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursOnly) {
         for (int x = 0; x < n; ++x) {
             const float v = values[y * n + x] / 16.0f;
             const bool written = !(x == 1 && y == 1) && !(x == 3 && y == 3);  // two texels the pass missed
-            std::copy_n(std::vector<float>{v, v / 2, v / 4, written ? 1.0f : 0.0f}.begin(), 4, at(foliage, x, y));
+            // Leaves covering all, half or a fifth of their pixel, and one alpha above 1 (weighs as 1).
+            const float alpha = (x + y) % 3 == 0 ? 1.0f : (x + y) % 3 == 1 ? 0.5f : 0.2f;
+            const float stored = x == 2 && y == 0 ? 3.0f : alpha;
+            std::copy_n(std::vector<float>{v, v / 2, v / 4, written ? stored : 0.0f}.begin(), 4, at(foliage, x, y));
             std::copy_n(std::vector<float>{0.5f, 0.0f, 0.0f, 1.0f}.begin(), 4, at(mask, x, y));  // two layers of 0.5
         }
     at(foliage, 0, 3)[0] = std::numeric_limits<float>::quiet_NaN();  // poisons its neighbours' red
@@ -112,7 +116,8 @@ TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursOnly) {
             for (int dx = -1; dx <= 1; ++dx) {
                 const int u = x + dx, v = y + dy;
                 if (u < 0 || v < 0 || u >= n || v >= n || at(foliage, u, v)[3] == 0.0f) continue;
-                const float w = float((2 - dx * dx) * (2 - dy * dy));
+                const float alpha = std::min(at(foliage, u, v)[3], 1.0f);
+                const float w = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * alpha);
                 sum += w * glm::vec3(at(foliage, u, v)[0], at(foliage, u, v)[1], at(foliage, u, v)[2]);
                 weights += w;
             }
