@@ -350,6 +350,7 @@ TEST(Techniques, SsamPlusExponentialModel) {
     TechniqueOptions options;
     options.ssamPlus.coverage = CoverageModel::Exponential;
     options.ssamPlus.maskPrecision = ssam::MaskPrecision::Rgba16f;
+    options.ssamPlus.colorAlphaReference = 64.0f / 255.0f;  // below A's alpha, so A is the colour kept
     const SoftRun run(TechniqueKind::SsamPlus, 1, {kQuadA, kQuadB}, options);
     const Readback& r = run.result;
     const glm::vec3 opaque(kOpaqueColor);
