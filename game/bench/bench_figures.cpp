@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "bench_goals.hpp"
 #include "bench_verdict.hpp"
@@ -209,8 +210,8 @@ void writeGoals(std::ostream& out, const std::vector<BenchRow>& rows, const Figu
         out << " The last two columns: the same goals from a run of their techniques with the levels of detail "
             << (in.lodRowsHaveLevelsOfDetail ? "on" : "off") << ".";
     out << "\n\n";
-    const std::vector<Goal> beside = rivalGoals(in.lodRows);
-    writeGoalTable(out, rivalGoals(rows), in.lodRows.empty() ? nullptr : &beside, lodName);
+    const std::vector<Goal> still = rivalGoals(rows), beside = rivalGoals(in.lodRows);
+    writeGoalTable(out, still, in.lodRows.empty() ? nullptr : &beside, lodName);
     out << "\nIn motion ([In motion](" << in.rowsPage
         << "#in-motion)): on the forest, for each motion, SSAM's flicker at most 0.3x alpha testing's and SSAM+'s "
            "converged ꟻLIP at most 0.6x alpha testing's.\n\n";
@@ -221,7 +222,7 @@ void writeGoals(std::ostream& out, const std::vector<BenchRow>& rows, const Figu
     const std::vector<Goal> alongTheDolly = dollyGoals(in.dolly);
     writeGoalsOrAbsence(out, alongTheDolly);
     out << "\n";
-    std::vector<Goal> all = rivalGoals(rows);
+    std::vector<Goal> all = still;
     all.insert(all.end(), inMotion.begin(), inMotion.end());
     all.insert(all.end(), alongTheDolly.begin(), alongTheDolly.end());
     writeGoalLimits(out, all);
@@ -231,10 +232,9 @@ void writeGoals(std::ostream& out, const std::vector<BenchRow>& rows, const Figu
 }  // namespace
 
 std::string rowsPagePath(const std::string& figuresPath) {
-    const std::size_t slash = figuresPath.find_last_of('/');
-    const std::size_t dot = figuresPath.find_last_of('.');
-    const bool hasExtension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    return hasExtension ? figuresPath.substr(0, dot) + "_ROWS" + figuresPath.substr(dot) : figuresPath + "_ROWS";
+    std::filesystem::path page(figuresPath);
+    page.replace_filename(page.stem().string() + "_ROWS" + page.extension().string());
+    return page.string();
 }
 
 void writeFigures(std::ostream& out, std::ostream& rowsOut, const std::vector<BenchRow>& rows,
