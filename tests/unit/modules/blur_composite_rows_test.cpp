@@ -2,7 +2,7 @@
 // SSAM+'s blurred composite on the soft backend (CoverageBlurCompositeKernel, program_kernels.hpp):
 // its row hooks (the general path's shadeRow, the 8-bit composite fast path's compositeColorRow)
 // against the formula as written before it had one -- each of the nine neighbours fetched on its
-// own, the written ones (alpha > 0, NaN not) weighted 1-2-1 by 1-2-1 and by their alpha squared
+// own, the written ones (alpha > 0, NaN not) weighted 1-2-1 by 1-2-1 and by their alpha^1.5
 // (clamped to 1), and summed row by row -- bit
 // for bit, over random float and sRGB 8-bit foliage with unwritten and NaN texels, image borders
 // and partly live rows. The pictures stay the same (Racer.Golden.technique_ssam-plus pins them too).
@@ -61,7 +61,7 @@ glm::vec3 referenceBlur(const soft::SoftTexture& foliage, int px, int py) {
             const glm::vec4 c = soft::fetchTexel(foliage, x, y);
             if (!(c.a > 0.0f)) continue;
             const float alpha = c.a < 1.0f ? c.a : 1.0f;
-            const float weight = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * alpha);
+            const float weight = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * std::sqrt(alpha));
             sum += weight * glm::vec3(c);
             weights += weight;
         }

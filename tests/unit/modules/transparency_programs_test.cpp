@@ -117,7 +117,7 @@ TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursByTheirAlpha
                 const int u = x + dx, v = y + dy;
                 if (u < 0 || v < 0 || u >= n || v >= n || at(foliage, u, v)[3] == 0.0f) continue;
                 const float alpha = std::min(at(foliage, u, v)[3], 1.0f);
-                const float w = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * alpha);
+                const float w = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * std::sqrt(alpha));
                 sum += w * glm::vec3(at(foliage, u, v)[0], at(foliage, u, v)[1], at(foliage, u, v)[2]);
                 weights += w;
             }

@@ -50,7 +50,7 @@ struct Settings {
     // paper's): the step. In [0, 1].
     float colorFade = 0.0f;
     // The composite takes the 1-2-1 3x3 average of the colours the colour pass wrote (alpha > 0)
-    // around the pixel instead of the pixel's own, each weighted too by its alpha squared, as
+    // around the pixel instead of the pixel's own, each weighted too by its alpha^1.5, as
     // SSAM+ does: the colour pass keeps one alpha-tested layer per pixel, a different leaf from
     // pixel to pixel and frame to frame, and the average stands in for the blend of the layers
     // (ssam/docs/steady_in_motion.md). False (the paper's): the pixel's own.

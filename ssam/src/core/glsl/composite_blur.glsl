@@ -2,7 +2,7 @@
 // Needs u_foliage (sampler2D). Defines vec3 ssamBlurredFoliage(ivec2 pixel), the colour of SSAM's
 // Settings::colorBlur and of SSAM+'s blurred composite: the 1-2-1 3x3 average of the colours the
 // colour pass wrote (alpha > 0) around the pixel, inside the target, each weighted too by its
-// alpha squared (alpha clamped to 1: a leaf's soft edge covers little of its pixel); the pixel's
+// alpha to the power 1.5 (alpha clamped to 1: a leaf's soft edge covers little of its pixel); the pixel's
 // own where none was written (soft: covered_tent.hpp, summed in the same order).
 vec3 ssamBlurredFoliage(ivec2 p) {
     ivec2 size = textureSize(u_foliage, 0);
@@ -15,7 +15,7 @@ vec3 ssamBlurredFoliage(ivec2 p) {
             vec4 c = texelFetch(u_foliage, q, 0);
             if (!(c.a > 0.0)) continue;
             float alpha = c.a < 1.0 ? c.a : 1.0;
-            float weight = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * alpha);
+            float weight = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * sqrt(alpha));
             sum += weight * c.rgb;
             weights += weight;
         }

@@ -2,14 +2,15 @@
 #pragma once
 // The 3x3 tent filter (1-2-1 by 1-2-1) over the covered texels of a full-screen pass's input: the
 // weighted mean of the neighbours inside the texture whose alpha is above 0 (NaN is not), each
-// weighted too by its alpha squared (alpha clamped to 1), the centre texel where none is, for the
-// block rows of a kernel (program_kernel.hpp's row hooks). The input is SSAM's colour pass: each
+// weighted too by its alpha to the power 1.5 (alpha clamped to 1), the centre texel where none
+// is, for the block rows of a kernel (program_kernel.hpp's row hooks). The input is SSAM's colour pass: each
 // texel the colour of the nearest leaf that passed the alpha test, covering `alpha` of its pixel;
 // a leaf's soft edge covers little of its pixel, so its colour stands for little of what is seen
 // there (the exponent was measured: ssam/docs/ssam_plus.md, "The blur weighted by alpha").
 // Each texel of the 3 x (count + 2) window around a row is decoded once instead of once per
 // neighbour (nine times), and the sums run row by row, left to right, the order the GLSL loop
 // sums them in, so a kernel's per-pixel shade() and its row give the same bits.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -63,7 +64,7 @@ struct CoveredTentWindow {
                 if (!covered[dy + 1][i + dx + 1]) continue;
                 const glm::vec4& t = texel[dy + 1][i + dx + 1];
                 const float alpha = t.a < 1.0f ? t.a : 1.0f;
-                const float weight = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * alpha);
+                const float weight = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * std::sqrt(alpha));
                 sum += weight * glm::vec3(t);
                 weights += weight;
             }
