@@ -270,15 +270,13 @@ BenchOptions parse(const Options& o) {
     return b;
 }
 
-// The report of a run whose rows make one CSV (--motion, --dolly): writes it whole to `csv`
-// (with the files already staged in `others`, all or none), then prints its table and where
-// it went.
+// The report of a run whose rows make one CSV (--motion, --dolly): stages it in `files` beside
+// what is already staged there, puts them all in place together, then prints its table and
+// where it went.
 template <typename Row>
-int writeCsvAndTable(const std::filesystem::path& csv, const std::vector<Row>& rows,
+int writeCsvAndTable(engine::PendingFiles& files, const std::filesystem::path& csv, const std::vector<Row>& rows,
                      void (*writeRows)(std::ostream&, const std::vector<Row>&),
-                     void (*printTable)(const std::vector<Row>&), engine::PendingFiles* others = nullptr) {
-    engine::PendingFiles own;
-    engine::PendingFiles& files = others ? *others : own;
+                     void (*printTable)(const std::vector<Row>&)) {
     stageReport(files, csv, [&](std::ostream& s) { writeRows(s, rows); });
     files.commit();
     printTable(rows);
@@ -358,13 +356,13 @@ int run(const CLI::App& app, Options o, int argc, char** argv) {
         return 0;
     }
     if (!o.motion.empty())
-        return writeCsvAndTable(out / "motion.csv",
+        return writeCsvAndTable(files, out / "motion.csv",
                                 runMotion(run, parseMotions(o.motion), o.motionFrames, o.motionVectors == "on"),
                                 writeMotionCsv, printMotionTable);
     if (o.dolly) {
         const std::vector<DollyRow> rows = runDolly(run, o.dollyFrames, options.crossfade);
         stageReport(files, out / "dolly_frames.csv", [&](std::ostream& s) { writeDollyFramesCsv(s, rows); });
-        return writeCsvAndTable(out / "dolly.csv", rows, writeDollyCsv, printDollyTable, &files);
+        return writeCsvAndTable(files, out / "dolly.csv", rows, writeDollyCsv, printDollyTable);
     }
     if (o.sweep) {
         std::printf("ssam-bench --sweep: %zu setting(s) per scene\n", settings.size());
