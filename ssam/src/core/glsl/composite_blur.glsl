@@ -2,8 +2,8 @@
 // Needs u_foliage (sampler2D). Defines vec3 ssamBlurredFoliage(ivec2 pixel), the colour of SSAM's
 // Settings::colorBlur and of SSAM+'s blurred composite: the 1-2-1 3x3 average of the colours the
 // colour pass wrote (alpha > 0) around the pixel, inside the target, each weighted too by its
-// alpha to the power 1.5 (alpha clamped to 1: a leaf's soft edge covers little of its pixel); the pixel's
-// own where none was written (soft: covered_tent.hpp, summed in the same order).
+// alpha to the power 1.5 (alpha clamped to 1: a leaf's soft edge covers little of its pixel);
+// the pixel's own where none was written (soft: covered_tent.hpp, summed in the same order).
 vec3 ssamBlurredFoliage(ivec2 p) {
     ivec2 size = textureSize(u_foliage, 0);
     vec3 sum = vec3(0.0);

@@ -3,13 +3,14 @@
 // The 3x3 tent filter (1-2-1 by 1-2-1) over the covered texels of a full-screen pass's input: the
 // weighted mean of the neighbours inside the texture whose alpha is above 0 (NaN is not), each
 // weighted too by its alpha to the power 1.5 (alpha clamped to 1), the centre texel where none
-// is, for the block rows of a kernel (program_kernel.hpp's row hooks). The input is SSAM's colour pass: each
-// texel the colour of the nearest leaf that passed the alpha test, covering `alpha` of its pixel;
-// a leaf's soft edge covers little of its pixel, so its colour stands for little of what is seen
-// there (the exponent was measured: ssam/docs/ssam_plus.md, "The blur weighted by alpha").
-// Each texel of the 3 x (count + 2) window around a row is decoded once instead of once per
-// neighbour (nine times), and the sums run row by row, left to right, the order the GLSL loop
-// sums them in, so a kernel's per-pixel shade() and its row give the same bits.
+// is, for the block rows of a kernel (program_kernel.hpp's row hooks). The input is SSAM's colour
+// pass: each texel the colour of the nearest leaf that passed the alpha test, covering `alpha` of
+// its pixel; a leaf's soft edge covers little of its pixel, so its colour stands for little of
+// what is seen there (the exponent was measured: ssam/docs/ssam_plus.md, "The blur weighted by
+// alpha"). Each texel of the 3 x (count + 2) window around a row is decoded, and its alpha weight
+// taken, once instead of once per neighbour (nine times), and the sums run row by row, left to
+// right, the order the GLSL loop sums them in, so a kernel's per-pixel shade() and its row give
+// the same bits.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +26,7 @@ template <int MaxCount>
 struct CoveredTentWindow {
     glm::vec4 texel[3][MaxCount + 2];
     bool covered[3][MaxCount + 2];
+    float alphaWeight[3][MaxCount + 2];  // alpha^1.5 of a covered texel, alpha clamped to 1
 
     // The texels around `count` (<= MaxCount) pixels from (x0, y): rows y - 1 .. y + 1, columns
     // x0 - 1 .. x0 + count. RGBA8 texels are decoded through the byte tables (loadTexel's values),
@@ -42,6 +44,7 @@ struct CoveredTentWindow {
                 if (x < 0 || yy < 0 || x >= width || yy >= height) {
                     t = glm::vec4(0.0f);
                     covered[row][column] = false;
+                    alphaWeight[row][column] = 0.0f;
                     continue;
                 }
                 const std::byte* p = texture.texel(0, x, yy);
@@ -52,6 +55,8 @@ struct CoveredTentWindow {
                     t = loadTexel(p, format);
                 }
                 covered[row][column] = t.a > 0.0f;  // NaN: not covered
+                const float alpha = t.a < 1.0f ? t.a : 1.0f;
+                alphaWeight[row][column] = covered[row][column] ? alpha * std::sqrt(alpha) : 0.0f;
             }
     }
 
@@ -62,10 +67,8 @@ struct CoveredTentWindow {
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 if (!covered[dy + 1][i + dx + 1]) continue;
-                const glm::vec4& t = texel[dy + 1][i + dx + 1];
-                const float alpha = t.a < 1.0f ? t.a : 1.0f;
-                const float weight = float((2 - dx * dx) * (2 - dy * dy)) * (alpha * std::sqrt(alpha));
-                sum += weight * glm::vec3(t);
+                const float weight = float((2 - dx * dx) * (2 - dy * dy)) * alphaWeight[dy + 1][i + dx + 1];
+                sum += weight * glm::vec3(texel[dy + 1][i + dx + 1]);
                 weights += weight;
             }
         return weights > 0.0f ? sum / weights : glm::vec3(texel[1][i + 1]);
