@@ -62,9 +62,10 @@ struct Options {
     bool sweepFull = false;
     bool scaling = false;
     bool withPaperSsam = false;
-    std::string ssamPlusBlur = "on";  // SSAM+'s composite blur (transparency::SsamPlusOptions)
-    std::string figures;              // FIGURES.md to write from the run; empty: none
-    std::string speedTable;           // speed_table.sh's table to copy into it
+    std::string ssamPlusBlur = "on";         // SSAM+'s composite blur (transparency::SsamPlusOptions)
+    std::string ssamPlusFrontLayers = "on";  // SSAM+'s front-layers pass (transparency::SsamPlusOptions)
+    std::string figures;                     // FIGURES.md to write from the run; empty: none
+    std::string speedTable;                  // speed_table.sh's table to copy into it
     std::string sweepLerp = "0,0.25,0.5,0.85,1";
     std::string sweepSquare = "on,off";
     std::string sweepBlur = "off";
@@ -224,8 +225,10 @@ BenchOptions parse(const Options& o) {
             for (const std::string& item : o.ssamSettings) applySsamSetting(subject.options.ssam, item);
         }
     for (BenchSubject& subject : b.subjects)
-        if (subject.kind == transparency::TechniqueKind::SsamPlus)
+        if (subject.kind == transparency::TechniqueKind::SsamPlus) {
             subject.options.ssamPlus.compositeBlur = o.ssamPlusBlur == "on";
+            subject.options.ssamPlus.frontLayers = o.ssamPlusFrontLayers == "on";
+        }
     // The paper preset beside the recommended one: the time goal's denominator (bench_goals.hpp).
     if (o.withPaperSsam && !o.sweep) {
         BenchSubject paper{kSsamPaperRow, transparency::TechniqueKind::Ssam, {}};
@@ -432,6 +435,10 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         app, "--ssam-plus-blur", o.ssamPlusBlur,
         "technique ssam-plus's composite averages the foliage colour over 3x3 (on) or takes the pixel's "
         "own (off; ssam/docs/ssam_plus.md)");
+    racer::addOnOffOption(
+        app, "--ssam-plus-front-layers", o.ssamPlusFrontLayers,
+        "technique ssam-plus mixes in the colours of the layers in front of the colour pass's leaf, "
+        "from a third geometry pass (on), or not (off; ssam/docs/ssam_plus.md, \"The front layers\")");
     app.add_option(
            "--backend", o.backends,
            "comma list of backends: soft, gl (EGL; Mesa llvmpipe without a GPU), vk (Vulkan; lavapipe without a GPU)")

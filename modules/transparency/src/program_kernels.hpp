@@ -97,6 +97,16 @@ inline float layerCoverage(CoverageModel model, float maxMask, float addMask) {
     return clamp01(coverage);
 }
 
+// SSAM+'s front layers (programs.hpp CoverageCompositeParams::frontLayers): the colour `kept` of
+// the leaf the colour pass kept, of alpha keptAlpha, over the alpha-weighted mean of the layers
+// drawn in front of it, `front` = (sum a * C, sum a); `kept` alone where front.a is not > 0. The
+// GLSL (glsl/front_layers.glsl) computes it in the same order.
+inline glm::vec3 withFrontLayers(glm::vec3 kept, float keptAlpha, glm::vec4 front) {
+    if (!(front.a > 0.0f)) return kept;
+    const float k = clamp01(keptAlpha);
+    return kept * k + glm::vec3(front) / front.a * (1.0f - k);
+}
+
 // What both SSAM+ composites read: CoverageCompositeParams' textures, looked up once per draw.
 struct CoverageCompositeInputs {
     static constexpr soft::ProgramNeeds kNeeds{};
@@ -105,18 +115,33 @@ struct CoverageCompositeInputs {
     const soft::SoftTexture* foliage = nullptr;
     const soft::SoftTexture* mask = nullptr;
     const soft::SoftTexture* maskAdd = nullptr;
+    const soft::SoftTexture* frontLayers = nullptr;
 
     CoverageCompositeInputs(const CoverageCompositeParams& p, const soft::TextureLookup& textures)
         : model(p.model), foliage(textures.texture(p.foliage)), mask(textures.texture(p.mask)),
-          maskAdd(textures.texture(p.maskAdd)) {}
+          maskAdd(textures.texture(p.maskAdd)), frontLayers(textures.texture(p.frontLayers)) {}
 
     // The rasterizer's composite fast path (raster::hasCompositeHooks): shade()'s alpha, read
-    // channel by channel; the colour is the foliage texel's, or the blurred kernel's row.
+    // channel by channel; the colour is the foliage texel's, or the kernel's compositeColorRow.
     const soft::SoftTexture* compositeColor() const { return foliage; }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
         const float maxMask = soft::texelChannel(*mask, x, y, 0);
         const float addMask = maskAdd ? soft::texelChannel(*maskAdd, x, y, 0) : soft::texelChannel(*mask, x, y, 3);
         return layerCoverage(model, maxMask, addMask);
+    }
+
+    // shade()'s colour at (x, y) from the kept leaf's colour there (its own or its neighbours')
+    // and the alpha of the foliage texel at (x, y).
+    glm::vec3 colorAt(glm::vec3 kept, float keptAlpha, int x, int y) const {
+        // Most pixels have no layer in front of the kept leaf: their weight alone is read.
+        if (!frontLayers || !(soft::texelChannel(*frontLayers, x, y, 3) > 0.0f)) return finiteRgb(kept);
+        return finiteRgb(withFrontLayers(kept, keptAlpha, soft::fetchTexel(*frontLayers, x, y)));
+    }
+    // The fast path's colour, the one shade() gives clamped as the 8-bit target's blend clamps it
+    // (blend.hpp): the front layers' mean is not an 8-bit value.
+    glm::vec3 compositeColorAt(glm::vec3 kept, float keptAlpha, int x, int y) const {
+        const glm::vec3 c = colorAt(kept, keptAlpha, x, y);
+        return {clamp01(c.r), clamp01(c.g), clamp01(c.b)};
     }
 };
 
@@ -126,7 +151,19 @@ struct CoverageCompositeKernel : CoverageCompositeInputs {
     glm::vec4 shade(const soft::Fragment& f) const {
         const glm::vec4 m = soft::fetchTexel(*mask, f.x, f.y);
         const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, f.x, f.y).r : m.a;
-        return {finiteRgb(glm::vec3(soft::fetchTexel(*foliage, f.x, f.y))), layerCoverage(model, m.r, addMask)};
+        const glm::vec4 kept = soft::fetchTexel(*foliage, f.x, f.y);
+        return {colorAt(glm::vec3(kept), kept.a, f.x, f.y), layerCoverage(model, m.r, addMask)};
+    }
+    // The composite fast path's colours (raster::hasCompositeColorRow): the foliage texel's
+    // (false) unless the front layers are mixed in.
+    bool compositeColorRow(int bx, int py, std::uint32_t live, glm::vec3* out) const {
+        if (!frontLayers) return false;
+        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+            const int i = __builtin_ctz(bits);
+            const glm::vec4 kept = soft::fetchTexel(*foliage, bx + i, py);
+            out[i] = compositeColorAt(glm::vec3(kept), kept.a, bx + i, py);
+        }
+        return true;
     }
 };
 
@@ -154,13 +191,15 @@ struct CoverageBlurCompositeKernel : CoverageCompositeInputs {
         }
     }
     // The composite fast path's colours (raster::hasCompositeColorRow): shadeRow's, without the
-    // coverage, which the fast path reads through compositeFactor.
+    // coverage, which the fast path reads through compositeFactor (the blurred colours are
+    // 8-bit means, in [0, 1] as they are).
     bool compositeColorRow(int bx, int py, std::uint32_t live, glm::vec3* out) const {
         Window window;
         window.load(*foliage, bx, py, kRow);
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
             const int i = __builtin_ctz(bits);
-            out[i] = window.filtered(i);
+            out[i] = frontLayers ? compositeColorAt(window.filtered(i), window.texel[1][i + 1].a, bx + i, py)
+                                 : window.filtered(i);
         }
         return true;
     }
@@ -174,7 +213,7 @@ private:
     glm::vec4 blurred(const Window& w, int i, int x, int y) const {
         const glm::vec4 m = soft::fetchTexel(*mask, x, y);
         const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, x, y).r : m.a;
-        return {finiteRgb(w.filtered(i)), layerCoverage(model, m.r, addMask)};
+        return {colorAt(w.filtered(i), w.texel[1][i + 1].a, x, y), layerCoverage(model, m.r, addMask)};
     }
 };
 

@@ -29,7 +29,7 @@ ProgramDesc coverageComposite(bool blur) {
     ProgramDesc d =
         describeProgram<CoverageCompositeParams>(blur ? "CoverageBlurComposite" : "CoverageComposite",
                                                  VertexInput::Fullscreen, "transparency::CoverageCompositeParams");
-    d.gl.fragment = samplerDeclarations(d.gl) + glsl::kLayerCoverage +
+    d.gl.fragment = samplerDeclarations(d.gl) + glsl::kLayerCoverage + glsl::kFrontLayers +
                     (blur ? std::string(ssam::glsl::kCompositeBlur) + glsl::kCoverageBlurCompositeMain
                           : std::string(glsl::kCoverageCompositeMain));
     d.check = [](const void* params, const DrawCheck& check) {

@@ -113,4 +113,51 @@ TEST(BlurCompositeRows, RowHookAndShadeGiveTheBitsOfTheFormula) {
     }
 }
 
+// Random front layers (CoverageCompositeParams::frontLayers), some with no layer in front, some
+// with means above 1, some NaN: each kernel's row hooks give shade()'s bits (compositeColorRow
+// shade()'s colour clamped to [0, 1], as the 8-bit target's blend clamps it).
+TEST(BlurCompositeRows, FrontLayersRowsGiveTheBitsOfShade) {
+    Lcg rng{20261207};
+    constexpr int kW = 45, kH = 23;
+    for (int trial = 0; trial < 4; ++trial) {
+        const soft::SoftTexture foliage = trial >= 2 ? randomSrgbImage(kW, kH, rng) : randomImage(kW, kH, rng, true);
+        const soft::SoftTexture mask = randomImage(kW, kH, rng, false);
+        soft::SoftTexture front = randomImage(kW, kH, rng, true);
+        for (std::size_t i = 0; i < std::size_t(kW * kH); ++i) {  // sums of a few layers: up to 3 times a colour
+            float texel[4];
+            std::memcpy(texel, front.levels[0].texels.data() + 16 * i, sizeof texel);
+            for (int c = 0; c < 3; ++c) texel[c] *= 3.0f;
+            std::memcpy(front.levels[0].texels.data() + 16 * i, texel, sizeof texel);
+        }
+        struct Textures final : soft::TextureLookup {
+            const soft::SoftTexture* t[3];
+            const soft::SoftTexture* texture(engine::render::TextureHandle h) const override {
+                return !h ? nullptr : t[h.index - 1];
+            }
+        } textures;
+        textures.t[0] = &foliage, textures.t[1] = &mask, textures.t[2] = &front;
+        transparency::CoverageCompositeParams params;
+        params.foliage = {1, 1};
+        params.mask = {2, 1};
+        params.frontLayers = {3, 1};
+        const transparency::CoverageBlurCompositeKernel blurred(params, textures);
+        const transparency::CoverageCompositeKernel plain(params, textures);
+        ASSERT_TRUE(ssam::testing::rowHookMatchesShade(blurred, soft::SimdIsa::Sse2, kW, kH, rng, [](auto&) {}))
+            << "trial " << trial;
+        // compositeColorRow against shade()'s colour clamped as the blend clamps it.
+        auto clampedShade = [&](const auto& kernel) {
+            struct Clamped {
+                decltype(kernel)& k;
+                glm::vec4 shade(const soft::Fragment& f) const { return glm::clamp(k.shade(f), 0.0f, 1.0f); }
+                bool compositeColorRow(int bx, int y, std::uint32_t live, glm::vec3* out) const {
+                    return k.compositeColorRow(bx, y, live, out);
+                }
+            };
+            return Clamped{kernel};
+        };
+        ASSERT_TRUE(ssam::testing::compositeColorRowMatchesShade(clampedShade(blurred), kW, kH, rng)) << trial;
+        ASSERT_TRUE(ssam::testing::compositeColorRowMatchesShade(clampedShade(plain), kW, kH, rng)) << trial;
+    }
+}
+
 }  // namespace

@@ -343,7 +343,32 @@ TEST(Techniques, SsamPlusEstimatesTheCoverageOfEqualLayersExactly) {
     // The exact reference agrees (equal-colour layers: over is exactly the coverage lerp).
     const SoftRun exact(TechniqueKind::Reference, 1, layers);
     expectRgbNear(rgbAt(r, 3, kRow), rgbAt(exact.result, 3, kRow), 1e-3f, "three layers vs reference");
-    EXPECT_EQ(intermediateLayers(*run.technique), (std::vector<std::string>{"mask_max", "mask_add", "foliage"}));
+    EXPECT_EQ(intermediateLayers(*run.technique),
+              (std::vector<std::string>{"mask_max", "mask_add", "foliage", "front_layers"}));
+}
+
+// SSAM+'s front layers (SsamPlusOptions::frontLayers): the colour pass keeps B (alpha 0.6, above
+// the reference of 128/255; A's 0.4 is below it) and the front-layers pass adds up A, in front of
+// it. The overlap's colour is B's by B's alpha over A's; where only A is, the colour pass kept
+// nothing and the colour is A's. Without the pass: B's, and the clear colour's.
+TEST(Techniques, SsamPlusMixesInTheLayersInFrontOfTheKeptLeaf) {
+    const glm::vec3 opaque(kOpaqueColor), red(1.0f, 0.0f, 0.0f), green(0.0f, 1.0f, 0.0f);
+    const float overlapCoverage = 1.0f - std::pow(1.0f - 0.6f, 1.0f / 0.6f);  // ADD 1, MAX 0.6
+    const SoftRun on(TechniqueKind::SsamPlus, 1, {kQuadA, kQuadB});
+    expectRgbNear(rgbAt(on.result, kOverlap, kRow), glm::mix(opaque, 0.6f * green + 0.4f * red, overlapCoverage), 2e-3f,
+                  "overlap");
+    expectRgbNear(rgbAt(on.result, kOnlyA, kRow), glm::mix(opaque, red, 0.4f), 2e-3f, "only A");
+    expectRgbNear(rgbAt(on.result, kOnlyB, kRow), glm::mix(opaque, green, 0.6f), 2e-3f, "only B");
+
+    TechniqueOptions off;
+    off.ssamPlus.frontLayers = false;
+    const SoftRun without(TechniqueKind::SsamPlus, 1, {kQuadA, kQuadB}, off);
+    expectRgbNear(rgbAt(without.result, kOverlap, kRow), glm::mix(opaque, green, overlapCoverage), 2e-3f,
+                  "overlap, without");
+    const float* clear = off.ssam.foliageClearColor;
+    expectRgbNear(rgbAt(without.result, kOnlyA, kRow), glm::mix(opaque, glm::vec3(clear[0], clear[1], clear[2]), 0.4f),
+                  2e-3f, "only A, without");
+    EXPECT_EQ(intermediateLayers(*without.technique), (std::vector<std::string>{"mask_max", "mask_add", "foliage"}));
 }
 
 TEST(Techniques, SsamPlusExponentialModel) {

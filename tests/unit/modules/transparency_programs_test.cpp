@@ -136,6 +136,55 @@ TEST(TransparencyPrograms, BlurCompositeAveragesTheWrittenNeighboursByTheirAlpha
         }
 }
 
+// SSAM+'s front layers (CoverageCompositeParams::frontLayers), in both composites: the kept leaf's
+// colour by its alpha (clamped to 1) over the mean of the layers in front, (sum a * C) / (sum a);
+// the kept colour alone where no layer is in front; non-finite sums as 0. The foliage is one
+// colour, so the blurred composite's average is that colour too.
+TEST(TransparencyPrograms, CompositesMixInTheFrontLayersByTheKeptLeafsAlpha) {
+    auto b = soft::createSoftBackend({});
+    constexpr int n = 5;
+    const glm::vec3 kept(0.8f, 0.4f, 0.2f), front(0.1f, 0.9f, 0.5f);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float keptAlpha[n] = {0.75f, 3.0f, 0.0f, 0.5f, 0.5f};   // 3: weighs as 1; 0: nothing kept
+    const float frontWeight[n] = {0.3f, 0.3f, 0.6f, 0.0f, 0.5f};  // 0: no layer in front
+    std::vector<float> foliage, mask, layers;
+    for (int x = 0; x < n; ++x) {
+        foliage.insert(foliage.end(), {kept.r, kept.g, kept.b, keptAlpha[x]});
+        mask.insert(mask.end(), {0.5f, 0.0f, 0.0f, 1.0f});
+        const float w = frontWeight[x];
+        layers.insert(layers.end(), {x == 4 ? nan : front.r * w, front.g * w, front.b * w, w});
+    }
+    TextureDesc t;
+    t.name = "inputs";
+    t.width = n;
+    t.height = 1;
+    t.format = Format::RGBA32F;
+    t.usage = UsageSampled;
+    auto make = [&](const std::vector<float>& texels) {
+        TextureData data;
+        data.levels.push_back(std::as_bytes(std::span(texels)));
+        return b->createTexture(t, &data);
+    };
+    CoverageCompositeParams params{make(foliage), make(mask), {}, CoverageModel::EqualLayers};
+    params.frontLayers = make(layers);
+    t.usage = UsageSampled | UsageRenderTarget;
+    const TextureHandle target = b->createTexture(t);
+    for (bool blur : {false, true}) {
+        drawFullscreenInto(*b, b->createProgram(blur ? coverageBlurCompositeProgram() : coverageCompositeProgram()),
+                           params, target);
+        const Readback r = b->readback(target);
+        const glm::vec3 expected[n] = {kept * 0.75f + front * 0.25f,
+                                       kept,
+                                       front,
+                                       kept,
+                                       {0.0f, kept.g * 0.5f + front.g * 0.5f, kept.b * 0.5f + front.b * 0.5f}};
+        for (int x = 0; x < n; ++x)
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(r.values[std::size_t(x) * 4 + c], expected[x][c], 1e-6f)
+                    << (blur ? "blurred" : "plain") << " composite, pixel " << x << " channel " << c;
+    }
+}
+
 struct NullSink final : soft::FragmentSink {
     void add(int, int, const soft::CapturedFragment&) override {}
 };

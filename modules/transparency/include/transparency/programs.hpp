@@ -50,11 +50,16 @@ enum class CoverageModel : std::uint8_t {
 //   out = (foliage.rgb, coverage(mask.r, ADD)), ADD = maskAdd.r when given, else mask.a,
 // coverage clamped to [0,1] (NaN -> 0), non-finite foliage components as 0; the pipeline
 // blends it SRC_ALPHA / INV_SRC_ALPHA onto the opaque colour.
+// With frontLayers, (sum a * C, sum a) of the layers drawn in front of the leaf the colour pass
+// kept (all of them where it kept none), the colour is the kept leaf's over their mean by the
+// kept leaf's alpha k = clamp(foliage.a, 0, 1) (soft: program_kernels.hpp withFrontLayers):
+//   colour * k + (front.rgb / front.a) * (1 - k), or the colour alone where front.a is not > 0.
 #define TRANSPARENCY_COVERAGE_COMPOSITE_PARAMS(UNIFORM, DIRECTION, TEXTURE) \
     TEXTURE(foliage, Texel, FullSize, Required)                             \
     TEXTURE(mask, Texel, FullSize, Required)                                \
     TEXTURE(maskAdd, Texel, FullSize, Optional)                             \
-    UNIFORM(CoverageModel, model, CoverageModel::EqualLayers)
+    UNIFORM(CoverageModel, model, CoverageModel::EqualLayers)               \
+    TEXTURE(frontLayers, Texel, FullSize, Optional)
 ENGINE_PARAM_BLOCK(CoverageCompositeParams, TRANSPARENCY_COVERAGE_COMPOSITE_PARAMS);
 
 // CoverageBlurComposite (SSAM+'s composite by default): CoverageComposite with the same
