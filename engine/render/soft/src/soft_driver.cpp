@@ -20,6 +20,7 @@
 #include "engine/render/standard_programs.hpp"
 #include "engine/render/validation.hpp"
 #include "engine/render/vertex.hpp"
+#include "engine/render/kernel/detail/depth_block_bounds.hpp"
 #include "engine/render/kernel/detail/draw_state.hpp"
 #include "engine/render/pixel_codec.hpp"
 #include "engine/render/kernel/sampler.hpp"
@@ -401,6 +402,7 @@ private:
         }
         geometryStage_.runGeometry(arena_, grid);
         stats_.draws += draws_.size();
+        boundDepthBlocks(drawStates);
 
         // Merging the chunks' bins in submission order keeps each tile's list ordered.
         bins_.resize(std::size_t(tilesX) * tilesY);
@@ -411,7 +413,7 @@ private:
             for (const BinEntry& e : chunk.bins) bins_[e.tile].push_back(&chunk.triangles[e.triangle]);
         }
 
-        std::atomic<std::uint64_t> shaded{0}, touched{0};
+        std::atomic<std::uint64_t> shaded{0}, touched{0}, skipped{0};
         arena_.execute([&] {
             parallelFor(std::size_t(0), bins_.size(), [&](std::size_t tileIndex) {
                 if (bins_[tileIndex].empty()) return;
@@ -422,14 +424,40 @@ private:
                 rasterizeTile(tile, bins_[tileIndex], drawStates, counters);
                 shaded += counters.pixelsShaded;
                 touched += counters.pixelsTouched;
+                skipped += counters.depthBlocksSkipped;
             });
         });
+        stats_.depthBlocksSkipped += skipped;
         stats_.pixelsShaded += shaded;
         stats_.pixelsTouched += touched;
         passTouched_ += touched;
         geometryStage_.endPass();
         forget.done = true;
         if (options_.debugChecks) checkNonFinite();
+    }
+
+    // SoftOptions::depthBlockBounds: where every draw of the pass tests the pass's single-sampled
+    // depth with an ordering function and none writes it or captures, the depth's block bounds
+    // (depth_block_bounds.hpp), built over both threads, for the rasterizer to skip by.
+    void boundDepthBlocks(std::vector<DrawState>& drawStates) {
+        if (!options_.depthBlockBounds || drawStates.empty() || passSamples_ != 1) return;
+        const SoftTexture* depth = drawStates.front().depthTarget;
+        if (!depth || depth->desc.format != Format::D32F || depth->desc.samples != 1) return;
+        for (const DrawState& s : drawStates)
+            if (!s.depthTest || s.depthWrite || s.capture || s.depthTarget != depth ||
+                (s.depthFunc != CompareFunc::Less && s.depthFunc != CompareFunc::LessEqual &&
+                 s.depthFunc != CompareFunc::Greater && s.depthFunc != CompareFunc::GreaterEqual))
+                return;
+        const int width = depth->desc.width, height = depth->desc.height;
+        depthBounds_.resize(width, height);
+        const std::byte* texels = depth->levels[0].texels.data();
+        const std::size_t rowBytes = std::size_t(depth->levels[0].width) * depth->bytesPerSample;
+        arena_.execute([&] {
+            parallelForChunks(0, depthBounds_.blockRows(), 1, [&](int firstRow, int endRow) {
+                depthBounds_.buildRows(texels, rowBytes, width, height, firstRow, endRow);
+            });
+        });
+        for (DrawState& s : drawStates) s.depthBounds = &depthBounds_;
     }
 
     void checkNonFinite() {
@@ -465,6 +493,7 @@ private:
         const NativeTextures* natives = nullptr;
     } textureLookup_{textures_};
     std::optional<DriverPass> pass_;
+    DepthBlockBounds depthBounds_;        // the running pass's, when boundDepthBlocks built them
     std::vector<NativeId> colorTargets_;  // the pass's colour attachments, packed
     int passWidth_ = 0, passHeight_ = 0, passSamples_ = 1;
     Clock::time_point passStart_;

@@ -28,6 +28,10 @@ struct SoftOptions {
     // that draw's set-up triangles and bins instead of making them again (SSAM's colour pass
     // after its mask pass). Off only to measure what it saves; images are the same bits.
     bool reuseGeometry = true;
+    // In a pass whose draws test depth and none writes it, a triangle's 8x8 block that lies behind
+    // every depth stored there is skipped before its rows (kernel/detail/depth_block_bounds.hpp).
+    // Off only to measure what it saves; images are the same bits.
+    bool depthBlockBounds = true;
 };
 
 // Work counters since creation, for tests and the benchmark (what was skipped is visible).
@@ -40,6 +44,7 @@ struct SoftStats {
     std::uint64_t trianglesReused = 0;      // of trianglesIn: set up in the pass before (reuseGeometry)
     std::uint64_t pixelsShaded = 0;         // program invocations
     std::uint64_t pixelsTouched = 0;        // pixels for which any sample passed coverage + depth
+    std::uint64_t depthBlocksSkipped = 0;   // a triangle's 8x8 blocks behind every stored depth (depthBlockBounds)
     std::uint64_t nonFiniteStores = 0;      // NaN/Inf written to float targets (debugChecks only)
 };
 

@@ -13,7 +13,8 @@
 
 namespace engine::render::soft {
 
-class BoundProgram;  // program_kernel.hpp
+class BoundProgram;      // program_kernel.hpp
+class DepthBlockBounds;  // depth_block_bounds.hpp
 
 // Standard sample positions (D3D11 / Vulkan standard locations), in 1/16 pixel from the
 // pixel centre. GL leaves them to the implementation; README "Differential tolerances".
@@ -41,6 +42,8 @@ struct DrawState {
     bool shade = true;                // false: depth-only, the program is never run
     FragmentSink* capture = nullptr;  // set: fragments go here, nothing is written (FragmentCapture::setFragmentSink)
     SimdIsa isa = SimdIsa::Sse2;      // the wide kernels' instruction set (SoftOptions::simd)
+    // Set where no draw of the pass writes the depth it tests (SoftOptions::depthBlockBounds).
+    const DepthBlockBounds* depthBounds = nullptr;
 };
 
 }  // namespace engine::render::soft

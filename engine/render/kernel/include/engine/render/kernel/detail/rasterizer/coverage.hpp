@@ -4,6 +4,7 @@
 // tile a triangle covers. 8x8 blocks are trivially rejected or accepted from the edge
 // functions at their corners; a partial block's edge functions are stepped exactly, in
 // integers, from pixel to pixel.
+#include "engine/render/kernel/detail/depth_block_bounds.hpp"
 #include "engine/render/kernel/detail/rasterizer/rasterizer_class.hpp"
 
 namespace engine::render::soft {
@@ -31,6 +32,11 @@ inline void TriangleRasterizer<Program>::rasterizeSingle(const SetupTriangle& t,
                 full = full && minE >= 0;
             }
             if (reject) continue;
+            if (draw_.depthBounds &&
+                draw_.depthBounds->behind(t.depth, t.originX, t.originY, draw_.depthFunc, px0, py0, px1, py1)) {
+                ++counters_.depthBlocksSkipped;  // every pixel would fail the depth test
+                continue;
+            }
             const int n = px1 - px0 + 1, shift = px0 - bx;  // mask bit i: pixel bx + i
             if (full) {
                 const std::uint32_t rowMask = ((1u << n) - 1u) << shift;

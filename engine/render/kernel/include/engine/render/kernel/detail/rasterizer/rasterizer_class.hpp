@@ -17,6 +17,7 @@ namespace engine::render::soft {
 struct TileCounters {
     std::uint64_t pixelsShaded = 0;
     std::uint64_t pixelsTouched = 0;
+    std::uint64_t depthBlocksSkipped = 0;  // DrawState::depthBounds
 };
 
 namespace raster {
