@@ -5,7 +5,6 @@
 // and wants the same bits, and checks from SoftStats::depthBlocksSkipped that blocks were (or
 // were not) skipped, so that neither a wrong skip nor a skip that never runs can pass.
 #include <cstring>
-#include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -17,20 +16,8 @@ namespace {
 constexpr int kWidth = 96, kHeight = 64;
 constexpr std::uint32_t kTriangles = 1500;
 
-// Random triangles in front of the camera, each vertex its own colour.
 std::vector<render::Vertex> randomTriangles(std::uint32_t seed) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f), side(-1.2f, 1.2f);
-    std::vector<render::Vertex> v(kTriangles * 3);
-    for (std::size_t t = 0; t < kTriangles; ++t) {
-        const glm::vec3 centre(side(random), side(random), -2.0f - 3.0f * unit(random));
-        for (std::size_t k = 0; k < 3; ++k) {
-            render::Vertex& p = v[t * 3 + k];
-            p.position = centre + glm::vec3(side(random), side(random), side(random)) * 0.2f;
-            p.color = {unit(random), unit(random), unit(random), 1.0f};
-        }
-    }
-    return v;
+    return soft::randomTriangles(kTriangles, seed, 0.2f);
 }
 
 struct Result {

@@ -6,7 +6,6 @@
 // so that neither a stale reuse nor a reuse that never runs can pass.
 #include <cstring>
 #include <functional>
-#include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -18,21 +17,8 @@ namespace {
 constexpr int kWidth = 96, kHeight = 64;
 constexpr std::uint32_t kTriangles = 2500;  // more than one 2048-triangle chunk
 
-// Random triangles in front of the camera, each vertex its own colour, so the colour planes
-// of a wrong set-up would show in the float target.
 std::vector<render::Vertex> randomTriangles(std::uint32_t seed) {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f), side(-1.2f, 1.2f);
-    std::vector<render::Vertex> v(kTriangles * 3);
-    for (std::size_t t = 0; t < kTriangles; ++t) {
-        const glm::vec3 centre(side(random), side(random), -2.0f - 3.0f * unit(random));
-        for (std::size_t k = 0; k < 3; ++k) {
-            render::Vertex& p = v[t * 3 + k];
-            p.position = centre + glm::vec3(side(random), side(random), side(random)) * 0.15f;
-            p.color = {unit(random), unit(random), unit(random), 1.0f};
-        }
-    }
-    return v;
+    return soft::randomTriangles(kTriangles, seed, 0.15f);
 }
 
 // What the passes draw; each test changes one thing between the first pass and the second.

@@ -2,6 +2,7 @@
 #pragma once
 // Small helpers shared by the soft backend's unit tests.
 #include <cstdint>
+#include <random>
 #include <span>
 #include <string>
 #include <vector>
@@ -48,6 +49,24 @@ inline render::BufferHandle makeVertices(render::Backend& gfx, const std::vector
 inline render::BufferHandle makeIndices(render::Backend& gfx, const std::vector<std::uint32_t>& v,
                                         const std::string& name = "indices") {
     return gfx.createBuffer({name, render::BufferKind::Index, v.size() * sizeof(std::uint32_t)}, bytesOf(v));
+}
+
+// `count` random triangles in front of a camera at the origin looking down -z: centres at x, y in
+// [-1.2, 1.2], z in [-5, -2], vertices within `size` of the centre on each axis, each vertex its own
+// colour (so the colour planes of a wrong set-up would show in a float target).
+inline std::vector<render::Vertex> randomTriangles(std::uint32_t count, std::uint32_t seed, float size) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f), side(-1.2f, 1.2f);
+    std::vector<render::Vertex> v(std::size_t(count) * 3);
+    for (std::size_t t = 0; t < count; ++t) {
+        const glm::vec3 centre(side(random), side(random), -2.0f - 3.0f * unit(random));
+        for (std::size_t k = 0; k < 3; ++k) {
+            render::Vertex& p = v[t * 3 + k];
+            p.position = centre + glm::vec3(side(random), side(random), side(random)) * size;
+            p.color = {unit(random), unit(random), unit(random), 1.0f};
+        }
+    }
+    return v;
 }
 
 // The full target as two triangles (NDC), at depth z, colour white.
