@@ -31,8 +31,7 @@ class DepthBlockBounds {
 public:
     static constexpr int kBlock = 8;  // the rasterizer's block (raster_support.hpp kBlockSize)
 
-    // The bounds of `depth` (width x height floats, `rowBytes` apart), block rows [rowBegin,
-    // rowEnd) of a grid sized by resize(): each block row may be built by another thread.
+    // The block grid of a width x height target.
     void resize(int width, int height) {
         blocksX_ = (width + kBlock - 1) / kBlock;
         blocksY_ = (height + kBlock - 1) / kBlock;
@@ -40,6 +39,8 @@ public:
         farthest_.resize(nearest_.size());
     }
     int blockRows() const { return blocksY_; }
+    // The bounds of `depth` (width x height floats, `rowBytes` apart) for block rows [rowBegin,
+    // rowEnd) of the grid resize() made: each block row may be built by another thread.
     void buildRows(const std::byte* depth, std::size_t rowBytes, int width, int height, int rowBegin, int rowEnd) {
         for (int by = rowBegin; by < rowEnd; ++by) {
             const int y0 = by * kBlock, y1 = std::min(height, y0 + kBlock);
