@@ -61,8 +61,6 @@ public:
     // block. Only the ordering functions skip; any other answers false.
     bool behind(const Plane& depth, float originX, float originY, CompareFunc func, int px0, int py0, int px1,
                 int py1) const {
-        const bool less = func == CompareFunc::Less || func == CompareFunc::LessEqual;
-        if (!less && func != CompareFunc::Greater && func != CompareFunc::GreaterEqual) return false;
         if (!(std::isfinite(depth.value) && std::isfinite(depth.dx) && std::isfinite(depth.dy))) return false;
         // As depthRow: z = (value + dx * fx) + dy * fy, fx = (px + 0.5) - originX, clamped to [0, 1].
         const float fx[2] = {(float(px0) + 0.5f) - originX, (float(px1) + 0.5f) - originX};
@@ -79,6 +77,7 @@ public:
                                 std::fabs(depth.dy) * std::max(std::fabs(fy[0]), std::fabs(fy[1]));
         const float margin = 1e-6f * (1.0f + magnitude);
         const std::size_t i = std::size_t(py0 / kBlock) * blocksX_ + std::size_t(px0 / kBlock);
+        // std::clamp keeps a NaN (clamp01 would make it 0), and a NaN compares false: no skip.
         const float nearZ = std::clamp(lo - margin, 0.0f, 1.0f), farZ = std::clamp(hi + margin, 0.0f, 1.0f);
         switch (func) {
             case CompareFunc::Less: return nearZ >= farthest_[i];

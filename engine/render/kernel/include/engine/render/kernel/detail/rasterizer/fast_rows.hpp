@@ -13,8 +13,8 @@ namespace {  // as raster_support.hpp's
 // The composite programs' row (compositeRow_): shade() and the composite blend, per live
 // pixel the same operations, with the 8-bit texels decoded straight from the tables (or the
 // colours the program's compositeColorRow gives); factorAt(px, py) is the program's alpha, in
-// [0, 1] (both programs clamp it). The foliage colour is finite (8-bit, or a weighted mean of
-// 8-bit values), so shade()'s non-finite check changes nothing; every value is in [0, 1], so
+// [0, 1] (both programs clamp it). The foliage colour is finite and in [0, 1] (8-bit, or the
+// program's compositeColorRow, clamped as blend() would), so shade()'s non-finite check and
 // blend()'s clamps change nothing, and the alpha written is the stored one (blend * 0 + d = d,
 // encoded back to the same byte). Where the factor is 0 the colour is c * 0 + d * 1 = d, the
 // decoded stored byte: nothing to write when bytes round-trip (bytesRoundTrip), and most of the

@@ -37,9 +37,10 @@ constexpr bool hasCompositeHooks() {
 
 // Optionally, a composite program whose colour is not compositeColor()'s texel at the pixel but
 // computed from that texture (e.g. filtered over its neighbours) gives it a block row at a time:
-// compositeColorRow(bx, py, live, out) puts shade()'s colour of pixel (bx + i, py) into out[i]
-// for each lane i set in `live` and returns true, or returns false when the colour is the texel
-// (compositeRow then reads it from the bytes).
+// compositeColorRow(bx, py, live, out) puts shade()'s colour of pixel (bx + i, py), clamped to
+// [0, 1] as the 8-bit target's blend would clamp it, into out[i] for each lane i set in `live`
+// and returns true, or returns false when the colour is the texel (compositeRow then reads it
+// from the bytes).
 template <typename Program>
 constexpr bool hasCompositeColorRow() {
     return requires(const Program& p, glm::vec3* out) {
