@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/render/pixel_codec.hpp"
+#include "engine/render/kernel/detail/texture_lod.hpp"
 #include "engine/render/kernel/detail/texel_addressing.hpp"
 
 namespace engine::render::soft {
@@ -61,12 +62,13 @@ glm::vec4 sampleTexture(const SoftTexture& t, const SamplerState& s, glm::vec2 u
         case Filter::Trilinear: break;
     }
     const glm::vec2 size(t.levels[0].width, t.levels[0].height);
-    const float rho = std::max(glm::length(d.dx * size), glm::length(d.dy * size));
+    const glm::vec2 sx = d.dx * size, sy = d.dy * size;
+    const float rhoSquared = std::max(glm::dot(sx, sx), glm::dot(sy, sy));
     const int last = static_cast<int>(t.levels.size()) - 1;
-    // Magnification without the log: log2f(rho) > 0 exactly when rho > 1 (checked for
-    // every float), NaN included (both tests false).
-    if (!(rho > 1.0f) || last == 0) return bilinear<Channels>(t, s, 0, uv);
-    const float lambda = std::log2(rho);
+    // Magnification without the log (textureLambda takes rho^2 > 1 only), NaN included (both
+    // tests false).
+    if (!(rhoSquared > 1.0f) || last == 0) return bilinear<Channels>(t, s, 0, uv);
+    const float lambda = textureLambda(rhoSquared);
     if (lambda >= static_cast<float>(last)) return bilinear<Channels>(t, s, last, uv);
     const int lo = static_cast<int>(lambda);
     return glm::mix(bilinear<Channels>(t, s, lo, uv), bilinear<Channels>(t, s, lo + 1, uv), lambda - lo);

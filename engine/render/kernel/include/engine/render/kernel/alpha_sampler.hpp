@@ -8,7 +8,7 @@
 // lookup4 + alpha4 do four fragments at once in SSE2, and rgba4 gives sampleTexture<All>'s
 // four channels the same way (the alpha-tested colour pass, after its alpha test). The
 // arithmetic is the general sampler's, operation for operation (same addressing, floor,
-// mix = x * (1 - a) + y * a, log2f, decoded values), so the results have the same bits;
+// mix = x * (1 - a) + y * a, textureLambda, decoded values), so the results have the same bits;
 // SIMD lanes do the same IEEE single-precision operations as scalar code (x86-64 SSE, no
 // FMA contraction).
 #include <array>
@@ -25,6 +25,7 @@
 #include "engine/render/pixel_codec.hpp"
 #include "sampler.hpp"
 #include "soft_texture.hpp"
+#include "detail/texture_lod.hpp"
 #include "detail/texel_addressing.hpp"
 
 namespace engine::render::soft {
@@ -80,12 +81,12 @@ public:
             case Filter::Bilinear: return bilinear(0, uv);
             case Filter::Trilinear: break;
         }
-        // glm::length(v) = sqrt(v.x * v.x + v.y * v.y); std::max(a, b) = a < b ? b : a.
+        // glm::dot(v, v) = v.x * v.x + v.y * v.y; std::max(a, b) = a < b ? b : a.
         const glm::vec2 sx = d.dx * size0_, sy = d.dy * size0_;
-        const float lx = std::sqrt(sx.x * sx.x + sx.y * sx.y), ly = std::sqrt(sy.x * sy.x + sy.y * sy.y);
-        const float rho = lx < ly ? ly : lx;
-        if (!(rho > 1.0f) || last_ == 0) return bilinear(0, uv);
-        const float lambda = std::log2(rho);
+        const float lx = sx.x * sx.x + sx.y * sx.y, ly = sy.x * sy.x + sy.y * sy.y;
+        const float rhoSquared = lx < ly ? ly : lx;
+        if (!(rhoSquared > 1.0f) || last_ == 0) return bilinear(0, uv);
+        const float lambda = textureLambda(rhoSquared);
         if (lambda >= static_cast<float>(last_)) return bilinear(last_, uv);
         const int lo = static_cast<int>(lambda);
         const float t = lambda - lo;
@@ -103,7 +104,7 @@ public:
                                            const float* dudy, const float* dvdy, std::uint32_t lanes) const;
 
     // sample() of the 4 lanes. Each SIMD lane does the scalar path's IEEE operations in the
-    // same order; only the level choice (log2f) and the texel reads stay scalar.
+    // same order; only the texel reads stay scalar.
     [[gnu::always_inline]] __m128 alpha4(const Lookup4& lookup) const;
     // sampleTexture<SampledChannels::All> of the lanes set in `lanes`, channel c of lane i
     // into out[i][c]: the sRGB colour decoded (byteTables().srgb) as the general sampler's
@@ -172,22 +173,18 @@ private:
         const __m128 w0 = _mm_set1_ps(size0_.x), h0 = _mm_set1_ps(size0_.y);
         const __m128 sxx = _mm_mul_ps(_mm_loadu_ps(dudx), w0), sxy = _mm_mul_ps(_mm_loadu_ps(dvdx), h0);
         const __m128 syx = _mm_mul_ps(_mm_loadu_ps(dudy), w0), syy = _mm_mul_ps(_mm_loadu_ps(dvdy), h0);
-        const __m128 lx = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(sxx, sxx), _mm_mul_ps(sxy, sxy)));
-        const __m128 ly = _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(syx, syx), _mm_mul_ps(syy, syy)));
+        const __m128 lx = _mm_add_ps(_mm_mul_ps(sxx, sxx), _mm_mul_ps(sxy, sxy));
+        const __m128 ly = _mm_add_ps(_mm_mul_ps(syx, syx), _mm_mul_ps(syy, syy));
         const __m128 less = _mm_cmplt_ps(lx, ly);  // lx < ly ? ly : lx
-        const __m128 rho = _mm_or_ps(_mm_and_ps(less, ly), _mm_andnot_ps(less, lx));
-        // The lanes that minify (rho > 1, false for NaN) take log2f, the one scalar step.
-        const std::uint32_t minified = lanes & std::uint32_t(_mm_movemask_ps(_mm_cmpgt_ps(rho, _mm_set1_ps(1.0f))));
+        const __m128 rhoSquared = _mm_or_ps(_mm_and_ps(less, ly), _mm_andnot_ps(less, lx));
+        // The lanes that minify (rho^2 > 1, false for NaN) take lambda = textureLambda(rho^2);
+        // the other lanes of l are masked off below.
+        const std::uint32_t minified =
+            lanes & std::uint32_t(_mm_movemask_ps(_mm_cmpgt_ps(rhoSquared, _mm_set1_ps(1.0f))));
         if (!minified) return f;
-        alignas(16) float r[4], lambda[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-        _mm_store_ps(r, rho);
-        for (std::uint32_t bits = minified; bits; bits &= bits - 1) {
-            const int i = __builtin_ctz(bits);
-            lambda[i] = std::log2(r[i]);
-        }
         // Per lane: lambda >= last reads the last level alone; else levels lo and lo + 1 mixed
         // by t = lambda - lo, lo = int(lambda) (truncation, lambda > 0).
-        const __m128 l = _mm_load_ps(lambda);
+        const __m128 l = textureLambda4(rhoSquared);
         const __m128i bits = _mm_setr_epi32(1, 2, 4, 8);
         const __m128i inMinified = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(int(minified)), bits), bits);
         const __m128i beyond = _mm_and_si128(inMinified, _mm_castps_si128(_mm_cmpge_ps(l, _mm_set1_ps(float(last_)))));
