@@ -16,7 +16,7 @@ namespace {
 std::array<glm::vec4, 8> transformedCorners(const Aabb& box, const glm::mat4& m) {
     const glm::vec4 x[2] = {m[0] * box.min.x, m[0] * box.max.x};
     const glm::vec4 y[2] = {m[1] * box.min.y, m[1] * box.max.y};
-    const glm::vec4 w = m[3] * 1.0f;
+    const glm::vec4 w = m[3] * 1.0f;  // glm multiplies by w = 1 too (a NaN comes out as it would there)
     const glm::vec4 zw[2] = {m[2] * box.min.z + w, m[2] * box.max.z + w};
     const glm::vec4 xy[4] = {x[0] + y[0], x[1] + y[0], x[0] + y[1], x[1] + y[1]};
     std::array<glm::vec4, 8> corners;
