@@ -4,6 +4,11 @@
 #include <cmath>
 #include <cstdint>
 
+#if defined(__SSE2__) && !defined(SOFT_RASTER_SCALAR)  // as raster_support.hpp
+#include <emmintrin.h>
+#define SSAM_COMPOSITE_SSE2 1
+#endif
+
 #include <glm/glm.hpp>
 
 #include "engine/render/kernel/covered_tent.hpp"
@@ -64,10 +69,7 @@ struct CompositeKernel {
         if (!params.colorBlur) return false;
         engine::render::soft::CoveredTentWindow<kRow> window;
         window.load(*foliage, bx, py, kRow);
-        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
-            const int i = __builtin_ctz(bits);
-            out[i] = window.filtered(i);
-        }
+        window.filteredRow(live, out);
         return true;
     }
     [[gnu::always_inline]] float compositeFactor(int x, int y) const {
@@ -78,6 +80,35 @@ struct CompositeKernel {
         blend = blend > 0.0f ? (blend < 1.0f ? blend : 1.0f) : 0.0f;
         if (params.squareMask) blend *= blend;
         return blend;
+    }
+    // compositeFactor of the block row's 8 pixels from (bx, py) at once (the rasterizer's
+    // compositeFactorRow hook), for the usual mask: RGBA8, MAX in red and ADD in alpha, the row
+    // inside it. The same operations lane by lane: the bytes over 255 as the unorm table holds
+    // them (i / 255.0f, correctly rounded either way), the lerp, the clamp (maxps(b, 0) is 0 for
+    // b <= 0 and for NaN, then minps(., 1)) and the square. Reading the factors pixel by pixel
+    // took a quarter of the pass at 720p.
+    bool compositeFactorRow(int bx, int py, float* out) const {
+#if SSAM_COMPOSITE_SSE2
+        using engine::render::Format;
+        if (maskAdd || mask->desc.format != Format::RGBA8_UNORM || mask->desc.samples != 1 ||
+            bx + kRow > mask->desc.width)
+            return false;
+        const std::byte* row = mask->texel(0, bx, py);
+        const __m128 scale = _mm_set1_ps(255.0f), lerp = _mm_set1_ps(params.maskLerp);
+        for (int h = 0; h < kRow / 4; ++h) {
+            const __m128i texels = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 16 * h));
+            const __m128 maxMask = _mm_div_ps(_mm_cvtepi32_ps(_mm_and_si128(texels, _mm_set1_epi32(0xFF))), scale);
+            const __m128 addMask = _mm_div_ps(_mm_cvtepi32_ps(_mm_srli_epi32(texels, 24)), scale);
+            __m128 blend = _mm_add_ps(maxMask, _mm_mul_ps(_mm_sub_ps(addMask, maxMask), lerp));
+            blend = _mm_min_ps(_mm_max_ps(blend, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+            if (params.squareMask) blend = _mm_mul_ps(blend, blend);
+            _mm_storeu_ps(out + 4 * h, blend);
+        }
+        return true;
+#else
+        (void)bx, (void)py, (void)out;
+        return false;
+#endif
     }
 };
 

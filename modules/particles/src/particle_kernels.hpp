@@ -110,6 +110,10 @@ struct LayerCompositeKernel {
     // decoding them; the rest take shade(). The blend then skips those zeros (the soft
     // backend's zeroSourceKeeps).
     void shadeRow(engine::render::soft::SimdIsa, int bx, int py, std::uint32_t live, glm::vec4* out) const {
+        if (layerZeroUnderRow(bx, py)) {  // the whole row at once, where the layer is empty
+            for (std::uint32_t bits = live; bits; bits &= bits - 1) out[__builtin_ctz(bits)] = glm::vec4(0.0f);
+            return;
+        }
         soft::Fragment f;
         f.y = py;
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
@@ -127,6 +131,34 @@ struct LayerCompositeKernel {
     }
 
 private:
+    // Whether the layer is RGBA16F and every texel shade() reads for the 8 pixels from (bx, y)
+    // has all its bits zero (layerZeroAround of each): the texel columns those pixels read are
+    // one run (they do not decrease with x), and so are the rows.
+    bool layerZeroUnderRow(int bx, int y) const {
+        if (layer->desc.format != engine::render::Format::RGBA16F) return false;
+        const int lw = layer->desc.width, lh = layer->desc.height;
+        const int scale = std::clamp(params.layerScale, 1, 4);
+        int x0, x1, y0, y1;
+        if (scale > 1 && depth) {  // shade()'s candidates: (x - 1) / 2 and the next, clamped
+            x0 = std::clamp((bx - 1) / 2, 0, lw - 1);
+            x1 = std::min(std::clamp((bx + 6) / 2, 0, lw - 1) + 1, lw - 1);
+            y0 = std::clamp((y - 1) / 2, 0, lh - 1);
+            y1 = std::min(y0 + 1, lh - 1);
+        } else {
+            x0 = std::min(bx / scale, lw - 1), x1 = std::min((bx + 7) / scale, lw - 1);
+            y0 = y1 = std::min(y / scale, lh - 1);
+        }
+        for (int ly = y0; ly <= y1; ++ly) {
+            std::uint64_t bits = 0;
+            for (int lx = x0; lx <= x1; ++lx) {
+                std::uint64_t stored;
+                std::memcpy(&stored, layer->texel(0, lx, ly), sizeof stored);
+                bits |= stored;
+            }
+            if (bits) return false;
+        }
+        return true;
+    }
     // Whether the layer is RGBA16F and every texel shade() reads for pixel (x, y) has all its
     // bits zero. Other formats answer false (a format without alpha loads alpha 1).
     bool layerZeroAround(int x, int y) const {

@@ -175,7 +175,7 @@ struct CoverageBlurCompositeKernel : CoverageCompositeInputs {
     glm::vec4 shade(const soft::Fragment& f) const {
         Window window;
         window.load(*foliage, f.x, f.y, 1);
-        return blurred(window, 0, f.x, f.y);
+        return blurred(window, window.filtered(0), 0, f.x, f.y);
     }
 
     // The rasterizer's row hook (program_kernel.hpp): shade() of the live pixels of a block row,
@@ -185,9 +185,11 @@ struct CoverageBlurCompositeKernel : CoverageCompositeInputs {
     void shadeRow(soft::SimdIsa, int bx, int py, std::uint32_t live, glm::vec4* out) const {
         Window window;
         window.load(*foliage, bx, py, kRow);
+        glm::vec3 filtered[kRow];
+        window.filteredRow(live, filtered);
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
             const int i = __builtin_ctz(bits);
-            out[i] = blurred(window, i, bx + i, py);
+            out[i] = blurred(window, filtered[i], i, bx + i, py);
         }
     }
     // The composite fast path's colours (raster::hasCompositeColorRow): shadeRow's, without the
@@ -196,11 +198,12 @@ struct CoverageBlurCompositeKernel : CoverageCompositeInputs {
     bool compositeColorRow(int bx, int py, std::uint32_t live, glm::vec3* out) const {
         Window window;
         window.load(*foliage, bx, py, kRow);
-        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
-            const int i = __builtin_ctz(bits);
-            out[i] = frontLayers ? compositeColorAt(window.filtered(i), window.texel[1][i + 1].a, bx + i, py)
-                                 : window.filtered(i);
-        }
+        window.filteredRow(live, out);
+        if (frontLayers)
+            for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+                const int i = __builtin_ctz(bits);
+                out[i] = compositeColorAt(out[i], window.texel(1, i + 1).a, bx + i, py);
+            }
         return true;
     }
 
@@ -209,11 +212,12 @@ private:
     using Window = soft::CoveredTentWindow<kRow>;
 
     // Pixel (x, y), column `i` of the window: the covered neighbours' colour, weighted 1-2-1 by
-    // 1-2-1 and summed row by row (the GLSL's order), and SSAM+'s coverage.
-    glm::vec4 blurred(const Window& w, int i, int x, int y) const {
+    // 1-2-1 and summed row by row (the GLSL's order: `filtered`, the window's), and SSAM+'s
+    // coverage.
+    glm::vec4 blurred(const Window& w, glm::vec3 filtered, int i, int x, int y) const {
         const glm::vec4 m = soft::fetchTexel(*mask, x, y);
         const float addMask = maskAdd ? soft::fetchTexel(*maskAdd, x, y).r : m.a;
-        return {colorAt(w.filtered(i), w.texel[1][i + 1].a, x, y), layerCoverage(model, m.r, addMask)};
+        return {colorAt(filtered, w.texel(1, i + 1).a, x, y), layerCoverage(model, m.r, addMask)};
     }
 };
 

@@ -24,6 +24,8 @@
 //   SsamMaskRgba16f  SsamMask onto one RGBA16F target (maskPrecision RGBA16F)
 //   SsamComposite SSAM's composite (§3.5.4): a full-screen RGBA8 mask (no foliage over 40%
 //                 of it) and sRGB foliage colour blended onto an sRGB target
+//   SsamCompositeBlur  SsamComposite as the measured preset draws it: maskLerp 0.9, the
+//                 foliage colour blurred over its covered neighbours (colorBlur)
 //   SsamPlusComposite  SSAM+'s composite (CoverageComposite, equal layers: a pow() per
 //                 partly covered pixel) from the same masks as two R16F targets, the ADD
 //                 one unsaturated (up to 4)
@@ -372,6 +374,36 @@ void BM_SsamComposite(benchmark::State& state) {
     runComposite(state, *backend, target, ssam::compositeProgram(), params, "ssam composite");
 }
 
+// SsamComposite as the measured preset draws it (ssam/docs/knobs.md): maskLerp 0.9 and the
+// foliage colour blurred over its covered neighbours, the foliage's alpha that of the leaves
+// (0 where the mask is, soft at their edges).
+void BM_SsamCompositeBlur(benchmark::State& state) {
+    auto backend = makeBackend(state);
+    render::Backend& b = *backend;
+    const auto target = renderTarget(b, render::Format::RGBA8_SRGB);
+    auto leafAt = [](int x, int y) {
+        const float leaf = std::sin(float(x) * 0.11f) * std::sin(float(y) * 0.13f);
+        return x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + leaf, 0.0f, 1.0f);
+    };
+    const auto mask = screenTexture(b, "mask", render::Format::RGBA8_UNORM, [&](int x, int y, std::uint8_t* t) {
+        const float m = leafAt(x, y);
+        t[0] = t[1] = t[2] = std::uint8_t(255.0f * m);
+        t[3] = std::uint8_t(std::min(255.0f, 400.0f * m));
+    });
+    const auto foliage = screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [&](int x, int y, std::uint8_t* t) {
+        t[0] = std::uint8_t(40 + x % 64);
+        t[1] = std::uint8_t(120 + y % 96);
+        t[2] = std::uint8_t(30 + (x ^ y) % 32);
+        t[3] = std::uint8_t(std::min(255.0f, 510.0f * leafAt(x, y)));
+    });
+    ssam::CompositeParams params;
+    params.foliage = foliage;
+    params.mask = mask;
+    params.maskLerp = 0.9f;
+    params.colorBlur = true;
+    runComposite(state, *backend, target, ssam::compositeProgram(), params, "ssam composite (blur)");
+}
+
 // A screen-sized R16F texture holding value(x, y).
 template <typename Value>
 render::TextureHandle screenHalfTexture(render::Backend& b, const char* name, Value&& value) {
@@ -523,6 +555,7 @@ SOFT_BENCH(BM_SsamColorFar);
 SOFT_BENCH(BM_SsamMaskHalf);
 SOFT_BENCH(BM_SsamMaskRgba16f);
 SOFT_BENCH(BM_SsamComposite);
+SOFT_BENCH(BM_SsamCompositeBlur);
 SOFT_BENCH(BM_SsamPlusComposite);
 SOFT_BENCH(BM_SmallTris);
 SOFT_BENCH(BM_SetupCulled);

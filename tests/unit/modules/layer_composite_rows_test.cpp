@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The particle layer composite's row hook (LayerCompositeKernel::shadeRow, particle_kernels.hpp)
 // against the per-pixel shade() it stands for, bit for bit: half-resolution RGBA16F layers that
-// are mostly empty (all-zero texels, the case the hook answers without decoding) with puffs,
+// are mostly or nearly all empty (all-zero texels, the case the hook answers without decoding,
+// a whole row at once where it can) with puffs,
 // +-0 and NaN texels, random scene depth, both depth conventions, full-resolution layers, and
 // rows whose lanes are partly live.
 #include <cstring>
@@ -21,12 +22,12 @@ namespace soft = engine::render::soft;
 using engine::render::Format;
 using ssam::testing::Lcg;
 
-// Mostly zero bits; some texels a puff colour, -0 or NaN.
-soft::SoftTexture layerImage(int w, int h, Lcg& rng) {
+// Zero bits in `empty` of the texels; the others a puff colour, -0 or NaN.
+soft::SoftTexture layerImage(int w, int h, float empty, Lcg& rng) {
     soft::SoftTexture t = ssam::testing::softImage(w, h, Format::RGBA16F, 8);
     for (int i = 0; i < w * h; ++i) {
-        const float u = rng.unit();
-        if (u < 0.7f) continue;
+        if (rng.unit() < empty) continue;
+        const float u = 0.7f + 0.3f * rng.unit();
         std::uint16_t half[4];
         for (int c = 0; c < 4; ++c) {
             const float v = u < 0.9f ? rng.unit() : u < 0.95f ? -0.0f : std::numeric_limits<float>::quiet_NaN();
@@ -41,9 +42,13 @@ TEST(LayerCompositeRows, RowHookShadesTheBitsOfShade) {
     Lcg rng{20261127};
     constexpr int kW = 61, kH = 37;  // rows end in partial blocks
     int zeros = 0, others = 0;
-    for (int trial = 0; trial < 12; ++trial) {
+    for (int trial = 0; trial < 24; ++trial) {
         const int scale = trial % 3 == 2 ? 1 : 2;
-        const soft::SoftTexture layer = layerImage((kW + scale - 1) / scale, (kH + scale - 1) / scale, rng);
+        // Every other layer nearly empty: most block rows then read no written texel, and the
+        // hook answers them whole (layerZeroUnderRow), a lone puff at the edge of a row's run
+        // included.
+        const float empty = trial % 4 < 2 ? 0.7f : 0.98f;
+        const soft::SoftTexture layer = layerImage((kW + scale - 1) / scale, (kH + scale - 1) / scale, empty, rng);
         const soft::SoftTexture depth =
             ssam::testing::depthImage(kW, kH, [&](int) { return 0.05f + 0.9f * rng.unit(); });
         particles::LayerCompositeParams params;

@@ -3,7 +3,9 @@
 // Settings::colorBlur the 8-bit fast path takes its colours from compositeColorRow, which must be
 // shade()'s bit for bit (the general path's, which a float target still takes), over random sRGB
 // 8-bit and float foliage with unwritten texels, image borders and partly live rows. Without
-// colorBlur the fast path reads the texel itself; with colorFade there is no fast path.
+// colorBlur the fast path reads the texel itself; with colorFade there is no fast path. The
+// factors of a block row at once (compositeFactorRow) are compositeFactor's.
+#include <bit>
 #include <cstdint>
 #include <cstring>
 
@@ -59,6 +61,52 @@ TEST(CompositeRows, BlurredColourRowIsShadesColourBitForBit) {
         EXPECT_TRUE(ssam::testing::compositeColorRowMatchesShade(kernel, kW, kH, rng))
             << engine::render::formatName(format);
     }
+}
+
+// compositeFactorRow (the factors of a block row at once) against compositeFactor, bit for bit,
+// over every MAX and ADD byte pair and the lerps and squaring the settings allow; it declines a
+// row that leaves the mask and a split mask (RG16F precision), which compositeFactor reads.
+TEST(CompositeRows, FactorRowIsCompositeFactorBitForBit) {
+    constexpr int kW = 256 + 5, kH = 256;
+    soft::SoftTexture mask = ssam::testing::softImage(kW, kH, Format::RGBA8_UNORM, 4);
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            std::byte* t = mask.levels[0].texels.data() + 4 * (std::size_t(y) * kW + std::size_t(x));
+            t[0] = std::byte(std::uint8_t(x));  // MAX: every byte along a row
+            t[1] = t[2] = std::byte{0x5A};
+            t[3] = std::byte(std::uint8_t(y));  // ADD: every byte down a column
+        }
+    for (const float lerp : {0.0f, 0.37f, 0.85f, 0.9f, 1.0f})
+        for (const bool square : {false, true}) {
+            ssam::CompositeParams params;
+            params.foliage = {1, 1};
+            params.mask = {2, 1};
+            params.maskLerp = lerp;
+            params.squareMask = square;
+            const ssam::CompositeKernel kernel(params, Textures(&mask, &mask));
+            for (int y = 0; y < kH; ++y)
+                for (int bx = 0; bx < kW; bx += 8) {
+                    float row[8];
+#if SSAM_COMPOSITE_SSE2
+                    const bool inside = bx + 8 <= kW;
+#else
+                    const bool inside = false;  // a build without SSE2 has no row of factors
+#endif
+                    ASSERT_EQ(kernel.compositeFactorRow(bx, y, row), inside) << bx;
+                    for (int i = 0; inside && i < 8; ++i) {
+                        const float expected = kernel.compositeFactor(bx + i, y);
+                        ASSERT_EQ(std::bit_cast<std::uint32_t>(row[i]), std::bit_cast<std::uint32_t>(expected))
+                            << "lerp " << lerp << (square ? " squared" : "") << ", pixel (" << bx + i << ", " << y
+                            << "): " << row[i] << " != " << expected;
+                    }
+                }
+        }
+    ssam::CompositeParams split;
+    split.foliage = {1, 1};
+    split.mask = {2, 1};
+    split.maskAdd = {2, 1};
+    float row[8];
+    EXPECT_FALSE(ssam::CompositeKernel(split, Textures(&mask, &mask)).compositeFactorRow(0, 0, row));
 }
 
 TEST(CompositeRows, TheTexelItselfWithoutBlurAndNoFastPathWhenFading) {

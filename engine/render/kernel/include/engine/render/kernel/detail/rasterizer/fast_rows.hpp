@@ -13,10 +13,10 @@ namespace {  // as raster_support.hpp's
 // The composite programs' row (compositeRow_): shade() and the composite blend, per live
 // pixel the same operations, with the 8-bit texels decoded straight from the tables (or the
 // colours the program's compositeColorRow gives); factorAt(px, py) is the program's alpha, in
-// [0, 1] (both programs clamp it). The foliage colour is finite and in [0, 1] (8-bit, or the
-// program's compositeColorRow, clamped as blend() would), so shade()'s non-finite check and
-// blend()'s clamps change nothing, and the alpha written is the stored one (blend * 0 + d = d,
-// encoded back to the same byte). Where the factor is 0 the colour is c * 0 + d * 1 = d, the
+// [0, 1] (both programs clamp it), unless its compositeFactorRow gives the row's. The foliage
+// colour is finite and in [0, 1] (8-bit, or the program's compositeColorRow, clamped as blend()
+// would), so shade()'s non-finite check and blend()'s clamps change nothing, and the alpha
+// written is the stored one (blend * 0 + d = d, encoded back to the same byte). Where the factor is 0 the colour is c * 0 + d * 1 = d, the
 // decoded stored byte: nothing to write when bytes round-trip (bytesRoundTrip), and most of the
 // screen has no foliage, so the colours are asked only for the pixels left.
 template <typename Program>
@@ -32,10 +32,13 @@ inline void TriangleRasterizer<Program>::compositeRow(int bx, int py, std::uint3
     const bool skipZero = bytesRoundTrip();
     auto byteAt = [](const std::byte* p, int c) { return std::to_integer<std::uint8_t>(p[c]); };
     float blends[kBlockSize];
+    bool wholeRow = false;  // the program's compositeFactorRow gave every lane's factor
+    if constexpr (hasCompositeFactorRow<Program>())
+        wholeRow = bx + kBlockSize <= width_ && program_.compositeFactorRow(bx, py, blends);
     std::uint32_t drawn = 0;
     for (std::uint32_t bits = live; bits; bits &= bits - 1) {
         const int i = __builtin_ctz(bits);
-        blends[i] = factorAt(bx + i, py);
+        if (!wholeRow) blends[i] = factorAt(bx + i, py);
         if (blends[i] != 0.0f || !skipZero) drawn |= 1u << i;
     }
     glm::vec3 ownColors[kBlockSize];

@@ -48,6 +48,17 @@ constexpr bool hasCompositeColorRow() {
     };
 }
 
+// Optionally, a composite program gives compositeFactor of a whole block row at once:
+// compositeFactorRow(bx, py, out) puts compositeFactor(bx + i, py) into out[i] for i = 0..7, the
+// same bits, and returns true, or returns false where it cannot (compositeRow then asks
+// compositeFactor pixel by pixel).
+template <typename Program>
+constexpr bool hasCompositeFactorRow() {
+    return requires(const Program& p, float* out) {
+        { p.compositeFactorRow(0, 0, out) } -> std::same_as<bool>;
+    };
+}
+
 // Whether the program shades a block row's pixels at once (program_kernel.hpp's row hook):
 // shadeRow(isa, bx, py, live, out) puts shade() of pixel (bx + i, py) into out[i] for each lane
 // i set in `live`, with the same bits, in wide kernels of the draw's instruction set.
@@ -145,6 +156,11 @@ public:
             v.byteLut = (v.format == Format::RGBA8_UNORM || v.format == Format::RGBA8_SRGB) && v.blend &&
                         blendIsPerChannel(draw.blend[i]);
             v.zeroKeeps = v.blend && zeroSourceKeeps(v.format, draw.blend[i]);
+        }
+        if constexpr (hasRowShader<Program>()) {
+            rowZeroSkips_ = !draw.capture && !draw.alphaTest.enabled && !draw.depthWrite;
+            for (int i = 0; i < draw.colorTargetCount; ++i)
+                if (draw.blend[i].writeMask && !color_[i].zeroKeeps) rowZeroSkips_ = false;
         }
         if constexpr (hasCompositeHooks<Program>()) {
             // A mask composite (e.g. SSAM's) as such programs are drawn: onto an 8-bit target,
@@ -290,8 +306,12 @@ private:
     std::array<std::uint32_t, kMaxColorTargets> constantPacked_{};
     std::array<bool, kMaxColorTargets> useLut_{};
     bool compositeRow_ = false;  // CompositeProgram, CoverageCompositeProgram: compositeRow
-    bool alphaFirst_ = false;    // hasAlphaFirstHooks: alpha-test (Keep) on the alpha alone before shading
-    bool sampledRow_ = false;    // hasSampledRowHooks otherwise: the texture sampled 4 lanes at a time
+    // hasRowShader: a row's (0, 0, 0, 0) colours are only counted (no alpha test, no depth
+    // write, and every written target keeps what it holds under a zero source: writeColor's
+    // zeroKeeps). Most of a composite layer is empty.
+    bool rowZeroSkips_ = false;
+    bool alphaFirst_ = false;  // hasAlphaFirstHooks: alpha-test (Keep) on the alpha alone before shading
+    bool sampledRow_ = false;  // hasSampledRowHooks otherwise: the texture sampled 4 lanes at a time
     const AlphaSampler* rowSampler_ = nullptr;  // the program's rowSampler(), asked once per draw
     bool packedWrite_ = false;                  // hasSampledRowHooks onto one plain RGBA8 target: shadePacked4
     // The mask row path (shadeAlphaRow, hasReplicatedAlphaHooks).

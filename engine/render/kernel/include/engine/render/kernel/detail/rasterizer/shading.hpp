@@ -52,7 +52,13 @@ inline void TriangleRasterizer<Program>::shadeRow(const SetupTriangle& t, int bx
     if constexpr (hasRowShader<Program>()) {
         alignas(16) glm::vec4 colors[kBlockSize];
         program_.shadeRow(draw_.isa, bx, py, live, colors);
-        for (std::uint32_t bits = live; bits; bits &= bits - 1) {
+        std::uint32_t written = live;
+        if (rowZeroSkips_) {
+            for (std::uint32_t bits = live; bits; bits &= bits - 1)
+                if (colors[__builtin_ctz(bits)] == glm::vec4(0.0f)) written &= ~(bits & -bits);
+            counters_.pixelsShaded += kBitCount[live & ~written];
+        }
+        for (std::uint32_t bits = written; bits; bits &= bits - 1) {
             const int i = __builtin_ctz(bits);
             writeShaded(colors[i], bx + i, py, z[i], depthAt + i * sizeof(float));
         }
