@@ -356,21 +356,29 @@ void runComposite(benchmark::State& state, render::Device& b, render::TextureHan
     });
 }
 
+// The composite benchmarks' foliage coverage at (x, y): zero left of 40% of the width (no
+// foliage there), then soft leaf-like blobs.
+float compositeLeaf(int x, int y) {
+    const float leaf = std::sin(float(x) * 0.11f) * std::sin(float(y) * 0.13f);
+    return x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + leaf, 0.0f, 1.0f);
+}
+
+// SSAM's 8-bit mask of compositeLeaf: MAX in r, ADD in a, saturating where the blobs overlap.
+render::TextureHandle compositeMask(render::Backend& b) {
+    return screenTexture(b, "mask", render::Format::RGBA8_UNORM, [](int x, int y, std::uint8_t* t) {
+        const float m = compositeLeaf(x, y);
+        t[0] = t[1] = t[2] = std::uint8_t(255.0f * m);
+        t[3] = std::uint8_t(std::min(255.0f, 400.0f * m));
+    });
+}
+
 void BM_SsamComposite(benchmark::State& state) {
     auto backend = makeBackend(state);
     render::Backend& b = *backend;
     const auto target = renderTarget(b, render::Format::RGBA8_SRGB);
-    // MAX mask in r, ADD mask in a: zero left of 40% of the width (no foliage there), then
-    // soft leaf-like blobs, saturating where they overlap.
-    const auto mask = screenTexture(b, "mask", render::Format::RGBA8_UNORM, [](int x, int y, std::uint8_t* t) {
-        const float leaf = std::sin(float(x) * 0.11f) * std::sin(float(y) * 0.13f);
-        const float m = x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + leaf, 0.0f, 1.0f);
-        t[0] = t[1] = t[2] = std::uint8_t(255.0f * m);
-        t[3] = std::uint8_t(std::min(255.0f, 400.0f * m));
-    });
     ssam::CompositeParams params;
     params.foliage = compositeFoliage(b);
-    params.mask = mask;
+    params.mask = compositeMask(b);
     runComposite(state, *backend, target, ssam::compositeProgram(), params, "ssam composite");
 }
 
@@ -381,20 +389,12 @@ void BM_SsamCompositeBlur(benchmark::State& state) {
     auto backend = makeBackend(state);
     render::Backend& b = *backend;
     const auto target = renderTarget(b, render::Format::RGBA8_SRGB);
-    auto leafAt = [](int x, int y) {
-        const float leaf = std::sin(float(x) * 0.11f) * std::sin(float(y) * 0.13f);
-        return x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + leaf, 0.0f, 1.0f);
-    };
-    const auto mask = screenTexture(b, "mask", render::Format::RGBA8_UNORM, [&](int x, int y, std::uint8_t* t) {
-        const float m = leafAt(x, y);
-        t[0] = t[1] = t[2] = std::uint8_t(255.0f * m);
-        t[3] = std::uint8_t(std::min(255.0f, 400.0f * m));
-    });
-    const auto foliage = screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [&](int x, int y, std::uint8_t* t) {
+    const auto mask = compositeMask(b);
+    const auto foliage = screenTexture(b, "foliage", render::Format::RGBA8_SRGB, [](int x, int y, std::uint8_t* t) {
         t[0] = std::uint8_t(40 + x % 64);
         t[1] = std::uint8_t(120 + y % 96);
         t[2] = std::uint8_t(30 + (x ^ y) % 32);
-        t[3] = std::uint8_t(std::min(255.0f, 510.0f * leafAt(x, y)));
+        t[3] = std::uint8_t(std::min(255.0f, 510.0f * compositeLeaf(x, y)));
     });
     ssam::CompositeParams params;
     params.foliage = foliage;
@@ -425,13 +425,9 @@ void BM_SsamPlusComposite(benchmark::State& state) {
     render::Backend& b = *backend;
     const auto target = renderTarget(b, render::Format::RGBA8_SRGB);
     // SsamComposite's masks in floats: MAX in [0, 1], ADD up to 4 (depth complexity).
-    auto leaf = [](int x, int y) {
-        const float m = std::sin(float(x) * 0.11f) * std::sin(float(y) * 0.13f);
-        return x < kWidth * 2 / 5 ? 0.0f : std::clamp(0.5f + m, 0.0f, 1.0f);
-    };
-    const auto mask = screenHalfTexture(b, "mask max", leaf);
-    const auto maskAdd =
-        screenHalfTexture(b, "mask add", [&](int x, int y) { return leaf(x, y) * (1.0f + float(x % 7) * 0.5f); });
+    const auto mask = screenHalfTexture(b, "mask max", compositeLeaf);
+    const auto maskAdd = screenHalfTexture(
+        b, "mask add", [&](int x, int y) { return compositeLeaf(x, y) * (1.0f + float(x % 7) * 0.5f); });
     const auto foliage = compositeFoliage(b);
     runComposite(
         state, *backend, target, transparency::coverageCompositeProgram(),

@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 
 #if defined(__SSE2__) && !defined(SOFT_RASTER_SCALAR)  // as raster_support.hpp
 #include <emmintrin.h>
@@ -47,15 +46,16 @@ struct CoveredTentWindow {
         const ByteTables& tables = byteTables();
         const float* colorTable = format == Format::RGBA8_SRGB ? tables.srgb : tables.unorm;
         for (int row = 0; row < 3; ++row) {
-#if SOFT_TENT_SSE2
             const int yy = y + row - 1;
-            if (bytes && count + 2 >= 4 && x0 >= 1 && x0 + count < width && yy >= 0 && yy < height) {
+#if SOFT_TENT_SSE2
+            if (bytes && texture.desc.samples == 1 && count + 2 >= 4 && x0 >= 1 && x0 + count < width && yy >= 0 &&
+                yy < height) {
                 loadBytesRow(row, texture.texel(0, x0 - 1, yy), count + 2, colorTable);
                 continue;
             }
 #endif
             for (int column = 0; column < count + 2; ++column) {
-                const int x = x0 + column - 1, yy = y + row - 1;
+                const int x = x0 + column - 1;
                 glm::vec4 t(0.0f);
                 if (x >= 0 && yy >= 0 && x < width && yy < height) {
                     const std::byte* p = texture.texel(0, x, yy);

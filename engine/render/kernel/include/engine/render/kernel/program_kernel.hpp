@@ -14,7 +14,7 @@
 //   - optionally fast-path hooks, each taken by the rasterizer for any program that declares
 //     it (rasterizer/rasterizer_class.hpp defines each contract; the built-in programs of
 //     kernel/programs.hpp use the same): the composite hooks (compositeColor, compositeFactor,
-//     and compositeColorRow where the colour is computed from compositeColor's texels),
+//     compositeFactorRow, and compositeColorRow where the colour is computed from those texels),
 //     sampled rows (rowSampler, shadeSampled, shadeSampled4), four-lane alpha (hasAlpha4,
 //     alpha4), alpha-first rows (those plus alphaTestFactor) and replicated-alpha mask rows
 //     (kShadesReplicatedAlpha, alpha);
