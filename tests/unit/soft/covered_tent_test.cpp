@@ -41,8 +41,14 @@ soft::SoftTexture randomBytes(int w, int h, Format format, Lcg& rng) {
 // negative-zero alphas, alphas above 1, NaN and infinities in any channel.
 soft::SoftTexture randomFloats(int w, int h, Lcg& rng) {
     soft::SoftTexture t = ssam::testing::softImage(w, h, Format::RGBA32F, 16);
-    const float specials[] = {0.0f, -0.0f, 1.0f, 2.5f, -1.0f, std::numeric_limits<float>::infinity(),
-                              -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+    const float specials[] = {0.0f,
+                              -0.0f,
+                              1.0f,
+                              2.5f,
+                              -1.0f,
+                              std::numeric_limits<float>::infinity(),
+                              -std::numeric_limits<float>::infinity(),
+                              std::numeric_limits<float>::quiet_NaN(),
                               1.0e-30f};
     for (int i = 0; i < w * h * 4; ++i) {
         const float v = rng.unit() < 0.15f ? specials[rng.next() % std::size(specials)] : rng.unit();
@@ -52,8 +58,7 @@ soft::SoftTexture randomFloats(int w, int h, Lcg& rng) {
 }
 
 // What load() must hold at row `row`, column `column` of the window from (x0, y).
-::testing::AssertionResult holdsTexel(const Window& w, const soft::SoftTexture& t, int x0, int y, int row,
-                                      int column) {
+::testing::AssertionResult holdsTexel(const Window& w, const soft::SoftTexture& t, int x0, int y, int row, int column) {
     const int x = x0 + column - 1, yy = y + row - 1;
     const bool inside = x >= 0 && yy >= 0 && x < t.desc.width && yy < t.desc.height;
     const glm::vec4 texel = inside ? engine::render::loadTexel(t.texel(0, x, yy), t.desc.format) : glm::vec4(0.0f);
@@ -65,8 +70,8 @@ soft::SoftTexture randomFloats(int w, int h, Lcg& rng) {
             return ::testing::AssertionFailure() << "texel (" << x << ", " << yy << ") channel " << c << ": "
                                                  << w.channel[c][row][column] << " != " << texel[c];
     if (!sameBits(w.alphaWeight[row][column], weight) || (w.coveredBits[row][column] != 0) != covered)
-        return ::testing::AssertionFailure() << "texel (" << x << ", " << yy << "): weight "
-                                             << w.alphaWeight[row][column] << " != " << weight;
+        return ::testing::AssertionFailure()
+               << "texel (" << x << ", " << yy << "): weight " << w.alphaWeight[row][column] << " != " << weight;
     return ::testing::AssertionSuccess();
 }
 
