@@ -15,6 +15,7 @@
 #include "engine/render/kernel/fragment.hpp"
 #include "engine/render/kernel/sampler.hpp"
 #include "engine/render/kernel/texture_lookup.hpp"
+#include "engine/render/kernel/unorm8x4.hpp"
 #include "ssam/composite_program.hpp"
 
 namespace ssam {
@@ -94,11 +95,11 @@ struct CompositeKernel {
             bx + kRow > mask->desc.width)
             return false;
         const std::byte* row = mask->texel(0, bx, py);
-        const __m128 scale = _mm_set1_ps(255.0f), lerp = _mm_set1_ps(params.maskLerp);
+        const __m128 lerp = _mm_set1_ps(params.maskLerp);
         for (int h = 0; h < kRow / 4; ++h) {
             const __m128i texels = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 16 * h));
-            const __m128 maxMask = _mm_div_ps(_mm_cvtepi32_ps(_mm_and_si128(texels, _mm_set1_epi32(0xFF))), scale);
-            const __m128 addMask = _mm_div_ps(_mm_cvtepi32_ps(_mm_srli_epi32(texels, 24)), scale);
+            const __m128 maxMask = engine::render::soft::unorm8x4(texels, 0);
+            const __m128 addMask = engine::render::soft::unorm8x4(texels, 24);
             __m128 blend = _mm_add_ps(maxMask, _mm_mul_ps(_mm_sub_ps(addMask, maxMask), lerp));
             blend = _mm_min_ps(_mm_max_ps(blend, _mm_setzero_ps()), _mm_set1_ps(1.0f));
             if (params.squareMask) blend = _mm_mul_ps(blend, blend);

@@ -110,7 +110,7 @@ struct LayerCompositeKernel {
     // decoding them; the rest take shade(). The blend then skips those zeros (the soft
     // backend's zeroSourceKeeps).
     void shadeRow(engine::render::soft::SimdIsa, int bx, int py, std::uint32_t live, glm::vec4* out) const {
-        if (layerZeroUnderRow(bx, py)) {  // the whole row at once, where the layer is empty
+        if (layerZeroUnder(bx, py, 8)) {  // the whole row at once, where the layer is empty
             for (std::uint32_t bits = live; bits; bits &= bits - 1) out[__builtin_ctz(bits)] = glm::vec4(0.0f);
             return;
         }
@@ -119,7 +119,7 @@ struct LayerCompositeKernel {
         for (std::uint32_t bits = live; bits; bits &= bits - 1) {
             const int i = __builtin_ctz(bits);
             f.x = bx + i;
-            out[i] = layerZeroAround(f.x, py) ? glm::vec4(0.0f) : shade(f);
+            out[i] = layerZeroUnder(f.x, py, 1) ? glm::vec4(0.0f) : shade(f);
         }
     }
 
@@ -131,21 +131,22 @@ struct LayerCompositeKernel {
     }
 
 private:
-    // Whether the layer is RGBA16F and every texel shade() reads for the 8 pixels from (bx, y)
-    // has all its bits zero (layerZeroAround of each): the texel columns those pixels read are
-    // one run (they do not decrease with x), and so are the rows.
-    bool layerZeroUnderRow(int bx, int y) const {
+    // Whether the layer is RGBA16F and every texel shade() reads for the `count` pixels from
+    // (x, y) has all its bits zero (other formats answer false: a format without alpha loads
+    // alpha 1). The texel columns those pixels read are one run (they do not decrease with x),
+    // and so are the rows.
+    bool layerZeroUnder(int x, int y, int count) const {
         if (layer->desc.format != engine::render::Format::RGBA16F) return false;
         const int lw = layer->desc.width, lh = layer->desc.height;
         const int scale = std::clamp(params.layerScale, 1, 4);
         int x0, x1, y0, y1;
         if (scale > 1 && depth) {  // shade()'s candidates: (x - 1) / 2 and the next, clamped
-            x0 = std::clamp((bx - 1) / 2, 0, lw - 1);
-            x1 = std::min(std::clamp((bx + 6) / 2, 0, lw - 1) + 1, lw - 1);
+            x0 = std::clamp((x - 1) / 2, 0, lw - 1);
+            x1 = std::min(std::clamp((x + count - 2) / 2, 0, lw - 1) + 1, lw - 1);
             y0 = std::clamp((y - 1) / 2, 0, lh - 1);
             y1 = std::min(y0 + 1, lh - 1);
         } else {
-            x0 = std::min(bx / scale, lw - 1), x1 = std::min((bx + 7) / scale, lw - 1);
+            x0 = std::min(x / scale, lw - 1), x1 = std::min((x + count - 1) / scale, lw - 1);
             y0 = y1 = std::min(y / scale, lh - 1);
         }
         for (int ly = y0; ly <= y1; ++ly) {
@@ -158,23 +159,6 @@ private:
             if (bits) return false;
         }
         return true;
-    }
-    // Whether the layer is RGBA16F and every texel shade() reads for pixel (x, y) has all its
-    // bits zero. Other formats answer false (a format without alpha loads alpha 1).
-    bool layerZeroAround(int x, int y) const {
-        if (layer->desc.format != engine::render::Format::RGBA16F) return false;
-        const int lw = layer->desc.width, lh = layer->desc.height;
-        const int scale = std::clamp(params.layerScale, 1, 4);
-        auto zero = [&](int lx, int ly) {
-            std::uint64_t stored;
-            std::memcpy(&stored, layer->texel(0, lx, ly), sizeof stored);
-            return stored == 0;
-        };
-        if (!(scale > 1 && depth)) return zero(std::min(x / scale, lw - 1), std::min(y / scale, lh - 1));
-        // shade()'s four candidates; where they agree it returns the first.
-        const int x0 = std::clamp((x - 1) / 2, 0, lw - 1), y0 = std::clamp((y - 1) / 2, 0, lh - 1);
-        const int x1 = std::min(x0 + 1, lw - 1), y1 = std::min(y0 + 1, lh - 1);
-        return zero(x0, y0) && zero(x1, y0) && zero(x0, y1) && zero(x1, y1);
     }
 };
 

@@ -24,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/kernel/sampler.hpp"
+#include "engine/render/kernel/unorm8x4.hpp"
 #include "engine/render/pixel_codec.hpp"
 
 namespace engine::render::soft {
@@ -111,7 +112,7 @@ struct CoveredTentWindow {
         for (int first = 0; first < columns; first += 4) {
             const int at = first + 4 <= columns ? first : columns - 4;
             const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + 4 * at));
-            const __m128 alpha = _mm_div_ps(_mm_cvtepi32_ps(_mm_srli_epi32(bytes, 24)), _mm_set1_ps(255.0f));
+            const __m128 alpha = unorm8x4(bytes, 24);
             const __m128 covered = _mm_cmpgt_ps(alpha, _mm_setzero_ps());
             const __m128 clamped = _mm_min_ps(alpha, _mm_set1_ps(1.0f));
             _mm_storeu_ps(&channel[3][row][at], alpha);
