@@ -11,7 +11,7 @@
 #include "engine/assets/image.hpp"
 
 // OpenImageIO 2.4's PNG read callback builds an error string and libpng then longjmps past its
-// destructor, leaking a few bytes per truncated PNG (the same known leak unit_capture
+// destructor, leaking a few bytes per truncated PNG (the same known leak unit_capture_read_errors
 // suppresses). It is inside the library; tell LeakSanitizer (asan preset) so the truncated
 // image test still runs there. Unused in other builds.
 extern "C" const char* __lsan_default_suppressions() {
